@@ -1,0 +1,153 @@
+//===- SimAttrs.td - sim dialect attributes and enums ------*- tablegen -*-===//
+//
+// Interpolation functions (implementations of InterpolationAttrInterface) and
+// the enumerations that the analyses and plans record on the IR.
+//
+//===----------------------------------------------------------------------===//
+
+#ifndef SIM_DIALECT_SIM_IR_SIMATTRS_TD
+#define SIM_DIALECT_SIM_IR_SIMATTRS_TD
+
+include "sim/Dialect/Sim/IR/SimDialect.td"
+include "sim/Dialect/Sim/IR/SimInterfaces.td"
+include "mlir/IR/AttrTypeBase.td"
+include "mlir/IR/BuiltinAttributeInterfaces.td"
+include "mlir/IR/EnumAttr.td"
+
+//===----------------------------------------------------------------------===//
+// Enumerations
+//===----------------------------------------------------------------------===//
+
+def Sim_Boundary : I32Enum<"Boundary", "rule for reads outside the item range", [
+    I32EnumCase<"clamp", 0>, I32EnumCase<"wrap", 1>, I32EnumCase<"zero", 2>]> {
+  let cppNamespace = "::mlir::sim";
+  let description = [{
+    What a read of item `j` outside `[0, range)` returns: `clamp` reads the
+    nearest valid item, `wrap` reads item `j mod range` (periodic), `zero`
+    returns a zero element. Every backend implements the same rule.
+  }];
+}
+def Sim_BoundaryAttr : EnumAttr<Sim_Dialect, Sim_Boundary, "boundary">;
+
+def Sim_ReadRole : I32Enum<"ReadRole", "role of a view read in the schedule", [
+    I32EnumCase<"own", 0>, I32EnumCase<"interpolate", 1>,
+    I32EnumCase<"back_edge", 2>]> {
+  let cppNamespace = "::mlir::sim";
+  let description = [{
+    Recorded by `--sim-schedule` on every `sim.read` inside a component:
+    `own` reads a buffer the component writes (its current sub-step state),
+    `interpolate` reads a buffer already advanced in this big step (its value
+    at the reader's local time lies between the value at `T` and at `T + m`),
+    `back_edge` reads a buffer that is advanced later in the step, so only its
+    value at `T` exists.
+  }];
+}
+def Sim_ReadRoleAttr : EnumAttr<Sim_Dialect, Sim_ReadRole, "read_role">;
+
+def Sim_SubStepping : I32Enum<"SubStepping",
+    "how a component's sub-steps are synchronised", [
+    I32EnumCase<"in_kernel", 0>, I32EnumCase<"grid_sync", 1>]> {
+  let cppNamespace = "::mlir::sim";
+  let description = [{
+    Recorded by `--sim-substep-legality`. `in_kernel`: all sub-steps of an
+    item run inside one kernel, synchronised only within a thread group
+    (Algorithm 2); this is race-free because the component reads the buffers
+    it writes only at its own item. `grid_sync`: the component reads a buffer
+    it writes at another item, so every sub-step needs a grid-wide barrier
+    (one launch per sub-step or a cooperative grid sync) and a sub-step size
+    that is uniform over the whole range.
+  }];
+}
+def Sim_SubSteppingAttr : EnumAttr<Sim_Dialect, Sim_SubStepping, "sub_stepping">;
+
+def Sim_Parity : I32Enum<"Parity",
+    "where a component keeps its state between sub-steps", [
+    I32EnumCase<"registers", 0>, I32EnumCase<"copy_if_even", 1>]> {
+  let cppNamespace = "::mlir::sim";
+  let description = [{
+    Recorded by `--sim-plan-memory`. `registers`: an `in_kernel` component
+    keeps its own state in registers between sub-steps and writes the target
+    half once, so its source half still holds the value at `T` and no parity
+    copy is needed. `copy_if_even`: sub-steps ping-pong between the two halves
+    through memory, and after an even number of them the result sits in the
+    source half and must be copied to the target (Algorithm 2, lines 41-44).
+  }];
+}
+def Sim_ParityAttr : EnumAttr<Sim_Dialect, Sim_Parity, "parity">;
+
+def Sim_Version : I32Enum<"Version",
+    "which copy of a buffer an explicit load reads", [
+    I32EnumCase<"source", 0>, I32EnumCase<"snapshot", 1>,
+    I32EnumCase<"target", 2>, I32EnumCase<"local", 3>]> {
+  let cppNamespace = "::mlir::sim";
+  let description = [{
+    `source`: the half that holds the value at the start `T` of the big step;
+    `snapshot`: the copy of the value at `T` taken before the writer ran (only
+    for buffers the memory plan snapshots); `target`: the half that holds the
+    value at `T + m` once the writer ran; `local`: the reading component's own
+    state at its current local time.
+  }];
+}
+def Sim_VersionAttr : EnumAttr<Sim_Dialect, Sim_Version, "version">;
+
+//===----------------------------------------------------------------------===//
+// Interpolation functions
+//===----------------------------------------------------------------------===//
+
+class Sim_Attr<string name, string attrMnemonic, list<Trait> traits = []>
+    : AttrDef<Sim_Dialect, name, traits> {
+  let mnemonic = attrMnemonic;
+}
+
+def Sim_LinearInterpAttr : Sim_Attr<"LinearInterp", "linear", [
+    DeclareAttrInterfaceMethods<Sim_InterpolationAttrInterface>]> {
+  let summary = "linear interpolation, order 2";
+  let description = [{
+    `(1 - f) * a + f * b` between the value `a` at `T` and `b` at `T + h`.
+    Written in this form (not `a + (b - a) * f`) so that both ends are exact.
+    Interpolating a smooth signal has an error in O(h^2).
+
+    ```mlir
+    sim.buffer @X : f32 interp(#sim.linear) init { ... }
+    ```
+  }];
+}
+
+def Sim_CubicInterpAttr : Sim_Attr<"CubicInterp", "cubic", [
+    DeclareAttrInterfaceMethods<Sim_InterpolationAttrInterface>]> {
+  let summary = "the paper's two-point cubic (smoothstep) interpolation, order 1";
+  let description = [{
+    The paper's cubic spline in the fraction: `s = f * f * (3 - 2 * f)`, then
+    `(1 - s) * a + s * b`. It needs no more data than linear interpolation and
+    has zero slope at both ends, but it reproduces only constants, so the
+    error for a smooth signal is in O(h) (order 1). Use `#sim.hermite` when a
+    time derivative is available.
+
+    ```mlir
+    sim.buffer @X : vector<4xf32> interp(#sim.cubic) init { ... }
+    ```
+  }];
+}
+
+def Sim_HermiteInterpAttr : Sim_Attr<"HermiteInterp", "hermite", [
+    DeclareAttrInterfaceMethods<Sim_InterpolationAttrInterface,
+                                ["getAuxiliaryBuffers",
+                                 "getAuxiliaryBufferRole"]>]> {
+  let summary = "cubic Hermite interpolation with a derivative buffer, order 4";
+  let description = [{
+    Cubic Hermite interpolation between `(a, a')` at `T` and `(b, b')` at
+    `T + h`, where the derivatives come from the named buffer (for example
+    velocity for position): `h00(f) a + h10(f) h a' + h01(f) b + h11(f) h b'`.
+    It is exact for cubic signals; the error for a smooth signal is in O(h^4).
+    The derivative buffer must exist and have the same element type.
+
+    ```mlir
+    sim.buffer @X : f64 interp(#sim.hermite<@V>) init { ... }
+    sim.buffer @V : f64 init { ... }
+    ```
+  }];
+  let parameters = (ins "::mlir::FlatSymbolRefAttr":$derivative);
+  let assemblyFormat = "`<` $derivative `>`";
+}
+
+#endif // SIM_DIALECT_SIM_IR_SIMATTRS_TD

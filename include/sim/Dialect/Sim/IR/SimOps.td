@@ -1,0 +1,390 @@
+//===- SimOps.td - sim dialect operations ------------------*- tablegen -*-===//
+//
+// The operations of a simulation: the simulation itself, its parameters,
+// buffers, components, schedule and observed outputs, and the operations that
+// may appear inside component and buffer bodies.
+//
+//===----------------------------------------------------------------------===//
+
+#ifndef SIM_DIALECT_SIM_IR_SIMOPS_TD
+#define SIM_DIALECT_SIM_IR_SIMOPS_TD
+
+include "sim/Dialect/Sim/IR/SimDialect.td"
+include "sim/Dialect/Sim/IR/SimAttrs.td"
+include "sim/Dialect/Sim/IR/SimInterfaces.td"
+include "mlir/IR/OpAsmInterface.td"
+include "mlir/IR/OpBase.td"
+include "mlir/IR/RegionKindInterface.td"
+include "mlir/IR/SymbolInterfaces.td"
+include "mlir/Interfaces/ControlFlowInterfaces.td"
+include "mlir/Interfaces/SideEffectInterfaces.td"
+
+class Sim_Op<string mnemonic, list<Trait> traits = []>
+    : Op<Sim_Dialect, mnemonic, traits>;
+
+/// The simulation state (all buffers). View reads and explicit loads read it;
+/// declaring the effect lets CSE merge identical reads but never move them
+/// across anything that writes state.
+def Sim_StateResource : Resource<"::mlir::sim::StateResource">;
+
+def Sim_TimeStepAttr : AnyAttrOf<[F32Attr, F64Attr]>;
+
+//===----------------------------------------------------------------------===//
+// SimulationOp
+//===----------------------------------------------------------------------===//
+
+def Sim_SimulationOp : Sim_Op<"simulation", [
+    Symbol, SymbolTable, IsolatedFromAbove, NoTerminator, SingleBlock,
+    NoRegionArguments, RegionKindInterface, HasOnlyGraphRegion]> {
+  let summary = "a component-based simulation over a range of items";
+  let description = [{
+    A simulation advances the state of `range` items in base steps of `dt`
+    time units. Big steps take at most `max_steps` base steps. The body is a
+    graph region (order does not matter) of `sim.param`, `sim.buffer`,
+    `sim.component`, at most one `sim.schedule` and at most one `sim.observe`.
+
+    ```mlir
+    sim.simulation @gravity_like range(65536) dt(1.0e-3 : f32) max_steps(3) {
+      sim.param @L = 8 : i32
+      sim.buffer @B0 : vector<4xf32> interp(#sim.linear) init { ... }
+      sim.component @C0 writes(@B0) num_steps { ... } evaluate { ... }
+      sim.observe [@B0]
+    }
+    ```
+
+    `range`, `dt` and `max_steps` can be overridden without editing the file:
+    `sim-opt --sim-set-params="range=16384,max_steps=2"`.
+  }];
+
+  let arguments = (ins SymbolNameAttr:$sym_name, I64Attr:$range,
+                       Sim_TimeStepAttr:$dt, I32Attr:$max_steps);
+  let regions = (region SizedRegion<1>:$body);
+  let assemblyFormat = [{
+    $sym_name `range` `(` $range `)` `dt` `(` $dt `)`
+    `max_steps` `(` $max_steps `)` attr-dict-with-keyword $body
+  }];
+  let hasVerifier = 1;
+  let hasRegionVerifier = 1;
+
+  let extraClassDeclaration = [{
+    /// The scalar float type of the base time step (f32 or f64).
+    ::mlir::FloatType getTimeStepType() {
+      return ::llvm::cast<::mlir::FloatType>(
+          ::llvm::cast<::mlir::TypedAttr>(getDt()).getType());
+    }
+    /// The base time step as a double.
+    double getTimeStep() {
+      return ::llvm::cast<::mlir::FloatAttr>(getDt()).getValueAsDouble();
+    }
+    auto getBuffers() { return getBody().front().getOps<BufferOp>(); }
+    auto getComponents() { return getBody().front().getOps<ComponentOp>(); }
+    auto getParams() { return getBody().front().getOps<ParamOp>(); }
+    /// The schedule, or null when the user gave none and no pass made one.
+    ScheduleOp getScheduleOp();
+    /// The observed outputs, or null.
+    ObserveOp getObserveOp();
+    BufferOp lookupBuffer(::mlir::FlatSymbolRefAttr name) {
+      return ::llvm::dyn_cast_or_null<BufferOp>(lookupSymbol(name));
+    }
+    ComponentOp lookupComponent(::mlir::FlatSymbolRefAttr name) {
+      return ::llvm::dyn_cast_or_null<ComponentOp>(lookupSymbol(name));
+    }
+    ::mlir::Operation *lookupSymbol(::mlir::FlatSymbolRefAttr name) {
+      return ::mlir::SymbolTable::lookupSymbolIn(*this, name.getAttr());
+    }
+  }];
+}
+
+//===----------------------------------------------------------------------===//
+// ParamOp / GetParamOp
+//===----------------------------------------------------------------------===//
+
+def Sim_ParamOp : Sim_Op<"param", [Symbol, HasParent<"SimulationOp">]> {
+  let summary = "a named scene parameter with a default value";
+  let description = [{
+    A scalar parameter of the scene (an integer or float), read in bodies with
+    `sim.get_param`. Tools override the default without editing the file:
+    `sim-opt --sim-set-params="L=64"`.
+
+    ```mlir
+    sim.param @L = 256 : i32
+    sim.param @stiffness = 2.5e+01 : f32
+    ```
+  }];
+  let arguments = (ins SymbolNameAttr:$sym_name, TypedAttrInterface:$value);
+  let assemblyFormat = "$sym_name `=` $value attr-dict";
+  let hasVerifier = 1;
+}
+
+def Sim_GetParamOp : Sim_Op<"get_param", [Pure,
+    DeclareOpInterfaceMethods<SymbolUserOpInterface>]> {
+  let summary = "reads a scene parameter";
+  let description = [{
+    Returns the current value of a `sim.param` of the enclosing simulation.
+    The result type must be the parameter's type.
+
+    ```mlir
+    %L = sim.get_param @L : i32
+    ```
+  }];
+  let arguments = (ins FlatSymbolRefAttr:$param);
+  let results = (outs AnyType:$result);
+  let assemblyFormat = "$param attr-dict `:` type($result)";
+}
+
+//===----------------------------------------------------------------------===//
+// BufferOp
+//===----------------------------------------------------------------------===//
+
+def Sim_BufferOp : Sim_Op<"buffer", [
+    Symbol, IsolatedFromAbove, HasParent<"SimulationOp">,
+    DeclareOpInterfaceMethods<OpAsmOpInterface, ["getAsmBlockArgumentNames"]>,
+    DeclareOpInterfaceMethods<SymbolUserOpInterface>]> {
+  let summary = "a double-buffered state buffer with one element per item";
+  let description = [{
+    A buffer holds one element per item of the simulation's range: a scalar
+    `f32` or `f64`, or a vector of up to 16 of them. It is double-buffered
+    (source = value at `T`, target = value at `T + m`) and written by exactly
+    one component.
+
+    - `interp(...)`: how a later component reconstructs the buffer at an
+      intermediate time (default `#sim.linear`).
+    - `boundary(...)`: what reads outside `[0, range)` return (default
+      `clamp`).
+    - `init`: the initial state of item `%i` at time 0. Reads in it see the
+      initial state of other buffers.
+    - `exact` (optional): the exact solution at item `%i` and time `%t`
+      (`f64`, in time units), used to report the error of a run. Reads in it
+      see initial states.
+    - `snapshot` (set by `--sim-plan-memory`): the plan keeps a copy of the
+      value at `T` for later interpolating readers.
+
+    ```mlir
+    sim.buffer @X : f64 interp(#sim.hermite<@V>) boundary(wrap) init {
+    ^bb0(%i: index):
+      %c = arith.constant 1.0 : f64
+      sim.yield %c : f64
+    } exact {
+    ^bb0(%i: index, %t: f64):
+      %x = math.cos %t : f64
+      sim.yield %x : f64
+    }
+    ```
+  }];
+
+  let arguments = (ins SymbolNameAttr:$sym_name, TypeAttr:$element_type,
+                       OptionalAttr<Sim_InterpolationAttrInterface>:$interp,
+                       DefaultValuedAttr<Sim_BoundaryAttr,
+                                         "::mlir::sim::Boundary::clamp">:$boundary,
+                       UnitAttr:$snapshot);
+  let regions = (region SizedRegion<1>:$init, MaxSizedRegion<1>:$exact);
+  let assemblyFormat = [{
+    $sym_name `:` $element_type (`interp` `(` $interp^ `)`)?
+    `` custom<BoundaryClause>($boundary) attr-dict-with-keyword
+    `init` $init (`exact` $exact^)?
+  }];
+  let hasVerifier = 1;
+
+  let extraClassDeclaration = [{
+    /// The interpolation function, `#sim.linear` when none is given.
+    InterpolationAttrInterface getInterpolation();
+    /// The element's scalar float type (f32 or f64).
+    ::mlir::FloatType getScalarType();
+    /// Bytes of one element.
+    int64_t getElementBytes();
+  }];
+}
+
+//===----------------------------------------------------------------------===//
+// ComponentOp
+//===----------------------------------------------------------------------===//
+
+def Sim_ComponentOp : Sim_Op<"component", [
+    Symbol, IsolatedFromAbove, HasParent<"SimulationOp">,
+    DeclareOpInterfaceMethods<OpAsmOpInterface, ["getAsmBlockArgumentNames"]>,
+    DeclareOpInterfaceMethods<SymbolUserOpInterface>]> {
+  let summary = "a component that advances the buffers it writes";
+  let description = [{
+    A component advances every buffer in `writes` (one or more: an integrator
+    updates position and velocity together) from local time `t` to `t + n`
+    base steps.
+
+    - `num_steps` (optional) has arguments `(%i: index, %t: i64)` and yields
+      an `i32`: how many base steps item `%i` could take from local time `%t`
+      (values below 1 count as 1). Without it the component never limits a
+      step.
+    - `evaluate` has arguments `(%i: index, %t: i64, %n: i32, %dt: <dt type>)`
+      and yields the new value of each written buffer, in `writes` order,
+      after `%n` base steps of `%dt` from local time `%t`.
+
+    Both bodies read state only through `sim.read`. The analyses record
+    their verdicts as attributes: `sub_stepping` (`--sim-substep-legality`)
+    and `parity` (`--sim-plan-memory`).
+
+    ```mlir
+    sim.component @Integrate writes(@X, @V) num_steps {
+    ^bb0(%i: index, %t: i64):
+      %c2 = arith.constant 2 : i32
+      sim.yield %c2 : i32
+    } evaluate {
+    ^bb0(%i: index, %t: i64, %n: i32, %dt: f64):
+      %x = sim.read @X[%i] : f64
+      %v = sim.read @V[%i] : f64
+      ...
+      sim.yield %x1, %v1 : f64, f64
+    }
+    ```
+  }];
+
+  let arguments = (ins SymbolNameAttr:$sym_name,
+                       FlatSymbolRefArrayAttr:$writes,
+                       OptionalAttr<Sim_SubSteppingAttr>:$sub_stepping,
+                       OptionalAttr<Sim_ParityAttr>:$parity);
+  let regions = (region MaxSizedRegion<1>:$num_steps, SizedRegion<1>:$evaluate);
+  let assemblyFormat = [{
+    $sym_name `writes` `` custom<SymbolList>($writes) attr-dict-with-keyword
+    (`num_steps` $num_steps^)? `evaluate` $evaluate
+  }];
+  let hasVerifier = 1;
+
+  let extraClassDeclaration = [{
+    /// True when the component has a `num_steps` body.
+    bool hasNumSteps() { return !getNumSteps().empty(); }
+    /// True when `buffer` is one of the buffers this component writes.
+    bool writesBuffer(::mlir::FlatSymbolRefAttr buffer);
+  }];
+}
+
+//===----------------------------------------------------------------------===//
+// ScheduleOp / ObserveOp
+//===----------------------------------------------------------------------===//
+
+def Sim_ScheduleOp : Sim_Op<"schedule", [HasParent<"SimulationOp">,
+    DeclareOpInterfaceMethods<SymbolUserOpInterface>]> {
+  let summary = "the order of components within one step";
+  let description = [{
+    The components in the order one step runs them; the back edge runs from
+    the last to the first. A user may give a full order or a prefix (at least
+    the component that starts a step, which decides where the dependency
+    cycle is cut). `--sim-schedule` validates it against the dependency graph,
+    completes a prefix, and records in `bounded_by` the components whose
+    `num_steps` bound the `hip` big step (those that read through the back
+    edge).
+
+    ```mlir
+    sim.schedule [@C0]
+    // after --sim-schedule:
+    sim.schedule [@C0, @C1, @C2, @C3, @C4] bounded_by [@C0]
+    ```
+  }];
+  let arguments = (ins FlatSymbolRefArrayAttr:$order,
+                       OptionalAttr<FlatSymbolRefArrayAttr>:$bounded_by);
+  let assemblyFormat = "$order (`bounded_by` $bounded_by^)? attr-dict";
+}
+
+def Sim_ObserveOp : Sim_Op<"observe", [HasParent<"SimulationOp">,
+    DeclareOpInterfaceMethods<SymbolUserOpInterface>]> {
+  let summary = "the buffers that are the outputs of the simulation";
+  let description = [{
+    The observed buffers are what the scene is for: `--sim-prune` removes
+    every component and buffer they do not depend on.
+
+    ```mlir
+    sim.observe [@B2]
+    ```
+  }];
+  let arguments = (ins FlatSymbolRefArrayAttr:$buffers);
+  let assemblyFormat = "$buffers attr-dict";
+}
+
+//===----------------------------------------------------------------------===//
+// Body operations
+//===----------------------------------------------------------------------===//
+
+def Sim_YieldOp : Sim_Op<"yield", [Pure, Terminator, ReturnLike,
+    ParentOneOf<["BufferOp", "ComponentOp"]>]> {
+  let summary = "returns the values of a buffer or component body";
+  let description = [{
+    Terminates `init`, `exact`, `num_steps` and `evaluate` bodies.
+
+    ```mlir
+    sim.yield %x, %v : f64, f64
+    ```
+  }];
+  let arguments = (ins Variadic<AnyType>:$values);
+  let assemblyFormat = "($values^ `:` type($values))? attr-dict";
+}
+
+def Sim_ReadOp : Sim_Op<"read", [
+    DeclareOpInterfaceMethods<SymbolUserOpInterface>,
+    MemoryEffects<[MemRead<Sim_StateResource>]>]> {
+  let summary = "a view read: a buffer at an item, at the reader's local time";
+  let description = [{
+    Reads buffer `@B` at item `%j` "at my current local time": in `evaluate`
+    at the end `t + n` of the sub-step for buffers advanced earlier in the
+    step, at `T` for buffers read through the back edge, and the own current
+    state for buffers the component writes; in `num_steps` everything at `t`;
+    in `init` and `exact` bodies the initial state. The index may be any
+    value; the analyses classify it (own item, window `%i + c`, gather).
+    Items outside the range follow the buffer's boundary rule.
+
+    `--sim-schedule` records the read's role (`own`, `interpolate`,
+    `back_edge`) after the index.
+
+    ```mlir
+    %v = sim.read @B0[%j] : vector<4xf32>
+    %w = sim.read @B0[%j] interpolate : vector<4xf32>
+    ```
+  }];
+  let arguments = (ins FlatSymbolRefAttr:$buffer, Index:$index,
+                       OptionalAttr<Sim_ReadRoleAttr>:$role);
+  let results = (outs AnyType:$result);
+  let assemblyFormat = [{
+    $buffer `[` $index `]` `` custom<OptionalReadRole>($role) attr-dict
+    `:` type($result)
+  }];
+  let hasVerifier = 1;
+}
+
+def Sim_LoadOp : Sim_Op<"load", [
+    DeclareOpInterfaceMethods<SymbolUserOpInterface>,
+    MemoryEffects<[MemRead<Sim_StateResource>]>]> {
+  let summary = "an explicit read of one copy of a buffer";
+  let description = [{
+    Produced by `--sim-insert-interpolation` from view reads: reads item `%j`
+    of one specific copy of a buffer (`source`, `snapshot`, `target` or the
+    component's `local` state). Nothing about time is left to derive: a
+    lowering turns it into an address computation and a load.
+
+    ```mlir
+    %a = sim.load snapshot @B0[%j] : vector<4xf32>
+    %b = sim.load target @B0[%j] : vector<4xf32>
+    ```
+  }];
+  let arguments = (ins FlatSymbolRefAttr:$buffer, Index:$index,
+                       Sim_VersionAttr:$version);
+  let results = (outs AnyType:$result);
+  let assemblyFormat = [{
+    `` $version $buffer `[` $index `]` attr-dict `:` type($result)
+  }];
+  let hasVerifier = 1;
+}
+
+def Sim_BigStepOp : Sim_Op<"big_step", [Pure]> {
+  let summary = "the current big step: its start T and its size m";
+  let description = [{
+    Inside a component body: the start `T` of the current big step and its
+    size `m`, both in base steps. Produced by `--sim-insert-interpolation` to
+    compute interpolation fractions; the strategy that executes the body
+    defines the values (`simple`: `m = 1`).
+
+    ```mlir
+    %T, %m = sim.big_step : i64, i64
+    ```
+  }];
+  let results = (outs I64:$begin, I64:$size);
+  let assemblyFormat = "attr-dict `:` type($begin) `,` type($size)";
+  let hasVerifier = 1;
+}
+
+#endif // SIM_DIALECT_SIM_IR_SIMOPS_TD

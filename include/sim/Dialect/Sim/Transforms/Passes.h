@@ -1,0 +1,23 @@
+//===- Passes.h - sim dialect passes ----------------------------*- C++ -*-===//
+//
+// Declares the sim passes and their registration.
+//
+//===----------------------------------------------------------------------===//
+
+#ifndef SIM_DIALECT_SIM_TRANSFORMS_PASSES_H
+#define SIM_DIALECT_SIM_TRANSFORMS_PASSES_H
+
+#include "mlir/Pass/Pass.h"
+#include "sim/Dialect/Sim/IR/SimOps.h"
+
+namespace mlir::sim {
+
+#define GEN_PASS_DECL
+#include "sim/Dialect/Sim/Transforms/Passes.h.inc"
+
+#define GEN_PASS_REGISTRATION
+#include "sim/Dialect/Sim/Transforms/Passes.h.inc"
+
+} // namespace mlir::sim
+
+#endif // SIM_DIALECT_SIM_TRANSFORMS_PASSES_H

@@ -1,0 +1,130 @@
+//===- SimAttrs.cpp - sim attributes and interpolation functions ----------===//
+//
+// The interpolation functions build their arithmetic with arith (and vector
+// broadcasts for vector elements). Each is written so that fraction 0 and 1
+// return the end values exactly: weights are 0 or 1 there, and every weighted
+// term is summed, never formed as a difference of end values.
+//
+//===----------------------------------------------------------------------===//
+
+#include "sim/Dialect/Sim/IR/SimAttrs.h"
+#include "sim/Dialect/Sim/IR/SimDialect.h"
+
+#include "mlir/Dialect/Arith/IR/Arith.h"
+#include "mlir/Dialect/Vector/IR/VectorOps.h"
+#include "mlir/IR/Builders.h"
+#include "mlir/IR/DialectImplementation.h"
+#include "llvm/ADT/TypeSwitch.h"
+
+using namespace mlir;
+using namespace mlir::sim;
+
+#include "sim/Dialect/Sim/IR/SimEnums.cpp.inc"
+#include "sim/Dialect/Sim/IR/SimInterfaces.cpp.inc"
+
+#define GET_ATTRDEF_CLASSES
+#include "sim/Dialect/Sim/IR/SimAttrs.cpp.inc"
+
+void SimDialect::registerAttributes() {
+  addAttributes<
+#define GET_ATTRDEF_LIST
+#include "sim/Dialect/Sim/IR/SimAttrs.cpp.inc"
+      >();
+}
+
+Value mlir::sim::splatLike(OpBuilder &builder, Location loc, Value scalar,
+                           Type type) {
+  if (scalar.getType() == type)
+    return scalar;
+  return vector::BroadcastOp::create(builder, loc, type, scalar);
+}
+
+namespace {
+/// Small arithmetic helpers on scalar weights of the fraction's type.
+struct WeightBuilder {
+  OpBuilder &b;
+  Location loc;
+  Type scalarType;
+
+  Value constant(double value) {
+    return arith::ConstantOp::create(b, loc,
+                                     b.getFloatAttr(scalarType, value));
+  }
+  Value add(Value x, Value y) { return arith::AddFOp::create(b, loc, x, y); }
+  Value sub(Value x, Value y) { return arith::SubFOp::create(b, loc, x, y); }
+  Value mul(Value x, Value y) { return arith::MulFOp::create(b, loc, x, y); }
+  /// `weight * element`, with the scalar weight splatted for vectors.
+  Value scale(Value weight, Value element) {
+    return mul(splatLike(b, loc, weight, element.getType()), element);
+  }
+};
+} // namespace
+
+//===----------------------------------------------------------------------===//
+// LinearInterpAttr
+//===----------------------------------------------------------------------===//
+
+unsigned LinearInterpAttr::getOrderOfAccuracy() const { return 2; }
+
+Value LinearInterpAttr::buildInterpolation(OpBuilder &builder, Location loc,
+                                           ValueRange atBegin, ValueRange atEnd,
+                                           Value fraction, Value span) const {
+  WeightBuilder w{builder, loc, fraction.getType()};
+  Value weightBegin = w.sub(w.constant(1.0), fraction);
+  return w.add(w.scale(weightBegin, atBegin[0]), w.scale(fraction, atEnd[0]));
+}
+
+//===----------------------------------------------------------------------===//
+// CubicInterpAttr
+//===----------------------------------------------------------------------===//
+
+unsigned CubicInterpAttr::getOrderOfAccuracy() const { return 1; }
+
+Value CubicInterpAttr::buildInterpolation(OpBuilder &builder, Location loc,
+                                          ValueRange atBegin, ValueRange atEnd,
+                                          Value fraction, Value span) const {
+  WeightBuilder w{builder, loc, fraction.getType()};
+  // s = f^2 (3 - 2f): exactly 0 at f = 0 and exactly 1 at f = 1.
+  Value twoF = w.mul(w.constant(2.0), fraction);
+  Value s = w.mul(w.mul(fraction, fraction), w.sub(w.constant(3.0), twoF));
+  Value weightBegin = w.sub(w.constant(1.0), s);
+  return w.add(w.scale(weightBegin, atBegin[0]), w.scale(s, atEnd[0]));
+}
+
+//===----------------------------------------------------------------------===//
+// HermiteInterpAttr
+//===----------------------------------------------------------------------===//
+
+unsigned HermiteInterpAttr::getOrderOfAccuracy() const { return 4; }
+
+SmallVector<FlatSymbolRefAttr> HermiteInterpAttr::getAuxiliaryBuffers() const {
+  return {getDerivative()};
+}
+
+StringRef HermiteInterpAttr::getAuxiliaryBufferRole(unsigned index) const {
+  return "derivative";
+}
+
+Value HermiteInterpAttr::buildInterpolation(OpBuilder &builder, Location loc,
+                                            ValueRange atBegin,
+                                            ValueRange atEnd, Value fraction,
+                                            Value span) const {
+  WeightBuilder w{builder, loc, fraction.getType()};
+  Value f = fraction;
+  Value one = w.constant(1.0);
+  Value oneMinusF = w.sub(one, f);
+  Value oneMinusFSq = w.mul(oneMinusF, oneMinusF);
+  Value fSq = w.mul(f, f);
+  // Hermite basis in factored form, so that every weight is exactly 0 or 1
+  // at both ends.
+  Value h00 = w.mul(w.add(one, w.mul(w.constant(2.0), f)), oneMinusFSq);
+  Value h10 = w.mul(f, oneMinusFSq);
+  Value h01 = w.mul(fSq, w.sub(w.constant(3.0), w.mul(w.constant(2.0), f)));
+  Value h11 = w.mul(fSq, w.sub(f, one));
+  // Derivatives are per time unit; the basis is over the unit interval.
+  Value h10Span = w.mul(h10, span);
+  Value h11Span = w.mul(h11, span);
+  Value sum = w.add(w.scale(h00, atBegin[0]), w.scale(h10Span, atBegin[1]));
+  sum = w.add(sum, w.scale(h01, atEnd[0]));
+  return w.add(sum, w.scale(h11Span, atEnd[1]));
+}

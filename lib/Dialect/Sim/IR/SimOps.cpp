@@ -1,0 +1,651 @@
+//===- SimOps.cpp - sim dialect operations and verifiers ------------------===//
+//
+// Verifiers check everything a scene must satisfy before any analysis runs:
+// body signatures and yields, symbol references, element types, that every
+// buffer has exactly one writer, and that initial states do not depend on
+// each other in a cycle. Checks that need symbol lookups live in
+// verifySymbolUses so that the symbol table is built once per simulation.
+//
+//===----------------------------------------------------------------------===//
+
+#include "sim/Dialect/Sim/IR/SimOps.h"
+
+#include "mlir/IR/Builders.h"
+#include "mlir/IR/BuiltinTypes.h"
+#include "mlir/IR/Diagnostics.h"
+#include "mlir/IR/OpImplementation.h"
+#include "llvm/ADT/DenseMap.h"
+#include "llvm/ADT/STLExtras.h"
+#include "llvm/ADT/SetVector.h"
+#include "llvm/ADT/SmallPtrSet.h"
+
+using namespace mlir;
+using namespace mlir::sim;
+
+//===----------------------------------------------------------------------===//
+// Helpers
+//===----------------------------------------------------------------------===//
+
+StringRef mlir::sim::stringifyBodyKind(BodyKind kind) {
+  switch (kind) {
+  case BodyKind::NumSteps:
+    return "num_steps";
+  case BodyKind::Evaluate:
+    return "evaluate";
+  case BodyKind::Init:
+    return "init";
+  case BodyKind::Exact:
+    return "exact";
+  }
+  llvm_unreachable("unknown body kind");
+}
+
+bool mlir::sim::isValidElementType(Type type) {
+  auto isScalar = [](Type t) { return t.isF32() || t.isF64(); };
+  if (isScalar(type))
+    return true;
+  auto vector = dyn_cast<VectorType>(type);
+  return vector && vector.getRank() == 1 && !vector.isScalable() &&
+         vector.getNumElements() >= 1 && vector.getNumElements() <= 16 &&
+         isScalar(vector.getElementType());
+}
+
+std::optional<BodyLocation> mlir::sim::getEnclosingBody(Operation *op) {
+  for (Region *region = op->getParentRegion(); region;) {
+    Operation *parent = region->getParentOp();
+    if (!parent)
+      return std::nullopt;
+    if (auto component = dyn_cast<ComponentOp>(parent)) {
+      BodyKind kind = region == &component.getNumSteps() ? BodyKind::NumSteps
+                                                          : BodyKind::Evaluate;
+      return BodyLocation{kind, component, nullptr};
+    }
+    if (auto buffer = dyn_cast<BufferOp>(parent)) {
+      BodyKind kind =
+          region == &buffer.getInit() ? BodyKind::Init : BodyKind::Exact;
+      return BodyLocation{kind, nullptr, buffer};
+    }
+    region = parent->getParentRegion();
+  }
+  return std::nullopt;
+}
+
+/// Prints a type list as "'f32', 'i64'" for diagnostics.
+static std::string formatTypes(TypeRange types) {
+  std::string text;
+  llvm::raw_string_ostream os(text);
+  llvm::interleaveComma(types, os, [&](Type t) { os << "'" << t << "'"; });
+  return text;
+}
+
+/// Verifies that `region` (a body of `op` named `bodyName`) has one block with
+/// arguments of `argTypes` (named in `argSpelling` for the message) and ends
+/// in a sim.yield. Returns that yield, or null after emitting an error.
+static YieldOp verifyBodySignature(Operation *op, Region &region,
+                                   StringRef bodyName, TypeRange argTypes,
+                                   StringRef argSpelling) {
+  Block &block = region.front();
+  if (block.getArgumentTypes() != argTypes) {
+    op->emitOpError() << "expects the " << bodyName
+                      << " body to have arguments " << argSpelling
+                      << ", but it has (" << formatTypes(block.getArgumentTypes())
+                      << ")";
+    return nullptr;
+  }
+  auto yield = dyn_cast<YieldOp>(block.getTerminator());
+  if (!yield) {
+    op->emitOpError() << "expects the " << bodyName
+                      << " body to end in 'sim.yield'";
+    return nullptr;
+  }
+  return yield;
+}
+
+/// Looks up `name` as a buffer of the simulation that encloses `user`.
+static BufferOp lookupBuffer(SymbolTableCollection &symbolTable,
+                             Operation *user, FlatSymbolRefAttr name) {
+  return symbolTable.lookupNearestSymbolFrom<BufferOp>(user, name.getAttr());
+}
+
+//===----------------------------------------------------------------------===//
+// Custom directives
+//===----------------------------------------------------------------------===//
+
+/// `(@a, @b)`: a parenthesised, non-empty list of flat symbol references.
+static ParseResult parseSymbolList(OpAsmParser &parser, ArrayAttr &list) {
+  SmallVector<Attribute> symbols;
+  auto parseOne = [&]() -> ParseResult {
+    StringAttr name;
+    if (parser.parseSymbolName(name))
+      return failure();
+    symbols.push_back(FlatSymbolRefAttr::get(name));
+    return success();
+  };
+  if (parser.parseCommaSeparatedList(OpAsmParser::Delimiter::Paren, parseOne))
+    return failure();
+  list = parser.getBuilder().getArrayAttr(symbols);
+  return success();
+}
+
+static void printSymbolList(OpAsmPrinter &printer, Operation *,
+                            ArrayAttr list) {
+  printer << '(';
+  llvm::interleaveComma(list, printer, [&](Attribute symbol) {
+    printer.printSymbolName(cast<FlatSymbolRefAttr>(symbol).getValue());
+  });
+  printer << ')';
+}
+
+/// An optional bare read-role keyword (`own`, `interpolate`, `back_edge`).
+static ParseResult parseOptionalReadRole(OpAsmParser &parser,
+                                         ReadRoleAttr &role) {
+  StringRef keyword;
+  SMLoc loc = parser.getCurrentLocation();
+  if (failed(parser.parseOptionalKeyword(&keyword)))
+    return success();
+  std::optional<ReadRole> value = symbolizeReadRole(keyword);
+  if (!value)
+    return parser.emitError(loc)
+           << "expected a read role (own, interpolate or back_edge), but got '"
+           << keyword << "'";
+  role = ReadRoleAttr::get(parser.getContext(), *value);
+  return success();
+}
+
+static void printOptionalReadRole(OpAsmPrinter &printer, Operation *,
+                                  ReadRoleAttr role) {
+  if (role)
+    printer << ' ' << stringifyReadRole(role.getValue());
+}
+
+/// An optional `boundary(<rule>)` clause; `clamp` (the default) is elided.
+static ParseResult parseBoundaryClause(OpAsmParser &parser,
+                                       BoundaryAttr &boundary) {
+  if (failed(parser.parseOptionalKeyword("boundary")))
+    return success();
+  StringRef keyword;
+  SMLoc loc = parser.getCurrentLocation();
+  if (parser.parseLParen() || parser.parseKeyword(&keyword))
+    return failure();
+  std::optional<Boundary> value = symbolizeBoundary(keyword);
+  if (!value)
+    return parser.emitError(loc)
+           << "expected a boundary rule (clamp, wrap or zero), but got '"
+           << keyword << "'";
+  boundary = BoundaryAttr::get(parser.getContext(), *value);
+  return parser.parseRParen();
+}
+
+static void printBoundaryClause(OpAsmPrinter &printer, Operation *,
+                                BoundaryAttr boundary) {
+  if (boundary && boundary.getValue() != Boundary::clamp)
+    printer << " boundary(" << stringifyBoundary(boundary.getValue()) << ")";
+}
+
+#define GET_OP_CLASSES
+#include "sim/Dialect/Sim/IR/SimOps.cpp.inc"
+
+//===----------------------------------------------------------------------===//
+// SimulationOp
+//===----------------------------------------------------------------------===//
+
+ScheduleOp SimulationOp::getScheduleOp() {
+  auto ops = getBody().front().getOps<ScheduleOp>();
+  return ops.empty() ? nullptr : *ops.begin();
+}
+
+ObserveOp SimulationOp::getObserveOp() {
+  auto ops = getBody().front().getOps<ObserveOp>();
+  return ops.empty() ? nullptr : *ops.begin();
+}
+
+LogicalResult SimulationOp::verify() {
+  if (getRange() <= 0)
+    return emitOpError() << "expects a positive item range, but got "
+                         << getRange();
+  if (getMaxSteps() < 1)
+    return emitOpError() << "expects max_steps to be at least 1, but got "
+                         << getMaxSteps();
+  double dt = getTimeStep();
+  if (!(dt > 0.0) || !std::isfinite(dt))
+    return emitOpError() << "expects a positive, finite base time step dt, "
+                            "but got "
+                         << dt;
+  return success();
+}
+
+/// Finds a cycle in the "initial state of A reads the initial state of B"
+/// relation and returns it (empty when there is none).
+static SmallVector<BufferOp>
+findInitCycle(ArrayRef<BufferOp> buffers,
+              const DenseMap<Operation *, SmallVector<BufferOp>> &reads) {
+  enum class Mark { Unvisited, OnStack, Done };
+  DenseMap<Operation *, Mark> marks;
+  SmallVector<BufferOp> stack;
+  SmallVector<BufferOp> cycle;
+  std::function<bool(BufferOp)> visit = [&](BufferOp buffer) -> bool {
+    marks[buffer] = Mark::OnStack;
+    stack.push_back(buffer);
+    auto it = reads.find(buffer);
+    if (it != reads.end()) {
+      for (BufferOp next : it->second) {
+        Mark mark = marks.lookup(next);
+        if (mark == Mark::OnStack) {
+          auto start = llvm::find(stack, next);
+          cycle.assign(start, stack.end());
+          return true;
+        }
+        if (mark == Mark::Unvisited && visit(next))
+          return true;
+      }
+    }
+    stack.pop_back();
+    marks[buffer] = Mark::Done;
+    return false;
+  };
+  for (BufferOp buffer : buffers)
+    if (marks.lookup(buffer) == Mark::Unvisited && visit(buffer))
+      return cycle;
+  return {};
+}
+
+LogicalResult SimulationOp::verifyRegions() {
+  Block &body = getBody().front();
+  Operation *schedule = nullptr, *observe = nullptr;
+  for (Operation &op : body) {
+    if (isa<ScheduleOp>(op)) {
+      if (schedule)
+        return op.emitOpError()
+                   .append("is the second schedule of this simulation; "
+                           "a simulation has at most one")
+                   .attachNote(schedule->getLoc())
+               << "the first schedule is here";
+      schedule = &op;
+      continue;
+    }
+    if (isa<ObserveOp>(op)) {
+      if (observe)
+        return op.emitOpError()
+                   .append("is the second observe list of this simulation; "
+                           "list all observed buffers in one")
+                   .attachNote(observe->getLoc())
+               << "the first observe list is here";
+      observe = &op;
+      continue;
+    }
+    if (!isa<ParamOp, BufferOp, ComponentOp>(op))
+      return op.emitError()
+             << "'" << op.getName()
+             << "' cannot appear directly in a simulation; it holds only "
+                "sim.param, sim.buffer, sim.component, sim.schedule and "
+                "sim.observe";
+  }
+
+  // Every buffer is written by exactly one component.
+  DenseMap<Operation *, ComponentOp> writerOf;
+  for (ComponentOp component : getComponents()) {
+    for (auto name : component.getWrites().getAsRange<FlatSymbolRefAttr>()) {
+      BufferOp buffer = lookupBuffer(name);
+      if (!buffer)
+        continue; // Reported by the component's symbol verification.
+      auto [it, inserted] = writerOf.try_emplace(buffer, component);
+      if (!inserted)
+        return component.emitOpError()
+                   << "writes buffer " << name << ", which component @"
+                   << it->second.getSymName()
+                   << " already writes; every buffer has exactly one writer"
+                   << "";
+    }
+  }
+  for (BufferOp buffer : getBuffers())
+    if (!writerOf.count(buffer))
+      return buffer.emitOpError()
+             << "is not written by any component; every buffer needs exactly "
+                "one writer";
+
+  // Initial states may read other initial states, but not in a cycle.
+  SmallVector<BufferOp> buffers(getBuffers());
+  DenseMap<Operation *, SmallVector<BufferOp>> initReads;
+  for (BufferOp buffer : buffers) {
+    buffer.getInit().walk([&](ReadOp read) {
+      if (BufferOp source = lookupBuffer(read.getBufferAttr()))
+        initReads[buffer].push_back(source);
+    });
+  }
+  SmallVector<BufferOp> cycle = findInitCycle(buffers, initReads);
+  if (!cycle.empty()) {
+    InFlightDiagnostic diag =
+        cycle.front().emitOpError()
+        << "has an initial state that depends on itself through the init "
+           "bodies of ";
+    llvm::interleave(
+        cycle, [&](BufferOp b) { diag << "@" << b.getSymName(); },
+        [&] { diag << " -> "; });
+    diag << " -> @" << cycle.front().getSymName();
+    return diag;
+  }
+  return success();
+}
+
+//===----------------------------------------------------------------------===//
+// ParamOp / GetParamOp
+//===----------------------------------------------------------------------===//
+
+LogicalResult ParamOp::verify() {
+  Attribute value = getValue();
+  bool isScalar = false;
+  if (auto intAttr = dyn_cast<IntegerAttr>(value))
+    isScalar = intAttr.getType().isSignlessInteger() ||
+               intAttr.getType().isIndex();
+  else
+    isScalar = isa<FloatAttr>(value);
+  if (!isScalar)
+    return emitOpError() << "expects an integer or float default value, but "
+                            "got "
+                         << value;
+  return success();
+}
+
+LogicalResult
+GetParamOp::verifySymbolUses(SymbolTableCollection &symbolTable) {
+  auto param =
+      symbolTable.lookupNearestSymbolFrom<ParamOp>(*this, getParamAttr());
+  if (!param)
+    return emitOpError() << getParamAttr()
+                         << " does not name a sim.param of the enclosing "
+                            "simulation";
+  Type paramType = cast<TypedAttr>(param.getValue()).getType();
+  if (paramType != getType())
+    return emitOpError() << "result type " << getType()
+                         << " does not match the type " << paramType
+                         << " of parameter " << getParamAttr();
+  return success();
+}
+
+//===----------------------------------------------------------------------===//
+// BufferOp
+//===----------------------------------------------------------------------===//
+
+InterpolationAttrInterface BufferOp::getInterpolation() {
+  if (auto interp = getInterpAttr())
+    return interp;
+  return cast<InterpolationAttrInterface>(LinearInterpAttr::get(getContext()));
+}
+
+FloatType BufferOp::getScalarType() {
+  Type type = getElementType();
+  if (auto vector = dyn_cast<VectorType>(type))
+    type = vector.getElementType();
+  return cast<FloatType>(type);
+}
+
+int64_t BufferOp::getElementBytes() {
+  Type type = getElementType();
+  int64_t count = 1;
+  if (auto vector = dyn_cast<VectorType>(type))
+    count = vector.getNumElements();
+  return count * getScalarType().getWidth() / 8;
+}
+
+/// Names the block arguments of `region` after `names` in printed IR.
+static void nameBodyArguments(Region &region, ArrayRef<StringRef> names,
+                              OpAsmSetValueNameFn setNameFn) {
+  if (region.empty())
+    return;
+  for (auto [arg, name] : llvm::zip(region.front().getArguments(), names))
+    setNameFn(arg, name);
+}
+
+void BufferOp::getAsmBlockArgumentNames(Region &region,
+                                        OpAsmSetValueNameFn setNameFn) {
+  nameBodyArguments(region, {"i", "t"}, setNameFn);
+}
+
+LogicalResult BufferOp::verify() {
+  Type elementType = getElementType();
+  if (!isValidElementType(elementType))
+    return emitOpError() << "expects an element type of f32, f64, or a vector "
+                            "of 1 to 16 of them, but got "
+                         << elementType;
+
+  Builder b(getContext());
+  YieldOp initYield = verifyBodySignature(
+      *this, getInit(), "init", {b.getIndexType()}, "(index)");
+  if (!initYield)
+    return failure();
+  if (initYield.getValues().getTypes() != TypeRange(elementType))
+    return emitOpError() << "expects the init body to yield one value of the "
+                            "element type "
+                         << elementType << ", but it yields ("
+                         << formatTypes(initYield.getValues().getTypes())
+                         << ")";
+
+  if (!getExact().empty()) {
+    YieldOp exactYield =
+        verifyBodySignature(*this, getExact(), "exact",
+                            {b.getIndexType(), b.getF64Type()}, "(index, f64)");
+    if (!exactYield)
+      return failure();
+    if (exactYield.getValues().getTypes() != TypeRange(elementType))
+      return emitOpError() << "expects the exact body to yield one value of "
+                              "the element type "
+                           << elementType << ", but it yields ("
+                           << formatTypes(exactYield.getValues().getTypes())
+                           << ")";
+  }
+  return success();
+}
+
+LogicalResult BufferOp::verifySymbolUses(SymbolTableCollection &symbolTable) {
+  InterpolationAttrInterface interp = getInterpolation();
+  for (auto [index, name] : llvm::enumerate(interp.getAuxiliaryBuffers())) {
+    StringRef role = interp.getAuxiliaryBufferRole(index);
+    if (name.getValue() == getSymName())
+      return emitOpError() << "cannot be its own " << role
+                           << " buffer in its interpolation " << interp;
+    BufferOp aux = lookupBuffer(symbolTable, *this, name);
+    if (!aux)
+      return emitOpError() << "names " << name << " as the " << role
+                           << " buffer of its interpolation, but the "
+                              "simulation has no such buffer";
+    if (aux.getElementType() != getElementType())
+      return emitOpError() << "has element type " << getElementType()
+                           << ", but its " << role << " buffer " << name
+                           << " has element type " << aux.getElementType()
+                           << "; they must match";
+  }
+  return success();
+}
+
+//===----------------------------------------------------------------------===//
+// ComponentOp
+//===----------------------------------------------------------------------===//
+
+void ComponentOp::getAsmBlockArgumentNames(Region &region,
+                                           OpAsmSetValueNameFn setNameFn) {
+  nameBodyArguments(region, {"i", "t", "n", "dt"}, setNameFn);
+}
+
+bool ComponentOp::writesBuffer(FlatSymbolRefAttr buffer) {
+  return llvm::is_contained(getWrites().getAsRange<FlatSymbolRefAttr>(),
+                            buffer);
+}
+
+LogicalResult ComponentOp::verify() {
+  ArrayAttr writes = getWrites();
+  if (writes.empty())
+    return emitOpError() << "expects to write at least one buffer";
+  llvm::SmallDenseSet<Attribute> seen;
+  for (Attribute name : writes)
+    if (!seen.insert(name).second)
+      return emitOpError() << "lists buffer " << name << " twice in writes";
+
+  Builder b(getContext());
+  if (hasNumSteps()) {
+    YieldOp yield =
+        verifyBodySignature(*this, getNumSteps(), "num_steps",
+                            {b.getIndexType(), b.getI64Type()}, "(index, i64)");
+    if (!yield)
+      return failure();
+    if (yield.getValues().getTypes() != TypeRange(b.getI32Type()))
+      return emitOpError() << "expects the num_steps body to yield one 'i32', "
+                              "but it yields ("
+                           << formatTypes(yield.getValues().getTypes()) << ")";
+  }
+
+  auto simulation = (*this)->getParentOfType<SimulationOp>();
+  Type dtType = simulation.getTimeStepType();
+  std::string spelling;
+  llvm::raw_string_ostream(spelling) << "(index, i64, i32, " << dtType << ")";
+  YieldOp yield = verifyBodySignature(
+      *this, getEvaluate(), "evaluate",
+      {b.getIndexType(), b.getI64Type(), b.getI32Type(), dtType}, spelling);
+  if (!yield)
+    return failure();
+  if (yield.getValues().size() != writes.size())
+    return emitOpError() << "expects the evaluate body to yield one value per "
+                            "written buffer ("
+                         << writes.size() << "), but it yields "
+                         << yield.getValues().size();
+  return success();
+}
+
+LogicalResult
+ComponentOp::verifySymbolUses(SymbolTableCollection &symbolTable) {
+  auto yield = cast<YieldOp>(getEvaluate().front().getTerminator());
+  for (auto [index, name] :
+       llvm::enumerate(getWrites().getAsRange<FlatSymbolRefAttr>())) {
+    BufferOp buffer = lookupBuffer(symbolTable, *this, name);
+    if (!buffer)
+      return emitOpError() << "writes " << name
+                           << ", which is not a sim.buffer of this simulation";
+    Type yielded = yield.getValues()[index].getType();
+    if (yielded != buffer.getElementType())
+      return emitOpError() << "yields " << yielded << " for " << name
+                           << " (result #" << index
+                           << " of evaluate), but the buffer's element type "
+                              "is "
+                           << buffer.getElementType();
+  }
+  return success();
+}
+
+//===----------------------------------------------------------------------===//
+// ScheduleOp / ObserveOp
+//===----------------------------------------------------------------------===//
+
+/// Verifies that `list` names distinct symbols of kind `OpTy`.
+template <typename OpTy>
+static LogicalResult verifySymbolArray(Operation *user,
+                                       SymbolTableCollection &symbolTable,
+                                       ArrayAttr list, StringRef listName,
+                                       StringRef kindName) {
+  llvm::SmallDenseSet<Attribute> seen;
+  for (auto name : list.getAsRange<FlatSymbolRefAttr>()) {
+    if (!symbolTable.lookupNearestSymbolFrom<OpTy>(user, name.getAttr()))
+      return user->emitOpError() << "lists " << name << " in " << listName
+                                 << ", but it is not a " << kindName
+                                 << " of this simulation";
+    if (!seen.insert(name).second)
+      return user->emitOpError()
+             << "lists " << name << " twice in " << listName;
+  }
+  return success();
+}
+
+LogicalResult ScheduleOp::verifySymbolUses(SymbolTableCollection &table) {
+  if (getOrder().empty())
+    return emitOpError() << "expects at least the component that starts a "
+                            "step";
+  if (failed(verifySymbolArray<ComponentOp>(*this, table, getOrder(), "order",
+                                            "sim.component")))
+    return failure();
+  if (ArrayAttr bounds = getBoundedByAttr())
+    return verifySymbolArray<ComponentOp>(*this, table, bounds, "bounded_by",
+                                          "sim.component");
+  return success();
+}
+
+LogicalResult ObserveOp::verifySymbolUses(SymbolTableCollection &table) {
+  if (getBuffers().empty())
+    return emitOpError() << "expects at least one observed buffer";
+  return verifySymbolArray<BufferOp>(*this, table, getBuffers(), "observe",
+                                     "sim.buffer");
+}
+
+//===----------------------------------------------------------------------===//
+// ReadOp / LoadOp / BigStepOp
+//===----------------------------------------------------------------------===//
+
+LogicalResult ReadOp::verify() {
+  std::optional<BodyLocation> body = getEnclosingBody(*this);
+  if (!body)
+    return emitOpError() << "must be inside a num_steps, evaluate, init or "
+                            "exact body";
+  if (getRoleAttr() && !body->component)
+    return emitOpError() << "has a read role, but roles only apply to reads "
+                            "in component bodies";
+  return success();
+}
+
+/// Shared symbol checks of sim.read and sim.load: the buffer exists and the
+/// result has its element type.
+static LogicalResult verifyBufferAccess(Operation *op,
+                                        SymbolTableCollection &symbolTable,
+                                        FlatSymbolRefAttr name,
+                                        Type resultType, BufferOp &buffer) {
+  buffer = lookupBuffer(symbolTable, op, name);
+  if (!buffer)
+    return op->emitOpError() << "reads " << name
+                             << ", which is not a sim.buffer of this "
+                                "simulation";
+  if (buffer.getElementType() != resultType)
+    return op->emitOpError() << "result type " << resultType
+                             << " does not match the element type "
+                             << buffer.getElementType() << " of buffer "
+                             << name;
+  return success();
+}
+
+LogicalResult ReadOp::verifySymbolUses(SymbolTableCollection &symbolTable) {
+  BufferOp buffer;
+  if (failed(verifyBufferAccess(*this, symbolTable, getBufferAttr(), getType(),
+                                buffer)))
+    return failure();
+  std::optional<BodyLocation> body = getEnclosingBody(*this);
+  if (body->kind == BodyKind::Init && body->buffer == buffer)
+    return emitOpError() << "reads " << getBufferAttr()
+                         << " in its own init body; the initial state cannot "
+                            "depend on itself";
+  return success();
+}
+
+LogicalResult LoadOp::verify() {
+  std::optional<BodyLocation> body = getEnclosingBody(*this);
+  if (!body || !body->component)
+    return emitOpError() << "must be inside a component's num_steps or "
+                            "evaluate body";
+  return success();
+}
+
+LogicalResult LoadOp::verifySymbolUses(SymbolTableCollection &symbolTable) {
+  BufferOp buffer;
+  if (failed(verifyBufferAccess(*this, symbolTable, getBufferAttr(), getType(),
+                                buffer)))
+    return failure();
+  ComponentOp component = getEnclosingBody(*this)->component;
+  if (getVersion() == Version::local &&
+      !component.writesBuffer(getBufferAttr()))
+    return emitOpError() << "loads the local state of " << getBufferAttr()
+                         << ", but component @" << component.getSymName()
+                         << " does not write it";
+  return success();
+}
+
+LogicalResult BigStepOp::verify() {
+  std::optional<BodyLocation> body = getEnclosingBody(*this);
+  if (!body || !body->component)
+    return emitOpError() << "must be inside a component's num_steps or "
+                            "evaluate body";
+  return success();
+}

@@ -1,0 +1,127 @@
+//===- SetParams.cpp - override scene parameters --------------------------===//
+//
+// Scene parameters (the item range, the base time step, the largest big step
+// and every sim.param) must be settable without editing the scene file. This
+// pass applies `name=value` overrides and rejects names and values it cannot
+// apply, so that a typo on the command line never silently runs the default.
+//
+//===----------------------------------------------------------------------===//
+
+#include "sim/Dialect/Sim/IR/SimOps.h"
+#include "sim/Dialect/Sim/Transforms/Passes.h"
+
+#include "mlir/IR/Builders.h"
+#include "llvm/ADT/StringExtras.h"
+
+namespace mlir::sim {
+#define GEN_PASS_DEF_SIMSETPARAMS
+#include "sim/Dialect/Sim/Transforms/Passes.h.inc"
+} // namespace mlir::sim
+
+using namespace mlir;
+using namespace mlir::sim;
+
+namespace {
+
+/// Parses `text` as a constant of `type` (a signless integer, index or float).
+static FailureOr<TypedAttr> parseScalar(Builder &builder, StringRef text,
+                                        Type type) {
+  text = text.trim();
+  if (isa<IntegerType, IndexType>(type)) {
+    unsigned width =
+        type.isIndex() ? IndexType::kInternalStorageBitWidth
+                       : cast<IntegerType>(type).getWidth();
+    APInt value;
+    if (text.getAsInteger(/*Radix=*/0, value))
+      return failure();
+    // Accept the value only when it fits the parameter's width (as a signed or
+    // an unsigned number), never by silent truncation.
+    if (value.getActiveBits() > width && value.getSignificantBits() > width)
+      return failure();
+    return TypedAttr(builder.getIntegerAttr(type, value.sextOrTrunc(width)));
+  }
+  if (auto floatType = dyn_cast<FloatType>(type)) {
+    double value;
+    if (text.getAsDouble(value))
+      return failure();
+    return TypedAttr(builder.getFloatAttr(floatType, value));
+  }
+  return failure();
+}
+
+struct SetParamsPass : public sim::impl::SimSetParamsBase<SetParamsPass> {
+  using SimSetParamsBase::SimSetParamsBase;
+
+  void runOnOperation() override {
+    SimulationOp simulation = getOperation();
+    Builder builder(&getContext());
+    for (const std::string &entry : values) {
+      auto [name, text] = StringRef(entry).split('=');
+      name = name.trim();
+      if (name.empty() || !StringRef(entry).contains('=')) {
+        simulation.emitError() << "expects a parameter override of the form "
+                                  "name=value, but got '"
+                               << entry << "'";
+        return signalPassFailure();
+      }
+      if (failed(apply(simulation, builder, name, text)))
+        return signalPassFailure();
+    }
+  }
+
+  LogicalResult apply(SimulationOp simulation, Builder &builder,
+                      StringRef name, StringRef text) {
+    auto invalid = [&](Type type) {
+      return simulation.emitError()
+             << "cannot set parameter '" << name << "': '" << text.trim()
+             << "' is not a valid " << type;
+    };
+    if (name == "range" || name == "max_steps") {
+      Type type = name == "range" ? builder.getI64Type() : builder.getI32Type();
+      FailureOr<TypedAttr> value = parseScalar(builder, text, type);
+      if (failed(value))
+        return invalid(type);
+      auto intValue = cast<IntegerAttr>(*value);
+      if (intValue.getInt() < 1)
+        return simulation.emitError()
+               << "cannot set parameter '" << name << "' to "
+               << intValue.getInt() << ": it must be at least 1";
+      if (name == "range")
+        simulation.setRangeAttr(intValue);
+      else
+        simulation.setMaxStepsAttr(intValue);
+      return success();
+    }
+    if (name == "dt") {
+      Type type = simulation.getTimeStepType();
+      FailureOr<TypedAttr> value = parseScalar(builder, text, type);
+      if (failed(value))
+        return invalid(type);
+      double dt = cast<FloatAttr>(*value).getValueAsDouble();
+      if (!(dt > 0.0) || !std::isfinite(dt))
+        return simulation.emitError()
+               << "cannot set parameter 'dt' to " << text.trim()
+               << ": it must be positive and finite";
+      simulation.setDtAttr(*value);
+      return success();
+    }
+    auto param = dyn_cast_or_null<ParamOp>(
+        SymbolTable::lookupSymbolIn(simulation, builder.getStringAttr(name)));
+    if (!param) {
+      InFlightDiagnostic diag = simulation.emitError()
+                                << "has no parameter named '" << name
+                                << "'; it has range, dt, max_steps";
+      for (ParamOp known : simulation.getParams())
+        diag << ", " << known.getSymName();
+      return diag;
+    }
+    Type type = cast<TypedAttr>(param.getValue()).getType();
+    FailureOr<TypedAttr> value = parseScalar(builder, text, type);
+    if (failed(value))
+      return invalid(type);
+    param.setValueAttr(*value);
+    return success();
+  }
+};
+
+} // namespace

@@ -1,0 +1,36 @@
+//===- sim-opt.cpp - the sim optimizer driver -----------------------------===//
+//
+// mlir-opt for sim: parses, verifies, transforms and prints sim scenes. It
+// registers only the dialects a scene body may use and the passes that
+// matter for scenes, so `--help` stays readable.
+//
+//===----------------------------------------------------------------------===//
+
+#include "sim/Dialect/Sim/IR/SimDialect.h"
+#include "sim/Dialect/Sim/Transforms/Passes.h"
+
+#include "mlir/Dialect/Arith/IR/Arith.h"
+#include "mlir/Dialect/Math/IR/Math.h"
+#include "mlir/Dialect/SCF/IR/SCF.h"
+#include "mlir/Dialect/Vector/IR/VectorOps.h"
+#include "mlir/IR/DialectRegistry.h"
+#include "mlir/Tools/mlir-opt/MlirOptMain.h"
+#include "mlir/Transforms/Passes.h"
+
+int main(int argc, char **argv) {
+  mlir::DialectRegistry registry;
+  registry.insert<mlir::sim::SimDialect, mlir::arith::ArithDialect,
+                  mlir::math::MathDialect, mlir::scf::SCFDialect,
+                  mlir::vector::VectorDialect>();
+
+  mlir::sim::registerSimPasses();
+  // Upstream passes that are useful on scenes.
+  mlir::registerCanonicalizerPass();
+  mlir::registerCSEPass();
+  mlir::registerSymbolDCEPass();
+  mlir::registerInlinerPass();
+
+  return mlir::asMainReturnCode(mlir::MlirOptMain(
+      argc, argv, "sim optimizer driver: scenes in the sim dialect\n",
+      registry));
+}
