@@ -12,6 +12,9 @@
 
 namespace mlir::sim {
 
+/// Output formats of --sim-print-dependency-graph.
+enum class GraphFormat { text, dot };
+
 #define GEN_PASS_DECL
 #include "sim/Dialect/Sim/Transforms/Passes.h.inc"
 

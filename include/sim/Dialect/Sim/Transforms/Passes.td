@@ -28,4 +28,98 @@ def SimSetParams : Pass<"sim-set-params", "::mlir::sim::SimulationOp"> {
   ];
 }
 
+def SimPrintDependencyGraph : Pass<"sim-print-dependency-graph"> {
+  let summary = "Print the component/buffer dependency graph (text or DOT)";
+  let description = [{
+    Prints, for every simulation, its components and buffers, the reads of
+    every body with their access pattern (`i`, a window `i-4..i+4`, or
+    `gather`), and the read edges between components. When the schedule can
+    be determined (see `--sim-schedule`), edges carry their role
+    (`interpolate`, `back_edge`) and the step bounds are listed. The IR is
+    not changed; the graph goes to standard output.
+
+    With `format=dot` the graph is Graphviz DOT: components are boxes,
+    buffers ellipses, back-edge reads dashed purple (as in the paper's
+    Fig. 5):
+
+    ```
+    sim-opt scene.mlir --sim-print-dependency-graph=format=dot -o /dev/null \
+      | dot -Tsvg -o graph.svg
+    ```
+  }];
+  let options = [
+    Option<"format", "format", "::mlir::sim::GraphFormat",
+           "::mlir::sim::GraphFormat::text", "Output format",
+           [{::llvm::cl::values(
+               clEnumValN(::mlir::sim::GraphFormat::text, "text",
+                          "a readable listing"),
+               clEnumValN(::mlir::sim::GraphFormat::dot, "dot",
+                          "Graphviz DOT"))}]>,
+  ];
+}
+
+def SimSchedule : Pass<"sim-schedule", "::mlir::sim::SimulationOp"> {
+  let summary = "Order the components of a step and classify every read";
+  let description = [{
+    Computes the per-step order by a topological sort of the in-step
+    dependencies (a component depends on the writers of the buffers it
+    reads), with the back edge from the last component to the first.
+
+    The first component of `sim.schedule` starts a step: its reads of other
+    components' buffers cross the back edge and see values at `T`. Every
+    other dependency must point forward in the step. A user may give a whole
+    order (it is validated, not trusted) or a prefix (it is completed). When
+    the dependencies have a cycle and no first component is named, when they
+    leave more than one possible order, or when they form a cycle inside one
+    step, this is an error that names the cycle or the candidates.
+
+    The result is recorded on the IR: `sim.schedule` holds the full order and,
+    in `bounded_by`, the components whose `num_steps` bound the `hip` big step
+    (those that read through the back edge, Fig. 6; `traditional` is bounded
+    by every component with a `num_steps` body). Every `sim.read` in a
+    component gets its role: `own`, `interpolate` (a buffer already advanced
+    in this step) or `back_edge`.
+
+    ```mlir
+    sim.schedule [@C0]
+    // becomes
+    sim.schedule [@C0, @C1, @C2, @C3, @C4] bounded_by [@C0]
+    ```
+  }];
+}
+
+def SimSubstepLegality
+    : Pass<"sim-substep-legality", "::mlir::sim::SimulationOp"> {
+  let summary = "Prove, per component, that sub-steps can run inside one kernel";
+  let description = [{
+    A component's sub-steps run inside one kernel (Algorithm 2), synchronised
+    only within a thread group. That is race-free only when the component
+    reads the buffers it writes at its own item: then each thread owns its
+    item's state between sub-steps. A read of a written buffer at another item
+    (a window or a gather) could see a neighbour mid-way through its
+    sub-steps, so such a component falls back to a grid-wide barrier between
+    sub-steps with a sub-step size that is uniform over the range.
+
+    Records `sub_stepping = #sim<sub_stepping in_kernel>` or `grid_sync` on
+    every component and emits a remark that says why for every `grid_sync`
+    verdict.
+  }];
+}
+
+def SimPrune : Pass<"sim-prune", "::mlir::sim::SimulationOp"> {
+  let summary = "Remove what no observed output depends on";
+  let description = [{
+    "Model only what a scene needs": starting from the buffers in
+    `sim.observe`, keeps the writer of every needed buffer and, transitively
+    (across the back edge too), every buffer that the writer reads to compute
+    a needed buffer or its step size, the derivative buffers of needed
+    buffers' interpolations, and the buffers that needed init and exact
+    bodies read. Removes every other component and buffer, and drops a
+    written buffer (its `writes` entry and its yielded value, then the dead
+    code) from a component that is kept for another buffer. Emits a remark
+    per removal. A simulation without `sim.observe` is an error.
+  }];
+  let dependentDialects = [];
+}
+
 #endif // SIM_DIALECT_SIM_TRANSFORMS_PASSES_TD

@@ -1,0 +1,315 @@
+//===- DependencyAnalysis.cpp - who reads and writes what -----------------===//
+//
+// Classifies every view read by how its index relates to the body's item
+// argument `%i`. An index is a window when it decomposes into `%i + c` through
+// additions, subtractions and index casts, where every other term has a range
+// that upstream IntegerRangeAnalysis can bound (constants, loop induction
+// variables with constant bounds, values derived from them). Anything else is
+// a gather. Being conservative matters: a read classified as a window that
+// is really a gather would make a shared-memory cache or a legality verdict
+// wrong; the reverse only costs performance.
+//
+//===----------------------------------------------------------------------===//
+
+#include "sim/Analysis/DependencyAnalysis.h"
+
+#include "mlir/Analysis/DataFlow/ConstantPropagationAnalysis.h"
+#include "mlir/Analysis/DataFlow/DeadCodeAnalysis.h"
+#include "mlir/Analysis/DataFlow/IntegerRangeAnalysis.h"
+#include "mlir/Analysis/DataFlowFramework.h"
+#include "mlir/Dialect/Arith/IR/Arith.h"
+#include "llvm/ADT/SetVector.h"
+#include "llvm/Support/Debug.h"
+#include "llvm/Support/MathExtras.h"
+
+#define DEBUG_TYPE "sim-dependency-analysis"
+
+using namespace mlir;
+using namespace mlir::sim;
+
+//===----------------------------------------------------------------------===//
+// AccessPattern
+//===----------------------------------------------------------------------===//
+
+AccessPattern AccessPattern::window(int64_t minOffset, int64_t maxOffset) {
+  if (minOffset == 0 && maxOffset == 0)
+    return own();
+  return AccessPattern(Kind::Window, minOffset, maxOffset);
+}
+
+AccessPattern AccessPattern::join(const AccessPattern &other) const {
+  if (isGather() || other.isGather())
+    return gather();
+  return window(std::min(minOffset, other.minOffset),
+                std::max(maxOffset, other.maxOffset));
+}
+
+static void printOffset(llvm::raw_ostream &os, int64_t offset) {
+  os << "i";
+  if (offset > 0)
+    os << "+" << offset;
+  else if (offset < 0)
+    os << offset;
+}
+
+void AccessPattern::print(llvm::raw_ostream &os) const {
+  switch (kind) {
+  case Kind::Own:
+    os << "i";
+    return;
+  case Kind::Window:
+    printOffset(os, minOffset);
+    if (maxOffset != minOffset) {
+      os << "..";
+      printOffset(os, maxOffset);
+    }
+    return;
+  case Kind::Gather:
+    os << "gather";
+    return;
+  }
+}
+
+std::string AccessPattern::str() const {
+  std::string text;
+  llvm::raw_string_ostream os(text);
+  print(os);
+  return text;
+}
+
+//===----------------------------------------------------------------------===//
+// Index classification
+//===----------------------------------------------------------------------===//
+
+namespace {
+/// Offsets larger than this are treated as unbounded: no scene reads that
+/// far, and the bound keeps offset arithmetic far from overflow.
+constexpr int64_t kMaxOffset = int64_t(1) << 40;
+
+using OffsetRange = std::pair<int64_t, int64_t>;
+
+/// Decomposes read indices into `%item + c` and bounds `c`.
+class IndexClassifier {
+public:
+  IndexClassifier(DataFlowSolver &solver) : solver(solver) {}
+
+  AccessPattern classify(Value index, Value item) {
+    std::optional<OffsetRange> range = offsetFromItem(index, item, 0);
+    if (!range)
+      return AccessPattern::gather();
+    return AccessPattern::window(range->first, range->second);
+  }
+
+private:
+  /// The range of an integer value, when IntegerRangeAnalysis bounds it.
+  std::optional<OffsetRange> rangeOf(Value value) {
+    auto *lattice =
+        solver.lookupState<dataflow::IntegerValueRangeLattice>(value);
+    if (!lattice || lattice->getValue().isUninitialized())
+      return std::nullopt;
+    const ConstantIntRanges &range = lattice->getValue().getValue();
+    if (range.smin().getBitWidth() > 64)
+      return std::nullopt;
+    int64_t lo = range.smin().getSExtValue();
+    int64_t hi = range.smax().getSExtValue();
+    if (lo < -kMaxOffset || hi > kMaxOffset)
+      return std::nullopt;
+    return OffsetRange{lo, hi};
+  }
+
+  /// If `value` is `item + c` with a bounded `c`, returns the range of `c`.
+  std::optional<OffsetRange> offsetFromItem(Value value, Value item,
+                                            unsigned depth) {
+    if (value == item)
+      return OffsetRange{0, 0};
+    // Index expressions in scenes are short; the bound only protects
+    // against pathological inputs.
+    if (depth > 32)
+      return std::nullopt;
+    Operation *def = value.getDefiningOp();
+    if (!def)
+      return std::nullopt;
+    if (isa<arith::IndexCastOp, arith::IndexCastUIOp>(def))
+      return offsetFromItem(def->getOperand(0), item, depth + 1);
+    if (auto add = dyn_cast<arith::AddIOp>(def)) {
+      for (auto [base, term] : {std::pair(add.getLhs(), add.getRhs()),
+                                std::pair(add.getRhs(), add.getLhs())}) {
+        std::optional<OffsetRange> baseRange =
+            offsetFromItem(base, item, depth + 1);
+        if (!baseRange)
+          continue;
+        std::optional<OffsetRange> termRange = rangeOf(term);
+        if (!termRange)
+          return std::nullopt;
+        return OffsetRange{baseRange->first + termRange->first,
+                           baseRange->second + termRange->second};
+      }
+      return std::nullopt;
+    }
+    if (auto sub = dyn_cast<arith::SubIOp>(def)) {
+      std::optional<OffsetRange> baseRange =
+          offsetFromItem(sub.getLhs(), item, depth + 1);
+      std::optional<OffsetRange> termRange = rangeOf(sub.getRhs());
+      if (!baseRange || !termRange)
+        return std::nullopt;
+      return OffsetRange{baseRange->first - termRange->second,
+                         baseRange->second - termRange->first};
+    }
+    return std::nullopt;
+  }
+
+  DataFlowSolver &solver;
+};
+} // namespace
+
+/// The region of `body` that holds the body of the given kind.
+static Region &getBodyRegion(const ReadInfo &info) {
+  switch (info.body) {
+  case BodyKind::NumSteps:
+    return info.component.getNumSteps();
+  case BodyKind::Evaluate:
+    return info.component.getEvaluate();
+  case BodyKind::Init:
+    return info.owner.getInit();
+  case BodyKind::Exact:
+    return info.owner.getExact();
+  }
+  llvm_unreachable("unknown body kind");
+}
+
+//===----------------------------------------------------------------------===//
+// DependencyAnalysis
+//===----------------------------------------------------------------------===//
+
+DependencyAnalysis::DependencyAnalysis(Operation *op)
+    : simulation(cast<SimulationOp>(op)) {
+  llvm::append_range(components, simulation.getComponents());
+  llvm::append_range(buffers, simulation.getBuffers());
+  llvm::DenseMap<StringAttr, BufferOp> bufferByName;
+  for (BufferOp buffer : buffers)
+    bufferByName[buffer.getSymNameAttr()] = buffer;
+  for (ComponentOp component : components)
+    for (auto name : component.getWrites().getAsRange<FlatSymbolRefAttr>())
+      if (BufferOp buffer = bufferByName.lookup(name.getAttr()))
+        writers.try_emplace(buffer, component);
+  analyzeReads();
+}
+
+void DependencyAnalysis::analyzeReads() {
+  DataFlowSolver solver;
+  solver.load<dataflow::DeadCodeAnalysis>();
+  solver.load<dataflow::SparseConstantPropagation>();
+  solver.load<dataflow::IntegerRangeAnalysis>();
+  // Without ranges every neighbour read degrades to a gather, which is
+  // correct but pessimistic; a solver failure is therefore not fatal.
+  if (failed(solver.initializeAndRun(simulation)))
+    LLVM_DEBUG(llvm::dbgs() << "integer range analysis failed\n");
+  IndexClassifier classifier(solver);
+
+  llvm::DenseMap<StringAttr, BufferOp> bufferByName;
+  for (BufferOp buffer : buffers)
+    bufferByName[buffer.getSymNameAttr()] = buffer;
+
+  simulation.walk([&](ReadOp read) {
+    std::optional<BodyLocation> location = getEnclosingBody(read);
+    BufferOp buffer = bufferByName.lookup(read.getBufferAttr().getAttr());
+    if (!location || !buffer)
+      return; // Not in verified IR.
+    ReadInfo info{read,
+                  buffer,
+                  location->kind,
+                  location->component,
+                  location->buffer,
+                  AccessPattern::gather()};
+    Value item = getBodyRegion(info).front().getArgument(0);
+    info.pattern = classifier.classify(read.getIndex(), item);
+    LLVM_DEBUG(llvm::dbgs() << "read of @" << buffer.getSymName() << " in "
+                            << stringifyBodyKind(info.body) << ": "
+                            << info.pattern.str() << "\n");
+    readIndex[read] = reads.size();
+    reads.push_back(info);
+
+    Operation *owner = info.component ? info.component.getOperation()
+                                      : info.owner.getOperation();
+    SmallVector<BufferAccess> &list = accesses[owner];
+    auto it = llvm::find_if(list, [&](const BufferAccess &access) {
+      return access.buffer == buffer && access.body == info.body;
+    });
+    if (it == list.end()) {
+      list.push_back(BufferAccess{buffer, info.body, info.pattern, {read}});
+    } else {
+      it->pattern = it->pattern.join(info.pattern);
+      it->reads.push_back(read);
+    }
+  });
+}
+
+SmallVector<BufferOp>
+DependencyAnalysis::getWrittenBuffers(ComponentOp component) const {
+  SmallVector<BufferOp> result;
+  for (auto name : component.getWrites().getAsRange<FlatSymbolRefAttr>())
+    for (BufferOp buffer : buffers)
+      if (buffer.getSymNameAttr() == name.getAttr())
+        result.push_back(buffer);
+  return result;
+}
+
+AccessPattern DependencyAnalysis::getPattern(ReadOp read) const {
+  auto it = readIndex.find(read);
+  if (it == readIndex.end())
+    return AccessPattern::gather();
+  return reads[it->second].pattern;
+}
+
+ArrayRef<BufferAccess>
+DependencyAnalysis::getAccesses(ComponentOp component) const {
+  auto it = accesses.find(component);
+  return it == accesses.end() ? ArrayRef<BufferAccess>() : it->second;
+}
+
+ArrayRef<BufferAccess> DependencyAnalysis::getAccesses(BufferOp buffer) const {
+  auto it = accesses.find(buffer);
+  return it == accesses.end() ? ArrayRef<BufferAccess>() : it->second;
+}
+
+std::optional<AccessPattern>
+DependencyAnalysis::getReadPattern(ComponentOp component,
+                                   BufferOp buffer) const {
+  std::optional<AccessPattern> result;
+  for (const BufferAccess &access : getAccesses(component))
+    if (access.buffer == buffer)
+      result = result ? result->join(access.pattern) : access.pattern;
+  return result;
+}
+
+SmallVector<ComponentOp>
+DependencyAnalysis::getProducers(ComponentOp component) const {
+  llvm::SetVector<Operation *> producers;
+  for (const BufferAccess &access : getAccesses(component)) {
+    ComponentOp writer = getWriter(access.buffer);
+    if (writer && writer != component)
+      producers.insert(writer);
+  }
+  return llvm::map_to_vector(producers, [](Operation *op) {
+    return cast<ComponentOp>(op);
+  });
+}
+
+SmallVector<BufferOp>
+DependencyAnalysis::getBuffersReadFrom(ComponentOp component,
+                                       ComponentOp producer) const {
+  llvm::SetVector<Operation *> result;
+  for (const BufferAccess &access : getAccesses(component))
+    if (getWriter(access.buffer) == producer)
+      result.insert(access.buffer);
+  return llvm::map_to_vector(
+      result, [](Operation *op) { return cast<BufferOp>(op); });
+}
+
+const BufferAccess *
+DependencyAnalysis::findSubStepHazard(ComponentOp component) const {
+  for (const BufferAccess &access : getAccesses(component))
+    if (getWriter(access.buffer) == component && !access.pattern.isOwn())
+      return &access;
+  return nullptr;
+}

@@ -1,0 +1,297 @@
+//===- Scheduling.cpp - the order of components in one step ---------------===//
+//
+// Topological sort of the in-step dependencies with the back edge cut at the
+// entry component. Diagnostics name what the user must decide: the cycle
+// (with the reads that form it), the components that could go next, or the
+// dependency a user-given order violates.
+//
+//===----------------------------------------------------------------------===//
+
+#include "sim/Analysis/Scheduling.h"
+
+#include "mlir/IR/Diagnostics.h"
+#include "llvm/ADT/STLExtras.h"
+#include "llvm/ADT/SmallPtrSet.h"
+
+using namespace mlir;
+using namespace mlir::sim;
+
+//===----------------------------------------------------------------------===//
+// Schedule
+//===----------------------------------------------------------------------===//
+
+Schedule::Schedule(SmallVector<ComponentOp> order) : order(std::move(order)) {
+  for (auto [index, component] : llvm::enumerate(this->order))
+    position[component] = index;
+}
+
+ReadRole Schedule::getRole(ComponentOp reader, ComponentOp writer) const {
+  if (reader == writer)
+    return ReadRole::own;
+  return getPosition(writer) < getPosition(reader) ? ReadRole::interpolate
+                                                   : ReadRole::back_edge;
+}
+
+SmallVector<ComponentOp>
+Schedule::getHipStepBounds(const DependencyAnalysis &analysis) const {
+  SmallVector<ComponentOp> bounds;
+  for (ComponentOp component : order) {
+    bool readsBackEdge = llvm::any_of(
+        analysis.getProducers(component), [&](ComponentOp producer) {
+          return getRole(component, producer) == ReadRole::back_edge;
+        });
+    if (readsBackEdge)
+      bounds.push_back(component);
+  }
+  return bounds;
+}
+
+SmallVector<ComponentOp> Schedule::getTraditionalStepBounds() const {
+  return llvm::filter_to_vector(
+      order, [](ComponentOp component) { return component.hasNumSteps(); });
+}
+
+SmallVector<ComponentOp> mlir::sim::getUserOrder(SimulationOp simulation) {
+  SmallVector<ComponentOp> order;
+  if (ScheduleOp schedule = simulation.getScheduleOp())
+    for (auto name : schedule.getOrder().getAsRange<FlatSymbolRefAttr>())
+      if (ComponentOp component = simulation.lookupComponent(name))
+        order.push_back(component);
+  return order;
+}
+
+//===----------------------------------------------------------------------===//
+// computeSchedule
+//===----------------------------------------------------------------------===//
+
+namespace {
+
+/// The in-step dependency graph: an edge producer -> consumer for every
+/// buffer a consumer reads from another component, except reads by the entry
+/// (they cross the back edge).
+class StepGraph {
+public:
+  StepGraph(const DependencyAnalysis &analysis, ComponentOp entry)
+      : analysis(analysis), entry(entry) {}
+
+  /// The producers of `component` within the step.
+  SmallVector<ComponentOp> getInStepProducers(ComponentOp component) const {
+    if (component == entry)
+      return {};
+    return analysis.getProducers(component);
+  }
+
+  /// Returns a dependency cycle (each component reads from the previous one,
+  /// the first from the last), or an empty list.
+  SmallVector<ComponentOp> findCycle() const {
+    enum class Mark { Unvisited, OnStack, Done };
+    llvm::DenseMap<Operation *, Mark> marks;
+    SmallVector<ComponentOp> stack, cycle;
+    std::function<bool(ComponentOp)> visit = [&](ComponentOp node) {
+      marks[node] = Mark::OnStack;
+      stack.push_back(node);
+      for (ComponentOp producer : getInStepProducers(node)) {
+        Mark mark = marks.lookup(producer);
+        if (mark == Mark::OnStack) {
+          // The stack walks consumer -> producer; report producer -> consumer.
+          auto start = llvm::find(stack, producer);
+          cycle.assign(start, stack.end());
+          std::reverse(cycle.begin(), cycle.end());
+          return true;
+        }
+        if (mark == Mark::Unvisited && visit(producer))
+          return true;
+      }
+      stack.pop_back();
+      marks[node] = Mark::Done;
+      return false;
+    };
+    for (ComponentOp component : analysis.getComponents()) {
+      if (marks.lookup(component) != Mark::Unvisited || !visit(component))
+        continue;
+      // Start the reported cycle at its first component in program order so
+      // that messages do not depend on the search order.
+      ArrayRef<ComponentOp> all = analysis.getComponents();
+      auto first = llvm::min_element(cycle, [&](ComponentOp a, ComponentOp b) {
+        return llvm::find(all, a) < llvm::find(all, b);
+      });
+      std::rotate(cycle.begin(), first, cycle.end());
+      return cycle;
+    }
+    return {};
+  }
+
+private:
+  const DependencyAnalysis &analysis;
+  ComponentOp entry;
+};
+
+/// Builds diagnostics about the schedule of one simulation.
+class ScheduleDiagnostics {
+public:
+  ScheduleDiagnostics(const DependencyAnalysis &analysis, bool enabled)
+      : analysis(analysis), enabled(enabled) {}
+
+  /// The operation errors are reported on: the user's schedule if any.
+  Operation *getAnchor() const {
+    SimulationOp simulation = analysis.getSimulation();
+    if (ScheduleOp schedule = simulation.getScheduleOp())
+      return schedule;
+    return simulation;
+  }
+
+  /// Attaches one note per edge of `cycle` at the read that forms it.
+  void noteCycleReads(InFlightDiagnostic &diag,
+                      ArrayRef<ComponentOp> cycle) const {
+    for (auto [index, producer] : llvm::enumerate(cycle)) {
+      ComponentOp consumer = cycle[(index + 1) % cycle.size()];
+      noteRead(diag, consumer, producer);
+    }
+  }
+
+  /// Notes where `consumer` reads a buffer of `producer`.
+  void noteRead(InFlightDiagnostic &diag, ComponentOp consumer,
+                ComponentOp producer) const {
+    for (const BufferAccess &access : analysis.getAccesses(consumer)) {
+      if (analysis.getWriter(access.buffer) != producer)
+        continue;
+      diag.attachNote(access.reads.front().getLoc())
+          << "@" << consumer.getSymName() << " reads @"
+          << access.buffer.getSymName() << ", which @" << producer.getSymName()
+          << " writes";
+      return;
+    }
+  }
+
+  static void printCycle(InFlightDiagnostic &diag,
+                         ArrayRef<ComponentOp> cycle) {
+    for (ComponentOp component : cycle)
+      diag << "@" << component.getSymName() << " -> ";
+    diag << "@" << ComponentOp(cycle.front()).getSymName();
+  }
+
+  static void printList(InFlightDiagnostic &diag,
+                        ArrayRef<ComponentOp> components) {
+    diag << "[";
+    llvm::interleaveComma(components, diag, [&](ComponentOp c) {
+      diag << "@" << c.getSymName();
+    });
+    diag << "]";
+  }
+
+  LogicalResult cycleWithoutEntry(ArrayRef<ComponentOp> cycle) const {
+    if (!enabled)
+      return failure();
+    InFlightDiagnostic diag = analysis.getSimulation().emitError()
+                              << "the components depend on each other in a "
+                                 "cycle (";
+    printCycle(diag, cycle);
+    diag << "), so a step needs a first component whose reads cross the back "
+            "edge; name it with 'sim.schedule [@"
+         << ComponentOp(cycle.front()).getSymName() << "]' or similar";
+    noteCycleReads(diag, cycle);
+    return diag;
+  }
+
+  LogicalResult cycleInStep(ComponentOp entry,
+                            ArrayRef<ComponentOp> cycle) const {
+    if (!enabled)
+      return failure();
+    InFlightDiagnostic diag = getAnchor()->emitError()
+                              << "dependency cycle inside one step: ";
+    printCycle(diag, cycle);
+    diag << "; only the first component (@" << entry.getSymName()
+         << ") reads through the back edge";
+    noteCycleReads(diag, cycle);
+    return diag;
+  }
+
+  LogicalResult ambiguous(ArrayRef<ComponentOp> scheduled,
+                          ArrayRef<ComponentOp> candidates) const {
+    if (!enabled)
+      return failure();
+    InFlightDiagnostic diag = getAnchor()->emitError();
+    if (scheduled.empty()) {
+      diag << "the dependency graph does not decide which component starts a "
+              "step: any of ";
+    } else {
+      diag << "the dependency graph does not decide the order after ";
+      printList(diag, scheduled);
+      diag << ": any of ";
+    }
+    printList(diag, candidates);
+    diag << " could go next; list the order in 'sim.schedule'";
+    for (ComponentOp candidate : candidates)
+      diag.attachNote(candidate.getLoc())
+          << "@" << candidate.getSymName() << " could go next";
+    return diag;
+  }
+
+  LogicalResult violation(ComponentOp placed, ComponentOp producer) const {
+    if (!enabled)
+      return failure();
+    InFlightDiagnostic diag = getAnchor()->emitError()
+                              << "places @" << placed.getSymName()
+                              << " before @" << producer.getSymName()
+                              << ", but @" << placed.getSymName()
+                              << " reads what @" << producer.getSymName()
+                              << " writes in the same step; only the first "
+                                 "component reads through the back edge";
+    noteRead(diag, placed, producer);
+    return diag;
+  }
+
+private:
+  const DependencyAnalysis &analysis;
+  bool enabled;
+};
+
+} // namespace
+
+FailureOr<Schedule> mlir::sim::computeSchedule(const DependencyAnalysis &analysis,
+                                               ArrayRef<ComponentOp> userOrder,
+                                               bool emitDiagnostics) {
+  ScheduleDiagnostics diagnostics(analysis, emitDiagnostics);
+  ArrayRef<ComponentOp> components = analysis.getComponents();
+  if (components.empty())
+    return Schedule({});
+
+  ComponentOp entry = userOrder.empty() ? nullptr : userOrder.front();
+  StepGraph graph(analysis, entry);
+  SmallVector<ComponentOp> cycle = graph.findCycle();
+  if (!cycle.empty()) {
+    if (!entry)
+      return diagnostics.cycleWithoutEntry(cycle);
+    return diagnostics.cycleInStep(entry, cycle);
+  }
+
+  // Kahn's algorithm; candidates in program order keep diagnostics stable.
+  SmallVector<ComponentOp> order;
+  llvm::SmallPtrSet<Operation *, 16> scheduled;
+  while (order.size() < components.size()) {
+    auto isReady = [&](ComponentOp component) {
+      return !scheduled.contains(component) &&
+             llvm::all_of(graph.getInStepProducers(component),
+                          [&](ComponentOp p) { return scheduled.contains(p); });
+    };
+    ComponentOp next;
+    if (order.size() < userOrder.size()) {
+      next = userOrder[order.size()];
+      if (!isReady(next)) {
+        for (ComponentOp producer : graph.getInStepProducers(next))
+          if (!scheduled.contains(producer))
+            return diagnostics.violation(next, producer);
+      }
+    } else {
+      SmallVector<ComponentOp> ready = llvm::filter_to_vector(components,
+                                                              isReady);
+      assert(!ready.empty() && "an acyclic graph always has a ready node");
+      if (ready.size() > 1)
+        return diagnostics.ambiguous(order, ready);
+      next = ready.front();
+    }
+    order.push_back(next);
+    scheduled.insert(next);
+  }
+  return Schedule(std::move(order));
+}

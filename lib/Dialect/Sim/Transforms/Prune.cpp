@@ -1,0 +1,198 @@
+//===- Prune.cpp - remove what no observed output needs -------------------===//
+//
+// "Model only what a scene needs": a buffer is needed when it is observed or
+// when something needed depends on it. The dependencies of a buffer B are
+// computed per written buffer, not per component: the buffers its writer
+// reads in num_steps (the step size affects everything it writes), the
+// buffers read in the backward slice of B's yielded value in evaluate, the
+// auxiliary buffers of B's interpolation, and the buffers B's init and exact
+// bodies read. So a component kept for one buffer can still drop another
+// buffer it writes that nothing needs. The slice is conservative: any read
+// inside a region op (a loop, a conditional) on the slice counts.
+//
+//===----------------------------------------------------------------------===//
+
+#include "sim/Analysis/DependencyAnalysis.h"
+#include "sim/Dialect/Sim/IR/SimOps.h"
+#include "sim/Dialect/Sim/Transforms/Passes.h"
+
+#include "mlir/IR/PatternMatch.h"
+#include "mlir/Transforms/RegionUtils.h"
+#include "llvm/ADT/BitVector.h"
+#include "llvm/ADT/SetVector.h"
+
+namespace mlir::sim {
+#define GEN_PASS_DEF_SIMPRUNE
+#include "sim/Dialect/Sim/Transforms/Passes.h.inc"
+} // namespace mlir::sim
+
+using namespace mlir;
+using namespace mlir::sim;
+
+namespace {
+
+using SymbolSet = llvm::SetVector<StringAttr>;
+
+/// Adds to `buffers` every buffer read by an operation on the backward slice
+/// of `root` inside a component body.
+void collectSliceReads(Value root, SymbolSet &buffers) {
+  SmallVector<Value> worklist = {root};
+  llvm::DenseSet<Value> seenValues;
+  llvm::DenseSet<Operation *> seenOps;
+  auto visitOp = [&](Operation *op) {
+    if (seenOps.contains(op))
+      return;
+    op->walk([&](Operation *nested) {
+      seenOps.insert(nested);
+      if (auto read = dyn_cast<ReadOp>(nested))
+        buffers.insert(read.getBufferAttr().getAttr());
+      if (auto load = dyn_cast<LoadOp>(nested))
+        buffers.insert(load.getBufferAttr().getAttr());
+      llvm::append_range(worklist, nested->getOperands());
+    });
+  };
+  while (!worklist.empty()) {
+    Value value = worklist.pop_back_val();
+    if (!seenValues.insert(value).second)
+      continue;
+    if (Operation *def = value.getDefiningOp()) {
+      visitOp(def);
+      continue;
+    }
+    // A block argument of a nested region (a loop's iteration argument)
+    // depends on the whole op; the body's own arguments depend on nothing.
+    Operation *parent = cast<BlockArgument>(value).getOwner()->getParentOp();
+    if (parent && !isa<ComponentOp>(parent))
+      visitOp(parent);
+  }
+}
+
+/// Adds every buffer read anywhere in `region`.
+void collectRegionReads(Region &region, SymbolSet &buffers) {
+  region.walk([&](Operation *op) {
+    if (auto read = dyn_cast<ReadOp>(op))
+      buffers.insert(read.getBufferAttr().getAttr());
+    if (auto load = dyn_cast<LoadOp>(op))
+      buffers.insert(load.getBufferAttr().getAttr());
+  });
+}
+
+struct PrunePass : public sim::impl::SimPruneBase<PrunePass> {
+  void runOnOperation() override {
+    SimulationOp simulation = getOperation();
+    ObserveOp observe = simulation.getObserveOp();
+    if (!observe) {
+      simulation.emitError()
+          << "has no 'sim.observe', so nothing is needed; list the observed "
+             "output buffers before pruning";
+      return signalPassFailure();
+    }
+    auto &analysis = getAnalysis<DependencyAnalysis>();
+
+    SymbolSet needed;
+    for (auto name : observe.getBuffers().getAsRange<FlatSymbolRefAttr>())
+      needed.insert(name.getAttr());
+    // `needed` grows while we walk it: it doubles as the worklist.
+    for (unsigned index = 0; index < needed.size(); ++index) {
+      BufferOp buffer =
+          simulation.lookupBuffer(FlatSymbolRefAttr::get(needed[index]));
+      addDependencies(analysis, buffer, needed);
+    }
+
+    IRRewriter rewriter(&getContext());
+    for (ComponentOp component : analysis.getComponents()) {
+      SmallVector<BufferOp> written = analysis.getWrittenBuffers(component);
+      llvm::BitVector dropped(written.size());
+      for (auto [index, buffer] : llvm::enumerate(written))
+        if (!needed.contains(buffer.getSymNameAttr()))
+          dropped.set(index);
+      if (dropped.all()) {
+        component.emitRemark()
+            << "removed component @" << component.getSymName()
+            << ": no observed buffer depends on it";
+        rewriter.eraseOp(component);
+        continue;
+      }
+      if (dropped.any())
+        dropWrites(rewriter, component, written, dropped);
+    }
+    for (BufferOp buffer : analysis.getBuffers()) {
+      if (needed.contains(buffer.getSymNameAttr()))
+        continue;
+      buffer.emitRemark() << "removed buffer @" << buffer.getSymName()
+                          << ": no observed buffer depends on it";
+      rewriter.eraseOp(buffer);
+    }
+    pruneSchedule(simulation);
+  }
+
+  /// Marks what `buffer` depends on as needed.
+  void addDependencies(const DependencyAnalysis &analysis, BufferOp buffer,
+                       SymbolSet &needed) {
+    ComponentOp writer = analysis.getWriter(buffer);
+    if (writer.hasNumSteps())
+      collectRegionReads(writer.getNumSteps(), needed);
+    auto yield = cast<YieldOp>(writer.getEvaluate().front().getTerminator());
+    auto writes = writer.getWrites().getAsRange<FlatSymbolRefAttr>();
+    unsigned position = std::distance(
+        writes.begin(), llvm::find(writes, FlatSymbolRefAttr::get(
+                                               buffer.getSymNameAttr())));
+    collectSliceReads(yield.getValues()[position], needed);
+    for (FlatSymbolRefAttr aux :
+         buffer.getInterpolation().getAuxiliaryBuffers())
+      needed.insert(aux.getAttr());
+    collectRegionReads(buffer.getInit(), needed);
+    collectRegionReads(buffer.getExact(), needed);
+  }
+
+  /// Removes the buffers marked in `dropped` from `component`'s writes and its
+  /// evaluate results, then the code that only computed them.
+  void dropWrites(IRRewriter &rewriter, ComponentOp component,
+                  ArrayRef<BufferOp> written, const llvm::BitVector &dropped) {
+    SmallVector<Attribute> kept;
+    for (auto [index, writtenBuffer] : llvm::enumerate(written)) {
+      BufferOp buffer = writtenBuffer;
+      if (!dropped.test(index)) {
+        kept.push_back(FlatSymbolRefAttr::get(buffer.getSymNameAttr()));
+        continue;
+      }
+      component.emitRemark()
+          << "@" << component.getSymName() << " no longer writes @"
+          << buffer.getSymName() << ": no observed buffer depends on it";
+    }
+    component.setWritesAttr(rewriter.getArrayAttr(kept));
+    auto yield = cast<YieldOp>(component.getEvaluate().front().getTerminator());
+    yield->eraseOperands(dropped);
+    (void)runRegionDCE(rewriter, component.getEvaluate());
+  }
+
+  /// Drops removed components from the schedule (and the schedule when it
+  /// becomes empty).
+  void pruneSchedule(SimulationOp simulation) {
+    ScheduleOp schedule = simulation.getScheduleOp();
+    if (!schedule)
+      return;
+    auto keep = [&](ArrayAttr list) {
+      SmallVector<Attribute> kept;
+      for (auto name : list.getAsRange<FlatSymbolRefAttr>())
+        if (simulation.lookupComponent(name))
+          kept.push_back(name);
+      return ArrayAttr::get(&getContext(), kept);
+    };
+    ArrayAttr order = keep(schedule.getOrder());
+    if (order.empty()) {
+      schedule.erase();
+      return;
+    }
+    schedule.setOrderAttr(order);
+    if (ArrayAttr bounds = schedule.getBoundedByAttr()) {
+      ArrayAttr keptBounds = keep(bounds);
+      if (keptBounds.empty())
+        schedule.removeBoundedByAttr();
+      else
+        schedule.setBoundedByAttr(keptBounds);
+    }
+  }
+};
+
+} // namespace

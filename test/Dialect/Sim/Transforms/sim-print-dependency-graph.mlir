@@ -1,0 +1,147 @@
+// RUN: sim-opt %s --sim-print-dependency-graph -o /dev/null | FileCheck %s --check-prefix=TEXT
+// RUN: sim-opt %s --sim-print-dependency-graph=format=dot -o /dev/null | FileCheck %s --check-prefix=DOT
+// RUN: %if dot %{ sim-opt %s --sim-print-dependency-graph=format=dot -o /dev/null | dot -Tsvg | FileCheck %s --check-prefix=SVG %}
+
+// The printer does not change the IR, and also prints a graph whose schedule
+// is still undetermined (second simulation).
+
+// TEXT-LABEL: dependency graph of @waves: 3 components, 3 buffers
+// TEXT-NEXT:   schedule: @Push, @Spread, @Relax
+// TEXT-NEXT:   hip step bounded by: @Push
+// TEXT-NEXT:   traditional step bounded by: @Push, @Relax
+// TEXT-NEXT:   component @Push writes @P
+// TEXT-NEXT:     num_steps reads: @P[i] own
+// TEXT-NEXT:     evaluate reads: @P[i] own, @R[i+2] back_edge
+// TEXT-NEXT:     sub-stepping: in_kernel
+// TEXT-NEXT:   component @Spread writes @S
+// TEXT-NEXT:     evaluate reads: @P[i-2..i+2] interpolate, @S[i-1] own
+// TEXT-NEXT:     sub-stepping: grid_sync
+// TEXT-NEXT:   component @Relax writes @R
+// TEXT-NEXT:     num_steps reads: nothing
+// TEXT-NEXT:     evaluate reads: @S[gather] interpolate
+// TEXT-NEXT:     sub-stepping: in_kernel
+// TEXT-NEXT:   buffer @P : f32 interp #sim.linear, written by @Push
+// TEXT-NEXT:     init reads: nothing
+// TEXT-NEXT:   buffer @S : vector<2xf32> interp #sim.cubic, written by @Spread
+// TEXT-NEXT:     init reads: nothing
+// TEXT-NEXT:   buffer @R : f32 interp #sim.linear, written by @Relax
+// TEXT-NEXT:     init reads: @P[i]
+// TEXT-NEXT:     exact reads: nothing
+// TEXT-NEXT:   edges:
+// TEXT-NEXT:     @Relax -> @Push via @R[i+2] back_edge
+// TEXT-NEXT:     @Push -> @Spread via @P[i-2..i+2] interpolate
+// TEXT-NEXT:     @Spread -> @Relax via @S[gather] interpolate
+
+// TEXT-LABEL: dependency graph of @open: 2 components, 2 buffers
+// TEXT-NEXT:   schedule: undetermined (--sim-schedule reports why)
+// TEXT:        edges:
+// TEXT-NEXT:     @B -> @A via @Y[i]
+// TEXT-NEXT:     @A -> @B via @X[i]{{$}}
+
+// DOT-LABEL: digraph "waves" {
+// DOT-DAG: "c_Push" [shape=box, label="@Push\n#0\nbounds the hip step"];
+// DOT-DAG: "c_Spread" [shape=box, label="@Spread\n#1\ngrid_sync"];
+// DOT-DAG: "b_S" [shape=ellipse, label="@S\nvector<2xf32>"];
+// DOT-DAG: "c_Push" -> "b_P" [label="writes"];
+// DOT-DAG: "b_R" -> "c_Push" [label="i+2\nback_edge", style=dashed, color=purple, fontcolor=purple];
+// DOT-DAG: "b_P" -> "c_Spread" [label="i-2..i+2\ninterpolate"];
+// DOT: }
+// DOT-LABEL: digraph "open" {
+// DOT: "b_X" -> "c_B" [label="i"];
+
+// SVG: <svg
+// SVG: waves
+// SVG: <svg
+// SVG: open
+
+sim.simulation @waves range(64) dt(1.0e-2 : f32) max_steps(3) {
+  sim.buffer @P : f32 init {
+  ^bb0(%i: index):
+    %c = arith.constant 0.0 : f32
+    sim.yield %c : f32
+  }
+  sim.buffer @S : vector<2xf32> interp(#sim.cubic) init {
+  ^bb0(%i: index):
+    %c = arith.constant dense<0.0> : vector<2xf32>
+    sim.yield %c : vector<2xf32>
+  }
+  sim.buffer @R : f32 init {
+  ^bb0(%i: index):
+    %p = sim.read @P[%i] : f32
+    sim.yield %p : f32
+  } exact {
+  ^bb0(%i: index, %t: f64):
+    %c = arith.constant 0.0 : f32
+    sim.yield %c : f32
+  }
+  sim.component @Push writes(@P) num_steps {
+  ^bb0(%i: index, %t: i64):
+    %p = sim.read @P[%i] : f32
+    %n = arith.fptosi %p : f32 to i32
+    sim.yield %n : i32
+  } evaluate {
+  ^bb0(%i: index, %t: i64, %n: i32, %dt: f32):
+    %p = sim.read @P[%i] : f32
+    %c2 = arith.constant 2 : index
+    %j = arith.addi %c2, %i : index
+    %r = sim.read @R[%j] : f32
+    %s = arith.addf %p, %r : f32
+    sim.yield %s : f32
+  }
+  sim.component @Spread writes(@S) evaluate {
+  ^bb0(%i: index, %t: i64, %n: i32, %dt: f32):
+    %lo = arith.constant -2 : index
+    %hi = arith.constant 3 : index
+    %one = arith.constant 1 : index
+    %zero = arith.constant 0.0 : f32
+    %sum = scf.for %k = %lo to %hi step %one iter_args(%acc = %zero) -> f32 {
+      %j = arith.addi %i, %k : index
+      %p = sim.read @P[%j] : f32
+      %a = arith.addf %acc, %p : f32
+      scf.yield %a : f32
+    }
+    %left = arith.subi %i, %one : index
+    %old = sim.read @S[%left] : vector<2xf32>
+    %b = vector.broadcast %sum : f32 to vector<2xf32>
+    %new = arith.addf %old, %b : vector<2xf32>
+    sim.yield %new : vector<2xf32>
+  }
+  sim.component @Relax writes(@R) num_steps {
+  ^bb0(%i: index, %t: i64):
+    %c1 = arith.constant 1 : i32
+    sim.yield %c1 : i32
+  } evaluate {
+  ^bb0(%i: index, %t: i64, %n: i32, %dt: f32):
+    %c3 = arith.constant 3 : index
+    %j = arith.remui %i, %c3 : index
+    %s = sim.read @S[%j] : vector<2xf32>
+    %x = vector.extract %s[0] : f32 from vector<2xf32>
+    sim.yield %x : f32
+  }
+  sim.schedule [@Push]
+  sim.observe [@R]
+}
+
+sim.simulation @open range(8) dt(1.0e-2 : f32) max_steps(2) {
+  sim.buffer @X : f32 init {
+  ^bb0(%i: index):
+    %c = arith.constant 0.0 : f32
+    sim.yield %c : f32
+  }
+  sim.buffer @Y : f32 init {
+  ^bb0(%i: index):
+    %c = arith.constant 0.0 : f32
+    sim.yield %c : f32
+  }
+  sim.component @A writes(@X) evaluate {
+  ^bb0(%i: index, %t: i64, %n: i32, %dt: f32):
+    %y = sim.read @Y[%i] : f32
+    sim.yield %y : f32
+  }
+  sim.component @B writes(@Y) evaluate {
+  ^bb0(%i: index, %t: i64, %n: i32, %dt: f32):
+    %x = sim.read @X[%i] : f32
+    sim.yield %x : f32
+  }
+  sim.observe [@Y]
+}

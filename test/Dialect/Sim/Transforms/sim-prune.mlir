@@ -1,0 +1,139 @@
+// RUN: sim-opt %s --split-input-file --sim-prune --verify-diagnostics | FileCheck %s
+
+// @Debug and its buffer feed nothing observed; @Integrate is kept for @X but
+// its @Energy output is not needed. @F is needed across the back edge, and
+// @Mass only through @F.
+
+// CHECK-LABEL: sim.simulation @scene
+// CHECK-NOT: @Debug
+// CHECK-NOT: sim.buffer @D
+// CHECK-NOT: sim.buffer @Energy
+// CHECK: sim.buffer @X
+// CHECK: sim.buffer @F
+// CHECK: sim.buffer @Mass
+// CHECK: sim.component @Integrate writes(@X) evaluate
+// CHECK-NOT: arith.mulf
+// CHECK: sim.yield %{{.*}} : f32
+// CHECK: sim.component @Force writes(@F)
+// CHECK: sim.component @Weigh writes(@Mass)
+// CHECK: sim.schedule [@Integrate, @Force]
+// CHECK: sim.observe [@X]
+sim.simulation @scene range(16) dt(1.0e-2 : f32) max_steps(2) {
+  sim.buffer @X : f32 init {
+  ^bb0(%i: index):
+    %c = arith.constant 0.0 : f32
+    sim.yield %c : f32
+  }
+  // expected-remark @+1 {{removed buffer @Energy: no observed buffer depends on it}}
+  sim.buffer @Energy : f32 init {
+  ^bb0(%i: index):
+    %c = arith.constant 0.0 : f32
+    sim.yield %c : f32
+  }
+  sim.buffer @F : f32 init {
+  ^bb0(%i: index):
+    %c = arith.constant 0.0 : f32
+    sim.yield %c : f32
+  }
+  sim.buffer @Mass : f32 init {
+  ^bb0(%i: index):
+    %c = arith.constant 1.0 : f32
+    sim.yield %c : f32
+  }
+  // expected-remark @+1 {{removed buffer @D: no observed buffer depends on it}}
+  sim.buffer @D : f32 init {
+  ^bb0(%i: index):
+    %c = arith.constant 0.0 : f32
+    sim.yield %c : f32
+  }
+  // expected-remark @+1 {{@Integrate no longer writes @Energy: no observed buffer depends on it}}
+  sim.component @Integrate writes(@X, @Energy) evaluate {
+  ^bb0(%i: index, %t: i64, %n: i32, %dt: f32):
+    %x = sim.read @X[%i] : f32
+    %f = sim.read @F[%i] : f32
+    %x1 = arith.addf %x, %f : f32
+    %e = arith.mulf %x1, %x1 : f32
+    sim.yield %x1, %e : f32, f32
+  }
+  sim.component @Force writes(@F) evaluate {
+  ^bb0(%i: index, %t: i64, %n: i32, %dt: f32):
+    %x = sim.read @X[%i] : f32
+    %m = sim.read @Mass[%i] : f32
+    %f = arith.mulf %x, %m : f32
+    sim.yield %f : f32
+  }
+  sim.component @Weigh writes(@Mass) evaluate {
+  ^bb0(%i: index, %t: i64, %n: i32, %dt: f32):
+    %m = sim.read @Mass[%i] : f32
+    sim.yield %m : f32
+  }
+  // expected-remark @+1 {{removed component @Debug: no observed buffer depends on it}}
+  sim.component @Debug writes(@D) evaluate {
+  ^bb0(%i: index, %t: i64, %n: i32, %dt: f32):
+    %x = sim.read @X[%i] : f32
+    %e = sim.read @Energy[%i] : f32
+    %s = arith.addf %x, %e : f32
+    sim.yield %s : f32
+  }
+  sim.schedule [@Integrate, @Force, @Debug]
+  sim.observe [@X]
+}
+
+// -----
+
+// The derivative buffer of a needed buffer's Hermite interpolation stays,
+// and so does what a needed init body reads; a read only in num_steps keeps
+// its buffer too.
+
+// CHECK-LABEL: sim.simulation @keeps_aux
+// CHECK: sim.buffer @X
+// CHECK: sim.buffer @V
+// CHECK: sim.buffer @Seed
+// CHECK: sim.buffer @Limit
+// CHECK: sim.component @Move writes(@X, @V)
+// CHECK: sim.component @Seeder writes(@Seed)
+// CHECK: sim.component @Limiter writes(@Limit)
+sim.simulation @keeps_aux range(16) dt(1.0e-2 : f64) max_steps(2) {
+  sim.buffer @X : f64 interp(#sim.hermite<@V>) init {
+  ^bb0(%i: index):
+    %s = sim.read @Seed[%i] : f64
+    sim.yield %s : f64
+  }
+  sim.buffer @V : f64 init {
+  ^bb0(%i: index):
+    %c = arith.constant 0.0 : f64
+    sim.yield %c : f64
+  }
+  sim.buffer @Seed : f64 init {
+  ^bb0(%i: index):
+    %c = arith.constant 1.0 : f64
+    sim.yield %c : f64
+  }
+  sim.buffer @Limit : f64 init {
+  ^bb0(%i: index):
+    %c = arith.constant 3.0 : f64
+    sim.yield %c : f64
+  }
+  sim.component @Move writes(@X, @V) num_steps {
+  ^bb0(%i: index, %t: i64):
+    %l = sim.read @Limit[%i] : f64
+    %n = arith.fptosi %l : f64 to i32
+    sim.yield %n : i32
+  } evaluate {
+  ^bb0(%i: index, %t: i64, %n: i32, %dt: f64):
+    %x = sim.read @X[%i] : f64
+    %c = arith.constant 1.0 : f64
+    sim.yield %x, %c : f64, f64
+  }
+  sim.component @Seeder writes(@Seed) evaluate {
+  ^bb0(%i: index, %t: i64, %n: i32, %dt: f64):
+    %s = sim.read @Seed[%i] : f64
+    sim.yield %s : f64
+  }
+  sim.component @Limiter writes(@Limit) evaluate {
+  ^bb0(%i: index, %t: i64, %n: i32, %dt: f64):
+    %l = sim.read @Limit[%i] : f64
+    sim.yield %l : f64
+  }
+  sim.observe [@X]
+}
