@@ -65,6 +65,7 @@ def main(argv: list[str] | None = None) -> int:
             path.write_text(text)
             print(f"wrote {path}")
     if stale:
+        sys.stdout.flush()  # the diff first, then the verdict
         print("error: " + ", ".join(str(p) for p in stale) + " out of date; "
               "run python3 python/gen_paper_examples.py", file=sys.stderr)
         return 1
