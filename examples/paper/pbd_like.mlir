@@ -7,9 +7,10 @@
 // prepares accumulated neighbourhood information for an imaginary collision
 // detection in C2. C3 and C4 are SPH-like sums over the neighbours, C5 iterates
 // over the neighbours in B4 and B3, and C6 computes the final item updates
-// from B5. B6 is observed. B3 and B4 (the outputs of the SPH-like components,
-// read in windows by C4 and C5) use the paper's cubic interpolation and the
-// other buffers linear interpolation, so the scene exercises both.
+// from B5. B6 is observed.
+// B3 and B4 (the outputs of the SPH-like components, read in windows by C4 and
+// C5) use the paper's cubic interpolation and the other buffers linear
+// interpolation, so the scene exercises both.
 //
 // Dependency graph (who reads what; the order that follows):
 //   C0 writes B0, reads B0[i] (own), B6[i] (back edge: value at T)
