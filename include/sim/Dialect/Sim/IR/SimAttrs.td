@@ -61,16 +61,19 @@ def Sim_SubStepping : I32Enum<"SubStepping",
 def Sim_SubSteppingAttr : EnumAttr<Sim_Dialect, Sim_SubStepping, "sub_stepping">;
 
 def Sim_Parity : I32Enum<"Parity",
-    "where a component keeps its state between sub-steps", [
-    I32EnumCase<"registers", 0>, I32EnumCase<"copy_if_even", 1>]> {
+    "whether a component needs a parity copy after its sub-steps", [
+    I32EnumCase<"none", 0>, I32EnumCase<"copy_if_even", 1>]> {
   let cppNamespace = "::mlir::sim";
   let description = [{
-    Recorded by `--sim-plan-memory`. `registers`: an `in_kernel` component
-    keeps its own state in registers between sub-steps and writes the target
-    half once, so its source half still holds the value at `T` and no parity
-    copy is needed. `copy_if_even`: sub-steps ping-pong between the two halves
-    through memory, and after an even number of them the result sits in the
-    source half and must be copied to the target (Algorithm 2, lines 41-44).
+    Recorded by `--sim-plan-memory`. `none`: the component writes its target
+    half once per big step, so no parity copy is needed; its source half still
+    holds the value at `T` afterwards. That holds for every component under
+    `simple` and `traditional` (one evaluation per big step) and for
+    `in_kernel` components under `hip`, which keep their own state in
+    registers between sub-steps. `copy_if_even`: a `grid_sync` component's
+    sub-steps ping-pong between the halves through memory, so after an even
+    number of them the result sits in the wrong half and must be copied to
+    the target (Algorithm 2, lines 41-44).
   }];
 }
 def Sim_ParityAttr : EnumAttr<Sim_Dialect, Sim_Parity, "parity">;
@@ -89,6 +92,23 @@ def Sim_Version : I32Enum<"Version",
   }];
 }
 def Sim_VersionAttr : EnumAttr<Sim_Dialect, Sim_Version, "version">;
+
+def Sim_Strategy : I32Enum<"Strategy", "how big steps are chosen and run", [
+    I32EnumCase<"simple", 0>, I32EnumCase<"traditional", 1>,
+    I32EnumCase<"hip", 2>, I32EnumCase<"hip_cache", 3>]> {
+  let cppNamespace = "::mlir::sim";
+  let description = [{
+    `simple`: every big step is one base step. `traditional`: every component
+    estimates, the global minimum is the big step, and every component takes
+    it in one evaluation. `hip` (the paper's method): the big step is the
+    minimum estimate of the components that read through the back edge, and
+    every component advances through it in sub-steps, reading earlier
+    components' buffers interpolated in time. `hip_cache`: `hip` with
+    shared-memory caches of interpolated values (Section 4.1). Recorded on a
+    simulation by `--sim-plan-memory`.
+  }];
+}
+def Sim_StrategyAttr : EnumAttr<Sim_Dialect, Sim_Strategy, "strategy">;
 
 //===----------------------------------------------------------------------===//
 // Interpolation functions

@@ -53,11 +53,16 @@ def Sim_SimulationOp : Sim_Op<"simulation", [
     ```
 
     `range`, `dt` and `max_steps` can be overridden without editing the file:
-    `sim-opt --sim-set-params="range=16384,max_steps=2"`.
+    `sim-opt --sim-set-params="values=range=16384,max_steps=2"`.
+
+    `strategy` is recorded by `--sim-plan-memory`: the memory plan and the
+    explicit reads that `--sim-insert-interpolation` produces are for that
+    strategy.
   }];
 
   let arguments = (ins SymbolNameAttr:$sym_name, I64Attr:$range,
-                       Sim_TimeStepAttr:$dt, I32Attr:$max_steps);
+                       Sim_TimeStepAttr:$dt, I32Attr:$max_steps,
+                       OptionalAttr<Sim_StrategyAttr>:$strategy);
   let regions = (region SizedRegion<1>:$body);
   let assemblyFormat = [{
     $sym_name `range` `(` $range `)` `dt` `(` $dt `)`
@@ -218,8 +223,10 @@ def Sim_ComponentOp : Sim_Op<"component", [
       after `%n` base steps of `%dt` from local time `%t`.
 
     Both bodies read state only through `sim.read`. The analyses record
-    their verdicts as attributes: `sub_stepping` (`--sim-substep-legality`)
-    and `parity` (`--sim-plan-memory`).
+    their verdicts as attributes: `sub_stepping` (`--sim-substep-legality`),
+    `parity` and, under `hip-cache`, `caches` (the buffers whose interpolated
+    values the component caches in shared memory), both by
+    `--sim-plan-memory`.
 
     ```mlir
     sim.component @Integrate writes(@X, @V) num_steps {
@@ -239,7 +246,8 @@ def Sim_ComponentOp : Sim_Op<"component", [
   let arguments = (ins SymbolNameAttr:$sym_name,
                        FlatSymbolRefArrayAttr:$writes,
                        OptionalAttr<Sim_SubSteppingAttr>:$sub_stepping,
-                       OptionalAttr<Sim_ParityAttr>:$parity);
+                       OptionalAttr<Sim_ParityAttr>:$parity,
+                       OptionalAttr<FlatSymbolRefArrayAttr>:$caches);
   let regions = (region MaxSizedRegion<1>:$num_steps, SizedRegion<1>:$evaluate);
   let assemblyFormat = [{
     $sym_name `writes` `` custom<SymbolList>($writes) attr-dict-with-keyword

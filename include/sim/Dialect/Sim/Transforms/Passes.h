@@ -7,6 +7,8 @@
 #ifndef SIM_DIALECT_SIM_TRANSFORMS_PASSES_H
 #define SIM_DIALECT_SIM_TRANSFORMS_PASSES_H
 
+#include "mlir/Dialect/Arith/IR/Arith.h"
+#include "mlir/Dialect/Vector/IR/VectorOps.h"
 #include "mlir/Pass/Pass.h"
 #include "sim/Dialect/Sim/IR/SimOps.h"
 
@@ -14,6 +16,9 @@ namespace mlir::sim {
 
 /// Output formats of --sim-print-dependency-graph.
 enum class GraphFormat { text, dot };
+
+/// Output formats of --sim-report-memory.
+enum class ReportFormat { text, json };
 
 #define GEN_PASS_DECL
 #include "sim/Dialect/Sim/Transforms/Passes.h.inc"

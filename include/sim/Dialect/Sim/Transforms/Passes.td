@@ -122,4 +122,98 @@ def SimPrune : Pass<"sim-prune", "::mlir::sim::SimulationOp"> {
   let dependentDialects = [];
 }
 
+def SimPlanMemory : Pass<"sim-plan-memory", "::mlir::sim::SimulationOp"> {
+  let summary = "Plan snapshots and parity copies for a strategy";
+  let description = [{
+    Decides, for the chosen strategy, which buffers need a snapshot (a copy of
+    their value at `T`) and which components need a parity copy after their
+    sub-steps (Algorithm 2, lines 41-44; Fig. 4), and records the plan:
+    `strategy` on the simulation, `snapshot` on buffers, `parity` on
+    components.
+
+    Only what a scene needs is planned. Under `simple` and `traditional`
+    every component evaluates once per big step from the source half into the
+    target half, so nothing is snapshotted or copied. Under `hip`, an
+    `in_kernel` component keeps its own state in registers between sub-steps
+    and writes the target once, so its source half still holds the value at
+    `T` for later interpolating readers: no snapshot and no parity copy. Only
+    a `grid_sync` component ping-pongs through memory: it gets
+    `copy_if_even`, and its buffers get a snapshot when a later component
+    interpolates them (or needs them as an interpolation's auxiliary buffer).
+
+    Needs the roles of `--sim-schedule` and the verdicts of
+    `--sim-substep-legality`.
+  }];
+  let options = [
+    Option<"strategy", "strategy", "::mlir::sim::Strategy",
+           "::mlir::sim::Strategy::hip", "The strategy to plan for",
+           [{::llvm::cl::values(
+               clEnumValN(::mlir::sim::Strategy::simple, "simple",
+                          "one base step per big step"),
+               clEnumValN(::mlir::sim::Strategy::traditional, "traditional",
+                          "global minimum step, one evaluation per component"),
+               clEnumValN(::mlir::sim::Strategy::hip, "hip",
+                          "the paper's method: interpolated sub-steps"),
+               clEnumValN(::mlir::sim::Strategy::hip_cache, "hip-cache",
+                          "hip with shared-memory caches"))}]>,
+  ];
+}
+
+def SimInsertInterpolation
+    : Pass<"sim-insert-interpolation", "::mlir::sim::SimulationOp"> {
+  let summary = "Turn view reads into explicit loads and interpolations";
+  let description = [{
+    Replaces every `sim.read` in a component body by explicit `sim.load`s of
+    specific buffer copies and, for reads of buffers already advanced in the
+    step, the arithmetic of the buffer's interpolation function (Eq. (2)),
+    for the strategy the memory plan recorded:
+
+    - `own` reads load the component's `local` state;
+    - `back_edge` reads load the `source` half (the value at `T`);
+    - `interpolate` reads under `hip`/`hip-cache` load the value at `T`
+      (`snapshot` if the plan keeps one, else `source`) and at `T + m`
+      (`target`), plus the auxiliary buffers the interpolation needs, and
+      interpolate at the reader's local time: fraction `(t + n - T) / m` in
+      `evaluate`, `(t - T) / m` in `num_steps`, with `T` and `m` from
+      `sim.big_step`. Under `simple` and `traditional` they load `target` in
+      `evaluate` (the fraction is always 1) and `source` in `num_steps`
+      (estimates are taken at `T`).
+
+    The result needs no further analysis to lower: every load names the copy
+    it reads. Interpolation functions build their own arithmetic through
+    `InterpolationAttrInterface`, so adding one does not touch this pass.
+    Reads in init and exact bodies (initial states) are left as they are.
+  }];
+  let dependentDialects = ["::mlir::arith::ArithDialect",
+                           "::mlir::vector::VectorDialect"];
+}
+
+def SimReportMemory : Pass<"sim-report-memory"> {
+  let summary = "Report the bytes of the memory plan against the naive plan";
+  let description = [{
+    Prints, for every simulation with a memory plan, the bytes of each
+    buffer's halves and snapshot, the shared memory of the `hip-cache`
+    caches per thread group, and the total against the naive plan that
+    triple-buffers every buffer (source, target and a snapshot of each), so
+    that "model only what a scene needs" is a number. The IR is not changed.
+    With `format=json` the same numbers are printed as JSON for benchmark
+    scripts.
+
+    Caches follow the paper's design (Section 4.1): one interpolated element
+    per thread of a group for every buffer a component interpolates through a
+    window (gathers are not cached).
+  }];
+  let options = [
+    Option<"format", "format", "::mlir::sim::ReportFormat",
+           "::mlir::sim::ReportFormat::text", "Output format",
+           [{::llvm::cl::values(
+               clEnumValN(::mlir::sim::ReportFormat::text, "text",
+                          "a table"),
+               clEnumValN(::mlir::sim::ReportFormat::json, "json",
+                          "JSON"))}]>,
+    Option<"groupSize", "group-size", "int64_t", "256",
+           "Threads per group, for the size of hip-cache caches">,
+  ];
+}
+
 #endif // SIM_DIALECT_SIM_TRANSFORMS_PASSES_TD

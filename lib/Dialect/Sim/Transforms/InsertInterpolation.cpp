@@ -1,0 +1,247 @@
+//===- InsertInterpolation.cpp - view reads to explicit loads -------------===//
+//
+// Eq. (2) of the paper made explicit. A view read "B at item j at my local
+// time" becomes loads of specific copies of B and, for a buffer already
+// advanced in this big step under a sub-stepping strategy, the arithmetic of
+// B's interpolation function at the reader's local time. Everything a
+// lowering needs is then in the IR: which copy every load reads (from the
+// memory plan), and the fraction as arithmetic on sim.big_step and the body's
+// time arguments.
+//
+// The fraction is (t_end - T) / m with integer times, so it is exactly 0 at
+// the start and exactly 1 at the end of the big step; with interpolation
+// functions that are exact at both ends, every strategy then agrees with
+// `simple` whenever a big step is one base step.
+//
+//===----------------------------------------------------------------------===//
+
+#include "sim/Dialect/Sim/IR/SimOps.h"
+#include "sim/Dialect/Sim/Transforms/Passes.h"
+
+#include "mlir/Dialect/Arith/IR/Arith.h"
+#include "mlir/IR/PatternMatch.h"
+
+namespace mlir::sim {
+#define GEN_PASS_DEF_SIMINSERTINTERPOLATION
+#include "sim/Dialect/Sim/Transforms/Passes.h.inc"
+} // namespace mlir::sim
+
+using namespace mlir;
+using namespace mlir::sim;
+
+namespace {
+
+/// Builds, on demand and once per scalar type, the interpolation fraction and
+/// the big step's length in time units at the start of one body.
+class BodyTime {
+public:
+  BodyTime(Region &body, BodyKind kind, double dt)
+      : body(body), kind(kind), dt(dt) {}
+
+  Value getFraction(FloatType type) {
+    auto it = fractions.find(type);
+    if (it != fractions.end())
+      return it->second;
+    OpBuilder builder = atBodyStart();
+    Location loc = body.getLoc();
+    auto [begin, size] = getBigStep();
+    Block &block = body.front();
+    // Local time at which the body reads: the end of the sub-step in
+    // evaluate, its start in num_steps.
+    Value end = block.getArgument(1);
+    if (kind == BodyKind::Evaluate) {
+      Value steps = arith::ExtSIOp::create(builder, loc, builder.getI64Type(),
+                                           block.getArgument(2));
+      end = arith::AddIOp::create(builder, loc, end, steps);
+    }
+    Value offset = arith::SubIOp::create(builder, loc, end, begin);
+    Value offsetF = arith::SIToFPOp::create(builder, loc, type, offset);
+    Value sizeF = arith::SIToFPOp::create(builder, loc, type, size);
+    Value fraction = arith::DivFOp::create(builder, loc, offsetF, sizeF);
+    track({offset, offsetF, sizeF, fraction});
+    return fractions[type] = fraction;
+  }
+
+  Value getSpan(FloatType type) {
+    auto it = spans.find(type);
+    if (it != spans.end())
+      return it->second;
+    OpBuilder builder = atBodyStart();
+    Location loc = body.getLoc();
+    Value sizeF = arith::SIToFPOp::create(builder, loc, type, getBigStep().second);
+    Value dtValue =
+        arith::ConstantOp::create(builder, loc, builder.getFloatAttr(type, dt));
+    Value span = arith::MulFOp::create(builder, loc, sizeF, dtValue);
+    track({sizeF, dtValue, span});
+    return spans[type] = span;
+  }
+
+  /// Erases what was built but ended up unused (for example the span of a
+  /// linear interpolation), newest first.
+  void eraseUnused() {
+    for (Operation *op : llvm::reverse(created))
+      if (op->use_empty())
+        op->erase();
+  }
+
+private:
+  std::pair<Value, Value> getBigStep() {
+    if (!bigStep) {
+      OpBuilder builder(&body.front(), body.front().begin());
+      bigStep = BigStepOp::create(builder, body.getLoc(), builder.getI64Type(),
+                                  builder.getI64Type());
+      created.insert(created.begin(), bigStep);
+      insertionPoint = bigStep->getNextNode();
+    }
+    return {bigStep.getBegin(), bigStep.getSize()};
+  }
+
+  OpBuilder atBodyStart() {
+    getBigStep();
+    OpBuilder builder(insertionPoint);
+    return builder;
+  }
+
+  void track(std::initializer_list<Value> values) {
+    for (Value value : values)
+      created.push_back(value.getDefiningOp());
+  }
+
+  Region &body;
+  BodyKind kind;
+  double dt;
+  BigStepOp bigStep;
+  Operation *insertionPoint = nullptr;
+  SmallVector<Operation *> created;
+  llvm::DenseMap<Type, Value> fractions, spans;
+};
+
+struct InsertInterpolationPass
+    : public sim::impl::SimInsertInterpolationBase<InsertInterpolationPass> {
+  void runOnOperation() override {
+    SimulationOp simulation = getOperation();
+    StrategyAttr strategy = simulation.getStrategyAttr();
+    if (!strategy) {
+      simulation.emitOpError()
+          << "has no memory plan; run --sim-plan-memory before "
+             "--sim-insert-interpolation";
+      return signalPassFailure();
+    }
+    if (failed(collectPositions(simulation)))
+      return signalPassFailure();
+
+    bool subSteps = strategy.getValue() == Strategy::hip ||
+                    strategy.getValue() == Strategy::hip_cache;
+    for (ComponentOp component : simulation.getComponents()) {
+      if (component.hasNumSteps() &&
+          failed(rewriteBody(simulation, component, component.getNumSteps(),
+                             BodyKind::NumSteps, subSteps)))
+        return signalPassFailure();
+      if (failed(rewriteBody(simulation, component, component.getEvaluate(),
+                             BodyKind::Evaluate, subSteps)))
+        return signalPassFailure();
+    }
+  }
+
+  /// Positions of components in the (complete) schedule, for checking that
+  /// an interpolation's auxiliary buffers are advanced before the reader.
+  LogicalResult collectPositions(SimulationOp simulation) {
+    ScheduleOp schedule = simulation.getScheduleOp();
+    unsigned numComponents = llvm::range_size(simulation.getComponents());
+    if (!schedule || schedule.getOrder().size() != numComponents)
+      return simulation.emitOpError()
+             << "has no complete schedule; run --sim-schedule before "
+                "--sim-insert-interpolation";
+    for (auto [index, name] :
+         llvm::enumerate(schedule.getOrder().getAsRange<FlatSymbolRefAttr>()))
+      positions[name.getAttr()] = index;
+    return success();
+  }
+
+  LogicalResult rewriteBody(SimulationOp simulation, ComponentOp component,
+                            Region &body, BodyKind kind, bool subSteps) {
+    SmallVector<ReadOp> reads;
+    body.walk([&](ReadOp read) { reads.push_back(read); });
+    BodyTime time(body, kind, simulation.getTimeStep());
+    IRRewriter rewriter(&getContext());
+    for (ReadOp read : reads) {
+      if (!read.getRoleAttr())
+        return read.emitOpError()
+               << "has no read role; run --sim-schedule before "
+                  "--sim-insert-interpolation";
+      rewriter.setInsertionPoint(read);
+      FailureOr<Value> value =
+          rewriteRead(rewriter, simulation, component, read, kind, subSteps,
+                      time);
+      if (failed(value))
+        return failure();
+      rewriter.replaceOp(read, *value);
+    }
+    time.eraseUnused();
+    return success();
+  }
+
+  FailureOr<Value> rewriteRead(IRRewriter &rewriter, SimulationOp simulation,
+                               ComponentOp component, ReadOp read,
+                               BodyKind kind, bool subSteps, BodyTime &time) {
+    Location loc = read.getLoc();
+    auto load = [&](BufferOp buffer, Version version) -> Value {
+      return LoadOp::create(rewriter, loc, buffer.getElementType(),
+                            FlatSymbolRefAttr::get(buffer.getSymNameAttr()),
+                            read.getIndex(),
+                            VersionAttr::get(&getContext(), version));
+    };
+    BufferOp buffer = simulation.lookupBuffer(read.getBufferAttr());
+    switch (read.getRole().value()) {
+    case ReadRole::own:
+      return load(buffer, Version::local);
+    case ReadRole::back_edge:
+      return load(buffer, Version::source);
+    case ReadRole::interpolate:
+      break;
+    }
+    if (!subSteps)
+      // One evaluation per big step: it reads the end of the step; estimates
+      // are taken at its start.
+      return load(buffer, kind == BodyKind::Evaluate ? Version::target
+                                                     : Version::source);
+
+    InterpolationAttrInterface interp = buffer.getInterpolation();
+    SmallVector<BufferOp> inputs = {buffer};
+    for (FlatSymbolRefAttr aux : interp.getAuxiliaryBuffers()) {
+      BufferOp auxBuffer = simulation.lookupBuffer(aux);
+      ComponentOp writer = lookupWriter(simulation, auxBuffer);
+      if (positions.lookup(writer.getSymNameAttr()) >=
+          positions.lookup(component.getSymNameAttr()))
+        return read.emitOpError()
+               << "interpolates @" << buffer.getSymName() << " with "
+               << interp << ", which needs @" << auxBuffer.getSymName()
+               << " at the end of the big step, but its writer @"
+               << writer.getSymName() << " does not run before @"
+               << component.getSymName() << " in the step";
+      inputs.push_back(auxBuffer);
+    }
+    SmallVector<Value> atBegin, atEnd;
+    for (BufferOp input : inputs) {
+      atBegin.push_back(
+          load(input, input.getSnapshot() ? Version::snapshot : Version::source));
+      atEnd.push_back(load(input, Version::target));
+    }
+    FloatType scalarType = buffer.getScalarType();
+    return interp.buildInterpolation(rewriter, loc, atBegin, atEnd,
+                                     time.getFraction(scalarType),
+                                     time.getSpan(scalarType));
+  }
+
+  ComponentOp lookupWriter(SimulationOp simulation, BufferOp buffer) {
+    for (ComponentOp component : simulation.getComponents())
+      if (component.writesBuffer(
+              FlatSymbolRefAttr::get(buffer.getSymNameAttr())))
+        return component;
+    llvm_unreachable("verified simulations give every buffer a writer");
+  }
+
+  llvm::DenseMap<StringAttr, unsigned> positions;
+};
+
+} // namespace

@@ -1,0 +1,106 @@
+//===- PlanMemory.cpp - snapshots, parity copies and caches ---------------===//
+//
+// Plans the memory a strategy needs beyond the two halves of every buffer.
+// Algorithm 2 snapshots every interpolated buffer and copies after an even
+// number of sub-steps because its sub-steps ping-pong between the halves. We
+// keep an in_kernel component's state in registers between sub-steps (each
+// thread owns its item, which is exactly what --sim-substep-legality proved),
+// so its source half is never overwritten during the big step: that half is
+// the value at T, and neither a snapshot nor a parity copy is needed. Only
+// grid_sync components ping-pong through memory and pay for both.
+//
+//===----------------------------------------------------------------------===//
+
+#include "sim/Analysis/DependencyAnalysis.h"
+#include "sim/Dialect/Sim/IR/SimOps.h"
+#include "sim/Dialect/Sim/Transforms/Passes.h"
+
+#include "llvm/ADT/SetVector.h"
+
+namespace mlir::sim {
+#define GEN_PASS_DEF_SIMPLANMEMORY
+#include "sim/Dialect/Sim/Transforms/Passes.h.inc"
+} // namespace mlir::sim
+
+using namespace mlir;
+using namespace mlir::sim;
+
+namespace {
+
+bool isSubStepping(Strategy strategy) {
+  return strategy == Strategy::hip || strategy == Strategy::hip_cache;
+}
+
+struct PlanMemoryPass : public sim::impl::SimPlanMemoryBase<PlanMemoryPass> {
+  using SimPlanMemoryBase::SimPlanMemoryBase;
+
+  void runOnOperation() override {
+    SimulationOp simulation = getOperation();
+    auto &analysis = getAnalysis<DependencyAnalysis>();
+    if (failed(checkPrerequisites(analysis)))
+      return signalPassFailure();
+
+    MLIRContext *context = &getContext();
+    simulation.setStrategyAttr(StrategyAttr::get(context, strategy));
+    for (BufferOp buffer : analysis.getBuffers())
+      buffer.removeSnapshotAttr();
+
+    llvm::SetVector<Operation *> snapshots;
+    for (ComponentOp component : analysis.getComponents()) {
+      component.removeCachesAttr();
+      bool pingPongs = isSubStepping(strategy) &&
+                       *component.getSubStepping() == SubStepping::grid_sync;
+      component.setParityAttr(ParityAttr::get(
+          context, pingPongs ? Parity::copy_if_even : Parity::none));
+      if (!isSubStepping(strategy))
+        continue;
+
+      SmallVector<Attribute> caches;
+      for (const BufferAccess &access : analysis.getAccesses(component)) {
+        if (access.reads.front().getRole() != ReadRole::interpolate)
+          continue;
+        // The value at T of the buffer and of its interpolation's auxiliary
+        // buffers must survive until this reader runs.
+        SmallVector<BufferOp> atBegin = {access.buffer};
+        for (FlatSymbolRefAttr aux :
+             access.buffer.getInterpolation().getAuxiliaryBuffers())
+          if (BufferOp auxBuffer = simulation.lookupBuffer(aux))
+            atBegin.push_back(auxBuffer);
+        for (BufferOp buffer : atBegin)
+          if (*analysis.getWriter(buffer).getSubStepping() ==
+              SubStepping::grid_sync)
+            snapshots.insert(buffer);
+        // hip-cache caches what a thread group reads near its own items.
+        if (strategy == Strategy::hip_cache && !access.pattern.isGather() &&
+            !llvm::is_contained(caches, access.buffer.getSymNameAttr()))
+          caches.push_back(FlatSymbolRefAttr::get(access.buffer.getSymNameAttr()));
+      }
+      if (!caches.empty())
+        component.setCachesAttr(ArrayAttr::get(context, caches));
+    }
+    for (Operation *buffer : snapshots)
+      cast<BufferOp>(buffer).setSnapshot(true);
+    markAnalysesPreserved<DependencyAnalysis>();
+  }
+
+  /// The plan relies on read roles and sub-stepping verdicts; without them it
+  /// would silently plan too little memory.
+  LogicalResult checkPrerequisites(const DependencyAnalysis &analysis) {
+    for (ComponentOp component : analysis.getComponents()) {
+      if (isSubStepping(strategy) && !component.getSubSteppingAttr())
+        return component.emitOpError()
+               << "has no sub-stepping verdict; run --sim-substep-legality "
+                  "before --sim-plan-memory";
+      for (const BufferAccess &access : analysis.getAccesses(component)) {
+        for (ReadOp read : access.reads)
+          if (!read.getRoleAttr())
+            return read.emitOpError()
+                   << "has no read role; run --sim-schedule before "
+                      "--sim-plan-memory";
+      }
+    }
+    return success();
+  }
+};
+
+} // namespace

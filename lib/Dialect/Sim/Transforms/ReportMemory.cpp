@@ -1,0 +1,200 @@
+//===- ReportMemory.cpp - bytes of the memory plan ------------------------===//
+//
+// Makes "model only what a scene needs" a number: the device memory of the
+// plan recorded by --sim-plan-memory (two halves per buffer plus planned
+// snapshots) against the naive plan of Algorithm 2 applied to every buffer
+// (source, target and a snapshot each), and the shared memory per thread
+// group of the planned hip-cache caches.
+//
+//===----------------------------------------------------------------------===//
+
+#include "sim/Dialect/Sim/IR/SimOps.h"
+#include "sim/Dialect/Sim/Transforms/Passes.h"
+
+#include "llvm/Support/Format.h"
+#include "llvm/Support/JSON.h"
+#include "llvm/Support/raw_ostream.h"
+
+namespace mlir::sim {
+#define GEN_PASS_DEF_SIMREPORTMEMORY
+#include "sim/Dialect/Sim/Transforms/Passes.h.inc"
+} // namespace mlir::sim
+
+using namespace mlir;
+using namespace mlir::sim;
+
+namespace {
+
+struct BufferRow {
+  std::string name, type;
+  int64_t elementBytes, halvesBytes, snapshotBytes;
+};
+
+struct CacheRow {
+  std::string component;
+  int64_t bytesPerGroup;
+};
+
+/// The numbers of one simulation's plan.
+struct MemoryReport {
+  std::string simulation, strategy;
+  int64_t range = 0;
+  SmallVector<BufferRow> buffers;
+  SmallVector<CacheRow> caches;
+
+  int64_t planned() const {
+    int64_t total = 0;
+    for (const BufferRow &row : buffers)
+      total += row.halvesBytes + row.snapshotBytes;
+    return total;
+  }
+  int64_t naive() const {
+    int64_t total = 0;
+    for (const BufferRow &row : buffers)
+      total += 3 * range * row.elementBytes;
+    return total;
+  }
+  int64_t largestCache() const {
+    int64_t largest = 0;
+    for (const CacheRow &row : caches)
+      largest = std::max(largest, row.bytesPerGroup);
+    return largest;
+  }
+};
+
+std::string formatBytes(int64_t bytes) {
+  std::string text;
+  llvm::raw_string_ostream os(text);
+  if (bytes >= (int64_t(1) << 20))
+    os << llvm::format("%.2f MiB", double(bytes) / double(1 << 20));
+  else if (bytes >= 1024)
+    os << llvm::format("%.2f KiB", double(bytes) / 1024.0);
+  else
+    os << bytes << " B";
+  return text;
+}
+
+void printText(const MemoryReport &report, int64_t groupSize,
+               llvm::raw_ostream &os) {
+  os << "memory plan of @" << report.simulation << " (strategy "
+     << report.strategy << ", " << report.range << " items)\n";
+  os << llvm::format("  %-12s %-16s %10s %14s %14s %14s\n", "buffer",
+                     "element", "bytes/item", "halves", "snapshot", "total");
+  for (const BufferRow &row : report.buffers)
+    os << llvm::format("  %-12s %-16s %10lld %14lld %14lld %14lld\n",
+                       ("@" + row.name).c_str(), row.type.c_str(),
+                       (long long)row.elementBytes, (long long)row.halvesBytes,
+                       (long long)row.snapshotBytes,
+                       (long long)(row.halvesBytes + row.snapshotBytes));
+  int64_t planned = report.planned(), naive = report.naive();
+  os << llvm::format("  %-40s %14lld (%s)\n", "planned device memory",
+                     (long long)planned, formatBytes(planned).c_str());
+  os << llvm::format("  %-40s %14lld (%s)\n",
+                     "naive plan (3 copies of every buffer)", (long long)naive,
+                     formatBytes(naive).c_str());
+  if (naive > 0)
+    os << llvm::format("  %-40s %14lld (%.1f%%)\n", "saved",
+                       (long long)(naive - planned),
+                       100.0 * double(naive - planned) / double(naive));
+  if (report.caches.empty()) {
+    os << "  shared-memory caches: none\n";
+    return;
+  }
+  os << "  shared-memory caches (" << groupSize << " threads per group):\n";
+  for (const CacheRow &row : report.caches)
+    os << llvm::format("    %-12s %10lld bytes per group\n",
+                       ("@" + row.component).c_str(),
+                       (long long)row.bytesPerGroup);
+}
+
+llvm::json::Value toJson(const MemoryReport &report, int64_t groupSize) {
+  llvm::json::Array buffers, caches;
+  for (const BufferRow &row : report.buffers)
+    buffers.push_back(llvm::json::Object{{"name", row.name},
+                                         {"element", row.type},
+                                         {"bytes_per_item", row.elementBytes},
+                                         {"halves_bytes", row.halvesBytes},
+                                         {"snapshot_bytes", row.snapshotBytes}});
+  for (const CacheRow &row : report.caches)
+    caches.push_back(llvm::json::Object{{"component", row.component},
+                                        {"bytes_per_group", row.bytesPerGroup}});
+  return llvm::json::Object{{"simulation", report.simulation},
+                            {"strategy", report.strategy},
+                            {"range", report.range},
+                            {"group_size", groupSize},
+                            {"buffers", std::move(buffers)},
+                            {"caches", std::move(caches)},
+                            {"planned_bytes", report.planned()},
+                            {"naive_bytes", report.naive()},
+                            {"largest_cache_bytes_per_group",
+                             report.largestCache()}};
+}
+
+struct ReportMemoryPass
+    : public sim::impl::SimReportMemoryBase<ReportMemoryPass> {
+  using SimReportMemoryBase::SimReportMemoryBase;
+
+  void runOnOperation() override {
+    if (groupSize < 1) {
+      getOperation()->emitError()
+          << "--sim-report-memory needs a positive group-size, but got "
+          << groupSize;
+      return signalPassFailure();
+    }
+    llvm::json::Array reports;
+    WalkResult result = getOperation()->walk([&](SimulationOp simulation) {
+      FailureOr<MemoryReport> report = build(simulation);
+      if (failed(report))
+        return WalkResult::interrupt();
+      if (format == ReportFormat::json)
+        reports.push_back(toJson(*report, groupSize));
+      else
+        printText(*report, groupSize, llvm::outs());
+      return WalkResult::advance();
+    });
+    if (result.wasInterrupted())
+      return signalPassFailure();
+    if (format == ReportFormat::json)
+      llvm::outs() << llvm::formatv("{0:2}", llvm::json::Value(
+                                                 std::move(reports)))
+                   << "\n";
+    llvm::outs().flush();
+    markAllAnalysesPreserved();
+  }
+
+  FailureOr<MemoryReport> build(SimulationOp simulation) {
+    StrategyAttr strategy = simulation.getStrategyAttr();
+    if (!strategy)
+      return simulation.emitOpError()
+             << "has no memory plan; run --sim-plan-memory before "
+                "--sim-report-memory";
+    MemoryReport report;
+    report.simulation = simulation.getSymName().str();
+    report.strategy = stringifyStrategy(strategy.getValue()).str();
+    report.range = simulation.getRange();
+    llvm::DenseMap<StringAttr, int64_t> elementBytes;
+    for (BufferOp buffer : simulation.getBuffers()) {
+      BufferRow row;
+      row.name = buffer.getSymName().str();
+      llvm::raw_string_ostream(row.type) << buffer.getElementType();
+      row.elementBytes = buffer.getElementBytes();
+      row.halvesBytes = 2 * report.range * row.elementBytes;
+      row.snapshotBytes = buffer.getSnapshot() ? report.range * row.elementBytes
+                                               : 0;
+      elementBytes[buffer.getSymNameAttr()] = row.elementBytes;
+      report.buffers.push_back(row);
+    }
+    for (ComponentOp component : simulation.getComponents()) {
+      ArrayAttr caches = component.getCachesAttr();
+      if (!caches)
+        continue;
+      int64_t bytes = 0;
+      for (auto name : caches.getAsRange<FlatSymbolRefAttr>())
+        bytes += groupSize * elementBytes.lookup(name.getAttr());
+      report.caches.push_back({component.getSymName().str(), bytes});
+    }
+    return report;
+  }
+};
+
+} // namespace

@@ -1,0 +1,83 @@
+// RUN: sim-opt %s --split-input-file --sim-insert-interpolation --verify-diagnostics
+
+// expected-error @+1 {{'sim.simulation' op has no memory plan; run --sim-plan-memory before --sim-insert-interpolation}}
+sim.simulation @no_plan range(16) dt(1.0e-2 : f32) max_steps(2) {
+  sim.buffer @X : f32 init {
+  ^bb0(%i: index):
+    %c = arith.constant 0.0 : f32
+    sim.yield %c : f32
+  }
+  sim.component @C writes(@X) evaluate {
+  ^bb0(%i: index, %t: i64, %n: i32, %dt: f32):
+    %x = sim.read @X[%i] own : f32
+    sim.yield %x : f32
+  }
+  sim.schedule [@C]
+  sim.observe [@X]
+}
+
+// -----
+
+// expected-error @+1 {{'sim.simulation' op has no complete schedule; run --sim-schedule before --sim-insert-interpolation}}
+sim.simulation @no_schedule range(16) dt(1.0e-2 : f32) max_steps(2) attributes {strategy = #sim<strategy hip>} {
+  sim.buffer @X : f32 init {
+  ^bb0(%i: index):
+    %c = arith.constant 0.0 : f32
+    sim.yield %c : f32
+  }
+  sim.component @C writes(@X) evaluate {
+  ^bb0(%i: index, %t: i64, %n: i32, %dt: f32):
+    %x = sim.read @X[%i] own : f32
+    sim.yield %x : f32
+  }
+  sim.observe [@X]
+}
+
+// -----
+
+sim.simulation @no_role range(16) dt(1.0e-2 : f32) max_steps(2) attributes {strategy = #sim<strategy hip>} {
+  sim.buffer @X : f32 init {
+  ^bb0(%i: index):
+    %c = arith.constant 0.0 : f32
+    sim.yield %c : f32
+  }
+  sim.component @C writes(@X) evaluate {
+  ^bb0(%i: index, %t: i64, %n: i32, %dt: f32):
+    // expected-error @+1 {{'sim.read' op has no read role; run --sim-schedule before --sim-insert-interpolation}}
+    %x = sim.read @X[%i] : f32
+    sim.yield %x : f32
+  }
+  sim.schedule [@C]
+  sim.observe [@X]
+}
+
+// -----
+
+// @V, the derivative of @X's Hermite interpolation, is written by @Reader
+// itself: its value at the end of the big step does not exist yet.
+
+sim.simulation @derivative_too_late range(16) dt(1.0e-2 : f32) max_steps(2) attributes {strategy = #sim<strategy hip>} {
+  sim.buffer @X : f32 interp(#sim.hermite<@V>) init {
+  ^bb0(%i: index):
+    %c = arith.constant 0.0 : f32
+    sim.yield %c : f32
+  }
+  sim.buffer @V : f32 init {
+  ^bb0(%i: index):
+    %c = arith.constant 0.0 : f32
+    sim.yield %c : f32
+  }
+  sim.component @Writer writes(@X) evaluate {
+  ^bb0(%i: index, %t: i64, %n: i32, %dt: f32):
+    %x = sim.read @X[%i] own : f32
+    sim.yield %x : f32
+  }
+  sim.component @Reader writes(@V) evaluate {
+  ^bb0(%i: index, %t: i64, %n: i32, %dt: f32):
+    // expected-error @+1 {{'sim.read' op interpolates @X with #sim.hermite<@V>, which needs @V at the end of the big step, but its writer @Reader does not run before @Reader in the step}}
+    %x = sim.read @X[%i] interpolate : f32
+    sim.yield %x : f32
+  }
+  sim.schedule [@Writer, @Reader]
+  sim.observe [@V]
+}

@@ -1,0 +1,244 @@
+// RUN: sim-opt %s --split-input-file --sim-schedule --sim-substep-legality --sim-plan-memory --sim-insert-interpolation 2>/dev/null | FileCheck %s --check-prefixes=CHECK,HIP
+// RUN: sim-opt %s --split-input-file --sim-schedule --sim-substep-legality --sim-plan-memory=strategy=simple --sim-insert-interpolation 2>/dev/null | FileCheck %s --check-prefixes=CHECK,ONE
+// RUN: sim-opt %s --split-input-file --sim-schedule --sim-substep-legality --sim-plan-memory=strategy=traditional --sim-insert-interpolation 2>/dev/null | FileCheck %s --check-prefixes=CHECK,ONE
+
+// Roles become loads of named copies: own -> local, back_edge -> source.
+// Under hip an interpolated read (here in a neighbour loop) becomes the value
+// at T (source: the writer keeps its state in registers), the value at T + m
+// (target), and linear interpolation at (t + n - T) / m. Under simple and
+// traditional it reads the target: the fraction is always 1.
+
+// CHECK-LABEL: sim.simulation @linear_f32
+// CHECK: sim.component @First
+// CHECK:   } evaluate {
+// CHECK-NEXT: ^bb0(%[[I0:.*]]: index,
+// CHECK-NOT: sim.big_step
+// CHECK:   sim.load local @A[%[[I0]]] : f32
+// CHECK:   sim.load source @B[%[[I0]]] : f32
+// CHECK: sim.component @Second
+// CHECK:   } evaluate {
+// CHECK-NEXT: ^bb0(%[[I:.*]]: index, %[[T:.*]]: i64, %[[N:.*]]: i32, %{{.*}}: f32):
+// HIP-NEXT:  %[[BEGIN:.*]], %[[SIZE:.*]] = sim.big_step : i64, i64
+// HIP-NEXT:  %[[N64:.*]] = arith.extsi %[[N]] : i32 to i64
+// HIP-NEXT:  %[[END:.*]] = arith.addi %[[T]], %[[N64]] : i64
+// HIP-NEXT:  %[[OFF:.*]] = arith.subi %[[END]], %[[BEGIN]] : i64
+// HIP-NEXT:  %[[OFFF:.*]] = arith.sitofp %[[OFF]] : i64 to f32
+// HIP-NEXT:  %[[SIZEF:.*]] = arith.sitofp %[[SIZE]] : i64 to f32
+// HIP-NEXT:  %[[F:.*]] = arith.divf %[[OFFF]], %[[SIZEF]] : f32
+// CHECK:     scf.for %[[K:[^ ]+]] =
+// CHECK-NEXT:  %[[J:.*]] = arith.addi %[[I]], %[[K]] : index
+// HIP-NEXT:    %[[A0:.*]] = sim.load source @A[%[[J]]] : f32
+// HIP-NEXT:    %[[A1:.*]] = sim.load target @A[%[[J]]] : f32
+// HIP-NEXT:    %[[C1:.*]] = arith.constant 1.000000e+00 : f32
+// HIP-NEXT:    %[[W0:.*]] = arith.subf %[[C1]], %[[F]] : f32
+// HIP-NEXT:    %[[P0:.*]] = arith.mulf %[[W0]], %[[A0]] : f32
+// HIP-NEXT:    %[[P1:.*]] = arith.mulf %[[F]], %[[A1]] : f32
+// HIP-NEXT:    %{{.*}} = arith.addf %[[P0]], %[[P1]] : f32
+// ONE-NEXT:    %{{.*}} = sim.load target @A[%[[J]]] : f32
+// CHECK:     sim.load local @C[%[[I]]] : f32
+// CHECK-NOT: sim.read
+sim.simulation @linear_f32 range(64) dt(1.0e-2 : f32) max_steps(3) {
+  sim.buffer @A : f32 init {
+  ^bb0(%i: index):
+    %c = arith.constant 0.0 : f32
+    sim.yield %c : f32
+  }
+  sim.buffer @B : f32 init {
+  ^bb0(%i: index):
+    %c = arith.constant 0.0 : f32
+    sim.yield %c : f32
+  }
+  sim.buffer @C : f32 init {
+  ^bb0(%i: index):
+    %c = arith.constant 0.0 : f32
+    sim.yield %c : f32
+  }
+  sim.component @First writes(@A) num_steps {
+  ^bb0(%i: index, %t: i64):
+    %c2 = arith.constant 2 : i32
+    sim.yield %c2 : i32
+  } evaluate {
+  ^bb0(%i: index, %t: i64, %n: i32, %dt: f32):
+    %a = sim.read @A[%i] : f32
+    %b = sim.read @B[%i] : f32
+    %s = arith.addf %a, %b : f32
+    sim.yield %s : f32
+  }
+  sim.component @Second writes(@C) evaluate {
+  ^bb0(%i: index, %t: i64, %n: i32, %dt: f32):
+    %lo = arith.constant -1 : index
+    %hi = arith.constant 2 : index
+    %one = arith.constant 1 : index
+    %zero = arith.constant 0.0 : f32
+    %sum = scf.for %k = %lo to %hi step %one iter_args(%acc = %zero) -> f32 {
+      %j = arith.addi %i, %k : index
+      %a = sim.read @A[%j] : f32
+      %next = arith.addf %acc, %a : f32
+      scf.yield %next : f32
+    }
+    %c = sim.read @C[%i] : f32
+    %r = arith.addf %sum, %c : f32
+    sim.yield %r : f32
+  }
+  sim.component @Third writes(@B) evaluate {
+  ^bb0(%i: index, %t: i64, %n: i32, %dt: f32):
+    %c = sim.read @C[%i] : f32
+    sim.yield %c : f32
+  }
+  sim.schedule [@First]
+  sim.observe [@B]
+}
+
+// -----
+
+// In num_steps an interpolated read is at the start t of the sub-step: the
+// fraction has no n. Under simple and traditional estimates read the source.
+
+// CHECK-LABEL: sim.simulation @num_steps_fraction
+// CHECK: sim.component @Late
+// CHECK-SAME: num_steps {
+// CHECK-NEXT: ^bb0(%{{.*}}: index, %[[T:.*]]: i64):
+// HIP-NEXT:  %[[BEGIN:.*]], %[[SIZE:.*]] = sim.big_step : i64, i64
+// HIP-NEXT:  %[[OFF:.*]] = arith.subi %[[T]], %[[BEGIN]] : i64
+// HIP:       sim.load source @E[
+// HIP-NEXT:  sim.load target @E[
+// ONE-NEXT:  sim.load source @E[
+// ONE-NOT:   sim.load target
+// CHECK:     } evaluate {
+sim.simulation @num_steps_fraction range(64) dt(1.0e-2 : f32) max_steps(3) {
+  sim.buffer @E : f32 init {
+  ^bb0(%i: index):
+    %c = arith.constant 0.0 : f32
+    sim.yield %c : f32
+  }
+  sim.buffer @L : f32 init {
+  ^bb0(%i: index):
+    %c = arith.constant 0.0 : f32
+    sim.yield %c : f32
+  }
+  sim.component @Early writes(@E) evaluate {
+  ^bb0(%i: index, %t: i64, %n: i32, %dt: f32):
+    %e = sim.read @E[%i] : f32
+    sim.yield %e : f32
+  }
+  sim.component @Late writes(@L) num_steps {
+  ^bb0(%i: index, %t: i64):
+    %e = sim.read @E[%i] : f32
+    %n = arith.fptosi %e : f32 to i32
+    sim.yield %n : i32
+  } evaluate {
+  ^bb0(%i: index, %t: i64, %n: i32, %dt: f32):
+    %l = sim.read @L[%i] : f32
+    sim.yield %l : f32
+  }
+  sim.observe [@L]
+}
+
+// -----
+
+// Hermite interpolation of @X with derivative @V. Their writer reads its own
+// neighbours (grid_sync), so under hip both have snapshots: the values at T
+// come from them. The span of the big step (m * dt, dt converted to the
+// element type) scales the derivatives.
+
+// CHECK-LABEL: sim.simulation @hermite_f64
+// CHECK: sim.component @Observe
+// CHECK:   } evaluate {
+// CHECK-NEXT: ^bb0(%[[I:.*]]: index,
+// HIP-NEXT:  %[[BEGIN:.*]], %[[SIZE:.*]] = sim.big_step : i64, i64
+// HIP:       %[[F:.*]] = arith.divf %{{.*}}, %{{.*}} : f64
+// HIP-NEXT:  %[[SIZEF:.*]] = arith.sitofp %[[SIZE]] : i64 to f64
+// HIP-NEXT:  %[[DT:.*]] = arith.constant 2.500000e-01 : f64
+// HIP-NEXT:  %[[SPAN:.*]] = arith.mulf %[[SIZEF]], %[[DT]] : f64
+// HIP-NEXT:  %[[X0:.*]] = sim.load snapshot @X[%[[I]]] : f64
+// HIP-NEXT:  %[[X1:.*]] = sim.load target @X[%[[I]]] : f64
+// HIP-NEXT:  %[[V0:.*]] = sim.load snapshot @V[%[[I]]] : f64
+// HIP-NEXT:  %[[V1:.*]] = sim.load target @V[%[[I]]] : f64
+// HIP:       arith.mulf %{{.*}}, %[[SPAN]] : f64
+// HIP:       arith.mulf %{{.*}}, %[[V0]] : f64
+// HIP:       arith.mulf %{{.*}}, %[[X1]] : f64
+// HIP:       arith.mulf %{{.*}}, %[[V1]] : f64
+// ONE-NEXT:  sim.load target @X[%[[I]]] : f64
+// ONE-NOT:   sim.load {{.*}} @V
+// CHECK:     sim.yield
+sim.simulation @hermite_f64 range(64) dt(2.5e-1 : f32) max_steps(3) {
+  sim.buffer @X : f64 interp(#sim.hermite<@V>) init {
+  ^bb0(%i: index):
+    %c = arith.constant 0.0 : f64
+    sim.yield %c : f64
+  }
+  sim.buffer @V : f64 init {
+  ^bb0(%i: index):
+    %c = arith.constant 1.0 : f64
+    sim.yield %c : f64
+  }
+  sim.buffer @O : f64 init {
+  ^bb0(%i: index):
+    %c = arith.constant 0.0 : f64
+    sim.yield %c : f64
+  }
+  sim.component @Move writes(@X, @V) evaluate {
+  ^bb0(%i: index, %t: i64, %n: i32, %dt: f32):
+    %c1 = arith.constant 1 : index
+    %j = arith.addi %i, %c1 : index
+    %x = sim.read @X[%i] : f64
+    %xr = sim.read @X[%j] : f64
+    %v = sim.read @V[%i] : f64
+    %x1 = arith.addf %x, %v : f64
+    sim.yield %x1, %xr : f64, f64
+  }
+  sim.component @Observe writes(@O) evaluate {
+  ^bb0(%i: index, %t: i64, %n: i32, %dt: f32):
+    %x = sim.read @X[%i] : f64
+    sim.yield %x : f64
+  }
+  sim.observe [@O]
+}
+
+// -----
+
+// The paper's cubic on vector elements: the scalar weights are splatted.
+
+// CHECK-LABEL: sim.simulation @cubic_vector
+// CHECK: sim.component @Reader
+// HIP:   %[[F:.*]] = arith.divf
+// HIP:   %[[P:.*]] = sim.load source @P[
+// HIP:   %[[Q:.*]] = sim.load target @P[
+// HIP:   %[[TWO:.*]] = arith.constant 2.000000e+00 : f32
+// HIP:   %[[TWOF:.*]] = arith.mulf %[[TWO]], %[[F]] : f32
+// HIP:   %[[FF:.*]] = arith.mulf %[[F]], %[[F]] : f32
+// HIP:   %[[THREE:.*]] = arith.constant 3.000000e+00 : f32
+// HIP:   %[[D:.*]] = arith.subf %[[THREE]], %[[TWOF]] : f32
+// HIP:   %[[S:.*]] = arith.mulf %[[FF]], %[[D]] : f32
+// HIP:   %[[W:.*]] = arith.subf %{{.*}}, %[[S]] : f32
+// HIP:   %[[WV:.*]] = vector.broadcast %[[W]] : f32 to vector<2xf32>
+// HIP:   %[[A:.*]] = arith.mulf %[[WV]], %[[P]] : vector<2xf32>
+// HIP:   %[[SV:.*]] = vector.broadcast %[[S]] : f32 to vector<2xf32>
+// HIP:   %[[B:.*]] = arith.mulf %[[SV]], %[[Q]] : vector<2xf32>
+// HIP:   %[[R:.*]] = arith.addf %[[A]], %[[B]] : vector<2xf32>
+// HIP:   sim.yield %[[R]] : vector<2xf32>
+// ONE:   %[[Q:.*]] = sim.load target @P[
+// ONE-NEXT: sim.yield %[[Q]] : vector<2xf32>
+sim.simulation @cubic_vector range(64) dt(1.0e-2 : f32) max_steps(3) {
+  sim.buffer @P : vector<2xf32> interp(#sim.cubic) init {
+  ^bb0(%i: index):
+    %c = arith.constant dense<0.0> : vector<2xf32>
+    sim.yield %c : vector<2xf32>
+  }
+  sim.buffer @R : vector<2xf32> init {
+  ^bb0(%i: index):
+    %c = arith.constant dense<0.0> : vector<2xf32>
+    sim.yield %c : vector<2xf32>
+  }
+  sim.component @Writer writes(@P) evaluate {
+  ^bb0(%i: index, %t: i64, %n: i32, %dt: f32):
+    %p = sim.read @P[%i] : vector<2xf32>
+    sim.yield %p : vector<2xf32>
+  }
+  sim.component @Reader writes(@R) evaluate {
+  ^bb0(%i: index, %t: i64, %n: i32, %dt: f32):
+    %p = sim.read @P[%i] : vector<2xf32>
+    sim.yield %p : vector<2xf32>
+  }
+  sim.observe [@R]
+}
