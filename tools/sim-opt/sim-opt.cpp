@@ -8,6 +8,7 @@
 
 #include "sim/Dialect/Sim/IR/SimDialect.h"
 #include "sim/Dialect/Sim/Transforms/Passes.h"
+#include "sim/Pipelines/Pipelines.h"
 
 #include "mlir/Dialect/Arith/IR/Arith.h"
 #include "mlir/Dialect/Math/IR/Math.h"
@@ -24,6 +25,7 @@ int main(int argc, char **argv) {
                   mlir::vector::VectorDialect>();
 
   mlir::sim::registerSimPasses();
+  mlir::sim::registerSimPipelines();
   // Upstream passes that are useful on scenes.
   mlir::registerCanonicalizerPass();
   mlir::registerCSEPass();

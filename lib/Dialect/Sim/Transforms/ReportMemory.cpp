@@ -138,7 +138,7 @@ struct ReportMemoryPass
     if (groupSize < 1) {
       getOperation()->emitError()
           << "--sim-report-memory needs a positive group-size, but got "
-          << groupSize;
+          << static_cast<int64_t>(groupSize);
       return signalPassFailure();
     }
     llvm::json::Array reports;

@@ -1,0 +1,46 @@
+//===- Pipelines.h - sim pass pipelines -------------------------*- C++ -*-===//
+//
+// Declares the registered pass pipelines of the sim compiler.
+//
+//===----------------------------------------------------------------------===//
+
+#ifndef SIM_PIPELINES_PIPELINES_H
+#define SIM_PIPELINES_PIPELINES_H
+
+#include "sim/Dialect/Sim/IR/SimAttrs.h"
+
+#include "mlir/Pass/PassManager.h"
+#include "mlir/Pass/PassOptions.h"
+
+namespace mlir::sim {
+
+/// Options of the front-end pipeline.
+struct FrontEndOptions : public PassPipelineOptions<FrontEndOptions> {
+  PassOptions::Option<Strategy> strategy{
+      *this, "strategy", llvm::cl::desc("The strategy to compile for"),
+      llvm::cl::init(Strategy::hip),
+      llvm::cl::values(
+          clEnumValN(Strategy::simple, "simple", "one base step per big step"),
+          clEnumValN(Strategy::traditional, "traditional",
+                     "global minimum step, one evaluation per component"),
+          clEnumValN(Strategy::hip, "hip",
+                     "the paper's method: interpolated sub-steps"),
+          clEnumValN(Strategy::hip_cache, "hip-cache",
+                     "hip with shared-memory caches"))};
+  PassOptions::Option<bool> prune{
+      *this, "prune",
+      llvm::cl::desc("Remove what no observed buffer depends on"),
+      llvm::cl::init(true)};
+};
+
+/// Adds the front end to `pm` (which runs on the module): prune, schedule,
+/// sub-step legality, memory plan and interpolation insertion, nested on
+/// every sim.simulation.
+void buildFrontEndPipeline(OpPassManager &pm, const FrontEndOptions &options);
+
+/// Registers `--sim-front-end`.
+void registerSimPipelines();
+
+} // namespace mlir::sim
+
+#endif // SIM_PIPELINES_PIPELINES_H
