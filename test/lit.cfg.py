@@ -27,6 +27,7 @@ tools = [
 llvm_config.add_tool_substitutions(tools, tool_dirs)
 
 config.substitutions.append(("%sim_src_root", config.sim_src_root))
+config.substitutions.append(("%sim_obj_root", config.sim_obj_root))
 config.substitutions.append(("%examples", os.path.join(config.sim_src_root,
                                                         "examples")))
 

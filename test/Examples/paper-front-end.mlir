@@ -84,14 +84,15 @@
 // GRAVITY-MEM-NEXT: planned device memory                           6291456 (6.00 MiB)
 // GRAVITY-MEM-NEXT: naive plan (3 copies of every buffer)           9437184 (9.00 MiB)
 
-// Under hip-cache every component that interpolates caches the buffers it
-// reads through windows: one vec4 per thread of a 256-thread group each.
+// Under hip-cache every component caches the buffers it interpolates through
+// windows: one vec4 per thread of a 256-thread group each. @C2 reads @B0 only
+// at its own item, which is not worth a cache.
 // PBD-MEM:      memory plan of @pbd_like (strategy hip_cache, 65536 items)
 // PBD-MEM:      planned device memory                          14680064 (14.00 MiB)
 // PBD-MEM-NEXT: naive plan (3 copies of every buffer)          22020096 (21.00 MiB)
 // PBD-MEM:      shared-memory caches (256 threads per group):
 // PBD-MEM-NEXT:   @C1                4096 bytes per group
-// PBD-MEM-NEXT:   @C2                8192 bytes per group
+// PBD-MEM-NEXT:   @C2                4096 bytes per group
 // PBD-MEM-NEXT:   @C3                4096 bytes per group
 // PBD-MEM-NEXT:   @C4                4096 bytes per group
 // PBD-MEM-NEXT:   @C5                8192 bytes per group

@@ -70,8 +70,12 @@ struct PlanMemoryPass : public sim::impl::SimPlanMemoryBase<PlanMemoryPass> {
           if (*analysis.getWriter(buffer).getSubStepping() ==
               SubStepping::grid_sync)
             snapshots.insert(buffer);
-        // hip-cache caches what a thread group reads near its own items.
-        if (strategy == Strategy::hip_cache && !access.pattern.isGather() &&
+        // hip-cache caches interpolated values that neighbouring threads of a
+        // group share: window reads. A value read only at the own item has
+        // no reuse (the fraction changes every sub-step), and a gather has
+        // no locality.
+        if (strategy == Strategy::hip_cache &&
+            access.pattern.getKind() == AccessPattern::Kind::Window &&
             !llvm::is_contained(caches, access.buffer.getSymNameAttr()))
           caches.push_back(FlatSymbolRefAttr::get(access.buffer.getSymNameAttr()));
       }

@@ -13,7 +13,7 @@
 // CHECK: sim.component @Source writes(@S, @G) attributes {parity = #sim<parity none>
 // HIP: sim.component @Reader writes(@R) attributes {parity = #sim<parity none>, sub_stepping
 // SIMPLE: sim.component @Reader writes(@R) attributes {parity = #sim<parity none>, sub_stepping
-// The window and the own-item read are cached; the gather is not.
+// @S, read at i..i+1 (a window), is cached; the gather of @G is not.
 // CACHE: sim.component @Reader writes(@R) attributes {caches = [@S], parity = #sim<parity none>
 // CHECK-NOT: snapshot
 sim.simulation @no_snapshot range(1024) dt(1.0e-2 : f32) max_steps(4) {

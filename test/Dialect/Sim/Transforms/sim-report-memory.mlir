@@ -15,7 +15,8 @@
 // HIP-NEXT:  saved                                             1600 (16.7%)
 // HIP-NEXT:  shared-memory caches: none
 
-// Under hip-cache @Sample caches @U: 128 threads * 8 bytes.
+// Under hip-cache @Sample caches @U, which it reads at i..i+1: 128 threads
+// * 8 bytes.
 // JSON:      "caches": [
 // JSON-NEXT:   {
 // JSON-NEXT:     "bytes_per_group": 1024,
@@ -57,7 +58,11 @@ sim.simulation @needs_snapshot range(100) dt(1.0e-2 : f32) max_steps(4) {
   }
   sim.component @Sample writes(@W) evaluate {
   ^bb0(%i: index, %t: i64, %n: i32, %dt: f32):
-    %u = sim.read @U[%i] : f64
+    %c1 = arith.constant 1 : index
+    %r = arith.addi %i, %c1 : index
+    %u0 = sim.read @U[%i] : f64
+    %u1 = sim.read @U[%r] : f64
+    %u = arith.addf %u0, %u1 : f64
     %f = arith.truncf %u : f64 to f32
     %v = vector.broadcast %f : f32 to vector<4xf32>
     %w = sim.read @W[%i] : vector<4xf32>

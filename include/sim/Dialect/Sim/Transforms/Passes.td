@@ -140,6 +140,8 @@ def SimPlanMemory : Pass<"sim-plan-memory", "::mlir::sim::SimulationOp"> {
     a `grid_sync` component ping-pongs through memory: it gets
     `copy_if_even`, and its buffers get a snapshot when a later component
     interpolates them (or needs them as an interpolation's auxiliary buffer).
+    Under `hip-cache`, `caches` lists the buffers a component interpolates
+    through a window (neighbouring threads share those values).
 
     Needs the roles of `--sim-schedule` and the verdicts of
     `--sim-substep-legality`.
@@ -201,7 +203,8 @@ def SimReportMemory : Pass<"sim-report-memory"> {
 
     Caches follow the paper's design (Section 4.1): one interpolated element
     per thread of a group for every buffer a component interpolates through a
-    window (gathers are not cached).
+    window. Reads of the own item only (no other thread reuses the value) and
+    gathers (no locality) are not cached.
   }];
   let options = [
     Option<"format", "format", "::mlir::sim::ReportFormat",

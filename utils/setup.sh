@@ -1,0 +1,44 @@
+#!/usr/bin/env bash
+# Sets up sim on Debian 12 (run as root): installs the toolchain and the test
+# tools from Debian's packages when they are missing, then configures and
+# builds everything in build/ (the compiler, the tools and the unit tests).
+#
+# Usage: utils/setup.sh [--help]
+#   SIM_BUILD_DIR   build directory (default: build)
+#   SIM_BUILD_TYPE  CMake build type (default: Release)
+set -euo pipefail
+
+if [[ "${1:-}" == "--help" || "${1:-}" == "-h" ]]; then
+  sed -n '2,8p' "$0" | sed 's/^# \{0,1\}//'
+  exit 0
+fi
+
+cd "$(dirname "$0")/.."
+build_dir="${SIM_BUILD_DIR:-build}"
+build_type="${SIM_BUILD_TYPE:-Release}"
+
+# MLIR/LLVM 22 (headers, CMake package, mlir-tblgen, FileCheck, lit), the
+# compiler and linker, the build tools, GoogleTest, Python for lit and the
+# scene generator, and Graphviz to render dependency graphs in tests.
+packages=(
+  libmlir-22-dev mlir-22-tools llvm-22-dev llvm-22-tools clang-22 lld-22
+  cmake ninja-build libgtest-dev python3 graphviz
+)
+missing=()
+for package in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$package" 2>/dev/null | grep -q "ok installed" \
+    || missing+=("$package")
+done
+if ((${#missing[@]})); then
+  echo "setup: installing ${missing[*]}"
+  export DEBIAN_FRONTEND=noninteractive
+  apt-get update -q
+  apt-get install -y -q --no-install-recommends "${missing[@]}"
+fi
+
+cmake -G Ninja -S . -B "$build_dir" \
+  -DCMAKE_BUILD_TYPE="$build_type" \
+  -DCMAKE_C_COMPILER=clang-22 -DCMAKE_CXX_COMPILER=clang++-22 \
+  -DLLVM_USE_LINKER=lld \
+  -DMLIR_DIR=/usr/lib/llvm-22/lib/cmake/mlir
+cmake --build "$build_dir"
