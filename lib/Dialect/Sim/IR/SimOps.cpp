@@ -92,7 +92,10 @@ static YieldOp verifyBodySignature(Operation *op, Region &region,
                       << ")";
     return nullptr;
   }
-  auto yield = dyn_cast<YieldOp>(block.getTerminator());
+  // The body may not end in a terminator at all (an empty block, or one whose
+  // last operation is not a terminator): the generic block checks run only
+  // after this verifier, so Block::getTerminator() cannot be used here.
+  auto yield = block.empty() ? nullptr : dyn_cast<YieldOp>(block.back());
   if (!yield) {
     op->emitOpError() << "expects the " << bodyName
                       << " body to end in 'sim.yield'";
