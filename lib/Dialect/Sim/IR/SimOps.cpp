@@ -203,12 +203,15 @@ ObserveOp SimulationOp::getObserveOp() {
 }
 
 LogicalResult SimulationOp::verify() {
-  if (getRange() <= 0)
-    return emitOpError() << "expects a positive item range, but got "
-                         << getRange();
-  if (getMaxSteps() < 1)
+  // The generated getRange() and getMaxSteps() return unsigned values, which
+  // would let range(-5) and max_steps(-3) through; compare as signed.
+  int64_t range = getRangeAttr().getInt();
+  if (range <= 0)
+    return emitOpError() << "expects a positive item range, but got " << range;
+  int64_t maxSteps = getMaxStepsAttr().getInt();
+  if (maxSteps < 1)
     return emitOpError() << "expects max_steps to be at least 1, but got "
-                         << getMaxSteps();
+                         << maxSteps;
   double dt = getTimeStep();
   if (!(dt > 0.0) || !std::isfinite(dt))
     return emitOpError() << "expects a positive, finite base time step dt, "
