@@ -166,10 +166,13 @@ static ParseResult parseBoundaryClause(OpAsmParser &parser,
                                        BoundaryAttr &boundary) {
   if (failed(parser.parseOptionalKeyword("boundary")))
     return success();
+  if (parser.parseLParen())
+    return failure();
   StringRef keyword;
   SMLoc loc = parser.getCurrentLocation();
-  if (parser.parseLParen() || parser.parseKeyword(&keyword))
-    return failure();
+  if (failed(parser.parseOptionalKeyword(&keyword)))
+    return parser.emitError(loc)
+           << "expected a boundary rule (clamp, wrap or zero)";
   std::optional<Boundary> value = symbolizeBoundary(keyword);
   if (!value)
     return parser.emitError(loc)
