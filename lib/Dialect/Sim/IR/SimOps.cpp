@@ -206,6 +206,14 @@ ObserveOp SimulationOp::getObserveOp() {
 }
 
 LogicalResult SimulationOp::verify() {
+  // A simulation nested in a body (through an op that opens a symbol table)
+  // would be walked as part of the outer one by every analysis.
+  if (auto outer = (*this)->getParentOfType<SimulationOp>()) {
+    InFlightDiagnostic diag =
+        emitOpError() << "cannot be nested inside another simulation";
+    diag.attachNote(outer.getLoc()) << "the enclosing simulation is here";
+    return diag;
+  }
   // The generated getRange() and getMaxSteps() return unsigned values, which
   // would let range(-5) and max_steps(-3) through; compare as signed.
   int64_t range = getRangeAttr().getInt();
