@@ -12,6 +12,7 @@
 
 #include "mlir/IR/Builders.h"
 #include "llvm/ADT/StringExtras.h"
+#include "llvm/Support/Error.h"
 
 namespace mlir::sim {
 #define GEN_PASS_DEF_SIMSETPARAMS
@@ -68,10 +69,21 @@ static FailureOr<TypedAttr> parseScalar(Builder &builder, StringRef text,
     return TypedAttr(builder.getIntegerAttr(type, value.sextOrTrunc(width)));
   }
   if (auto floatType = dyn_cast<FloatType>(type)) {
-    double value;
-    if (text.getAsDouble(value))
+    // Convert in the parameter's own semantics: a finite value that overflows
+    // to infinity or a non-zero one that underflows to zero is out of range.
+    APFloat value(floatType.getFloatSemantics());
+    llvm::Expected<APFloat::opStatus> status =
+        value.convertFromString(text, APFloat::rmNearestTiesToEven);
+    if (!status) {
+      llvm::consumeError(status.takeError());
       return failure();
-    return TypedAttr(builder.getFloatAttr(floatType, value));
+    }
+    if ((*status & APFloat::opOverflow) ||
+        ((*status & APFloat::opUnderflow) && value.isZero())) {
+      error = ScalarError::OutOfRange;
+      return failure();
+    }
+    return TypedAttr(FloatAttr::get(floatType, value));
   }
   return failure();
 }
