@@ -349,6 +349,12 @@ LogicalResult SimulationOp::verifyRegions() {
 //===----------------------------------------------------------------------===//
 
 LogicalResult ParamOp::verify() {
+  // --sim-set-params reads these names as the simulation's own attributes, so
+  // a parameter with one of them could never be overridden.
+  if (llvm::is_contained({"range", "dt", "max_steps"}, getSymName()))
+    return emitOpError() << "cannot be named '" << getSymName()
+                         << "': range, dt and max_steps name the "
+                            "simulation's own attributes";
   Attribute value = getValue();
   bool isScalar = false;
   if (auto intAttr = dyn_cast<IntegerAttr>(value))
