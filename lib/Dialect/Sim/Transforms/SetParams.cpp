@@ -98,9 +98,9 @@ struct SetParamsPass : public sim::impl::SimSetParamsBase<SetParamsPass> {
       auto [name, text] = StringRef(entry).split('=');
       name = name.trim();
       if (name.empty() || !StringRef(entry).contains('=')) {
-        simulation.emitOpError() << "expects a parameter override of the form "
-                                    "name=value, but got '"
-                                 << entry << "'";
+        simulation.emitError() << "expects a parameter override of the form "
+                                  "name=value, but got '"
+                               << entry << "'";
         return signalPassFailure();
       }
       if (failed(apply(simulation, builder, name, text)))
@@ -151,7 +151,7 @@ struct SetParamsPass : public sim::impl::SimSetParamsBase<SetParamsPass> {
     auto param = dyn_cast_or_null<ParamOp>(
         SymbolTable::lookupSymbolIn(simulation, builder.getStringAttr(name)));
     if (!param) {
-      InFlightDiagnostic diag = simulation.emitOpError()
+      InFlightDiagnostic diag = simulation.emitError()
                                 << "has no parameter named '" << name
                                 << "'; it has range, dt, max_steps";
       for (ParamOp known : simulation.getParams())
