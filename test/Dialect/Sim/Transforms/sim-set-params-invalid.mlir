@@ -34,7 +34,7 @@
 // simulation and stops the pass.
 
 //--- no-equals.mlir
-// expected-error @+1 {{'sim.simulation' op expects a parameter override of the form name=value, but got 'L'}}
+// expected-error @+1 {{expects a parameter override of the form name=value, but got 'L'}}
 sim.simulation @s range(16) dt(1.0 : f32) max_steps(1) {
   sim.param @L = 4 : i32
   sim.param @k = 2.5 : f32
@@ -53,7 +53,7 @@ sim.simulation @s range(16) dt(1.0 : f32) max_steps(1) {
 }
 
 //--- no-name.mlir
-// expected-error @+1 {{'sim.simulation' op expects a parameter override of the form name=value, but got '=3'}}
+// expected-error @+1 {{expects a parameter override of the form name=value, but got '=3'}}
 sim.simulation @s range(16) dt(1.0 : f32) max_steps(1) {
   sim.param @L = 4 : i32
   sim.param @k = 2.5 : f32
@@ -72,7 +72,7 @@ sim.simulation @s range(16) dt(1.0 : f32) max_steps(1) {
 }
 
 //--- unknown-name.mlir
-// expected-error @+1 {{'sim.simulation' op has no parameter named 'Lx'; it has range, dt, max_steps, L, k, b, N}}
+// expected-error @+1 {{has no parameter named 'Lx'; it has range, dt, max_steps, L, k, b, N}}
 sim.simulation @s range(16) dt(1.0 : f32) max_steps(1) {
   sim.param @L = 4 : i32
   sim.param @k = 2.5 : f32
@@ -91,7 +91,7 @@ sim.simulation @s range(16) dt(1.0 : f32) max_steps(1) {
 }
 
 //--- unknown-name-buffer.mlir
-// expected-error @+1 {{'sim.simulation' op has no parameter named 'B'; it has range, dt, max_steps, L, k, b, N}}
+// expected-error @+1 {{has no parameter named 'B'; it has range, dt, max_steps, L, k, b, N}}
 sim.simulation @s range(16) dt(1.0 : f32) max_steps(1) {
   sim.param @L = 4 : i32
   sim.param @k = 2.5 : f32
@@ -110,12 +110,12 @@ sim.simulation @s range(16) dt(1.0 : f32) max_steps(1) {
 }
 
 //--- unknown-name-no-params.mlir
-// expected-error @+1 {{'sim.simulation' op has no parameter named 'L'; it has range, dt, max_steps}}
+// expected-error @+1 {{has no parameter named 'L'; it has range, dt, max_steps}}
 sim.simulation @s range(16) dt(1.0 : f64) max_steps(1) {
 }
 
 //--- unknown-after-valid.mlir
-// expected-error @+1 {{'sim.simulation' op has no parameter named 'steps'; it has range, dt, max_steps, L, k, b, N}}
+// expected-error @+1 {{has no parameter named 'steps'; it has range, dt, max_steps, L, k, b, N}}
 sim.simulation @s range(16) dt(1.0 : f32) max_steps(1) {
   sim.param @L = 4 : i32
   sim.param @k = 2.5 : f32
