@@ -137,7 +137,7 @@ sim.simulation @exact_and_init_reads range(16) dt(1.0e-2 : f64) max_steps(1) {
 // A component with a num_steps body writing two buffers, an f64 time step
 // and the analysis attributes in the attribute dictionary.
 // CHECK-LABEL: sim.simulation @component_num_steps
-// CHECK:         sim.component @Integrate writes(@X, @V) attributes {parity = #sim<parity registers>, sub_stepping = #sim<sub_stepping in_kernel>} num_steps {
+// CHECK:         sim.component @Integrate writes(@X, @V) attributes {parity = #sim<parity copy_if_even>, sub_stepping = #sim<sub_stepping in_kernel>} num_steps {
 // CHECK-NEXT:    ^bb0(%[[I:.*]]: index, %[[T:.*]]: i64):
 // CHECK-NEXT:      %[[C2:.*]] = arith.constant 2 : i32
 // CHECK-NEXT:      sim.yield %[[C2]] : i32
@@ -162,7 +162,7 @@ sim.simulation @component_num_steps range(16) dt(1.0e-2 : f64) max_steps(4) {
     %c = arith.constant 1.0 : f64
     sim.yield %c : f64
   }
-  sim.component @Integrate writes(@X, @V) attributes {sub_stepping = #sim<sub_stepping in_kernel>, parity = #sim<parity registers>} num_steps {
+  sim.component @Integrate writes(@X, @V) attributes {sub_stepping = #sim<sub_stepping in_kernel>, parity = #sim<parity copy_if_even>} num_steps {
   ^bb0(%i: index, %t: i64):
     %c2 = arith.constant 2 : i32
     sim.yield %c2 : i32
