@@ -92,7 +92,10 @@ static YieldOp verifyBodySignature(Operation *op, Region &region,
                       << ")";
     return nullptr;
   }
-  auto yield = dyn_cast<YieldOp>(block.getTerminator());
+  // The body may not end in a terminator at all (an empty block, or one whose
+  // last operation is not a terminator): the generic block checks run only
+  // after this verifier, so Block::getTerminator() cannot be used here.
+  auto yield = block.empty() ? nullptr : dyn_cast<YieldOp>(block.back());
   if (!yield) {
     op->emitOpError() << "expects the " << bodyName
                       << " body to end in 'sim.yield'";
@@ -163,10 +166,13 @@ static ParseResult parseBoundaryClause(OpAsmParser &parser,
                                        BoundaryAttr &boundary) {
   if (failed(parser.parseOptionalKeyword("boundary")))
     return success();
+  if (parser.parseLParen())
+    return failure();
   StringRef keyword;
   SMLoc loc = parser.getCurrentLocation();
-  if (parser.parseLParen() || parser.parseKeyword(&keyword))
-    return failure();
+  if (failed(parser.parseOptionalKeyword(&keyword)))
+    return parser.emitError(loc)
+           << "expected a boundary rule (clamp, wrap or zero)";
   std::optional<Boundary> value = symbolizeBoundary(keyword);
   if (!value)
     return parser.emitError(loc)
@@ -200,12 +206,23 @@ ObserveOp SimulationOp::getObserveOp() {
 }
 
 LogicalResult SimulationOp::verify() {
-  if (getRange() <= 0)
-    return emitOpError() << "expects a positive item range, but got "
-                         << getRange();
-  if (getMaxSteps() < 1)
+  // A simulation nested in a body (through an op that opens a symbol table)
+  // would be walked as part of the outer one by every analysis.
+  if (auto outer = (*this)->getParentOfType<SimulationOp>()) {
+    InFlightDiagnostic diag =
+        emitOpError() << "cannot be nested inside another simulation";
+    diag.attachNote(outer.getLoc()) << "the enclosing simulation is here";
+    return diag;
+  }
+  // The generated getRange() and getMaxSteps() return unsigned values, which
+  // would let range(-5) and max_steps(-3) through; compare as signed.
+  int64_t range = getRangeAttr().getInt();
+  if (range <= 0)
+    return emitOpError() << "expects a positive item range, but got " << range;
+  int64_t maxSteps = getMaxStepsAttr().getInt();
+  if (maxSteps < 1)
     return emitOpError() << "expects max_steps to be at least 1, but got "
-                         << getMaxSteps();
+                         << maxSteps;
   double dt = getTimeStep();
   if (!(dt > 0.0) || !std::isfinite(dt))
     return emitOpError() << "expects a positive, finite base time step dt, "
@@ -332,6 +349,12 @@ LogicalResult SimulationOp::verifyRegions() {
 //===----------------------------------------------------------------------===//
 
 LogicalResult ParamOp::verify() {
+  // --sim-set-params reads these names as the simulation's own attributes, so
+  // a parameter with one of them could never be overridden.
+  if (llvm::is_contained({"range", "dt", "max_steps"}, getSymName()))
+    return emitOpError() << "cannot be named '" << getSymName()
+                         << "': range, dt and max_steps name the "
+                            "simulation's own attributes";
   Attribute value = getValue();
   bool isScalar = false;
   if (auto intAttr = dyn_cast<IntegerAttr>(value))

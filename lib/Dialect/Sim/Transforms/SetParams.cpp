@@ -12,6 +12,7 @@
 
 #include "mlir/IR/Builders.h"
 #include "llvm/ADT/StringExtras.h"
+#include "llvm/Support/Error.h"
 
 namespace mlir::sim {
 #define GEN_PASS_DEF_SIMSETPARAMS
@@ -23,28 +24,66 @@ using namespace mlir::sim;
 
 namespace {
 
+/// Why a value could not be parsed.
+enum class ScalarError {
+  /// The text is not a number of the expected kind.
+  Invalid,
+  /// The text is a number, but the type cannot hold it.
+  OutOfRange,
+};
+
 /// Parses `text` as a constant of `type` (a signless integer, index or float).
+/// Integers are written as in MLIR literals: decimal or `0x` hexadecimal,
+/// optionally negative. A value that does not fit is an error, never silently
+/// truncated: a non-negative integer may use the full unsigned range of the
+/// width unless `isSigned` is set.
 static FailureOr<TypedAttr> parseScalar(Builder &builder, StringRef text,
-                                        Type type) {
+                                        Type type, ScalarError &error,
+                                        bool isSigned = false) {
+  error = ScalarError::Invalid;
   text = text.trim();
   if (isa<IntegerType, IndexType>(type)) {
     unsigned width =
         type.isIndex() ? IndexType::kInternalStorageBitWidth
                        : cast<IntegerType>(type).getWidth();
-    APInt value;
-    if (text.getAsInteger(/*Radix=*/0, value))
+    StringRef digits = text;
+    bool negative = digits.consume_front("-");
+    unsigned radix = 10;
+    if (digits.consume_front("0x") || digits.consume_front("0X"))
+      radix = 16;
+    // StringRef::getAsInteger accepts neither a sign nor an empty string here,
+    // and with an explicit radix it does not read a leading 0 as octal.
+    APInt magnitude;
+    if (digits.empty() || digits.getAsInteger(radix, magnitude))
       return failure();
-    // Accept the value only when it fits the parameter's width (as a signed or
-    // an unsigned number), never by silent truncation.
-    if (value.getActiveBits() > width && value.getSignificantBits() > width)
+    // One more bit, so that the magnitude is never read as negative.
+    APInt value = magnitude.zext(magnitude.getBitWidth() + 1);
+    if (negative)
+      value.negate();
+    bool fits = negative || isSigned ? value.getSignificantBits() <= width
+                                     : value.getActiveBits() <= width;
+    if (!fits) {
+      error = ScalarError::OutOfRange;
       return failure();
+    }
     return TypedAttr(builder.getIntegerAttr(type, value.sextOrTrunc(width)));
   }
   if (auto floatType = dyn_cast<FloatType>(type)) {
-    double value;
-    if (text.getAsDouble(value))
+    // Convert in the parameter's own semantics: a finite value that overflows
+    // to infinity or a non-zero one that underflows to zero is out of range.
+    APFloat value(floatType.getFloatSemantics());
+    llvm::Expected<APFloat::opStatus> status =
+        value.convertFromString(text, APFloat::rmNearestTiesToEven);
+    if (!status) {
+      llvm::consumeError(status.takeError());
       return failure();
-    return TypedAttr(builder.getFloatAttr(floatType, value));
+    }
+    if ((*status & APFloat::opOverflow) ||
+        ((*status & APFloat::opUnderflow) && value.isZero())) {
+      error = ScalarError::OutOfRange;
+      return failure();
+    }
+    return TypedAttr(FloatAttr::get(floatType, value));
   }
   return failure();
 }
@@ -71,14 +110,18 @@ struct SetParamsPass : public sim::impl::SimSetParamsBase<SetParamsPass> {
 
   LogicalResult apply(SimulationOp simulation, Builder &builder,
                       StringRef name, StringRef text) {
+    ScalarError error;
     auto invalid = [&](Type type) {
       return simulation.emitError()
              << "cannot set parameter '" << name << "': '" << text.trim()
-             << "' is not a valid " << type;
+             << (error == ScalarError::OutOfRange ? "' is out of range for "
+                                                  : "' is not a valid ")
+             << type;
     };
     if (name == "range" || name == "max_steps") {
       Type type = name == "range" ? builder.getI64Type() : builder.getI32Type();
-      FailureOr<TypedAttr> value = parseScalar(builder, text, type);
+      FailureOr<TypedAttr> value =
+          parseScalar(builder, text, type, error, /*isSigned=*/true);
       if (failed(value))
         return invalid(type);
       auto intValue = cast<IntegerAttr>(*value);
@@ -94,7 +137,7 @@ struct SetParamsPass : public sim::impl::SimSetParamsBase<SetParamsPass> {
     }
     if (name == "dt") {
       Type type = simulation.getTimeStepType();
-      FailureOr<TypedAttr> value = parseScalar(builder, text, type);
+      FailureOr<TypedAttr> value = parseScalar(builder, text, type, error);
       if (failed(value))
         return invalid(type);
       double dt = cast<FloatAttr>(*value).getValueAsDouble();
@@ -116,7 +159,7 @@ struct SetParamsPass : public sim::impl::SimSetParamsBase<SetParamsPass> {
       return diag;
     }
     Type type = cast<TypedAttr>(param.getValue()).getType();
-    FailureOr<TypedAttr> value = parseScalar(builder, text, type);
+    FailureOr<TypedAttr> value = parseScalar(builder, text, type, error);
     if (failed(value))
       return invalid(type);
     param.setValueAttr(*value);

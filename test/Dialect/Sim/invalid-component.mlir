@@ -1,0 +1,381 @@
+// RUN: sim-opt %s --split-input-file --verify-diagnostics
+
+// Errors of sim.component: the writes list, the num_steps and evaluate body
+// signatures and yields, and the one-writer rule.
+
+sim.simulation @s range(16) dt(1.0 : f32) max_steps(1) {
+  sim.buffer @B : f32 init {
+  ^bb0(%i: index):
+    %c = arith.constant 0.0 : f32
+    sim.yield %c : f32
+  }
+  // expected-error @+1 {{'sim.component' op expects to write at least one buffer}}
+  sim.component @C writes() evaluate {
+  ^bb0(%i: index, %t: i64, %n: i32, %dt: f32):
+    sim.yield
+  }
+}
+
+// -----
+
+sim.simulation @s range(16) dt(1.0 : f32) max_steps(1) {
+  sim.buffer @B : f32 init {
+  ^bb0(%i: index):
+    %c = arith.constant 0.0 : f32
+    sim.yield %c : f32
+  }
+  // expected-error @+1 {{'sim.component' op lists buffer @B twice in writes}}
+  sim.component @C writes(@B, @B) evaluate {
+  ^bb0(%i: index, %t: i64, %n: i32, %dt: f32):
+    %x = sim.read @B[%i] : f32
+    sim.yield %x, %x : f32, f32
+  }
+}
+
+// -----
+
+sim.simulation @s range(16) dt(1.0 : f32) max_steps(1) {
+  sim.buffer @B : f32 init {
+  ^bb0(%i: index):
+    %c = arith.constant 0.0 : f32
+    sim.yield %c : f32
+  }
+  // expected-error @+1 {{'sim.component' op writes @X, which is not a sim.buffer of this simulation}}
+  sim.component @C writes(@B, @X) evaluate {
+  ^bb0(%i: index, %t: i64, %n: i32, %dt: f32):
+    %x = sim.read @B[%i] : f32
+    sim.yield %x, %x : f32, f32
+  }
+}
+
+// -----
+
+sim.simulation @s range(16) dt(1.0 : f32) max_steps(1) {
+  sim.buffer @B : f32 init {
+  ^bb0(%i: index):
+    %c = arith.constant 0.0 : f32
+    sim.yield %c : f32
+  }
+  // expected-error @+1 {{'sim.component' op writes @C, which is not a sim.buffer of this simulation}}
+  sim.component @C writes(@C) evaluate {
+  ^bb0(%i: index, %t: i64, %n: i32, %dt: f32):
+    %x = sim.read @B[%i] : f32
+    sim.yield %x : f32
+  }
+}
+
+// -----
+
+sim.simulation @s range(16) dt(1.0 : f32) max_steps(1) {
+  sim.buffer @B : f32 init {
+  ^bb0(%i: index):
+    %c = arith.constant 0.0 : f32
+    sim.yield %c : f32
+  }
+  sim.component @C writes(@B) evaluate {
+  ^bb0(%i: index, %t: i64, %n: i32, %dt: f32):
+    %x = sim.read @B[%i] : f32
+    sim.yield %x : f32
+  }
+  // expected-error @+1 {{'sim.component' op writes buffer @B, which component @C already writes; every buffer has exactly one writer}}
+  sim.component @D writes(@B) evaluate {
+  ^bb0(%i: index, %t: i64, %n: i32, %dt: f32):
+    %x = sim.read @B[%i] : f32
+    sim.yield %x : f32
+  }
+}
+
+// -----
+
+sim.simulation @s range(16) dt(1.0 : f32) max_steps(1) {
+  sim.buffer @B : f32 init {
+  ^bb0(%i: index):
+    %c = arith.constant 0.0 : f32
+    sim.yield %c : f32
+  }
+  // expected-error @+1 {{'sim.component' op expects the num_steps body to have arguments (index, i64), but it has ('index')}}
+  sim.component @C writes(@B) num_steps {
+  ^bb0(%i: index):
+    %c = arith.constant 1 : i32
+    sim.yield %c : i32
+  } evaluate {
+  ^bb0(%i: index, %t: i64, %n: i32, %dt: f32):
+    %x = sim.read @B[%i] : f32
+    sim.yield %x : f32
+  }
+}
+
+// -----
+
+sim.simulation @s range(16) dt(1.0 : f32) max_steps(1) {
+  sim.buffer @B : f32 init {
+  ^bb0(%i: index):
+    %c = arith.constant 0.0 : f32
+    sim.yield %c : f32
+  }
+  // expected-error @+1 {{'sim.component' op expects the num_steps body to have arguments (index, i64), but it has ('index', 'i32')}}
+  sim.component @C writes(@B) num_steps {
+  ^bb0(%i: index, %t: i32):
+    sim.yield %t : i32
+  } evaluate {
+  ^bb0(%i: index, %t: i64, %n: i32, %dt: f32):
+    %x = sim.read @B[%i] : f32
+    sim.yield %x : f32
+  }
+}
+
+// -----
+
+sim.simulation @s range(16) dt(1.0 : f32) max_steps(1) {
+  sim.buffer @B : f32 init {
+  ^bb0(%i: index):
+    %c = arith.constant 0.0 : f32
+    sim.yield %c : f32
+  }
+  // expected-error @+1 {{'sim.component' op expects the num_steps body to end in 'sim.yield'}}
+  sim.component @C writes(@B) num_steps {
+  ^bb0(%i: index, %t: i64):
+    %c = arith.constant 1 : i32
+  } evaluate {
+  ^bb0(%i: index, %t: i64, %n: i32, %dt: f32):
+    %x = sim.read @B[%i] : f32
+    sim.yield %x : f32
+  }
+}
+
+// -----
+
+sim.simulation @s range(16) dt(1.0 : f32) max_steps(1) {
+  sim.buffer @B : f32 init {
+  ^bb0(%i: index):
+    %c = arith.constant 0.0 : f32
+    sim.yield %c : f32
+  }
+  // expected-error @+1 {{'sim.component' op expects the num_steps body to yield one 'i32', but it yields ('i64')}}
+  sim.component @C writes(@B) num_steps {
+  ^bb0(%i: index, %t: i64):
+    sim.yield %t : i64
+  } evaluate {
+  ^bb0(%i: index, %t: i64, %n: i32, %dt: f32):
+    %x = sim.read @B[%i] : f32
+    sim.yield %x : f32
+  }
+}
+
+// -----
+
+sim.simulation @s range(16) dt(1.0 : f32) max_steps(1) {
+  sim.buffer @B : f32 init {
+  ^bb0(%i: index):
+    %c = arith.constant 0.0 : f32
+    sim.yield %c : f32
+  }
+  // expected-error @+1 {{'sim.component' op expects the num_steps body to yield one 'i32', but it yields ()}}
+  sim.component @C writes(@B) num_steps {
+  ^bb0(%i: index, %t: i64):
+    sim.yield
+  } evaluate {
+  ^bb0(%i: index, %t: i64, %n: i32, %dt: f32):
+    %x = sim.read @B[%i] : f32
+    sim.yield %x : f32
+  }
+}
+
+// -----
+
+sim.simulation @s range(16) dt(1.0 : f32) max_steps(1) {
+  sim.buffer @B : f32 init {
+  ^bb0(%i: index):
+    %c = arith.constant 0.0 : f32
+    sim.yield %c : f32
+  }
+  // expected-error @+1 {{'sim.component' op region #0 ('num_steps') failed to verify constraint: region with at most 1 blocks}}
+  sim.component @C writes(@B) num_steps {
+  ^bb0(%i: index, %t: i64):
+    %c = arith.constant 1 : i32
+    sim.yield %c : i32
+  ^bb1:
+    %d = arith.constant 1 : i32
+    sim.yield %d : i32
+  } evaluate {
+  ^bb0(%i: index, %t: i64, %n: i32, %dt: f32):
+    %x = sim.read @B[%i] : f32
+    sim.yield %x : f32
+  }
+}
+
+// -----
+
+// The evaluate body's time step has the simulation's dt type.
+sim.simulation @s range(16) dt(1.0 : f32) max_steps(1) {
+  sim.buffer @B : f32 init {
+  ^bb0(%i: index):
+    %c = arith.constant 0.0 : f32
+    sim.yield %c : f32
+  }
+  // expected-error @+1 {{'sim.component' op expects the evaluate body to have arguments (index, i64, i32, f32), but it has ('index', 'i64', 'i32', 'f64')}}
+  sim.component @C writes(@B) evaluate {
+  ^bb0(%i: index, %t: i64, %n: i32, %dt: f64):
+    %x = sim.read @B[%i] : f32
+    sim.yield %x : f32
+  }
+}
+
+// -----
+
+sim.simulation @s range(16) dt(1.0 : f64) max_steps(1) {
+  sim.buffer @B : f32 init {
+  ^bb0(%i: index):
+    %c = arith.constant 0.0 : f32
+    sim.yield %c : f32
+  }
+  // expected-error @+1 {{'sim.component' op expects the evaluate body to have arguments (index, i64, i32, f64), but it has ('index', 'i64', 'i32')}}
+  sim.component @C writes(@B) evaluate {
+  ^bb0(%i: index, %t: i64, %n: i32):
+    %x = sim.read @B[%i] : f32
+    sim.yield %x : f32
+  }
+}
+
+// -----
+
+sim.simulation @s range(16) dt(1.0 : f32) max_steps(1) {
+  sim.buffer @B : f32 init {
+  ^bb0(%i: index):
+    %c = arith.constant 0.0 : f32
+    sim.yield %c : f32
+  }
+  // expected-error @+1 {{'sim.component' op expects the evaluate body to have arguments (index, i64, i32, f32), but it has ()}}
+  sim.component @C writes(@B) evaluate {
+    %c = arith.constant 0.0 : f32
+    sim.yield %c : f32
+  }
+}
+
+// -----
+
+sim.simulation @s range(16) dt(1.0 : f32) max_steps(1) {
+  sim.buffer @B : f32 init {
+  ^bb0(%i: index):
+    %c = arith.constant 0.0 : f32
+    sim.yield %c : f32
+  }
+  // expected-error @+1 {{'sim.component' op expects the evaluate body to end in 'sim.yield'}}
+  sim.component @C writes(@B) evaluate {
+  ^bb0(%i: index, %t: i64, %n: i32, %dt: f32):
+    %x = sim.read @B[%i] : f32
+  }
+}
+
+// -----
+
+sim.simulation @s range(16) dt(1.0 : f32) max_steps(1) {
+  sim.buffer @B : f32 init {
+  ^bb0(%i: index):
+    %c = arith.constant 0.0 : f32
+    sim.yield %c : f32
+  }
+  // expected-error @+1 {{'sim.component' op region #1 ('evaluate') failed to verify constraint: region with 1 blocks}}
+  sim.component @C writes(@B) evaluate {
+  }
+}
+
+// -----
+
+// An empty block in the generic form: must be diagnosed, not crash.
+"sim.simulation"() <{sym_name = "s", range = 16 : i64, dt = 1.0 : f32, max_steps = 1 : i32}> ({
+  // expected-error @+1 {{'sim.component' op expects the evaluate body to end in 'sim.yield'}}
+  "sim.component"() <{sym_name = "C", writes = [@B]}> ({
+  }, {
+  ^bb0(%i: index, %t: i64, %n: i32, %dt: f32):
+  }) : () -> ()
+}) : () -> ()
+
+// -----
+
+"sim.simulation"() <{sym_name = "s", range = 16 : i64, dt = 1.0 : f32, max_steps = 1 : i32}> ({
+  // expected-error @+1 {{'sim.component' op expected 2 regions}}
+  "sim.component"() <{sym_name = "C", writes = [@B]}> ({
+  ^bb0(%i: index, %t: i64, %n: i32, %dt: f32):
+    %c = "arith.constant"() <{value = 0.0 : f32}> : () -> f32
+    "sim.yield"(%c) : (f32) -> ()
+  }) : () -> ()
+}) : () -> ()
+
+// -----
+
+"sim.simulation"() <{sym_name = "s", range = 16 : i64, dt = 1.0 : f32, max_steps = 1 : i32}> ({
+  // expected-error @+1 {{'sim.component' op requires attribute 'writes'}}
+  "sim.component"() <{sym_name = "C"}> ({
+  }, {
+  ^bb0(%i: index, %t: i64, %n: i32, %dt: f32):
+    "sim.yield"() : () -> ()
+  }) : () -> ()
+}) : () -> ()
+
+// -----
+
+sim.simulation @s range(16) dt(1.0 : f32) max_steps(1) {
+  sim.buffer @B : f32 init {
+  ^bb0(%i: index):
+    %c = arith.constant 0.0 : f32
+    sim.yield %c : f32
+  }
+  // expected-error @+1 {{'sim.component' op expects the evaluate body to yield one value per written buffer (1), but it yields 2}}
+  sim.component @C writes(@B) evaluate {
+  ^bb0(%i: index, %t: i64, %n: i32, %dt: f32):
+    %x = sim.read @B[%i] : f32
+    sim.yield %x, %x : f32, f32
+  }
+}
+
+// -----
+
+sim.simulation @s range(16) dt(1.0 : f32) max_steps(1) {
+  sim.buffer @X : f32 init {
+  ^bb0(%i: index):
+    %c = arith.constant 0.0 : f32
+    sim.yield %c : f32
+  }
+  sim.buffer @V : f32 init {
+  ^bb0(%i: index):
+    %c = arith.constant 0.0 : f32
+    sim.yield %c : f32
+  }
+  // expected-error @+1 {{'sim.component' op expects the evaluate body to yield one value per written buffer (2), but it yields 0}}
+  sim.component @C writes(@X, @V) evaluate {
+  ^bb0(%i: index, %t: i64, %n: i32, %dt: f32):
+    sim.yield
+  }
+}
+
+// -----
+
+sim.simulation @s range(16) dt(1.0 : f32) max_steps(1) {
+  sim.buffer @X : f32 init {
+  ^bb0(%i: index):
+    %c = arith.constant 0.0 : f32
+    sim.yield %c : f32
+  }
+  sim.buffer @V : vector<2xf32> init {
+  ^bb0(%i: index):
+    %c = arith.constant dense<0.0> : vector<2xf32>
+    sim.yield %c : vector<2xf32>
+  }
+  // Results follow the order of writes: result #1 is the value of @V.
+  // expected-error @+1 {{'sim.component' op yields 'f32' for @V (result #1 of evaluate), but the buffer's element type is 'vector<2xf32>'}}
+  sim.component @C writes(@X, @V) evaluate {
+  ^bb0(%i: index, %t: i64, %n: i32, %dt: f32):
+    %x = sim.read @X[%i] : f32
+    sim.yield %x, %x : f32, f32
+  }
+}
+
+// -----
+
+// expected-error @+1 {{'sim.component' op expects parent op 'sim.simulation'}}
+sim.component @C writes(@B) evaluate {
+^bb0(%i: index, %t: i64, %n: i32, %dt: f32):
+  %c = arith.constant 0.0 : f32
+  sim.yield %c : f32
+}

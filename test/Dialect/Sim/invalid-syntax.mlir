@@ -1,0 +1,266 @@
+// RUN: sim-opt %s --split-input-file --verify-diagnostics
+
+// Errors of the custom parsers: read roles, boundary rules, load versions,
+// interpolation attributes, symbol lists and clause order.
+
+sim.simulation @s range(16) dt(1.0 : f32) max_steps(1) {
+  sim.buffer @B : f32 init {
+  ^bb0(%i: index):
+    %c = arith.constant 0.0 : f32
+    sim.yield %c : f32
+  }
+  sim.component @C writes(@B) evaluate {
+  ^bb0(%i: index, %t: i64, %n: i32, %dt: f32):
+    // expected-error @+1 {{custom op 'sim.read' expected a read role (own, interpolate or back_edge), but got 'sideways'}}
+    %x = sim.read @B[%i] sideways : f32
+    sim.yield %x : f32
+  }
+}
+
+// -----
+
+sim.simulation @s range(16) dt(1.0 : f32) max_steps(1) {
+  sim.buffer @B : f32 init {
+  ^bb0(%i: index):
+    %c = arith.constant 0.0 : f32
+    sim.yield %c : f32
+  }
+  sim.component @C writes(@B) evaluate {
+  ^bb0(%i: index, %t: i64, %n: i32, %dt: f32):
+    // A type keyword where the role goes is read as a role.
+    // expected-error @+1 {{custom op 'sim.read' expected a read role (own, interpolate or back_edge), but got 'f32'}}
+    %x = sim.read @B[%i] f32
+    sim.yield %x : f32
+  }
+}
+
+// -----
+
+sim.simulation @s range(16) dt(1.0 : f32) max_steps(1) {
+  // expected-error @+1 {{custom op 'sim.buffer' expected a boundary rule (clamp, wrap or zero), but got 'mirror'}}
+  sim.buffer @B : f32 boundary(mirror) init {
+  ^bb0(%i: index):
+    %c = arith.constant 0.0 : f32
+    sim.yield %c : f32
+  }
+}
+
+// -----
+
+sim.simulation @s range(16) dt(1.0 : f32) max_steps(1) {
+  // expected-error @+1 {{custom op 'sim.buffer' expected a boundary rule (clamp, wrap or zero)}}
+  sim.buffer @B : f32 boundary() init {
+  ^bb0(%i: index):
+    %c = arith.constant 0.0 : f32
+    sim.yield %c : f32
+  }
+}
+
+// -----
+
+sim.simulation @s range(16) dt(1.0 : f32) max_steps(1) {
+  // expected-error @+1 {{custom op 'sim.buffer' expected a boundary rule (clamp, wrap or zero)}}
+  sim.buffer @B : f32 boundary(1) init {
+  ^bb0(%i: index):
+    %c = arith.constant 0.0 : f32
+    sim.yield %c : f32
+  }
+}
+
+// -----
+
+sim.simulation @s range(16) dt(1.0 : f32) max_steps(1) {
+  // expected-error @+1 {{expected ')'}}
+  sim.buffer @B : f32 boundary(wrap init {
+  ^bb0(%i: index):
+    %c = arith.constant 0.0 : f32
+    sim.yield %c : f32
+  }
+}
+
+// -----
+
+// The interp clause comes before the boundary clause.
+sim.simulation @s range(16) dt(1.0 : f32) max_steps(1) {
+  // expected-error @+1 {{custom op 'sim.buffer' expected 'init'}}
+  sim.buffer @B : f32 boundary(wrap) interp(#sim.linear) init {
+  ^bb0(%i: index):
+    %c = arith.constant 0.0 : f32
+    sim.yield %c : f32
+  }
+}
+
+// -----
+
+sim.simulation @s range(16) dt(1.0 : f32) max_steps(1) {
+  // expected-error @+1 {{custom op 'sim.buffer' invalid kind of attribute specified}}
+  sim.buffer @B : f32 interp(#sim<boundary wrap>) init {
+  ^bb0(%i: index):
+    %c = arith.constant 0.0 : f32
+    sim.yield %c : f32
+  }
+}
+
+// -----
+
+sim.simulation @s range(16) dt(1.0 : f32) max_steps(1) {
+  // expected-error @+1 {{unknown attribute `quadratic` in dialect `sim`}}
+  sim.buffer @B : f32 interp(#sim.quadratic) init {
+  ^bb0(%i: index):
+    %c = arith.constant 0.0 : f32
+    sim.yield %c : f32
+  }
+}
+
+// -----
+
+sim.simulation @s range(16) dt(1.0 : f32) max_steps(1) {
+  // expected-error @+2 {{invalid kind of attribute specified}}
+  // expected-error @+1 {{failed to parse Sim_HermiteInterpAttr parameter 'derivative' which is to be a `::mlir::FlatSymbolRefAttr`}}
+  sim.buffer @X : f32 interp(#sim.hermite<"V">) init {
+  ^bb0(%i: index):
+    %c = arith.constant 0.0 : f32
+    sim.yield %c : f32
+  }
+}
+
+// -----
+
+sim.simulation @s range(16) dt(1.0 : f32) max_steps(1) {
+  // expected-error @+1 {{custom op 'sim.buffer' 'sim.buffer' op attribute 'boundary' failed to satisfy constraint: rule for reads outside the item range}}
+  sim.buffer @B : f32 attributes {boundary = 1 : i32} init {
+  ^bb0(%i: index):
+    %c = arith.constant 0.0 : f32
+    sim.yield %c : f32
+  }
+}
+
+// -----
+
+sim.simulation @s range(16) dt(1.0 : f32) max_steps(1) {
+  sim.buffer @B : f32 init {
+  ^bb0(%i: index):
+    %c = arith.constant 0.0 : f32
+    sim.yield %c : f32
+  }
+  sim.component @C writes(@B) evaluate {
+  ^bb0(%i: index, %t: i64, %n: i32, %dt: f32):
+    // expected-error @+2 {{custom op 'sim.load' expected one of [source, snapshot, target, local] for which copy of a buffer an explicit load reads, got: middle}}
+    // expected-error @+1 {{custom op 'sim.load' failed to parse Sim_VersionAttr parameter 'value' which is to be a `::mlir::sim::Version`}}
+    %x = sim.load middle @B[%i] : f32
+    sim.yield %x : f32
+  }
+}
+
+// -----
+
+sim.simulation @s range(16) dt(1.0 : f32) max_steps(1) {
+  sim.buffer @B : f32 init {
+  ^bb0(%i: index):
+    %c = arith.constant 0.0 : f32
+    sim.yield %c : f32
+  }
+  sim.component @C writes(@B) evaluate {
+  ^bb0(%i: index, %t: i64, %n: i32, %dt: f32):
+    // expected-error @+2 {{custom op 'sim.load' expected keyword for which copy of a buffer an explicit load reads}}
+    // expected-error @+1 {{custom op 'sim.load' failed to parse Sim_VersionAttr parameter 'value' which is to be a `::mlir::sim::Version`}}
+    %x = sim.load @B[%i] : f32
+    sim.yield %x : f32
+  }
+}
+
+// -----
+
+sim.simulation @s range(16) dt(1.0 : f32) max_steps(1) {
+  sim.buffer @B : f32 init {
+  ^bb0(%i: index):
+    %c = arith.constant 0.0 : f32
+    sim.yield %c : f32
+  }
+  // expected-error @+1 {{expected '('}}
+  sim.component @C writes @B evaluate {
+  ^bb0(%i: index, %t: i64, %n: i32, %dt: f32):
+    %x = sim.read @B[%i] : f32
+    sim.yield %x : f32
+  }
+}
+
+// -----
+
+sim.simulation @s range(16) dt(1.0 : f32) max_steps(1) {
+  // expected-error @+1 {{custom op 'sim.component' expected valid '@'-identifier for symbol name}}
+  sim.component @C writes(B) evaluate {
+  ^bb0(%i: index, %t: i64, %n: i32, %dt: f32):
+    sim.yield
+  }
+}
+
+// -----
+
+sim.simulation @s range(16) dt(1.0 : f32) max_steps(1) {
+  // expected-error @+1 {{custom op 'sim.component' expected valid '@'-identifier for symbol name}}
+  sim.component @C writes(@B,) evaluate {
+  ^bb0(%i: index, %t: i64, %n: i32, %dt: f32):
+    sim.yield
+  }
+}
+
+// -----
+
+// num_steps comes before evaluate.
+sim.simulation @s range(16) dt(1.0 : f32) max_steps(1) {
+  sim.buffer @B : f32 init {
+  ^bb0(%i: index):
+    %c = arith.constant 0.0 : f32
+    sim.yield %c : f32
+  }
+  // expected-error @+1 {{custom op 'sim.component' expected 'evaluate'}}
+  sim.component @C writes(@B) {
+  ^bb0(%i: index, %t: i64, %n: i32, %dt: f32):
+    %x = sim.read @B[%i] : f32
+    sim.yield %x : f32
+  }
+}
+
+// -----
+
+// expected-error @+1 {{custom op 'sim.simulation' expected 'dt'}}
+sim.simulation @s range(16) max_steps(1) {
+}
+
+// -----
+
+// expected-error @+1 {{integer constant out of range for attribute}}
+sim.simulation @s range(99999999999999999999) dt(1.0 : f32) max_steps(1) {
+}
+
+// -----
+
+sim.simulation @s range(16) dt(1.0 : f32) max_steps(1) {
+  // expected-error @+1 {{expected '='}}
+  sim.param @L 3 : i32
+}
+
+// -----
+
+sim.simulation @s range(16) dt(1.0 : f32) max_steps(1) {
+  sim.buffer @B : f32 init {
+  ^bb0(%i: index):
+    %c = arith.constant 0.0 : f32
+    sim.yield %c : f32
+  }
+  sim.component @C writes(@B) evaluate {
+  ^bb0(%i: index, %t: i64, %n: i32, %dt: f32):
+    // expected-error @+1 {{expected ','}}
+    %T = sim.big_step : i64
+    %x = sim.read @B[%i] : f32
+    sim.yield %x : f32
+  }
+}
+
+// -----
+
+sim.simulation @s range(16) dt(1.0 : f32) max_steps(1) {
+  // expected-error @+1 {{custom op 'sim.observe' invalid kind of attribute specified}}
+  sim.observe @B
+}
