@@ -120,8 +120,7 @@ TEST_F(DependencyAnalysisTest, AccessPatternJoinAndPrint) {
             AccessPattern::window(0, 3));
   EXPECT_EQ(AccessPattern::window(-1, 1).join(AccessPattern::window(2, 5)),
             AccessPattern::window(-1, 5));
-  EXPECT_TRUE(
-      AccessPattern::own().join(AccessPattern::gather()).isGather());
+  EXPECT_TRUE(AccessPattern::own().join(AccessPattern::gather()).isGather());
 }
 
 TEST_F(DependencyAnalysisTest, ClassifiesReads) {

@@ -29,8 +29,7 @@ using namespace mlir::sim;
 namespace {
 
 /// Prints an attribute or type for gtest failure messages.
-template <typename T>
-std::string str(T entity) {
+template <typename T> std::string str(T entity) {
   std::string text;
   llvm::raw_string_ostream(text) << entity;
   return text;
@@ -45,8 +44,8 @@ struct Ends {
 class InterpolationTest : public ::testing::Test {
 protected:
   InterpolationTest() {
-    context.loadDialect<SimDialect, arith::ArithDialect,
-                        vector::VectorDialect>();
+    context
+        .loadDialect<SimDialect, arith::ArithDialect, vector::VectorDialect>();
     context.allowUnregisteredDialects();
   }
 
@@ -64,8 +63,8 @@ protected:
   /// Builds `interp` on constants of `elementType` (scalar, or a vector whose
   /// every lane holds the same value), folds it, and returns the folded
   /// constant (lane 0 for vectors).
-  double evaluate(InterpolationAttrInterface interp, Ends ends,
-                  double fraction, double span, Type elementType) {
+  double evaluate(InterpolationAttrInterface interp, Ends ends, double fraction,
+                  double span, Type elementType) {
     OpBuilder builder(&context);
     Location loc = builder.getUnknownLoc();
     OwningOpRef<ModuleOp> module = ModuleOp::create(loc);
@@ -87,8 +86,8 @@ protected:
       atBegin.push_back(element(ends.beginSlope));
       atEnd.push_back(element(ends.endSlope));
     }
-    Value result = interp.buildInterpolation(
-        builder, loc, atBegin, atEnd, scalar(fraction), scalar(span));
+    Value result = interp.buildInterpolation(builder, loc, atBegin, atEnd,
+                                             scalar(fraction), scalar(span));
 
     // Keep the result alive through folding with an unregistered sink op.
     OperationState sinkState(loc, "test.sink");
@@ -108,8 +107,8 @@ protected:
     return cast<FloatAttr>(value).getValueAsDouble();
   }
 
-  double evaluate(InterpolationAttrInterface interp, Ends ends,
-                  double fraction, double span = 1.0) {
+  double evaluate(InterpolationAttrInterface interp, Ends ends, double fraction,
+                  double span = 1.0) {
     return evaluate(interp, ends, fraction, span, Float64Type::get(&context));
   }
 
@@ -124,13 +123,12 @@ double signalSlope(double t) {
 
 /// The largest interpolation error of `interp` on `signal` over a big step of
 /// length `h` starting at t0, sampled at interior fractions.
-template <typename Eval>
-double maxError(Eval &&eval, double t0, double h) {
+template <typename Eval> double maxError(Eval &&eval, double t0, double h) {
   Ends ends{signal(t0), signal(t0 + h), signalSlope(t0), signalSlope(t0 + h)};
   double worst = 0.0;
   for (double fraction : {0.1, 0.25, 0.4, 0.5, 0.6, 0.75, 0.9})
-    worst = std::max(worst, std::fabs(eval(ends, fraction, h) -
-                                      signal(t0 + fraction * h)));
+    worst = std::max(
+        worst, std::fabs(eval(ends, fraction, h) - signal(t0 + fraction * h)));
   return worst;
 }
 
@@ -184,7 +182,9 @@ TEST_F(InterpolationTest, ValuesInBetween) {
 /// Cubic Hermite reproduces any cubic polynomial; the derivative is scaled by
 /// the span of the big step in time units.
 TEST_F(InterpolationTest, HermiteIsExactForCubics) {
-  auto cubicPoly = [](double t) { return 1.0 + 2.0 * t - 3.0 * t * t + 0.5 * t * t * t; };
+  auto cubicPoly = [](double t) {
+    return 1.0 + 2.0 * t - 3.0 * t * t + 0.5 * t * t * t;
+  };
   auto cubicSlope = [](double t) { return 2.0 - 6.0 * t + 1.5 * t * t; };
   double t0 = 0.7, h = 0.9;
   Ends ends{cubicPoly(t0), cubicPoly(t0 + h), cubicSlope(t0),
@@ -206,8 +206,8 @@ TEST_F(InterpolationTest, ConvergesAtTheDeclaredOrder) {
     ASSERT_GT(fine, 0.0);
     double observedOrder = std::log2(coarse / fine);
     EXPECT_NEAR(observedOrder, interp.getOrderOfAccuracy(), 0.25)
-        << "interp " << str(Attribute(interp)) << ": errors " << coarse << " -> "
-        << fine;
+        << "interp " << str(Attribute(interp)) << ": errors " << coarse
+        << " -> " << fine;
   }
 }
 

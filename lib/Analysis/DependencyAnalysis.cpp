@@ -290,9 +290,8 @@ DependencyAnalysis::getProducers(ComponentOp component) const {
     if (writer && writer != component)
       producers.insert(writer);
   }
-  return llvm::map_to_vector(producers, [](Operation *op) {
-    return cast<ComponentOp>(op);
-  });
+  return llvm::map_to_vector(
+      producers, [](Operation *op) { return cast<ComponentOp>(op); });
 }
 
 SmallVector<BufferOp>
@@ -302,8 +301,8 @@ DependencyAnalysis::getBuffersReadFrom(ComponentOp component,
   for (const BufferAccess &access : getAccesses(component))
     if (getWriter(access.buffer) == producer)
       result.insert(access.buffer);
-  return llvm::map_to_vector(
-      result, [](Operation *op) { return cast<BufferOp>(op); });
+  return llvm::map_to_vector(result,
+                             [](Operation *op) { return cast<BufferOp>(op); });
 }
 
 const BufferAccess *

@@ -248,9 +248,10 @@ private:
 
 } // namespace
 
-FailureOr<Schedule> mlir::sim::computeSchedule(const DependencyAnalysis &analysis,
-                                               ArrayRef<ComponentOp> userOrder,
-                                               bool emitDiagnostics) {
+FailureOr<Schedule>
+mlir::sim::computeSchedule(const DependencyAnalysis &analysis,
+                           ArrayRef<ComponentOp> userOrder,
+                           bool emitDiagnostics) {
   ScheduleDiagnostics diagnostics(analysis, emitDiagnostics);
   ArrayRef<ComponentOp> components = analysis.getComponents();
   if (components.empty())
@@ -283,8 +284,8 @@ FailureOr<Schedule> mlir::sim::computeSchedule(const DependencyAnalysis &analysi
             return diagnostics.violation(next, producer);
       }
     } else {
-      SmallVector<ComponentOp> ready = llvm::filter_to_vector(components,
-                                                              isReady);
+      SmallVector<ComponentOp> ready =
+          llvm::filter_to_vector(components, isReady);
       assert(!ready.empty() && "an acyclic graph always has a ready node");
       if (ready.size() > 1)
         return diagnostics.ambiguous(order, ready);

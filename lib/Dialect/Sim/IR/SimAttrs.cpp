@@ -47,8 +47,7 @@ struct WeightBuilder {
   Type scalarType;
 
   Value constant(double value) {
-    return arith::ConstantOp::create(b, loc,
-                                     b.getFloatAttr(scalarType, value));
+    return arith::ConstantOp::create(b, loc, b.getFloatAttr(scalarType, value));
   }
   Value add(Value x, Value y) { return arith::AddFOp::create(b, loc, x, y); }
   Value sub(Value x, Value y) { return arith::SubFOp::create(b, loc, x, y); }

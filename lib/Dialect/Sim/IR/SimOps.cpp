@@ -57,7 +57,7 @@ std::optional<BodyLocation> mlir::sim::getEnclosingBody(Operation *op) {
       return std::nullopt;
     if (auto component = dyn_cast<ComponentOp>(parent)) {
       BodyKind kind = region == &component.getNumSteps() ? BodyKind::NumSteps
-                                                          : BodyKind::Evaluate;
+                                                         : BodyKind::Evaluate;
       return BodyLocation{kind, component, nullptr};
     }
     if (auto buffer = dyn_cast<BufferOp>(parent)) {
@@ -88,8 +88,8 @@ static YieldOp verifyBodySignature(Operation *op, Region &region,
   if (block.getArgumentTypes() != argTypes) {
     op->emitOpError() << "expects the " << bodyName
                       << " body to have arguments " << argSpelling
-                      << ", but it has (" << formatTypes(block.getArgumentTypes())
-                      << ")";
+                      << ", but it has ("
+                      << formatTypes(block.getArgumentTypes()) << ")";
     return nullptr;
   }
   // The body may not end in a terminator at all (an empty block, or one whose
@@ -209,8 +209,8 @@ LogicalResult SimulationOp::verify() {
   // A simulation nested in a body (through an op that opens a symbol table)
   // would be walked as part of the outer one by every analysis.
   if (auto outer = (*this)->getParentOfType<SimulationOp>()) {
-    InFlightDiagnostic diag =
-        emitOpError() << "cannot be nested inside another simulation";
+    InFlightDiagnostic diag = emitOpError()
+                              << "cannot be nested inside another simulation";
     diag.attachNote(outer.getLoc()) << "the enclosing simulation is here";
     return diag;
   }
@@ -308,10 +308,10 @@ LogicalResult SimulationOp::verifyRegions() {
       auto [it, inserted] = writerOf.try_emplace(buffer, component);
       if (!inserted)
         return component.emitOpError()
-                   << "writes buffer " << name << ", which component @"
-                   << it->second.getSymName()
-                   << " already writes; every buffer has exactly one writer"
-                   << "";
+               << "writes buffer " << name << ", which component @"
+               << it->second.getSymName()
+               << " already writes; every buffer has exactly one writer"
+               << "";
     }
   }
   for (BufferOp buffer : getBuffers())
@@ -358,8 +358,8 @@ LogicalResult ParamOp::verify() {
   Attribute value = getValue();
   bool isScalar = false;
   if (auto intAttr = dyn_cast<IntegerAttr>(value))
-    isScalar = intAttr.getType().isSignlessInteger() ||
-               intAttr.getType().isIndex();
+    isScalar =
+        intAttr.getType().isSignlessInteger() || intAttr.getType().isIndex();
   else
     isScalar = isa<FloatAttr>(value);
   if (!isScalar)
@@ -369,8 +369,7 @@ LogicalResult ParamOp::verify() {
   return success();
 }
 
-LogicalResult
-GetParamOp::verifySymbolUses(SymbolTableCollection &symbolTable) {
+LogicalResult GetParamOp::verifySymbolUses(SymbolTableCollection &symbolTable) {
   auto param =
       symbolTable.lookupNearestSymbolFrom<ParamOp>(*this, getParamAttr());
   if (!param)
@@ -432,8 +431,8 @@ LogicalResult BufferOp::verify() {
                          << elementType;
 
   Builder b(getContext());
-  YieldOp initYield = verifyBodySignature(
-      *this, getInit(), "init", {b.getIndexType()}, "(index)");
+  YieldOp initYield = verifyBodySignature(*this, getInit(), "init",
+                                          {b.getIndexType()}, "(index)");
   if (!initYield)
     return failure();
   if (initYield.getValues().getTypes() != TypeRange(elementType))
@@ -559,16 +558,15 @@ ComponentOp::verifySymbolUses(SymbolTableCollection &symbolTable) {
 
 /// Verifies that `list` names distinct symbols of kind `OpTy`.
 template <typename OpTy>
-static LogicalResult verifySymbolArray(Operation *user,
-                                       SymbolTableCollection &symbolTable,
-                                       ArrayAttr list, StringRef listName,
-                                       StringRef kindName) {
+static LogicalResult
+verifySymbolArray(Operation *user, SymbolTableCollection &symbolTable,
+                  ArrayAttr list, StringRef listName, StringRef kindName) {
   llvm::SmallDenseSet<Attribute> seen;
   for (auto name : list.getAsRange<FlatSymbolRefAttr>()) {
     if (!symbolTable.lookupNearestSymbolFrom<OpTy>(user, name.getAttr()))
-      return user->emitOpError() << "lists " << name << " in " << listName
-                                 << ", but it is not a " << kindName
-                                 << " of this simulation";
+      return user->emitOpError()
+             << "lists " << name << " in " << listName << ", but it is not a "
+             << kindName << " of this simulation";
     if (!seen.insert(name).second)
       return user->emitOpError()
              << "lists " << name << " twice in " << listName;
@@ -615,18 +613,18 @@ LogicalResult ReadOp::verify() {
 /// result has its element type.
 static LogicalResult verifyBufferAccess(Operation *op,
                                         SymbolTableCollection &symbolTable,
-                                        FlatSymbolRefAttr name,
-                                        Type resultType, BufferOp &buffer) {
+                                        FlatSymbolRefAttr name, Type resultType,
+                                        BufferOp &buffer) {
   buffer = lookupBuffer(symbolTable, op, name);
   if (!buffer)
     return op->emitOpError() << "reads " << name
                              << ", which is not a sim.buffer of this "
                                 "simulation";
   if (buffer.getElementType() != resultType)
-    return op->emitOpError() << "result type " << resultType
-                             << " does not match the element type "
-                             << buffer.getElementType() << " of buffer "
-                             << name;
+    return op->emitOpError()
+           << "result type " << resultType
+           << " does not match the element type " << buffer.getElementType()
+           << " of buffer " << name;
   return success();
 }
 

@@ -68,7 +68,8 @@ public:
       return it->second;
     OpBuilder builder = atBodyStart();
     Location loc = body.getLoc();
-    Value sizeF = arith::SIToFPOp::create(builder, loc, type, getBigStep().second);
+    Value sizeF =
+        arith::SIToFPOp::create(builder, loc, type, getBigStep().second);
     Value dtValue =
         arith::ConstantOp::create(builder, loc, builder.getFloatAttr(type, dt));
     Value span = arith::MulFOp::create(builder, loc, sizeF, dtValue);
@@ -170,9 +171,8 @@ struct InsertInterpolationPass
                << "has no read role; run --sim-schedule before "
                   "--sim-insert-interpolation";
       rewriter.setInsertionPoint(read);
-      FailureOr<Value> value =
-          rewriteRead(rewriter, simulation, component, read, kind, subSteps,
-                      time);
+      FailureOr<Value> value = rewriteRead(rewriter, simulation, component,
+                                           read, kind, subSteps, time);
       if (failed(value))
         return failure();
       rewriter.replaceOp(read, *value);
@@ -214,8 +214,8 @@ struct InsertInterpolationPass
       if (positions.lookup(writer.getSymNameAttr()) >=
           positions.lookup(component.getSymNameAttr()))
         return read.emitOpError()
-               << "interpolates @" << buffer.getSymName() << " with "
-               << interp << ", which needs @" << auxBuffer.getSymName()
+               << "interpolates @" << buffer.getSymName() << " with " << interp
+               << ", which needs @" << auxBuffer.getSymName()
                << " at the end of the big step, but its writer @"
                << writer.getSymName() << " does not run before @"
                << component.getSymName() << " in the step";
@@ -223,8 +223,8 @@ struct InsertInterpolationPass
     }
     SmallVector<Value> atBegin, atEnd;
     for (BufferOp input : inputs) {
-      atBegin.push_back(
-          load(input, input.getSnapshot() ? Version::snapshot : Version::source));
+      atBegin.push_back(load(input, input.getSnapshot() ? Version::snapshot
+                                                        : Version::source));
       atEnd.push_back(load(input, Version::target));
     }
     FloatType scalarType = buffer.getScalarType();

@@ -77,7 +77,8 @@ struct PlanMemoryPass : public sim::impl::SimPlanMemoryBase<PlanMemoryPass> {
         if (strategy == Strategy::hip_cache &&
             access.pattern.getKind() == AccessPattern::Kind::Window &&
             !llvm::is_contained(caches, access.buffer.getSymNameAttr()))
-          caches.push_back(FlatSymbolRefAttr::get(access.buffer.getSymNameAttr()));
+          caches.push_back(
+              FlatSymbolRefAttr::get(access.buffer.getSymNameAttr()));
       }
       if (!caches.empty())
         component.setCachesAttr(ArrayAttr::get(context, caches));

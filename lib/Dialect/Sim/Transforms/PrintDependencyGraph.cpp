@@ -30,7 +30,8 @@ class GraphPrinter {
 public:
   GraphPrinter(const DependencyAnalysis &analysis, llvm::raw_ostream &os)
       : analysis(analysis), os(os),
-        schedule(computeSchedule(analysis, getUserOrder(analysis.getSimulation()),
+        schedule(computeSchedule(analysis,
+                                 getUserOrder(analysis.getSimulation()),
                                  /*emitDiagnostics=*/false)) {}
 
   void printText();
@@ -66,8 +67,8 @@ void GraphPrinter::printBounds(ArrayRef<ComponentOp> bounds) {
   });
 }
 
-void GraphPrinter::printAccesses(ArrayRef<BufferAccess> accesses,
-                                 BodyKind body, ComponentOp reader) {
+void GraphPrinter::printAccesses(ArrayRef<BufferAccess> accesses, BodyKind body,
+                                 ComponentOp reader) {
   SmallVector<const BufferAccess *> inBody;
   for (const BufferAccess &access : accesses)
     if (access.body == body)
@@ -78,8 +79,8 @@ void GraphPrinter::printAccesses(ArrayRef<BufferAccess> accesses,
     return;
   }
   llvm::interleaveComma(inBody, os, [&](const BufferAccess *access) {
-    os << symbol(access->buffer.getSymName()) << "["
-       << access->pattern.str() << "]";
+    os << symbol(access->buffer.getSymName()) << "[" << access->pattern.str()
+       << "]";
     if (!reader)
       return;
     if (std::optional<ReadRole> role = getRole(reader, access->buffer))
@@ -95,9 +96,8 @@ void GraphPrinter::printText() {
      << analysis.getBuffers().size() << " buffers\n";
   if (succeeded(schedule)) {
     os << "  schedule: ";
-    llvm::interleaveComma(schedule->getOrder(), os, [&](ComponentOp c) {
-      os << symbol(c.getSymName());
-    });
+    llvm::interleaveComma(schedule->getOrder(), os,
+                          [&](ComponentOp c) { os << symbol(c.getSymName()); });
     os << "\n  hip step bounded by: ";
     printBounds(schedule->getHipStepBounds(analysis));
     os << "\n  traditional step bounded by: ";
@@ -124,8 +124,8 @@ void GraphPrinter::printText() {
   for (BufferOp buffer : analysis.getBuffers()) {
     os << "  buffer " << symbol(buffer.getSymName()) << " : "
        << buffer.getElementType() << " interp " << buffer.getInterpolation()
-       << ", written by "
-       << symbol(analysis.getWriter(buffer).getSymName()) << "\n";
+       << ", written by " << symbol(analysis.getWriter(buffer).getSymName())
+       << "\n";
     printAccesses(analysis.getAccesses(buffer), BodyKind::Init, nullptr);
     if (!buffer.getExact().empty())
       printAccesses(analysis.getAccesses(buffer), BodyKind::Exact, nullptr);
@@ -188,7 +188,8 @@ void GraphPrinter::printDot() {
     std::string type;
     llvm::raw_string_ostream(type) << buffer.getElementType();
     os << "  " << bufferId(buffer) << " [shape=ellipse, label=\"@"
-       << escape(buffer.getSymName()) << "\\n" << escape(type) << "\"];\n";
+       << escape(buffer.getSymName()) << "\\n"
+       << escape(type) << "\"];\n";
   }
   for (ComponentOp component : analysis.getComponents())
     for (BufferOp buffer : analysis.getWrittenBuffers(component))

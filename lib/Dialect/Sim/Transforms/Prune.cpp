@@ -135,8 +135,8 @@ struct PrunePass : public sim::impl::SimPruneBase<PrunePass> {
     auto yield = cast<YieldOp>(writer.getEvaluate().front().getTerminator());
     auto writes = writer.getWrites().getAsRange<FlatSymbolRefAttr>();
     unsigned position = std::distance(
-        writes.begin(), llvm::find(writes, FlatSymbolRefAttr::get(
-                                               buffer.getSymNameAttr())));
+        writes.begin(),
+        llvm::find(writes, FlatSymbolRefAttr::get(buffer.getSymNameAttr())));
     collectSliceReads(yield.getValues()[position], needed);
     for (FlatSymbolRefAttr aux :
          buffer.getInterpolation().getAuxiliaryBuffers())

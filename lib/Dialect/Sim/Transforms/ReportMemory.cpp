@@ -78,8 +78,8 @@ void printText(const MemoryReport &report, int64_t groupSize,
                llvm::raw_ostream &os) {
   os << "memory plan of @" << report.simulation << " (strategy "
      << report.strategy << ", " << report.range << " items)\n";
-  os << llvm::format("  %-12s %-16s %10s %14s %14s %14s\n", "buffer",
-                     "element", "bytes/item", "halves", "snapshot", "total");
+  os << llvm::format("  %-12s %-16s %10s %14s %14s %14s\n", "buffer", "element",
+                     "bytes/item", "halves", "snapshot", "total");
   for (const BufferRow &row : report.buffers)
     os << llvm::format("  %-12s %-16s %10lld %14lld %14lld %14lld\n",
                        ("@" + row.name).c_str(), row.type.c_str(),
@@ -110,24 +110,25 @@ void printText(const MemoryReport &report, int64_t groupSize,
 llvm::json::Value toJson(const MemoryReport &report, int64_t groupSize) {
   llvm::json::Array buffers, caches;
   for (const BufferRow &row : report.buffers)
-    buffers.push_back(llvm::json::Object{{"name", row.name},
-                                         {"element", row.type},
-                                         {"bytes_per_item", row.elementBytes},
-                                         {"halves_bytes", row.halvesBytes},
-                                         {"snapshot_bytes", row.snapshotBytes}});
+    buffers.push_back(
+        llvm::json::Object{{"name", row.name},
+                           {"element", row.type},
+                           {"bytes_per_item", row.elementBytes},
+                           {"halves_bytes", row.halvesBytes},
+                           {"snapshot_bytes", row.snapshotBytes}});
   for (const CacheRow &row : report.caches)
-    caches.push_back(llvm::json::Object{{"component", row.component},
-                                        {"bytes_per_group", row.bytesPerGroup}});
-  return llvm::json::Object{{"simulation", report.simulation},
-                            {"strategy", report.strategy},
-                            {"range", report.range},
-                            {"group_size", groupSize},
-                            {"buffers", std::move(buffers)},
-                            {"caches", std::move(caches)},
-                            {"planned_bytes", report.planned()},
-                            {"naive_bytes", report.naive()},
-                            {"largest_cache_bytes_per_group",
-                             report.largestCache()}};
+    caches.push_back(llvm::json::Object{
+        {"component", row.component}, {"bytes_per_group", row.bytesPerGroup}});
+  return llvm::json::Object{
+      {"simulation", report.simulation},
+      {"strategy", report.strategy},
+      {"range", report.range},
+      {"group_size", groupSize},
+      {"buffers", std::move(buffers)},
+      {"caches", std::move(caches)},
+      {"planned_bytes", report.planned()},
+      {"naive_bytes", report.naive()},
+      {"largest_cache_bytes_per_group", report.largestCache()}};
 }
 
 struct ReportMemoryPass
@@ -155,8 +156,8 @@ struct ReportMemoryPass
     if (result.wasInterrupted())
       return signalPassFailure();
     if (format == ReportFormat::json)
-      llvm::outs() << llvm::formatv("{0:2}", llvm::json::Value(
-                                                 std::move(reports)))
+      llvm::outs() << llvm::formatv("{0:2}",
+                                    llvm::json::Value(std::move(reports)))
                    << "\n";
     llvm::outs().flush();
     markAllAnalysesPreserved();
@@ -179,8 +180,8 @@ struct ReportMemoryPass
       llvm::raw_string_ostream(row.type) << buffer.getElementType();
       row.elementBytes = buffer.getElementBytes();
       row.halvesBytes = 2 * report.range * row.elementBytes;
-      row.snapshotBytes = buffer.getSnapshot() ? report.range * row.elementBytes
-                                               : 0;
+      row.snapshotBytes =
+          buffer.getSnapshot() ? report.range * row.elementBytes : 0;
       elementBytes[buffer.getSymNameAttr()] = row.elementBytes;
       report.buffers.push_back(row);
     }

@@ -25,8 +25,8 @@ using namespace mlir::sim;
 namespace {
 
 ArrayAttr getSymbolArray(Builder &builder, ArrayRef<ComponentOp> components) {
-  return builder.getArrayAttr(llvm::map_to_vector(
-      components, [](ComponentOp component) -> Attribute {
+  return builder.getArrayAttr(
+      llvm::map_to_vector(components, [](ComponentOp component) -> Attribute {
         return FlatSymbolRefAttr::get(component.getSymNameAttr());
       }));
 }
@@ -59,8 +59,8 @@ struct SchedulePass : public sim::impl::SimScheduleBase<SchedulePass> {
     for (const ReadInfo &read : analysis.getReads()) {
       if (!read.component)
         continue;
-      ReadRole role = schedule->getRole(read.component,
-                                        analysis.getWriter(read.buffer));
+      ReadRole role =
+          schedule->getRole(read.component, analysis.getWriter(read.buffer));
       read.read.setRoleAttr(ReadRoleAttr::get(&getContext(), role));
     }
     // Only attributes changed: reads, writes and patterns are as analysed.

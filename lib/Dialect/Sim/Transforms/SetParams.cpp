@@ -43,9 +43,8 @@ static FailureOr<TypedAttr> parseScalar(Builder &builder, StringRef text,
   error = ScalarError::Invalid;
   text = text.trim();
   if (isa<IntegerType, IndexType>(type)) {
-    unsigned width =
-        type.isIndex() ? IndexType::kInternalStorageBitWidth
-                       : cast<IntegerType>(type).getWidth();
+    unsigned width = type.isIndex() ? IndexType::kInternalStorageBitWidth
+                                    : cast<IntegerType>(type).getWidth();
     StringRef digits = text;
     bool negative = digits.consume_front("-");
     unsigned radix = 10;
@@ -108,8 +107,8 @@ struct SetParamsPass : public sim::impl::SimSetParamsBase<SetParamsPass> {
     }
   }
 
-  LogicalResult apply(SimulationOp simulation, Builder &builder,
-                      StringRef name, StringRef text) {
+  LogicalResult apply(SimulationOp simulation, Builder &builder, StringRef name,
+                      StringRef text) {
     ScalarError error;
     auto invalid = [&](Type type) {
       return simulation.emitError()
