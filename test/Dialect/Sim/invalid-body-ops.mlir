@@ -304,14 +304,14 @@ sim.simulation @s range(16) dt(1.0 : f32) max_steps(1) {
 
 // -----
 
-// expected-error @+1 {{'sim.get_param' op @L does not name a sim.param of the enclosing simulation}}
+// expected-error @+1 {{'sim.get_param' op must be inside a num_steps, evaluate, init or exact body}}
 %L = sim.get_param @L : i32
 
 // -----
 
 sim.simulation @s range(16) dt(1.0 : f32) max_steps(1) {
   sim.param @L = 4 : i32
-  // expected-error @+1 {{'sim.get_param' cannot appear directly in a simulation; it holds only sim.param, sim.buffer, sim.component, sim.schedule and sim.observe}}
+  // expected-error @+1 {{'sim.get_param' op must be inside a num_steps, evaluate, init or exact body}}
   %L = sim.get_param @L : i32
 }
 

@@ -93,7 +93,7 @@ sim.simulation @s range(16) dt(1.0 : f32) max_steps(1) {
 // -----
 
 sim.simulation @s range(16) dt(1.0 : f32) max_steps(1) {
-  // expected-error @+1 {{custom op 'sim.buffer' invalid kind of attribute specified}}
+  // expected-error @+1 {{custom op 'sim.buffer' expected an interpolation function such as #sim.linear, #sim.cubic or #sim.hermite<@derivative>, but got #sim<boundary wrap>}}
   sim.buffer @B : f32 interp(#sim<boundary wrap>) init {
   ^bb0(%i: index):
     %c = arith.constant 0.0 : f32
@@ -145,8 +145,7 @@ sim.simulation @s range(16) dt(1.0 : f32) max_steps(1) {
   }
   sim.component @C writes(@B) evaluate {
   ^bb0(%i: index, %t: i64, %n: i32, %dt: f32):
-    // expected-error @+2 {{custom op 'sim.load' expected one of [source, snapshot, target, local] for which copy of a buffer an explicit load reads, got: middle}}
-    // expected-error @+1 {{custom op 'sim.load' failed to parse Sim_VersionAttr parameter 'value' which is to be a `::mlir::sim::Version`}}
+    // expected-error @+1 {{custom op 'sim.load' expected the copy to load (source, snapshot, target or local), but got 'middle'}}
     %x = sim.load middle @B[%i] : f32
     sim.yield %x : f32
   }
@@ -162,8 +161,7 @@ sim.simulation @s range(16) dt(1.0 : f32) max_steps(1) {
   }
   sim.component @C writes(@B) evaluate {
   ^bb0(%i: index, %t: i64, %n: i32, %dt: f32):
-    // expected-error @+2 {{custom op 'sim.load' expected keyword for which copy of a buffer an explicit load reads}}
-    // expected-error @+1 {{custom op 'sim.load' failed to parse Sim_VersionAttr parameter 'value' which is to be a `::mlir::sim::Version`}}
+    // expected-error @+1 {{custom op 'sim.load' expected the copy to load (source, snapshot, target or local)}}
     %x = sim.load @B[%i] : f32
     sim.yield %x : f32
   }

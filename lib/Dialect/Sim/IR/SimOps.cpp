@@ -161,6 +161,55 @@ static void printOptionalReadRole(OpAsmPrinter &printer, Operation *,
     printer << ' ' << stringifyReadRole(role.getValue());
 }
 
+/// An optional `interp(<attribute>)` clause; the attribute must implement
+/// InterpolationAttrInterface.
+static ParseResult parseInterpClause(OpAsmParser &parser,
+                                     InterpolationAttrInterface &interp) {
+  if (failed(parser.parseOptionalKeyword("interp")))
+    return success();
+  Attribute attr;
+  if (parser.parseLParen())
+    return failure();
+  SMLoc loc = parser.getCurrentLocation();
+  if (parser.parseAttribute(attr))
+    return failure();
+  interp = dyn_cast<InterpolationAttrInterface>(attr);
+  if (!interp)
+    return parser.emitError(loc)
+           << "expected an interpolation function such as #sim.linear, "
+              "#sim.cubic or #sim.hermite<@derivative>, but got "
+           << attr;
+  return parser.parseRParen();
+}
+
+static void printInterpClause(OpAsmPrinter &printer, Operation *,
+                              InterpolationAttrInterface interp) {
+  if (interp)
+    printer << " interp(" << Attribute(interp) << ")";
+}
+
+/// The version keyword of a sim.load.
+static ParseResult parseLoadVersion(OpAsmParser &parser, VersionAttr &version) {
+  StringRef keyword;
+  SMLoc loc = parser.getCurrentLocation();
+  if (failed(parser.parseOptionalKeyword(&keyword)))
+    return parser.emitError(loc) << "expected the copy to load (source, "
+                                    "snapshot, target or local)";
+  std::optional<Version> value = symbolizeVersion(keyword);
+  if (!value)
+    return parser.emitError(loc)
+           << "expected the copy to load (source, snapshot, target or "
+              "local), but got '"
+           << keyword << "'";
+  version = VersionAttr::get(parser.getContext(), *value);
+  return success();
+}
+
+static void printLoadVersion(OpAsmPrinter &printer, Operation *,
+                             VersionAttr version) {
+  printer << stringifyVersion(version.getValue());
+}
+
 /// An optional `boundary(<rule>)` clause; `clamp` (the default) is elided.
 static ParseResult parseBoundaryClause(OpAsmParser &parser,
                                        BoundaryAttr &boundary) {
@@ -366,6 +415,13 @@ LogicalResult ParamOp::verify() {
     return emitOpError() << "expects an integer or float default value, but "
                             "got "
                          << value;
+  return success();
+}
+
+LogicalResult GetParamOp::verify() {
+  if (!getEnclosingBody(*this))
+    return emitOpError() << "must be inside a num_steps, evaluate, init or "
+                            "exact body";
   return success();
 }
 

@@ -135,6 +135,7 @@ def Sim_GetParamOp : Sim_Op<"get_param", [Pure,
   let arguments = (ins FlatSymbolRefAttr:$param);
   let results = (outs AnyType:$result);
   let assemblyFormat = "$param attr-dict `:` type($result)";
+  let hasVerifier = 1;
 }
 
 //===----------------------------------------------------------------------===//
@@ -184,7 +185,7 @@ def Sim_BufferOp : Sim_Op<"buffer", [
                        UnitAttr:$snapshot);
   let regions = (region SizedRegion<1>:$init, MaxSizedRegion<1>:$exact);
   let assemblyFormat = [{
-    $sym_name `:` $element_type (`interp` `(` $interp^ `)`)?
+    $sym_name `:` $element_type `` custom<InterpClause>($interp)
     `` custom<BoundaryClause>($boundary) attr-dict-with-keyword
     `init` $init (`exact` $exact^)?
   }];
@@ -373,7 +374,8 @@ def Sim_LoadOp : Sim_Op<"load", [
                        Sim_VersionAttr:$version);
   let results = (outs AnyType:$result);
   let assemblyFormat = [{
-    `` $version $buffer `[` $index `]` attr-dict `:` type($result)
+    custom<LoadVersion>($version) $buffer `[` $index `]` attr-dict
+    `:` type($result)
   }];
   let hasVerifier = 1;
 }

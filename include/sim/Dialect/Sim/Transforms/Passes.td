@@ -14,8 +14,13 @@ def SimSetParams : Pass<"sim-set-params", "::mlir::sim::SimulationOp"> {
   let summary = "Override scene parameters without editing the scene";
   let description = [{
     Sets `sim.param` defaults and the simulation's `range`, `dt` and
-    `max_steps` from a list of `name=value` pairs. Unknown names and values
-    that do not parse as the parameter's type are errors.
+    `max_steps` from a list of `name=value` pairs (the last of repeated names
+    wins). Integers are decimal or `0x` hexadecimal with an optional `-`, as
+    MLIR literals; floats are converted in the parameter's own type. Unknown
+    names, values that do not parse, values that do not fit the parameter's
+    type (no silent truncation, overflow or underflow), a `range` or
+    `max_steps` below 1 and a `dt` that is not positive and finite are
+    errors.
 
     ```
     sim-opt scene.mlir --sim-set-params="values=range=16384,L=64"
