@@ -359,8 +359,7 @@ LogicalResult SimulationOp::verifyRegions() {
         return component.emitOpError()
                << "writes buffer " << name << ", which component @"
                << it->second.getSymName()
-               << " already writes; every buffer has exactly one writer"
-               << "";
+               << " already writes; every buffer has exactly one writer";
     }
   }
   for (BufferOp buffer : getBuffers())
