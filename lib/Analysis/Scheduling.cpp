@@ -8,6 +8,7 @@
 //===----------------------------------------------------------------------===//
 
 #include "sim/Analysis/Scheduling.h"
+#include "sim/Support/Cycles.h"
 
 #include "mlir/IR/Diagnostics.h"
 #include "llvm/ADT/STLExtras.h"
@@ -81,44 +82,16 @@ public:
     return analysis.getProducers(component);
   }
 
-  /// Returns a dependency cycle (each component reads from the previous one,
-  /// the first from the last), or an empty list.
+  /// Returns a dependency cycle: each component reads what the previous one
+  /// writes, the first what the last writes.
   SmallVector<ComponentOp> findCycle() const {
-    enum class Mark { Unvisited, OnStack, Done };
-    llvm::DenseMap<Operation *, Mark> marks;
-    SmallVector<ComponentOp> stack, cycle;
-    std::function<bool(ComponentOp)> visit = [&](ComponentOp node) {
-      marks[node] = Mark::OnStack;
-      stack.push_back(node);
-      for (ComponentOp producer : getInStepProducers(node)) {
-        Mark mark = marks.lookup(producer);
-        if (mark == Mark::OnStack) {
-          // The stack walks consumer -> producer; report producer -> consumer.
-          auto start = llvm::find(stack, producer);
-          cycle.assign(start, stack.end());
-          std::reverse(cycle.begin(), cycle.end());
-          return true;
-        }
-        if (mark == Mark::Unvisited && visit(producer))
-          return true;
-      }
-      stack.pop_back();
-      marks[node] = Mark::Done;
-      return false;
-    };
-    for (ComponentOp component : analysis.getComponents()) {
-      if (marks.lookup(component) != Mark::Unvisited || !visit(component))
-        continue;
-      // Start the reported cycle at its first component in program order so
-      // that messages do not depend on the search order.
-      ArrayRef<ComponentOp> all = analysis.getComponents();
-      auto first = llvm::min_element(cycle, [&](ComponentOp a, ComponentOp b) {
-        return llvm::find(all, a) < llvm::find(all, b);
+    ArrayRef<ComponentOp> components = analysis.getComponents();
+    auto consumers = [&](ComponentOp producer) {
+      return llvm::filter_to_vector(components, [&](ComponentOp consumer) {
+        return llvm::is_contained(getInStepProducers(consumer), producer);
       });
-      std::rotate(cycle.begin(), first, cycle.end());
-      return cycle;
-    }
-    return {};
+    };
+    return sim::findCycle(components, consumers);
   }
 
 private:

@@ -9,6 +9,7 @@
 //===----------------------------------------------------------------------===//
 
 #include "sim/Dialect/Sim/IR/SimOps.h"
+#include "sim/Support/Cycles.h"
 
 #include "mlir/IR/Builders.h"
 #include "mlir/IR/BuiltinTypes.h"
@@ -280,41 +281,6 @@ LogicalResult SimulationOp::verify() {
   return success();
 }
 
-/// Finds a cycle in the "initial state of A reads the initial state of B"
-/// relation and returns it (empty when there is none).
-static SmallVector<BufferOp>
-findInitCycle(ArrayRef<BufferOp> buffers,
-              const DenseMap<Operation *, SmallVector<BufferOp>> &reads) {
-  enum class Mark { Unvisited, OnStack, Done };
-  DenseMap<Operation *, Mark> marks;
-  SmallVector<BufferOp> stack;
-  SmallVector<BufferOp> cycle;
-  std::function<bool(BufferOp)> visit = [&](BufferOp buffer) -> bool {
-    marks[buffer] = Mark::OnStack;
-    stack.push_back(buffer);
-    auto it = reads.find(buffer);
-    if (it != reads.end()) {
-      for (BufferOp next : it->second) {
-        Mark mark = marks.lookup(next);
-        if (mark == Mark::OnStack) {
-          auto start = llvm::find(stack, next);
-          cycle.assign(start, stack.end());
-          return true;
-        }
-        if (mark == Mark::Unvisited && visit(next))
-          return true;
-      }
-    }
-    stack.pop_back();
-    marks[buffer] = Mark::Done;
-    return false;
-  };
-  for (BufferOp buffer : buffers)
-    if (marks.lookup(buffer) == Mark::Unvisited && visit(buffer))
-      return cycle;
-  return {};
-}
-
 LogicalResult SimulationOp::verifyRegions() {
   Block &body = getBody().front();
   Operation *schedule = nullptr, *observe = nullptr;
@@ -377,7 +343,9 @@ LogicalResult SimulationOp::verifyRegions() {
         initReads[buffer].push_back(source);
     });
   }
-  SmallVector<BufferOp> cycle = findInitCycle(buffers, initReads);
+  SmallVector<BufferOp> cycle =
+      findCycle(ArrayRef<BufferOp>(buffers),
+                [&](BufferOp buffer) { return initReads.lookup(buffer); });
   if (!cycle.empty()) {
     InFlightDiagnostic diag =
         cycle.front().emitOpError()
