@@ -6,6 +6,8 @@
 //
 //===----------------------------------------------------------------------===//
 
+#include "sim/Conversion/Passes.h"
+#include "sim/Dialect/Plan/IR/PlanOps.h"
 #include "sim/Dialect/Sim/IR/SimDialect.h"
 #include "sim/Dialect/Sim/Transforms/Passes.h"
 #include "sim/Pipelines/Pipelines.h"
@@ -22,15 +24,18 @@ int main(int argc, char **argv) {
   mlir::DialectRegistry registry;
   registry.insert<mlir::sim::SimDialect, mlir::arith::ArithDialect,
                   mlir::math::MathDialect, mlir::scf::SCFDialect,
-                  mlir::vector::VectorDialect>();
+                  mlir::vector::VectorDialect, mlir::simplan::PlanDialect,
+                  mlir::gpu::GPUDialect, mlir::memref::MemRefDialect>();
 
   mlir::sim::registerSimPasses();
+  mlir::sim::registerSimConversionPasses();
   mlir::sim::registerSimPipelines();
   // Upstream passes that are useful on scenes.
   mlir::registerCanonicalizerPass();
   mlir::registerCSEPass();
   mlir::registerSymbolDCEPass();
   mlir::registerInlinerPass();
+  mlir::registerLoopInvariantCodeMotionPass();
 
   return mlir::asMainReturnCode(mlir::MlirOptMain(
       argc, argv, "sim optimizer driver: scenes in the sim dialect\n",

@@ -1,0 +1,61 @@
+//===- Passes.td - sim conversion passes -------------------*- tablegen -*-===//
+//
+// The conversions out of the sim dialect (CIRCT's layout: one Passes.td for
+// all conversions). docs/Passes.md is generated from this file too.
+//
+//===----------------------------------------------------------------------===//
+
+#ifndef SIM_CONVERSION_PASSES_TD
+#define SIM_CONVERSION_PASSES_TD
+
+include "mlir/Pass/PassBase.td"
+
+def SimLowerToGPU : Pass<"sim-lower-to-gpu", "::mlir::ModuleOp"> {
+  let summary = "Lower simulations to GPU kernels and a host plan";
+  let description = [{
+    Turns every `sim.simulation` that went through the front end
+    (`--sim-front-end{strategy=...}`) into a `gpu.module @<name>_kernels` of
+    kernels and a `simplan.plan @<name>` that says how to run them
+    (docs/Plan.md), and erases the simulation. It reads the decisions the
+    front end recorded (strategy, schedule, step bounds, sub-stepping,
+    parity, snapshots, caches) and derives none of them again.
+
+    - `simple` and `traditional`: one kernel per component that evaluates
+      every item once with `n = m` (`traditional` first runs an estimate
+      kernel per component with `num_steps`).
+    - `hip`: estimate kernels for the components in `bounded_by`; an
+      `in_kernel` component with `num_steps` runs Algorithm 2 in one kernel:
+      own state in registers, sub-steps of the group-wide minimum of
+      `num_steps` (`gpu.subgroup_reduce minsi ... uniform`, then
+      `memref.atomic_rmw mins` on workgroup memory), the target written once;
+      when `m = 1` it skips `num_steps` and the reduction. A `grid_sync`
+      component with `num_steps` runs `max_steps` rounds of launches
+      (estimate, decide, sub-step) with a grid-wide sub-step decided on the
+      device, a snapshot before and a parity copy after.
+    - `hip-cache`: as `hip`, and each recorded cache is filled with the
+      interpolated values of the group's window once per sub-step, between
+      barriers; reads inside the window come from it, others from global
+      memory.
+
+    The size of every big step is decided on the device: estimate kernels
+    reduce into a device-resident clock, a one-thread kernel turns the
+    minimum into `m`, and every kernel reads `T` and `m` from the clock and
+    does nothing once the run has reached its end. `range`, `dt`,
+    `max_steps` and every `sim.param` are kernel arguments.
+
+    ```
+    sim-opt scene.mlir --sim-front-end=strategy=hip --sim-lower-to-gpu
+    ```
+  }];
+  let options = [
+    Option<"groupSize", "group-size", "int64_t", "256",
+           "Threads per group the plan is made for (a multiple of 32)">,
+  ];
+  let dependentDialects = [
+    "::mlir::arith::ArithDialect", "::mlir::gpu::GPUDialect",
+    "::mlir::memref::MemRefDialect", "::mlir::scf::SCFDialect",
+    "::mlir::simplan::PlanDialect"
+  ];
+}
+
+#endif // SIM_CONVERSION_PASSES_TD

@@ -1,0 +1,71 @@
+//===- KernelBody.h - inlining sim bodies into kernels ----------*- C++ -*-===//
+//
+// The part of lowering a simulation that the GPU and the CPU conversion
+// share: turning one `sim` body (init, exact, num_steps, evaluate) into
+// plain arith/memref code at a given point of a kernel. A conversion says,
+// for one kernel, where every copy of every buffer lives and what the time
+// and parameter ops stand for (KernelValues); the body's own arithmetic is
+// cloned unchanged. Addressing, boundary rules and initial-state reads are
+// written once, here.
+//
+//===----------------------------------------------------------------------===//
+
+#ifndef SIM_CONVERSION_SIMCOMMON_KERNELBODY_H
+#define SIM_CONVERSION_SIMCOMMON_KERNELBODY_H
+
+#include "sim/Dialect/Sim/IR/SimOps.h"
+
+#include "mlir/IR/Builders.h"
+#include "llvm/ADT/StringMap.h"
+
+namespace mlir::sim {
+
+/// What the sim ops of a body stand for in one kernel.
+struct KernelValues {
+  /// The number of items (index).
+  Value range;
+  /// Parameter values by name, including the builtins `range` (i64), `dt`
+  /// and `max_steps` (i64). `sim.get_param` converts to the type it asks for.
+  llvm::StringMap<Value> params;
+  /// Per buffer name: its storage of both halves (`2 * range` elements).
+  llvm::DenseMap<StringAttr, Value> buffers;
+  /// Per buffer name: its snapshot (`range` elements), if planned.
+  llvm::DenseMap<StringAttr, Value> snapshots;
+  /// Element offsets of the half that `source`, `target` and (without
+  /// registers) `local` loads read.
+  Value sourceBase, targetBase, localBase;
+  /// Own state kept in registers: `local` loads of these buffers return the
+  /// value instead of reading memory. Only valid for components that read
+  /// their own buffers at their own item (`sub_stepping = in_kernel`).
+  llvm::DenseMap<StringAttr, Value> registers;
+  /// The item the body runs for; loads at exactly this index skip the
+  /// boundary rule.
+  Value item;
+  /// `sim.big_step` (i64 values); null where a body cannot ask for it.
+  Value bigStepBegin, bigStepSize;
+};
+
+/// Returns the item index that a read of `index` actually reads under
+/// `buffer`'s boundary rule. For `zero`, `inBounds` receives an i1 that is
+/// false when the read must return zero (else it is left null).
+Value applyBoundary(OpBuilder &builder, Location loc, BufferOp buffer,
+                    Value index, Value range, Value &inBounds);
+
+/// Returns the zero element of `type` (a float or a vector of floats).
+Value buildZeroElement(OpBuilder &builder, Location loc, Type type);
+
+/// Clones the single block of `body` at the builder's insertion point with
+/// its arguments replaced by `arguments`, lowers every sim op in the clone
+/// with `values`, and returns the values the body yields. `sim.read` (in init
+/// and exact bodies) reads initial states: the read buffer's init body is
+/// inlined at the read item. Emits an error at the offending op and fails
+/// when a sim op has no meaning in this kernel (for example `sim.big_step`
+/// where `values` has none).
+FailureOr<SmallVector<Value>> inlineBody(OpBuilder &builder,
+                                         SimulationOp simulation, Region &body,
+                                         ValueRange arguments,
+                                         const KernelValues &values);
+
+} // namespace mlir::sim
+
+#endif // SIM_CONVERSION_SIMCOMMON_KERNELBODY_H

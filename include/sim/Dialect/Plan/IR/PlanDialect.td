@@ -1,0 +1,48 @@
+//===- PlanDialect.td - the simplan dialect definition -----*- tablegen -*-===//
+//
+// The host side of a lowered simulation: what the runtime allocates, which
+// kernels it launches in which order with which arguments, and how a big step
+// repeats. docs/Plan.md explains how a runtime executes it.
+//
+//===----------------------------------------------------------------------===//
+
+#ifndef SIM_DIALECT_PLAN_IR_PLANDIALECT_TD
+#define SIM_DIALECT_PLAN_IR_PLANDIALECT_TD
+
+include "mlir/IR/DialectBase.td"
+
+def Plan_Dialect : Dialect {
+  let name = "simplan";
+  let cppNamespace = "::mlir::simplan";
+  let summary = "The host plan of a lowered simulation";
+  let description = [{
+    `--sim-lower-to-gpu` turns a `sim.simulation` into kernels (a
+    `gpu.module`) and a `simplan.plan`: the host side of Algorithm 2 and of
+    the baselines. A plan names the buffers to allocate, the scene
+    parameters, the device-resident clock, and three phases of kernel
+    launches: `init` (once), `step` (one big step, repeated until the clock
+    reaches the end of the run) and `finish` (once, after the last big step).
+    Every decision that depends on the state (the size of the next big step,
+    the number of sub-steps) is taken on the device and kept in the clock, so
+    the host never reads a value back between big steps and can launch many
+    big steps ahead.
+
+    ```mlir
+    simplan.plan @decay strategy("hip") kernels(@decay_kernels) range(1024)
+        dt(1.0e-2 : f32) max_steps(4) group_size(256) clock_slots(14) {
+      simplan.buffer @X : f32 stride(4) observed
+      simplan.phase init {
+        simplan.launch @decay_kernels::@init_X items
+            [#simplan.arg<clock>, #simplan.arg<buffer @X>, #simplan.arg<range>]
+      }
+      ...
+    }
+    ```
+  }];
+  let useDefaultAttributePrinterParser = 1;
+  let extraClassDeclaration = [{
+    void registerAttributes();
+  }];
+}
+
+#endif // SIM_DIALECT_PLAN_IR_PLANDIALECT_TD

@@ -1,0 +1,265 @@
+//===- PlanOps.td - simplan operations and attributes ------*- tablegen -*-===//
+//
+// A plan is a symbol table of buffers and parameters plus phases of kernel
+// launches. It holds no computation: every number a kernel needs at run time
+// (the range, dt, the parameters, the clock) is a launch argument.
+//
+//===----------------------------------------------------------------------===//
+
+#ifndef SIM_DIALECT_PLAN_IR_PLANOPS_TD
+#define SIM_DIALECT_PLAN_IR_PLANOPS_TD
+
+include "sim/Dialect/Plan/IR/PlanDialect.td"
+include "mlir/IR/AttrTypeBase.td"
+include "mlir/IR/BuiltinAttributeInterfaces.td"
+include "mlir/IR/EnumAttr.td"
+include "mlir/IR/OpBase.td"
+include "mlir/IR/RegionKindInterface.td"
+include "mlir/IR/SymbolInterfaces.td"
+
+//===----------------------------------------------------------------------===//
+// Enumerations and attributes
+//===----------------------------------------------------------------------===//
+
+def Plan_PhaseKind : I32Enum<"PhaseKind", "when a phase runs", [
+    I32EnumCase<"init", 0>, I32EnumCase<"step", 1>, I32EnumCase<"finish", 2>,
+    I32EnumCase<"exact", 3>]> {
+  let cppNamespace = "::mlir::simplan";
+  let description = [{
+    `init` runs once before the first big step; `step` is one big step and is
+    repeated until the clock reaches the end of the run; `finish` runs once
+    after the last big step of a run; `exact` evaluates the exact solution of
+    the buffers that declare one, at a time given by the runtime.
+  }];
+}
+def Plan_PhaseKindAttr : EnumAttr<Plan_Dialect, Plan_PhaseKind, "phase"> {
+  let assemblyFormat = "`` $value";
+}
+
+def Plan_LaunchShape : I32Enum<"LaunchShape", "the grid of a launch", [
+    I32EnumCase<"items", 0>, I32EnumCase<"single", 1>]> {
+  let cppNamespace = "::mlir::simplan";
+  let description = [{
+    `items`: one thread per item, in groups of the run's group size; the grid
+    is `ceil(range / group size)` groups (a runtime may launch fewer: kernels
+    loop over the padded range with a grid stride). `single`: one group of
+    one thread (the clock updates).
+  }];
+}
+def Plan_LaunchShapeAttr : EnumAttr<Plan_Dialect, Plan_LaunchShape, "shape"> {
+  let assemblyFormat = "`` $value";
+}
+
+def Plan_ArgKind : I32Enum<"ArgKind", "what a launch argument is", [
+    I32EnumCase<"clock", 0>, I32EnumCase<"buffer", 1>,
+    I32EnumCase<"snapshot", 2>, I32EnumCase<"exact", 3>,
+    I32EnumCase<"param", 4>, I32EnumCase<"range", 5>, I32EnumCase<"dt", 6>,
+    I32EnumCase<"max_steps", 7>, I32EnumCase<"time", 8>]> {
+  let cppNamespace = "::mlir::simplan";
+  let description = [{
+    `clock`: the clock (`memref<?xi64>`, `clock_slots` entries). `buffer @B`:
+    both halves of buffer B (`memref<?xT>`, `2 * range` elements; half `h`
+    starts at element `h * range`). `snapshot @B`: B's snapshot (`range`
+    elements). `exact @B`: the output of B's exact solution (`range`
+    elements). `param @P`: the run-time value of parameter P (its type).
+    `range`: the item count (`i64`). `dt`: the base time step (the plan's dt
+    type). `max_steps`: the largest big step (`i64`). `time`: the time of an
+    exact solution, in time units (`f64`).
+  }];
+}
+
+def Plan_ArgAttr : AttrDef<Plan_Dialect, "Arg"> {
+  let mnemonic = "arg";
+  let summary = "one argument of a kernel launch";
+  let description = [{
+    Names what the runtime passes for one kernel argument, in order. A memref
+    argument is passed as the five values of its descriptor (allocated
+    pointer, aligned pointer, offset 0, size, stride 1); a scalar as itself.
+
+    ```mlir
+    [#simplan.arg<clock>, #simplan.arg<buffer @B0>, #simplan.arg<param @L>]
+    ```
+  }];
+  let parameters = (ins EnumParameter<Plan_ArgKind>:$kind,
+                        OptionalParameter<"::mlir::FlatSymbolRefAttr">:$name);
+  let hasCustomAssemblyFormat = 1;
+  let genVerifyDecl = 1;
+}
+
+//===----------------------------------------------------------------------===//
+// Operations
+//===----------------------------------------------------------------------===//
+
+class Plan_Op<string mnemonic, list<Trait> traits = []>
+    : Op<Plan_Dialect, mnemonic, traits>;
+
+def Plan_PlanOp : Plan_Op<"plan", [
+    Symbol, SymbolTable, IsolatedFromAbove, NoTerminator, SingleBlock,
+    NoRegionArguments]> {
+  let summary = "the host plan of one simulation and one strategy";
+  let description = [{
+    The buffers, parameters, components and phases of one lowered
+    simulation. `kernels` names the `gpu.module` whose kernels the launches
+    call. `range`, `dt` and the parameters' values are defaults: they are
+    launch arguments, so a runtime may change them without recompiling.
+    `max_steps` and `group_size` are the values the kernels were planned for
+    (the clock holds a histogram of big-step sizes up to `max_steps`).
+    `clock_slots` is the number of `i64` entries of the clock; docs/Plan.md
+    gives its layout (`T`, `m`, the parity, the end of the run, the pending
+    estimate, the big steps taken, evaluation counters, sub-step clocks and
+    the histogram).
+
+    ```mlir
+    simplan.plan @rod strategy("hip") kernels(@rod_kernels) range(1024)
+        dt(1.0e-3 : f32) max_steps(4) group_size(256) clock_slots(20) {
+      simplan.param @k = 2.0 : f32
+      simplan.buffer @Q : f32 stride(4)
+      simplan.buffer @T : f32 stride(4) observed
+      simplan.component @Heater evaluations(8)
+      simplan.phase init { ... }
+      simplan.phase step { ... }
+      simplan.phase finish { ... }
+    }
+    ```
+  }];
+  let arguments = (ins SymbolNameAttr:$sym_name, StrAttr:$strategy,
+                       FlatSymbolRefAttr:$kernels, I64Attr:$range,
+                       TypedAttrInterface:$dt, I64Attr:$max_steps,
+                       I64Attr:$group_size, I64Attr:$clock_slots,
+                       I64Attr:$histogram_slot);
+  let regions = (region SizedRegion<1>:$body);
+  let assemblyFormat = [{
+    $sym_name `strategy` `(` $strategy `)` `kernels` `(` $kernels `)`
+    `range` `(` $range `)` `dt` `(` $dt `)` `max_steps` `(` $max_steps `)`
+    `group_size` `(` $group_size `)` `clock_slots` `(` $clock_slots `)`
+    `histogram` `(` $histogram_slot `)` attr-dict-with-keyword $body
+  }];
+  let hasRegionVerifier = 1;
+  let extraClassDeclaration = [{
+    ::mlir::Block &getBlock() { return getBody().front(); }
+  }];
+}
+
+def Plan_ParamOp : Plan_Op<"param", [Symbol, HasParent<"PlanOp">]> {
+  let summary = "a scene parameter passed to kernels at run time";
+  let description = [{
+    A `sim.param` of the scene with its default value. Launches pass the
+    run-time value (`#simplan.arg<param @P>`).
+
+    ```mlir
+    simplan.param @L = 256 : i32
+    ```
+  }];
+  let arguments = (ins SymbolNameAttr:$sym_name, TypedAttrInterface:$value);
+  let assemblyFormat = "$sym_name `=` $value attr-dict";
+}
+
+def Plan_BufferOp : Plan_Op<"buffer", [Symbol, HasParent<"PlanOp">]> {
+  let summary = "a double-buffered state buffer to allocate";
+  let description = [{
+    A buffer of `range` elements, allocated as two halves (`2 * range`
+    elements of `stride` bytes). Which half holds the state at `T` is the
+    clock's parity. `snapshot`: also allocate a snapshot of `range` elements.
+    `observed`: the buffer is an output of the scene. `exact`: the scene
+    declares its exact solution (the `exact` phase computes it into a
+    separate array of `range` elements).
+
+    ```mlir
+    simplan.buffer @B0 : vector<4xf32> stride(16) snapshot observed
+    ```
+  }];
+  let arguments = (ins SymbolNameAttr:$sym_name, TypeAttr:$element_type,
+                       I64Attr:$stride, UnitAttr:$snapshot, UnitAttr:$observed,
+                       UnitAttr:$exact);
+  let assemblyFormat = [{
+    $sym_name `:` $element_type `stride` `(` $stride `)`
+    (`snapshot` $snapshot^)? (`observed` $observed^)? (`exact` $exact^)?
+    attr-dict
+  }];
+}
+
+def Plan_ComponentOp : Plan_Op<"component", [Symbol, HasParent<"PlanOp">]> {
+  let summary = "a component and the clock slot that counts its evaluations";
+  let description = [{
+    Each kernel that evaluates the component adds the number of item
+    evaluations it performed to clock slot `evaluations`.
+
+    ```mlir
+    simplan.component @C0 evaluations(8)
+    ```
+  }];
+  let arguments = (ins SymbolNameAttr:$sym_name, I64Attr:$evaluations);
+  let assemblyFormat = "$sym_name `evaluations` `(` $evaluations `)` attr-dict";
+}
+
+def Plan_PhaseOp : Plan_Op<"phase", [HasParent<"PlanOp">, NoTerminator,
+    SingleBlock, NoRegionArguments]> {
+  let summary = "a sequence of launches that runs at one point of a run";
+  let description = [{
+    The launches of the phase in order; each one starts after the previous
+    one finished (one CUDA stream, or a CUDA graph of the phase).
+
+    ```mlir
+    simplan.phase step {
+      simplan.launch @k::@estimate_C0 items [...]
+      simplan.launch @k::@advance single [...]
+      simplan.launch @k::@step_C0 items [...]
+    }
+    ```
+  }];
+  let arguments = (ins Plan_PhaseKindAttr:$kind);
+  let regions = (region SizedRegion<1>:$body);
+  let assemblyFormat = "$kind attr-dict-with-keyword $body";
+}
+
+def Plan_RepeatOp : Plan_Op<"repeat", [NoTerminator, SingleBlock,
+    NoRegionArguments, ParentOneOf<["PhaseOp", "RepeatOp"]>]> {
+  let summary = "a fixed number of repetitions of some launches";
+  let description = [{
+    Runs the nested launches `count` times in order. The sub-steps of a
+    component that needs a grid-wide barrier between sub-steps are such
+    rounds: at most `max_steps` of them, each deciding its size on the
+    device; rounds after the last sub-step do nothing.
+
+    ```mlir
+    simplan.repeat 3 {
+      simplan.launch @k::@substep_estimate_C1 items [...]
+      simplan.launch @k::@substep_advance_C1 single [...]
+      simplan.launch @k::@substep_C1 items [...]
+    }
+    ```
+  }];
+  let arguments = (ins ConfinedAttr<I64Attr, [IntMinValue<1>]>:$count);
+  let regions = (region SizedRegion<1>:$body);
+  let assemblyFormat = "$count attr-dict-with-keyword $body";
+}
+
+def Plan_LaunchOp : Plan_Op<"launch", [
+    ParentOneOf<["PhaseOp", "RepeatOp"]>,
+    DeclareOpInterfaceMethods<SymbolUserOpInterface>]> {
+  let summary = "a kernel launch";
+  let description = [{
+    Launches `kernel` (a `gpu.func` in the plan's `gpu.module`) with the
+    given shape. `args` lists, in order, what the runtime passes for each
+    kernel argument. `shared_per_thread` and `shared_fixed` give the dynamic
+    shared memory in bytes: `shared_per_thread * group size + shared_fixed`
+    (both 0 when the kernel needs none; static workgroup memory is part of
+    the kernel).
+
+    ```mlir
+    simplan.launch @k::@step_C1 items
+        [#simplan.arg<clock>, #simplan.arg<buffer @B0>, #simplan.arg<range>]
+        shared(16, 128)
+    ```
+  }];
+  let arguments = (ins SymbolRefAttr:$kernel, Plan_LaunchShapeAttr:$shape,
+                       TypedArrayAttrBase<Plan_ArgAttr, "launch arguments">:$args,
+                       DefaultValuedAttr<I64Attr, "0">:$shared_per_thread,
+                       DefaultValuedAttr<I64Attr, "0">:$shared_fixed);
+  let assemblyFormat = [{
+    $kernel $shape $args
+    (`shared` `(` $shared_per_thread^ `,` $shared_fixed `)`)? attr-dict
+  }];
+}
+
+#endif // SIM_DIALECT_PLAN_IR_PLANOPS_TD

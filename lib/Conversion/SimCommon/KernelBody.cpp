@@ -1,0 +1,242 @@
+//===- KernelBody.cpp - inlining sim bodies into kernels ------------------===//
+//
+// Bodies are cloned, not converted op by op: everything but the handful of
+// sim ops is plain arith/math/scf/vector code that every backend compiles as
+// it is. The sim ops are replaced right after cloning, while it is known
+// which kernel values they stand for (a component body is inlined more than
+// once per kernel, with different values each time: an estimate reads the
+// state at T, a sub-step its registers).
+//
+//===----------------------------------------------------------------------===//
+
+#include "sim/Conversion/SimCommon/KernelBody.h"
+
+#include "mlir/Dialect/Arith/IR/Arith.h"
+#include "mlir/Dialect/MemRef/IR/MemRef.h"
+#include "mlir/IR/IRMapping.h"
+
+using namespace mlir;
+using namespace mlir::sim;
+
+Value mlir::sim::buildZeroElement(OpBuilder &builder, Location loc,
+                                  Type type) {
+  return arith::ConstantOp::create(builder, loc, type,
+                                   builder.getZeroAttr(type));
+}
+
+Value mlir::sim::applyBoundary(OpBuilder &builder, Location loc,
+                               BufferOp buffer, Value index, Value range,
+                               Value &inBounds) {
+  Value zero = arith::ConstantIndexOp::create(builder, loc, 0);
+  switch (buffer.getBoundary()) {
+  case Boundary::clamp: {
+    Value one = arith::ConstantIndexOp::create(builder, loc, 1);
+    Value last = arith::SubIOp::create(builder, loc, range, one);
+    Value low = arith::MaxSIOp::create(builder, loc, index, zero);
+    return arith::MinSIOp::create(builder, loc, low, last);
+  }
+  case Boundary::wrap: {
+    // remsi keeps the sign of the dividend: move negative remainders up.
+    Value rem = arith::RemSIOp::create(builder, loc, index, range);
+    Value negative = arith::CmpIOp::create(
+        builder, loc, arith::CmpIPredicate::slt, rem, zero);
+    Value up = arith::AddIOp::create(builder, loc, rem, range);
+    return arith::SelectOp::create(builder, loc, negative, up, rem);
+  }
+  case Boundary::zero: {
+    // One unsigned compare covers both ends (negative indices wrap high).
+    inBounds = arith::CmpIOp::create(builder, loc, arith::CmpIPredicate::ult,
+                                     index, range);
+    return arith::SelectOp::create(builder, loc, inBounds, index, zero);
+  }
+  }
+  llvm_unreachable("unknown boundary rule");
+}
+
+/// Converts a parameter value to the type a `sim.get_param` asks for (the
+/// builtins are passed as i64 and may be read as index or i32).
+static Value castParam(OpBuilder &builder, Location loc, Value value,
+                       Type type) {
+  Type from = value.getType();
+  if (from == type)
+    return value;
+  if (isa<IndexType>(type) || isa<IndexType>(from))
+    return arith::IndexCastOp::create(builder, loc, type, value);
+  if (isa<IntegerType>(from) && isa<IntegerType>(type)) {
+    if (from.getIntOrFloatBitWidth() < type.getIntOrFloatBitWidth())
+      return arith::ExtSIOp::create(builder, loc, type, value);
+    return arith::TruncIOp::create(builder, loc, type, value);
+  }
+  if (isa<FloatType>(from) && isa<FloatType>(type)) {
+    if (from.getIntOrFloatBitWidth() < type.getIntOrFloatBitWidth())
+      return arith::ExtFOp::create(builder, loc, type, value);
+    return arith::TruncFOp::create(builder, loc, type, value);
+  }
+  return nullptr;
+}
+
+namespace {
+
+/// Replaces the sim ops of one cloned body.
+class BodyLowering {
+public:
+  BodyLowering(SimulationOp simulation, const KernelValues &values)
+      : simulation(simulation), values(values) {}
+
+  FailureOr<Value> lower(OpBuilder &builder, Operation *op) {
+    Location loc = op->getLoc();
+    if (auto param = dyn_cast<GetParamOp>(op)) {
+      Value value = values.params.lookup(param.getParam());
+      if (!value)
+        return op->emitOpError() << "reads a parameter the kernel has no "
+                                    "value for";
+      Value cast = castParam(builder, loc, value, param.getType());
+      if (!cast)
+        return op->emitOpError() << "cannot convert the parameter's run-time "
+                                 << value.getType() << " to "
+                                 << param.getType();
+      return cast;
+    }
+    if (auto load = dyn_cast<LoadOp>(op))
+      return lowerLoad(builder, load);
+    if (auto read = dyn_cast<ReadOp>(op))
+      return lowerInitialRead(builder, read);
+    return op->emitOpError() << "cannot be lowered here";
+  }
+
+private:
+  FailureOr<Value> lowerLoad(OpBuilder &builder, LoadOp load) {
+    Location loc = load.getLoc();
+    StringAttr name = load.getBufferAttr().getAttr();
+    BufferOp buffer = simulation.lookupBuffer(load.getBufferAttr());
+    Version version = load.getVersion();
+    if (version == Version::local)
+      if (Value value = values.registers.lookup(name))
+        return value;
+
+    Value memory, base;
+    switch (version) {
+    case Version::source:
+      memory = values.buffers.lookup(name);
+      base = values.sourceBase;
+      break;
+    case Version::target:
+      memory = values.buffers.lookup(name);
+      base = values.targetBase;
+      break;
+    case Version::local:
+      memory = values.buffers.lookup(name);
+      base = values.localBase;
+      break;
+    case Version::snapshot:
+      memory = values.snapshots.lookup(name);
+      break;
+    }
+    if (!memory || (version != Version::snapshot && !base))
+      return load.emitOpError()
+             << "reads the " << stringifyVersion(version) << " copy of @"
+             << buffer.getSymName() << ", which this kernel does not have";
+
+    Value index = load.getIndex();
+    Value inBounds;
+    if (index != values.item)
+      index = applyBoundary(builder, loc, buffer, index, values.range,
+                            inBounds);
+    if (base)
+      index = arith::AddIOp::create(builder, loc, base, index);
+    Value value = memref::LoadOp::create(builder, loc, memory, index);
+    if (inBounds)
+      value = arith::SelectOp::create(
+          builder, loc, inBounds, value,
+          buildZeroElement(builder, loc, value.getType()));
+    return value;
+  }
+
+  /// A read in an init or exact body sees the initial state: the read
+  /// buffer's init body at the read item. Init bodies are pure functions of
+  /// the item (the verifier rejects cycles between them), so recomputing it
+  /// needs neither a copy of the initial state nor an order of init kernels.
+  FailureOr<Value> lowerInitialRead(OpBuilder &builder, ReadOp read) {
+    Location loc = read.getLoc();
+    BufferOp buffer = simulation.lookupBuffer(read.getBufferAttr());
+    if (read.getRoleAttr())
+      return read.emitOpError()
+             << "is a view read of a component; run --sim-insert-interpolation "
+                "before lowering";
+    Value inBounds;
+    Value index = read.getIndex();
+    if (index != values.item)
+      index = applyBoundary(builder, loc, buffer, index, values.range,
+                            inBounds);
+    KernelValues initValues;
+    initValues.range = values.range;
+    initValues.params = values.params;
+    initValues.item = index;
+    FailureOr<SmallVector<Value>> results = inlineBody(
+        builder, simulation, buffer.getInit(), {index}, initValues);
+    if (failed(results))
+      return failure();
+    Value value = results->front();
+    if (inBounds)
+      value = arith::SelectOp::create(
+          builder, loc, inBounds, value,
+          buildZeroElement(builder, loc, value.getType()));
+    return value;
+  }
+
+  SimulationOp simulation;
+  const KernelValues &values;
+};
+
+} // namespace
+
+FailureOr<SmallVector<Value>>
+mlir::sim::inlineBody(OpBuilder &builder, SimulationOp simulation,
+                      Region &body, ValueRange arguments,
+                      const KernelValues &values) {
+  if (!body.hasOneBlock())
+    return emitError(body.getLoc()) << "a body with more than one block "
+                                       "cannot be lowered";
+  Block &block = body.front();
+  IRMapping mapping;
+  mapping.map(block.getArguments(), arguments);
+  SmallVector<Operation *> simOps;
+  for (Operation &op : block.without_terminator()) {
+    Operation *clone = builder.clone(op, mapping);
+    clone->walk([&](Operation *nested) {
+      if (isa<SimDialect>(nested->getDialect()))
+        simOps.push_back(nested);
+    });
+  }
+  SmallVector<Value> results;
+  for (Value value : block.getTerminator()->getOperands())
+    results.push_back(mapping.lookupOrDefault(value));
+
+  BodyLowering lowering(simulation, values);
+  for (Operation *op : simOps) {
+    OpBuilder::InsertionGuard guard(builder);
+    builder.setInsertionPoint(op);
+    SmallVector<Value> replacements;
+    if (auto bigStep = dyn_cast<BigStepOp>(op)) {
+      if (!values.bigStepBegin)
+        return op->emitOpError()
+               << "asks for the big step in a body that runs before the big "
+                  "step is decided";
+      replacements = {values.bigStepBegin, values.bigStepSize};
+    } else {
+      FailureOr<Value> value = lowering.lower(builder, op);
+      if (failed(value))
+        return failure();
+      replacements = {*value};
+    }
+    for (auto [result, replacement] :
+         llvm::zip_equal(op->getResults(), replacements)) {
+      result.replaceAllUsesWith(replacement);
+      for (Value &yielded : results)
+        if (yielded == result)
+          yielded = replacement;
+    }
+    op->erase();
+  }
+  return results;
+}
