@@ -18,8 +18,7 @@
 using namespace mlir;
 using namespace mlir::sim;
 
-Value mlir::sim::buildZeroElement(OpBuilder &builder, Location loc,
-                                  Type type) {
+Value mlir::sim::buildZeroElement(OpBuilder &builder, Location loc, Type type) {
   return arith::ConstantOp::create(builder, loc, type,
                                    builder.getZeroAttr(type));
 }
@@ -92,9 +91,9 @@ public:
                                     "value for";
       Value cast = castParam(builder, loc, value, param.getType());
       if (!cast)
-        return op->emitOpError() << "cannot convert the parameter's run-time "
-                                 << value.getType() << " to "
-                                 << param.getType();
+        return op->emitOpError()
+               << "cannot convert the parameter's run-time " << value.getType()
+               << " to " << param.getType();
       return cast;
     }
     if (auto load = dyn_cast<LoadOp>(op))
@@ -140,8 +139,8 @@ private:
     Value index = load.getIndex();
     Value inBounds;
     if (index != values.item)
-      index = applyBoundary(builder, loc, buffer, index, values.range,
-                            inBounds);
+      index =
+          applyBoundary(builder, loc, buffer, index, values.range, inBounds);
     if (base)
       index = arith::AddIOp::create(builder, loc, base, index);
     Value value = memref::LoadOp::create(builder, loc, memory, index);
@@ -166,14 +165,14 @@ private:
     Value inBounds;
     Value index = read.getIndex();
     if (index != values.item)
-      index = applyBoundary(builder, loc, buffer, index, values.range,
-                            inBounds);
+      index =
+          applyBoundary(builder, loc, buffer, index, values.range, inBounds);
     KernelValues initValues;
     initValues.range = values.range;
     initValues.params = values.params;
     initValues.item = index;
-    FailureOr<SmallVector<Value>> results = inlineBody(
-        builder, simulation, buffer.getInit(), {index}, initValues);
+    FailureOr<SmallVector<Value>> results =
+        inlineBody(builder, simulation, buffer.getInit(), {index}, initValues);
     if (failed(results))
       return failure();
     Value value = results->front();
@@ -191,9 +190,8 @@ private:
 } // namespace
 
 FailureOr<SmallVector<Value>>
-mlir::sim::inlineBody(OpBuilder &builder, SimulationOp simulation,
-                      Region &body, ValueRange arguments,
-                      const KernelValues &values) {
+mlir::sim::inlineBody(OpBuilder &builder, SimulationOp simulation, Region &body,
+                      ValueRange arguments, const KernelValues &values) {
   if (!body.hasOneBlock())
     return emitError(body.getLoc()) << "a body with more than one block "
                                        "cannot be lowered";

@@ -72,15 +72,24 @@ struct KernelBuilder : OpBuilder {
   KernelBuilder(MLIRContext *context, Location loc)
       : OpBuilder(context), loc(loc) {}
 
-  Value index(int64_t value) {
-    return arith::ConstantIndexOp::create(*this, loc, value);
+  /// Starts a new kernel: constants are created once, at its entry.
+  void startKernel(Block *entry) {
+    kernelEntry = entry;
+    constants.clear();
   }
-  Value i64(int64_t value) {
-    return arith::ConstantIntOp::create(*this, loc, getI64Type(), value);
+  Value constant(Type type, int64_t value) {
+    Value &cached = constants[{type, value}];
+    if (!cached) {
+      InsertionGuard guard(*this);
+      setInsertionPointToStart(kernelEntry);
+      cached = arith::ConstantOp::create(*this, loc, type,
+                                         getIntegerAttr(type, value));
+    }
+    return cached;
   }
-  Value i32(int64_t value) {
-    return arith::ConstantIntOp::create(*this, loc, getI32Type(), value);
-  }
+  Value index(int64_t value) { return constant(getIndexType(), value); }
+  Value i64(int64_t value) { return constant(getI64Type(), value); }
+  Value i32(int64_t value) { return constant(getI32Type(), value); }
   Value add(Value a, Value b) {
     return arith::AddIOp::create(*this, loc, a, b);
   }
@@ -168,6 +177,8 @@ struct KernelBuilder : OpBuilder {
   }
 
   Location loc;
+  Block *kernelEntry = nullptr;
+  llvm::DenseMap<std::pair<Type, int64_t>, Value> constants;
 };
 
 /// One kernel under construction.
@@ -277,18 +288,16 @@ LogicalResult SimulationLowering::checkFrontEnd() {
   }
   for (ParamOp param : simulation.getParams()) {
     Type type = cast<TypedAttr>(param.getValue()).getType();
-    if (!type.isInteger(32) && !type.isInteger(64) && !type.isF32() &&
-        !type.isF64())
+    if (!type.isInteger(32) && !type.isInteger(64) && !type.isIndex() &&
+        !type.isF32() && !type.isF64())
       return param.emitOpError()
              << "has type " << type
-             << ", which cannot be a kernel argument; use i32, i64, f32 or "
-                "f64";
+             << ", which a kernel cannot take as an argument; use i32, i64, "
+                "index, f32 or f64";
     params.push_back(param);
   }
   for (BufferOp buffer : simulation.getBuffers())
     buffers.push_back(buffer);
-  if (!isa<FloatType>(buffers.empty() ? Type() : buffers.front().getScalarType()))
-    return simulation.emitOpError() << "has no buffer to lower";
   return success();
 }
 
@@ -331,7 +340,8 @@ Kernel SimulationLowering::beginKernel(StringRef name, BufferOp exactOf) {
   kernel.args.push_back(arg(simplan::ArgKind::clock));
   for (BufferOp buffer : buffers) {
     types.push_back(dynamic(buffer.getElementType()));
-    kernel.args.push_back(arg(simplan::ArgKind::buffer, buffer.getSymNameAttr()));
+    kernel.args.push_back(
+        arg(simplan::ArgKind::buffer, buffer.getSymNameAttr()));
   }
   for (BufferOp buffer : buffers)
     if (buffer.getSnapshot()) {
@@ -341,10 +351,13 @@ Kernel SimulationLowering::beginKernel(StringRef name, BufferOp exactOf) {
     }
   if (exactOf) {
     types.push_back(dynamic(exactOf.getElementType()));
-    kernel.args.push_back(arg(simplan::ArgKind::exact, exactOf.getSymNameAttr()));
+    kernel.args.push_back(
+        arg(simplan::ArgKind::exact, exactOf.getSymNameAttr()));
   }
   for (ParamOp param : params) {
-    types.push_back(cast<TypedAttr>(param.getValue()).getType());
+    // An index parameter is passed as i64 (sim.get_param casts it back).
+    Type type = cast<TypedAttr>(param.getValue()).getType();
+    types.push_back(type.isIndex() ? b.getI64Type() : type);
     kernel.args.push_back(arg(simplan::ArgKind::param, param.getSymNameAttr()));
   }
   types.push_back(b.getI64Type());
@@ -357,12 +370,13 @@ Kernel SimulationLowering::beginKernel(StringRef name, BufferOp exactOf) {
   }
 
   b.setInsertionPointToEnd(kernels.getBody());
-  kernel.func = gpu::GPUFuncOp::create(b, b.loc, name,
-                                       b.getFunctionType(types, {}));
+  kernel.func =
+      gpu::GPUFuncOp::create(b, b.loc, name, b.getFunctionType(types, {}));
   kernel.func->setAttr(gpu::GPUDialect::getKernelFuncAttrName(),
                        b.getUnitAttr());
   Block &entry = kernel.func.getBody().front();
   b.setInsertionPointToStart(&entry);
+  b.startKernel(&entry);
 
   unsigned position = 0;
   auto next = [&] { return entry.getArgument(position++); };
@@ -412,9 +426,9 @@ LogicalResult SimulationLowering::endKernel(Kernel &kernel,
     if (!unused.test(index))
       args.push_back(arg);
 
-  auto kernelRef = SymbolRefAttr::get(
-      kernels.getSymNameAttr(),
-      {FlatSymbolRefAttr::get(kernel.func.getNameAttr())});
+  auto kernelRef =
+      SymbolRefAttr::get(kernels.getSymNameAttr(),
+                         {FlatSymbolRefAttr::get(kernel.func.getNameAttr())});
   simplan::LaunchOp::create(
       launches, b.loc, kernelRef,
       simplan::LaunchShapeAttr::get(b.getContext(), shape),
@@ -447,8 +461,7 @@ void SimulationLowering::setHalves(Kernel &kernel, Value parity,
 /// `active` tells the lanes that hold an item.
 SmallVector<Value> SimulationLowering::forEachItem(
     Kernel &kernel, ValueRange inits,
-    function_ref<SmallVector<Value>(Value item, Value active,
-                                    ValueRange iters)>
+    function_ref<SmallVector<Value>(Value item, Value active, ValueRange iters)>
         body) {
   Value range = kernel.values.range;
   Value groupId = gpu::BlockIdOp::create(b, b.loc, gpu::Dimension::x);
@@ -457,8 +470,8 @@ SmallVector<Value> SimulationLowering::forEachItem(
   Value thread = b.threadId();
   Value start = b.mul(groupId, groupSize);
   Value stride = b.mul(groups, groupSize);
-  Value padded = b.mul(
-      arith::CeilDivUIOp::create(b, b.loc, range, groupSize), groupSize);
+  Value padded =
+      b.mul(arith::CeilDivUIOp::create(b, b.loc, range, groupSize), groupSize);
   auto loop = scf::ForOp::create(b, b.loc, start, padded, stride, inits);
   OpBuilder::InsertionGuard guard(b);
   // The builder adds a terminator only for loops without results.
@@ -497,8 +510,8 @@ SmallVector<Value> SimulationLowering::inline_(Region &body, ValueRange args,
   // the yielded types.
   SmallVector<Value> zeros;
   for (Type type : body.front().getTerminator()->getOperandTypes())
-    zeros.push_back(arith::ConstantOp::create(b, b.loc, type,
-                                              b.getZeroAttr(type)));
+    zeros.push_back(
+        arith::ConstantOp::create(b, b.loc, type, b.getZeroAttr(type)));
   return zeros;
 }
 
@@ -511,8 +524,8 @@ SmallVector<Value> SimulationLowering::inline_(Region &body, ValueRange args,
 LogicalResult SimulationLowering::emitResetClock(OpBuilder &launches) {
   Kernel kernel = beginKernel("reset_clock");
   Value zero = b.i64(0);
-  auto loop = scf::ForOp::create(b, b.loc, b.index(0), b.index(clockSlots),
-                                 b.index(1));
+  auto loop =
+      scf::ForOp::create(b, b.loc, b.index(0), b.index(clockSlots), b.index(1));
   {
     OpBuilder::InsertionGuard guard(b);
     b.setInsertionPoint(loop.getBody()->getTerminator());
@@ -570,17 +583,15 @@ LogicalResult SimulationLowering::emitEstimate(ComponentOp component,
   readClock(kernel, begin, size, parity);
   Value stepped = b.cmp(arith::CmpIPredicate::sgt, size, b.i64(0));
   Value next = b.add(begin, size);
-  Value nextParity =
-      b.select(stepped, arith::XOrIOp::create(b, b.loc, parity, b.i64(1)),
-               parity);
+  Value nextParity = b.select(
+      stepped, arith::XOrIOp::create(b, b.loc, parity, b.i64(1)), parity);
   setHalves(kernel, nextParity, nextParity);
   Value end = b.slot(kernel.clock, kSlotEnd);
   Value pending = b.cmp(arith::CmpIPredicate::slt, next, end);
 
   auto slotType = MemRefType::get(
       {1}, b.getI32Type(), nullptr,
-      gpu::AddressSpaceAttr::get(b.getContext(),
-                                 gpu::AddressSpace::Workgroup));
+      gpu::AddressSpaceAttr::get(b.getContext(), gpu::AddressSpace::Workgroup));
   Value groupMin = kernel.func.addWorkgroupAttribution(slotType, b.loc);
   b.ifThen(pending, [&] {
     Value thread = b.threadId();
@@ -595,9 +606,9 @@ LogicalResult SimulationLowering::emitEstimate(ComponentOp component,
               [&] {
                 KernelValues values = kernel.values;
                 values.item = item;
-                Value steps = inline_(component.getNumSteps(), {item, next},
-                                      values)
-                                  .front();
+                Value steps =
+                    inline_(component.getNumSteps(), {item, next}, values)
+                        .front();
                 return SmallVector<Value>{b.max(steps, b.i32(1))};
               },
               [&] { return SmallVector<Value>{none}; });
@@ -632,11 +643,11 @@ LogicalResult SimulationLowering::emitAdvance(OpBuilder &launches,
   Value zero = b.i64(0), one = b.i64(1);
   Value stepped = b.cmp(arith::CmpIPredicate::sgt, size, zero);
   Value now = b.add(begin, size);
-  Value nowParity = b.select(
-      stepped, arith::XOrIOp::create(b, b.loc, parity, one), parity);
-  Value bigSteps = b.add(b.slot(clock, kSlotBigSteps),
-                         arith::ExtUIOp::create(b, b.loc, b.getI64Type(),
-                                                stepped));
+  Value nowParity =
+      b.select(stepped, arith::XOrIOp::create(b, b.loc, parity, one), parity);
+  Value bigSteps =
+      b.add(b.slot(clock, kSlotBigSteps),
+            arith::ExtUIOp::create(b, b.loc, b.getI64Type(), stepped));
   Value remaining = b.sub(b.slot(clock, kSlotEnd), now);
   Value cap = b.i64(strategy == Strategy::simple ? 1 : maxSteps);
   Value bound = hasEstimates ? b.min(b.slot(clock, kSlotEstimate), cap) : cap;
@@ -717,16 +728,15 @@ LogicalResult SimulationLowering::emitSubSteps(ComponentOp component,
   kernel.values.bigStepBegin = begin;
   kernel.values.bigStepSize = size;
   Value dt = kernel.values.params.lookup("dt");
-  auto writes = llvm::to_vector(
-      component.getWrites().getAsRange<FlatSymbolRefAttr>());
+  auto writes =
+      llvm::to_vector(component.getWrites().getAsRange<FlatSymbolRefAttr>());
   SmallVector<Type> stateTypes;
   for (FlatSymbolRefAttr name : writes)
     stateTypes.push_back(simulation.lookupBuffer(name).getElementType());
 
   auto slotType = MemRefType::get(
       {3}, b.getI32Type(), nullptr,
-      gpu::AddressSpaceAttr::get(b.getContext(),
-                                 gpu::AddressSpace::Workgroup));
+      gpu::AddressSpaceAttr::get(b.getContext(), gpu::AddressSpace::Workgroup));
   Value slots = kernel.func.addWorkgroupAttribution(slotType, b.loc);
   b.ifThen(b.cmp(arith::CmpIPredicate::sgt, size, b.i64(0)), [&] {
     Value thread = b.threadId();
@@ -766,15 +776,15 @@ LogicalResult SimulationLowering::emitSubSteps(ComponentOp component,
           llvm::append_range(types, stateTypes);
 
           auto loop = scf::WhileOp::create(b, b.loc, types, inits);
-          Block *before = b.createBlock(&loop.getBefore(), {}, types,
-                                        SmallVector<Location>(types.size(),
-                                                              b.loc));
-          Value more = b.cmp(arith::CmpIPredicate::slt,
-                             before->getArgument(0), end);
+          Block *before =
+              b.createBlock(&loop.getBefore(), {}, types,
+                            SmallVector<Location>(types.size(), b.loc));
+          Value more =
+              b.cmp(arith::CmpIPredicate::slt, before->getArgument(0), end);
           scf::ConditionOp::create(b, b.loc, more, before->getArguments());
-          Block *after = b.createBlock(&loop.getAfter(), {}, types,
-                                       SmallVector<Location>(types.size(),
-                                                             b.loc));
+          Block *after =
+              b.createBlock(&loop.getAfter(), {}, types,
+                            SmallVector<Location>(types.size(), b.loc));
           Value time = after->getArgument(0);
           Value subStep = after->getArgument(1);
           Value count = after->getArgument(2);
@@ -793,23 +803,23 @@ LogicalResult SimulationLowering::emitSubSteps(ComponentOp component,
                 auto estimate = b.ifThenElse(
                     b.getI32Type(), active,
                     [&] {
-                      Value steps = inline_(component.getNumSteps(),
-                                            {item, time}, values)
-                                        .front();
+                      Value steps =
+                          inline_(component.getNumSteps(), {item, time}, values)
+                              .front();
                       return SmallVector<Value>{b.max(steps, b.i32(1))};
                     },
                     [&] { return SmallVector<Value>{none}; });
                 Value warpMin = b.groupReduce(estimate.getResult(0),
                                               gpu::AllReduceOperation::MINSI);
                 Value three = b.index(3);
-                Value current = arith::RemUIOp::create(b, b.loc, subStep, three);
+                Value current =
+                    arith::RemUIOp::create(b, b.loc, subStep, three);
                 Value nextSubStep = b.add(subStep, b.index(1));
                 Value upcoming =
                     arith::RemUIOp::create(b, b.loc, nextSubStep, three);
                 b.ifThen(first, [&] { b.store(none, slots, upcoming); });
                 b.ifThen(lane0, [&] {
-                  b.atomic(arith::AtomicRMWKind::mins, warpMin, slots,
-                           current);
+                  b.atomic(arith::AtomicRMWKind::mins, warpMin, slots, current);
                 });
                 b.barrier();
                 Value groupMin = arith::ExtSIOp::create(
@@ -827,9 +837,8 @@ LogicalResult SimulationLowering::emitSubSteps(ComponentOp component,
                                {item, time, steps32, dt}, values);
               },
               [&] { return SmallVector<Value>(state); });
-          Value evaluated =
-              b.add(count, arith::ExtUIOp::create(b, b.loc, b.getI32Type(),
-                                                  active));
+          Value evaluated = b.add(
+              count, arith::ExtUIOp::create(b, b.loc, b.getI32Type(), active));
           SmallVector<Value> yielded = {b.add(time, steps),
                                         decided.getResult(1), evaluated};
           llvm::append_range(yielded, advanced.getResults());
@@ -838,8 +847,8 @@ LogicalResult SimulationLowering::emitSubSteps(ComponentOp component,
           b.setInsertionPointAfter(loop);
           // The target half, once.
           b.ifThen(active, [&] {
-            for (auto [name, value] : llvm::zip_equal(
-                     writes, loop.getResults().drop_front(3)))
+            for (auto [name, value] :
+                 llvm::zip_equal(writes, loop.getResults().drop_front(3)))
               b.store(value, kernel.values.buffers.lookup(name.getAttr()),
                       b.add(kernel.values.targetBase, item));
           });
@@ -861,8 +870,8 @@ LogicalResult SimulationLowering::emitRounds(ComponentOp component,
                                              OpBuilder &launches) {
   int64_t sub = subClockSlots.lookup(component);
   StringRef name = component.getSymName();
-  auto writes = llvm::to_vector(
-      component.getWrites().getAsRange<FlatSymbolRefAttr>());
+  auto writes =
+      llvm::to_vector(component.getWrites().getAsRange<FlatSymbolRefAttr>());
   Value dt;
 
   // Snapshots of the value at T.
@@ -879,8 +888,7 @@ LogicalResult SimulationLowering::emitRounds(ComponentOp component,
         b.ifThen(active, [&] {
           Value value = b.load(kernel.values.buffers.lookup(write.getAttr()),
                                b.add(kernel.values.sourceBase, item));
-          b.store(value, kernel.values.snapshots.lookup(write.getAttr()),
-                  item);
+          b.store(value, kernel.values.snapshots.lookup(write.getAttr()), item);
         });
         return SmallVector<Value>();
       });
@@ -904,8 +912,8 @@ LogicalResult SimulationLowering::emitRounds(ComponentOp component,
     Value subCount = b.slot(kernel.clock, sub + kSubCount);
     Value now = b.add(subBegin, subSize);
     Value stepped = b.cmp(arith::CmpIPredicate::sgt, subSize, b.i64(0));
-    Value done = b.add(subCount, arith::ExtUIOp::create(
-                                     b, b.loc, b.getI64Type(), stepped));
+    Value done = b.add(
+        subCount, arith::ExtUIOp::create(b, b.loc, b.getI64Type(), stepped));
     Value readParity = arith::XOrIOp::create(
         b, b.loc, parity, arith::AndIOp::create(b, b.loc, done, b.i64(1)));
     setHalves(kernel, parity, readParity);
@@ -921,9 +929,9 @@ LogicalResult SimulationLowering::emitRounds(ComponentOp component,
                 [&] {
                   KernelValues values = kernel.values;
                   values.item = item;
-                  Value steps = inline_(component.getNumSteps(), {item, now},
-                                        values)
-                                    .front();
+                  Value steps =
+                      inline_(component.getNumSteps(), {item, now}, values)
+                          .front();
                   return SmallVector<Value>{b.max(steps, b.i32(1))};
                 },
                 [&] { return SmallVector<Value>{none}; });
@@ -952,9 +960,9 @@ LogicalResult SimulationLowering::emitRounds(ComponentOp component,
     Value subSize = b.slot(clock, sub + kSubSize);
     Value now = b.add(b.slot(clock, sub + kSubBegin), subSize);
     Value stepped = b.cmp(arith::CmpIPredicate::sgt, subSize, zero);
-    Value count = b.add(b.slot(clock, sub + kSubCount),
-                        arith::ExtUIOp::create(b, b.loc, b.getI64Type(),
-                                               stepped));
+    Value count =
+        b.add(b.slot(clock, sub + kSubCount),
+              arith::ExtUIOp::create(b, b.loc, b.getI64Type(), stepped));
     Value remaining = b.sub(b.add(begin, size), now);
     Value positive = b.cmp(arith::CmpIPredicate::sgt, remaining, zero);
     Value next = b.select(
@@ -978,9 +986,9 @@ LogicalResult SimulationLowering::emitRounds(ComponentOp component,
     Value readParity = arith::XOrIOp::create(
         b, b.loc, parity, arith::AndIOp::create(b, b.loc, subCount, b.i64(1)));
     setHalves(kernel, parity, readParity);
-    Value writeBase = b.mul(
-        b.toIndex(arith::XOrIOp::create(b, b.loc, readParity, b.i64(1))),
-        kernel.values.range);
+    Value writeBase =
+        b.mul(b.toIndex(arith::XOrIOp::create(b, b.loc, readParity, b.i64(1))),
+              kernel.values.range);
     kernel.values.bigStepBegin = begin;
     kernel.values.bigStepSize = size;
     dt = kernel.values.params.lookup("dt");
@@ -991,9 +999,8 @@ LogicalResult SimulationLowering::emitRounds(ComponentOp component,
             b.ifThen(active, [&] {
               KernelValues values = kernel.values;
               values.item = item;
-              SmallVector<Value> results =
-                  inline_(component.getEvaluate(),
-                          {item, subBegin, steps, dt}, values);
+              SmallVector<Value> results = inline_(
+                  component.getEvaluate(), {item, subBegin, steps, dt}, values);
               for (auto [write, value] : llvm::zip_equal(writes, results))
                 b.store(value, values.buffers.lookup(write.getAttr()),
                         b.add(writeBase, item));
@@ -1018,12 +1025,12 @@ LogicalResult SimulationLowering::emitRounds(ComponentOp component,
   setHalves(kernel, parity, parity);
   Value subSize = b.slot(kernel.clock, sub + kSubSize);
   Value stepped = b.cmp(arith::CmpIPredicate::sgt, subSize, b.i64(0));
-  Value count = b.add(b.slot(kernel.clock, sub + kSubCount),
-                      arith::ExtUIOp::create(b, b.loc, b.getI64Type(),
-                                             stepped));
-  Value even = b.cmp(arith::CmpIPredicate::eq,
-                     arith::AndIOp::create(b, b.loc, count, b.i64(1)),
-                     b.i64(0));
+  Value count =
+      b.add(b.slot(kernel.clock, sub + kSubCount),
+            arith::ExtUIOp::create(b, b.loc, b.getI64Type(), stepped));
+  Value even =
+      b.cmp(arith::CmpIPredicate::eq,
+            arith::AndIOp::create(b, b.loc, count, b.i64(1)), b.i64(0));
   Value copy = arith::AndIOp::create(
       b, b.loc, even, b.cmp(arith::CmpIPredicate::sgt, size, b.i64(0)));
   b.ifThen(copy, [&] {
@@ -1031,8 +1038,8 @@ LogicalResult SimulationLowering::emitRounds(ComponentOp component,
       b.ifThen(active, [&] {
         for (FlatSymbolRefAttr write : writes) {
           Value memory = kernel.values.buffers.lookup(write.getAttr());
-          b.store(b.load(memory, b.add(kernel.values.sourceBase, item)),
-                  memory, b.add(kernel.values.targetBase, item));
+          b.store(b.load(memory, b.add(kernel.values.sourceBase, item)), memory,
+                  b.add(kernel.values.targetBase, item));
         }
       });
       return SmallVector<Value>();
@@ -1060,9 +1067,9 @@ LogicalResult SimulationLowering::run() {
       top.getStringAttr(stringifyStrategy(strategy)),
       FlatSymbolRefAttr::get(kernels.getSymNameAttr()),
       top.getI64IntegerAttr(simulation.getRange()),
-      cast<TypedAttr>(simulation.getDt()),
-      top.getI64IntegerAttr(maxSteps), top.getI64IntegerAttr(groupSize),
-      top.getI64IntegerAttr(clockSlots), top.getI64IntegerAttr(histogramSlot));
+      cast<TypedAttr>(simulation.getDt()), top.getI64IntegerAttr(maxSteps),
+      top.getI64IntegerAttr(groupSize), top.getI64IntegerAttr(clockSlots),
+      top.getI64IntegerAttr(histogramSlot));
   Block *body = &plan.getBody().emplaceBlock();
   auto unitIf = [&](bool set) { return set ? top.getUnitAttr() : UnitAttr(); };
   OpBuilder planBuilder = OpBuilder::atBlockEnd(body);
@@ -1081,8 +1088,8 @@ LogicalResult SimulationLowering::run() {
     // Element stride as the kernels address it (LLVM's alloc size: vectors
     // are padded to a power of two, so vector<3xf32> takes 16 bytes).
     int64_t bytes = buffer.getElementBytes();
-    int64_t stride = isa<VectorType>(element) ? llvm::PowerOf2Ceil(bytes)
-                                              : bytes;
+    int64_t stride =
+        isa<VectorType>(element) ? llvm::PowerOf2Ceil(bytes) : bytes;
     simplan::BufferOp::create(
         planBuilder, buffer.getLoc(), buffer.getSymNameAttr(),
         TypeAttr::get(element), planBuilder.getI64IntegerAttr(stride),
@@ -1175,7 +1182,7 @@ struct SimLowerToGPUPass
     if (groupSize <= 0 || groupSize % 32 != 0) {
       module.emitError() << "--sim-lower-to-gpu needs a group size that is a "
                             "positive multiple of 32 (a warp), not "
-                         << groupSize;
+                         << static_cast<int64_t>(groupSize);
       return signalPassFailure();
     }
     SmallVector<SimulationOp> simulations(module.getOps<SimulationOp>());

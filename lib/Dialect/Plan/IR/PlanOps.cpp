@@ -1,4 +1,5 @@
-//===- PlanOps.cpp - simplan dialect ---------------------------------------===//
+//===- PlanOps.cpp - simplan dialect
+//---------------------------------------===//
 //
 // The plan's verifiers make sure that a runtime can execute a plan without
 // guessing: every launch names a kernel that exists and takes exactly the
@@ -73,8 +74,7 @@ Attribute ArgAttr::parse(AsmParser &parser, Type) {
     return {};
   std::optional<ArgKind> kind = symbolizeArgKind(keyword);
   if (!kind) {
-    parser.emitError(loc) << "unknown launch argument kind '" << keyword
-                          << "'";
+    parser.emitError(loc) << "unknown launch argument kind '" << keyword << "'";
     return {};
   }
   FlatSymbolRefAttr name;
@@ -129,9 +129,8 @@ LogicalResult LaunchOp::verifySymbolUses(SymbolTableCollection &symbolTable) {
                          << ", which is not a kernel function";
   ArrayRef<Type> inputs = function.getArgumentTypes();
   if (inputs.size() != getArgs().size())
-    return emitOpError() << "passes " << getArgs().size()
-                         << " arguments to " << getKernel() << ", which takes "
-                         << inputs.size();
+    return emitOpError() << "passes " << getArgs().size() << " arguments to "
+                         << getKernel() << ", which takes " << inputs.size();
   for (auto [index, attr, type] :
        llvm::enumerate(getArgs().getAsRange<ArgAttr>(), inputs)) {
     if (isMemory(attr.getKind()) != isa<MemRefType>(type))

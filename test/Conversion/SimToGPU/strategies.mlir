@@ -1,0 +1,166 @@
+// The kernels and the plan of each strategy for one two-component scene:
+// @Heater starts the step (it reads @T through the back edge and bounds the
+// hip step), @Rod reads @Q interpolated through a window.
+//
+// RUN: sim-opt %s --sim-front-end=strategy=simple --sim-lower-to-gpu | FileCheck %s --check-prefix=SIMPLE
+// RUN: sim-opt %s --sim-front-end=strategy=traditional --sim-lower-to-gpu | FileCheck %s --check-prefix=TRAD
+// RUN: sim-opt %s --sim-front-end=strategy=hip --sim-lower-to-gpu | FileCheck %s --check-prefix=HIP
+// RUN: sim-opt %s --sim-front-end=strategy=hip --sim-lower-to-gpu | sim-opt | FileCheck %s --check-prefix=HIP
+// RUN: sim-opt %s --sim-front-end=strategy=hip --sim-lower-to-gpu | FileCheck %s --check-prefix=NOSIM --implicit-check-not="sim."
+
+sim.simulation @rod range(1024) dt(1.0e-3 : f32) max_steps(4) {
+  sim.param @k = 2.0 : f32
+  sim.buffer @Q : f32 interp(#sim.linear) init {
+  ^bb0(%i: index):
+    %zero = arith.constant 0.0 : f32
+    sim.yield %zero : f32
+  }
+  sim.buffer @T : f32 init {
+  ^bb0(%i: index):
+    %i32 = arith.index_cast %i : index to i32
+    %x = arith.sitofp %i32 : i32 to f32
+    sim.yield %x : f32
+  }
+  sim.component @Heater writes(@Q) num_steps {
+  ^bb0(%i: index, %t: i64):
+    %temp = sim.read @T[%i] : f32
+    %half = arith.constant 0.5 : f32
+    %cold = arith.cmpf olt, %temp, %half : f32
+    %one = arith.constant 1 : i32
+    %four = arith.constant 4 : i32
+    %n = arith.select %cold, %one, %four : i32
+    sim.yield %n : i32
+  } evaluate {
+  ^bb0(%i: index, %t: i64, %n: i32, %dt: f32):
+    %temp = sim.read @T[%i] : f32
+    %one = arith.constant 1.0 : f32
+    %q = arith.subf %one, %temp : f32
+    sim.yield %q : f32
+  }
+  sim.component @Rod writes(@T) num_steps {
+  ^bb0(%i: index, %t: i64):
+    %two = arith.constant 2 : i32
+    sim.yield %two : i32
+  } evaluate {
+  ^bb0(%i: index, %t: i64, %n: i32, %dt: f32):
+    %c1 = arith.constant 1 : index
+    %j = arith.addi %i, %c1 : index
+    %q = sim.read @Q[%j] : f32
+    %temp = sim.read @T[%i] : f32
+    %k = sim.get_param @k : f32
+    %nf = arith.sitofp %n : i32 to f32
+    %h = arith.mulf %nf, %dt : f32
+    %kh = arith.mulf %k, %h : f32
+    %diff = arith.subf %q, %temp : f32
+    %change = arith.mulf %kh, %diff : f32
+    %next = arith.addf %temp, %change : f32
+    sim.yield %next : f32
+  }
+  sim.schedule [@Heater]
+  sim.observe [@T]
+}
+
+// NOSIM: gpu.module @rod_kernels
+
+// simple: no estimates, m = 1 decided on the device, one evaluation per
+// component reading the target half of @Q (already advanced this step).
+// SIMPLE-LABEL: gpu.func @advance(
+// SIMPLE:         memref.load %{{.*}}[%c3]
+// SIMPLE:         arith.minsi %c1_i64{{[_0-9]*}}, %{{.*}} : i64
+// SIMPLE-LABEL: gpu.func @evaluate_Rod(
+// SIMPLE-SAME:      %[[CLOCK:[^:]*]]: memref<?xi64>, %[[Q:[^:]*]]: memref<?xf32>, %[[T:[^:]*]]: memref<?xf32>, %[[K:[^:]*]]: f32, %[[RANGE:[^:]*]]: i64, %[[DT:[^:]*]]: f32) kernel
+// SIMPLE:         %[[M:.*]] = memref.load %[[CLOCK]][%c1]
+// SIMPLE:         %[[P:.*]] = memref.load %[[CLOCK]][%c2]
+// SIMPLE:         scf.if
+// SIMPLE:           scf.for
+// SIMPLE:             scf.if
+// SIMPLE:               memref.load %[[Q]]
+// SIMPLE:               memref.load %[[T]]
+// SIMPLE:               memref.store %{{.*}}, %[[T]]
+// SIMPLE-NOT:         gpu.barrier
+// SIMPLE:         gpu.subgroup_reduce add %{{.*}} uniform
+// SIMPLE:         memref.atomic_rmw addi %{{.*}}, %[[CLOCK]][%c9]
+// SIMPLE-LABEL: simplan.plan @rod strategy("simple") kernels(@rod_kernels)
+// SIMPLE:         simplan.param @k = 2.000000e+00 : f32
+// SIMPLE:         simplan.buffer @Q : f32 stride(4)
+// SIMPLE:         simplan.buffer @T : f32 stride(4) observed
+// SIMPLE:         simplan.phase init {
+// SIMPLE-NEXT:      simplan.launch @rod_kernels::@reset_clock single [#simplan.arg<clock>]
+// SIMPLE-NEXT:      simplan.launch @rod_kernels::@init_Q items [#simplan.arg<buffer @Q>, #simplan.arg<range>]
+// SIMPLE-NEXT:      simplan.launch @rod_kernels::@init_T items [#simplan.arg<buffer @T>, #simplan.arg<range>]
+// SIMPLE-NEXT:    }
+// SIMPLE:         simplan.phase step {
+// SIMPLE-NEXT:      simplan.launch @rod_kernels::@advance single [#simplan.arg<clock>]
+// SIMPLE-NEXT:      simplan.launch @rod_kernels::@evaluate_Heater items [#simplan.arg<clock>, #simplan.arg<buffer @Q>, #simplan.arg<buffer @T>, #simplan.arg<range>]
+// SIMPLE-NEXT:      simplan.launch @rod_kernels::@evaluate_Rod items [#simplan.arg<clock>, #simplan.arg<buffer @Q>, #simplan.arg<buffer @T>, #simplan.arg<param @k>, #simplan.arg<range>, #simplan.arg<dt>]
+// SIMPLE-NEXT:    }
+// SIMPLE:         simplan.phase finish {
+// SIMPLE-NEXT:      simplan.launch @rod_kernels::@advance single [#simplan.arg<clock>]
+
+// traditional: every component with num_steps estimates; the estimates
+// reduce per warp, per group in workgroup memory and into the clock.
+// TRAD-LABEL: gpu.func @estimate_Heater(
+// TRAD-SAME:      workgroup(%[[GROUPMIN:.*]] : memref<1xi32, #gpu.address_space<workgroup>>) kernel
+// TRAD:         gpu.barrier
+// TRAD:         scf.for
+// TRAD:           arith.maxsi %{{.*}}, %c1_i32
+// TRAD:         %[[WARP:.*]] = gpu.subgroup_reduce minsi %{{.*}} uniform : (i32) -> i32
+// TRAD:         memref.atomic_rmw mins %[[WARP]], %[[GROUPMIN]][%{{.*}}] : (i32, memref<1xi32, #gpu.address_space<workgroup>>) -> i32
+// TRAD:         gpu.barrier
+// TRAD:         memref.atomic_rmw mins %{{.*}}, %{{.*}}[%c4] : (i64, memref<?xi64>) -> i64
+// TRAD-LABEL: gpu.func @estimate_Rod(
+// TRAD-LABEL: gpu.func @advance(
+// TRAD:         memref.load %{{.*}}[%c4]
+// TRAD-LABEL: simplan.plan @rod strategy("traditional")
+// TRAD:         simplan.phase step {
+// TRAD-NEXT:      simplan.launch @rod_kernels::@estimate_Heater items
+// TRAD-NEXT:      simplan.launch @rod_kernels::@estimate_Rod items
+// TRAD-NEXT:      simplan.launch @rod_kernels::@advance single
+// TRAD-NEXT:      simplan.launch @rod_kernels::@evaluate_Heater items
+// TRAD-NEXT:      simplan.launch @rod_kernels::@evaluate_Rod items
+
+// hip: only @Heater (bounded_by) estimates; both components run Algorithm 2.
+// HIP-LABEL: gpu.func @estimate_Heater(
+// HIP-NOT:   gpu.func @estimate_Rod
+// HIP-LABEL: gpu.func @substep_Rod(
+// HIP-SAME:      %[[CLOCK:[^:]*]]: memref<?xi64>, %[[Q:[^:]*]]: memref<?xf32>, %[[T:[^:]*]]: memref<?xf32>
+// HIP-SAME:      workgroup(%[[SLOTS:.*]] : memref<3xi32, #gpu.address_space<workgroup>>) kernel
+// HIP:         %[[BEGIN:.*]] = memref.load %[[CLOCK]][%c0]
+// HIP:         %[[SIZE:.*]] = memref.load %[[CLOCK]][%c1]
+// HIP:         scf.if
+// HIP:           gpu.barrier
+// HIP:           %[[SINGLE:.*]] = arith.cmpi eq, %[[SIZE]], %c1_i64
+// HIP:           scf.for
+//                  Own state into registers, once.
+// HIP:             %[[OWN:.*]] = scf.if %{{.*}} -> (f32) {
+// HIP-NEXT:          arith.addi
+// HIP-NEXT:          memref.load %[[T]]
+// HIP:             %[[LOOP:.*]]:4 = scf.while
+// HIP:               scf.if %[[SINGLE]] -> (i64, index) {
+//                      m = 1: no num_steps, no reduction.
+// HIP-NEXT:            scf.yield %c1_i64, %{{.*}} : i64, index
+// HIP-NEXT:          } else {
+// HIP:                 %[[WARP:.*]] = gpu.subgroup_reduce minsi %{{.*}} uniform : (i32) -> i32
+// HIP:                 memref.atomic_rmw mins %[[WARP]], %[[SLOTS]]
+// HIP-NEXT:          }
+// HIP-NEXT:          gpu.barrier
+// HIP-NEXT:          memref.load %[[SLOTS]]
+// HIP-NOT:           gpu.barrier
+//                    The interpolated read of @Q, both halves.
+// HIP:               memref.load %[[Q]]
+// HIP:               memref.load %[[Q]]
+// HIP-NOT:           memref.load %[[T]]
+// HIP-NOT:           memref.store
+// HIP:               scf.yield
+// HIP:             }
+//                  The target half, once, after the sub-steps.
+// HIP:             scf.if
+// HIP-NEXT:          arith.addi
+// HIP-NEXT:          memref.store %[[LOOP]]#3, %[[T]]
+// HIP:           gpu.subgroup_reduce add
+// HIP-LABEL: simplan.plan @rod strategy("hip")
+// HIP:         simplan.phase step {
+// HIP-NEXT:      simplan.launch @rod_kernels::@estimate_Heater items
+// HIP-NEXT:      simplan.launch @rod_kernels::@advance single
+// HIP-NEXT:      simplan.launch @rod_kernels::@substep_Heater items
+// HIP-NEXT:      simplan.launch @rod_kernels::@substep_Rod items
