@@ -1136,7 +1136,12 @@ LogicalResult SimulationLowering::run() {
     return failure();
   for (ComponentOp component : order) {
     LogicalResult result = success();
-    if (!isSubStepping(strategy) || !component.hasNumSteps())
+    // A component that bounds the big step takes it in one sub-step: at T
+    // the minimum of its num_steps over any group is at least the minimum
+    // over all items, which is m. So it needs neither num_steps again nor
+    // a reduction.
+    if (!isSubStepping(strategy) || !component.hasNumSteps() ||
+        llvm::is_contained(estimated, component))
       result = emitEvaluate(component, step);
     else if (*component.getSubStepping() == SubStepping::in_kernel)
       result = emitSubSteps(component, step);

@@ -119,9 +119,13 @@ sim.simulation @rod range(1024) dt(1.0e-3 : f32) max_steps(4) {
 // TRAD-NEXT:      simplan.launch @rod_kernels::@evaluate_Heater items
 // TRAD-NEXT:      simplan.launch @rod_kernels::@evaluate_Rod items
 
-// hip: only @Heater (bounded_by) estimates; both components run Algorithm 2.
+// hip: only @Heater (bounded_by) estimates. It then takes the big step in
+// one evaluation (its group minimum at T cannot be below m); @Rod runs
+// Algorithm 2.
 // HIP-LABEL: gpu.func @estimate_Heater(
 // HIP-NOT:   gpu.func @estimate_Rod
+// HIP-NOT:   gpu.func @substep_Heater
+// HIP-LABEL: gpu.func @evaluate_Heater(
 // HIP-LABEL: gpu.func @substep_Rod(
 // HIP-SAME:      %[[CLOCK:[^:]*]]: memref<?xi64>, %[[Q:[^:]*]]: memref<?xf32>, %[[T:[^:]*]]: memref<?xf32>
 // HIP-SAME:      workgroup(%[[SLOTS:.*]] : memref<3xi32, #gpu.address_space<workgroup>>) kernel
@@ -162,5 +166,5 @@ sim.simulation @rod range(1024) dt(1.0e-3 : f32) max_steps(4) {
 // HIP:         simplan.phase step {
 // HIP-NEXT:      simplan.launch @rod_kernels::@estimate_Heater items
 // HIP-NEXT:      simplan.launch @rod_kernels::@advance single
-// HIP-NEXT:      simplan.launch @rod_kernels::@substep_Heater items
+// HIP-NEXT:      simplan.launch @rod_kernels::@evaluate_Heater items
 // HIP-NEXT:      simplan.launch @rod_kernels::@substep_Rod items
