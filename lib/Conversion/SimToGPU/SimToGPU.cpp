@@ -209,7 +209,7 @@ private:
   // Kernels and launches.
   Kernel beginKernel(StringRef name, BufferOp exactOf = nullptr);
   LogicalResult endKernel(Kernel &kernel, simplan::LaunchShape shape,
-                          OpBuilder &launches);
+                          OpBuilder &launches, ComponentOp component = nullptr);
   void readClock(Kernel &kernel, Value &begin, Value &size, Value &parity);
   void setHalves(Kernel &kernel, Value parity, Value localParity);
   SmallVector<Value>
@@ -405,7 +405,8 @@ Kernel SimulationLowering::beginKernel(StringRef name, BufferOp exactOf) {
 
 LogicalResult SimulationLowering::endKernel(Kernel &kernel,
                                             simplan::LaunchShape shape,
-                                            OpBuilder &launches) {
+                                            OpBuilder &launches,
+                                            ComponentOp component) {
   b.setInsertionPointToEnd(&kernel.func.getBody().front());
   gpu::ReturnOp::create(b, b.loc);
   if (bodyFailed)
@@ -432,7 +433,10 @@ LogicalResult SimulationLowering::endKernel(Kernel &kernel,
   simplan::LaunchOp::create(
       launches, b.loc, kernelRef,
       simplan::LaunchShapeAttr::get(b.getContext(), shape),
-      launches.getArrayAttr(args), /*shared_per_thread=*/0,
+      launches.getArrayAttr(args),
+      component ? FlatSymbolRefAttr::get(component.getSymNameAttr())
+                : FlatSymbolRefAttr(),
+      /*shared_per_thread=*/0,
       /*shared_fixed=*/0);
   return success();
 }
@@ -707,7 +711,7 @@ LogicalResult SimulationLowering::emitEvaluate(ComponentOp component,
         });
     addEvaluations(kernel, counts[0], component);
   });
-  return endKernel(kernel, simplan::LaunchShape::items, launches);
+  return endKernel(kernel, simplan::LaunchShape::items, launches, component);
 }
 
 /// Algorithm 2 for an in_kernel component with num_steps: each lane keeps
@@ -856,7 +860,7 @@ LogicalResult SimulationLowering::emitSubSteps(ComponentOp component,
         });
     addEvaluations(kernel, totals[1], component);
   });
-  return endKernel(kernel, simplan::LaunchShape::items, launches);
+  return endKernel(kernel, simplan::LaunchShape::items, launches, component);
 }
 
 /// A grid_sync component with num_steps: its sub-steps read other items of
@@ -870,6 +874,19 @@ LogicalResult SimulationLowering::emitRounds(ComponentOp component,
                                              OpBuilder &launches) {
   int64_t sub = subClockSlots.lookup(component);
   StringRef name = component.getSymName();
+  {
+    InFlightDiagnostic remark = component.emitRemark()
+                                << "@" << name << " takes its sub-steps as "
+                                << maxSteps
+                                << " rounds of launches with a grid-wide "
+                                   "sub-step decided on the device";
+    for (FlatSymbolRefAttr write :
+         component.getWrites().getAsRange<FlatSymbolRefAttr>())
+      if (simulation.lookupBuffer(write).getSnapshot())
+        remark << ", a snapshot of " << write << " before them";
+    if (component.getParity() == Parity::copy_if_even)
+      remark << ", and a copy after an even number of sub-steps";
+  }
   auto writes =
       llvm::to_vector(component.getWrites().getAsRange<FlatSymbolRefAttr>());
   Value dt;
@@ -1011,7 +1028,8 @@ LogicalResult SimulationLowering::emitRounds(ComponentOp component,
           });
       addEvaluations(kernel, counts[0], component);
     });
-    if (failed(endKernel(kernel, simplan::LaunchShape::items, roundLaunches)))
+    if (failed(endKernel(kernel, simplan::LaunchShape::items, roundLaunches,
+                         component)))
       return failure();
   }
 
@@ -1045,7 +1063,7 @@ LogicalResult SimulationLowering::emitRounds(ComponentOp component,
       return SmallVector<Value>();
     });
   });
-  return endKernel(kernel, simplan::LaunchShape::items, launches);
+  return endKernel(kernel, simplan::LaunchShape::items, launches, component);
 }
 
 //===----------------------------------------------------------------------===//
@@ -1100,6 +1118,7 @@ LogicalResult SimulationLowering::run() {
   for (ComponentOp component : order)
     simplan::ComponentOp::create(
         planBuilder, component.getLoc(), component.getSymNameAttr(),
+        component.getWrites(),
         planBuilder.getI64IntegerAttr(evaluationSlots.lookup(component)));
 
   auto phase = [&](simplan::PhaseKind kind) {

@@ -4,6 +4,7 @@
 // it), max_steps rounds, and the parity copy after.
 //
 // RUN: sim-opt %s --sim-front-end=strategy=hip --sim-lower-to-gpu | FileCheck %s
+// RUN: sim-opt %s --sim-front-end=strategy=hip --sim-lower-to-gpu -o /dev/null 2>&1 | FileCheck %s --check-prefix=REMARK
 // RUN: sim-opt %s --sim-front-end=strategy=simple --sim-lower-to-gpu | FileCheck %s --check-prefix=SIMPLE
 
 sim.simulation @diffuse range(100) dt(1.0e-2 : f32) max_steps(3) {
@@ -17,6 +18,7 @@ sim.simulation @diffuse range(100) dt(1.0e-2 : f32) max_steps(3) {
     %u = sim.read @U[%i] : f32
     sim.yield %u : f32
   }
+  // REMARK: remark: @Diffuse takes its sub-steps as 3 rounds of launches with a grid-wide sub-step decided on the device, a snapshot of @U before them, and a copy after an even number of sub-steps
   sim.component @Diffuse writes(@U) num_steps {
   ^bb0(%i: index, %t: i64):
     %c2 = arith.constant 2 : i32
@@ -80,13 +82,14 @@ sim.simulation @diffuse range(100) dt(1.0e-2 : f32) max_steps(3) {
 // CHECK:         memref.load %[[SNAP]]
 // CHECK-LABEL: simplan.plan @diffuse strategy("hip")
 // CHECK:         simplan.buffer @U : f32 stride(4) snapshot
+// CHECK:         simplan.component @Diffuse writes [@U] evaluations(8)
 // CHECK:         simplan.phase step {
 // CHECK-NEXT:      simplan.launch @diffuse_kernels::@advance single [#simplan.arg<clock>]
 // CHECK-NEXT:      simplan.launch @diffuse_kernels::@snapshot_U items [#simplan.arg<clock>, #simplan.arg<buffer @U>, #simplan.arg<snapshot @U>, #simplan.arg<range>]
 // CHECK-NEXT:      simplan.repeat 3 {
 // CHECK-NEXT:        simplan.launch @diffuse_kernels::@substep_estimate_Diffuse items
 // CHECK-NEXT:        simplan.launch @diffuse_kernels::@substep_advance_Diffuse single
-// CHECK-NEXT:        simplan.launch @diffuse_kernels::@substep_Diffuse items
+// CHECK-NEXT:        simplan.launch @diffuse_kernels::@substep_Diffuse items [#simplan.arg<clock>, #simplan.arg<buffer @U>, #simplan.arg<range>] for @Diffuse
 // CHECK-NEXT:      }
 // CHECK-NEXT:      simplan.launch @diffuse_kernels::@parity_Diffuse items
 // CHECK-NEXT:      simplan.launch @diffuse_kernels::@evaluate_Watch items

@@ -131,6 +131,11 @@ LogicalResult LaunchOp::verifySymbolUses(SymbolTableCollection &symbolTable) {
   if (inputs.size() != getArgs().size())
     return emitOpError() << "passes " << getArgs().size() << " arguments to "
                          << getKernel() << ", which takes " << inputs.size();
+  if (FlatSymbolRefAttr component = getComponentAttr())
+    if (!isa_and_nonnull<ComponentOp>(
+            symbolTable.lookupSymbolIn(plan, component)))
+      return emitOpError() << "is for " << component
+                           << ", which is not a component of the plan";
   for (auto [index, attr, type] :
        llvm::enumerate(getArgs().getAsRange<ArgAttr>(), inputs)) {
     if (isMemory(attr.getKind()) != isa<MemRefType>(type))

@@ -115,7 +115,7 @@ def Plan_PlanOp : Plan_Op<"plan", [
       simplan.param @k = 2.0 : f32
       simplan.buffer @Q : f32 stride(4)
       simplan.buffer @T : f32 stride(4) observed
-      simplan.component @Heater evaluations(8)
+      simplan.component @Heater writes [@Q] evaluations(8)
       simplan.phase init { ... }
       simplan.phase step { ... }
       simplan.phase finish { ... }
@@ -179,17 +179,21 @@ def Plan_BufferOp : Plan_Op<"buffer", [Symbol, HasParent<"PlanOp">]> {
 }
 
 def Plan_ComponentOp : Plan_Op<"component", [Symbol, HasParent<"PlanOp">]> {
-  let summary = "a component and the clock slot that counts its evaluations";
+  let summary = "a component, what it writes, and its evaluation counter";
   let description = [{
-    Each kernel that evaluates the component adds the number of item
-    evaluations it performed to clock slot `evaluations`.
+    The buffers the component writes, and the clock slot to which each
+    kernel that evaluates it adds the number of item evaluations it
+    performed.
 
     ```mlir
-    simplan.component @C0 evaluations(8)
+    simplan.component @C0 writes [@B0] evaluations(8)
     ```
   }];
-  let arguments = (ins SymbolNameAttr:$sym_name, I64Attr:$evaluations);
-  let assemblyFormat = "$sym_name `evaluations` `(` $evaluations `)` attr-dict";
+  let arguments = (ins SymbolNameAttr:$sym_name,
+                       FlatSymbolRefArrayAttr:$writes, I64Attr:$evaluations);
+  let assemblyFormat = [{
+    $sym_name `writes` $writes `evaluations` `(` $evaluations `)` attr-dict
+  }];
 }
 
 def Plan_PhaseOp : Plan_Op<"phase", [HasParent<"PlanOp">, NoTerminator,
@@ -241,23 +245,25 @@ def Plan_LaunchOp : Plan_Op<"launch", [
   let description = [{
     Launches `kernel` (a `gpu.func` in the plan's `gpu.module`) with the
     given shape. `args` lists, in order, what the runtime passes for each
-    kernel argument. `shared_per_thread` and `shared_fixed` give the dynamic
+    kernel argument. `component` names the component whose buffers the
+    launch writes, if any. `shared_per_thread` and `shared_fixed` give the dynamic
     shared memory in bytes: `shared_per_thread * group size + shared_fixed`
     (both 0 when the kernel needs none; static workgroup memory is part of
     the kernel).
 
     ```mlir
-    simplan.launch @k::@step_C1 items
+    simplan.launch @k::@substep_C1 items
         [#simplan.arg<clock>, #simplan.arg<buffer @B0>, #simplan.arg<range>]
-        shared(16, 128)
+        for @C1 shared(16, 128)
     ```
   }];
   let arguments = (ins SymbolRefAttr:$kernel, Plan_LaunchShapeAttr:$shape,
                        TypedArrayAttrBase<Plan_ArgAttr, "launch arguments">:$args,
+                       OptionalAttr<FlatSymbolRefAttr>:$component,
                        DefaultValuedAttr<I64Attr, "0">:$shared_per_thread,
                        DefaultValuedAttr<I64Attr, "0">:$shared_fixed);
   let assemblyFormat = [{
-    $kernel $shape $args
+    $kernel $shape $args (`for` $component^)?
     (`shared` `(` $shared_per_thread^ `,` $shared_fixed `)`)? attr-dict
   }];
 }
