@@ -25,7 +25,8 @@ int main(int argc, char **argv) {
   registry.insert<mlir::sim::SimDialect, mlir::arith::ArithDialect,
                   mlir::math::MathDialect, mlir::scf::SCFDialect,
                   mlir::vector::VectorDialect, mlir::simplan::PlanDialect,
-                  mlir::gpu::GPUDialect, mlir::memref::MemRefDialect>();
+                  mlir::gpu::GPUDialect, mlir::memref::MemRefDialect,
+                  mlir::func::FuncDialect>();
 
   mlir::sim::registerSimPasses();
   mlir::sim::registerSimConversionPasses();

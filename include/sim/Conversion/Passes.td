@@ -58,4 +58,33 @@ def SimLowerToGPU : Pass<"sim-lower-to-gpu", "::mlir::ModuleOp"> {
   ];
 }
 
+def SimLowerToCPU : Pass<"sim-lower-to-cpu", "::mlir::ModuleOp"> {
+  let summary = "Lower simulations to CPU kernels with the GPU kernels' semantics";
+  let description = [{
+    The CPU counterpart of `--sim-lower-to-gpu`: the same kernels (the same
+    algorithms, names and arguments, and the same `simplan.plan`), as
+    `func.func`s in a nested `builtin.module @<name>_kernels`. Each kernel
+    takes the plan's arguments followed by the first group, the end group
+    and the group size (`i64`), and runs those groups: a group phase by
+    phase (a loop over its lanes between what are barriers on a GPU), with
+    the same group-wide sub-step as on a GPU, so results do not depend on the
+    backend. Shared-memory caches are not emulated (a cached value equals the
+    value read through global memory). Clock updates are atomic, so disjoint
+    ranges of groups of one launch may run on different threads.
+
+    ```
+    sim-opt scene.mlir --sim-front-end=strategy=hip --sim-lower-to-cpu
+    ```
+  }];
+  let options = [
+    Option<"groupSize", "group-size", "int64_t", "256",
+           "Items per group the plan is made for">,
+  ];
+  let dependentDialects = [
+    "::mlir::arith::ArithDialect", "::mlir::func::FuncDialect",
+    "::mlir::memref::MemRefDialect", "::mlir::scf::SCFDialect",
+    "::mlir::simplan::PlanDialect"
+  ];
+}
+
 #endif // SIM_CONVERSION_PASSES_TD

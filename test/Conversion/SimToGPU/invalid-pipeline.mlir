@@ -12,7 +12,7 @@ sim.simulation @midway range(8) dt(1.0e-2 : f32) max_steps(2) {
   }
   sim.component @Keep writes(@X) evaluate {
   ^bb0(%i: index, %t: i64, %n: i32, %dt: f32):
-    // expected-error @+1 {{'sim.read' op is a view read; run --sim-insert-interpolation (or the whole front end) before --sim-lower-to-gpu}}
+    // expected-error @+1 {{'sim.read' op is a view read; run --sim-insert-interpolation (or the whole front end) before lowering it}}
     %x = sim.read @X[%i] : f32
     sim.yield %x : f32
   }

@@ -3,7 +3,7 @@
 // RUN: sim-opt %s --split-input-file --verify-diagnostics --sim-lower-to-gpu
 
 // The front end has not run: nothing says which strategy to lower for.
-// expected-error @+1 {{'sim.simulation' op has no memory plan; run the front end (--sim-front-end) before --sim-lower-to-gpu}}
+// expected-error @+1 {{'sim.simulation' op has no memory plan; run the front end (--sim-front-end) before lowering it}}
 sim.simulation @raw range(8) dt(1.0e-2 : f32) max_steps(2) {
   sim.buffer @X : f32 init {
   ^bb0(%i: index):
@@ -21,7 +21,7 @@ sim.simulation @raw range(8) dt(1.0e-2 : f32) max_steps(2) {
 // -----
 
 // A plan without a complete schedule.
-// expected-error @+1 {{'sim.simulation' op has no complete schedule; run the front end (--sim-front-end) before --sim-lower-to-gpu}}
+// expected-error @+1 {{'sim.simulation' op has no complete schedule; run the front end (--sim-front-end) before lowering it}}
 sim.simulation @unscheduled range(8) dt(1.0e-2 : f32) max_steps(2) attributes {strategy = #sim<strategy simple>} {
   sim.buffer @X : f32 init {
   ^bb0(%i: index):

@@ -101,9 +101,9 @@ sim.simulation @rod range(1024) dt(1.0e-3 : f32) max_steps(4) {
 // reduce per warp, per group in workgroup memory and into the clock.
 // TRAD-LABEL: gpu.func @estimate_Heater(
 // TRAD-SAME:      workgroup(%[[GROUPMIN:.*]] : memref<1xi32, #gpu.address_space<workgroup>>) kernel
-// TRAD:         gpu.barrier
 // TRAD:         scf.for
 // TRAD:           arith.maxsi %{{.*}}, %c1_i32
+// TRAD:         gpu.barrier
 // TRAD:         %[[WARP:.*]] = gpu.subgroup_reduce minsi %{{.*}} uniform : (i32) -> i32
 // TRAD:         memref.atomic_rmw mins %[[WARP]], %[[GROUPMIN]][%{{.*}}] : (i32, memref<1xi32, #gpu.address_space<workgroup>>) -> i32
 // TRAD:         gpu.barrier
@@ -129,38 +129,45 @@ sim.simulation @rod range(1024) dt(1.0e-3 : f32) max_steps(4) {
 // HIP-LABEL: gpu.func @substep_Rod(
 // HIP-SAME:      %[[CLOCK:[^:]*]]: memref<?xi64>, %[[Q:[^:]*]]: memref<?xf32>, %[[T:[^:]*]]: memref<?xf32>
 // HIP-SAME:      workgroup(%[[SLOTS:.*]] : memref<3xi32, #gpu.address_space<workgroup>>) kernel
-// HIP:         %[[BEGIN:.*]] = memref.load %[[CLOCK]][%c0]
-// HIP:         %[[SIZE:.*]] = memref.load %[[CLOCK]][%c1]
+//                The own state lives in a private element (a register).
+// HIP-DAG:     %[[OWN:.*]] = memref.alloca() : memref<1xf32>
+// HIP-DAG:     %[[BEGIN:.*]] = memref.load %[[CLOCK]][%c0]
+// HIP-DAG:     %[[SIZE:.*]] = memref.load %[[CLOCK]][%c1]
 // HIP:         scf.if
 // HIP:           gpu.barrier
 // HIP:           %[[SINGLE:.*]] = arith.cmpi eq, %[[SIZE]], %c1_i64
 // HIP:           scf.for
-//                  Own state into registers, once.
-// HIP:             %[[OWN:.*]] = scf.if %{{.*}} -> (f32) {
+//                  Own state at T into the register, once.
+// HIP:             scf.if
 // HIP-NEXT:          arith.addi
-// HIP-NEXT:          memref.load %[[T]]
-// HIP:             %[[LOOP:.*]]:4 = scf.while
-// HIP:               scf.if %[[SINGLE]] -> (i64, index) {
+// HIP-NEXT:          %[[INITIAL:.*]] = memref.load %[[T]]
+// HIP-NEXT:          memref.store %[[INITIAL]], %[[OWN]]
+// HIP:             scf.while
+// HIP:               scf.if %[[SINGLE]] -> (i64) {
 //                      m = 1: no num_steps, no reduction.
-// HIP-NEXT:            scf.yield %c1_i64, %{{.*}} : i64, index
+// HIP-NEXT:            scf.yield %c1_i64 : i64
 // HIP-NEXT:          } else {
 // HIP:                 %[[WARP:.*]] = gpu.subgroup_reduce minsi %{{.*}} uniform : (i32) -> i32
 // HIP:                 memref.atomic_rmw mins %[[WARP]], %[[SLOTS]]
-// HIP-NEXT:          }
-// HIP-NEXT:          gpu.barrier
-// HIP-NEXT:          memref.load %[[SLOTS]]
-// HIP-NOT:           gpu.barrier
-//                    The interpolated read of @Q, both halves.
+// HIP-NEXT:            }
+// HIP-NEXT:            gpu.barrier
+// HIP-NEXT:            memref.load %[[SLOTS]]
+// HIP-NOT:             gpu.barrier
+//                    The interpolated read of @Q: both halves; the own
+//                    state from the register, never from memory.
+// HIP:               memref.load %[[OWN]]
 // HIP:               memref.load %[[Q]]
 // HIP:               memref.load %[[Q]]
 // HIP-NOT:           memref.load %[[T]]
-// HIP-NOT:           memref.store
+// HIP-NOT:           memref.store %{{.*}}, %[[T]]
+// HIP:               memref.store %{{.*}}, %[[OWN]]
 // HIP:               scf.yield
 // HIP:             }
 //                  The target half, once, after the sub-steps.
 // HIP:             scf.if
+// HIP-NEXT:          %[[FINAL:.*]] = memref.load %[[OWN]]
 // HIP-NEXT:          arith.addi
-// HIP-NEXT:          memref.store %[[LOOP]]#3, %[[T]]
+// HIP-NEXT:          memref.store %[[FINAL]], %[[T]]
 // HIP:           gpu.subgroup_reduce add
 // HIP-LABEL: simplan.plan @rod strategy("hip")
 // HIP:         simplan.phase step {

@@ -25,6 +25,28 @@ using namespace mlir::simplan;
 #define GET_ATTRDEF_CLASSES
 #include "sim/Dialect/Plan/IR/PlanAttrs.cpp.inc"
 
+/// Enum attributes print as a bare keyword in the custom op syntax
+/// (`simplan.phase init`); the generic form keeps `#simplan<phase init>`.
+template <typename EnumAttrTy>
+static ParseResult parseEnumKeyword(OpAsmParser &parser, EnumAttrTy &attr) {
+  using Enum = decltype(std::declval<EnumAttrTy>().getValue());
+  StringRef keyword;
+  SMLoc loc = parser.getCurrentLocation();
+  if (parser.parseKeyword(&keyword))
+    return failure();
+  std::optional<Enum> value = symbolizeEnum<Enum>(keyword);
+  if (!value)
+    return parser.emitError(loc) << "unknown keyword '" << keyword << "'";
+  attr = EnumAttrTy::get(parser.getContext(), *value);
+  return success();
+}
+
+template <typename EnumAttrTy>
+static void printEnumKeyword(OpAsmPrinter &printer, Operation *,
+                             EnumAttrTy attr) {
+  printer << stringifyEnum(attr.getValue());
+}
+
 #define GET_OP_CLASSES
 #include "sim/Dialect/Plan/IR/PlanOps.cpp.inc"
 
@@ -127,7 +149,12 @@ LogicalResult LaunchOp::verifySymbolUses(SymbolTableCollection &symbolTable) {
   if (!function)
     return emitOpError() << "launches " << getKernel()
                          << ", which is not a kernel function";
+  // CPU kernels take the groups to run as trailing arguments of their own.
   ArrayRef<Type> inputs = function.getArgumentTypes();
+  if (auto extra = function->getAttrOfType<IntegerAttr>(
+          PlanDialect::getGroupArgumentsAttrName()))
+    inputs =
+        inputs.drop_back(std::min<uint64_t>(extra.getInt(), inputs.size()));
   if (inputs.size() != getArgs().size())
     return emitOpError() << "passes " << getArgs().size() << " arguments to "
                          << getKernel() << ", which takes " << inputs.size();

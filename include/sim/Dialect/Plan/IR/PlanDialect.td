@@ -42,6 +42,12 @@ def Plan_Dialect : Dialect {
   let useDefaultAttributePrinterParser = 1;
   let extraClassDeclaration = [{
     void registerAttributes();
+    /// On a kernel function: the number of trailing arguments that are not
+    /// launch arguments (a CPU kernel's first group, end group and group
+    /// size).
+    static ::llvm::StringRef getGroupArgumentsAttrName() {
+      return "simplan.group_arguments";
+    }
   }];
 }
 

@@ -32,9 +32,7 @@ def Plan_PhaseKind : I32Enum<"PhaseKind", "when a phase runs", [
     the buffers that declare one, at a time given by the runtime.
   }];
 }
-def Plan_PhaseKindAttr : EnumAttr<Plan_Dialect, Plan_PhaseKind, "phase"> {
-  let assemblyFormat = "`` $value";
-}
+def Plan_PhaseKindAttr : EnumAttr<Plan_Dialect, Plan_PhaseKind, "phase">;
 
 def Plan_LaunchShape : I32Enum<"LaunchShape", "the grid of a launch", [
     I32EnumCase<"items", 0>, I32EnumCase<"single", 1>]> {
@@ -46,9 +44,7 @@ def Plan_LaunchShape : I32Enum<"LaunchShape", "the grid of a launch", [
     one thread (the clock updates).
   }];
 }
-def Plan_LaunchShapeAttr : EnumAttr<Plan_Dialect, Plan_LaunchShape, "shape"> {
-  let assemblyFormat = "`` $value";
-}
+def Plan_LaunchShapeAttr : EnumAttr<Plan_Dialect, Plan_LaunchShape, "shape">;
 
 def Plan_ArgKind : I32Enum<"ArgKind", "what a launch argument is", [
     I32EnumCase<"clock", 0>, I32EnumCase<"buffer", 1>,
@@ -213,7 +209,7 @@ def Plan_PhaseOp : Plan_Op<"phase", [HasParent<"PlanOp">, NoTerminator,
   }];
   let arguments = (ins Plan_PhaseKindAttr:$kind);
   let regions = (region SizedRegion<1>:$body);
-  let assemblyFormat = "$kind attr-dict-with-keyword $body";
+  let assemblyFormat = "custom<EnumKeyword>($kind) attr-dict-with-keyword $body";
 }
 
 def Plan_RepeatOp : Plan_Op<"repeat", [NoTerminator, SingleBlock,
@@ -263,7 +259,7 @@ def Plan_LaunchOp : Plan_Op<"launch", [
                        DefaultValuedAttr<I64Attr, "0">:$shared_per_thread,
                        DefaultValuedAttr<I64Attr, "0">:$shared_fixed);
   let assemblyFormat = [{
-    $kernel $shape $args (`for` $component^)?
+    $kernel custom<EnumKeyword>($shape) $args (`for` $component^)?
     (`shared` `(` $shared_per_thread^ `,` $shared_fixed `)`)? attr-dict
   }];
 }

@@ -1,0 +1,166 @@
+//===- KernelTarget.h - what a backend provides to the kernels --*- C++ -*-===//
+//
+// The kernels of a lowered simulation (the clock updates, estimates,
+// Algorithm 2, the grid-wide rounds) are written once, in
+// SimulationKernels.cpp, in terms of *groups* of items and per-lane
+// *phases*: code that every lane of a group runs, separated by group-wide
+// operations (a minimum, a sum into the clock). A KernelTarget says what
+// those are on one backend. On a GPU a group is a thread block, a phase is
+// the thread's own code and a group operation is a warp reduction plus
+// workgroup memory between barriers; on a CPU a group is a loop iteration
+// and a phase is a loop over its lanes. Values that live across phases are
+// lane variables: one element of private memory per thread on a GPU
+// (promoted to registers), one element per lane on a CPU.
+//
+//===----------------------------------------------------------------------===//
+
+#ifndef SIM_CONVERSION_SIMCOMMON_KERNELTARGET_H
+#define SIM_CONVERSION_SIMCOMMON_KERNELTARGET_H
+
+#include "sim/Conversion/SimCommon/KernelBody.h"
+#include "sim/Dialect/Plan/IR/PlanOps.h"
+
+#include "mlir/Dialect/Arith/IR/Arith.h"
+#include "mlir/Dialect/MemRef/IR/MemRef.h"
+#include "mlir/Dialect/SCF/IR/SCF.h"
+#include "mlir/Interfaces/FunctionInterfaces.h"
+
+namespace mlir::sim {
+
+/// A small vocabulary over OpBuilder for the index and i64 arithmetic of
+/// kernels, so that kernel builders read like the algorithm. Integer
+/// constants are created once per kernel, at its entry.
+struct KernelBuilder : OpBuilder {
+  KernelBuilder(MLIRContext *context, Location loc)
+      : OpBuilder(context), loc(loc) {}
+
+  /// Starts a new kernel whose constants go to the start of `entry`.
+  void startKernel(Block *entry);
+  Value constant(Type type, int64_t value);
+  Value index(int64_t value) { return constant(getIndexType(), value); }
+  Value i64(int64_t value) { return constant(getI64Type(), value); }
+  Value i32(int64_t value) { return constant(getI32Type(), value); }
+
+  Value add(Value a, Value b);
+  Value sub(Value a, Value b);
+  Value mul(Value a, Value b);
+  Value min(Value a, Value b);
+  Value max(Value a, Value b);
+  Value cmp(arith::CmpIPredicate predicate, Value a, Value b);
+  Value select(Value cond, Value a, Value b);
+  Value xorOne(Value value);
+  Value toIndex(Value value);
+  Value extend(Value value, Type type);
+  Value truncate(Value value, Type type);
+  Value load(Value memref, Value index);
+  void store(Value value, Value memref, Value index);
+  void atomic(arith::AtomicRMWKind kind, Value value, Value memref,
+              Value index);
+
+  /// scf.if with results; the callbacks build each branch and return what
+  /// it yields.
+  scf::IfOp ifThenElse(TypeRange types, Value cond,
+                       function_ref<SmallVector<Value>()> thenBuilder,
+                       function_ref<SmallVector<Value>()> elseBuilder);
+  /// scf.if without results.
+  void ifThen(Value cond, function_ref<void()> thenBuilder);
+
+  Location loc;
+
+private:
+  Block *kernelEntry = nullptr;
+  llvm::DenseMap<std::pair<Type, int64_t>, Value> constants;
+};
+
+/// One lane of a group inside a phase.
+struct Lane {
+  /// The item the lane holds (index); only meaningful when `active`.
+  Value item;
+  /// True when the item is below the range (padding lanes are inactive).
+  Value active;
+  /// Where the lane's element of a lane variable is.
+  Value slot;
+};
+
+/// A value per lane that lives across phases.
+struct LaneVar {
+  Value memory;
+};
+
+/// One kernel under construction.
+struct Kernel {
+  FunctionOpInterface func;
+  /// What the runtime passes for each argument the kernel started with.
+  SmallVector<simplan::ArgAttr> args;
+  /// Trailing arguments of the target's own (not in the plan), kept.
+  unsigned targetArgs = 0;
+  Value clock;
+  /// The values bodies read; each kernel builder adds the halves,
+  /// registers and big step that its bodies see.
+  KernelValues values;
+  /// The time argument of an exact kernel.
+  Value time;
+  /// Target-specific state of the kernel (for example its workgroup
+  /// memory for group minima).
+  llvm::SmallVector<Value> targetState;
+};
+
+/// What a backend provides to the kernels.
+class KernelTarget {
+public:
+  virtual ~KernelTarget();
+
+  /// Creates the symbol table the kernels of simulation `name` go into
+  /// (named `<name>_kernels`) at the builder's insertion point.
+  virtual Operation *createContainer(OpBuilder &b, Location loc,
+                                     StringRef name) = 0;
+  /// Creates an empty kernel `name` taking `types` (plus arguments of the
+  /// target's own, appended), sets `kernel.func` and `kernel.targetArgs`,
+  /// and returns its entry block with the builder at its start.
+  virtual Block *createKernel(KernelBuilder &b, Kernel &kernel, StringRef name,
+                              TypeRange types) = 0;
+  /// Ends the kernel body.
+  virtual void finishKernel(KernelBuilder &b, Kernel &kernel) = 0;
+
+  /// Runs `body` once for each group this invocation handles; `base` is
+  /// the first item of the group.
+  virtual void forEachGroup(KernelBuilder &b, Kernel &kernel,
+                            function_ref<void(Value base)> body) = 0;
+  /// Runs `body` for each lane of the group that starts at `base`.
+  virtual void forEachLane(KernelBuilder &b, Kernel &kernel, Value base,
+                           function_ref<void(const Lane &)> body) = 0;
+  /// A lane variable of `type`, created at the kernel entry and, when
+  /// `initial` is given (a value available there), set to it in every lane.
+  virtual LaneVar createLaneVar(KernelBuilder &b, Kernel &kernel, Type type,
+                                Value initial = nullptr) = 0;
+
+  /// Prepares repeated group minima (groupMin); called once before the
+  /// first group, at the kernel's top level.
+  virtual void prepareGroupMin(KernelBuilder &b, Kernel &kernel) = 0;
+  /// The minimum of an i32 lane variable over the group, the same value in
+  /// every lane. Called at group level (outside phases), the same number of
+  /// times by every lane.
+  virtual Value groupMin(KernelBuilder &b, Kernel &kernel, LaneVar value) = 0;
+  /// Combines an i32 lane variable over every lane of the invocation into
+  /// clock slot `slot` (as i64) with `kind` (`mins` or `addi`). Called once,
+  /// after the last group, at the kernel's top level.
+  virtual void reduceIntoClock(KernelBuilder &b, Kernel &kernel, LaneVar value,
+                               arith::AtomicRMWKind kind, int64_t slot) = 0;
+
+  Value laneLoad(KernelBuilder &b, LaneVar var, const Lane &lane) {
+    return b.load(var.memory, lane.slot);
+  }
+  void laneStore(KernelBuilder &b, Value value, LaneVar var, const Lane &lane) {
+    b.store(value, var.memory, lane.slot);
+  }
+};
+
+/// Lowers one simulation that went through the front end: creates its
+/// kernels through `target` and a `simplan.plan` next to the simulation,
+/// then erases the simulation.
+LogicalResult lowerSimulation(SimulationOp simulation, KernelTarget &target,
+                              int64_t groupSize);
+
+} // namespace mlir::sim
+
+#endif // SIM_CONVERSION_SIMCOMMON_KERNELTARGET_H

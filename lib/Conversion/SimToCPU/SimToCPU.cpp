@@ -1,0 +1,154 @@
+//===- SimToCPU.cpp - simulations to CPU kernels and a host plan ----------===//
+//
+// The CPU target of the shared kernel algorithms (SimulationKernels.cpp),
+// with the GPU kernels' semantics: one call runs a range of groups, a group
+// runs phase by phase (a loop over its lanes between what would be barriers
+// on a GPU), and takes the same group-wide sub-step. Kernels are func.funcs
+// in a nested module named like the GPU kernel module, with the plan's
+// arguments followed by the first group, the end group and the group size
+// (docs/Bundle.md: the runtime calls them through `sim_cpu_<kernel>`).
+// Clock updates are atomic, so disjoint group ranges may run on different
+// threads at once.
+//
+//===----------------------------------------------------------------------===//
+
+#include "sim/Conversion/Passes.h"
+#include "sim/Conversion/SimCommon/KernelTarget.h"
+#include "sim/Dialect/Sim/IR/SimOps.h"
+
+#include "mlir/Dialect/Func/IR/FuncOps.h"
+
+namespace mlir::sim {
+#define GEN_PASS_DEF_SIMLOWERTOCPU
+#include "sim/Conversion/Passes.h.inc"
+} // namespace mlir::sim
+
+using namespace mlir;
+using namespace mlir::sim;
+
+namespace {
+
+class CPUKernelTarget : public KernelTarget {
+public:
+  Operation *createContainer(OpBuilder &b, Location loc,
+                             StringRef name) override {
+    auto module = ModuleOp::create(b, loc, name);
+    return module;
+  }
+
+  Block *createKernel(KernelBuilder &b, Kernel &kernel, StringRef name,
+                      TypeRange types) override {
+    SmallVector<Type> all(types);
+    all.append(3, b.getI64Type()); // first group, end group, group size
+    auto func =
+        func::FuncOp::create(b, b.loc, name, b.getFunctionType(all, {}));
+    func->setAttr(simplan::PlanDialect::getGroupArgumentsAttrName(),
+                  b.getI64IntegerAttr(3));
+    kernel.func = func;
+    kernel.targetArgs = 3;
+    Block *entry = func.addEntryBlock();
+    b.setInsertionPointToStart(entry);
+    Value groupSize = b.toIndex(entry->getArgument(all.size() - 1));
+    kernel.targetState = {groupSize};
+    return entry;
+  }
+
+  void finishKernel(KernelBuilder &b, Kernel &kernel) override {
+    b.setInsertionPointToEnd(&kernel.func.getFunctionBody().front());
+    func::ReturnOp::create(b, b.loc);
+  }
+
+  void forEachGroup(KernelBuilder &b, Kernel &kernel,
+                    function_ref<void(Value base)> body) override {
+    unsigned count = kernel.func.getNumArguments();
+    Value first = b.toIndex(kernel.func.getArgument(count - 3));
+    Value end = b.toIndex(kernel.func.getArgument(count - 2));
+    auto loop = scf::ForOp::create(b, b.loc, first, end, b.index(1));
+    OpBuilder::InsertionGuard guard(b);
+    b.setInsertionPoint(loop.getBody()->getTerminator());
+    body(b.mul(loop.getInductionVar(), groupSize(kernel)));
+  }
+
+  void forEachLane(KernelBuilder &b, Kernel &kernel, Value base,
+                   function_ref<void(const Lane &)> body) override {
+    auto loop =
+        scf::ForOp::create(b, b.loc, b.index(0), groupSize(kernel), b.index(1));
+    OpBuilder::InsertionGuard guard(b);
+    b.setInsertionPoint(loop.getBody()->getTerminator());
+    Value lane = loop.getInductionVar();
+    Value item = b.add(base, lane);
+    Value active = b.cmp(arith::CmpIPredicate::ult, item, kernel.values.range);
+    body(Lane{item, active, lane});
+  }
+
+  /// One element per lane of the group, on the stack of the call.
+  LaneVar createLaneVar(KernelBuilder &b, Kernel &kernel, Type type,
+                        Value initial) override {
+    OpBuilder::InsertionGuard guard(b);
+    b.setInsertionPointAfterValue(groupSize(kernel));
+    Value memory = memref::AllocaOp::create(
+        b, b.loc, MemRefType::get({ShapedType::kDynamic}, type),
+        ValueRange{groupSize(kernel)});
+    if (initial) {
+      auto loop = scf::ForOp::create(b, b.loc, b.index(0), groupSize(kernel),
+                                     b.index(1));
+      b.setInsertionPoint(loop.getBody()->getTerminator());
+      b.store(initial, memory, loop.getInductionVar());
+    }
+    return {memory};
+  }
+
+  void prepareGroupMin(KernelBuilder &, Kernel &) override {}
+
+  Value groupMin(KernelBuilder &b, Kernel &kernel, LaneVar value) override {
+    return fold(b, kernel, value, arith::AtomicRMWKind::mins);
+  }
+
+  void reduceIntoClock(KernelBuilder &b, Kernel &kernel, LaneVar value,
+                       arith::AtomicRMWKind kind, int64_t slot) override {
+    Value total = fold(b, kernel, value, kind);
+    b.atomic(kind, b.extend(total, b.getI64Type()), kernel.clock,
+             b.index(slot));
+  }
+
+private:
+  static Value groupSize(Kernel &kernel) { return kernel.targetState[0]; }
+
+  /// The minimum or sum of an i32 lane variable over the group's lanes.
+  static Value fold(KernelBuilder &b, Kernel &kernel, LaneVar value,
+                    arith::AtomicRMWKind kind) {
+    bool isMin = kind == arith::AtomicRMWKind::mins;
+    Value neutral = b.i32(isMin ? std::numeric_limits<int32_t>::max() : 0);
+    auto loop = scf::ForOp::create(b, b.loc, b.index(0), groupSize(kernel),
+                                   b.index(1), neutral);
+    OpBuilder::InsertionGuard guard(b);
+    b.setInsertionPointToEnd(loop.getBody());
+    Value element = b.load(value.memory, loop.getInductionVar());
+    Value acc = loop.getRegionIterArgs().front();
+    scf::YieldOp::create(b, b.loc,
+                         isMin ? b.min(acc, element) : b.add(acc, element));
+    return loop.getResult(0);
+  }
+};
+
+struct SimLowerToCPUPass
+    : public sim::impl::SimLowerToCPUBase<SimLowerToCPUPass> {
+  using SimLowerToCPUBase::SimLowerToCPUBase;
+
+  void runOnOperation() override {
+    ModuleOp module = getOperation();
+    if (groupSize <= 0) {
+      module.emitError() << "--sim-lower-to-cpu needs a positive group size, "
+                            "not "
+                         << static_cast<int64_t>(groupSize);
+      return signalPassFailure();
+    }
+    CPUKernelTarget target;
+    SmallVector<SimulationOp> simulations(module.getOps<SimulationOp>());
+    for (SimulationOp simulation : simulations)
+      if (failed(lowerSimulation(simulation, target, groupSize)))
+        return signalPassFailure();
+  }
+};
+
+} // namespace
