@@ -162,17 +162,17 @@ private:
 };
 } // namespace
 
-/// The region of `body` that holds the body of the given kind.
-static Region &getBodyRegion(const ReadInfo &info) {
+/// The item argument `%i` of the body a read sits in.
+static Value getItemArgument(const ReadInfo &info) {
   switch (info.body) {
   case BodyKind::NumSteps:
-    return info.component.getNumSteps();
+    return info.component.getNumStepsItem();
   case BodyKind::Evaluate:
-    return info.component.getEvaluate();
+    return info.component.getEvaluateItem();
   case BodyKind::Init:
-    return info.owner.getInit();
+    return info.owner.getInitItem();
   case BodyKind::Exact:
-    return info.owner.getExact();
+    return info.owner.getExactItem();
   }
   llvm_unreachable("unknown body kind");
 }
@@ -185,13 +185,6 @@ DependencyAnalysis::DependencyAnalysis(Operation *op)
     : simulation(cast<SimulationOp>(op)) {
   llvm::append_range(components, simulation.getComponents());
   llvm::append_range(buffers, simulation.getBuffers());
-  llvm::DenseMap<StringAttr, BufferOp> bufferByName;
-  for (BufferOp buffer : buffers)
-    bufferByName[buffer.getSymNameAttr()] = buffer;
-  for (ComponentOp component : components)
-    for (auto name : component.getWrites().getAsRange<FlatSymbolRefAttr>())
-      if (BufferOp buffer = bufferByName.lookup(name.getAttr()))
-        writers.try_emplace(buffer, component);
   analyzeReads();
 }
 
@@ -221,8 +214,7 @@ void DependencyAnalysis::analyzeReads() {
                   location->component,
                   location->buffer,
                   AccessPattern::gather()};
-    Value item = getBodyRegion(info).front().getArgument(0);
-    info.pattern = classifier.classify(read.getIndex(), item);
+    info.pattern = classifier.classify(read.getIndex(), getItemArgument(info));
     LLVM_DEBUG(llvm::dbgs() << "read of @" << buffer.getSymName() << " in "
                             << stringifyBodyKind(info.body) << ": "
                             << info.pattern.str() << "\n");

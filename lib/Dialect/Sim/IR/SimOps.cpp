@@ -255,6 +255,30 @@ ObserveOp SimulationOp::getObserveOp() {
   return ops.empty() ? nullptr : *ops.begin();
 }
 
+ComponentOp SimulationOp::getWriter(FlatSymbolRefAttr buffer) {
+  for (ComponentOp component : getComponents())
+    if (component.writesBuffer(buffer))
+      return component;
+  return nullptr;
+}
+
+ComponentOp SimulationOp::getWriter(BufferOp buffer) {
+  return getWriter(FlatSymbolRefAttr::get(buffer.getSymNameAttr()));
+}
+
+std::optional<unsigned>
+SimulationOp::getSchedulePosition(ComponentOp component) {
+  ScheduleOp schedule = getScheduleOp();
+  if (!schedule)
+    return std::nullopt;
+  auto order = schedule.getOrder().getAsRange<FlatSymbolRefAttr>();
+  auto it =
+      llvm::find(order, FlatSymbolRefAttr::get(component.getSymNameAttr()));
+  if (it == order.end())
+    return std::nullopt;
+  return std::distance(order.begin(), it);
+}
+
 LogicalResult SimulationOp::verify() {
   // A simulation nested in a body (through an op that opens a symbol table)
   // would be walked as part of the outer one by every analysis.

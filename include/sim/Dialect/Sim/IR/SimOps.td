@@ -97,6 +97,15 @@ def Sim_SimulationOp : Sim_Op<"simulation", [
     ::mlir::Operation *lookupSymbol(::mlir::FlatSymbolRefAttr name) {
       return ::mlir::SymbolTable::lookupSymbolIn(*this, name.getAttr());
     }
+    /// The component that writes `buffer` (verified IR has exactly one), or
+    /// null when no component writes it. Every writer lookup goes through
+    /// these two.
+    ComponentOp getWriter(BufferOp buffer);
+    ComponentOp getWriter(::mlir::FlatSymbolRefAttr buffer);
+    /// The index of `component` in the order recorded on `sim.schedule`, or
+    /// std::nullopt when there is no schedule or it does not list the
+    /// component (a prefix given by the user).
+    std::optional<unsigned> getSchedulePosition(ComponentOp component);
   }];
 }
 
@@ -198,6 +207,19 @@ def Sim_BufferOp : Sim_Op<"buffer", [
     ::mlir::FloatType getScalarType();
     /// Bytes of one element.
     int64_t getElementBytes();
+
+    /// The item argument `%i` of the init body.
+    ::mlir::BlockArgument getInitItem() {
+      return getInit().front().getArgument(0);
+    }
+    /// The item argument `%i` of the exact body (requires an exact body).
+    ::mlir::BlockArgument getExactItem() {
+      return getExact().front().getArgument(0);
+    }
+    /// The time argument `%t: f64` (time units) of the exact body.
+    ::mlir::BlockArgument getExactTime() {
+      return getExact().front().getArgument(1);
+    }
   }];
 }
 
@@ -261,6 +283,36 @@ def Sim_ComponentOp : Sim_Op<"component", [
     bool hasNumSteps() { return !getNumSteps().empty(); }
     /// True when `buffer` is one of the buffers this component writes.
     bool writesBuffer(::mlir::FlatSymbolRefAttr buffer);
+
+    // The arguments of the bodies by name; code never indexes them. The
+    // num_steps accessors require hasNumSteps().
+
+    /// The item argument `%i: index` of num_steps.
+    ::mlir::BlockArgument getNumStepsItem() {
+      return getNumSteps().front().getArgument(0);
+    }
+    /// The local time argument `%t: i64` (base steps) of num_steps.
+    ::mlir::BlockArgument getNumStepsTime() {
+      return getNumSteps().front().getArgument(1);
+    }
+    /// The item argument `%i: index` of evaluate.
+    ::mlir::BlockArgument getEvaluateItem() {
+      return getEvaluate().front().getArgument(0);
+    }
+    /// The local time argument `%t: i64` (base steps) of evaluate: the start
+    /// of the sub-step.
+    ::mlir::BlockArgument getEvaluateTime() {
+      return getEvaluate().front().getArgument(1);
+    }
+    /// The sub-step length argument `%n: i32` (base steps) of evaluate.
+    ::mlir::BlockArgument getEvaluateSteps() {
+      return getEvaluate().front().getArgument(2);
+    }
+    /// The base time step argument `%dt` (the simulation's dt type) of
+    /// evaluate.
+    ::mlir::BlockArgument getEvaluateTimeStep() {
+      return getEvaluate().front().getArgument(3);
+    }
   }];
 }
 
