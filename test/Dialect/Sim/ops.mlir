@@ -390,3 +390,23 @@ sim.simulation @nested_body_ops range(4) dt(1.0 : f64) max_steps(1) {
     sim.yield %r : vector<16xf64>
   }
 }
+
+// -----
+
+// Every strategy the memory plan records; hip-cache is printed in quotes.
+// CHECK-LABEL: sim.simulation @strategy_simple
+// CHECK-SAME:    attributes {strategy = #sim<strategy simple>}
+// CHECK-LABEL: sim.simulation @strategy_traditional
+// CHECK-SAME:    attributes {strategy = #sim<strategy traditional>}
+// CHECK-LABEL: sim.simulation @strategy_hip
+// CHECK-SAME:    attributes {strategy = #sim<strategy hip>}
+// CHECK-LABEL: sim.simulation @strategy_hip_cache
+// CHECK-SAME:    attributes {strategy = #sim<strategy "hip-cache">}
+sim.simulation @strategy_simple range(4) dt(1.0 : f32) max_steps(1) attributes {strategy = #sim<strategy simple>} {
+}
+sim.simulation @strategy_traditional range(4) dt(1.0 : f32) max_steps(1) attributes {strategy = #sim<strategy traditional>} {
+}
+sim.simulation @strategy_hip range(4) dt(1.0 : f32) max_steps(1) attributes {strategy = #sim<strategy hip>} {
+}
+sim.simulation @strategy_hip_cache range(4) dt(1.0 : f32) max_steps(1) attributes {strategy = #sim<strategy "hip-cache">} {
+}

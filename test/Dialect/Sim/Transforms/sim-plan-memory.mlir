@@ -8,7 +8,7 @@
 // CHECK-LABEL: sim.simulation @no_snapshot
 // HIP-SAME: attributes {strategy = #sim<strategy hip>}
 // SIMPLE-SAME: attributes {strategy = #sim<strategy simple>}
-// CACHE-SAME: attributes {strategy = #sim<strategy hip_cache>}
+// CACHE-SAME: attributes {strategy = #sim<strategy "hip-cache">}
 // CHECK-NOT: snapshot
 // CHECK: sim.component @Source writes(@S, @G) attributes {parity = #sim<parity none>
 // HIP: sim.component @Reader writes(@R) attributes {parity = #sim<parity none>, sub_stepping

@@ -29,7 +29,7 @@
 // JSON-NEXT: "planned_bytes": 8000,
 // JSON-NEXT: "range": 100,
 // JSON-NEXT: "simulation": "needs_snapshot",
-// JSON-NEXT: "strategy": "hip_cache"
+// JSON-NEXT: "strategy": "hip-cache"
 
 sim.simulation @needs_snapshot range(100) dt(1.0e-2 : f32) max_steps(4) {
   sim.buffer @U : f64 interp(#sim.hermite<@dU>) init {

@@ -95,7 +95,7 @@ def Sim_VersionAttr : EnumAttr<Sim_Dialect, Sim_Version, "version">;
 
 def Sim_Strategy : I32Enum<"Strategy", "how big steps are chosen and run", [
     I32EnumCase<"simple", 0>, I32EnumCase<"traditional", 1>,
-    I32EnumCase<"hip", 2>, I32EnumCase<"hip_cache", 3>]> {
+    I32EnumCase<"hip", 2>, I32EnumCase<"hip_cache", 3, "hip-cache">]> {
   let cppNamespace = "::mlir::sim";
   let description = [{
     `simple`: every big step is one base step. `traditional`: every component
@@ -103,9 +103,15 @@ def Sim_Strategy : I32Enum<"Strategy", "how big steps are chosen and run", [
     it in one evaluation. `hip` (the paper's method): the big step is the
     minimum estimate of the components that read through the back edge, and
     every component advances through it in sub-steps, reading earlier
-    components' buffers interpolated in time. `hip_cache`: `hip` with
+    components' buffers interpolated in time. `hip-cache`: `hip` with
     shared-memory caches of interpolated values (Section 4.1). Recorded on a
-    simulation by `--sim-plan-memory`.
+    simulation by `--sim-plan-memory`; the pass options use the same names.
+    A name with a `-` is printed in quotes:
+
+    ```mlir
+    sim.simulation @s range(1024) dt(1.0e-3 : f32) max_steps(4)
+        attributes {strategy = #sim<strategy "hip-cache">} { ... }
+    ```
   }];
 }
 def Sim_StrategyAttr : EnumAttr<Sim_Dialect, Sim_Strategy, "strategy">;

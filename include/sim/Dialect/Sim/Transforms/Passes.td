@@ -154,15 +154,7 @@ def SimPlanMemory : Pass<"sim-plan-memory", "::mlir::sim::SimulationOp"> {
   let options = [
     Option<"strategy", "strategy", "::mlir::sim::Strategy",
            "::mlir::sim::Strategy::hip", "The strategy to plan for",
-           [{::llvm::cl::values(
-               clEnumValN(::mlir::sim::Strategy::simple, "simple",
-                          "one base step per big step"),
-               clEnumValN(::mlir::sim::Strategy::traditional, "traditional",
-                          "global minimum step, one evaluation per component"),
-               clEnumValN(::mlir::sim::Strategy::hip, "hip",
-                          "the paper's method: interpolated sub-steps"),
-               clEnumValN(::mlir::sim::Strategy::hip_cache, "hip-cache",
-                          "hip with shared-memory caches"))}]>,
+           "::mlir::sim::getStrategyOptionValues()">,
   ];
 }
 
