@@ -246,6 +246,33 @@ sim.simulation @s range(16) dt(1.0 : f32) max_steps(1) {
 
 // -----
 
+// A snapshot load needs a snapshot in the memory plan.
+sim.simulation @s range(16) dt(1.0 : f32) max_steps(1) {
+  sim.buffer @A : f32 init {
+  ^bb0(%i: index):
+    %c = arith.constant 0.0 : f32
+    sim.yield %c : f32
+  }
+  sim.buffer @B : f32 init {
+  ^bb0(%i: index):
+    %c = arith.constant 0.0 : f32
+    sim.yield %c : f32
+  }
+  sim.component @CA writes(@A) evaluate {
+  ^bb0(%i: index, %t: i64, %n: i32, %dt: f32):
+    %x = sim.load local @A[%i] : f32
+    sim.yield %x : f32
+  }
+  sim.component @CB writes(@B) evaluate {
+  ^bb0(%i: index, %t: i64, %n: i32, %dt: f32):
+    // expected-error @+1 {{'sim.load' op loads the snapshot of @A, but the memory plan keeps none: the buffer is not marked 'snapshot'}}
+    %x = sim.load snapshot @A[%i] : f32
+    sim.yield %x : f32
+  }
+}
+
+// -----
+
 //===----------------------------------------------------------------------===//
 // sim.get_param
 //===----------------------------------------------------------------------===//

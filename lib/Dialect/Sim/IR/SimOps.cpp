@@ -279,6 +279,21 @@ SimulationOp::getSchedulePosition(ComponentOp component) {
   return std::distance(order.begin(), it);
 }
 
+Operation *SimulationOp::findExplicitAccess() {
+  Operation *found = nullptr;
+  for (ComponentOp component : getComponents()) {
+    component.walk<WalkOrder::PreOrder>([&](Operation *op) {
+      if (!isa<LoadOp, BigStepOp>(op))
+        return WalkResult::advance();
+      found = op;
+      return WalkResult::interrupt();
+    });
+    if (found)
+      return found;
+  }
+  return nullptr;
+}
+
 LogicalResult SimulationOp::verify() {
   // A simulation nested in a body (through an op that opens a symbol table)
   // would be walked as part of the outer one by every analysis.
@@ -701,6 +716,10 @@ LogicalResult LoadOp::verifySymbolUses(SymbolTableCollection &symbolTable) {
   if (failed(verifyBufferAccess(*this, symbolTable, getBufferAttr(), getType(),
                                 buffer)))
     return failure();
+  if (getVersion() == Version::snapshot && !buffer.getSnapshot())
+    return emitOpError() << "loads the snapshot of " << getBufferAttr()
+                         << ", but the memory plan keeps none: the buffer is "
+                            "not marked 'snapshot'";
   ComponentOp component = getEnclosingBody(*this)->component;
   if (getVersion() == Version::local &&
       !component.writesBuffer(getBufferAttr()))

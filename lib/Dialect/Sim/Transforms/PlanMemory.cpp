@@ -36,6 +36,9 @@ struct PlanMemoryPass : public sim::impl::SimPlanMemoryBase<PlanMemoryPass> {
 
   void runOnOperation() override {
     SimulationOp simulation = getOperation();
+    if (failed(checkBeforeInterpolation(simulation, getArgument(),
+                                        "its memory plan is")))
+      return signalPassFailure();
     auto &analysis = getAnalysis<DependencyAnalysis>();
     if (failed(checkPrerequisites(analysis)))
       return signalPassFailure();

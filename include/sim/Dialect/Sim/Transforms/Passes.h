@@ -36,6 +36,14 @@ inline llvm::cl::ValuesClass getStrategyOptionValues() {
                  "hip with shared-memory caches of window reads"));
 }
 
+/// Fails with an error on `simulation` when it is past
+/// --sim-insert-interpolation (it holds sim.load or sim.big_step), naming
+/// the pass that cannot run on it and what it would re-decide, e.g.
+/// ("sim-plan-memory", "its memory plan is").
+LogicalResult checkBeforeInterpolation(SimulationOp simulation,
+                                       StringRef passArgument,
+                                       StringRef decisions);
+
 #define GEN_PASS_DECL
 #include "sim/Dialect/Sim/Transforms/Passes.h.inc"
 
