@@ -294,6 +294,17 @@ Operation *SimulationOp::findExplicitAccess() {
   return nullptr;
 }
 
+Type SimulationOp::getBuiltinParamType(StringRef name) {
+  Builder b(getContext());
+  if (name == "range")
+    return b.getI64Type();
+  if (name == "dt")
+    return getTimeStepType();
+  if (name == "max_steps")
+    return b.getI32Type();
+  return nullptr;
+}
+
 LogicalResult SimulationOp::verify() {
   // A simulation nested in a body (through an op that opens a symbol table)
   // would be walked as part of the outer one by every analysis.
@@ -406,7 +417,7 @@ LogicalResult SimulationOp::verifyRegions() {
 LogicalResult ParamOp::verify() {
   // --sim-set-params reads these names as the simulation's own attributes, so
   // a parameter with one of them could never be overridden.
-  if (llvm::is_contained({"range", "dt", "max_steps"}, getSymName()))
+  if (SimulationOp::isBuiltinParamName(getSymName()))
     return emitOpError() << "cannot be named '" << getSymName()
                          << "': range, dt and max_steps name the "
                             "simulation's own attributes";
@@ -424,6 +435,10 @@ LogicalResult ParamOp::verify() {
   return success();
 }
 
+bool GetParamOp::isBuiltin() {
+  return SimulationOp::isBuiltinParamName(getParam());
+}
+
 LogicalResult GetParamOp::verify() {
   if (!getEnclosingBody(*this))
     return emitOpError() << "must be inside a num_steps, evaluate, init or "
@@ -432,6 +447,17 @@ LogicalResult GetParamOp::verify() {
 }
 
 LogicalResult GetParamOp::verifySymbolUses(SymbolTableCollection &symbolTable) {
+  if (isBuiltin()) {
+    auto simulation = (*this)->getParentOfType<SimulationOp>();
+    if (!simulation)
+      return failure(); // Reported by verify().
+    Type expected = simulation.getBuiltinParamType(getParam());
+    if (getType() != expected)
+      return emitOpError() << "result type " << getType()
+                           << " does not match the type " << expected
+                           << " of the simulation's " << getParam();
+    return success();
+  }
   auto param =
       symbolTable.lookupNearestSymbolFrom<ParamOp>(*this, getParamAttr());
   if (!param)

@@ -37,8 +37,8 @@ class BodyTime {
 public:
   /// `time` is the body's local time argument `%t`; `steps` the sub-step
   /// length `%n` in evaluate, null in num_steps (it reads at `t`).
-  BodyTime(Region &body, Value time, Value steps, double dt)
-      : body(body), time(time), steps(steps), dt(dt) {}
+  BodyTime(Region &body, Value time, Value steps, FloatType dtType)
+      : body(body), time(time), steps(steps), dtType(dtType) {}
 
   Value getFraction(FloatType type) {
     auto it = fractions.find(type);
@@ -71,10 +71,20 @@ public:
     Location loc = body.getLoc();
     Value sizeF =
         arith::SIToFPOp::create(builder, loc, type, getBigStep().second);
-    Value dtValue =
-        arith::ConstantOp::create(builder, loc, builder.getFloatAttr(type, dt));
-    Value span = arith::MulFOp::create(builder, loc, sizeF, dtValue);
-    track({sizeF, dtValue, span});
+    // dt is a run-time value (a kernel argument), not a constant of the
+    // scene: one compiled scene runs at any dt.
+    Value dt =
+        GetParamOp::create(builder, loc, dtType,
+                           FlatSymbolRefAttr::get(builder.getContext(), "dt"));
+    track({sizeF, dt});
+    if (type.getWidth() != dtType.getWidth()) {
+      dt = type.getWidth() > dtType.getWidth()
+               ? Value(arith::ExtFOp::create(builder, loc, type, dt))
+               : Value(arith::TruncFOp::create(builder, loc, type, dt));
+      track({dt});
+    }
+    Value span = arith::MulFOp::create(builder, loc, sizeF, dt);
+    track({span});
     return spans[type] = span;
   }
 
@@ -111,7 +121,7 @@ private:
 
   Region &body;
   Value time, steps;
-  double dt;
+  FloatType dtType;
   BigStepOp bigStep;
   Operation *insertionPoint = nullptr;
   SmallVector<Operation *> created;
@@ -165,7 +175,7 @@ struct InsertInterpolationPass
                   isEvaluate ? component.getEvaluateTime()
                              : component.getNumStepsTime(),
                   isEvaluate ? Value(component.getEvaluateSteps()) : Value(),
-                  simulation.getTimeStep());
+                  simulation.getTimeStepType());
     IRRewriter rewriter(&getContext());
     for (ReadOp read : reads) {
       if (!read.getRoleAttr())

@@ -110,6 +110,15 @@ def Sim_SimulationOp : Sim_Op<"simulation", [
     /// A simulation that has one is past `--sim-insert-interpolation`: its
     /// schedule, verdicts and memory plan are fixed.
     ::mlir::Operation *findExplicitAccess();
+    /// True for `range`, `dt` and `max_steps`: the simulation's own
+    /// parameters, which `sim.get_param` reads like a `sim.param` and which
+    /// no `sim.param` may be named.
+    static bool isBuiltinParamName(::llvm::StringRef name) {
+      return name == "range" || name == "dt" || name == "max_steps";
+    }
+    /// The type `sim.get_param` reads a builtin parameter with: `range` is
+    /// i64, `dt` the time step type, `max_steps` i32; null for other names.
+    ::mlir::Type getBuiltinParamType(::llvm::StringRef name);
   }];
 }
 
@@ -136,19 +145,36 @@ def Sim_ParamOp : Sim_Op<"param", [Symbol, HasParent<"SimulationOp">]> {
 
 def Sim_GetParamOp : Sim_Op<"get_param", [Pure,
     DeclareOpInterfaceMethods<SymbolUserOpInterface>]> {
-  let summary = "reads a scene parameter";
+  let summary = "reads a scene parameter or the simulation's range, dt or max_steps";
   let description = [{
-    Returns the current value of a `sim.param` of the enclosing simulation.
-    The result type must be the parameter's type.
+    Returns the current value of a `sim.param` of the enclosing simulation,
+    or of one of the simulation's own parameters: `@range : i64` (the
+    number of items), `@dt : <dt type>` (the base time step, `f32` or `f64`
+    as declared by `dt(...)`) and `@max_steps : i32`. The result type must be
+    the parameter's type. Every body (`init`, `exact`, `num_steps`,
+    `evaluate`) may read every parameter.
+
+    Parameters are run-time values: a lowering passes them to the kernels,
+    so one compiled scene runs with any values `--sim-set-params` or the
+    runtime gives them. The compiler never reads a parameter's default to
+    decide anything (an item index computed from one is a gather).
 
     ```mlir
     %L = sim.get_param @L : i32
+    %dt = sim.get_param @dt : f32
+    %range = sim.get_param @range : i64
+    %max = sim.get_param @max_steps : i32
     ```
   }];
   let arguments = (ins FlatSymbolRefAttr:$param);
   let results = (outs AnyType:$result);
   let assemblyFormat = "$param attr-dict `:` type($result)";
   let hasVerifier = 1;
+  let extraClassDeclaration = [{
+    /// True when this reads `range`, `dt` or `max_steps` of the simulation
+    /// rather than a `sim.param`.
+    bool isBuiltin();
+  }];
 }
 
 //===----------------------------------------------------------------------===//
@@ -248,6 +274,11 @@ def Sim_ComponentOp : Sim_Op<"component", [
     - `evaluate` has arguments `(%i: index, %t: i64, %n: i32, %dt: <dt type>)`
       and yields the new value of each written buffer, in `writes` order,
       after `%n` base steps of `%dt` from local time `%t`.
+
+    Both bodies (like buffer bodies) may read the simulation's `range`, `dt`
+    and `max_steps` with `sim.get_param`. C++ code reaches the arguments by
+    name: `getNumStepsItem()`, `getNumStepsTime()`, `getEvaluateItem()`,
+    `getEvaluateTime()`, `getEvaluateSteps()`, `getEvaluateTimeStep()`.
 
     Both bodies read state only through `sim.read`. The analyses record
     their verdicts as attributes: `sub_stepping` (`--sim-substep-legality`),

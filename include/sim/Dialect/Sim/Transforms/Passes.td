@@ -174,7 +174,9 @@ def SimInsertInterpolation
       (`target`), plus the auxiliary buffers the interpolation needs, and
       interpolate at the reader's local time: fraction `(t + n - T) / m` in
       `evaluate`, `(t - T) / m` in `num_steps`, with `T` and `m` from
-      `sim.big_step`. Under `simple` and `traditional` they load `target` in
+      `sim.big_step`. The length of the big step in time units (`m * dt`,
+      for derivatives) reads `dt` with `sim.get_param @dt`: it is a
+      run-time value, not a constant of the scene. Under `simple` and `traditional` they load `target` in
       `evaluate` (the fraction is always 1) and `source` in `num_steps`
       (estimates are taken at `T`).
 
