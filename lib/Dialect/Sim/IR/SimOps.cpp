@@ -669,9 +669,20 @@ LogicalResult ScheduleOp::verifySymbolUses(SymbolTableCollection &table) {
   if (failed(verifySymbolArray<ComponentOp>(*this, table, getOrder(), "order",
                                             "sim.component")))
     return failure();
-  if (ArrayAttr bounds = getBoundedByAttr())
-    return verifySymbolArray<ComponentOp>(*this, table, bounds, "bounded_by",
-                                          "sim.component");
+  ArrayAttr bounds = getBoundedByAttr();
+  if (!bounds)
+    return success();
+  if (failed(verifySymbolArray<ComponentOp>(*this, table, bounds, "bounded_by",
+                                            "sim.component")))
+    return failure();
+  for (auto name : bounds.getAsRange<FlatSymbolRefAttr>()) {
+    auto component =
+        table.lookupNearestSymbolFrom<ComponentOp>(*this, name.getAttr());
+    if (!component.hasNumSteps())
+      return emitOpError() << "lists " << name
+                           << " in bounded_by, but it has no num_steps body, "
+                              "so it never bounds a step";
+  }
   return success();
 }
 

@@ -365,7 +365,8 @@ def Sim_ScheduleOp : Sim_Op<"schedule", [HasParent<"SimulationOp">,
     cycle is cut). `--sim-schedule` validates it against the dependency graph,
     completes a prefix, and records in `bounded_by` the components whose
     `num_steps` bound the `hip` big step (those that read through the back
-    edge).
+    edge and have a `num_steps` body; without one a component never bounds a
+    step). Without `bounded_by` only `max_steps` bounds the step.
 
     ```mlir
     sim.schedule [@C0]

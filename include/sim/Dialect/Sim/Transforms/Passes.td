@@ -80,8 +80,9 @@ def SimSchedule : Pass<"sim-schedule", "::mlir::sim::SimulationOp"> {
 
     The result is recorded on the IR: `sim.schedule` holds the full order and,
     in `bounded_by`, the components whose `num_steps` bound the `hip` big step
-    (those that read through the back edge, Fig. 6; `traditional` is bounded
-    by every component with a `num_steps` body). Every `sim.read` in a
+    (those that read through the back edge and have a `num_steps` body,
+    Fig. 6; `traditional` is bounded by every component with a `num_steps`
+    body). Every `sim.read` in a
     component gets its role: `own`, `interpolate` (a buffer already advanced
     in this step) or `back_edge`.
 
