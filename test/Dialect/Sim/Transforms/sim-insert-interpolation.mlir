@@ -137,7 +137,8 @@ sim.simulation @num_steps_fraction range(64) dt(1.0e-2 : f32) max_steps(3) {
 // -----
 
 // Hermite interpolation of @X with derivative @V. Their writer reads its own
-// neighbours (grid_sync), so under hip both have snapshots: the values at T
+// neighbours (grid_sync) and sub-steps (num_steps), so under hip its
+// sub-steps ping-pong and both buffers have snapshots: the values at T
 // come from them. The span of the big step (m * dt, dt read with
 // sim.get_param as a run-time value and converted to the element type)
 // scales the derivatives.
@@ -179,7 +180,11 @@ sim.simulation @hermite_f64 range(64) dt(2.5e-1 : f32) max_steps(3) {
     %c = arith.constant 0.0 : f64
     sim.yield %c : f64
   }
-  sim.component @Move writes(@X, @V) evaluate {
+  sim.component @Move writes(@X, @V) num_steps {
+  ^bb0(%i: index, %t: i64):
+    %c2 = arith.constant 2 : i32
+    sim.yield %c2 : i32
+  } evaluate {
   ^bb0(%i: index, %t: i64, %n: i32, %dt: f32):
     %c1 = arith.constant 1 : index
     %j = arith.addi %i, %c1 : index

@@ -68,12 +68,14 @@ def Sim_Parity : I32Enum<"Parity",
     Recorded by `--sim-plan-memory`. `none`: the component writes its target
     half once per big step, so no parity copy is needed; its source half still
     holds the value at `T` afterwards. That holds for every component under
-    `simple` and `traditional` (one evaluation per big step) and for
+    `simple` and `traditional` (one evaluation per big step), for
     `in_kernel` components under `hip`, which keep their own state in
-    registers between sub-steps. `copy_if_even`: a `grid_sync` component's
-    sub-steps ping-pong between the halves through memory, so after an even
-    number of them the result sits in the wrong half and must be copied to
-    the target (Algorithm 2, lines 41-44).
+    registers between sub-steps, and for components without `num_steps`,
+    which take the whole big step in one evaluation. `copy_if_even`: the
+    sub-steps of a `grid_sync` component with `num_steps` ping-pong between
+    the halves through memory under `hip`, so after an even number of them
+    the result sits in the wrong half and must be copied to the target
+    (Algorithm 2, lines 41-44).
   }];
 }
 def Sim_ParityAttr : EnumAttr<Sim_Dialect, Sim_Parity, "parity">;

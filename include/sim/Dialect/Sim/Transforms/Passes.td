@@ -142,10 +142,12 @@ def SimPlanMemory : Pass<"sim-plan-memory", "::mlir::sim::SimulationOp"> {
     target half, so nothing is snapshotted or copied. Under `hip`, an
     `in_kernel` component keeps its own state in registers between sub-steps
     and writes the target once, so its source half still holds the value at
-    `T` for later interpolating readers: no snapshot and no parity copy. Only
-    a `grid_sync` component ping-pongs through memory: it gets
-    `copy_if_even`, and its buffers get a snapshot when a later component
-    interpolates them (or needs them as an interpolation's auxiliary buffer).
+    `T` for later interpolating readers: no snapshot and no parity copy. A
+    component without `num_steps` takes the whole big step in one
+    evaluation, so it needs neither. Only a `grid_sync` component with
+    `num_steps` ping-pongs through memory: it gets `copy_if_even`, and its
+    buffers get a snapshot when a later component interpolates them (or
+    needs them as an interpolation's auxiliary buffer).
     Under `hip-cache`, `caches` lists the buffers a component interpolates
     through a window (neighbouring threads share those values).
 
