@@ -4,10 +4,11 @@
 // argument `%i`. An index is a window when it decomposes into `%i + c` through
 // additions, subtractions and index casts, where every other term has a range
 // that upstream IntegerRangeAnalysis can bound (constants, loop induction
-// variables with constant bounds, values derived from them). Anything else is
-// a gather. Being conservative matters: a read classified as a window that
-// is really a gather would make a shared-memory cache or a legality verdict
-// wrong; the reverse only costs performance.
+// variables with constant bounds, values derived from them) and that does not
+// depend on a sim.get_param (a run-time value). Anything else is a gather.
+// Being conservative matters: a read classified as a window that is really a
+// gather would make a shared-memory cache or a legality verdict wrong; the
+// reverse only costs performance.
 //
 //===----------------------------------------------------------------------===//
 
@@ -18,6 +19,7 @@
 #include "mlir/Analysis/DataFlow/IntegerRangeAnalysis.h"
 #include "mlir/Analysis/DataFlowFramework.h"
 #include "mlir/Dialect/Arith/IR/Arith.h"
+#include "mlir/Interfaces/LoopLikeInterface.h"
 #include "llvm/ADT/SetVector.h"
 #include "llvm/Support/Debug.h"
 #include "llvm/Support/MathExtras.h"
@@ -88,6 +90,56 @@ constexpr int64_t kMaxOffset = int64_t(1) << 40;
 
 using OffsetRange = std::pair<int64_t, int64_t>;
 
+/// Appends what the values an operation defines depend on: its operands and
+/// the values its regions yield (loop-carried values, results of
+/// conditionals).
+void appendInputs(Operation *op, SmallVectorImpl<Value> &worklist) {
+  llvm::append_range(worklist, op->getOperands());
+  for (Region &region : op->getRegions())
+    for (Block &block : region)
+      if (!block.empty() && block.back().hasTrait<OpTrait::IsTerminator>())
+        llvm::append_range(worklist, block.back().getOperands());
+}
+
+/// True when `root` depends on a `sim.get_param`. Parameters are run-time
+/// values (`--sim-set-params` or the runtime change them after compilation),
+/// so a range IntegerRangeAnalysis derives through one (from the type of an
+/// index_cast, for example) is not a bound the item index keeps. A loop
+/// induction variable depends on the loop's bounds and step only; any other
+/// block argument of a nested region depends on its op's inputs.
+bool dependsOnParam(Value root) {
+  SmallVector<Value> worklist = {root};
+  llvm::DenseSet<Value> seen;
+  while (!worklist.empty()) {
+    Value value = worklist.pop_back_val();
+    if (!seen.insert(value).second)
+      continue;
+    if (Operation *def = value.getDefiningOp()) {
+      if (isa<GetParamOp>(def))
+        return true;
+      appendInputs(def, worklist);
+      continue;
+    }
+    Operation *owner = cast<BlockArgument>(value).getOwner()->getParentOp();
+    if (!owner || isa<ComponentOp, BufferOp>(owner))
+      continue; // A body argument: %i, %t, %n, %dt.
+    auto loop = dyn_cast<LoopLikeOpInterface>(owner);
+    std::optional<SmallVector<Value>> inductionVars =
+        loop ? loop.getLoopInductionVars() : std::nullopt;
+    if (inductionVars && llvm::is_contained(*inductionVars, value)) {
+      for (auto bounds : {loop.getLoopLowerBounds(), loop.getLoopUpperBounds(),
+                          loop.getLoopSteps()})
+        if (bounds)
+          for (OpFoldResult bound : *bounds)
+            if (auto boundValue = dyn_cast<Value>(bound))
+              worklist.push_back(boundValue);
+      continue;
+    }
+    appendInputs(owner, worklist);
+  }
+  return false;
+}
+
 /// Decomposes read indices into `%item + c` and bounds `c`.
 class IndexClassifier {
 public:
@@ -101,8 +153,11 @@ public:
   }
 
 private:
-  /// The range of an integer value, when IntegerRangeAnalysis bounds it.
+  /// The range of an integer value, when IntegerRangeAnalysis bounds it and
+  /// it does not depend on a run-time parameter.
   std::optional<OffsetRange> rangeOf(Value value) {
+    if (dependsOnParam(value))
+      return std::nullopt;
     auto *lattice =
         solver.lookupState<dataflow::IntegerValueRangeLattice>(value);
     if (!lattice || lattice->getValue().isUninitialized())
@@ -162,17 +217,17 @@ private:
 };
 } // namespace
 
-/// The region of `body` that holds the body of the given kind.
-static Region &getBodyRegion(const ReadInfo &info) {
+/// The item argument `%i` of the body a read sits in.
+static Value getItemArgument(const ReadInfo &info) {
   switch (info.body) {
   case BodyKind::NumSteps:
-    return info.component.getNumSteps();
+    return info.component.getNumStepsItem();
   case BodyKind::Evaluate:
-    return info.component.getEvaluate();
+    return info.component.getEvaluateItem();
   case BodyKind::Init:
-    return info.owner.getInit();
+    return info.owner.getInitItem();
   case BodyKind::Exact:
-    return info.owner.getExact();
+    return info.owner.getExactItem();
   }
   llvm_unreachable("unknown body kind");
 }
@@ -185,13 +240,6 @@ DependencyAnalysis::DependencyAnalysis(Operation *op)
     : simulation(cast<SimulationOp>(op)) {
   llvm::append_range(components, simulation.getComponents());
   llvm::append_range(buffers, simulation.getBuffers());
-  llvm::DenseMap<StringAttr, BufferOp> bufferByName;
-  for (BufferOp buffer : buffers)
-    bufferByName[buffer.getSymNameAttr()] = buffer;
-  for (ComponentOp component : components)
-    for (auto name : component.getWrites().getAsRange<FlatSymbolRefAttr>())
-      if (BufferOp buffer = bufferByName.lookup(name.getAttr()))
-        writers.try_emplace(buffer, component);
   analyzeReads();
 }
 
@@ -221,8 +269,7 @@ void DependencyAnalysis::analyzeReads() {
                   location->component,
                   location->buffer,
                   AccessPattern::gather()};
-    Value item = getBodyRegion(info).front().getArgument(0);
-    info.pattern = classifier.classify(read.getIndex(), item);
+    info.pattern = classifier.classify(read.getIndex(), getItemArgument(info));
     LLVM_DEBUG(llvm::dbgs() << "read of @" << buffer.getSymName() << " in "
                             << stringifyBodyKind(info.body) << ": "
                             << info.pattern.str() << "\n");

@@ -37,6 +37,9 @@ SmallVector<ComponentOp>
 Schedule::getHipStepBounds(const DependencyAnalysis &analysis) const {
   SmallVector<ComponentOp> bounds;
   for (ComponentOp component : order) {
+    // Without num_steps a component never limits a step.
+    if (!component.hasNumSteps())
+      continue;
     bool readsBackEdge = llvm::any_of(
         analysis.getProducers(component), [&](ComponentOp producer) {
           return getRole(component, producer) == ReadRole::back_edge;

@@ -87,7 +87,7 @@
 // Under hip-cache every component caches the buffers it interpolates through
 // windows: one vec4 per thread of a 256-thread group each. @C2 reads @B0 only
 // at its own item, which is not worth a cache.
-// PBD-MEM:      memory plan of @pbd_like (strategy hip_cache, 65536 items)
+// PBD-MEM:      memory plan of @pbd_like (strategy hip-cache, 65536 items)
 // PBD-MEM:      planned device memory                          14680064 (14.00 MiB)
 // PBD-MEM-NEXT: naive plan (3 copies of every buffer)          22020096 (21.00 MiB)
 // PBD-MEM:      shared-memory caches (256 threads per group):

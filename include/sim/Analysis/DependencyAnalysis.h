@@ -102,9 +102,10 @@ public:
   ArrayRef<ComponentOp> getComponents() const { return components; }
   ArrayRef<BufferOp> getBuffers() const { return buffers; }
 
-  /// The component that writes `buffer` (verified IR has exactly one).
+  /// The component that writes `buffer` (verified IR has exactly one):
+  /// SimulationOp::getWriter, the one place writers are looked up.
   ComponentOp getWriter(BufferOp buffer) const {
-    return writers.lookup(buffer);
+    return SimulationOp(simulation).getWriter(buffer);
   }
   /// The buffers `component` writes, in `writes` order.
   SmallVector<BufferOp> getWrittenBuffers(ComponentOp component) const;
@@ -146,7 +147,6 @@ private:
   SimulationOp simulation;
   SmallVector<ComponentOp> components;
   SmallVector<BufferOp> buffers;
-  llvm::DenseMap<Operation *, ComponentOp> writers;
   SmallVector<ReadInfo> reads;
   llvm::DenseMap<Operation *, unsigned> readIndex;
   llvm::DenseMap<Operation *, SmallVector<BufferAccess>> accesses;

@@ -39,7 +39,9 @@ public:
   ReadRole getRole(ComponentOp reader, ComponentOp writer) const;
 
   /// The components whose num_steps bound the `hip` big step: those that read
-  /// through the back edge (Fig. 6). Their inputs cannot be interpolated.
+  /// through the back edge (Fig. 6) and have a num_steps body. Their inputs
+  /// cannot be interpolated; a component without num_steps never bounds a
+  /// step.
   SmallVector<ComponentOp>
   getHipStepBounds(const DependencyAnalysis &analysis) const;
 

@@ -7,7 +7,7 @@
 #ifndef SIM_PIPELINES_PIPELINES_H
 #define SIM_PIPELINES_PIPELINES_H
 
-#include "sim/Dialect/Sim/IR/SimAttrs.h"
+#include "sim/Dialect/Sim/Transforms/Passes.h"
 
 #include "mlir/Pass/PassManager.h"
 #include "mlir/Pass/PassOptions.h"
@@ -18,15 +18,7 @@ namespace mlir::sim {
 struct FrontEndOptions : public PassPipelineOptions<FrontEndOptions> {
   PassOptions::Option<Strategy> strategy{
       *this, "strategy", llvm::cl::desc("The strategy to compile for"),
-      llvm::cl::init(Strategy::hip),
-      llvm::cl::values(
-          clEnumValN(Strategy::simple, "simple", "one base step per big step"),
-          clEnumValN(Strategy::traditional, "traditional",
-                     "global minimum step, one evaluation per component"),
-          clEnumValN(Strategy::hip, "hip",
-                     "the paper's method: interpolated sub-steps"),
-          clEnumValN(Strategy::hip_cache, "hip-cache",
-                     "hip with shared-memory caches"))};
+      llvm::cl::init(Strategy::hip), getStrategyOptionValues()};
   PassOptions::Option<bool> prune{
       *this, "prune",
       llvm::cl::desc("Remove what no observed buffer depends on"),

@@ -246,6 +246,33 @@ sim.simulation @s range(16) dt(1.0 : f32) max_steps(1) {
 
 // -----
 
+// A snapshot load needs a snapshot in the memory plan.
+sim.simulation @s range(16) dt(1.0 : f32) max_steps(1) {
+  sim.buffer @A : f32 init {
+  ^bb0(%i: index):
+    %c = arith.constant 0.0 : f32
+    sim.yield %c : f32
+  }
+  sim.buffer @B : f32 init {
+  ^bb0(%i: index):
+    %c = arith.constant 0.0 : f32
+    sim.yield %c : f32
+  }
+  sim.component @CA writes(@A) evaluate {
+  ^bb0(%i: index, %t: i64, %n: i32, %dt: f32):
+    %x = sim.load local @A[%i] : f32
+    sim.yield %x : f32
+  }
+  sim.component @CB writes(@B) evaluate {
+  ^bb0(%i: index, %t: i64, %n: i32, %dt: f32):
+    // expected-error @+1 {{'sim.load' op loads the snapshot of @A, but the memory plan keeps none: the buffer is not marked 'snapshot'}}
+    %x = sim.load snapshot @A[%i] : f32
+    sim.yield %x : f32
+  }
+}
+
+// -----
+
 //===----------------------------------------------------------------------===//
 // sim.get_param
 //===----------------------------------------------------------------------===//
@@ -297,6 +324,64 @@ sim.simulation @s range(16) dt(1.0 : f32) max_steps(1) {
     sim.yield %c : i32
   } evaluate {
   ^bb0(%i: index, %t: i64, %n: i32, %dt: f32):
+    %x = sim.read @B[%i] : f32
+    sim.yield %x : f32
+  }
+}
+
+// -----
+
+// The simulation's range is read as i64.
+sim.simulation @s range(16) dt(1.0 : f32) max_steps(1) {
+  sim.buffer @B : f32 init {
+  ^bb0(%i: index):
+    // expected-error @+1 {{'sim.get_param' op result type 'i32' does not match the type 'i64' of the simulation's range}}
+    %p = sim.get_param @range : i32
+    %c = arith.constant 0.0 : f32
+    sim.yield %c : f32
+  }
+  sim.component @C writes(@B) evaluate {
+  ^bb0(%i: index, %t: i64, %n: i32, %dt: f32):
+    %x = sim.read @B[%i] : f32
+    sim.yield %x : f32
+  }
+}
+
+// -----
+
+// The simulation's dt is read as f32.
+sim.simulation @s range(16) dt(1.0 : f32) max_steps(1) {
+  sim.buffer @B : f32 init {
+  ^bb0(%i: index):
+    %c = arith.constant 0.0 : f32
+    sim.yield %c : f32
+  }
+  sim.component @C writes(@B) num_steps {
+  ^bb0(%i: index, %t: i64):
+    // expected-error @+1 {{'sim.get_param' op result type 'f64' does not match the type 'f32' of the simulation's dt}}
+    %p = sim.get_param @dt : f64
+    %c = arith.constant 1 : i32
+    sim.yield %c : i32
+  } evaluate {
+  ^bb0(%i: index, %t: i64, %n: i32, %dt: f32):
+    %x = sim.read @B[%i] : f32
+    sim.yield %x : f32
+  }
+}
+
+// -----
+
+// The simulation's max_steps is read as i32.
+sim.simulation @s range(16) dt(1.0 : f32) max_steps(1) {
+  sim.buffer @B : f32 init {
+  ^bb0(%i: index):
+    %c = arith.constant 0.0 : f32
+    sim.yield %c : f32
+  }
+  sim.component @C writes(@B) evaluate {
+  ^bb0(%i: index, %t: i64, %n: i32, %dt: f32):
+    // expected-error @+1 {{'sim.get_param' op result type 'i64' does not match the type 'i32' of the simulation's max_steps}}
+    %p = sim.get_param @max_steps : i64
     %x = sim.read @B[%i] : f32
     sim.yield %x : f32
   }

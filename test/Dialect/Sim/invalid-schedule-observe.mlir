@@ -173,6 +173,23 @@ sim.simulation @s range(16) dt(1.0 : f32) max_steps(1) {
     %c = arith.constant 0.0 : f32
     sim.yield %c : f32
   }
+  sim.component @C0 writes(@B0) evaluate {
+  ^bb0(%i: index, %t: i64, %n: i32, %dt: f32):
+    %x = sim.read @B0[%i] : f32
+    sim.yield %x : f32
+  }
+  // expected-error @+1 {{'sim.schedule' op lists @C0 in bounded_by, but it has no num_steps body, so it never bounds a step}}
+  sim.schedule [@C0] bounded_by [@C0]
+}
+
+// -----
+
+sim.simulation @s range(16) dt(1.0 : f32) max_steps(1) {
+  sim.buffer @B0 : f32 init {
+  ^bb0(%i: index):
+    %c = arith.constant 0.0 : f32
+    sim.yield %c : f32
+  }
   sim.buffer @B1 : f32 init {
   ^bb0(%i: index):
     %c = arith.constant 0.0 : f32

@@ -262,3 +262,17 @@ sim.simulation @s range(16) dt(1.0 : f32) max_steps(1) {
   // expected-error @+1 {{custom op 'sim.observe' invalid kind of attribute specified}}
   sim.observe @B
 }
+
+// -----
+
+// Unquoted, hip-cache would lex as `hip` followed by `-cache`; the rest of
+// an attribute body is never silently dropped.
+// expected-error @+1 {{unexpected '-cache' after the attribute value 'strategy hip'; a value spelled with '-' is written in quotes, as in #sim<strategy "hip-cache">}}
+sim.simulation @s range(16) dt(1.0 : f32) max_steps(1) attributes {strategy = #sim<strategy hip-cache>} {
+}
+
+// -----
+
+// expected-error @+1 {{unexpected 'in_kernel' after the attribute value 'parity none'}}
+sim.simulation @s range(16) dt(1.0 : f32) max_steps(1) attributes {p = #sim<parity none in_kernel>} {
+}

@@ -390,3 +390,66 @@ sim.simulation @nested_body_ops range(4) dt(1.0 : f64) max_steps(1) {
     sim.yield %r : vector<16xf64>
   }
 }
+
+// -----
+
+// Every strategy the memory plan records; hip-cache is printed in quotes.
+// CHECK-LABEL: sim.simulation @strategy_simple
+// CHECK-SAME:    attributes {strategy = #sim<strategy simple>}
+// CHECK-LABEL: sim.simulation @strategy_traditional
+// CHECK-SAME:    attributes {strategy = #sim<strategy traditional>}
+// CHECK-LABEL: sim.simulation @strategy_hip
+// CHECK-SAME:    attributes {strategy = #sim<strategy hip>}
+// CHECK-LABEL: sim.simulation @strategy_hip_cache
+// CHECK-SAME:    attributes {strategy = #sim<strategy "hip-cache">}
+sim.simulation @strategy_simple range(4) dt(1.0 : f32) max_steps(1) attributes {strategy = #sim<strategy simple>} {
+}
+sim.simulation @strategy_traditional range(4) dt(1.0 : f32) max_steps(1) attributes {strategy = #sim<strategy traditional>} {
+}
+sim.simulation @strategy_hip range(4) dt(1.0 : f32) max_steps(1) attributes {strategy = #sim<strategy hip>} {
+}
+sim.simulation @strategy_hip_cache range(4) dt(1.0 : f32) max_steps(1) attributes {strategy = #sim<strategy "hip-cache">} {
+}
+
+// -----
+
+// The simulation's own parameters read in every kind of body: range as i64,
+// dt in the time step's type, max_steps as i32.
+// CHECK-LABEL: sim.simulation @builtin_params
+// CHECK:         sim.buffer @X : f64 init {
+// CHECK:           sim.get_param @range : i64
+// CHECK:           sim.get_param @dt : f64
+// CHECK:         } exact {
+// CHECK:           sim.get_param @max_steps : i32
+// CHECK:         sim.component @C writes(@X) num_steps {
+// CHECK:           sim.get_param @dt : f64
+// CHECK:           sim.get_param @max_steps : i32
+// CHECK:         } evaluate {
+// CHECK:           sim.get_param @range : i64
+sim.simulation @builtin_params range(16) dt(1.0e-2 : f64) max_steps(4) {
+  sim.buffer @X : f64 init {
+  ^bb0(%i: index):
+    %r = sim.get_param @range : i64
+    %rf = arith.sitofp %r : i64 to f64
+    %dt = sim.get_param @dt : f64
+    %x = arith.mulf %rf, %dt : f64
+    sim.yield %x : f64
+  } exact {
+  ^bb0(%i: index, %t: f64):
+    %m = sim.get_param @max_steps : i32
+    %mf = arith.sitofp %m : i32 to f64
+    %x = arith.mulf %mf, %t : f64
+    sim.yield %x : f64
+  }
+  sim.component @C writes(@X) num_steps {
+  ^bb0(%i: index, %t: i64):
+    %dt = sim.get_param @dt : f64
+    %m = sim.get_param @max_steps : i32
+    sim.yield %m : i32
+  } evaluate {
+  ^bb0(%i: index, %t: i64, %n: i32, %dt: f64):
+    %r = sim.get_param @range : i64
+    %rf = arith.sitofp %r : i64 to f64
+    sim.yield %rf : f64
+  }
+}

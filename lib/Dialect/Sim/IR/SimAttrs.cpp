@@ -32,6 +32,43 @@ void SimDialect::registerAttributes() {
       >();
 }
 
+Attribute SimDialect::parseAttribute(DialectAsmParser &parser,
+                                     Type type) const {
+  SMLoc loc = parser.getCurrentLocation();
+  StringRef mnemonic;
+  Attribute attr;
+  OptionalParseResult result =
+      generatedAttributeParser(parser, &mnemonic, type, attr);
+  if (!result.has_value()) {
+    parser.emitError(loc) << "unknown attribute `" << mnemonic
+                          << "` in dialect `sim`";
+    return {};
+  }
+  if (failed(*result))
+    return {};
+  // `#sim<...>` bodies are parsed from a copy of the text between the angle
+  // brackets, and the generated parser stops after the value: check that
+  // nothing is left. (`#sim.name<...>` is parsed in place; the enclosing
+  // parser checks what follows it.)
+  SMLoc rest = parser.getCurrentLocation();
+  StringRef spec = parser.getFullSymbolSpec();
+  if (rest.getPointer() >= spec.begin() && rest.getPointer() < spec.end()) {
+    StringRef text(rest.getPointer(), spec.end() - rest.getPointer());
+    parser.emitError(rest)
+        << "unexpected '" << text.trim() << "' after the attribute value '"
+        << StringRef(spec.begin(), rest.getPointer() - spec.begin()).trim()
+        << "'; a value spelled with '-' is written in quotes, as in "
+           "#sim<strategy \"hip-cache\">";
+    return {};
+  }
+  return attr;
+}
+
+void SimDialect::printAttribute(Attribute attr,
+                                DialectAsmPrinter &printer) const {
+  (void)generatedAttributePrinter(attr, printer);
+}
+
 Value mlir::sim::splatLike(OpBuilder &builder, Location loc, Value scalar,
                            Type type) {
   if (scalar.getType() == type)

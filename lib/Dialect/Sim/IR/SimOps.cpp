@@ -255,6 +255,56 @@ ObserveOp SimulationOp::getObserveOp() {
   return ops.empty() ? nullptr : *ops.begin();
 }
 
+ComponentOp SimulationOp::getWriter(FlatSymbolRefAttr buffer) {
+  for (ComponentOp component : getComponents())
+    if (component.writesBuffer(buffer))
+      return component;
+  return nullptr;
+}
+
+ComponentOp SimulationOp::getWriter(BufferOp buffer) {
+  return getWriter(FlatSymbolRefAttr::get(buffer.getSymNameAttr()));
+}
+
+std::optional<unsigned>
+SimulationOp::getSchedulePosition(ComponentOp component) {
+  ScheduleOp schedule = getScheduleOp();
+  if (!schedule)
+    return std::nullopt;
+  auto order = schedule.getOrder().getAsRange<FlatSymbolRefAttr>();
+  auto it =
+      llvm::find(order, FlatSymbolRefAttr::get(component.getSymNameAttr()));
+  if (it == order.end())
+    return std::nullopt;
+  return std::distance(order.begin(), it);
+}
+
+Operation *SimulationOp::findExplicitAccess() {
+  Operation *found = nullptr;
+  for (ComponentOp component : getComponents()) {
+    component.walk<WalkOrder::PreOrder>([&](Operation *op) {
+      if (!isa<LoadOp, BigStepOp>(op))
+        return WalkResult::advance();
+      found = op;
+      return WalkResult::interrupt();
+    });
+    if (found)
+      return found;
+  }
+  return nullptr;
+}
+
+Type SimulationOp::getBuiltinParamType(StringRef name) {
+  Builder b(getContext());
+  if (name == "range")
+    return b.getI64Type();
+  if (name == "dt")
+    return getTimeStepType();
+  if (name == "max_steps")
+    return b.getI32Type();
+  return nullptr;
+}
+
 LogicalResult SimulationOp::verify() {
   // A simulation nested in a body (through an op that opens a symbol table)
   // would be walked as part of the outer one by every analysis.
@@ -367,7 +417,7 @@ LogicalResult SimulationOp::verifyRegions() {
 LogicalResult ParamOp::verify() {
   // --sim-set-params reads these names as the simulation's own attributes, so
   // a parameter with one of them could never be overridden.
-  if (llvm::is_contained({"range", "dt", "max_steps"}, getSymName()))
+  if (SimulationOp::isBuiltinParamName(getSymName()))
     return emitOpError() << "cannot be named '" << getSymName()
                          << "': range, dt and max_steps name the "
                             "simulation's own attributes";
@@ -385,6 +435,10 @@ LogicalResult ParamOp::verify() {
   return success();
 }
 
+bool GetParamOp::isBuiltin() {
+  return SimulationOp::isBuiltinParamName(getParam());
+}
+
 LogicalResult GetParamOp::verify() {
   if (!getEnclosingBody(*this))
     return emitOpError() << "must be inside a num_steps, evaluate, init or "
@@ -393,6 +447,17 @@ LogicalResult GetParamOp::verify() {
 }
 
 LogicalResult GetParamOp::verifySymbolUses(SymbolTableCollection &symbolTable) {
+  if (isBuiltin()) {
+    auto simulation = (*this)->getParentOfType<SimulationOp>();
+    if (!simulation)
+      return failure(); // Reported by verify().
+    Type expected = simulation.getBuiltinParamType(getParam());
+    if (getType() != expected)
+      return emitOpError() << "result type " << getType()
+                           << " does not match the type " << expected
+                           << " of the simulation's " << getParam();
+    return success();
+  }
   auto param =
       symbolTable.lookupNearestSymbolFrom<ParamOp>(*this, getParamAttr());
   if (!param)
@@ -604,9 +669,20 @@ LogicalResult ScheduleOp::verifySymbolUses(SymbolTableCollection &table) {
   if (failed(verifySymbolArray<ComponentOp>(*this, table, getOrder(), "order",
                                             "sim.component")))
     return failure();
-  if (ArrayAttr bounds = getBoundedByAttr())
-    return verifySymbolArray<ComponentOp>(*this, table, bounds, "bounded_by",
-                                          "sim.component");
+  ArrayAttr bounds = getBoundedByAttr();
+  if (!bounds)
+    return success();
+  if (failed(verifySymbolArray<ComponentOp>(*this, table, bounds, "bounded_by",
+                                            "sim.component")))
+    return failure();
+  for (auto name : bounds.getAsRange<FlatSymbolRefAttr>()) {
+    auto component =
+        table.lookupNearestSymbolFrom<ComponentOp>(*this, name.getAttr());
+    if (!component.hasNumSteps())
+      return emitOpError() << "lists " << name
+                           << " in bounded_by, but it has no num_steps body, "
+                              "so it never bounds a step";
+  }
   return success();
 }
 
@@ -677,6 +753,10 @@ LogicalResult LoadOp::verifySymbolUses(SymbolTableCollection &symbolTable) {
   if (failed(verifyBufferAccess(*this, symbolTable, getBufferAttr(), getType(),
                                 buffer)))
     return failure();
+  if (getVersion() == Version::snapshot && !buffer.getSnapshot())
+    return emitOpError() << "loads the snapshot of " << getBufferAttr()
+                         << ", but the memory plan keeps none: the buffer is "
+                            "not marked 'snapshot'";
   ComponentOp component = getEnclosingBody(*this)->component;
   if (getVersion() == Version::local &&
       !component.writesBuffer(getBufferAttr()))

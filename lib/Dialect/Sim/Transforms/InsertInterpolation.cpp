@@ -35,8 +35,10 @@ namespace {
 /// the big step's length in time units at the start of one body.
 class BodyTime {
 public:
-  BodyTime(Region &body, BodyKind kind, double dt)
-      : body(body), kind(kind), dt(dt) {}
+  /// `time` is the body's local time argument `%t`; `steps` the sub-step
+  /// length `%n` in evaluate, null in num_steps (it reads at `t`).
+  BodyTime(Region &body, Value time, Value steps, FloatType dtType)
+      : body(body), time(time), steps(steps), dtType(dtType) {}
 
   Value getFraction(FloatType type) {
     auto it = fractions.find(type);
@@ -45,14 +47,13 @@ public:
     OpBuilder builder = atBodyStart();
     Location loc = body.getLoc();
     auto [begin, size] = getBigStep();
-    Block &block = body.front();
     // Local time at which the body reads: the end of the sub-step in
     // evaluate, its start in num_steps.
-    Value end = block.getArgument(1);
-    if (kind == BodyKind::Evaluate) {
-      Value steps = arith::ExtSIOp::create(builder, loc, builder.getI64Type(),
-                                           block.getArgument(2));
-      end = arith::AddIOp::create(builder, loc, end, steps);
+    Value end = time;
+    if (steps) {
+      Value steps64 =
+          arith::ExtSIOp::create(builder, loc, builder.getI64Type(), steps);
+      end = arith::AddIOp::create(builder, loc, end, steps64);
     }
     Value offset = arith::SubIOp::create(builder, loc, end, begin);
     Value offsetF = arith::SIToFPOp::create(builder, loc, type, offset);
@@ -70,10 +71,20 @@ public:
     Location loc = body.getLoc();
     Value sizeF =
         arith::SIToFPOp::create(builder, loc, type, getBigStep().second);
-    Value dtValue =
-        arith::ConstantOp::create(builder, loc, builder.getFloatAttr(type, dt));
-    Value span = arith::MulFOp::create(builder, loc, sizeF, dtValue);
-    track({sizeF, dtValue, span});
+    // dt is a run-time value (a kernel argument), not a constant of the
+    // scene: one compiled scene runs at any dt.
+    Value dt =
+        GetParamOp::create(builder, loc, dtType,
+                           FlatSymbolRefAttr::get(builder.getContext(), "dt"));
+    track({sizeF, dt});
+    if (type.getWidth() != dtType.getWidth()) {
+      dt = type.getWidth() > dtType.getWidth()
+               ? Value(arith::ExtFOp::create(builder, loc, type, dt))
+               : Value(arith::TruncFOp::create(builder, loc, type, dt));
+      track({dt});
+    }
+    Value span = arith::MulFOp::create(builder, loc, sizeF, dt);
+    track({span});
     return spans[type] = span;
   }
 
@@ -109,8 +120,8 @@ private:
   }
 
   Region &body;
-  BodyKind kind;
-  double dt;
+  Value time, steps;
+  FloatType dtType;
   BigStepOp bigStep;
   Operation *insertionPoint = nullptr;
   SmallVector<Operation *> created;
@@ -128,7 +139,7 @@ struct InsertInterpolationPass
              "--sim-insert-interpolation";
       return signalPassFailure();
     }
-    if (failed(collectPositions(simulation)))
+    if (failed(checkSchedule(simulation)))
       return signalPassFailure();
 
     bool subSteps = strategy.getValue() == Strategy::hip ||
@@ -144,18 +155,14 @@ struct InsertInterpolationPass
     }
   }
 
-  /// Positions of components in the (complete) schedule, for checking that
-  /// an interpolation's auxiliary buffers are advanced before the reader.
-  LogicalResult collectPositions(SimulationOp simulation) {
-    ScheduleOp schedule = simulation.getScheduleOp();
-    unsigned numComponents = llvm::range_size(simulation.getComponents());
-    if (!schedule || schedule.getOrder().size() != numComponents)
-      return simulation.emitOpError()
-             << "has no complete schedule; run --sim-schedule before "
-                "--sim-insert-interpolation";
-    for (auto [index, name] :
-         llvm::enumerate(schedule.getOrder().getAsRange<FlatSymbolRefAttr>()))
-      positions[name.getAttr()] = index;
+  /// An interpolation's auxiliary buffers must be advanced before the
+  /// reader, which needs every component's position in the schedule.
+  LogicalResult checkSchedule(SimulationOp simulation) {
+    for (ComponentOp component : simulation.getComponents())
+      if (!simulation.getSchedulePosition(component))
+        return simulation.emitOpError()
+               << "has no complete schedule; run --sim-schedule before "
+                  "--sim-insert-interpolation";
     return success();
   }
 
@@ -163,7 +170,12 @@ struct InsertInterpolationPass
                             Region &body, BodyKind kind, bool subSteps) {
     SmallVector<ReadOp> reads;
     body.walk([&](ReadOp read) { reads.push_back(read); });
-    BodyTime time(body, kind, simulation.getTimeStep());
+    bool isEvaluate = kind == BodyKind::Evaluate;
+    BodyTime time(body,
+                  isEvaluate ? component.getEvaluateTime()
+                             : component.getNumStepsTime(),
+                  isEvaluate ? Value(component.getEvaluateSteps()) : Value(),
+                  simulation.getTimeStepType());
     IRRewriter rewriter(&getContext());
     for (ReadOp read : reads) {
       if (!read.getRoleAttr())
@@ -210,9 +222,9 @@ struct InsertInterpolationPass
     SmallVector<BufferOp> inputs = {buffer};
     for (FlatSymbolRefAttr aux : interp.getAuxiliaryBuffers()) {
       BufferOp auxBuffer = simulation.lookupBuffer(aux);
-      ComponentOp writer = lookupWriter(simulation, auxBuffer);
-      if (positions.lookup(writer.getSymNameAttr()) >=
-          positions.lookup(component.getSymNameAttr()))
+      ComponentOp writer = simulation.getWriter(auxBuffer);
+      if (*simulation.getSchedulePosition(writer) >=
+          *simulation.getSchedulePosition(component))
         return read.emitOpError()
                << "interpolates @" << buffer.getSymName() << " with " << interp
                << ", which needs @" << auxBuffer.getSymName()
@@ -232,16 +244,6 @@ struct InsertInterpolationPass
                                      time.getFraction(scalarType),
                                      time.getSpan(scalarType));
   }
-
-  ComponentOp lookupWriter(SimulationOp simulation, BufferOp buffer) {
-    for (ComponentOp component : simulation.getComponents())
-      if (component.writesBuffer(
-              FlatSymbolRefAttr::get(buffer.getSymNameAttr())))
-        return component;
-    llvm_unreachable("verified simulations give every buffer a writer");
-  }
-
-  llvm::DenseMap<StringAttr, unsigned> positions;
 };
 
 } // namespace

@@ -6,8 +6,10 @@
 // keep an in_kernel component's state in registers between sub-steps (each
 // thread owns its item, which is exactly what --sim-substep-legality proved),
 // so its source half is never overwritten during the big step: that half is
-// the value at T, and neither a snapshot nor a parity copy is needed. Only
-// grid_sync components ping-pong through memory and pay for both.
+// the value at T, and neither a snapshot nor a parity copy is needed. A
+// component without num_steps takes the whole big step in one evaluation, so
+// it does not ping-pong either. Only grid_sync components with num_steps
+// ping-pong through memory and pay for both.
 //
 //===----------------------------------------------------------------------===//
 
@@ -31,11 +33,23 @@ bool isSubStepping(Strategy strategy) {
   return strategy == Strategy::hip || strategy == Strategy::hip_cache;
 }
 
+/// True when `component`'s sub-steps ping-pong between the halves of its
+/// buffers through memory under `strategy`: a grid_sync component under hip
+/// or hip-cache that has num_steps. Without num_steps it takes the whole big
+/// step in one evaluation, from the source half into the target half.
+bool pingPongs(ComponentOp component, Strategy strategy) {
+  return isSubStepping(strategy) && component.hasNumSteps() &&
+         *component.getSubStepping() == SubStepping::grid_sync;
+}
+
 struct PlanMemoryPass : public sim::impl::SimPlanMemoryBase<PlanMemoryPass> {
   using SimPlanMemoryBase::SimPlanMemoryBase;
 
   void runOnOperation() override {
     SimulationOp simulation = getOperation();
+    if (failed(checkBeforeInterpolation(simulation, getArgument(),
+                                        "its memory plan is")))
+      return signalPassFailure();
     auto &analysis = getAnalysis<DependencyAnalysis>();
     if (failed(checkPrerequisites(analysis)))
       return signalPassFailure();
@@ -48,10 +62,9 @@ struct PlanMemoryPass : public sim::impl::SimPlanMemoryBase<PlanMemoryPass> {
     llvm::SetVector<Operation *> snapshots;
     for (ComponentOp component : analysis.getComponents()) {
       component.removeCachesAttr();
-      bool pingPongs = isSubStepping(strategy) &&
-                       *component.getSubStepping() == SubStepping::grid_sync;
       component.setParityAttr(ParityAttr::get(
-          context, pingPongs ? Parity::copy_if_even : Parity::none));
+          context, pingPongs(component, strategy) ? Parity::copy_if_even
+                                                  : Parity::none));
       if (!isSubStepping(strategy))
         continue;
 
@@ -67,8 +80,7 @@ struct PlanMemoryPass : public sim::impl::SimPlanMemoryBase<PlanMemoryPass> {
           if (BufferOp auxBuffer = simulation.lookupBuffer(aux))
             atBegin.push_back(auxBuffer);
         for (BufferOp buffer : atBegin)
-          if (*analysis.getWriter(buffer).getSubStepping() ==
-              SubStepping::grid_sync)
+          if (pingPongs(analysis.getWriter(buffer), strategy))
             snapshots.insert(buffer);
         // hip-cache caches interpolated values that neighbouring threads of a
         // group share: window reads. A value read only at the own item has

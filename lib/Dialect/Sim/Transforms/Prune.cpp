@@ -80,6 +80,9 @@ void collectRegionReads(Region &region, SymbolSet &buffers) {
 struct PrunePass : public sim::impl::SimPruneBase<PrunePass> {
   void runOnOperation() override {
     SimulationOp simulation = getOperation();
+    if (failed(checkBeforeInterpolation(simulation, getArgument(),
+                                        "its components and buffers are")))
+      return signalPassFailure();
     ObserveOp observe = simulation.getObserveOp();
     if (!observe) {
       simulation.emitError()

@@ -34,6 +34,9 @@ ArrayAttr getSymbolArray(Builder &builder, ArrayRef<ComponentOp> components) {
 struct SchedulePass : public sim::impl::SimScheduleBase<SchedulePass> {
   void runOnOperation() override {
     SimulationOp simulation = getOperation();
+    if (failed(checkBeforeInterpolation(simulation, getArgument(),
+                                        "its schedule and read roles are")))
+      return signalPassFailure();
     auto &analysis = getAnalysis<DependencyAnalysis>();
     FailureOr<Schedule> schedule =
         computeSchedule(analysis, getUserOrder(simulation));

@@ -26,6 +26,9 @@ namespace {
 struct SubstepLegalityPass
     : public sim::impl::SimSubstepLegalityBase<SubstepLegalityPass> {
   void runOnOperation() override {
+    if (failed(checkBeforeInterpolation(getOperation(), getArgument(),
+                                        "its sub-stepping verdicts are")))
+      return signalPassFailure();
     auto &analysis = getAnalysis<DependencyAnalysis>();
     for (ComponentOp component : analysis.getComponents()) {
       const BufferAccess *hazard = analysis.findSubStepHazard(component);

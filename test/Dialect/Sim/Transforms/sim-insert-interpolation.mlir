@@ -137,9 +137,11 @@ sim.simulation @num_steps_fraction range(64) dt(1.0e-2 : f32) max_steps(3) {
 // -----
 
 // Hermite interpolation of @X with derivative @V. Their writer reads its own
-// neighbours (grid_sync), so under hip both have snapshots: the values at T
-// come from them. The span of the big step (m * dt, dt converted to the
-// element type) scales the derivatives.
+// neighbours (grid_sync) and sub-steps (num_steps), so under hip its
+// sub-steps ping-pong and both buffers have snapshots: the values at T
+// come from them. The span of the big step (m * dt, dt read with
+// sim.get_param as a run-time value and converted to the element type)
+// scales the derivatives.
 
 // CHECK-LABEL: sim.simulation @hermite_f64
 // CHECK: sim.component @Observe
@@ -148,7 +150,8 @@ sim.simulation @num_steps_fraction range(64) dt(1.0e-2 : f32) max_steps(3) {
 // HIP-NEXT:  %[[BEGIN:.*]], %[[SIZE:.*]] = sim.big_step : i64, i64
 // HIP:       %[[F:.*]] = arith.divf %{{.*}}, %{{.*}} : f64
 // HIP-NEXT:  %[[SIZEF:.*]] = arith.sitofp %[[SIZE]] : i64 to f64
-// HIP-NEXT:  %[[DT:.*]] = arith.constant 2.500000e-01 : f64
+// HIP-NEXT:  %[[DT32:.*]] = sim.get_param @dt : f32
+// HIP-NEXT:  %[[DT:.*]] = arith.extf %[[DT32]] : f32 to f64
 // HIP-NEXT:  %[[SPAN:.*]] = arith.mulf %[[SIZEF]], %[[DT]] : f64
 // HIP-NEXT:  %[[X0:.*]] = sim.load snapshot @X[%[[I]]] : f64
 // HIP-NEXT:  %[[X1:.*]] = sim.load target @X[%[[I]]] : f64
@@ -177,7 +180,11 @@ sim.simulation @hermite_f64 range(64) dt(2.5e-1 : f32) max_steps(3) {
     %c = arith.constant 0.0 : f64
     sim.yield %c : f64
   }
-  sim.component @Move writes(@X, @V) evaluate {
+  sim.component @Move writes(@X, @V) num_steps {
+  ^bb0(%i: index, %t: i64):
+    %c2 = arith.constant 2 : i32
+    sim.yield %c2 : i32
+  } evaluate {
   ^bb0(%i: index, %t: i64, %n: i32, %dt: f32):
     %c1 = arith.constant 1 : index
     %j = arith.addi %i, %c1 : index
@@ -241,4 +248,49 @@ sim.simulation @cubic_vector range(64) dt(1.0e-2 : f32) max_steps(3) {
     sim.yield %p : vector<2xf32>
   }
   sim.observe [@R]
+}
+
+// -----
+
+// The span of a Hermite interpolation of f32 elements in a scene with an f64
+// dt: the run-time dt is truncated to the element type.
+
+// CHECK-LABEL: sim.simulation @hermite_f64_dt
+// CHECK: sim.component @Observe
+// HIP:       arith.divf
+// HIP-NEXT:  %[[SIZEF:.*]] = arith.sitofp %{{.*}} : i64 to f32
+// HIP-NEXT:  %[[DT64:.*]] = sim.get_param @dt : f64
+// HIP-NEXT:  %[[DT:.*]] = arith.truncf %[[DT64]] : f64 to f32
+// HIP-NEXT:  %[[SPAN:.*]] = arith.mulf %[[SIZEF]], %[[DT]] : f32
+// ONE-NOT:   sim.get_param
+// CHECK:     sim.yield
+sim.simulation @hermite_f64_dt range(64) dt(2.5e-1 : f64) max_steps(3) {
+  sim.buffer @X : f32 interp(#sim.hermite<@V>) init {
+  ^bb0(%i: index):
+    %c = arith.constant 0.0 : f32
+    sim.yield %c : f32
+  }
+  sim.buffer @V : f32 init {
+  ^bb0(%i: index):
+    %c = arith.constant 1.0 : f32
+    sim.yield %c : f32
+  }
+  sim.buffer @O : f32 init {
+  ^bb0(%i: index):
+    %c = arith.constant 0.0 : f32
+    sim.yield %c : f32
+  }
+  sim.component @Move writes(@X, @V) evaluate {
+  ^bb0(%i: index, %t: i64, %n: i32, %dt: f64):
+    %x = sim.read @X[%i] : f32
+    %v = sim.read @V[%i] : f32
+    %x1 = arith.addf %x, %v : f32
+    sim.yield %x1, %v : f32, f32
+  }
+  sim.component @Observe writes(@O) evaluate {
+  ^bb0(%i: index, %t: i64, %n: i32, %dt: f64):
+    %x = sim.read @X[%i] : f32
+    sim.yield %x : f32
+  }
+  sim.observe [@O]
 }

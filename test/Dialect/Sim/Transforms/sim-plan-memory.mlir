@@ -8,7 +8,7 @@
 // CHECK-LABEL: sim.simulation @no_snapshot
 // HIP-SAME: attributes {strategy = #sim<strategy hip>}
 // SIMPLE-SAME: attributes {strategy = #sim<strategy simple>}
-// CACHE-SAME: attributes {strategy = #sim<strategy hip_cache>}
+// CACHE-SAME: attributes {strategy = #sim<strategy "hip-cache">}
 // CHECK-NOT: snapshot
 // CHECK: sim.component @Source writes(@S, @G) attributes {parity = #sim<parity none>
 // HIP: sim.component @Reader writes(@R) attributes {parity = #sim<parity none>, sub_stepping
@@ -57,11 +57,12 @@ sim.simulation @no_snapshot range(1024) dt(1.0e-2 : f32) max_steps(4) {
 
 // -----
 
-// @Diffuse reads its own neighbours, so its sub-steps ping-pong through
-// memory: it needs a parity copy under hip, and @U, which @Sample
-// interpolates, needs a snapshot; so does @dU, the derivative that @U's
-// Hermite interpolation reads. @W is written by an in_kernel component and
-// needs none. Under simple nothing of this is needed.
+// @Diffuse reads its own neighbours and sub-steps (it has num_steps), so its
+// sub-steps ping-pong through memory: it needs a parity copy under hip, and
+// @U, which @Sample interpolates, needs a snapshot; so does @dU, the
+// derivative that @U's Hermite interpolation reads. @W is written by an
+// in_kernel component and needs none. Under simple nothing of this is
+// needed.
 
 // CHECK-LABEL: sim.simulation @needs_snapshot
 // HIP: sim.buffer @U : f32 interp(#sim.hermite<@dU>) attributes {snapshot} init
@@ -89,7 +90,11 @@ sim.simulation @needs_snapshot range(1024) dt(1.0e-2 : f32) max_steps(4) {
     %c = arith.constant 0.0 : f32
     sim.yield %c : f32
   }
-  sim.component @Diffuse writes(@U, @dU) evaluate {
+  sim.component @Diffuse writes(@U, @dU) num_steps {
+  ^bb0(%i: index, %t: i64):
+    %c2 = arith.constant 2 : i32
+    sim.yield %c2 : i32
+  } evaluate {
   ^bb0(%i: index, %t: i64, %n: i32, %dt: f32):
     %c1 = arith.constant 1 : index
     %l = arith.subi %i, %c1 : index
@@ -106,5 +111,43 @@ sim.simulation @needs_snapshot range(1024) dt(1.0e-2 : f32) max_steps(4) {
     sim.yield %s : f32
   }
   sim.schedule [@Diffuse]
+  sim.observe [@W]
+}
+
+// -----
+
+// @Smooth reads its own neighbours (grid_sync) but has no num_steps: under
+// hip it takes the whole big step in one evaluation, from the source half
+// into the target half, so nothing ping-pongs: no parity copy, and @U's
+// source half still holds its value at T for @Sample (no snapshot).
+
+// CHECK-LABEL: sim.simulation @grid_sync_one_evaluation
+// CHECK-NOT: snapshot
+// CHECK: sim.component @Smooth writes(@U) attributes {parity = #sim<parity none>, sub_stepping = #sim<sub_stepping grid_sync>}
+// CHECK-NOT: snapshot
+// CHECK-NOT: copy_if_even
+sim.simulation @grid_sync_one_evaluation range(1024) dt(1.0e-2 : f32) max_steps(4) {
+  sim.buffer @U : f32 init {
+  ^bb0(%i: index):
+    %c = arith.constant 0.0 : f32
+    sim.yield %c : f32
+  }
+  sim.buffer @W : f32 init {
+  ^bb0(%i: index):
+    %c = arith.constant 0.0 : f32
+    sim.yield %c : f32
+  }
+  sim.component @Smooth writes(@U) evaluate {
+  ^bb0(%i: index, %t: i64, %n: i32, %dt: f32):
+    %c1 = arith.constant 1 : index
+    %l = arith.subi %i, %c1 : index
+    %ul = sim.read @U[%l] : f32
+    sim.yield %ul : f32
+  }
+  sim.component @Sample writes(@W) evaluate {
+  ^bb0(%i: index, %t: i64, %n: i32, %dt: f32):
+    %u = sim.read @U[%i] : f32
+    sim.yield %u : f32
+  }
   sim.observe [@W]
 }

@@ -54,6 +54,14 @@
 // SVG: <svg
 // SVG: open
 
+// Parameters are run-time values: an offset computed from one (directly, or
+// as the bound of a loop) is not bounded, whatever its default or the range
+// its type allows; a parameter that only scales the read value does not
+// matter.
+// TEXT-LABEL: dependency graph of @params: 2 components, 5 buffers
+// TEXT:        component @Reader writes @R
+// TEXT-NEXT:     evaluate reads: @A[gather] interpolate, @B[gather] interpolate, @C[i-1..i+1] interpolate, @D[gather] interpolate
+
 sim.simulation @waves range(64) dt(1.0e-2 : f32) max_steps(3) {
   sim.buffer @P : f32 init {
   ^bb0(%i: index):
@@ -144,4 +152,76 @@ sim.simulation @open range(8) dt(1.0e-2 : f32) max_steps(2) {
     sim.yield %x : f32
   }
   sim.observe [@Y]
+}
+
+sim.simulation @params range(64) dt(1.0e-2 : f32) max_steps(3) {
+  sim.param @L = 2 : i32
+  sim.param @w = 0.5 : f32
+  sim.buffer @A : f32 init {
+  ^bb0(%i: index):
+    %c = arith.constant 0.0 : f32
+    sim.yield %c : f32
+  }
+  sim.buffer @B : f32 init {
+  ^bb0(%i: index):
+    %c = arith.constant 0.0 : f32
+    sim.yield %c : f32
+  }
+  sim.buffer @C : f32 init {
+  ^bb0(%i: index):
+    %c = arith.constant 0.0 : f32
+    sim.yield %c : f32
+  }
+  sim.buffer @D : f32 init {
+  ^bb0(%i: index):
+    %c = arith.constant 0.0 : f32
+    sim.yield %c : f32
+  }
+  sim.buffer @R : f32 init {
+  ^bb0(%i: index):
+    %c = arith.constant 0.0 : f32
+    sim.yield %c : f32
+  }
+  sim.component @Source writes(@A, @B, @C, @D) evaluate {
+  ^bb0(%i: index, %t: i64, %n: i32, %dt: f32):
+    %c = arith.constant 0.0 : f32
+    sim.yield %c, %c, %c, %c : f32, f32, f32, f32
+  }
+  sim.component @Reader writes(@R) evaluate {
+  ^bb0(%i: index, %t: i64, %n: i32, %dt: f32):
+    %L = sim.get_param @L : i32
+    %l = arith.index_cast %L : i32 to index
+    %ja = arith.addi %i, %l : index
+    %a = sim.read @A[%ja] : f32
+    %zero = arith.constant 0 : index
+    %one = arith.constant 1 : index
+    %fzero = arith.constant 0.0 : f32
+    %b = scf.for %k = %zero to %l step %one iter_args(%acc = %fzero) -> f32 {
+      %j = arith.addi %i, %k : index
+      %v = sim.read @B[%j] : f32
+      %s = arith.addf %acc, %v : f32
+      scf.yield %s : f32
+    }
+    %lo = arith.constant -1 : index
+    %hi = arith.constant 2 : index
+    %c = scf.for %k = %lo to %hi step %one iter_args(%acc = %fzero) -> f32 {
+      %j = arith.addi %i, %k : index
+      %v = sim.read @C[%j] : f32
+      %w = sim.get_param @w : f32
+      %vw = arith.mulf %v, %w : f32
+      %s = arith.addf %acc, %vw : f32
+      scf.yield %s : f32
+    }
+    %range = sim.get_param @range : i64
+    %r = arith.index_cast %range : i64 to index
+    %c2 = arith.constant 2 : index
+    %half = arith.divui %r, %c2 : index
+    %jd = arith.subi %i, %half : index
+    %d = sim.read @D[%jd] : f32
+    %ab = arith.addf %a, %b : f32
+    %abc = arith.addf %ab, %c : f32
+    %sum = arith.addf %abc, %d : f32
+    sim.yield %sum : f32
+  }
+  sim.observe [@R]
 }

@@ -1,8 +1,8 @@
 // RUN: sim-opt %s --sim-schedule --sim-substep-legality --sim-plan-memory --sim-report-memory -o /dev/null 2>/dev/null | FileCheck %s --check-prefix=HIP
 // RUN: sim-opt %s --sim-schedule --sim-substep-legality --sim-plan-memory=strategy=hip-cache --sim-report-memory="format=json group-size=128" -o /dev/null 2>/dev/null | FileCheck %s --check-prefix=JSON
 
-// @U (f64, 8 bytes) and @dU get snapshots because @Diffuse ping-pongs
-// through memory and @Sample interpolates @U with Hermite; @W does not.
+// @U (f64, 8 bytes) and @dU get snapshots because @Diffuse (grid_sync, with
+// num_steps) ping-pongs through memory and @Sample interpolates @U with Hermite; @W does not.
 // 100 items: halves are 2 * 100 * bytes, a snapshot 100 * bytes.
 
 // HIP-LABEL: memory plan of @needs_snapshot (strategy hip, 100 items)
@@ -29,7 +29,7 @@
 // JSON-NEXT: "planned_bytes": 8000,
 // JSON-NEXT: "range": 100,
 // JSON-NEXT: "simulation": "needs_snapshot",
-// JSON-NEXT: "strategy": "hip_cache"
+// JSON-NEXT: "strategy": "hip-cache"
 
 sim.simulation @needs_snapshot range(100) dt(1.0e-2 : f32) max_steps(4) {
   sim.buffer @U : f64 interp(#sim.hermite<@dU>) init {
@@ -47,7 +47,11 @@ sim.simulation @needs_snapshot range(100) dt(1.0e-2 : f32) max_steps(4) {
     %c = arith.constant dense<0.0> : vector<4xf32>
     sim.yield %c : vector<4xf32>
   }
-  sim.component @Diffuse writes(@U, @dU) evaluate {
+  sim.component @Diffuse writes(@U, @dU) num_steps {
+  ^bb0(%i: index, %t: i64):
+    %c2 = arith.constant 2 : i32
+    sim.yield %c2 : i32
+  } evaluate {
   ^bb0(%i: index, %t: i64, %n: i32, %dt: f32):
     %c1 = arith.constant 1 : index
     %l = arith.subi %i, %c1 : index

@@ -9,6 +9,7 @@
 // CHECK: sim.component @C2
 // CHECK:   sim.read @B1[%{{.*}}] interpolate
 // CHECK: sim.component @C0
+// CHECK:   } evaluate {
 // CHECK:   sim.read @B0[%{{.*}}] own
 // CHECK:   sim.read @B3[%{{.*}}] back_edge
 // CHECK: sim.component @C3
@@ -53,7 +54,11 @@ sim.simulation @fig5_shape range(16) dt(1.0e-2 : f32) max_steps(3) {
     %v = sim.read @B1[%i] : f32
     sim.yield %v : f32
   }
-  sim.component @C0 writes(@B0) evaluate {
+  sim.component @C0 writes(@B0) num_steps {
+  ^bb0(%i: index, %t: i64):
+    %c2 = arith.constant 2 : i32
+    sim.yield %c2 : i32
+  } evaluate {
   ^bb0(%i: index, %t: i64, %n: i32, %dt: f32):
     %self = sim.read @B0[%i] : f32
     %v = sim.read @B3[%i] : f32
@@ -158,4 +163,42 @@ sim.simulation @user_order range(16) dt(1.0e-2 : f32) max_steps(2) {
   }
   sim.schedule [@P, @Force]
   sim.observe [@X]
+}
+
+// -----
+
+// The first component reads through the back edge but has no num_steps: it
+// never bounds a step, so nothing but max_steps bounds the hip step and
+// there is no bounded_by.
+
+// CHECK-LABEL: sim.simulation @unbounded_entry
+// CHECK: sim.read @B[%{{.*}}] back_edge
+// CHECK: sim.schedule [@First, @Second]{{$}}
+sim.simulation @unbounded_entry range(16) dt(1.0e-2 : f32) max_steps(4) {
+  sim.buffer @A : f32 init {
+  ^bb0(%i: index):
+    %c = arith.constant 0.0 : f32
+    sim.yield %c : f32
+  }
+  sim.buffer @B : f32 init {
+  ^bb0(%i: index):
+    %c = arith.constant 0.0 : f32
+    sim.yield %c : f32
+  }
+  sim.component @First writes(@A) evaluate {
+  ^bb0(%i: index, %t: i64, %n: i32, %dt: f32):
+    %b = sim.read @B[%i] : f32
+    sim.yield %b : f32
+  }
+  sim.component @Second writes(@B) num_steps {
+  ^bb0(%i: index, %t: i64):
+    %c2 = arith.constant 2 : i32
+    sim.yield %c2 : i32
+  } evaluate {
+  ^bb0(%i: index, %t: i64, %n: i32, %dt: f32):
+    %a = sim.read @A[%i] : f32
+    sim.yield %a : f32
+  }
+  sim.schedule [@First]
+  sim.observe [@B]
 }

@@ -68,12 +68,14 @@ def Sim_Parity : I32Enum<"Parity",
     Recorded by `--sim-plan-memory`. `none`: the component writes its target
     half once per big step, so no parity copy is needed; its source half still
     holds the value at `T` afterwards. That holds for every component under
-    `simple` and `traditional` (one evaluation per big step) and for
+    `simple` and `traditional` (one evaluation per big step), for
     `in_kernel` components under `hip`, which keep their own state in
-    registers between sub-steps. `copy_if_even`: a `grid_sync` component's
-    sub-steps ping-pong between the halves through memory, so after an even
-    number of them the result sits in the wrong half and must be copied to
-    the target (Algorithm 2, lines 41-44).
+    registers between sub-steps, and for components without `num_steps`,
+    which take the whole big step in one evaluation. `copy_if_even`: the
+    sub-steps of a `grid_sync` component with `num_steps` ping-pong between
+    the halves through memory under `hip`, so after an even number of them
+    the result sits in the wrong half and must be copied to the target
+    (Algorithm 2, lines 41-44).
   }];
 }
 def Sim_ParityAttr : EnumAttr<Sim_Dialect, Sim_Parity, "parity">;
@@ -95,7 +97,7 @@ def Sim_VersionAttr : EnumAttr<Sim_Dialect, Sim_Version, "version">;
 
 def Sim_Strategy : I32Enum<"Strategy", "how big steps are chosen and run", [
     I32EnumCase<"simple", 0>, I32EnumCase<"traditional", 1>,
-    I32EnumCase<"hip", 2>, I32EnumCase<"hip_cache", 3>]> {
+    I32EnumCase<"hip", 2>, I32EnumCase<"hip_cache", 3, "hip-cache">]> {
   let cppNamespace = "::mlir::sim";
   let description = [{
     `simple`: every big step is one base step. `traditional`: every component
@@ -103,9 +105,15 @@ def Sim_Strategy : I32Enum<"Strategy", "how big steps are chosen and run", [
     it in one evaluation. `hip` (the paper's method): the big step is the
     minimum estimate of the components that read through the back edge, and
     every component advances through it in sub-steps, reading earlier
-    components' buffers interpolated in time. `hip_cache`: `hip` with
+    components' buffers interpolated in time. `hip-cache`: `hip` with
     shared-memory caches of interpolated values (Section 4.1). Recorded on a
-    simulation by `--sim-plan-memory`.
+    simulation by `--sim-plan-memory`; the pass options use the same names.
+    A name with a `-` is printed in quotes:
+
+    ```mlir
+    sim.simulation @s range(1024) dt(1.0e-3 : f32) max_steps(4)
+        attributes {strategy = #sim<strategy "hip-cache">} { ... }
+    ```
   }];
 }
 def Sim_StrategyAttr : EnumAttr<Sim_Dialect, Sim_Strategy, "strategy">;

@@ -50,10 +50,17 @@ def Sim_Dialect : Dialect {
     }
     ```
   }];
-  let useDefaultAttributePrinterParser = 1;
   let extraClassDeclaration = [{
     /// Registers the attributes (defined next to their storage classes).
     void registerAttributes();
+
+    /// Parses `#sim.<mnemonic>...` and `#sim<...>` attributes and rejects
+    /// text left after them (the generated parser alone would read
+    /// `#sim<strategy hip-cache>` as `hip` and ignore the rest).
+    ::mlir::Attribute parseAttribute(::mlir::DialectAsmParser &parser,
+                                     ::mlir::Type type) const override;
+    void printAttribute(::mlir::Attribute attr,
+                        ::mlir::DialectAsmPrinter &printer) const override;
   }];
 }
 

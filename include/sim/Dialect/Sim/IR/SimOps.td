@@ -97,6 +97,28 @@ def Sim_SimulationOp : Sim_Op<"simulation", [
     ::mlir::Operation *lookupSymbol(::mlir::FlatSymbolRefAttr name) {
       return ::mlir::SymbolTable::lookupSymbolIn(*this, name.getAttr());
     }
+    /// The component that writes `buffer` (verified IR has exactly one), or
+    /// null when no component writes it. Every writer lookup goes through
+    /// these two.
+    ComponentOp getWriter(BufferOp buffer);
+    ComponentOp getWriter(::mlir::FlatSymbolRefAttr buffer);
+    /// The index of `component` in the order recorded on `sim.schedule`, or
+    /// std::nullopt when there is no schedule or it does not list the
+    /// component (a prefix given by the user).
+    std::optional<unsigned> getSchedulePosition(ComponentOp component);
+    /// The first `sim.load` or `sim.big_step` in a component body, or null.
+    /// A simulation that has one is past `--sim-insert-interpolation`: its
+    /// schedule, verdicts and memory plan are fixed.
+    ::mlir::Operation *findExplicitAccess();
+    /// True for `range`, `dt` and `max_steps`: the simulation's own
+    /// parameters, which `sim.get_param` reads like a `sim.param` and which
+    /// no `sim.param` may be named.
+    static bool isBuiltinParamName(::llvm::StringRef name) {
+      return name == "range" || name == "dt" || name == "max_steps";
+    }
+    /// The type `sim.get_param` reads a builtin parameter with: `range` is
+    /// i64, `dt` the time step type, `max_steps` i32; null for other names.
+    ::mlir::Type getBuiltinParamType(::llvm::StringRef name);
   }];
 }
 
@@ -123,19 +145,36 @@ def Sim_ParamOp : Sim_Op<"param", [Symbol, HasParent<"SimulationOp">]> {
 
 def Sim_GetParamOp : Sim_Op<"get_param", [Pure,
     DeclareOpInterfaceMethods<SymbolUserOpInterface>]> {
-  let summary = "reads a scene parameter";
+  let summary = "reads a scene parameter or the simulation's range, dt or max_steps";
   let description = [{
-    Returns the current value of a `sim.param` of the enclosing simulation.
-    The result type must be the parameter's type.
+    Returns the current value of a `sim.param` of the enclosing simulation,
+    or of one of the simulation's own parameters: `@range : i64` (the
+    number of items), `@dt : <dt type>` (the base time step, `f32` or `f64`
+    as declared by `dt(...)`) and `@max_steps : i32`. The result type must be
+    the parameter's type. Every body (`init`, `exact`, `num_steps`,
+    `evaluate`) may read every parameter.
+
+    Parameters are run-time values: a lowering passes them to the kernels,
+    so one compiled scene runs with any values `--sim-set-params` or the
+    runtime gives them. The compiler never reads a parameter's default to
+    decide anything (an item index computed from one is a gather).
 
     ```mlir
     %L = sim.get_param @L : i32
+    %dt = sim.get_param @dt : f32
+    %range = sim.get_param @range : i64
+    %max = sim.get_param @max_steps : i32
     ```
   }];
   let arguments = (ins FlatSymbolRefAttr:$param);
   let results = (outs AnyType:$result);
   let assemblyFormat = "$param attr-dict `:` type($result)";
   let hasVerifier = 1;
+  let extraClassDeclaration = [{
+    /// True when this reads `range`, `dt` or `max_steps` of the simulation
+    /// rather than a `sim.param`.
+    bool isBuiltin();
+  }];
 }
 
 //===----------------------------------------------------------------------===//
@@ -198,6 +237,19 @@ def Sim_BufferOp : Sim_Op<"buffer", [
     ::mlir::FloatType getScalarType();
     /// Bytes of one element.
     int64_t getElementBytes();
+
+    /// The item argument `%i` of the init body.
+    ::mlir::BlockArgument getInitItem() {
+      return getInit().front().getArgument(0);
+    }
+    /// The item argument `%i` of the exact body (requires an exact body).
+    ::mlir::BlockArgument getExactItem() {
+      return getExact().front().getArgument(0);
+    }
+    /// The time argument `%t: f64` (time units) of the exact body.
+    ::mlir::BlockArgument getExactTime() {
+      return getExact().front().getArgument(1);
+    }
   }];
 }
 
@@ -222,6 +274,11 @@ def Sim_ComponentOp : Sim_Op<"component", [
     - `evaluate` has arguments `(%i: index, %t: i64, %n: i32, %dt: <dt type>)`
       and yields the new value of each written buffer, in `writes` order,
       after `%n` base steps of `%dt` from local time `%t`.
+
+    Both bodies (like buffer bodies) may read the simulation's `range`, `dt`
+    and `max_steps` with `sim.get_param`. C++ code reaches the arguments by
+    name: `getNumStepsItem()`, `getNumStepsTime()`, `getEvaluateItem()`,
+    `getEvaluateTime()`, `getEvaluateSteps()`, `getEvaluateTimeStep()`.
 
     Both bodies read state only through `sim.read`. The analyses record
     their verdicts as attributes: `sub_stepping` (`--sim-substep-legality`),
@@ -261,6 +318,36 @@ def Sim_ComponentOp : Sim_Op<"component", [
     bool hasNumSteps() { return !getNumSteps().empty(); }
     /// True when `buffer` is one of the buffers this component writes.
     bool writesBuffer(::mlir::FlatSymbolRefAttr buffer);
+
+    // The arguments of the bodies by name; code never indexes them. The
+    // num_steps accessors require hasNumSteps().
+
+    /// The item argument `%i: index` of num_steps.
+    ::mlir::BlockArgument getNumStepsItem() {
+      return getNumSteps().front().getArgument(0);
+    }
+    /// The local time argument `%t: i64` (base steps) of num_steps.
+    ::mlir::BlockArgument getNumStepsTime() {
+      return getNumSteps().front().getArgument(1);
+    }
+    /// The item argument `%i: index` of evaluate.
+    ::mlir::BlockArgument getEvaluateItem() {
+      return getEvaluate().front().getArgument(0);
+    }
+    /// The local time argument `%t: i64` (base steps) of evaluate: the start
+    /// of the sub-step.
+    ::mlir::BlockArgument getEvaluateTime() {
+      return getEvaluate().front().getArgument(1);
+    }
+    /// The sub-step length argument `%n: i32` (base steps) of evaluate.
+    ::mlir::BlockArgument getEvaluateSteps() {
+      return getEvaluate().front().getArgument(2);
+    }
+    /// The base time step argument `%dt` (the simulation's dt type) of
+    /// evaluate.
+    ::mlir::BlockArgument getEvaluateTimeStep() {
+      return getEvaluate().front().getArgument(3);
+    }
   }];
 }
 
@@ -278,7 +365,8 @@ def Sim_ScheduleOp : Sim_Op<"schedule", [HasParent<"SimulationOp">,
     cycle is cut). `--sim-schedule` validates it against the dependency graph,
     completes a prefix, and records in `bounded_by` the components whose
     `num_steps` bound the `hip` big step (those that read through the back
-    edge).
+    edge and have a `num_steps` body; without one a component never bounds a
+    step). Without `bounded_by` only `max_steps` bounds the step.
 
     ```mlir
     sim.schedule [@C0]

@@ -11,6 +11,7 @@
 #include "mlir/Dialect/Vector/IR/VectorOps.h"
 #include "mlir/Pass/Pass.h"
 #include "sim/Dialect/Sim/IR/SimOps.h"
+#include "llvm/Support/CommandLine.h"
 
 namespace mlir::sim {
 
@@ -19,6 +20,29 @@ enum class GraphFormat { text, dot };
 
 /// Output formats of --sim-report-memory.
 enum class ReportFormat { text, json };
+
+/// The values of every `strategy` option (--sim-plan-memory and
+/// --sim-front-end): one list, spelled as the IR prints the Strategy enum.
+inline llvm::cl::ValuesClass getStrategyOptionValues() {
+  return llvm::cl::values(
+      clEnumValN(Strategy::simple, stringifyStrategy(Strategy::simple),
+                 "one base step per big step"),
+      clEnumValN(Strategy::traditional,
+                 stringifyStrategy(Strategy::traditional),
+                 "global minimum step, one evaluation per component"),
+      clEnumValN(Strategy::hip, stringifyStrategy(Strategy::hip),
+                 "the paper's method: interpolated sub-steps"),
+      clEnumValN(Strategy::hip_cache, stringifyStrategy(Strategy::hip_cache),
+                 "hip with shared-memory caches of window reads"));
+}
+
+/// Fails with an error on `simulation` when it is past
+/// --sim-insert-interpolation (it holds sim.load or sim.big_step), naming
+/// the pass that cannot run on it and what it would re-decide, e.g.
+/// ("sim-plan-memory", "its memory plan is").
+LogicalResult checkBeforeInterpolation(SimulationOp simulation,
+                                       StringRef passArgument,
+                                       StringRef decisions);
 
 #define GEN_PASS_DECL
 #include "sim/Dialect/Sim/Transforms/Passes.h.inc"

@@ -80,8 +80,9 @@ def SimSchedule : Pass<"sim-schedule", "::mlir::sim::SimulationOp"> {
 
     The result is recorded on the IR: `sim.schedule` holds the full order and,
     in `bounded_by`, the components whose `num_steps` bound the `hip` big step
-    (those that read through the back edge, Fig. 6; `traditional` is bounded
-    by every component with a `num_steps` body). Every `sim.read` in a
+    (those that read through the back edge and have a `num_steps` body,
+    Fig. 6; `traditional` is bounded by every component with a `num_steps`
+    body). Every `sim.read` in a
     component gets its role: `own`, `interpolate` (a buffer already advanced
     in this step) or `back_edge`.
 
@@ -141,10 +142,12 @@ def SimPlanMemory : Pass<"sim-plan-memory", "::mlir::sim::SimulationOp"> {
     target half, so nothing is snapshotted or copied. Under `hip`, an
     `in_kernel` component keeps its own state in registers between sub-steps
     and writes the target once, so its source half still holds the value at
-    `T` for later interpolating readers: no snapshot and no parity copy. Only
-    a `grid_sync` component ping-pongs through memory: it gets
-    `copy_if_even`, and its buffers get a snapshot when a later component
-    interpolates them (or needs them as an interpolation's auxiliary buffer).
+    `T` for later interpolating readers: no snapshot and no parity copy. A
+    component without `num_steps` takes the whole big step in one
+    evaluation, so it needs neither. Only a `grid_sync` component with
+    `num_steps` ping-pongs through memory: it gets `copy_if_even`, and its
+    buffers get a snapshot when a later component interpolates them (or
+    needs them as an interpolation's auxiliary buffer).
     Under `hip-cache`, `caches` lists the buffers a component interpolates
     through a window (neighbouring threads share those values).
 
@@ -154,15 +157,7 @@ def SimPlanMemory : Pass<"sim-plan-memory", "::mlir::sim::SimulationOp"> {
   let options = [
     Option<"strategy", "strategy", "::mlir::sim::Strategy",
            "::mlir::sim::Strategy::hip", "The strategy to plan for",
-           [{::llvm::cl::values(
-               clEnumValN(::mlir::sim::Strategy::simple, "simple",
-                          "one base step per big step"),
-               clEnumValN(::mlir::sim::Strategy::traditional, "traditional",
-                          "global minimum step, one evaluation per component"),
-               clEnumValN(::mlir::sim::Strategy::hip, "hip",
-                          "the paper's method: interpolated sub-steps"),
-               clEnumValN(::mlir::sim::Strategy::hip_cache, "hip-cache",
-                          "hip with shared-memory caches"))}]>,
+           "::mlir::sim::getStrategyOptionValues()">,
   ];
 }
 
@@ -182,7 +177,9 @@ def SimInsertInterpolation
       (`target`), plus the auxiliary buffers the interpolation needs, and
       interpolate at the reader's local time: fraction `(t + n - T) / m` in
       `evaluate`, `(t - T) / m` in `num_steps`, with `T` and `m` from
-      `sim.big_step`. Under `simple` and `traditional` they load `target` in
+      `sim.big_step`. The length of the big step in time units (`m * dt`,
+      for derivatives) reads `dt` with `sim.get_param @dt`: it is a
+      run-time value, not a constant of the scene. Under `simple` and `traditional` they load `target` in
       `evaluate` (the fraction is always 1) and `source` in `num_steps`
       (estimates are taken at `T`).
 
