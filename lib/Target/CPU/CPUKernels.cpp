@@ -1,0 +1,190 @@
+//===- CPUKernels.cpp - CPU kernels to a shared object --------------------===//
+//
+// Upstream conversions take the kernels to the LLVM dialect and LLVM IR; this
+// file adds what is ours: the `sim_cpu_<kernel>(void **params, ...)` entry
+// points, which unpack the same argument array a CUDA launch takes (a memref
+// is five values: allocated and aligned pointer, offset, size, stride), so
+// the runtime calls every kernel the same way on both backends. The object
+// is made in process by an LLVM TargetMachine for the host, then linked into
+// a shared object with the system's ld.lld.
+//
+//===----------------------------------------------------------------------===//
+
+#include "sim/Target/CPUKernels.h"
+#include "sim/Dialect/Plan/IR/PlanOps.h"
+
+#include "mlir/Conversion/Passes.h"
+#include "mlir/Dialect/Func/IR/FuncOps.h"
+#include "mlir/Dialect/MemRef/Transforms/Passes.h"
+#include "mlir/ExecutionEngine/OptUtils.h"
+#include "mlir/Pass/PassManager.h"
+#include "mlir/Target/LLVMIR/Dialect/Builtin/BuiltinToLLVMIRTranslation.h"
+#include "mlir/Target/LLVMIR/Dialect/LLVMIR/LLVMToLLVMIRTranslation.h"
+#include "mlir/Target/LLVMIR/Export.h"
+
+#include "llvm/IR/IRBuilder.h"
+#include "llvm/IR/LegacyPassManager.h"
+#include "llvm/IR/Module.h"
+#include "llvm/MC/TargetRegistry.h"
+#include "llvm/Support/FileSystem.h"
+#include "llvm/Support/FileUtilities.h"
+#include "llvm/Support/MemoryBuffer.h"
+#include "llvm/Support/Path.h"
+#include "llvm/Support/Program.h"
+#include "llvm/Support/TargetSelect.h"
+#include "llvm/Target/TargetMachine.h"
+#include "llvm/TargetParser/Host.h"
+
+using namespace mlir;
+using namespace mlir::sim;
+
+void mlir::sim::registerCPUKernelDialects(DialectRegistry &registry) {
+  registerBuiltinDialectTranslation(registry);
+  registerLLVMDialectTranslation(registry);
+}
+
+/// Adds `sim_cpu_<name>(ptr params, i64, i64, i64)` for kernel `name`: loads
+/// each parameter of the kernel from params[i], passes the group arguments.
+static void addEntryPoint(llvm::Module &module, llvm::Function &kernel) {
+  llvm::LLVMContext &context = module.getContext();
+  llvm::Type *ptr = llvm::PointerType::getUnqual(context);
+  llvm::Type *i64 = llvm::Type::getInt64Ty(context);
+  auto *type = llvm::FunctionType::get(llvm::Type::getVoidTy(context),
+                                       {ptr, i64, i64, i64}, false);
+  auto *entry = llvm::Function::Create(type, llvm::Function::ExternalLinkage,
+                                       "sim_cpu_" + kernel.getName(), module);
+  llvm::IRBuilder<> builder(llvm::BasicBlock::Create(context, "", entry));
+  llvm::Value *params = entry->getArg(0);
+  SmallVector<llvm::Value *> args;
+  unsigned launchArgs = kernel.arg_size() - 3;
+  for (unsigned index = 0; index < launchArgs; ++index) {
+    llvm::Value *slot = builder.CreateConstGEP1_64(ptr, params, index);
+    llvm::Value *address = builder.CreateLoad(ptr, slot);
+    args.push_back(
+        builder.CreateLoad(kernel.getArg(index)->getType(), address));
+  }
+  for (unsigned index = 1; index <= 3; ++index)
+    args.push_back(entry->getArg(index));
+  builder.CreateCall(&kernel, args);
+  builder.CreateRetVoid();
+  kernel.setLinkage(llvm::Function::InternalLinkage);
+}
+
+FailureOr<std::string>
+mlir::sim::compileCPUKernels(ModuleOp kernels,
+                             const CPUKernelOptions &options) {
+  Location loc = kernels.getLoc();
+  OwningOpRef<ModuleOp> module(cast<ModuleOp>(kernels->clone()));
+  (*module)->removeAttr(SymbolTable::getSymbolAttrName());
+  SmallVector<std::string> names;
+  for (auto func : module->getOps<func::FuncOp>()) {
+    if (!func->hasAttr(simplan::PlanDialect::getGroupArgumentsAttrName()))
+      return emitError(func.getLoc())
+             << "is not a CPU kernel (run --sim-lower-to-cpu)";
+    names.push_back(func.getSymName().str());
+  }
+
+  // To the LLVM dialect with upstream conversions.
+  PassManager pm(module->getContext());
+  pm.addPass(createSCFToControlFlowPass());
+  pm.addPass(createConvertVectorToLLVMPass());
+  pm.addPass(createConvertMathToLLVMPass());
+  pm.addPass(createConvertMathToLibmPass());
+  pm.addPass(memref::createExpandStridedMetadataPass());
+  pm.addPass(createFinalizeMemRefToLLVMConversionPass());
+  pm.addPass(createArithToLLVMConversionPass());
+  pm.addPass(createConvertIndexToLLVMPass());
+  pm.addPass(createConvertFuncToLLVMPass());
+  pm.addPass(createConvertControlFlowToLLVMPass());
+  pm.addPass(createReconcileUnrealizedCastsPass());
+  if (failed(pm.run(*module)))
+    return emitError(loc) << "could not lower the CPU kernels to LLVM";
+
+  // To LLVM IR, with the entry points.
+  llvm::InitializeNativeTarget();
+  llvm::InitializeNativeTargetAsmPrinter();
+  llvm::LLVMContext context;
+  std::unique_ptr<llvm::Module> llvmModule =
+      translateModuleToLLVMIR(*module, context, "sim_cpu_kernels");
+  if (!llvmModule)
+    return emitError(loc) << "could not translate the CPU kernels to LLVM IR";
+  for (const std::string &name : names) {
+    llvm::Function *kernel = llvmModule->getFunction(name);
+    if (!kernel || kernel->arg_size() < 3)
+      return emitError(loc)
+             << "lost CPU kernel '" << name << "' on the way to LLVM IR";
+    addEntryPoint(*llvmModule, *kernel);
+  }
+
+  // An object for the host (generic x86-64, so that it runs on another
+  // machine than the one that compiled it), position independent.
+  llvm::Triple triple(llvm::sys::getDefaultTargetTriple());
+  std::string error;
+  const llvm::Target *target =
+      llvm::TargetRegistry::lookupTarget(triple, error);
+  if (!target)
+    return emitError(loc) << "no LLVM target for " << triple.str() << ": "
+                          << error;
+  llvm::TargetOptions targetOptions;
+  std::unique_ptr<llvm::TargetMachine> machine(target->createTargetMachine(
+      triple, "generic", "", targetOptions, llvm::Reloc::PIC_));
+  llvmModule->setDataLayout(machine->createDataLayout());
+  llvmModule->setTargetTriple(triple);
+  auto optimize = makeOptimizingTransformer(options.optLevel,
+                                            /*sizeLevel=*/0, machine.get());
+  if (llvm::Error failure = optimize(llvmModule.get()))
+    return emitError(loc) << "LLVM optimisation failed: "
+                          << llvm::toString(std::move(failure));
+
+  SmallString<128> objectPath, libraryPath;
+  int objectFd;
+  if (llvm::sys::fs::createTemporaryFile("sim-cpu", "o", objectFd,
+                                         objectPath) ||
+      llvm::sys::fs::createTemporaryFile("sim-cpu", "so", libraryPath))
+    return emitError(loc) << "could not create temporary files";
+  llvm::FileRemover removeObject(objectPath), removeLibrary(libraryPath);
+  {
+    llvm::raw_fd_ostream object(objectFd, /*shouldClose=*/true);
+    llvm::legacy::PassManager codegen;
+    if (machine->addPassesToEmitFile(codegen, object, nullptr,
+                                     llvm::CodeGenFileType::ObjectFile))
+      return emitError(loc) << "the host target cannot emit objects";
+    codegen.run(*llvmModule);
+  }
+
+  // A shared object that needs libm (math bodies call it) and nothing else.
+  std::string linker = options.linker;
+  if (linker.empty()) {
+    for (StringRef candidate :
+         {"/usr/lib/llvm-22/bin/ld.lld", "ld.lld-22", "ld.lld"}) {
+      llvm::ErrorOr<std::string> found =
+          llvm::sys::path::is_absolute(candidate)
+              ? (llvm::sys::fs::can_execute(candidate)
+                     ? llvm::ErrorOr<std::string>(candidate.str())
+                     : std::make_error_code(
+                           std::errc::no_such_file_or_directory))
+              : llvm::sys::findProgramByName(candidate);
+      if (found) {
+        linker = *found;
+        break;
+      }
+    }
+  }
+  if (linker.empty())
+    return emitError(loc) << "no linker found to make the CPU kernels' "
+                             "shared object (install lld-22)";
+  SmallVector<StringRef> args = {linker, "-shared",   "--as-needed",
+                                 "-o",   libraryPath, objectPath};
+  if (llvm::sys::fs::exists("/lib/x86_64-linux-gnu/libm.so.6"))
+    args.push_back("/lib/x86_64-linux-gnu/libm.so.6");
+  std::string linkError;
+  if (llvm::sys::ExecuteAndWait(linker, args, std::nullopt, {}, 0, 0,
+                                &linkError) != 0)
+    return emitError(loc) << "linking the CPU kernels failed"
+                          << (linkError.empty() ? "" : ": ") << linkError;
+  llvm::ErrorOr<std::unique_ptr<llvm::MemoryBuffer>> library =
+      llvm::MemoryBuffer::getFile(libraryPath);
+  if (!library)
+    return emitError(loc) << "could not read the linked CPU kernels";
+  return (*library)->getBuffer().str();
+}

@@ -1,0 +1,400 @@
+//===- CPUKernelsTest.cpp - running the lowered kernels on the CPU --------===//
+//
+// Lowers scenes with the front end and --sim-lower-to-cpu, compiles the CPU
+// kernels into a shared object, loads it and runs the plan with a minimal
+// launcher written from docs/Plan.md. The kernels are the same algorithms as
+// the GPU kernels (SimulationKernels.cpp), so this checks those algorithms
+// without a GPU: every run ends exactly at its end, strategies agree with
+// `simple` when every big step is one base step, sub-steps follow the group
+// minimum, and the grid-wide rounds ping-pong and copy correctly.
+//
+//===----------------------------------------------------------------------===//
+
+#include "sim/Target/CPUKernels.h"
+#include "sim/Conversion/Passes.h"
+#include "sim/Dialect/Plan/IR/PlanOps.h"
+#include "sim/Dialect/Sim/IR/SimDialect.h"
+#include "sim/Dialect/Sim/IR/SimOps.h"
+#include "sim/Dialect/Sim/Transforms/Passes.h"
+#include "sim/Pipelines/Pipelines.h"
+
+#include "mlir/Dialect/Arith/IR/Arith.h"
+#include "mlir/Dialect/Func/IR/FuncOps.h"
+#include "mlir/Dialect/LLVMIR/LLVMDialect.h"
+#include "mlir/Dialect/Math/IR/Math.h"
+#include "mlir/Dialect/Vector/IR/VectorOps.h"
+#include "mlir/Parser/Parser.h"
+#include "mlir/Pass/PassManager.h"
+
+#include "gtest/gtest.h"
+
+#include <cmath>
+#include <cstring>
+#include <dlfcn.h>
+#include <fstream>
+#include <map>
+#include <unistd.h>
+
+using namespace mlir;
+using namespace mlir::sim;
+
+namespace {
+
+using KernelFn = void (*)(void **, int64_t, int64_t, int64_t);
+
+/// A plan being run on the CPU: the clock, both halves of every buffer and
+/// the parameters, and the loaded kernels.
+class CPURun {
+public:
+  CPURun(simplan::PlanOp plan, void *library, int64_t groupSize)
+      : plan(plan), library(library), groupSize(groupSize),
+        range(plan.getRange()) {
+    clock.assign(plan.getClockSlots(), 0);
+    for (auto buffer : plan.getBlock().getOps<simplan::BufferOp>()) {
+      std::string name = buffer.getSymName().str();
+      buffers[name].assign(2 * range * buffer.getStride(), 0);
+      if (buffer.getSnapshot())
+        snapshots[name].assign(range * buffer.getStride(), 0);
+      strides[name] = buffer.getStride();
+    }
+    for (auto param : plan.getBlock().getOps<simplan::ParamOp>())
+      setParam(param.getSymName(), cast<TypedAttr>(param.getValue()));
+    dt = cast<FloatAttr>(plan.getDt()).getValueAsDouble();
+    dtIsF32 = cast<FloatAttr>(plan.getDt()).getType().isF32();
+  }
+
+  void setParam(StringRef name, TypedAttr value) {
+    uint64_t bits = 0;
+    if (auto f = dyn_cast<FloatAttr>(value)) {
+      if (f.getType().isF32()) {
+        float v = f.getValueAsDouble();
+        std::memcpy(&bits, &v, 4);
+      } else {
+        double v = f.getValueAsDouble();
+        std::memcpy(&bits, &v, 8);
+      }
+    } else {
+      bits = cast<IntegerAttr>(value).getValue().getSExtValue();
+    }
+    params[name.str()] = bits;
+  }
+
+  void phase(simplan::PhaseKind kind) {
+    for (auto op : plan.getBlock().getOps<simplan::PhaseOp>())
+      if (op.getKind() == kind)
+        runBlock(op.getBody().front());
+  }
+
+  /// docs/Plan.md: set the end, launch big steps until the clock reaches
+  /// it, then commit the last one.
+  void run(int64_t steps) {
+    clock[3] = clock[0] + clock[1] + steps;
+    int guard = 0;
+    while (clock[0] + clock[1] < clock[3] && ++guard < 100000)
+      phase(simplan::PhaseKind::step);
+    ASSERT_LT(guard, 100000) << "the clock never reached the end";
+    phase(simplan::PhaseKind::finish);
+  }
+
+  /// Item `item`, lane `lane` of buffer `name`'s current state.
+  double value(StringRef name, int64_t item, int lane = 0) {
+    const std::vector<char> &data = buffers[name.str()];
+    int64_t stride = strides[name.str()];
+    size_t offset = (clock[2] * range + item) * stride;
+    bool isF32 = scalarIsF32(name);
+    if (isF32) {
+      float v;
+      std::memcpy(&v, &data[offset + 4 * lane], 4);
+      return v;
+    }
+    double v;
+    std::memcpy(&v, &data[offset + 8 * lane], 8);
+    return v;
+  }
+
+  std::vector<int64_t> clock;
+
+private:
+  bool scalarIsF32(StringRef name) {
+    for (auto buffer : plan.getBlock().getOps<simplan::BufferOp>())
+      if (buffer.getSymName() == name)
+        return getElementTypeOrSelf(buffer.getElementType()).isF32();
+    return true;
+  }
+
+  void runBlock(Block &block) {
+    for (Operation &op : block) {
+      if (auto repeat = dyn_cast<simplan::RepeatOp>(op)) {
+        for (int64_t i = 0; i < repeat.getCount(); ++i)
+          runBlock(repeat.getBody().front());
+      } else if (auto launch = dyn_cast<simplan::LaunchOp>(op)) {
+        this->launch(launch);
+      }
+    }
+  }
+
+  void launch(simplan::LaunchOp launch) {
+    std::string symbol =
+        ("sim_cpu_" + launch.getKernel().getLeafReference().getValue()).str();
+    auto fn = reinterpret_cast<KernelFn>(dlsym(library, symbol.c_str()));
+    ASSERT_NE(fn, nullptr) << symbol;
+    // Storage for every value a pointer in `args` points to.
+    std::vector<std::array<uint64_t, 5>> storage;
+    storage.reserve(launch.getArgs().size());
+    std::vector<void *> args;
+    auto memref = [&](void *data, int64_t size) {
+      storage.push_back({reinterpret_cast<uint64_t>(data),
+                         reinterpret_cast<uint64_t>(data), 0,
+                         static_cast<uint64_t>(size), 1});
+      for (uint64_t &field : storage.back())
+        args.push_back(&field);
+    };
+    auto scalar = [&](uint64_t bits) {
+      storage.push_back({bits, 0, 0, 0, 0});
+      args.push_back(&storage.back()[0]);
+    };
+    for (auto arg : launch.getArgs().getAsRange<simplan::ArgAttr>()) {
+      std::string name =
+          arg.getName() ? arg.getName().getValue().str() : std::string();
+      switch (arg.getKind()) {
+      case simplan::ArgKind::clock:
+        memref(clock.data(), clock.size());
+        break;
+      case simplan::ArgKind::buffer:
+        memref(buffers[name].data(), 2 * range);
+        break;
+      case simplan::ArgKind::snapshot:
+        memref(snapshots[name].data(), range);
+        break;
+      case simplan::ArgKind::param:
+        scalar(params[name]);
+        break;
+      case simplan::ArgKind::range:
+        scalar(range);
+        break;
+      case simplan::ArgKind::dt: {
+        uint64_t bits = 0;
+        if (dtIsF32) {
+          float v = dt;
+          std::memcpy(&bits, &v, 4);
+        } else {
+          std::memcpy(&bits, &dt, 8);
+        }
+        scalar(bits);
+        break;
+      }
+      default:
+        FAIL() << "unexpected launch argument";
+      }
+    }
+    if (launch.getShape() == simplan::LaunchShape::single)
+      fn(args.data(), 0, 1, 1);
+    else
+      fn(args.data(), 0, (range + groupSize - 1) / groupSize, groupSize);
+  }
+
+  simplan::PlanOp plan;
+  void *library;
+  int64_t groupSize, range;
+  double dt;
+  bool dtIsF32;
+  std::map<std::string, std::vector<char>> buffers, snapshots;
+  std::map<std::string, int64_t> strides;
+  std::map<std::string, uint64_t> params;
+};
+
+class CPUKernelsTest : public ::testing::Test {
+protected:
+  CPUKernelsTest() {
+    registry
+        .insert<SimDialect, simplan::PlanDialect, arith::ArithDialect,
+                math::MathDialect, scf::SCFDialect, vector::VectorDialect,
+                func::FuncDialect, memref::MemRefDialect, LLVM::LLVMDialect>();
+    registerCPUKernelDialects(registry);
+    context.appendDialectRegistry(registry);
+    context.loadAllAvailableDialects();
+  }
+
+  ~CPUKernelsTest() override {
+    for (auto &[handle, path] : libraries) {
+      dlclose(handle);
+      unlink(path.c_str());
+    }
+  }
+
+  /// Lowers `scene` for `strategy` and loads its CPU kernels.
+  std::unique_ptr<CPURun> lower(StringRef scene, Strategy strategy,
+                                int64_t groupSize = 4) {
+    OwningOpRef<ModuleOp> &module =
+        modules.emplace_back(parseSourceString<ModuleOp>(scene, &context));
+    if (!module)
+      return nullptr;
+    PassManager pm(&context);
+    FrontEndOptions options;
+    options.strategy = strategy;
+    buildFrontEndPipeline(pm, options);
+    SimLowerToCPUOptions cpuOptions;
+    cpuOptions.groupSize = groupSize;
+    pm.addPass(createSimLowerToCPU(cpuOptions));
+    if (failed(pm.run(*module)))
+      return nullptr;
+    ModuleOp kernels = *module->getOps<ModuleOp>().begin();
+    FailureOr<std::string> library = compileCPUKernels(kernels);
+    if (failed(library))
+      return nullptr;
+    char path[] = "/tmp/sim-cpu-test-XXXXXX";
+    int fd = mkstemp(path);
+    if (fd < 0 || write(fd, library->data(), library->size()) !=
+                      static_cast<ssize_t>(library->size()))
+      return nullptr;
+    close(fd);
+    void *handle = dlopen(path, RTLD_NOW | RTLD_LOCAL);
+    if (!handle)
+      return nullptr;
+    libraries.push_back({handle, path});
+    auto plan = *module->getOps<simplan::PlanOp>().begin();
+    return std::make_unique<CPURun>(plan, handle, groupSize);
+  }
+
+  DialectRegistry registry;
+  MLIRContext context;
+  /// Every lowered scene stays alive with the runs that read its plan.
+  std::vector<OwningOpRef<ModuleOp>> modules;
+  std::vector<std::pair<void *, std::string>> libraries;
+};
+
+/// Two components: @Lead (x += dt * y, bounded by its num_steps @lead) and
+/// @Follow (y relaxes towards x at its neighbour, sub-steps of @follow).
+/// Items have different step counts when @mixed is set: item i takes
+/// 1 + (i % 3) steps in @Follow.
+constexpr const char *kChain = R"mlir(
+sim.simulation @chain range(10) dt(1.0e-1 : f32) max_steps(4) {
+  sim.param @lead = 1 : i32
+  sim.param @follow = 1 : i32
+  sim.param @mixed = 0 : i32
+  sim.buffer @X : f32 init {
+  ^bb0(%i: index):
+    %i32 = arith.index_cast %i : index to i32
+    %x = arith.sitofp %i32 : i32 to f32
+    sim.yield %x : f32
+  }
+  sim.buffer @Y : f32 init {
+  ^bb0(%i: index):
+    %one = arith.constant 1.0 : f32
+    sim.yield %one : f32
+  }
+  sim.component @Lead writes(@X) num_steps {
+  ^bb0(%i: index, %t: i64):
+    %n = sim.get_param @lead : i32
+    sim.yield %n : i32
+  } evaluate {
+  ^bb0(%i: index, %t: i64, %n: i32, %dt: f32):
+    %x = sim.read @X[%i] : f32
+    %y = sim.read @Y[%i] : f32
+    %nf = arith.sitofp %n : i32 to f32
+    %h = arith.mulf %nf, %dt : f32
+    %dx = arith.mulf %h, %y : f32
+    %next = arith.addf %x, %dx : f32
+    sim.yield %next : f32
+  }
+  sim.component @Follow writes(@Y) num_steps {
+  ^bb0(%i: index, %t: i64):
+    %n = sim.get_param @follow : i32
+    %mixed = sim.get_param @mixed : i32
+    %i32 = arith.index_cast %i : index to i32
+    %c3 = arith.constant 3 : i32
+    %c1 = arith.constant 1 : i32
+    %r = arith.remsi %i32, %c3 : i32
+    %per = arith.addi %r, %c1 : i32
+    %zero = arith.constant 0 : i32
+    %use = arith.cmpi ne, %mixed, %zero : i32
+    %s = arith.select %use, %per, %n : i32
+    sim.yield %s : i32
+  } evaluate {
+  ^bb0(%i: index, %t: i64, %n: i32, %dt: f32):
+    %c1 = arith.constant 1 : index
+    %j = arith.addi %i, %c1 : index
+    %x = sim.read @X[%j] : f32
+    %y = sim.read @Y[%i] : f32
+    %nf = arith.sitofp %n : i32 to f32
+    %h = arith.mulf %nf, %dt : f32
+    %d = arith.subf %x, %y : f32
+    %dy = arith.mulf %h, %d : f32
+    %next = arith.addf %y, %dy : f32
+    sim.yield %next : f32
+  }
+  sim.schedule [@Lead]
+  sim.observe [@X, @Y]
+}
+)mlir";
+
+const Strategy kStrategies[] = {Strategy::simple, Strategy::traditional,
+                                Strategy::hip, Strategy::hip_cache};
+
+TEST_F(CPUKernelsTest, EveryStrategyEndsExactlyAtTheEnd) {
+  for (Strategy strategy : kStrategies) {
+    std::unique_ptr<CPURun> run = lower(kChain, strategy);
+    ASSERT_TRUE(run) << stringifyStrategy(strategy).str();
+    run->setParam("lead", IntegerAttr::get(IntegerType::get(&context, 32), 3));
+    run->phase(simplan::PhaseKind::init);
+    run->run(10);
+    EXPECT_EQ(run->clock[0], 10) << stringifyStrategy(strategy).str();
+    EXPECT_EQ(run->clock[1], 0);
+    run->run(7);
+    EXPECT_EQ(run->clock[0], 17) << stringifyStrategy(strategy).str();
+  }
+}
+
+TEST_F(CPUKernelsTest, StrategiesEqualSimpleWhenEveryBigStepIsOneBaseStep) {
+  std::unique_ptr<CPURun> simple = lower(kChain, Strategy::simple);
+  ASSERT_TRUE(simple);
+  simple->phase(simplan::PhaseKind::init);
+  simple->run(12);
+  for (Strategy strategy : kStrategies) {
+    std::unique_ptr<CPURun> run = lower(kChain, strategy);
+    ASSERT_TRUE(run);
+    run->phase(simplan::PhaseKind::init);
+    run->run(12);
+    for (int64_t item = 0; item < 10; ++item) {
+      EXPECT_EQ(run->value("X", item), simple->value("X", item))
+          << stringifyStrategy(strategy).str() << " item " << item;
+      EXPECT_EQ(run->value("Y", item), simple->value("Y", item))
+          << stringifyStrategy(strategy).str() << " item " << item;
+    }
+  }
+}
+
+TEST_F(CPUKernelsTest, BigStepsFollowTheBoundingComponent) {
+  std::unique_ptr<CPURun> run = lower(kChain, Strategy::hip);
+  ASSERT_TRUE(run);
+  run->setParam("lead", IntegerAttr::get(IntegerType::get(&context, 32), 3));
+  run->phase(simplan::PhaseKind::init);
+  run->run(10);
+  // Big steps of 3, 3, 3 and the last one clamped to 1.
+  EXPECT_EQ(run->clock[5], 4);
+  int64_t histogram = 8 + 2; // two evaluation counters, no sub-step clock
+  EXPECT_EQ(run->clock[histogram + 3], 3);
+  EXPECT_EQ(run->clock[histogram + 1], 1);
+  // @Lead evaluates once per big step; @Follow (num_steps 1) every base step.
+  EXPECT_EQ(run->clock[8], 4 * 10);
+  EXPECT_EQ(run->clock[9], 10 * 10);
+}
+
+TEST_F(CPUKernelsTest, SubStepsTakeTheGroupMinimum) {
+  // Groups of 4 items; @Follow wants 1 + i % 3 steps, so every group that
+  // holds an item i = 0 mod 3 takes single steps. Group 2 (items 8, 9) wants
+  // 3 and 1: single steps too. With max_steps 4 and @lead 4: each big step
+  // of 4 has 4 sub-steps of 1 for every group, like simple.
+  std::unique_ptr<CPURun> hip = lower(kChain, Strategy::hip);
+  ASSERT_TRUE(hip);
+  hip->setParam("lead", IntegerAttr::get(IntegerType::get(&context, 32), 4));
+  hip->setParam("mixed", IntegerAttr::get(IntegerType::get(&context, 32), 1));
+  hip->phase(simplan::PhaseKind::init);
+  hip->run(8);
+  EXPECT_EQ(hip->clock[5], 2);
+  EXPECT_EQ(hip->clock[9], 8 * 10) << "every item evaluated every base step";
+  for (int64_t item = 0; item < 10; ++item)
+    EXPECT_TRUE(std::isfinite(hip->value("Y", item)));
+}
+
+} // namespace
