@@ -453,3 +453,28 @@ sim.simulation @builtin_params range(16) dt(1.0e-2 : f64) max_steps(4) {
     sim.yield %rf : f64
   }
 }
+
+// -----
+
+// A buffer whose value means nothing between step ends: interp(none), also
+// when written as the attribute #sim.none.
+// CHECK-LABEL: sim.simulation @not_interpolable
+// CHECK:         sim.buffer @P : f32 interp(none) init {
+// CHECK:         sim.buffer @Q : f32 interp(none) boundary(wrap) init {
+sim.simulation @not_interpolable range(16) dt(1.0e-2 : f32) max_steps(2) {
+  sim.buffer @P : f32 interp(none) init {
+  ^bb0(%i: index):
+    %c = arith.constant 0.0 : f32
+    sim.yield %c : f32
+  }
+  sim.buffer @Q : f32 interp(#sim.none) boundary(wrap) init {
+  ^bb0(%i: index):
+    %c = arith.constant 0.0 : f32
+    sim.yield %c : f32
+  }
+  sim.component @C writes(@P, @Q) evaluate {
+  ^bb0(%i: index, %t: i64, %n: i32, %dt: f32):
+    %p = sim.read @P[%i] : f32
+    sim.yield %p, %p : f32, f32
+  }
+}

@@ -97,6 +97,22 @@ struct WeightBuilder {
 } // namespace
 
 //===----------------------------------------------------------------------===//
+// NoneInterpAttr
+//===----------------------------------------------------------------------===//
+
+unsigned NoneInterpAttr::getOrderOfAccuracy() const { return 0; }
+
+bool NoneInterpAttr::isInterpolable() const { return false; }
+
+Value NoneInterpAttr::buildInterpolation(OpBuilder &builder, Location loc,
+                                         ValueRange atBegin, ValueRange atEnd,
+                                         Value fraction, Value span) const {
+  // Callers check isInterpolable() first (--sim-plan-memory rejects the
+  // reads that would need this).
+  return nullptr;
+}
+
+//===----------------------------------------------------------------------===//
 // LinearInterpAttr
 //===----------------------------------------------------------------------===//
 

@@ -163,14 +163,19 @@ static void printOptionalReadRole(OpAsmPrinter &printer, Operation *,
 }
 
 /// An optional `interp(<attribute>)` clause; the attribute must implement
-/// InterpolationAttrInterface.
+/// InterpolationAttrInterface. `interp(none)` is #sim.none.
 static ParseResult parseInterpClause(OpAsmParser &parser,
                                      InterpolationAttrInterface &interp) {
   if (failed(parser.parseOptionalKeyword("interp")))
     return success();
-  Attribute attr;
   if (parser.parseLParen())
     return failure();
+  if (succeeded(parser.parseOptionalKeyword("none"))) {
+    interp = cast<InterpolationAttrInterface>(
+        NoneInterpAttr::get(parser.getContext()));
+    return parser.parseRParen();
+  }
+  Attribute attr;
   SMLoc loc = parser.getCurrentLocation();
   if (parser.parseAttribute(attr))
     return failure();
@@ -178,14 +183,18 @@ static ParseResult parseInterpClause(OpAsmParser &parser,
   if (!interp)
     return parser.emitError(loc)
            << "expected an interpolation function such as #sim.linear, "
-              "#sim.cubic or #sim.hermite<@derivative>, but got "
+              "#sim.cubic or #sim.hermite<@derivative>, or none, but got "
            << attr;
   return parser.parseRParen();
 }
 
 static void printInterpClause(OpAsmPrinter &printer, Operation *,
                               InterpolationAttrInterface interp) {
-  if (interp)
+  if (!interp)
+    return;
+  if (isa<NoneInterpAttr>(interp))
+    printer << " interp(none)";
+  else
     printer << " interp(" << Attribute(interp) << ")";
 }
 

@@ -109,11 +109,16 @@ struct PlanMemoryPass : public sim::impl::SimPlanMemoryBase<PlanMemoryPass> {
                << "has no sub-stepping verdict; run --sim-substep-legality "
                   "before --sim-plan-memory";
       for (const BufferAccess &access : analysis.getAccesses(component)) {
-        for (ReadOp read : access.reads)
+        for (ReadOp read : access.reads) {
           if (!read.getRoleAttr())
             return read.emitOpError()
                    << "has no read role; run --sim-schedule before "
                       "--sim-plan-memory";
+          if (read.getRole() == ReadRole::interpolate &&
+              failed(checkInterpolable(read, access.buffer, component,
+                                       access.body, strategy)))
+            return failure();
+        }
       }
     }
     return success();

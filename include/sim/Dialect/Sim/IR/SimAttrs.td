@@ -178,4 +178,25 @@ def Sim_HermiteInterpAttr : Sim_Attr<"HermiteInterp", "hermite", [
   let assemblyFormat = "`<` $derivative `>`";
 }
 
+def Sim_NoneInterpAttr : Sim_Attr<"NoneInterp", "none", [
+    DeclareAttrInterfaceMethods<Sim_InterpolationAttrInterface,
+                                ["isInterpolable"]>]> {
+  let summary = "no interpolation: the value means nothing between step ends";
+  let description = [{
+    Declares that a buffer's value is meaningful only at the ends of a big
+    step, such as a momentum at half steps of a leapfrog integrator. Written
+    `interp(none)` in a buffer (the printer always uses that form). Reading
+    it through the back edge (at `T`), as the own state, or under `simple`
+    and `traditional` is fine; under `hip` and `hip-cache` a read that would
+    need an intermediate value (an `interpolate` read in `evaluate` or
+    `num_steps`) is an error of `--sim-plan-memory`. It may still be the
+    derivative buffer of a `#sim.hermite` interpolation, which reads it only
+    at both ends.
+
+    ```mlir
+    sim.buffer @P : f32 interp(none) init { ... }
+    ```
+  }];
+}
+
 #endif // SIM_DIALECT_SIM_IR_SIMATTRS_TD

@@ -193,7 +193,8 @@ def Sim_BufferOp : Sim_Op<"buffer", [
     one component.
 
     - `interp(...)`: how a later component reconstructs the buffer at an
-      intermediate time (default `#sim.linear`).
+      intermediate time (default `#sim.linear`), or `interp(none)` when its
+      value means nothing between the ends of a big step (see `#sim.none`).
     - `boundary(...)`: what reads outside `[0, range)` return (default
       `clamp`).
     - `init`: the initial state of item `%i` at time 0. Reads in it see the

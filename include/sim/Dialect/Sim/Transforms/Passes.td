@@ -151,6 +151,10 @@ def SimPlanMemory : Pass<"sim-plan-memory", "::mlir::sim::SimulationOp"> {
     Under `hip-cache`, `caches` lists the buffers a component interpolates
     through a window (neighbouring threads share those values).
 
+    Under `hip` and `hip-cache` an `interpolate` read (in `evaluate` or
+    `num_steps`) of a buffer declared `interp(none)` is an error: it would
+    need the buffer at an intermediate time of the big step.
+
     Needs the roles of `--sim-schedule` and the verdicts of
     `--sim-substep-legality`.
   }];
