@@ -97,6 +97,21 @@ struct WeightBuilder {
 } // namespace
 
 //===----------------------------------------------------------------------===//
+// CacheAttr
+//===----------------------------------------------------------------------===//
+
+LogicalResult CacheAttr::verify(function_ref<InFlightDiagnostic()> emitError,
+                                FlatSymbolRefAttr buffer, int64_t minOffset,
+                                int64_t maxOffset) {
+  if (minOffset >= maxOffset)
+    return emitError() << "#sim.cache of " << buffer
+                       << " expects a window of more than one offset "
+                          "(lowest below highest), but got "
+                       << minOffset << ", " << maxOffset;
+  return success();
+}
+
+//===----------------------------------------------------------------------===//
 // NoneInterpAttr
 //===----------------------------------------------------------------------===//
 

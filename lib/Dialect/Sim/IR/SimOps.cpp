@@ -626,6 +626,9 @@ LogicalResult ComponentOp::verify() {
                             "written buffer ("
                          << writes.size() << "), but it yields "
                          << yield.getValues().size();
+  if (getCachesAttr() && simulation.getStrategy() != Strategy::hip_cache)
+    return emitOpError() << "has shared-memory caches, but the simulation's "
+                            "memory plan is not for the hip-cache strategy";
   return success();
 }
 
@@ -645,6 +648,25 @@ ComponentOp::verifySymbolUses(SymbolTableCollection &symbolTable) {
                            << " of evaluate), but the buffer's element type "
                               "is "
                            << buffer.getElementType();
+  }
+  if (ArrayAttr caches = getCachesAttr()) {
+    llvm::SmallDenseSet<Attribute> seen;
+    for (auto cache : caches.getAsRange<CacheAttr>()) {
+      FlatSymbolRefAttr name = cache.getBuffer();
+      if (!lookupBuffer(symbolTable, *this, name))
+        return emitOpError() << "caches " << name
+                             << ", which is not a sim.buffer of this "
+                                "simulation";
+      if (writesBuffer(name))
+        return emitOpError() << "caches " << name
+                             << ", which it writes; a cache holds "
+                                "interpolated values of another "
+                                "component's buffer";
+      if (!seen.insert(name).second)
+        return emitOpError() << "caches " << name
+                             << " twice; one cache covers all window reads "
+                                "of a buffer";
+    }
   }
   return success();
 }

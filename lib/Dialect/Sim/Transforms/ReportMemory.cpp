@@ -189,9 +189,11 @@ struct ReportMemoryPass
       ArrayAttr caches = component.getCachesAttr();
       if (!caches)
         continue;
+      // One element per thread of the group plus the window's halo.
       int64_t bytes = 0;
-      for (auto name : caches.getAsRange<FlatSymbolRefAttr>())
-        bytes += groupSize * elementBytes.lookup(name.getAttr());
+      for (auto cache : caches.getAsRange<CacheAttr>())
+        bytes += (groupSize + cache.getHalo()) *
+                 elementBytes.lookup(cache.getBuffer().getAttr());
       report.caches.push_back({component.getSymName().str(), bytes});
     }
     return report;

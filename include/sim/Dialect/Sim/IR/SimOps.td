@@ -283,9 +283,9 @@ def Sim_ComponentOp : Sim_Op<"component", [
 
     Both bodies read state only through `sim.read`. The analyses record
     their verdicts as attributes: `sub_stepping` (`--sim-substep-legality`),
-    `parity` and, under `hip-cache`, `caches` (the buffers whose interpolated
-    values the component caches in shared memory), both by
-    `--sim-plan-memory`.
+    `parity` and, under `hip-cache`, `caches` (a `#sim.cache<@B, lo, hi>`
+    for each buffer whose interpolated values in the window `i+lo..i+hi`
+    the component caches in shared memory), both by `--sim-plan-memory`.
 
     ```mlir
     sim.component @Integrate writes(@X, @V) num_steps {
@@ -306,7 +306,8 @@ def Sim_ComponentOp : Sim_Op<"component", [
                        FlatSymbolRefArrayAttr:$writes,
                        OptionalAttr<Sim_SubSteppingAttr>:$sub_stepping,
                        OptionalAttr<Sim_ParityAttr>:$parity,
-                       OptionalAttr<FlatSymbolRefArrayAttr>:$caches);
+                       OptionalAttr<TypedArrayAttrBase<Sim_CacheAttr,
+                           "array of #sim.cache">>:$caches);
   let regions = (region MaxSizedRegion<1>:$num_steps, SizedRegion<1>:$evaluate);
   let assemblyFormat = [{
     $sym_name `writes` `` custom<SymbolList>($writes) attr-dict-with-keyword
