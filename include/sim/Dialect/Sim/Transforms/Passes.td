@@ -214,7 +214,9 @@ def SimReportMemory : Pass<"sim-report-memory"> {
     triple-buffers every buffer (source, target and a snapshot of each), so
     that "model only what a scene needs" is a number. The IR is not changed.
     With `format=json` the same numbers are printed as JSON for benchmark
-    scripts.
+    scripts. Counts are exact 64-bit integers: a plan that needs more than
+    2^63 - 1 bytes (a range near 2^63) is an error that names the quantity,
+    never a wrapped number.
 
     Caches follow the paper's design (Section 4.1): for every
     `#sim.cache<@B, lo, hi>` a component has, one interpolated element per
