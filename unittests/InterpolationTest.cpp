@@ -142,6 +142,18 @@ TEST_F(InterpolationTest, DeclaredOrders) {
   EXPECT_EQ(hermite().getAuxiliaryBufferRole(0), "derivative");
 }
 
+/// interp(none) declares that a buffer has no value between step ends; the
+/// functions that build one say they do.
+TEST_F(InterpolationTest, NoneIsNotInterpolable) {
+  auto none = cast<InterpolationAttrInterface>(NoneInterpAttr::get(&context));
+  EXPECT_FALSE(none.isInterpolable());
+  EXPECT_EQ(none.getOrderOfAccuracy(), 0u);
+  EXPECT_TRUE(none.getAuxiliaryBuffers().empty());
+  EXPECT_TRUE(linear().isInterpolable());
+  EXPECT_TRUE(cubic().isInterpolable());
+  EXPECT_TRUE(hermite().isInterpolable());
+}
+
 /// Both ends are exact, bit for bit, in f32 and f64 and for vectors: this is
 /// what makes every strategy agree with `simple` when all big steps are one
 /// base step.

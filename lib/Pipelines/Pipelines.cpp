@@ -26,6 +26,7 @@ void mlir::sim::buildFrontEndPipeline(OpPassManager &pm,
   simulation.addPass(createSimSubstepLegality());
   SimPlanMemoryOptions planOptions;
   planOptions.strategy = options.strategy;
+  planOptions.groupSize = options.groupSize;
   simulation.addPass(createSimPlanMemory(planOptions));
   simulation.addPass(createSimInsertInterpolation());
 }

@@ -7,6 +7,7 @@
 // RUN: sim-opt %examples/paper/fig5.mlir --sim-front-end | FileCheck %s --check-prefix=FIG5 --implicit-check-not=sim.read --implicit-check-not=snapshot --implicit-check-not=copy_if_even
 // RUN: sim-opt %examples/paper/gravity_like.mlir --sim-front-end | FileCheck %s --check-prefix=GRAVITY --implicit-check-not=sim.read --implicit-check-not=snapshot --implicit-check-not=copy_if_even
 // RUN: sim-opt %examples/paper/pbd_like.mlir --sim-front-end | FileCheck %s --check-prefix=PBD --implicit-check-not=sim.read --implicit-check-not=snapshot --implicit-check-not=copy_if_even
+// RUN: sim-opt %examples/paper/gravity_like.mlir --sim-front-end=strategy=hip-cache | FileCheck %s --check-prefix=GRAVITY-CACHE
 // RUN: sim-opt %examples/paper/gravity_like.mlir --sim-front-end=strategy=simple | FileCheck %s --check-prefix=SIMPLE --implicit-check-not=sim.read --implicit-check-not=sim.big_step
 //
 // The memory reports shown in docs/MemoryPlans.md:
@@ -84,16 +85,24 @@
 // GRAVITY-MEM-NEXT: planned device memory                           6291456 (6.00 MiB)
 // GRAVITY-MEM-NEXT: naive plan (3 copies of every buffer)           9437184 (9.00 MiB)
 
+// Under hip-cache @C1 caches its window of @B0, @C2 those of @B0 and @B1
+// (each i-4..i+4); @C0 reads only at its own item and through the back edge.
+// GRAVITY-CACHE-LABEL: sim.simulation @gravity_like
+// GRAVITY-CACHE-SAME: attributes {strategy = #sim<strategy "hip-cache">}
+// GRAVITY-CACHE: sim.component @C0 writes(@B0) attributes {parity
+// GRAVITY-CACHE: sim.component @C1 writes(@B1) attributes {caches = [#sim.cache<@B0, -4, 4>], parity
+// GRAVITY-CACHE: sim.component @C2 writes(@B2) attributes {caches = [#sim.cache<@B0, -4, 4>, #sim.cache<@B1, -4, 4>], parity
+
 // Under hip-cache every component caches the buffers it interpolates through
-// windows: one vec4 per thread of a 256-thread group each. @C2 reads @B0 only
-// at its own item, which is not worth a cache.
+// windows i-4..i+4: one vec4 per thread of a 256-thread group plus 8 of
+// halo each. @C2 reads @B0 only at its own item, which is not worth a cache.
 // PBD-MEM:      memory plan of @pbd_like (strategy hip-cache, 65536 items)
 // PBD-MEM:      planned device memory                          14680064 (14.00 MiB)
 // PBD-MEM-NEXT: naive plan (3 copies of every buffer)          22020096 (21.00 MiB)
 // PBD-MEM:      shared-memory caches (256 threads per group):
-// PBD-MEM-NEXT:   @C1                4096 bytes per group
-// PBD-MEM-NEXT:   @C2                4096 bytes per group
-// PBD-MEM-NEXT:   @C3                4096 bytes per group
-// PBD-MEM-NEXT:   @C4                4096 bytes per group
-// PBD-MEM-NEXT:   @C5                8192 bytes per group
-// PBD-MEM-NEXT:   @C6                4096 bytes per group
+// PBD-MEM-NEXT:   @C1                4224 bytes per group
+// PBD-MEM-NEXT:   @C2                4224 bytes per group
+// PBD-MEM-NEXT:   @C3                4224 bytes per group
+// PBD-MEM-NEXT:   @C4                4224 bytes per group
+// PBD-MEM-NEXT:   @C5                8448 bytes per group
+// PBD-MEM-NEXT:   @C6                4224 bytes per group

@@ -2,7 +2,8 @@
 //
 // mlir-opt for sim: parses, verifies, transforms and prints sim scenes. It
 // registers only the dialects a scene body may use and the passes that
-// matter for scenes, so `--help` stays readable.
+// matter for scenes, so `--help` stays readable, and sets the sim tools'
+// option defaults (sim/Support/ToolDefaults.h).
 //
 //===----------------------------------------------------------------------===//
 
@@ -11,6 +12,7 @@
 #include "sim/Dialect/Sim/IR/SimDialect.h"
 #include "sim/Dialect/Sim/Transforms/Passes.h"
 #include "sim/Pipelines/Pipelines.h"
+#include "sim/Support/ToolDefaults.h"
 
 #include "mlir/Dialect/Arith/IR/Arith.h"
 #include "mlir/Dialect/Math/IR/Math.h"
@@ -21,6 +23,10 @@
 #include "mlir/Transforms/Passes.h"
 
 int main(int argc, char **argv) {
+  // Errors name the operation and location; no dump of the whole simulation
+  // unless --mlir-print-op-on-diagnostic asks for it.
+  mlir::sim::setToolDefaults();
+
   mlir::DialectRegistry registry;
   registry.insert<mlir::sim::SimDialect, mlir::arith::ArithDialect,
                   mlir::math::MathDialect, mlir::scf::SCFDialect,

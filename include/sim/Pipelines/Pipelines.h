@@ -19,6 +19,11 @@ struct FrontEndOptions : public PassPipelineOptions<FrontEndOptions> {
   PassOptions::Option<Strategy> strategy{
       *this, "strategy", llvm::cl::desc("The strategy to compile for"),
       llvm::cl::init(Strategy::hip), getStrategyOptionValues()};
+  PassOptions::Option<int64_t> groupSize{
+      *this, "group-size",
+      llvm::cl::desc("Threads per group: hip-cache plans a cache only for a "
+                     "window whose halo is smaller"),
+      llvm::cl::init(256)};
   PassOptions::Option<bool> prune{
       *this, "prune",
       llvm::cl::desc("Remove what no observed buffer depends on"),

@@ -379,3 +379,150 @@ sim.component @C writes(@B) evaluate {
   %c = arith.constant 0.0 : f32
   sim.yield %c : f32
 }
+
+// -----
+
+// Caches recorded by --sim-plan-memory under hip-cache.
+sim.simulation @s range(16) dt(1.0 : f32) max_steps(1) attributes {strategy = #sim<strategy "hip-cache">} {
+  sim.buffer @A : f32 init {
+  ^bb0(%i: index):
+    %c = arith.constant 0.0 : f32
+    sim.yield %c : f32
+  }
+  sim.buffer @B : f32 init {
+  ^bb0(%i: index):
+    %c = arith.constant 0.0 : f32
+    sim.yield %c : f32
+  }
+  sim.component @CA writes(@A) evaluate {
+  ^bb0(%i: index, %t: i64, %n: i32, %dt: f32):
+    %x = sim.read @A[%i] : f32
+    sim.yield %x : f32
+  }
+  // expected-error @+1 {{'sim.component' op caches @Nope, which is not a sim.buffer of this simulation}}
+  sim.component @CB writes(@B) attributes {caches = [#sim.cache<@Nope, -1, 1>]} evaluate {
+  ^bb0(%i: index, %t: i64, %n: i32, %dt: f32):
+    %x = sim.read @A[%i] : f32
+    sim.yield %x : f32
+  }
+}
+
+// -----
+
+sim.simulation @s range(16) dt(1.0 : f32) max_steps(1) attributes {strategy = #sim<strategy "hip-cache">} {
+  sim.buffer @A : f32 init {
+  ^bb0(%i: index):
+    %c = arith.constant 0.0 : f32
+    sim.yield %c : f32
+  }
+  sim.buffer @B : f32 init {
+  ^bb0(%i: index):
+    %c = arith.constant 0.0 : f32
+    sim.yield %c : f32
+  }
+  sim.component @CA writes(@A) evaluate {
+  ^bb0(%i: index, %t: i64, %n: i32, %dt: f32):
+    %x = sim.read @A[%i] : f32
+    sim.yield %x : f32
+  }
+  // expected-error @+1 {{'sim.component' op caches @B, which it writes; a cache holds interpolated values of another component's buffer}}
+  sim.component @CB writes(@B) attributes {caches = [#sim.cache<@B, -1, 1>]} evaluate {
+  ^bb0(%i: index, %t: i64, %n: i32, %dt: f32):
+    %x = sim.read @A[%i] : f32
+    sim.yield %x : f32
+  }
+}
+
+// -----
+
+sim.simulation @s range(16) dt(1.0 : f32) max_steps(1) attributes {strategy = #sim<strategy "hip-cache">} {
+  sim.buffer @A : f32 init {
+  ^bb0(%i: index):
+    %c = arith.constant 0.0 : f32
+    sim.yield %c : f32
+  }
+  sim.buffer @B : f32 init {
+  ^bb0(%i: index):
+    %c = arith.constant 0.0 : f32
+    sim.yield %c : f32
+  }
+  sim.component @CA writes(@A) evaluate {
+  ^bb0(%i: index, %t: i64, %n: i32, %dt: f32):
+    %x = sim.read @A[%i] : f32
+    sim.yield %x : f32
+  }
+  // expected-error @+1 {{'sim.component' op caches @A twice; one cache covers all window reads of a buffer}}
+  sim.component @CB writes(@B) attributes {caches = [#sim.cache<@A, -1, 1>, #sim.cache<@A, 0, 2>]} evaluate {
+  ^bb0(%i: index, %t: i64, %n: i32, %dt: f32):
+    %x = sim.read @A[%i] : f32
+    sim.yield %x : f32
+  }
+}
+
+// -----
+
+sim.simulation @s range(16) dt(1.0 : f32) max_steps(1) attributes {strategy = #sim<strategy hip>} {
+  sim.buffer @A : f32 init {
+  ^bb0(%i: index):
+    %c = arith.constant 0.0 : f32
+    sim.yield %c : f32
+  }
+  sim.buffer @B : f32 init {
+  ^bb0(%i: index):
+    %c = arith.constant 0.0 : f32
+    sim.yield %c : f32
+  }
+  sim.component @CA writes(@A) evaluate {
+  ^bb0(%i: index, %t: i64, %n: i32, %dt: f32):
+    %x = sim.read @A[%i] : f32
+    sim.yield %x : f32
+  }
+  // expected-error @+1 {{'sim.component' op has shared-memory caches, but the simulation's memory plan is not for the hip-cache strategy}}
+  sim.component @CB writes(@B) attributes {caches = [#sim.cache<@A, -1, 1>]} evaluate {
+  ^bb0(%i: index, %t: i64, %n: i32, %dt: f32):
+    %x = sim.read @A[%i] : f32
+    sim.yield %x : f32
+  }
+}
+
+// -----
+
+sim.simulation @s range(16) dt(1.0 : f32) max_steps(1) attributes {strategy = #sim<strategy "hip-cache">} {
+  sim.buffer @A : f32 init {
+  ^bb0(%i: index):
+    %c = arith.constant 0.0 : f32
+    sim.yield %c : f32
+  }
+  sim.buffer @B : f32 init {
+  ^bb0(%i: index):
+    %c = arith.constant 0.0 : f32
+    sim.yield %c : f32
+  }
+  sim.component @CA writes(@A) evaluate {
+  ^bb0(%i: index, %t: i64, %n: i32, %dt: f32):
+    %x = sim.read @A[%i] : f32
+    sim.yield %x : f32
+  }
+  // expected-error @+1 {{'sim.component' op attribute 'caches' failed to satisfy constraint: array of #sim.cache}}
+  sim.component @CB writes(@B) attributes {caches = [@A]} evaluate {
+  ^bb0(%i: index, %t: i64, %n: i32, %dt: f32):
+    %x = sim.read @A[%i] : f32
+    sim.yield %x : f32
+  }
+}
+
+// -----
+
+sim.simulation @s range(16) dt(1.0 : f32) max_steps(1) {
+  sim.buffer @A : f32 init {
+  ^bb0(%i: index):
+    %c = arith.constant 0.0 : f32
+    sim.yield %c : f32
+  }
+  // expected-error @+1 {{#sim.cache of @A expects a window of more than one offset (lowest below highest), but got 2, 2}}
+  sim.component @CA writes(@A) attributes {caches = [#sim.cache<@A, 2, 2>]} evaluate {
+  ^bb0(%i: index, %t: i64, %n: i32, %dt: f32):
+    %x = sim.read @A[%i] : f32
+    sim.yield %x : f32
+  }
+}

@@ -93,7 +93,7 @@ sim.simulation @s range(16) dt(1.0 : f32) max_steps(1) {
 // -----
 
 sim.simulation @s range(16) dt(1.0 : f32) max_steps(1) {
-  // expected-error @+1 {{custom op 'sim.buffer' expected an interpolation function such as #sim.linear, #sim.cubic or #sim.hermite<@derivative>, but got #sim<boundary wrap>}}
+  // expected-error @+1 {{custom op 'sim.buffer' expected an interpolation function such as #sim.linear, #sim.cubic or #sim.hermite<@derivative>, or none, but got #sim<boundary wrap>}}
   sim.buffer @B : f32 interp(#sim<boundary wrap>) init {
   ^bb0(%i: index):
     %c = arith.constant 0.0 : f32

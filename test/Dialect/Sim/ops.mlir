@@ -453,3 +453,61 @@ sim.simulation @builtin_params range(16) dt(1.0e-2 : f64) max_steps(4) {
     sim.yield %rf : f64
   }
 }
+
+// -----
+
+// A buffer whose value means nothing between step ends: interp(none), also
+// when written as the attribute #sim.none.
+// CHECK-LABEL: sim.simulation @not_interpolable
+// CHECK:         sim.buffer @P : f32 interp(none) init {
+// CHECK:         sim.buffer @Q : f32 interp(none) boundary(wrap) init {
+sim.simulation @not_interpolable range(16) dt(1.0e-2 : f32) max_steps(2) {
+  sim.buffer @P : f32 interp(none) init {
+  ^bb0(%i: index):
+    %c = arith.constant 0.0 : f32
+    sim.yield %c : f32
+  }
+  sim.buffer @Q : f32 interp(#sim.none) boundary(wrap) init {
+  ^bb0(%i: index):
+    %c = arith.constant 0.0 : f32
+    sim.yield %c : f32
+  }
+  sim.component @C writes(@P, @Q) evaluate {
+  ^bb0(%i: index, %t: i64, %n: i32, %dt: f32):
+    %p = sim.read @P[%i] : f32
+    sim.yield %p, %p : f32, f32
+  }
+}
+
+// -----
+
+// The caches of a hip-cache plan.
+// CHECK-LABEL: sim.simulation @caches
+// CHECK:         sim.component @CB writes(@B) attributes {caches = [#sim.cache<@A, -4, 4>, #sim.cache<@C, 0, 1>]} evaluate {
+sim.simulation @caches range(16) dt(1.0 : f32) max_steps(1) attributes {strategy = #sim<strategy "hip-cache">} {
+  sim.buffer @A : f32 init {
+  ^bb0(%i: index):
+    %c = arith.constant 0.0 : f32
+    sim.yield %c : f32
+  }
+  sim.buffer @B : f32 init {
+  ^bb0(%i: index):
+    %c = arith.constant 0.0 : f32
+    sim.yield %c : f32
+  }
+  sim.buffer @C : f32 init {
+  ^bb0(%i: index):
+    %c = arith.constant 0.0 : f32
+    sim.yield %c : f32
+  }
+  sim.component @CA writes(@A, @C) evaluate {
+  ^bb0(%i: index, %t: i64, %n: i32, %dt: f32):
+    %x = sim.read @A[%i] : f32
+    sim.yield %x, %x : f32, f32
+  }
+  sim.component @CB writes(@B) attributes {caches = [#sim.cache<@A, -4, 4>, #sim.cache<@C, 0, 1>]} evaluate {
+  ^bb0(%i: index, %t: i64, %n: i32, %dt: f32):
+    %x = sim.read @A[%i] : f32
+    sim.yield %x : f32
+  }
+}

@@ -97,6 +97,37 @@ struct WeightBuilder {
 } // namespace
 
 //===----------------------------------------------------------------------===//
+// CacheAttr
+//===----------------------------------------------------------------------===//
+
+LogicalResult CacheAttr::verify(function_ref<InFlightDiagnostic()> emitError,
+                                FlatSymbolRefAttr buffer, int64_t minOffset,
+                                int64_t maxOffset) {
+  if (minOffset >= maxOffset)
+    return emitError() << "#sim.cache of " << buffer
+                       << " expects a window of more than one offset "
+                          "(lowest below highest), but got "
+                       << minOffset << ", " << maxOffset;
+  return success();
+}
+
+//===----------------------------------------------------------------------===//
+// NoneInterpAttr
+//===----------------------------------------------------------------------===//
+
+unsigned NoneInterpAttr::getOrderOfAccuracy() const { return 0; }
+
+bool NoneInterpAttr::isInterpolable() const { return false; }
+
+Value NoneInterpAttr::buildInterpolation(OpBuilder &builder, Location loc,
+                                         ValueRange atBegin, ValueRange atEnd,
+                                         Value fraction, Value span) const {
+  // Callers check isInterpolable() first (--sim-plan-memory rejects the
+  // reads that would need this).
+  return nullptr;
+}
+
+//===----------------------------------------------------------------------===//
 // LinearInterpAttr
 //===----------------------------------------------------------------------===//
 

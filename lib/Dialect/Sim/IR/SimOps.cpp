@@ -163,14 +163,19 @@ static void printOptionalReadRole(OpAsmPrinter &printer, Operation *,
 }
 
 /// An optional `interp(<attribute>)` clause; the attribute must implement
-/// InterpolationAttrInterface.
+/// InterpolationAttrInterface. `interp(none)` is #sim.none.
 static ParseResult parseInterpClause(OpAsmParser &parser,
                                      InterpolationAttrInterface &interp) {
   if (failed(parser.parseOptionalKeyword("interp")))
     return success();
-  Attribute attr;
   if (parser.parseLParen())
     return failure();
+  if (succeeded(parser.parseOptionalKeyword("none"))) {
+    interp = cast<InterpolationAttrInterface>(
+        NoneInterpAttr::get(parser.getContext()));
+    return parser.parseRParen();
+  }
+  Attribute attr;
   SMLoc loc = parser.getCurrentLocation();
   if (parser.parseAttribute(attr))
     return failure();
@@ -178,14 +183,18 @@ static ParseResult parseInterpClause(OpAsmParser &parser,
   if (!interp)
     return parser.emitError(loc)
            << "expected an interpolation function such as #sim.linear, "
-              "#sim.cubic or #sim.hermite<@derivative>, but got "
+              "#sim.cubic or #sim.hermite<@derivative>, or none, but got "
            << attr;
   return parser.parseRParen();
 }
 
 static void printInterpClause(OpAsmPrinter &printer, Operation *,
                               InterpolationAttrInterface interp) {
-  if (interp)
+  if (!interp)
+    return;
+  if (isa<NoneInterpAttr>(interp))
+    printer << " interp(none)";
+  else
     printer << " interp(" << Attribute(interp) << ")";
 }
 
@@ -617,6 +626,9 @@ LogicalResult ComponentOp::verify() {
                             "written buffer ("
                          << writes.size() << "), but it yields "
                          << yield.getValues().size();
+  if (getCachesAttr() && simulation.getStrategy() != Strategy::hip_cache)
+    return emitOpError() << "has shared-memory caches, but the simulation's "
+                            "memory plan is not for the hip-cache strategy";
   return success();
 }
 
@@ -636,6 +648,25 @@ ComponentOp::verifySymbolUses(SymbolTableCollection &symbolTable) {
                            << " of evaluate), but the buffer's element type "
                               "is "
                            << buffer.getElementType();
+  }
+  if (ArrayAttr caches = getCachesAttr()) {
+    llvm::SmallDenseSet<Attribute> seen;
+    for (auto cache : caches.getAsRange<CacheAttr>()) {
+      FlatSymbolRefAttr name = cache.getBuffer();
+      if (!lookupBuffer(symbolTable, *this, name))
+        return emitOpError() << "caches " << name
+                             << ", which is not a sim.buffer of this "
+                                "simulation";
+      if (writesBuffer(name))
+        return emitOpError() << "caches " << name
+                             << ", which it writes; a cache holds "
+                                "interpolated values of another "
+                                "component's buffer";
+      if (!seen.insert(name).second)
+        return emitOpError() << "caches " << name
+                             << " twice; one cache covers all window reads "
+                                "of a buffer";
+    }
   }
   return success();
 }

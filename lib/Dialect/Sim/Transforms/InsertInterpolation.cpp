@@ -218,6 +218,10 @@ struct InsertInterpolationPass
       return load(buffer, kind == BodyKind::Evaluate ? Version::target
                                                      : Version::source);
 
+    // --sim-plan-memory rejects these reads; a hand-written plan may not.
+    if (failed(checkInterpolable(read, buffer, component, kind,
+                                 simulation.getStrategy().value())))
+      return failure();
     InterpolationAttrInterface interp = buffer.getInterpolation();
     SmallVector<BufferOp> inputs = {buffer};
     for (FlatSymbolRefAttr aux : interp.getAuxiliaryBuffers()) {

@@ -17,6 +17,7 @@
 #include "sim/Dialect/Sim/IR/SimOps.h"
 #include "sim/Dialect/Sim/Transforms/Passes.h"
 
+#include "llvm/ADT/MapVector.h"
 #include "llvm/ADT/SetVector.h"
 
 namespace mlir::sim {
@@ -50,6 +51,12 @@ struct PlanMemoryPass : public sim::impl::SimPlanMemoryBase<PlanMemoryPass> {
     if (failed(checkBeforeInterpolation(simulation, getArgument(),
                                         "its memory plan is")))
       return signalPassFailure();
+    if (groupSize < 1) {
+      simulation.emitError()
+          << "--sim-plan-memory needs a positive group-size, but got "
+          << static_cast<int64_t>(groupSize);
+      return signalPassFailure();
+    }
     auto &analysis = getAnalysis<DependencyAnalysis>();
     if (failed(checkPrerequisites(analysis)))
       return signalPassFailure();
@@ -68,7 +75,6 @@ struct PlanMemoryPass : public sim::impl::SimPlanMemoryBase<PlanMemoryPass> {
       if (!isSubStepping(strategy))
         continue;
 
-      SmallVector<Attribute> caches;
       for (const BufferAccess &access : analysis.getAccesses(component)) {
         if (access.reads.front().getRole() != ReadRole::interpolate)
           continue;
@@ -82,22 +88,50 @@ struct PlanMemoryPass : public sim::impl::SimPlanMemoryBase<PlanMemoryPass> {
         for (BufferOp buffer : atBegin)
           if (pingPongs(analysis.getWriter(buffer), strategy))
             snapshots.insert(buffer);
-        // hip-cache caches interpolated values that neighbouring threads of a
-        // group share: window reads. A value read only at the own item has
-        // no reuse (the fraction changes every sub-step), and a gather has
-        // no locality.
-        if (strategy == Strategy::hip_cache &&
-            access.pattern.getKind() == AccessPattern::Kind::Window &&
-            !llvm::is_contained(caches, access.buffer.getSymNameAttr()))
-          caches.push_back(
-              FlatSymbolRefAttr::get(access.buffer.getSymNameAttr()));
       }
-      if (!caches.empty())
-        component.setCachesAttr(ArrayAttr::get(context, caches));
+      if (strategy == Strategy::hip_cache)
+        planCaches(analysis, component);
     }
     for (Operation *buffer : snapshots)
       cast<BufferOp>(buffer).setSnapshot(true);
     markAnalysesPreserved<DependencyAnalysis>();
+  }
+
+  /// hip-cache keeps, per thread group, the interpolated values that
+  /// neighbouring threads share: the window `[lo, hi]` around the group's
+  /// items over every interpolated window read of a buffer (own-item reads
+  /// count as offset 0; a gather has no locality and is not counted). A
+  /// cache is planned only where it can be hit: with at least two items,
+  /// a window of more than one offset (otherwise no thread reads another
+  /// thread's value), and a halo smaller than the group.
+  void planCaches(const DependencyAnalysis &analysis, ComponentOp component) {
+    SimulationOp simulation = analysis.getSimulation();
+    if (simulation.getRangeAttr().getInt() < 2)
+      return;
+    llvm::MapVector<Operation *, std::pair<int64_t, int64_t>> windows;
+    for (const BufferAccess &access : analysis.getAccesses(component)) {
+      for (ReadOp read : access.reads) {
+        AccessPattern pattern = analysis.getPattern(read);
+        if (read.getRole() != ReadRole::interpolate || pattern.isGather())
+          continue;
+        auto [it, inserted] = windows.try_emplace(
+            access.buffer, pattern.getMinOffset(), pattern.getMaxOffset());
+        if (!inserted)
+          it->second = {std::min(it->second.first, pattern.getMinOffset()),
+                        std::max(it->second.second, pattern.getMaxOffset())};
+      }
+    }
+    SmallVector<Attribute> caches;
+    for (auto [buffer, window] : windows) {
+      auto [lo, hi] = window;
+      if (hi > lo && hi - lo < groupSize)
+        caches.push_back(CacheAttr::get(
+            &getContext(),
+            FlatSymbolRefAttr::get(cast<BufferOp>(buffer).getSymNameAttr()), lo,
+            hi));
+    }
+    if (!caches.empty())
+      component.setCachesAttr(ArrayAttr::get(&getContext(), caches));
   }
 
   /// The plan relies on read roles and sub-stepping verdicts; without them it
@@ -109,11 +143,16 @@ struct PlanMemoryPass : public sim::impl::SimPlanMemoryBase<PlanMemoryPass> {
                << "has no sub-stepping verdict; run --sim-substep-legality "
                   "before --sim-plan-memory";
       for (const BufferAccess &access : analysis.getAccesses(component)) {
-        for (ReadOp read : access.reads)
+        for (ReadOp read : access.reads) {
           if (!read.getRoleAttr())
             return read.emitOpError()
                    << "has no read role; run --sim-schedule before "
                       "--sim-plan-memory";
+          if (read.getRole() == ReadRole::interpolate &&
+              failed(checkInterpolable(read, access.buffer, component,
+                                       access.body, strategy)))
+            return failure();
+        }
       }
     }
     return success();

@@ -11,6 +11,7 @@
 #include "sim/Dialect/Sim/IR/SimOps.h"
 #include "sim/Dialect/Sim/Transforms/Passes.h"
 
+#include "llvm/Support/CheckedArithmetic.h"
 #include "llvm/Support/Format.h"
 #include "llvm/Support/JSON.h"
 #include "llvm/Support/raw_ostream.h"
@@ -27,7 +28,7 @@ namespace {
 
 struct BufferRow {
   std::string name, type;
-  int64_t elementBytes, halvesBytes, snapshotBytes;
+  int64_t elementBytes, halvesBytes, snapshotBytes, totalBytes;
 };
 
 struct CacheRow {
@@ -41,19 +42,12 @@ struct MemoryReport {
   int64_t range = 0;
   SmallVector<BufferRow> buffers;
   SmallVector<CacheRow> caches;
+  /// Device bytes of the plan and of the naive plan (3 copies of each
+  /// buffer); planned <= naive, so the difference cannot overflow.
+  int64_t plannedBytes = 0, naiveBytes = 0;
 
-  int64_t planned() const {
-    int64_t total = 0;
-    for (const BufferRow &row : buffers)
-      total += row.halvesBytes + row.snapshotBytes;
-    return total;
-  }
-  int64_t naive() const {
-    int64_t total = 0;
-    for (const BufferRow &row : buffers)
-      total += 3 * range * row.elementBytes;
-    return total;
-  }
+  int64_t planned() const { return plannedBytes; }
+  int64_t naive() const { return naiveBytes; }
   int64_t largestCache() const {
     int64_t largest = 0;
     for (const CacheRow &row : caches)
@@ -84,8 +78,7 @@ void printText(const MemoryReport &report, int64_t groupSize,
     os << llvm::format("  %-12s %-16s %10lld %14lld %14lld %14lld\n",
                        ("@" + row.name).c_str(), row.type.c_str(),
                        (long long)row.elementBytes, (long long)row.halvesBytes,
-                       (long long)row.snapshotBytes,
-                       (long long)(row.halvesBytes + row.snapshotBytes));
+                       (long long)row.snapshotBytes, (long long)row.totalBytes);
   int64_t planned = report.planned(), naive = report.naive();
   os << llvm::format("  %-40s %14lld (%s)\n", "planned device memory",
                      (long long)planned, formatBytes(planned).c_str());
@@ -131,6 +124,44 @@ llvm::json::Value toJson(const MemoryReport &report, int64_t groupSize) {
       {"largest_cache_bytes_per_group", report.largestCache()}};
 }
 
+/// Byte counts of one simulation, in checked arithmetic: a scene whose
+/// memory does not fit in int64_t (a range near 2^63) gets an error that
+/// names the quantity, never a wrapped, negative count.
+class ByteCounter {
+public:
+  explicit ByteCounter(SimulationOp simulation) : simulation(simulation) {}
+
+  /// The product of `factors`, or an error naming `what`.
+  FailureOr<int64_t> product(ArrayRef<int64_t> factors, const Twine &what) {
+    int64_t result = 1;
+    for (int64_t factor : factors) {
+      std::optional<int64_t> next = llvm::checkedMul(result, factor);
+      if (!next)
+        return overflow(what);
+      result = *next;
+    }
+    return result;
+  }
+
+  /// `total += value`, or an error naming `what`.
+  LogicalResult add(int64_t &total, int64_t value, const Twine &what) {
+    std::optional<int64_t> sum = llvm::checkedAdd(total, value);
+    if (!sum)
+      return overflow(what);
+    total = *sum;
+    return success();
+  }
+
+private:
+  LogicalResult overflow(const Twine &what) {
+    return simulation.emitOpError()
+           << "needs more than " << std::numeric_limits<int64_t>::max()
+           << " bytes for " << what << "; the memory report cannot count them";
+  }
+
+  SimulationOp simulation;
+};
+
 struct ReportMemoryPass
     : public sim::impl::SimReportMemoryBase<ReportMemoryPass> {
   using SimReportMemoryBase::SimReportMemoryBase;
@@ -173,15 +204,36 @@ struct ReportMemoryPass
     report.simulation = simulation.getSymName().str();
     report.strategy = stringifyStrategy(strategy.getValue()).str();
     report.range = simulation.getRange();
+    ByteCounter counter(simulation);
     llvm::DenseMap<StringAttr, int64_t> elementBytes;
     for (BufferOp buffer : simulation.getBuffers()) {
       BufferRow row;
       row.name = buffer.getSymName().str();
       llvm::raw_string_ostream(row.type) << buffer.getElementType();
       row.elementBytes = buffer.getElementBytes();
-      row.halvesBytes = 2 * report.range * row.elementBytes;
-      row.snapshotBytes =
-          buffer.getSnapshot() ? report.range * row.elementBytes : 0;
+      std::string items = std::to_string(report.range) + " items x " +
+                          std::to_string(row.elementBytes) + " bytes";
+      FailureOr<int64_t> halves = counter.product(
+          {2, report.range, row.elementBytes},
+          "the two halves of @" + row.name + " (2 x " + items + ")");
+      if (failed(halves))
+        return failure();
+      FailureOr<int64_t> copies =
+          counter.product({3, report.range, row.elementBytes},
+                          "the naive plan's three copies of @" + row.name +
+                              " (3 x " + items + ")");
+      if (failed(copies))
+        return failure();
+      row.halvesBytes = *halves;
+      // A snapshot is one copy: it fits when the two halves do, and the
+      // total when the naive plan's three copies do.
+      row.snapshotBytes = buffer.getSnapshot() ? *halves / 2 : 0;
+      row.totalBytes = row.halvesBytes + row.snapshotBytes;
+      if (failed(counter.add(report.plannedBytes, row.totalBytes,
+                             "the planned device memory")) ||
+          failed(counter.add(report.naiveBytes, *copies,
+                             "the naive plan (3 copies of every buffer)")))
+        return failure();
       elementBytes[buffer.getSymNameAttr()] = row.elementBytes;
       report.buffers.push_back(row);
     }
@@ -189,9 +241,20 @@ struct ReportMemoryPass
       ArrayAttr caches = component.getCachesAttr();
       if (!caches)
         continue;
+      // One element per thread of the group plus the window's halo.
+      std::string what = "the shared-memory caches of @" +
+                         component.getSymName().str() + " (group-size " +
+                         std::to_string(groupSize) + ")";
       int64_t bytes = 0;
-      for (auto name : caches.getAsRange<FlatSymbolRefAttr>())
-        bytes += groupSize * elementBytes.lookup(name.getAttr());
+      for (auto cache : caches.getAsRange<CacheAttr>()) {
+        int64_t elements = groupSize;
+        if (failed(counter.add(elements, cache.getHalo(), what)))
+          return failure();
+        FailureOr<int64_t> cacheBytes = counter.product(
+            {elements, elementBytes.lookup(cache.getBuffer().getAttr())}, what);
+        if (failed(cacheBytes) || failed(counter.add(bytes, *cacheBytes, what)))
+          return failure();
+      }
       report.caches.push_back({component.getSymName().str(), bytes});
     }
     return report;

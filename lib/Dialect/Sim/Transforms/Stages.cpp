@@ -1,5 +1,7 @@
 //===- Stages.cpp - what the front-end stages may run on ------------------===//
 //
+// Checks that more than one front-end pass makes, with one message each.
+//
 // Each front-end pass records decisions that later passes and the lowerings
 // trust. Once --sim-insert-interpolation has turned view reads into explicit
 // loads, the analyses no longer see the reads those decisions were made
@@ -26,5 +28,27 @@ LogicalResult mlir::sim::checkBeforeInterpolation(SimulationOp simulation,
                             << " before --sim-insert-interpolation";
   diag.attachNote(access->getLoc())
       << "the first explicit access is this '" << access->getName() << "'";
+  return diag;
+}
+
+LogicalResult mlir::sim::checkInterpolable(ReadOp read, BufferOp buffer,
+                                           ComponentOp component, BodyKind kind,
+                                           Strategy strategy) {
+  if (buffer.getInterpolation().isInterpolable() ||
+      (strategy != Strategy::hip && strategy != Strategy::hip_cache))
+    return success();
+  InFlightDiagnostic diag =
+      read.emitOpError()
+      << "reads @" << buffer.getSymName()
+      << " at an intermediate time of the big step (@" << component.getSymName()
+      << "'s " << stringifyBodyKind(kind)
+      << " interpolates buffers advanced earlier in the step under "
+      << stringifyStrategy(strategy) << "), but @" << buffer.getSymName()
+      << " is declared interp(none)";
+  diag.attachNote(buffer.getLoc())
+      << "@" << buffer.getSymName()
+      << " is declared interp(none) here: its value means nothing between "
+         "the ends of a big step; read it through the back edge, or use "
+         "strategy simple or traditional";
   return diag;
 }

@@ -81,3 +81,35 @@ sim.simulation @derivative_too_late range(16) dt(1.0e-2 : f32) max_steps(2) attr
   sim.schedule [@Writer, @Reader]
   sim.observe [@V]
 }
+
+// -----
+
+// A hand-written plan that --sim-plan-memory would have rejected: the read
+// of an interp(none) buffer needs an intermediate value under hip.
+
+sim.simulation @not_interpolable range(16) dt(1.0e-2 : f32) max_steps(2) attributes {strategy = #sim<strategy hip>} {
+  // expected-note @+1 {{@P is declared interp(none) here}}
+  sim.buffer @P : f32 interp(none) init {
+  ^bb0(%i: index):
+    %c = arith.constant 0.0 : f32
+    sim.yield %c : f32
+  }
+  sim.buffer @X : f32 init {
+  ^bb0(%i: index):
+    %c = arith.constant 0.0 : f32
+    sim.yield %c : f32
+  }
+  sim.component @Kick writes(@P) evaluate {
+  ^bb0(%i: index, %t: i64, %n: i32, %dt: f32):
+    %p = sim.read @P[%i] own : f32
+    sim.yield %p : f32
+  }
+  sim.component @Drift writes(@X) evaluate {
+  ^bb0(%i: index, %t: i64, %n: i32, %dt: f32):
+    // expected-error @+1 {{'sim.read' op reads @P at an intermediate time of the big step (@Drift's evaluate interpolates buffers advanced earlier in the step under hip), but @P is declared interp(none)}}
+    %p = sim.read @P[%i] interpolate : f32
+    sim.yield %p : f32
+  }
+  sim.schedule [@Kick, @Drift]
+  sim.observe [@X]
+}

@@ -1,4 +1,7 @@
 // RUN: sim-opt %s --split-input-file --sim-plan-memory --verify-diagnostics
+// RUN: not sim-opt %s --split-input-file --sim-plan-memory=group-size=0 -o /dev/null 2>&1 | FileCheck %s --check-prefix=GROUP
+
+// GROUP: error: --sim-plan-memory needs a positive group-size, but got 0
 
 sim.simulation @no_verdict range(16) dt(1.0e-2 : f32) max_steps(2) {
   sim.buffer @X : f32 init {

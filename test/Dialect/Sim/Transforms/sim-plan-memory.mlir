@@ -1,6 +1,7 @@
 // RUN: sim-opt %s --split-input-file --sim-schedule --sim-substep-legality --sim-plan-memory | FileCheck %s --check-prefixes=CHECK,HIP
 // RUN: sim-opt %s --split-input-file --sim-schedule --sim-substep-legality --sim-plan-memory=strategy=simple | FileCheck %s --check-prefixes=CHECK,SIMPLE
 // RUN: sim-opt %s --split-input-file --sim-schedule --sim-substep-legality --sim-plan-memory=strategy=hip-cache | FileCheck %s --check-prefixes=CHECK,CACHE
+// RUN: sim-opt %s --split-input-file --sim-schedule --sim-substep-legality --sim-plan-memory="strategy=hip-cache group-size=16" | FileCheck %s --check-prefixes=CHECK,CACHE16
 
 // Every writer sub-steps in one kernel: its source half keeps the value at T,
 // so nothing is snapshotted and no parity copy is needed, in any strategy.
@@ -9,12 +10,14 @@
 // HIP-SAME: attributes {strategy = #sim<strategy hip>}
 // SIMPLE-SAME: attributes {strategy = #sim<strategy simple>}
 // CACHE-SAME: attributes {strategy = #sim<strategy "hip-cache">}
+// CACHE16-SAME: attributes {strategy = #sim<strategy "hip-cache">}
 // CHECK-NOT: snapshot
 // CHECK: sim.component @Source writes(@S, @G) attributes {parity = #sim<parity none>
 // HIP: sim.component @Reader writes(@R) attributes {parity = #sim<parity none>, sub_stepping
 // SIMPLE: sim.component @Reader writes(@R) attributes {parity = #sim<parity none>, sub_stepping
-// @S, read at i..i+1 (a window), is cached; the gather of @G is not.
-// CACHE: sim.component @Reader writes(@R) attributes {caches = [@S], parity = #sim<parity none>
+// @S, read at i and i+1 (a window i..i+1), is cached; the gather of @G is
+// not.
+// CACHE: sim.component @Reader writes(@R) attributes {caches = [#sim.cache<@S, 0, 1>], parity = #sim<parity none>
 // CHECK-NOT: snapshot
 sim.simulation @no_snapshot range(1024) dt(1.0e-2 : f32) max_steps(4) {
   sim.buffer @S : f32 init {
@@ -150,4 +153,125 @@ sim.simulation @grid_sync_one_evaluation range(1024) dt(1.0e-2 : f32) max_steps(
     sim.yield %u : f32
   }
   sim.observe [@W]
+}
+
+// -----
+
+// Caches only where they can be hit. @Reader interpolates:
+// - @One at i+2 only: one offset, so no thread reads another's value;
+// - @Small at i-1..i+1 (a loop) and at i: cached as the window -1..1;
+// - @Wide at i-8..i+8: a halo of 16, cached with 256 threads per group but
+//   not with 16;
+// - @Mixed at i..i+1 and through a gather: the window is cached, the gather
+//   reads global memory.
+// Nothing is cached under hip.
+
+// CHECK-LABEL: sim.simulation @cache_conditions
+// CACHE: sim.component @Reader writes(@R) attributes {caches = [#sim.cache<@Small, -1, 1>, #sim.cache<@Wide, -8, 8>, #sim.cache<@Mixed, 0, 1>], parity
+// CACHE16: sim.component @Reader writes(@R) attributes {caches = [#sim.cache<@Small, -1, 1>, #sim.cache<@Mixed, 0, 1>], parity
+// HIP: sim.component @Reader writes(@R) attributes {parity
+sim.simulation @cache_conditions range(1024) dt(1.0e-2 : f32) max_steps(4) {
+  sim.buffer @One : f32 init {
+  ^bb0(%i: index):
+    %c = arith.constant 0.0 : f32
+    sim.yield %c : f32
+  }
+  sim.buffer @Small : f32 init {
+  ^bb0(%i: index):
+    %c = arith.constant 0.0 : f32
+    sim.yield %c : f32
+  }
+  sim.buffer @Wide : f32 init {
+  ^bb0(%i: index):
+    %c = arith.constant 0.0 : f32
+    sim.yield %c : f32
+  }
+  sim.buffer @Mixed : f32 init {
+  ^bb0(%i: index):
+    %c = arith.constant 0.0 : f32
+    sim.yield %c : f32
+  }
+  sim.buffer @R : f32 init {
+  ^bb0(%i: index):
+    %c = arith.constant 0.0 : f32
+    sim.yield %c : f32
+  }
+  sim.component @Source writes(@One, @Small, @Wide, @Mixed) evaluate {
+  ^bb0(%i: index, %t: i64, %n: i32, %dt: f32):
+    %c = arith.constant 0.0 : f32
+    sim.yield %c, %c, %c, %c : f32, f32, f32, f32
+  }
+  sim.component @Reader writes(@R) evaluate {
+  ^bb0(%i: index, %t: i64, %n: i32, %dt: f32):
+    %c1 = arith.constant 1 : index
+    %c2 = arith.constant 2 : index
+    %i2 = arith.addi %i, %c2 : index
+    %one = sim.read @One[%i2] : f32
+    %lo = arith.constant -1 : index
+    %zero = arith.constant 0.0 : f32
+    %small = scf.for %k = %lo to %c2 step %c1 iter_args(%acc = %zero) -> f32 {
+      %j = arith.addi %i, %k : index
+      %v = sim.read @Small[%j] : f32
+      %s = arith.addf %acc, %v : f32
+      scf.yield %s : f32
+    }
+    %own = sim.read @Small[%i] : f32
+    %m8 = arith.constant -8 : index
+    %c9 = arith.constant 9 : index
+    %wide = scf.for %k = %m8 to %c9 step %c1 iter_args(%acc = %zero) -> f32 {
+      %j = arith.addi %i, %k : index
+      %v = sim.read @Wide[%j] : f32
+      %s = arith.addf %acc, %v : f32
+      scf.yield %s : f32
+    }
+    %i1 = arith.addi %i, %c1 : index
+    %m0 = sim.read @Mixed[%i] : f32
+    %m1 = sim.read @Mixed[%i1] : f32
+    %c3 = arith.constant 3 : index
+    %g = arith.muli %i, %c3 : index
+    %mg = sim.read @Mixed[%g] : f32
+    %a = arith.addf %one, %small : f32
+    %b = arith.addf %a, %own : f32
+    %c = arith.addf %b, %wide : f32
+    %d = arith.addf %c, %m0 : f32
+    %e = arith.addf %d, %m1 : f32
+    %f = arith.addf %e, %mg : f32
+    sim.yield %f : f32
+  }
+  sim.observe [@R]
+}
+
+// -----
+
+// With a single item no thread of a group reads another's value: no cache.
+
+// CHECK-LABEL: sim.simulation @one_item
+// CACHE: sim.component @Reader writes(@R) attributes {parity
+// CACHE16: sim.component @Reader writes(@R) attributes {parity
+sim.simulation @one_item range(1) dt(1.0e-2 : f32) max_steps(4) {
+  sim.buffer @S : f32 init {
+  ^bb0(%i: index):
+    %c = arith.constant 0.0 : f32
+    sim.yield %c : f32
+  }
+  sim.buffer @R : f32 init {
+  ^bb0(%i: index):
+    %c = arith.constant 0.0 : f32
+    sim.yield %c : f32
+  }
+  sim.component @Source writes(@S) evaluate {
+  ^bb0(%i: index, %t: i64, %n: i32, %dt: f32):
+    %s = sim.read @S[%i] : f32
+    sim.yield %s : f32
+  }
+  sim.component @Reader writes(@R) evaluate {
+  ^bb0(%i: index, %t: i64, %n: i32, %dt: f32):
+    %c1 = arith.constant 1 : index
+    %j = arith.addi %i, %c1 : index
+    %a = sim.read @S[%i] : f32
+    %b = sim.read @S[%j] : f32
+    %r = arith.addf %a, %b : f32
+    sim.yield %r : f32
+  }
+  sim.observe [@R]
 }

@@ -16,15 +16,15 @@
 // HIP-NEXT:  shared-memory caches: none
 
 // Under hip-cache @Sample caches @U, which it reads at i..i+1: 128 threads
-// * 8 bytes.
+// plus a halo of 1, * 8 bytes.
 // JSON:      "caches": [
 // JSON-NEXT:   {
-// JSON-NEXT:     "bytes_per_group": 1024,
+// JSON-NEXT:     "bytes_per_group": 1032,
 // JSON-NEXT:     "component": "Sample"
 // JSON-NEXT:   }
 // JSON-NEXT: ],
 // JSON-NEXT: "group_size": 128,
-// JSON-NEXT: "largest_cache_bytes_per_group": 1024,
+// JSON-NEXT: "largest_cache_bytes_per_group": 1032,
 // JSON-NEXT: "naive_bytes": 9600,
 // JSON-NEXT: "planned_bytes": 8000,
 // JSON-NEXT: "range": 100,

@@ -178,4 +178,62 @@ def Sim_HermiteInterpAttr : Sim_Attr<"HermiteInterp", "hermite", [
   let assemblyFormat = "`<` $derivative `>`";
 }
 
+def Sim_NoneInterpAttr : Sim_Attr<"NoneInterp", "none", [
+    DeclareAttrInterfaceMethods<Sim_InterpolationAttrInterface,
+                                ["isInterpolable"]>]> {
+  let summary = "no interpolation: the value means nothing between step ends";
+  let description = [{
+    Declares that a buffer's value is meaningful only at the ends of a big
+    step, such as a momentum at half steps of a leapfrog integrator. Written
+    `interp(none)` in a buffer (the printer always uses that form). Reading
+    it through the back edge (at `T`), as the own state, or under `simple`
+    and `traditional` is fine; under `hip` and `hip-cache` a read that would
+    need an intermediate value (an `interpolate` read in `evaluate` or
+    `num_steps`) is an error of `--sim-plan-memory`. It may still be the
+    derivative buffer of a `#sim.hermite` interpolation, which reads it only
+    at both ends.
+
+    ```mlir
+    sim.buffer @P : f32 interp(none) init { ... }
+    ```
+  }];
+}
+
+//===----------------------------------------------------------------------===//
+// Memory plan
+//===----------------------------------------------------------------------===//
+
+def Sim_CacheAttr : Sim_Attr<"Cache", "cache"> {
+  let summary = "a shared-memory cache of a window of interpolated values";
+  let description = [{
+    Recorded by `--sim-plan-memory` under `hip-cache` in a component's
+    `caches`: the component reads buffer `buffer`, interpolated, at the
+    items `i + minOffset` to `i + maxOffset` (the window over all of its
+    window reads of that buffer in `num_steps` and `evaluate`; own-item
+    reads count as offset 0). A thread group of `G` threads shares the
+    interpolated values of the items `[first + minOffset, last + maxOffset]`
+    around its own items: `G + maxOffset - minOffset` elements of shared
+    memory. A read outside the cached items falls back to global memory.
+
+    The plan records a cache only where it can be hit: the range has at
+    least 2 items, the window has more than one offset
+    (`minOffset < maxOffset`, which the attribute requires) and its halo
+    fits the group (`maxOffset - minOffset < group-size`).
+
+    ```mlir
+    sim.component @C1 writes(@B1) attributes {caches = [#sim.cache<@B0, -4, 4>]} ...
+    ```
+  }];
+  let parameters = (ins "::mlir::FlatSymbolRefAttr":$buffer,
+                        "int64_t":$minOffset, "int64_t":$maxOffset);
+  let assemblyFormat = "`<` $buffer `,` $minOffset `,` $maxOffset `>`";
+  let genVerifyDecl = 1;
+  let extraClassDeclaration = [{
+    /// The number of items the window spans around one item, less one:
+    /// `maxOffset - minOffset`, the halo a group caches besides its own
+    /// items.
+    int64_t getHalo() const { return getMaxOffset() - getMinOffset(); }
+  }];
+}
+
 #endif // SIM_DIALECT_SIM_IR_SIMATTRS_TD

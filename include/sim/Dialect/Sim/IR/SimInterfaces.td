@@ -32,6 +32,13 @@ def Sim_InterpolationAttrInterface
       }],
       "unsigned", "getOrderOfAccuracy">,
     InterfaceMethod<[{
+        Returns false when the buffer has no meaningful value between the
+        ends of a big step (`#sim.none`, written `interp(none)`): no reader
+        may need it at an intermediate time, and buildInterpolation must not
+        be called.
+      }],
+      "bool", "isInterpolable", (ins), [{}], [{ return true; }]>,
+    InterfaceMethod<[{
         Returns the buffers, besides the interpolated one, whose values at both
         ends of the big step the interpolation reads (for example a time
         derivative). They must have the interpolated buffer's element type.

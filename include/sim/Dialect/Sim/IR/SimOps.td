@@ -193,7 +193,8 @@ def Sim_BufferOp : Sim_Op<"buffer", [
     one component.
 
     - `interp(...)`: how a later component reconstructs the buffer at an
-      intermediate time (default `#sim.linear`).
+      intermediate time (default `#sim.linear`), or `interp(none)` when its
+      value means nothing between the ends of a big step (see `#sim.none`).
     - `boundary(...)`: what reads outside `[0, range)` return (default
       `clamp`).
     - `init`: the initial state of item `%i` at time 0. Reads in it see the
@@ -282,9 +283,9 @@ def Sim_ComponentOp : Sim_Op<"component", [
 
     Both bodies read state only through `sim.read`. The analyses record
     their verdicts as attributes: `sub_stepping` (`--sim-substep-legality`),
-    `parity` and, under `hip-cache`, `caches` (the buffers whose interpolated
-    values the component caches in shared memory), both by
-    `--sim-plan-memory`.
+    `parity` and, under `hip-cache`, `caches` (a `#sim.cache<@B, lo, hi>`
+    for each buffer whose interpolated values in the window `i+lo..i+hi`
+    the component caches in shared memory), both by `--sim-plan-memory`.
 
     ```mlir
     sim.component @Integrate writes(@X, @V) num_steps {
@@ -305,7 +306,8 @@ def Sim_ComponentOp : Sim_Op<"component", [
                        FlatSymbolRefArrayAttr:$writes,
                        OptionalAttr<Sim_SubSteppingAttr>:$sub_stepping,
                        OptionalAttr<Sim_ParityAttr>:$parity,
-                       OptionalAttr<FlatSymbolRefArrayAttr>:$caches);
+                       OptionalAttr<TypedArrayAttrBase<Sim_CacheAttr,
+                           "array of #sim.cache">>:$caches);
   let regions = (region MaxSizedRegion<1>:$num_steps, SizedRegion<1>:$evaluate);
   let assemblyFormat = [{
     $sym_name `writes` `` custom<SymbolList>($writes) attr-dict-with-keyword

@@ -44,6 +44,14 @@ LogicalResult checkBeforeInterpolation(SimulationOp simulation,
                                        StringRef passArgument,
                                        StringRef decisions);
 
+/// Fails with an error at `read` (an `interpolate` read in `component`'s
+/// body of `kind`) when its buffer is declared interp(none) and `strategy`
+/// sub-steps (hip, hip-cache): the read would need a value at an
+/// intermediate time of the big step, which such a buffer does not have.
+LogicalResult checkInterpolable(ReadOp read, BufferOp buffer,
+                                ComponentOp component, BodyKind kind,
+                                Strategy strategy);
+
 #define GEN_PASS_DECL
 #include "sim/Dialect/Sim/Transforms/Passes.h.inc"
 

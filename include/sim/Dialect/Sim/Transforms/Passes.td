@@ -148,8 +148,18 @@ def SimPlanMemory : Pass<"sim-plan-memory", "::mlir::sim::SimulationOp"> {
     `num_steps` ping-pongs through memory: it gets `copy_if_even`, and its
     buffers get a snapshot when a later component interpolates them (or
     needs them as an interpolation's auxiliary buffer).
-    Under `hip-cache`, `caches` lists the buffers a component interpolates
-    through a window (neighbouring threads share those values).
+    Under `hip-cache`, `caches` records a `#sim.cache<@B, lo, hi>` for each
+    buffer a component interpolates through a window: neighbouring threads
+    of a group share those values. `lo` and `hi` are the lowest and highest
+    offset over all of the component's interpolated window reads of the
+    buffer (own-item reads count as offset 0, gathers not at all). A cache
+    is planned only where it can be hit: the range has at least 2 items,
+    the window has more than one offset (`hi > lo`) and its halo fits the
+    thread group (`hi - lo < group-size`).
+
+    Under `hip` and `hip-cache` an `interpolate` read (in `evaluate` or
+    `num_steps`) of a buffer declared `interp(none)` is an error: it would
+    need the buffer at an intermediate time of the big step.
 
     Needs the roles of `--sim-schedule` and the verdicts of
     `--sim-substep-legality`.
@@ -158,6 +168,9 @@ def SimPlanMemory : Pass<"sim-plan-memory", "::mlir::sim::SimulationOp"> {
     Option<"strategy", "strategy", "::mlir::sim::Strategy",
            "::mlir::sim::Strategy::hip", "The strategy to plan for",
            "::mlir::sim::getStrategyOptionValues()">,
+    Option<"groupSize", "group-size", "int64_t", "256",
+           "Threads per group: hip-cache plans a cache only for a window "
+           "whose halo is smaller">,
   ];
 }
 
@@ -201,12 +214,14 @@ def SimReportMemory : Pass<"sim-report-memory"> {
     triple-buffers every buffer (source, target and a snapshot of each), so
     that "model only what a scene needs" is a number. The IR is not changed.
     With `format=json` the same numbers are printed as JSON for benchmark
-    scripts.
+    scripts. Counts are exact 64-bit integers: a plan that needs more than
+    2^63 - 1 bytes (a range near 2^63) is an error that names the quantity,
+    never a wrapped number.
 
-    Caches follow the paper's design (Section 4.1): one interpolated element
-    per thread of a group for every buffer a component interpolates through a
-    window. Reads of the own item only (no other thread reuses the value) and
-    gathers (no locality) are not cached.
+    Caches follow the paper's design (Section 4.1): for every
+    `#sim.cache<@B, lo, hi>` a component has, one interpolated element per
+    thread of a group plus the window's halo: `(group-size + hi - lo)`
+    elements of `@B`.
   }];
   let options = [
     Option<"format", "format", "::mlir::sim::ReportFormat",

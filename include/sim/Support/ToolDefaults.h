@@ -1,0 +1,59 @@
+//===- ToolDefaults.h - defaults shared by the sim tools --------*- C++ -*-===//
+//
+// Defaults the sim tools (sim-opt, sim-translate) set on upstream MLIR
+// options before the upstream main parses the command line. Header-only: a
+// tool includes it and calls setToolDefaults() first thing in main.
+//
+// MLIRContext prints the whole operation an error is attached to
+// (--mlir-print-op-on-diagnostic, on by default upstream). For our passes that
+// operation is a sim.simulation, so every error was followed by a dump of the
+// whole scene in generic form, burying the message and its notes. The sim
+// tools default the option to false; a user can still turn it on.
+//
+//===----------------------------------------------------------------------===//
+
+#ifndef SIM_SUPPORT_TOOLDEFAULTS_H
+#define SIM_SUPPORT_TOOLDEFAULTS_H
+
+#include "mlir/IR/MLIRContext.h"
+#include "llvm/Support/CommandLine.h"
+
+namespace mlir::sim {
+
+/// The upstream option that makes MLIRContext attach the operation to every
+/// diagnostic (registered by registerMLIRContextCLOptions).
+inline constexpr const char *kPrintOpOnDiagnosticOption =
+    "mlir-print-op-on-diagnostic";
+
+/// Returns the registered --mlir-print-op-on-diagnostic option, or null when
+/// it is not registered. MLIRContext declares it as `cl::opt<bool>`.
+inline llvm::cl::opt<bool> *getPrintOpOnDiagnosticOption() {
+  registerMLIRContextCLOptions();
+  auto &options = llvm::cl::getRegisteredOptions();
+  auto it = options.find(kPrintOpOnDiagnosticOption);
+  if (it == options.end())
+    return nullptr;
+  return static_cast<llvm::cl::opt<bool> *>(it->second);
+}
+
+/// Sets the sim tools' defaults of upstream options; call it in main before
+/// MlirOptMain or mlirTranslateMain parses the command line. Contexts created
+/// afterwards do not print the operation on diagnostics unless the user
+/// passes --mlir-print-op-on-diagnostic.
+inline void setToolDefaults() {
+  if (llvm::cl::opt<bool> *option = getPrintOpOnDiagnosticOption())
+    option->setInitialValue(false);
+}
+
+/// mlirTranslateMain enables printing the operation on every context it
+/// creates unless --verify-diagnostics is given, whatever the option says. A
+/// translation calls this on its context first so that the option (and its
+/// default from setToolDefaults) holds there too. MlirOptMain needs no call.
+inline void applyPrintOpOnDiagnosticOption(MLIRContext *context) {
+  if (llvm::cl::opt<bool> *option = getPrintOpOnDiagnosticOption())
+    context->printOpOnDiagnostic(option->getValue());
+}
+
+} // namespace mlir::sim
+
+#endif // SIM_SUPPORT_TOOLDEFAULTS_H
