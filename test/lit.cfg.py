@@ -34,3 +34,9 @@ config.substitutions.append(("%examples", os.path.join(config.sim_src_root,
 # `dot` renders the dependency graph in tests when Graphviz is installed.
 if lit.util.which("dot"):
     config.available_features.add("dot")
+
+# `sim-to-gpu`: the build calls the lowering of sim.simulation to GPU
+# kernels in --sim-to-gpu-pipeline and sim-translate --sim-to-ptx
+# (SIM_HAVE_SIM_TO_GPU).
+if config.sim_have_sim_to_gpu:
+    config.available_features.add("sim-to-gpu")

@@ -2,20 +2,16 @@
 //
 // mlir-opt for sim: parses, verifies, transforms and prints sim scenes. It
 // registers only the dialects a scene body may use, those of the GPU back end
-// (gpu, nvvm, llvm) and the passes that matter for scenes and for the back
-// end, so `--help` stays readable.
+// (gpu, nvvm, llvm, ...) and the passes that matter for scenes and for the
+// back end, so `--help` stays readable.
 //
 //===----------------------------------------------------------------------===//
 
 #include "sim/Dialect/Sim/IR/SimDialect.h"
 #include "sim/Dialect/Sim/Transforms/Passes.h"
 #include "sim/Pipelines/Pipelines.h"
-#include "sim/Target/PTX/Passes.h"
 
 #include "mlir/Dialect/Arith/IR/Arith.h"
-#include "mlir/Dialect/GPU/IR/GPUDialect.h"
-#include "mlir/Dialect/LLVMIR/LLVMDialect.h"
-#include "mlir/Dialect/LLVMIR/NVVMDialect.h"
 #include "mlir/Dialect/Math/IR/Math.h"
 #include "mlir/Dialect/SCF/IR/SCF.h"
 #include "mlir/Dialect/Vector/IR/VectorOps.h"
@@ -28,12 +24,11 @@ int main(int argc, char **argv) {
   registry.insert<mlir::sim::SimDialect, mlir::arith::ArithDialect,
                   mlir::math::MathDialect, mlir::scf::SCFDialect,
                   mlir::vector::VectorDialect>();
-  registry.insert<mlir::gpu::GPUDialect, mlir::LLVM::LLVMDialect,
-                  mlir::NVVM::NVVMDialect>();
+  mlir::sim::registerGPUToPTXDependencies(registry);
 
   mlir::sim::registerSimPasses();
   mlir::sim::registerSimPipelines();
-  mlir::sim::registerSimPTXPasses();
+  mlir::sim::registerGPUToPTXPasses();
   // Upstream passes that are useful on scenes.
   mlir::registerCanonicalizerPass();
   mlir::registerCSEPass();
