@@ -1,7 +1,7 @@
 // Kernels with the constructs the lowering of sim.simulation emits, written
 // by hand: a grid-stride loop over vector<4xf32> items, the minimum of the
-// step counts over a thread group (warp reduction, then an atomic minimum on
-// a workgroup attribution between barriers, then a global atomic minimum),
+// step counts over a thread group (warp reduction, then atomic minimum and
+// add on workgroup attributions between barriers, then global atomics),
 // and a shared-memory cache in dynamic shared memory next to a workgroup
 // attribution. No math function, so no libdevice is needed.
 module attributes {gpu.container_module} {
@@ -30,13 +30,15 @@ module attributes {gpu.container_module} {
 
     // The minimum of steps[i] over the group (padding threads contribute
     // INT_MAX, since every lane must take part in the reduction), then over
-    // the grid into min[0]; count[0] counts the groups.
+    // the grid into min[0]; count[0] counts the warps that took part.
     gpu.func @min_steps(%steps: memref<?xi32>, %min: memref<?xi64>,
                         %count: memref<?xi64>, %n: index)
-        workgroup(%group_min: memref<1xi32, #gpu.address_space<workgroup>>)
+        workgroup(%group_min: memref<1xi32, #gpu.address_space<workgroup>>,
+                  %group_warps: memref<1xi32, #gpu.address_space<workgroup>>)
         kernel {
       %c0 = arith.constant 0 : index
-      %c1_i64 = arith.constant 1 : i64
+      %c0_i32 = arith.constant 0 : i32
+      %c1_i32 = arith.constant 1 : i32
       %int_max = arith.constant 2147483647 : i32
       %tid = gpu.thread_id x
       %bid = gpu.block_id x
@@ -55,12 +57,16 @@ module attributes {gpu.container_module} {
       scf.if %is_first {
         memref.store %int_max, %group_min[%c0]
             : memref<1xi32, #gpu.address_space<workgroup>>
+        memref.store %c0_i32, %group_warps[%c0]
+            : memref<1xi32, #gpu.address_space<workgroup>>
       }
       gpu.barrier
       %warp_min = gpu.subgroup_reduce minsi %own uniform : (i32) -> i32
       %is_lane0 = arith.cmpi eq, %lane, %c0 : index
       scf.if %is_lane0 {
-        %old = memref.atomic_rmw mins %warp_min, %group_min[%c0]
+        %old_min = memref.atomic_rmw mins %warp_min, %group_min[%c0]
+            : (i32, memref<1xi32, #gpu.address_space<workgroup>>) -> i32
+        %old_warps = memref.atomic_rmw addi %c1_i32, %group_warps[%c0]
             : (i32, memref<1xi32, #gpu.address_space<workgroup>>) -> i32
       }
       gpu.barrier
@@ -70,7 +76,10 @@ module attributes {gpu.container_module} {
         %m64 = arith.extsi %m : i32 to i64
         %old_min = memref.atomic_rmw mins %m64, %min[%c0]
             : (i64, memref<?xi64>) -> i64
-        %old_count = memref.atomic_rmw addi %c1_i64, %count[%c0]
+        %w = memref.load %group_warps[%c0]
+            : memref<1xi32, #gpu.address_space<workgroup>>
+        %w64 = arith.extsi %w : i32 to i64
+        %old_count = memref.atomic_rmw addi %w64, %count[%c0]
             : (i64, memref<?xi64>) -> i64
       }
       gpu.return
