@@ -3,6 +3,7 @@
 # tests run from test/Unit with their own configuration.
 
 import os
+import subprocess
 
 import lit.formats
 from lit.llvm import llvm_config
@@ -22,6 +23,7 @@ llvm_config.with_environment("PATH", config.llvm_tools_dir, append_path=True)
 tool_dirs = [config.sim_tools_dir, config.llvm_tools_dir]
 tools = [
     "sim-opt",
+    "sim-translate",
     ToolSubst("%python", config.python_executable, unresolved="fatal"),
 ]
 llvm_config.add_tool_substitutions(tools, tool_dirs)
@@ -34,3 +36,39 @@ config.substitutions.append(("%examples", os.path.join(config.sim_src_root,
 # `dot` renders the dependency graph in tests when Graphviz is installed.
 if lit.util.which("dot"):
     config.available_features.add("dot")
+
+# The CUDA toolkit, found as the GPU back end finds it: $CUDA_ROOT,
+# $CUDA_HOME, $CUDA_PATH, then /usr/local/cuda. The tools see the same
+# variables, so `libdevice` means "the pipelines will link libdevice".
+cuda_variables = ["CUDA_ROOT", "CUDA_HOME", "CUDA_PATH"]
+llvm_config.with_system_environment(cuda_variables)
+cuda_root = next((os.environ[v] for v in cuda_variables if os.environ.get(v)),
+                 "/usr/local/cuda")
+if os.path.isfile(os.path.join(cuda_root, "nvvm", "libdevice",
+                               "libdevice.10.bc")):
+    config.available_features.add("libdevice")
+
+
+def runs(command):
+    try:
+        return subprocess.run(command, stdout=subprocess.PIPE,
+                              stderr=subprocess.DEVNULL, timeout=60,
+                              check=True).stdout.decode(errors="replace")
+    except (OSError, subprocess.SubprocessError):
+        return None
+
+
+# `ptxas` assembles the PTX the compiler emits (tests check that it is valid
+# and does not spill).
+for ptxas in [os.path.join(cuda_root, "bin", "ptxas"),
+              "/usr/local/cuda/bin/ptxas", lit.util.which("ptxas")]:
+    if ptxas and os.path.isfile(ptxas) and runs([ptxas, "--version"]):
+        config.available_features.add("ptxas")
+        config.substitutions.append(("%ptxas", ptxas))
+        break
+
+# `cuda`: a CUDA driver and at least one GPU, for execution tests.
+smi = lit.util.which("nvidia-smi")
+if smi and "GPU " in (runs([smi, "-L"]) or ""):
+    config.available_features.add("cuda")
+

@@ -4,13 +4,16 @@
 // (nothing else should spend effort on what is removed), then the schedule
 // (read roles), the sub-stepping verdicts, the memory plan (which needs both)
 // and interpolation insertion (which needs the plan). docs/Pipeline.md
-// describes each stage.
+// describes each stage. Then the whole way to PTX: the front end, the
+// lowering to gpu.modules and the GPU back end (GPUToPTX.cpp).
 //
 //===----------------------------------------------------------------------===//
 
 #include "sim/Pipelines/Pipelines.h"
 #include "sim/Dialect/Sim/IR/SimOps.h"
 #include "sim/Dialect/Sim/Transforms/Passes.h"
+
+#include "sim/Conversion/Passes.h"
 
 #include "mlir/Pass/PassRegistry.h"
 
@@ -31,10 +34,39 @@ void mlir::sim::buildFrontEndPipeline(OpPassManager &pm,
   simulation.addPass(createSimInsertInterpolation());
 }
 
+void mlir::sim::buildSimToGPUPipeline(OpPassManager &pm,
+                                      const SimToGPUOptions &options) {
+  FrontEndOptions frontEnd;
+  frontEnd.strategy = options.strategy;
+  frontEnd.groupSize = options.groupSize;
+  buildFrontEndPipeline(pm, frontEnd);
+
+  SimLowerToGPUOptions lowering;
+  lowering.groupSize = options.groupSize;
+  pm.addPass(createSimLowerToGPU(lowering));
+
+  GPUTargetOptions target;
+  target.chip = options.chip;
+  target.features = options.features;
+  target.optLevel = options.optLevel;
+  target.cudaPath = options.cudaPath;
+  buildSimGPUToPTXPipeline(pm, target);
+}
+
 void mlir::sim::registerSimPipelines() {
   PassPipelineRegistration<FrontEndOptions>(
       "sim-front-end",
       "Prune, schedule, check sub-stepping, plan memory and insert "
       "interpolation for one strategy",
       buildFrontEndPipeline);
+  PassPipelineRegistration<GPUTargetOptions>(
+      "sim-gpu-to-ptx",
+      "Lower gpu.modules to NVVM and serialize each to a gpu.binary holding "
+      "PTX text",
+      buildSimGPUToPTXPipeline);
+  PassPipelineRegistration<SimToGPUOptions>(
+      "sim-to-gpu-pipeline",
+      "Compile scenes to PTX: the front end, the lowering of every "
+      "sim.simulation to GPU kernels and a host plan, and --sim-gpu-to-ptx",
+      buildSimToGPUPipeline);
 }

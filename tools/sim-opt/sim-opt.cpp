@@ -1,9 +1,10 @@
 //===- sim-opt.cpp - the sim optimizer driver -----------------------------===//
 //
 // mlir-opt for sim: parses, verifies, transforms and prints sim scenes. It
-// registers only the dialects a scene body may use and the passes that
-// matter for scenes, so `--help` stays readable, and sets the sim tools'
-// option defaults (sim/Support/ToolDefaults.h).
+// registers only the dialects a scene body may use, those of the lowering and
+// the GPU back end (gpu, nvvm, llvm, ...) and the passes that matter for
+// scenes and for the back end, so `--help` stays readable, and sets the sim
+// tools' option defaults (sim/Support/ToolDefaults.h).
 //
 //===----------------------------------------------------------------------===//
 
@@ -33,10 +34,12 @@ int main(int argc, char **argv) {
                   mlir::vector::VectorDialect, mlir::simplan::PlanDialect,
                   mlir::gpu::GPUDialect, mlir::memref::MemRefDialect,
                   mlir::func::FuncDialect>();
+  mlir::sim::registerGPUToPTXDependencies(registry);
 
   mlir::sim::registerSimPasses();
   mlir::sim::registerSimConversionPasses();
   mlir::sim::registerSimPipelines();
+  mlir::sim::registerGPUToPTXPasses();
   // Upstream passes that are useful on scenes.
   mlir::registerCanonicalizerPass();
   mlir::registerCSEPass();

@@ -1,6 +1,7 @@
 //===- Pipelines.h - sim pass pipelines -------------------------*- C++ -*-===//
 //
-// Declares the registered pass pipelines of the sim compiler.
+// Declares the registered pass pipelines of the sim compiler: the front end,
+// the GPU back end (gpu.modules to PTX) and the whole way from a scene to PTX.
 //
 //===----------------------------------------------------------------------===//
 
@@ -11,6 +12,10 @@
 
 #include "mlir/Pass/PassManager.h"
 #include "mlir/Pass/PassOptions.h"
+
+namespace mlir {
+class DialectRegistry;
+} // namespace mlir
 
 namespace mlir::sim {
 
@@ -35,7 +40,92 @@ struct FrontEndOptions : public PassPipelineOptions<FrontEndOptions> {
 /// every sim.simulation.
 void buildFrontEndPipeline(OpPassManager &pm, const FrontEndOptions &options);
 
-/// Registers `--sim-front-end`.
+/// Options of the GPU back end: which GPU the PTX is for and how it is
+/// optimized. The fields are also the options of `--sim-gpu-to-ptx`.
+struct GPUTargetOptions : public PassPipelineOptions<GPUTargetOptions> {
+  PassOptions::Option<std::string> chip{
+      *this, "chip",
+      llvm::cl::desc("The NVIDIA GPU to compile for, as LLVM's NVPTX back "
+                     "end names it (sm_80, sm_90, sm_90a, ...)"),
+      llvm::cl::init("sm_90")};
+  PassOptions::Option<std::string> features{
+      *this, "features",
+      llvm::cl::desc("NVPTX features, e.g. +ptx80 for PTX ISA 8.0; empty: "
+                     "the oldest PTX ISA that supports the chip (7.8 for "
+                     "sm_90)"),
+      llvm::cl::init("")};
+  PassOptions::Option<unsigned> optLevel{
+      *this, "opt-level",
+      llvm::cl::desc("LLVM optimization level of the kernels (0 to 3)"),
+      llvm::cl::init(3)};
+  PassOptions::Option<std::string> cudaPath{
+      *this, "cuda-path",
+      llvm::cl::desc("Root of the CUDA toolkit whose "
+                     "nvvm/libdevice/libdevice.10.bc implements math "
+                     "functions; empty: $CUDA_ROOT, $CUDA_HOME, $CUDA_PATH, "
+                     "then /usr/local/cuda"),
+      llvm::cl::init("")};
+};
+
+/// Options of the whole way from a scene to PTX: the front end's strategy,
+/// the GPU lowering's thread-group size and the GPU back end's target.
+struct SimToGPUOptions : public PassPipelineOptions<SimToGPUOptions> {
+  PassOptions::Option<Strategy> strategy{
+      *this, "strategy", llvm::cl::desc("The strategy to compile for"),
+      llvm::cl::init(Strategy::hip), getStrategyOptionValues()};
+  PassOptions::Option<unsigned> groupSize{
+      *this, "group-size",
+      llvm::cl::desc("Threads per thread group (block) of the kernels"),
+      llvm::cl::init(256)};
+  PassOptions::Option<std::string> chip{
+      *this, "chip", llvm::cl::desc("The NVIDIA GPU to compile for"),
+      llvm::cl::init("sm_90")};
+  PassOptions::Option<std::string> features{
+      *this, "features",
+      llvm::cl::desc("NVPTX features (e.g. +ptx80); empty: the chip's oldest "
+                     "PTX ISA"),
+      llvm::cl::init("")};
+  PassOptions::Option<unsigned> optLevel{
+      *this, "opt-level",
+      llvm::cl::desc("LLVM optimization level of the kernels (0 to 3)"),
+      llvm::cl::init(3)};
+  PassOptions::Option<std::string> cudaPath{
+      *this, "cuda-path",
+      llvm::cl::desc("Root of the CUDA toolkit that provides libdevice"),
+      llvm::cl::init("")};
+};
+
+/// Adds the GPU back end to `pm` (which runs on the module): attaches an
+/// `#nvvm.target` to every gpu.module, lowers the kernels to the LLVM and
+/// NVVM dialects (dynamic memrefs keep their descriptors: 5 PTX parameters
+/// each), checks them and serializes each gpu.module to a gpu.binary whose
+/// object is PTX text. Only upstream passes lower; two sim passes fix the
+/// dynamic shared memory declaration and check the result. Everything
+/// outside the gpu.modules is left alone.
+void buildSimGPUToPTXPipeline(OpPassManager &pm,
+                              const GPUTargetOptions &options);
+
+/// Adds the whole way from a scene to PTX to `pm`: the front end, the
+/// lowering of every sim.simulation to gpu.modules and a host plan, and the
+/// GPU back end.
+void buildSimToGPUPipeline(OpPassManager &pm, const SimToGPUOptions &options);
+
+/// Returns where buildSimGPUToPTXPipeline looks for libdevice given
+/// `cudaPath`: `<root>/nvvm/libdevice/libdevice.10.bc`, the root chosen as
+/// GPUTargetOptions::cudaPath says. The file need not exist.
+std::string getLibdevicePath(StringRef cudaPath);
+
+/// Registers in `registry` what the GPU back end needs in a context: the
+/// dialects it produces, their conversions to LLVM, the NVVM target and the
+/// translations to LLVM IR that gpu-module-to-binary uses.
+void registerGPUToPTXDependencies(DialectRegistry &registry);
+
+/// Registers the upstream and sim passes the GPU back end is made of, so that
+/// each can be run on its own.
+void registerGPUToPTXPasses();
+
+/// Registers `--sim-front-end`, `--sim-gpu-to-ptx` and
+/// `--sim-to-gpu-pipeline`.
 void registerSimPipelines();
 
 } // namespace mlir::sim

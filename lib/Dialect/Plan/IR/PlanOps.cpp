@@ -143,6 +143,16 @@ LogicalResult PlanOp::verifyRegions() {
 
 LogicalResult LaunchOp::verifySymbolUses(SymbolTableCollection &symbolTable) {
   auto plan = (*this)->getParentOfType<PlanOp>();
+  Operation *container = symbolTable.lookupSymbolIn(
+      plan->getParentOp(), getKernel().getRootReference());
+  if (!container)
+    return emitOpError() << "launches " << getKernel()
+                         << ", but there is no kernel container "
+                         << getKernel().getRootReference();
+  // Once the kernels are compiled (a gpu.binary), there is no function left
+  // to compare the arguments with.
+  if (!container->hasTrait<OpTrait::SymbolTable>())
+    return success();
   Operation *kernel =
       symbolTable.lookupSymbolIn(plan->getParentOp(), getKernel());
   auto function = dyn_cast_or_null<FunctionOpInterface>(kernel);

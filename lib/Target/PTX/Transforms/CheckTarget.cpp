@@ -1,0 +1,153 @@
+//===- CheckTarget.cpp - check a lowered gpu.module before serializing ----===//
+//
+// gpu-module-to-binary reports some problems late and far from their cause
+// (an op without lowering becomes "missing LLVMTranslationDialectInterface"
+// on the whole module) and others not at all: an unknown chip or feature is
+// a warning on stderr followed by PTX for another chip, and a libdevice call
+// without libdevice stays an unresolved `call.uni __nv_expf` that only fails
+// when the driver loads the PTX. This pass turns each into an error at the
+// construct. See the pass description in Passes.td.
+//
+//===----------------------------------------------------------------------===//
+
+#include "sim/Target/PTX/Passes.h"
+
+#include "mlir/Dialect/LLVMIR/NVVMDialect.h"
+#include "llvm/ADT/MapVector.h"
+#include "llvm/ADT/StringSet.h"
+#include "llvm/Config/Targets.h"
+#include "llvm/MC/MCSubtargetInfo.h"
+#include "llvm/MC/TargetRegistry.h"
+#include "llvm/Support/FileSystem.h"
+#include "llvm/Support/Threading.h"
+#include "llvm/TargetParser/Triple.h"
+
+namespace mlir::sim {
+#define GEN_PASS_DEF_SIMNVVMCHECKTARGET
+#include "sim/Target/PTX/Passes.h.inc"
+} // namespace mlir::sim
+
+#if LLVM_HAS_NVPTX_TARGET
+extern "C" void LLVMInitializeNVPTXTargetInfo();
+extern "C" void LLVMInitializeNVPTXTargetMC();
+#endif
+
+using namespace mlir;
+using namespace mlir::sim;
+
+namespace {
+
+/// Reports the first operation of each kind that is not in the LLVM or NVVM
+/// dialect: gpu-module-to-binary can translate nothing else.
+LogicalResult checkLowered(gpu::GPUModuleOp module) {
+  llvm::StringSet<> reported;
+  bool failed = false;
+  module.getBody()->walk([&](Operation *op) {
+    if (isa<LLVM::LLVMDialect, NVVM::NVVMDialect>(op->getDialect()))
+      return;
+    failed = true;
+    if (reported.insert(op->getName().getStringRef()).second)
+      op->emitOpError("was not lowered to the LLVM and NVVM dialects; the "
+                      "PTX pipeline has no lowering for it");
+  });
+  return failure(failed);
+}
+
+/// Checks the chip and the features of `target` against LLVM's NVPTX back
+/// end, which otherwise only warns and compiles for a default chip.
+LogicalResult checkTarget(gpu::GPUModuleOp module,
+                          NVVM::NVVMTargetAttr target) {
+#if LLVM_HAS_NVPTX_TARGET
+  static llvm::once_flag initialized;
+  llvm::call_once(initialized, [] {
+    LLVMInitializeNVPTXTargetInfo();
+    LLVMInitializeNVPTXTargetMC();
+  });
+  llvm::Triple triple(target.getTriple());
+  std::string error;
+  const llvm::Target *llvmTarget =
+      llvm::TargetRegistry::lookupTarget(triple, error);
+  if (!llvmTarget)
+    return module.emitError() << "cannot compile for the target triple '"
+                              << target.getTriple() << "': " << error;
+  std::unique_ptr<llvm::MCSubtargetInfo> subtarget(
+      llvmTarget->createMCSubtargetInfo(triple, "", ""));
+  if (!subtarget->isCPUStringValid(target.getChip()))
+    return module.emitError()
+           << "unknown NVIDIA GPU '" << target.getChip()
+           << "': LLVM's NVPTX back end knows chips such as sm_80, sm_90, "
+              "sm_90a and sm_100";
+  llvm::StringSet<> known;
+  for (const llvm::SubtargetFeatureKV &feature :
+       subtarget->getAllProcessorFeatures())
+    known.insert(feature.Key);
+  SmallVector<StringRef> features;
+  target.getFeatures().split(features, ',', /*MaxSplit=*/-1,
+                             /*KeepEmpty=*/false);
+  for (StringRef feature : features) {
+    StringRef name = feature.trim();
+    if (!name.consume_front("+") && !name.consume_front("-"))
+      return module.emitError()
+             << "the PTX feature '" << feature
+             << "' must start with '+' or '-' (e.g. '+ptx80')";
+    if (!known.contains(name))
+      return module.emitError()
+             << "unknown PTX feature '" << feature
+             << "': LLVM's NVPTX back end knows PTX ISA versions such as "
+                "+ptx78, +ptx80 and +ptx86";
+  }
+  return success();
+#else
+  return module.emitError() << "this LLVM was built without the NVPTX back end";
+#endif
+}
+
+/// Reports each libdevice function the module calls when `libdevice` is not
+/// a file, at its first call (which carries the math op's location).
+LogicalResult checkLibdevice(gpu::GPUModuleOp module, StringRef libdevice) {
+  if (!libdevice.empty() && llvm::sys::fs::is_regular_file(libdevice))
+    return success();
+  llvm::StringSet<> declared;
+  for (auto func : module.getOps<LLVM::LLVMFuncOp>())
+    if (func.isExternal() && func.getName().starts_with("__nv_"))
+      declared.insert(func.getName());
+  if (declared.empty())
+    return success();
+  llvm::MapVector<StringRef, Operation *> firstCalls;
+  module.walk([&](LLVM::CallOp call) {
+    std::optional<StringRef> callee = call.getCallee();
+    if (callee && declared.contains(*callee))
+      firstCalls.insert({*callee, call});
+  });
+  for (auto [callee, call] : firstCalls) {
+    InFlightDiagnostic diag = emitError(call->getLoc())
+                              << "this operation needs the libdevice function '"
+                              << callee << "', but ";
+    if (libdevice.empty())
+      diag << "no CUDA toolkit was found";
+    else
+      diag << "there is no libdevice at '" << libdevice << "'";
+    diag << "; give the CUDA toolkit's root with the pipeline option "
+            "cuda-path or with $CUDA_HOME";
+  }
+  return failure();
+}
+
+struct CheckTargetPass
+    : public sim::impl::SimNVVMCheckTargetBase<CheckTargetPass> {
+  using Base::Base;
+
+  void runOnOperation() override {
+    gpu::GPUModuleOp module = getOperation();
+    bool ok = succeeded(checkLowered(module));
+    if (ArrayAttr targets = module.getTargetsAttr())
+      for (Attribute target : targets)
+        if (auto nvvm = dyn_cast<NVVM::NVVMTargetAttr>(target))
+          ok &= succeeded(checkTarget(module, nvvm));
+    ok &= succeeded(checkLibdevice(module, libdevice));
+    if (!ok)
+      signalPassFailure();
+  }
+};
+
+} // namespace

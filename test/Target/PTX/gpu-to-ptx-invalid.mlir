@@ -1,0 +1,129 @@
+// Every error sim-translate --gpu-to-ptx reports for input a user can write,
+// and the options that select the target. Each case is a file of its own,
+// since the options apply to a whole run.
+//
+// RUN: split-file %s %t
+// RUN: sim-translate --gpu-to-ptx %t/no-gpu-module.mlir --verify-diagnostics
+// RUN: sim-translate --gpu-to-ptx %t/no-lowering.mlir --verify-diagnostics
+// RUN: sim-translate --gpu-to-ptx %t/no-libdevice.mlir --verify-diagnostics \
+// RUN:   --sim-cuda-path=%t/no-cuda
+// RUN: sim-translate --gpu-to-ptx %t/unknown-chip.mlir --verify-diagnostics \
+// RUN:   --sim-chip=sm_999
+// RUN: sim-translate --gpu-to-ptx %t/unknown-feature.mlir \
+// RUN:   --verify-diagnostics --sim-features=+ptx99
+// RUN: sim-translate --gpu-to-ptx %t/unsigned-feature.mlir \
+// RUN:   --verify-diagnostics --sim-features=ptx80
+// RUN: sim-translate --gpu-to-ptx %t/no-redux.mlir --verify-diagnostics \
+// RUN:   --sim-chip=sm_75
+// RUN: sim-translate --gpu-to-ptx %t/opt-level.mlir --verify-diagnostics \
+// RUN:   --sim-opt-level=4
+//
+// Diagnostics are one line and a caret; the failing op is printed only when
+// asked for.
+// RUN: not sim-translate --gpu-to-ptx %t/unknown-chip.mlir --sim-chip=sm_999 \
+// RUN:   -o /dev/null 2>&1 | FileCheck %s --check-prefix=QUIET
+// RUN: not sim-translate --gpu-to-ptx %t/unknown-chip.mlir --sim-chip=sm_999 \
+// RUN:   --mlir-print-op-on-diagnostic -o /dev/null 2>&1 \
+// RUN:   | FileCheck %s --check-prefix=OP
+// QUIET: unknown-chip.mlir:3:3: error: unknown NVIDIA GPU 'sm_999'
+// QUIET-NOT: see current operation
+// OP: unknown-chip.mlir:3:3: error: unknown NVIDIA GPU 'sm_999'
+// OP: note: see current operation
+
+//--- no-gpu-module.mlir
+// expected-error @+1 {{there is no gpu.module to compile to PTX}}
+module {
+  func.func @host() {
+    return
+  }
+}
+
+//--- no-lowering.mlir
+module attributes {gpu.container_module} {
+  gpu.module @kernels {
+    gpu.func @power(%a: memref<?xi32>) kernel {
+      %c0 = arith.constant 0 : index
+      %x = memref.load %a[%c0] : memref<?xi32>
+      // expected-error @+1 {{'math.ipowi' op was not lowered to the LLVM and NVVM dialects; the PTX pipeline has no lowering for it}}
+      %y = math.ipowi %x, %x : i32
+      memref.store %y, %a[%c0] : memref<?xi32>
+      gpu.return
+    }
+  }
+}
+
+//--- no-libdevice.mlir
+module attributes {gpu.container_module} {
+  gpu.module @kernels {
+    gpu.func @decay(%a: memref<?xf32>) kernel {
+      %c0 = arith.constant 0 : index
+      %x = memref.load %a[%c0] : memref<?xf32>
+      // expected-error @+1 {{this operation needs the libdevice function '__nv_expf', but there is no libdevice at '}}
+      %y = math.exp %x : f32
+      // expected-error @+1 {{needs the libdevice function '__nv_logf'}}
+      %z = math.log %y : f32
+      // expected-error @+1 {{no-cuda/nvvm/libdevice/libdevice.10.bc'; give the CUDA toolkit's root with the pipeline option cuda-path or with $CUDA_HOME}}
+      %f = math.fma %z, %z, %z : f32
+      // Arithmetic needs no libdevice: no error.
+      %w = arith.mulf %f, %f : f32
+      memref.store %w, %a[%c0] : memref<?xf32>
+      gpu.return
+    }
+  }
+}
+
+//--- unknown-chip.mlir
+module attributes {gpu.container_module} {
+  // expected-error @+1 {{unknown NVIDIA GPU 'sm_999': LLVM's NVPTX back end knows chips such as sm_80, sm_90, sm_90a and sm_100}}
+  gpu.module @kernels {
+    gpu.func @empty() kernel {
+      gpu.return
+    }
+  }
+}
+
+//--- unknown-feature.mlir
+module attributes {gpu.container_module} {
+  // expected-error @+1 {{unknown PTX feature '+ptx99': LLVM's NVPTX back end knows PTX ISA versions such as +ptx78, +ptx80 and +ptx86}}
+  gpu.module @kernels {
+    gpu.func @empty() kernel {
+      gpu.return
+    }
+  }
+}
+
+//--- unsigned-feature.mlir
+module attributes {gpu.container_module} {
+  // expected-error @+1 {{the PTX feature 'ptx80' must start with '+' or '-' (e.g. '+ptx80')}}
+  gpu.module @kernels {
+    gpu.func @empty() kernel {
+      gpu.return
+    }
+  }
+}
+
+//--- no-redux.mlir
+// sm_75 has no redux.sync, so a warp reduction does not lower.
+module attributes {gpu.container_module} {
+  gpu.module @kernels {
+    gpu.func @min(%a: memref<?xi32>) kernel {
+      %c0 = arith.constant 0 : index
+      %x = memref.load %a[%c0] : memref<?xi32>
+      // expected-error @+1 {{failed to legalize operation 'gpu.subgroup_reduce' that was explicitly marked illegal}}
+      %m = gpu.subgroup_reduce minsi %x uniform : (i32) -> i32
+      memref.store %m, %a[%c0] : memref<?xi32>
+      gpu.return
+    }
+  }
+}
+
+//--- opt-level.mlir
+module attributes {gpu.container_module} {
+  // expected-error @+2 {{Invalid optimization level: 4.}}
+  // expected-error @+1 {{An error happened while serializing the module.}}
+  gpu.module @kernels {
+    gpu.func @empty() kernel {
+      gpu.return
+    }
+  }
+}

@@ -1,0 +1,27 @@
+// Errors of sim-translate --sim-to-ptx that do not depend on the lowering of
+// scenes to GPU kernels.
+//
+// RUN: sim-translate --sim-to-ptx %s --split-input-file --verify-diagnostics
+
+// expected-error @+1 {{there is no sim.simulation to compile to PTX}}
+module attributes {gpu.container_module} {
+  gpu.module @kernels {
+  }
+}
+
+// -----
+
+// A scene the front end rejects: its diagnostic, and nothing after it.
+// expected-error @+1 {{has no 'sim.observe', so nothing is needed; list the observed output buffers before pruning}}
+sim.simulation @unobserved range(16) dt(1.0e-2 : f32) max_steps(2) {
+  sim.buffer @X : f32 init {
+  ^bb0(%i: index):
+    %c = arith.constant 0.0 : f32
+    sim.yield %c : f32
+  }
+  sim.component @C writes(@X) evaluate {
+  ^bb0(%i: index, %t: i64, %n: i32, %dt: f32):
+    %x = sim.read @X[%i] : f32
+    sim.yield %x : f32
+  }
+}
