@@ -1,7 +1,8 @@
 //===- CudaTest.cpp - the CUDA backend without and with a GPU -------------===//
 //
 // Without a driver (as on the build machines) CUDA must fail with one clear
-// line and `auto` must fall back to the CPU.
+// line and `auto` must fall back to the CPU. The stub libcuda.so of the
+// CUDA toolkit exercises the dlopen/dlsym table and cuInit's error path.
 // With a GPU, the decay scene's hand-written PTX (kernels/decay.cu) must
 // give the CPU backend's numbers bit for bit; without one those tests skip.
 //
@@ -18,6 +19,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <dlfcn.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
 using namespace sim::rt;
@@ -69,6 +71,32 @@ TEST(Cuda, AutoFallsBackToTheCpuWithoutADriver) {
   EXPECT_EQ(session.backendNote(), "no CUDA driver (libcuda.so.1 not found)");
   session.run(10);
   EXPECT_EQ(session.time(), 10);
+}
+
+TEST(Cuda, TheToolkitsStubLibraryIsNoDriver) {
+  // The stub answers every call with CUDA_ERROR_STUB_LIBRARY. The driver is
+  // loaded once per process, so this runs in sim-run.
+  const char *stub = "/usr/local/cuda/lib64/stubs/libcuda.so";
+  if (access(stub, R_OK) != 0)
+    GTEST_SKIP() << "no CUDA toolkit stub at " << stub;
+  std::string dir = makeTempDir();
+  std::string bundle = dir + "/decay.simb";
+  writeFile(bundle, decayBundle(/*ptx=*/true));
+  std::string command = std::string("SIM_CUDA_DRIVER=") + stub + " " +
+                        SIM_RUN_PATH + " " + bundle +
+                        " --backend cuda --steps 1 2>&1";
+  FILE *pipe = popen(command.c_str(), "r");
+  ASSERT_NE(pipe, nullptr);
+  char line[1024] = {};
+  std::string output;
+  while (fgets(line, sizeof line, pipe))
+    output += line;
+  int status = pclose(pipe);
+  EXPECT_EQ(WEXITSTATUS(status), 1) << output;
+  EXPECT_EQ(output, std::string("sim-run: error: no CUDA driver (") + stub +
+                        " is the stub library of the CUDA toolkit)\n");
+  std::remove(bundle.c_str());
+  rmdir(dir.c_str());
 }
 
 //===----------------------------------------------------------------------===//
