@@ -1,6 +1,7 @@
 # -*- Python -*-
 # The sim lit suite: FileCheck, --verify-diagnostics and tool tests. The unit
-# tests run from test/Unit with their own configuration.
+# tests run from test/Unit and the runtime's tests from test/Runtime, each
+# with its own configuration.
 
 import os
 import subprocess
@@ -15,7 +16,7 @@ config.suffixes = [".mlir", ".test"]
 config.test_source_root = os.path.dirname(__file__)
 config.test_exec_root = os.path.join(config.sim_obj_root, "test")
 config.excludes = ["Inputs", "CMakeLists.txt", "README.txt", "lit.cfg.py",
-                   "lit.site.cfg.py", "Unit"]
+                   "lit.site.cfg.py", "Unit", "Runtime"]
 
 llvm_config.use_default_substitutions()
 llvm_config.with_environment("PATH", config.llvm_tools_dir, append_path=True)
@@ -24,6 +25,7 @@ tool_dirs = [config.sim_tools_dir, config.llvm_tools_dir]
 tools = [
     "sim-opt",
     "sim-translate",
+    "sim-run",
     ToolSubst("%python", config.python_executable, unresolved="fatal"),
 ]
 llvm_config.add_tool_substitutions(tools, tool_dirs)

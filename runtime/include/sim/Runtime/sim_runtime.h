@@ -1,0 +1,286 @@
+//===- sim_runtime.h - the C API of the sim runtime ---------------*- C -*-===//
+//
+// The one public header of the runtime that reads scene bundles
+// (docs/Bundle.md) and runs them on the CUDA or the CPU backend. It is plain
+// C99, for C programs and Python's ctypes: handles are opaque, every call
+// that can fail returns a sim_status, and sim_last_error() says what went
+// wrong. docs/Runtime.md describes the API and the sim-run tool.
+//
+//===----------------------------------------------------------------------===//
+
+#ifndef SIM_RUNTIME_SIM_RUNTIME_H
+#define SIM_RUNTIME_SIM_RUNTIME_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#if defined(SIM_RUNTIME_BUILDING)
+#define SIM_API __attribute__((visibility("default")))
+#else
+#define SIM_API
+#endif
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+//===----------------------------------------------------------------------===//
+// Status and errors
+//===----------------------------------------------------------------------===//
+
+typedef enum sim_status {
+  SIM_OK = 0,
+  /// A null handle, an unknown name, a value that does not parse, a host
+  /// array of the wrong size.
+  SIM_ERROR_INVALID_ARGUMENT = 1,
+  /// The file cannot be read.
+  SIM_ERROR_IO = 2,
+  /// The bundle is malformed or lacks what the request needs.
+  SIM_ERROR_BUNDLE = 3,
+  /// libcuda.so.1 cannot be loaded (or is the stub library).
+  SIM_ERROR_NO_DRIVER = 4,
+  /// The driver loaded but there is no usable CUDA device.
+  SIM_ERROR_NO_DEVICE = 5,
+  /// A backend call failed (a driver call, dlopen, a missing kernel).
+  SIM_ERROR_BACKEND = 6,
+  /// A run stopped at the first NaN or infinity (check_finite).
+  SIM_ERROR_NONFINITE = 7,
+  /// The kernels broke the clock contract of docs/Plan.md.
+  SIM_ERROR_CLOCK = 8,
+} sim_status;
+
+/// The message of the last failed call on this thread (never null; empty
+/// after a call that returned SIM_OK).
+SIM_API const char *sim_last_error(void);
+
+/// A short name of a status code ("ok", "invalid argument", ...).
+SIM_API const char *sim_status_name(sim_status status);
+
+//===----------------------------------------------------------------------===//
+// Strategies and backends
+//===----------------------------------------------------------------------===//
+
+/// The values are those of the bundle's section table.
+typedef enum sim_strategy {
+  SIM_STRATEGY_SIMPLE = 0,
+  SIM_STRATEGY_TRADITIONAL = 1,
+  SIM_STRATEGY_HIP = 2,
+  SIM_STRATEGY_HIP_CACHE = 3,
+} sim_strategy;
+
+typedef enum sim_backend {
+  /// CUDA when a driver, a device and the strategy's PTX are there, else
+  /// the CPU.
+  SIM_BACKEND_AUTO = 0,
+  SIM_BACKEND_CPU = 1,
+  SIM_BACKEND_CUDA = 2,
+} sim_backend;
+
+/// "simple", "traditional", "hip", "hip-cache".
+SIM_API const char *sim_strategy_name(sim_strategy strategy);
+SIM_API sim_status sim_strategy_parse(const char *name, sim_strategy *out);
+/// "auto", "cpu", "cuda".
+SIM_API const char *sim_backend_name(sim_backend backend);
+SIM_API sim_status sim_backend_parse(const char *name, sim_backend *out);
+
+//===----------------------------------------------------------------------===//
+// Bundles and scene metadata
+//===----------------------------------------------------------------------===//
+
+typedef struct sim_bundle sim_bundle;
+
+/// Reads and validates a bundle file.
+SIM_API sim_status sim_bundle_open(const char *path, sim_bundle **out);
+/// Validates a bundle held in memory (the bytes are copied).
+SIM_API sim_status sim_bundle_open_memory(const void *data, size_t size,
+                                          sim_bundle **out);
+/// Sessions keep what they need: a bundle may be closed before them.
+SIM_API void sim_bundle_close(sim_bundle *bundle);
+
+SIM_API const char *sim_bundle_scene_name(const sim_bundle *bundle);
+/// The scene's default range (items).
+SIM_API int64_t sim_bundle_range(const sim_bundle *bundle);
+/// The scene's default dt and whether it is "f32" or "f64".
+SIM_API double sim_bundle_dt(const sim_bundle *bundle);
+SIM_API const char *sim_bundle_dt_type(const sim_bundle *bundle);
+SIM_API int64_t sim_bundle_max_steps(const sim_bundle *bundle);
+
+/// Whether the bundle holds a plan for the strategy, and its kernels.
+SIM_API int sim_bundle_has_strategy(const sim_bundle *bundle,
+                                    sim_strategy strategy);
+SIM_API int sim_bundle_has_ptx(const sim_bundle *bundle, sim_strategy strategy);
+SIM_API int sim_bundle_has_cpu(const sim_bundle *bundle, sim_strategy strategy);
+
+typedef struct sim_buffer_info {
+  const char *name;
+  /// "f32", "f64", "vector<3xf32>", ...
+  const char *element_type;
+  /// "f32" or "f64".
+  const char *scalar_type;
+  /// Bytes of one scalar (4 or 8) and scalars per element (1 for a scalar
+  /// type). A host array of a buffer holds `lanes` packed scalars per item.
+  int32_t scalar_bytes;
+  int32_t lanes;
+  /// "linear", "cubic", "hermite:<derivative>" or "none".
+  const char *interp;
+  /// "clamp", "wrap" or "zero".
+  const char *boundary;
+  int32_t observed;
+  /// The scene declares its exact solution.
+  int32_t exact;
+} sim_buffer_info;
+
+SIM_API int32_t sim_bundle_num_buffers(const sim_bundle *bundle);
+/// Strings stay valid as long as the bundle.
+SIM_API sim_status sim_bundle_buffer(const sim_bundle *bundle, int32_t index,
+                                     sim_buffer_info *out);
+
+typedef struct sim_param_info {
+  const char *name;
+  /// "i32", "i64", "index", "f32" or "f64".
+  const char *type;
+  /// The default value as written in the bundle.
+  const char *default_value;
+} sim_param_info;
+
+SIM_API int32_t sim_bundle_num_params(const sim_bundle *bundle);
+SIM_API sim_status sim_bundle_param(const sim_bundle *bundle, int32_t index,
+                                    sim_param_info *out);
+
+//===----------------------------------------------------------------------===//
+// Sessions: one strategy of one bundle on one backend
+//===----------------------------------------------------------------------===//
+
+typedef struct sim_session sim_session;
+
+typedef struct sim_session_options {
+  sim_strategy strategy;
+  sim_backend backend;
+  /// Threads per group; 0: the plan's group_size. A multiple of 32 on
+  /// CUDA.
+  int64_t group_size;
+  /// CPU worker threads; 0: one per hardware thread.
+  int32_t cpu_threads;
+  /// CUDA device ordinal.
+  int32_t cuda_device;
+  /// Replay the step phase as a CUDA graph instead of launching its
+  /// kernels one by one.
+  int32_t cuda_graph;
+  /// Run the step phase launch by launch and stop at the first NaN or
+  /// infinity in the buffers a component writes (SIM_ERROR_NONFINITE).
+  int32_t check_finite;
+} sim_session_options;
+
+/// Fills in the defaults: hip, auto, the plan's group size, all threads,
+/// device 0, no graph, no check.
+SIM_API void sim_session_options_init(sim_session_options *options);
+
+SIM_API sim_status sim_session_create(const sim_bundle *bundle,
+                                      const sim_session_options *options,
+                                      sim_session **out);
+SIM_API void sim_session_destroy(sim_session *session);
+
+/// The backend that runs the session (never SIM_BACKEND_AUTO).
+SIM_API sim_backend sim_session_backend(const sim_session *session);
+/// The device, e.g. "NVIDIA H100 (sm_90)" or "CPU (8 threads)".
+SIM_API const char *sim_session_device(const sim_session *session);
+/// Why `auto` chose the CPU (empty when it did not).
+SIM_API const char *sim_session_backend_note(const sim_session *session);
+SIM_API int64_t sim_session_group_size(const sim_session *session);
+
+/// Sets `range`, `dt` or a parameter from its text, like `--set`. A new
+/// range discards the state (the next call that needs it runs init).
+SIM_API sim_status sim_session_set(sim_session *session, const char *name,
+                                   const char *value);
+/// The current value of `range`, `dt` or a parameter as text.
+SIM_API sim_status sim_session_get(const sim_session *session, const char *name,
+                                   char *value, size_t capacity);
+SIM_API int64_t sim_session_range(const sim_session *session);
+
+/// Allocates the clock and the buffers (zeroed) and runs the init phase:
+/// the state at base step 0. Calls that need a state do it when needed.
+SIM_API sim_status sim_session_init(sim_session *session);
+
+/// The current base step T.
+SIM_API int64_t sim_session_time(const sim_session *session);
+
+/// The bytes of a host array of a buffer: range * lanes * scalar_bytes.
+SIM_API sim_status sim_session_buffer_bytes(const sim_session *session,
+                                            const char *buffer, size_t *out);
+/// Copies a buffer's current state (item-major, lanes packed) from or to a
+/// host array of exactly sim_session_buffer_bytes bytes.
+SIM_API sim_status sim_session_get_buffer(sim_session *session,
+                                          const char *buffer, void *data,
+                                          size_t bytes);
+SIM_API sim_status sim_session_set_buffer(sim_session *session,
+                                          const char *buffer, const void *data,
+                                          size_t bytes);
+
+/// Whether the scene has an exact solution for the buffer.
+SIM_API int sim_session_has_exact(const sim_session *session,
+                                  const char *buffer);
+/// The exact solution of a buffer at the current time (T * dt) into a host
+/// array like sim_session_get_buffer's.
+SIM_API sim_status sim_session_exact(sim_session *session, const char *buffer,
+                                     void *data, size_t bytes);
+
+/// Called after each host synchronisation of a run with the base steps done
+/// so far and the run's total.
+typedef void (*sim_progress_fn)(void *user, int64_t done, int64_t total);
+SIM_API void sim_session_set_progress(sim_session *session,
+                                      sim_progress_fn progress, void *user);
+
+/// What the last run measured.
+typedef struct sim_metrics {
+  /// Base steps run; the clock's T before and after the run.
+  int64_t steps;
+  int64_t begin;
+  int64_t end;
+  /// Host time of the run; time spent in kernels (CUDA events around the
+  /// run on CUDA, the sum of kernel calls on the CPU).
+  double wall_seconds;
+  double kernel_seconds;
+  /// Kernel launches (a graph replay counts its kernels), graph replays,
+  /// and host synchronisations (waits for the device).
+  int64_t launches;
+  int64_t graph_launches;
+  int64_t host_syncs;
+  /// Big steps taken (clock slot 5).
+  int64_t big_steps;
+} sim_metrics;
+
+/// Runs `steps` base steps from the current state (initialising first if
+/// needed). The run ends exactly at T + steps, or fails.
+SIM_API sim_status sim_session_run(sim_session *session, int64_t steps);
+SIM_API sim_status sim_session_metrics(const sim_session *session,
+                                       sim_metrics *out);
+
+/// The components of the plan, for the counters below.
+SIM_API int32_t sim_session_num_components(const sim_session *session);
+SIM_API const char *sim_session_component(const sim_session *session,
+                                          int32_t index);
+/// Item evaluations of a component during the last run.
+SIM_API int64_t sim_session_evaluations(const sim_session *session,
+                                        int32_t component);
+/// Big steps of `size` base steps (1 .. max_steps) during the last run.
+SIM_API int64_t sim_session_histogram(const sim_session *session, int64_t size);
+
+/// Where the last run found a non-finite value (SIM_ERROR_NONFINITE).
+typedef struct sim_nonfinite {
+  /// The clock's T when the launch ran.
+  int64_t base_step;
+  const char *component;
+  const char *buffer;
+  const char *kernel;
+  int64_t item;
+  int32_t lane;
+  double value;
+} sim_nonfinite;
+SIM_API sim_status sim_session_nonfinite(const sim_session *session,
+                                         sim_nonfinite *out);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif // SIM_RUNTIME_SIM_RUNTIME_H

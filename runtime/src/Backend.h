@@ -1,0 +1,82 @@
+//===- Backend.h - what the executor needs from a device ----------*- C++
+//-*-===//
+//
+// The executor (Session.cpp) runs a plan against this interface; the CUDA
+// backend (CudaBackend.cpp) and the CPU backend (CpuBackend.cpp) implement
+// it. Everything is ordered as issued, like one CUDA stream: a write or a
+// launch happens after every launch before it, and a read waits for all of
+// them (it is the host synchronisation the executor counts).
+//
+//===----------------------------------------------------------------------===//
+
+#ifndef SIM_RUNTIME_BACKEND_H
+#define SIM_RUNTIME_BACKEND_H
+
+#include "Bundle.h"
+#include "sim/Runtime/sim_runtime.h"
+
+#include <cstddef>
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace sim::rt {
+
+/// A device address: a CUdeviceptr on CUDA, a host pointer on the CPU.
+using DevicePtr = uint64_t;
+
+class Backend {
+public:
+  virtual ~Backend() = default;
+
+  virtual sim_backend kind() const = 0;
+  /// The device in words, for reports.
+  virtual std::string device() const = 0;
+  /// Throws SIM_ERROR_INVALID_ARGUMENT if the device cannot run groups of
+  /// this size.
+  virtual void checkGroupSize(int64_t groupSize) const = 0;
+
+  /// Loads the strategy's kernels and resolves `kernels`; a launch names a
+  /// kernel by its index in that list.
+  virtual void load(const Bundle::StrategyCode &code, Strategy strategy,
+                    const std::vector<std::string> &kernels) = 0;
+
+  /// Device memory, zeroed.
+  virtual DevicePtr allocate(size_t bytes) = 0;
+  virtual void release(DevicePtr memory) = 0;
+  virtual void zero(DevicePtr memory, size_t bytes) = 0;
+  virtual void write(DevicePtr to, const void *from, size_t bytes) = 0;
+  /// Waits for everything issued before, then copies.
+  virtual void read(void *to, DevicePtr from, size_t bytes) = 0;
+
+  /// Runs `groups` groups of `groupSize` threads of a kernel; `params` is
+  /// the cuLaunchKernel array of pointers to each parameter value.
+  virtual void launch(int kernel, void **params, int64_t groups,
+                      int64_t groupSize, int64_t sharedBytes) = 0;
+
+  /// Kernel time between the two calls; stopTimer waits for the device.
+  virtual void startTimer() = 0;
+  virtual double stopTimer() = 0;
+
+  /// Recording a sequence of launches once and replaying it (CUDA graphs).
+  virtual bool supportsGraphs() const { return false; }
+  virtual void beginCapture() {}
+  virtual void endCapture() {}
+  virtual void replay() {}
+  virtual void dropGraph() {}
+
+  /// Makes the backend's device current on the calling thread.
+  virtual void activate() {}
+};
+
+/// `threads` workers (0: one per hardware thread).
+std::unique_ptr<Backend> createCpuBackend(int threads);
+
+/// Throws SIM_ERROR_NO_DRIVER or SIM_ERROR_NO_DEVICE when CUDA cannot be
+/// used at all, so that `auto` can fall back to the CPU.
+std::unique_ptr<Backend> createCudaBackend(int device);
+
+} // namespace sim::rt
+
+#endif // SIM_RUNTIME_BACKEND_H

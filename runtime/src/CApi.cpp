@@ -1,0 +1,426 @@
+//===- CApi.cpp - the C API of sim_runtime.h ------------------------------===//
+//
+// Thin wrappers over Bundle and Session. This is the only place where
+// exceptions are caught: every entry point turns an Error (or any other
+// exception, e.g. std::bad_alloc) into a status code and a thread-local
+// message, so nothing but C crosses the API.
+//
+//===----------------------------------------------------------------------===//
+
+#include "sim/Runtime/sim_runtime.h"
+
+#include "Bundle.h"
+#include "Error.h"
+#include "Session.h"
+
+#include <cstring>
+#include <new>
+
+using namespace sim::rt;
+
+struct sim_bundle {
+  std::shared_ptr<const Bundle> bundle;
+};
+
+struct sim_session {
+  std::unique_ptr<Session> session;
+};
+
+namespace {
+
+thread_local std::string lastError;
+
+sim_status failWith(sim_status status, const std::string &message) {
+  lastError = message;
+  return status;
+}
+
+/// Runs `body`, mapping exceptions to a status and sim_last_error().
+template <typename Body> sim_status guard(Body &&body) {
+  try {
+    body();
+    lastError.clear();
+    return SIM_OK;
+  } catch (const Error &error) {
+    return failWith(error.status, error.what());
+  } catch (const std::bad_alloc &) {
+    return failWith(SIM_ERROR_BACKEND, "out of host memory");
+  } catch (const std::exception &error) {
+    return failWith(SIM_ERROR_BACKEND, error.what());
+  }
+}
+
+sim_status nullArgument(const char *function, const char *what) {
+  return failWith(SIM_ERROR_INVALID_ARGUMENT,
+                  std::string(function) + ": " + what + " is null");
+}
+
+#define SIM_REQUIRE(pointer)                                                   \
+  if (!(pointer))                                                              \
+  return nullArgument(__func__, #pointer)
+
+} // namespace
+
+extern "C" {
+
+const char *sim_last_error(void) { return lastError.c_str(); }
+
+const char *sim_status_name(sim_status status) {
+  switch (status) {
+  case SIM_OK:
+    return "ok";
+  case SIM_ERROR_INVALID_ARGUMENT:
+    return "invalid argument";
+  case SIM_ERROR_IO:
+    return "i/o error";
+  case SIM_ERROR_BUNDLE:
+    return "bad bundle";
+  case SIM_ERROR_NO_DRIVER:
+    return "no CUDA driver";
+  case SIM_ERROR_NO_DEVICE:
+    return "no CUDA device";
+  case SIM_ERROR_BACKEND:
+    return "backend error";
+  case SIM_ERROR_NONFINITE:
+    return "non-finite value";
+  case SIM_ERROR_CLOCK:
+    return "clock error";
+  }
+  return "unknown status";
+}
+
+const char *sim_strategy_name(sim_strategy strategy) {
+  if (uint32_t(strategy) >= uint32_t(kNumStrategies))
+    return "unknown";
+  return strategyName(Strategy(strategy));
+}
+
+sim_status sim_strategy_parse(const char *name, sim_strategy *out) {
+  SIM_REQUIRE(name);
+  SIM_REQUIRE(out);
+  std::optional<Strategy> strategy = parseStrategy(name);
+  if (!strategy)
+    return failWith(SIM_ERROR_INVALID_ARGUMENT,
+                    "unknown strategy '" + std::string(name) +
+                        "' (simple, traditional, hip, hip-cache)");
+  *out = sim_strategy(*strategy);
+  lastError.clear();
+  return SIM_OK;
+}
+
+const char *sim_backend_name(sim_backend backend) {
+  switch (backend) {
+  case SIM_BACKEND_AUTO:
+    return "auto";
+  case SIM_BACKEND_CPU:
+    return "cpu";
+  case SIM_BACKEND_CUDA:
+    return "cuda";
+  }
+  return "unknown";
+}
+
+sim_status sim_backend_parse(const char *name, sim_backend *out) {
+  SIM_REQUIRE(name);
+  SIM_REQUIRE(out);
+  for (sim_backend backend :
+       {SIM_BACKEND_AUTO, SIM_BACKEND_CPU, SIM_BACKEND_CUDA})
+    if (std::strcmp(name, sim_backend_name(backend)) == 0) {
+      *out = backend;
+      lastError.clear();
+      return SIM_OK;
+    }
+  return failWith(SIM_ERROR_INVALID_ARGUMENT, "unknown backend '" +
+                                                  std::string(name) +
+                                                  "' (auto, cpu, cuda)");
+}
+
+//===----------------------------------------------------------------------===//
+// Bundles
+//===----------------------------------------------------------------------===//
+
+sim_status sim_bundle_open(const char *path, sim_bundle **out) {
+  SIM_REQUIRE(path);
+  SIM_REQUIRE(out);
+  *out = nullptr;
+  return guard([&] { *out = new sim_bundle{Bundle::read(path)}; });
+}
+
+sim_status sim_bundle_open_memory(const void *data, size_t size,
+                                  sim_bundle **out) {
+  SIM_REQUIRE(out);
+  *out = nullptr;
+  if (!data && size)
+    return nullArgument(__func__, "data");
+  return guard([&] {
+    *out = new sim_bundle{
+        Bundle::parse(static_cast<const uint8_t *>(data), size, "<memory>")};
+  });
+}
+
+void sim_bundle_close(sim_bundle *bundle) { delete bundle; }
+
+const char *sim_bundle_scene_name(const sim_bundle *bundle) {
+  return bundle ? bundle->bundle->scene.name.c_str() : "";
+}
+int64_t sim_bundle_range(const sim_bundle *bundle) {
+  return bundle ? bundle->bundle->scene.range : 0;
+}
+double sim_bundle_dt(const sim_bundle *bundle) {
+  return bundle ? bundle->bundle->scene.dt.f : 0;
+}
+const char *sim_bundle_dt_type(const sim_bundle *bundle) {
+  return bundle ? scalarTypeName(bundle->bundle->scene.dt.type) : "";
+}
+int64_t sim_bundle_max_steps(const sim_bundle *bundle) {
+  return bundle ? bundle->bundle->scene.maxSteps : 0;
+}
+
+static const Bundle::StrategyCode *codeOf(const sim_bundle *bundle,
+                                          sim_strategy strategy) {
+  if (!bundle || uint32_t(strategy) >= uint32_t(kNumStrategies))
+    return nullptr;
+  const Bundle::StrategyCode &code = bundle->bundle->code(Strategy(strategy));
+  return code.present ? &code : nullptr;
+}
+
+int sim_bundle_has_strategy(const sim_bundle *bundle, sim_strategy strategy) {
+  return codeOf(bundle, strategy) != nullptr;
+}
+int sim_bundle_has_ptx(const sim_bundle *bundle, sim_strategy strategy) {
+  const Bundle::StrategyCode *code = codeOf(bundle, strategy);
+  return code && code->ptx.has_value();
+}
+int sim_bundle_has_cpu(const sim_bundle *bundle, sim_strategy strategy) {
+  const Bundle::StrategyCode *code = codeOf(bundle, strategy);
+  return code && code->cpu.has_value();
+}
+
+int32_t sim_bundle_num_buffers(const sim_bundle *bundle) {
+  return bundle ? int32_t(bundle->bundle->scene.buffers.size()) : 0;
+}
+
+sim_status sim_bundle_buffer(const sim_bundle *bundle, int32_t index,
+                             sim_buffer_info *out) {
+  SIM_REQUIRE(bundle);
+  SIM_REQUIRE(out);
+  const std::vector<SceneBuffer> &buffers = bundle->bundle->scene.buffers;
+  if (index < 0 || size_t(index) >= buffers.size())
+    return failWith(SIM_ERROR_INVALID_ARGUMENT,
+                    "buffer index " + std::to_string(index) +
+                        " is out of range (" + std::to_string(buffers.size()) +
+                        " buffers)");
+  const SceneBuffer &buffer = buffers[index];
+  out->name = buffer.name.c_str();
+  out->element_type = buffer.type.text.c_str();
+  out->scalar_type = buffer.type.f64 ? "f64" : "f32";
+  out->scalar_bytes = buffer.type.scalarBytes();
+  out->lanes = buffer.type.lanes;
+  out->interp = buffer.interp.c_str();
+  out->boundary = buffer.boundary.c_str();
+  out->observed = buffer.observed;
+  out->exact = buffer.exact;
+  lastError.clear();
+  return SIM_OK;
+}
+
+int32_t sim_bundle_num_params(const sim_bundle *bundle) {
+  return bundle ? int32_t(bundle->bundle->scene.params.size()) : 0;
+}
+
+sim_status sim_bundle_param(const sim_bundle *bundle, int32_t index,
+                            sim_param_info *out) {
+  SIM_REQUIRE(bundle);
+  SIM_REQUIRE(out);
+  const std::vector<SceneParam> &params = bundle->bundle->scene.params;
+  if (index < 0 || size_t(index) >= params.size())
+    return failWith(SIM_ERROR_INVALID_ARGUMENT,
+                    "parameter index " + std::to_string(index) +
+                        " is out of range (" + std::to_string(params.size()) +
+                        " parameters)");
+  const SceneParam &param = params[index];
+  out->name = param.name.c_str();
+  out->type = scalarTypeName(param.type);
+  out->default_value = param.defaultText.c_str();
+  lastError.clear();
+  return SIM_OK;
+}
+
+//===----------------------------------------------------------------------===//
+// Sessions
+//===----------------------------------------------------------------------===//
+
+void sim_session_options_init(sim_session_options *options) {
+  if (!options)
+    return;
+  *options = {};
+  options->strategy = SIM_STRATEGY_HIP;
+  options->backend = SIM_BACKEND_AUTO;
+}
+
+sim_status sim_session_create(const sim_bundle *bundle,
+                              const sim_session_options *options,
+                              sim_session **out) {
+  SIM_REQUIRE(bundle);
+  SIM_REQUIRE(out);
+  *out = nullptr;
+  sim_session_options defaults;
+  sim_session_options_init(&defaults);
+  return guard([&] {
+    *out = new sim_session{std::make_unique<Session>(
+        bundle->bundle, options ? *options : defaults)};
+  });
+}
+
+void sim_session_destroy(sim_session *session) { delete session; }
+
+sim_backend sim_session_backend(const sim_session *session) {
+  return session ? session->session->backendKind() : SIM_BACKEND_AUTO;
+}
+const char *sim_session_device(const sim_session *session) {
+  return session ? session->session->device().c_str() : "";
+}
+const char *sim_session_backend_note(const sim_session *session) {
+  return session ? session->session->backendNote().c_str() : "";
+}
+int64_t sim_session_group_size(const sim_session *session) {
+  return session ? session->session->groupSize() : 0;
+}
+
+sim_status sim_session_set(sim_session *session, const char *name,
+                           const char *value) {
+  SIM_REQUIRE(session);
+  SIM_REQUIRE(name);
+  SIM_REQUIRE(value);
+  return guard([&] { session->session->set(name, value); });
+}
+
+sim_status sim_session_get(const sim_session *session, const char *name,
+                           char *value, size_t capacity) {
+  SIM_REQUIRE(session);
+  SIM_REQUIRE(name);
+  SIM_REQUIRE(value);
+  return guard([&] {
+    std::string text = session->session->get(name);
+    if (text.size() + 1 > capacity)
+      fail(SIM_ERROR_INVALID_ARGUMENT,
+           "the value of '" + std::string(name) + "' takes " +
+               std::to_string(text.size() + 1) + " bytes, more than " +
+               std::to_string(capacity));
+    std::memcpy(value, text.c_str(), text.size() + 1);
+  });
+}
+
+int64_t sim_session_range(const sim_session *session) {
+  return session ? session->session->range() : 0;
+}
+
+sim_status sim_session_init(sim_session *session) {
+  SIM_REQUIRE(session);
+  return guard([&] { session->session->init(); });
+}
+
+int64_t sim_session_time(const sim_session *session) {
+  return session ? session->session->time() : 0;
+}
+
+sim_status sim_session_buffer_bytes(const sim_session *session,
+                                    const char *buffer, size_t *out) {
+  SIM_REQUIRE(session);
+  SIM_REQUIRE(buffer);
+  SIM_REQUIRE(out);
+  return guard([&] { *out = session->session->hostBytes(buffer); });
+}
+
+sim_status sim_session_get_buffer(sim_session *session, const char *buffer,
+                                  void *data, size_t bytes) {
+  SIM_REQUIRE(session);
+  SIM_REQUIRE(buffer);
+  SIM_REQUIRE(data);
+  return guard([&] { session->session->getBuffer(buffer, data, bytes); });
+}
+
+sim_status sim_session_set_buffer(sim_session *session, const char *buffer,
+                                  const void *data, size_t bytes) {
+  SIM_REQUIRE(session);
+  SIM_REQUIRE(buffer);
+  SIM_REQUIRE(data);
+  return guard([&] { session->session->setBuffer(buffer, data, bytes); });
+}
+
+int sim_session_has_exact(const sim_session *session, const char *buffer) {
+  return session && buffer && session->session->hasExact(buffer);
+}
+
+sim_status sim_session_exact(sim_session *session, const char *buffer,
+                             void *data, size_t bytes) {
+  SIM_REQUIRE(session);
+  SIM_REQUIRE(buffer);
+  SIM_REQUIRE(data);
+  return guard([&] { session->session->exact(buffer, data, bytes); });
+}
+
+void sim_session_set_progress(sim_session *session, sim_progress_fn progress,
+                              void *user) {
+  if (session)
+    session->session->setProgress(progress, user);
+}
+
+sim_status sim_session_run(sim_session *session, int64_t steps) {
+  SIM_REQUIRE(session);
+  return guard([&] { session->session->run(steps); });
+}
+
+sim_status sim_session_metrics(const sim_session *session, sim_metrics *out) {
+  SIM_REQUIRE(session);
+  SIM_REQUIRE(out);
+  *out = session->session->metrics;
+  lastError.clear();
+  return SIM_OK;
+}
+
+int32_t sim_session_num_components(const sim_session *session) {
+  return session ? int32_t(session->session->plan().components.size()) : 0;
+}
+
+const char *sim_session_component(const sim_session *session, int32_t index) {
+  if (!session || index < 0 ||
+      size_t(index) >= session->session->plan().components.size())
+    return nullptr;
+  return session->session->plan().components[index].name.c_str();
+}
+
+int64_t sim_session_evaluations(const sim_session *session, int32_t component) {
+  if (!session || component < 0 ||
+      size_t(component) >= session->session->evaluations.size())
+    return 0;
+  return session->session->evaluations[component];
+}
+
+int64_t sim_session_histogram(const sim_session *session, int64_t size) {
+  if (!session || size < 1 ||
+      size >= int64_t(session->session->histogram.size()))
+    return 0;
+  return session->session->histogram[size];
+}
+
+sim_status sim_session_nonfinite(const sim_session *session,
+                                 sim_nonfinite *out) {
+  SIM_REQUIRE(session);
+  SIM_REQUIRE(out);
+  const Session::NonFinite &found = session->session->nonFinite;
+  if (!found.found)
+    return failWith(SIM_ERROR_INVALID_ARGUMENT,
+                    "the last run found no non-finite value");
+  out->base_step = found.baseStep;
+  out->component = found.component.c_str();
+  out->buffer = found.buffer.c_str();
+  out->kernel = found.kernel.c_str();
+  out->item = found.item;
+  out->lane = found.lane;
+  out->value = found.value;
+  lastError.clear();
+  return SIM_OK;
+}
+
+} // extern "C"

@@ -1,0 +1,295 @@
+//===- CpuBackend.cpp - running the CPU shared object of a bundle ---------===//
+//
+// The CPU section of a bundle is an ELF shared object exporting
+// `sim_cpu_<kernel>(params, first_group, end_group, group_size)`
+// (docs/Bundle.md). It is written to an anonymous memfd and dlopen'ed from
+// /proc/self/fd, so nothing touches the file system. An `items` launch
+// splits its groups into contiguous ranges run by a small pool of threads;
+// the kernels update the clock with atomics, so concurrent disjoint ranges
+// are what the ABI promises to support. Launches are synchronous, which
+// makes reads, writes and timing trivial.
+//
+//===----------------------------------------------------------------------===//
+
+#include "Backend.h"
+#include "Error.h"
+
+#include <chrono>
+#include <condition_variable>
+#include <cstdlib>
+#include <cstring>
+#include <dlfcn.h>
+#include <mutex>
+#include <sys/mman.h>
+#include <thread>
+#include <unistd.h>
+
+namespace sim::rt {
+
+namespace {
+
+using KernelFn = void (*)(void **params, int64_t firstGroup, int64_t endGroup,
+                          int64_t groupSize);
+
+/// Runs a range of groups split over a fixed set of threads, the calling
+/// thread included. One job at a time; workers sleep between jobs.
+class ThreadPool {
+public:
+  explicit ThreadPool(int threads) {
+    for (int i = 1; i < threads; ++i)
+      workers.emplace_back([this, i] { work(i); });
+  }
+  ~ThreadPool() {
+    {
+      std::lock_guard<std::mutex> lock(mutex);
+      stopping = true;
+    }
+    wake.notify_all();
+    for (std::thread &worker : workers)
+      worker.join();
+  }
+
+  int size() const { return int(workers.size()) + 1; }
+
+  /// Calls `fn(params, first, end, groupSize)` on disjoint ranges covering
+  /// [0, groups) and returns when all are done.
+  void run(KernelFn fn, void **params, int64_t groups, int64_t groupSize) {
+    int64_t parts = std::min<int64_t>(size(), groups);
+    if (parts <= 1) {
+      fn(params, 0, groups, groupSize);
+      return;
+    }
+    {
+      std::lock_guard<std::mutex> lock(mutex);
+      job = {fn, params, groups, groupSize, parts};
+      pending = int(parts) - 1;
+      ++generation;
+    }
+    wake.notify_all();
+    runPart(0);
+    std::unique_lock<std::mutex> lock(mutex);
+    done.wait(lock, [this] { return pending == 0; });
+  }
+
+private:
+  struct Job {
+    KernelFn fn;
+    void **params;
+    int64_t groups, groupSize, parts;
+  };
+
+  void runPart(int64_t part) {
+    int64_t first = job.groups * part / job.parts;
+    int64_t end = job.groups * (part + 1) / job.parts;
+    job.fn(job.params, first, end, job.groupSize);
+  }
+
+  void work(int index) {
+    uint64_t seen = 0;
+    for (;;) {
+      std::unique_lock<std::mutex> lock(mutex);
+      wake.wait(lock, [&] { return stopping || generation != seen; });
+      if (stopping)
+        return;
+      seen = generation;
+      bool mine = index < job.parts;
+      lock.unlock();
+      if (!mine)
+        continue;
+      runPart(index);
+      lock.lock();
+      if (--pending == 0)
+        done.notify_one();
+    }
+  }
+
+  std::vector<std::thread> workers;
+  std::mutex mutex;
+  std::condition_variable wake, done;
+  Job job{};
+  int pending = 0;
+  uint64_t generation = 0;
+  bool stopping = false;
+};
+
+#if defined(__x86_64__)
+constexpr uint16_t kHostMachine = 62; // EM_X86_64
+constexpr const char *kHostName = "x86-64";
+#elif defined(__aarch64__)
+constexpr uint16_t kHostMachine = 183; // EM_AARCH64
+constexpr const char *kHostName = "AArch64";
+#else
+constexpr uint16_t kHostMachine = 0;
+constexpr const char *kHostName = "this machine";
+#endif
+
+class CpuBackend final : public Backend {
+public:
+  explicit CpuBackend(int threads)
+      : pool(threads > 0 ? threads
+                         : std::max(1u, std::thread::hardware_concurrency())) {}
+
+  ~CpuBackend() override {
+    if (!library)
+      return;
+    dlclose(library);
+    if (memfd < 0)
+      return;
+    // dlopen finds loaded objects by path first, and /proc/self/fd/N names
+    // whatever file descriptor N is now: the descriptor is released only
+    // once the object is really gone, so no later load can be mistaken for
+    // this one.
+    if (void *still = dlopen(path.c_str(), RTLD_NOW | RTLD_NOLOAD)) {
+      dlclose(still);
+      return;
+    }
+    close(memfd);
+  }
+
+  sim_backend kind() const override { return SIM_BACKEND_CPU; }
+
+  std::string device() const override {
+    return "CPU (" + std::to_string(pool.size()) +
+           (pool.size() == 1 ? " thread)" : " threads)");
+  }
+
+  void checkGroupSize(int64_t groupSize) const override {
+    if (groupSize < 1)
+      fail(SIM_ERROR_INVALID_ARGUMENT,
+           "group size " + std::to_string(groupSize) + " is not positive");
+  }
+
+  void load(const Bundle::StrategyCode &code, Strategy strategy,
+            const std::vector<std::string> &kernelNames) override {
+    const std::vector<uint8_t> &object = *code.cpu;
+    std::string what = std::string("the CPU kernels of strategy '") +
+                       strategyName(strategy) + "'";
+    checkElf(object, what);
+    openFromMemory(object, what);
+    for (const std::string &name : kernelNames) {
+      std::string symbol = "sim_cpu_" + name;
+      void *address = dlsym(library, symbol.c_str());
+      if (!address)
+        fail(SIM_ERROR_BACKEND, what + " do not export " + symbol +
+                                    " (kernel '" + name + "' of the plan)");
+      kernels.push_back(reinterpret_cast<KernelFn>(address));
+    }
+  }
+
+  DevicePtr allocate(size_t bytes) override {
+    // 64-byte alignment: a cache line, and enough for any vector element.
+    void *memory =
+        std::aligned_alloc(64, (std::max<size_t>(bytes, 1) + 63) / 64 * 64);
+    if (!memory)
+      fail(SIM_ERROR_BACKEND, "cannot allocate " + std::to_string(bytes) +
+                                  " bytes of host memory");
+    std::memset(memory, 0, bytes);
+    return reinterpret_cast<DevicePtr>(memory);
+  }
+  void release(DevicePtr memory) override {
+    std::free(reinterpret_cast<void *>(memory));
+  }
+  void zero(DevicePtr memory, size_t bytes) override {
+    std::memset(reinterpret_cast<void *>(memory), 0, bytes);
+  }
+  void write(DevicePtr to, const void *from, size_t bytes) override {
+    std::memcpy(reinterpret_cast<void *>(to), from, bytes);
+  }
+  void read(void *to, DevicePtr from, size_t bytes) override {
+    std::memcpy(to, reinterpret_cast<const void *>(from), bytes);
+  }
+
+  void launch(int kernel, void **params, int64_t groups, int64_t groupSize,
+              int64_t) override {
+    // Workgroup memory is the object's business on the CPU: the ABI passes
+    // no shared-memory size.
+    auto start = std::chrono::steady_clock::now();
+    if (groups == 1)
+      kernels[kernel](params, 0, 1, groupSize);
+    else
+      pool.run(kernels[kernel], params, groups, groupSize);
+    kernelTime += std::chrono::steady_clock::now() - start;
+  }
+
+  void startTimer() override { kernelTime = {}; }
+  double stopTimer() override {
+    return std::chrono::duration<double>(kernelTime).count();
+  }
+
+private:
+  static void checkElf(const std::vector<uint8_t> &object,
+                       const std::string &what) {
+    // e_ident[EI_CLASS] == ELFCLASS64, e_type == ET_DYN, e_machine.
+    uint16_t type = uint16_t(object[16] | object[17] << 8);
+    uint16_t machine = uint16_t(object[18] | object[19] << 8);
+    if (object[4] != 2 || type != 3)
+      fail(SIM_ERROR_BUNDLE, what + " are not a 64-bit ELF shared object");
+    if (kHostMachine && machine != kHostMachine)
+      fail(SIM_ERROR_BUNDLE, what + " are for ELF machine " +
+                                 std::to_string(machine) + ", not for " +
+                                 kHostName);
+  }
+
+  /// dlopen needs a path: an anonymous memfd provides one without a file
+  /// on disk; where memfd_create is missing, a temporary file that is
+  /// removed as soon as it is mapped.
+  void openFromMemory(const std::vector<uint8_t> &object,
+                      const std::string &what) {
+    int fd = memfd_create("sim-cpu-kernels", MFD_CLOEXEC);
+    bool temporary = fd < 0;
+    if (temporary) {
+      const char *dir = std::getenv("TMPDIR");
+      path = std::string(dir && *dir ? dir : "/tmp") + "/sim-kernels-XXXXXX";
+      fd = mkstemp(path.data());
+      if (fd < 0)
+        fail(SIM_ERROR_BACKEND,
+             "cannot create a file for " + what + ": " + std::strerror(errno));
+    } else {
+      path = "/proc/self/fd/" + std::to_string(fd);
+    }
+    auto cleanUp = [&] {
+      close(fd);
+      if (temporary)
+        unlink(path.c_str());
+    };
+    size_t written = 0;
+    while (written < object.size()) {
+      ssize_t n = ::write(fd, object.data() + written, object.size() - written);
+      if (n < 0 && errno == EINTR)
+        continue;
+      if (n <= 0) {
+        int saved = errno;
+        cleanUp();
+        fail(SIM_ERROR_BACKEND,
+             "cannot write " + what + ": " + std::strerror(saved));
+      }
+      written += size_t(n);
+    }
+    library = dlopen(path.c_str(), RTLD_NOW | RTLD_LOCAL);
+    if (!library) {
+      std::string error = dlerror();
+      cleanUp();
+      fail(SIM_ERROR_BACKEND, "cannot load " + what + ": " + error);
+    }
+    if (temporary)
+      cleanUp();
+    else
+      memfd = fd;
+  }
+
+  ThreadPool pool;
+  void *library = nullptr;
+  /// The memfd the library was loaded from, and the path it was loaded by.
+  int memfd = -1;
+  std::string path;
+  std::vector<KernelFn> kernels;
+  std::chrono::steady_clock::duration kernelTime{};
+};
+
+} // namespace
+
+std::unique_ptr<Backend> createCpuBackend(int threads) {
+  return std::make_unique<CpuBackend>(threads);
+}
+
+} // namespace sim::rt

@@ -1,0 +1,358 @@
+//===- CudaBackend.cpp - running the PTX of a bundle on a GPU -------------===//
+//
+// The driver is loaded with dlopen (CudaDriver.h) the first time a CUDA
+// session is created. The backend JIT-compiles the strategy's PTX with
+// cuModuleLoadDataEx (with log buffers, so a failure says why), keeps all
+// work on one stream, and turns every failing driver call into a message
+// with the call's name and the driver's error string.
+//
+//===----------------------------------------------------------------------===//
+
+#include "Backend.h"
+#include "CudaDriver.h"
+#include "Error.h"
+
+#include <climits>
+#include <cstdlib>
+#include <dlfcn.h>
+#include <mutex>
+
+namespace sim::rt {
+namespace cuda {
+
+std::string Driver::message(CUresult result, const char *call) const {
+  const char *name = nullptr, *text = nullptr;
+  if (cuGetErrorName(result, &name) != CUDA_SUCCESS || !name)
+    name = nullptr;
+  if (cuGetErrorString(result, &text) != CUDA_SUCCESS || !text)
+    text = nullptr;
+  std::string message = std::string(call) + " failed: ";
+  message += name ? name : "CUDA error " + std::to_string(result);
+  if (text)
+    message += std::string(" (") + text + ")";
+  return message;
+}
+
+void Driver::check(CUresult result, const char *call) const {
+  if (result != CUDA_SUCCESS)
+    fail(SIM_ERROR_BACKEND, message(result, call));
+}
+
+namespace {
+
+/// Loads the driver and initialises it. Any failure is remembered, so that
+/// every session gets the same message without retrying.
+struct LoadedDriver {
+  Driver table;
+  sim_status status = SIM_OK;
+  std::string error;
+
+  LoadedDriver() {
+    const char *override = std::getenv("SIM_CUDA_DRIVER");
+    const char *path = override && *override ? override : "libcuda.so.1";
+    // The handle stays open for the life of the process: drivers do not
+    // unload cleanly.
+    void *library = dlopen(path, RTLD_NOW | RTLD_LOCAL);
+    if (!library) {
+      status = SIM_ERROR_NO_DRIVER;
+      error = override && *override
+                  ? "no CUDA driver (" + std::string(path) +
+                        " from SIM_CUDA_DRIVER: " + dlerror() + ")"
+                  : "no CUDA driver (libcuda.so.1 not found)";
+      return;
+    }
+    std::string missing;
+#define SIM_CUDA_LOAD(field, symbol, params)                                   \
+  table.field = reinterpret_cast<decltype(table.field)>(dlsym(library, symbol));
+#define SIM_CUDA_REQUIRE(field, symbol, params)                                \
+  if (!table.field)                                                            \
+    missing += std::string(missing.empty() ? "" : ", ") + symbol;
+    SIM_CUDA_REQUIRED_SYMBOLS(SIM_CUDA_LOAD)
+    SIM_CUDA_OPTIONAL_SYMBOLS(SIM_CUDA_LOAD)
+    SIM_CUDA_REQUIRED_SYMBOLS(SIM_CUDA_REQUIRE)
+#undef SIM_CUDA_LOAD
+#undef SIM_CUDA_REQUIRE
+    if (!missing.empty()) {
+      status = SIM_ERROR_NO_DRIVER;
+      error = "the CUDA driver " + std::string(path) + " lacks " + missing +
+              " (too old?)";
+      return;
+    }
+    CUresult result = table.cuInit(0);
+    if (result == CUDA_ERROR_STUB_LIBRARY) {
+      status = SIM_ERROR_NO_DRIVER;
+      error = "no CUDA driver (" + std::string(path) +
+              " is the stub library of the CUDA toolkit)";
+      return;
+    }
+    if (result == CUDA_ERROR_NO_DEVICE) {
+      status = SIM_ERROR_NO_DEVICE;
+      error = "no CUDA device";
+      return;
+    }
+    if (result != CUDA_SUCCESS) {
+      status = SIM_ERROR_NO_DEVICE;
+      error = "no CUDA device (" + table.message(result, "cuInit") + ")";
+      return;
+    }
+    int count = 0;
+    result = table.cuDeviceGetCount(&count);
+    if (result != CUDA_SUCCESS || count == 0) {
+      status = SIM_ERROR_NO_DEVICE;
+      error = "no CUDA device";
+    }
+  }
+};
+
+} // namespace
+
+const Driver &driver() {
+  static LoadedDriver loaded;
+  if (loaded.status != SIM_OK)
+    fail(loaded.status, loaded.error);
+  return loaded.table;
+}
+
+} // namespace cuda
+
+namespace {
+
+using namespace cuda;
+
+class CudaBackend final : public Backend {
+public:
+  explicit CudaBackend(int ordinal) : cu(driver()) {
+    try {
+      open(ordinal);
+    } catch (...) {
+      // A constructor that throws runs no destructor.
+      close();
+      throw;
+    }
+  }
+
+  ~CudaBackend() override { close(); }
+
+  void open(int ordinal) {
+    int count = 0;
+    cu.check(cu.cuDeviceGetCount(&count), "cuDeviceGetCount");
+    if (ordinal < 0 || ordinal >= count)
+      fail(SIM_ERROR_INVALID_ARGUMENT,
+           "CUDA device " + std::to_string(ordinal) + " does not exist (" +
+               std::to_string(count) + " device" + (count == 1 ? "" : "s") +
+               ")");
+    cu.check(cu.cuDeviceGet(&device_, ordinal), "cuDeviceGet");
+    char name[256] = {};
+    cu.check(cu.cuDeviceGetName(name, sizeof name - 1, device_),
+             "cuDeviceGetName");
+    int major = 0, minor = 0;
+    cu.check(cu.cuDeviceGetAttribute(
+                 &major, CU_DEVICE_ATTRIBUTE_COMPUTE_CAPABILITY_MAJOR, device_),
+             "cuDeviceGetAttribute");
+    cu.check(cu.cuDeviceGetAttribute(
+                 &minor, CU_DEVICE_ATTRIBUTE_COMPUTE_CAPABILITY_MINOR, device_),
+             "cuDeviceGetAttribute");
+    description = std::string(name) + " (sm_" + std::to_string(major) +
+                  std::to_string(minor) + ")";
+    // The primary context is the one the CUDA runtime and other libraries
+    // in the process share.
+    cu.check(cu.cuDevicePrimaryCtxRetain(&context, device_),
+             "cuDevicePrimaryCtxRetain");
+    retained = true;
+    activate();
+    // A non-blocking stream: nothing else in the process orders with it,
+    // and every copy of this backend goes through it.
+    cu.check(cu.cuStreamCreate(&stream, CU_STREAM_NON_BLOCKING),
+             "cuStreamCreate");
+    cu.check(cu.cuEventCreate(&start, CU_EVENT_DEFAULT), "cuEventCreate");
+    cu.check(cu.cuEventCreate(&stop, CU_EVENT_DEFAULT), "cuEventCreate");
+  }
+
+  void close() {
+    // Errors are ignored: a destructor has nobody to tell, and a sticky
+    // error of an earlier kernel would fail every call here.
+    if (context)
+      cu.cuCtxSetCurrent(context);
+    dropGraph();
+    if (stream)
+      cu.cuStreamSynchronize(stream);
+    if (module)
+      cu.cuModuleUnload(module);
+    if (start)
+      cu.cuEventDestroy(start);
+    if (stop)
+      cu.cuEventDestroy(stop);
+    if (stream)
+      cu.cuStreamDestroy(stream);
+    if (retained)
+      cu.cuDevicePrimaryCtxRelease(device_);
+    module = nullptr;
+    start = stop = nullptr;
+    stream = nullptr;
+    retained = false;
+  }
+
+  sim_backend kind() const override { return SIM_BACKEND_CUDA; }
+  std::string device() const override { return description; }
+
+  void checkGroupSize(int64_t groupSize) const override {
+    // Kernels reduce per warp with every lane taking part.
+    if (groupSize < 32 || groupSize > 1024 || groupSize % 32 != 0)
+      fail(SIM_ERROR_INVALID_ARGUMENT,
+           "group size " + std::to_string(groupSize) +
+               " is not a multiple of 32 between 32 and 1024, as CUDA needs");
+  }
+
+  void activate() override {
+    cu.check(cu.cuCtxSetCurrent(context), "cuCtxSetCurrent");
+  }
+
+  void load(const Bundle::StrategyCode &code, Strategy strategy,
+            const std::vector<std::string> &kernelNames) override {
+    std::string what =
+        std::string("the PTX of strategy '") + strategyName(strategy) + "'";
+    std::string infoLog(16384, '\0'), errorLog(16384, '\0');
+    CUjit_option options[] = {
+        CU_JIT_INFO_LOG_BUFFER, CU_JIT_INFO_LOG_BUFFER_SIZE_BYTES,
+        CU_JIT_ERROR_LOG_BUFFER, CU_JIT_ERROR_LOG_BUFFER_SIZE_BYTES};
+    void *values[] = {
+        infoLog.data(), reinterpret_cast<void *>(uintptr_t(infoLog.size())),
+        errorLog.data(), reinterpret_cast<void *>(uintptr_t(errorLog.size()))};
+    CUresult result =
+        cu.cuModuleLoadDataEx(&module, code.ptx->c_str(), 4, options, values);
+    if (result != CUDA_SUCCESS) {
+      module = nullptr;
+      std::string log = errorLog.c_str();
+      while (!log.empty() && (log.back() == '\n' || log.back() == ' '))
+        log.pop_back();
+      fail(SIM_ERROR_BACKEND, "cannot JIT-compile " + what + " for " +
+                                  description + ": " +
+                                  cu.message(result, "cuModuleLoadDataEx") +
+                                  (log.empty() ? "" : "\nJIT log:\n" + log));
+    }
+    for (const std::string &name : kernelNames) {
+      CUfunction function = nullptr;
+      result = cu.cuModuleGetFunction(&function, module, name.c_str());
+      if (result != CUDA_SUCCESS)
+        fail(SIM_ERROR_BACKEND, what + " has no kernel '" + name + "' (" +
+                                    cu.message(result, "cuModuleGetFunction") +
+                                    ")");
+      kernels.push_back({function, 48 * 1024});
+    }
+  }
+
+  DevicePtr allocate(size_t bytes) override {
+    CUdeviceptr memory = 0;
+    CUresult result = cu.cuMemAlloc(&memory, std::max<size_t>(bytes, 1));
+    if (result != CUDA_SUCCESS)
+      fail(SIM_ERROR_BACKEND, cu.message(result, "cuMemAlloc") + " for " +
+                                  std::to_string(bytes) + " bytes");
+    zero(memory, bytes);
+    return memory;
+  }
+  void release(DevicePtr memory) override {
+    // cuMemFree does not wait for kernels on a non-blocking stream.
+    cu.cuStreamSynchronize(stream);
+    cu.cuMemFree(memory);
+  }
+  void zero(DevicePtr memory, size_t bytes) override {
+    cu.check(cu.cuMemsetD8Async(memory, 0, bytes, stream), "cuMemsetD8Async");
+  }
+  void write(DevicePtr to, const void *from, size_t bytes) override {
+    // From pageable memory the call returns once the bytes are staged, so
+    // `from` may be reused right away.
+    cu.check(cu.cuMemcpyHtoDAsync(to, from, bytes, stream),
+             "cuMemcpyHtoDAsync");
+  }
+  void read(void *to, DevicePtr from, size_t bytes) override {
+    cu.check(cu.cuMemcpyDtoHAsync(to, from, bytes, stream),
+             "cuMemcpyDtoHAsync");
+    cu.check(cu.cuStreamSynchronize(stream), "cuStreamSynchronize");
+  }
+
+  void launch(int kernel, void **params, int64_t groups, int64_t groupSize,
+              int64_t sharedBytes) override {
+    Kernel &k = kernels[kernel];
+    if (sharedBytes > INT_MAX)
+      fail(SIM_ERROR_INVALID_ARGUMENT, "a launch asks for " +
+                                           std::to_string(sharedBytes) +
+                                           " bytes of shared memory");
+    if (sharedBytes > k.sharedLimit) {
+      // Beyond 48 KiB of dynamic shared memory a kernel must opt in.
+      cu.check(cu.cuFuncSetAttribute(
+                   k.function, CU_FUNC_ATTRIBUTE_MAX_DYNAMIC_SHARED_SIZE_BYTES,
+                   int(sharedBytes)),
+               "cuFuncSetAttribute");
+      k.sharedLimit = sharedBytes;
+    }
+    // Kernels loop over the range with a grid stride, so capping the grid
+    // is correct.
+    unsigned grid = unsigned(std::min<int64_t>(groups, INT_MAX));
+    cu.check(cu.cuLaunchKernel(k.function, grid, 1, 1, unsigned(groupSize), 1,
+                               1, unsigned(sharedBytes), stream, params,
+                               nullptr),
+             "cuLaunchKernel");
+  }
+
+  void startTimer() override {
+    cu.check(cu.cuEventRecord(start, stream), "cuEventRecord");
+  }
+  double stopTimer() override {
+    cu.check(cu.cuEventRecord(stop, stream), "cuEventRecord");
+    cu.check(cu.cuEventSynchronize(stop), "cuEventSynchronize");
+    float milliseconds = 0;
+    cu.check(cu.cuEventElapsedTime(&milliseconds, start, stop),
+             "cuEventElapsedTime");
+    return milliseconds / 1000.0;
+  }
+
+  bool supportsGraphs() const override { return cu.hasGraphs(); }
+  void beginCapture() override {
+    dropGraph();
+    cu.check(
+        cu.cuStreamBeginCapture(stream, CU_STREAM_CAPTURE_MODE_THREAD_LOCAL),
+        "cuStreamBeginCapture");
+  }
+  void endCapture() override {
+    cu.check(cu.cuStreamEndCapture(stream, &graph), "cuStreamEndCapture");
+    cu.check(cu.cuGraphInstantiateWithFlags(&graphExec, graph, 0),
+             "cuGraphInstantiateWithFlags");
+  }
+  void replay() override {
+    cu.check(cu.cuGraphLaunch(graphExec, stream), "cuGraphLaunch");
+  }
+  void dropGraph() override {
+    if (graphExec)
+      cu.cuGraphExecDestroy(graphExec);
+    if (graph)
+      cu.cuGraphDestroy(graph);
+    graphExec = nullptr;
+    graph = nullptr;
+  }
+
+private:
+  struct Kernel {
+    CUfunction function;
+    int64_t sharedLimit;
+  };
+
+  const Driver &cu;
+  CUdevice device_ = 0;
+  std::string description;
+  CUcontext context = nullptr;
+  bool retained = false;
+  CUstream stream = nullptr;
+  CUevent start = nullptr, stop = nullptr;
+  CUmodule module = nullptr;
+  std::vector<Kernel> kernels;
+  CUgraph graph = nullptr;
+  CUgraphExec graphExec = nullptr;
+};
+
+} // namespace
+
+std::unique_ptr<Backend> createCudaBackend(int device) {
+  return std::make_unique<CudaBackend>(device);
+}
+
+} // namespace sim::rt

@@ -1,0 +1,624 @@
+//===- Session.cpp - the plan executor ------------------------------------===//
+//
+// Executes docs/Plan.md. The host never decides a step size: it writes the
+// end of a run into clock slot 3, launches the step phase K times ahead
+// (K = remaining base steps / the mean big step seen so far, starting from
+// the largest possible one), reads T + m once per batch, and stops when the
+// clock reaches the end. Kernels of big steps past the end do nothing, so
+// launching ahead is safe.
+//
+//===----------------------------------------------------------------------===//
+
+#include "Session.h"
+#include "Error.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstring>
+#include <limits>
+
+namespace sim::rt {
+
+namespace {
+
+/// Step phases launched between two looks at the clock, at most: enough to
+/// hide the host round trip, few enough to keep progress reports and the
+/// driver's launch queue reasonable.
+constexpr int64_t kMaxBatch = 256;
+
+/// Largest number of bytes one buffer may take (both halves).
+constexpr int64_t kMaxBufferBytes = int64_t(1) << 50;
+
+std::string listNames(const std::vector<std::string> &names) {
+  std::string list;
+  for (const std::string &name : names)
+    list += (list.empty() ? "" : ", ") + name;
+  return list.empty() ? "none" : list;
+}
+
+} // namespace
+
+Session::Session(std::shared_ptr<const Bundle> bundleIn,
+                 const sim_session_options &optionsIn)
+    : bundle(std::move(bundleIn)), options(optionsIn) {
+  if (uint32_t(options.strategy) >= kNumStrategies)
+    fail(SIM_ERROR_INVALID_ARGUMENT,
+         "unknown strategy " + std::to_string(int(options.strategy)));
+  Strategy strategy = Strategy(options.strategy);
+  std::string name = strategyName(strategy);
+  const Bundle::StrategyCode &code = bundle->code(strategy);
+  if (!code.present) {
+    std::vector<std::string> present;
+    for (Strategy s : bundle->scene.strategies)
+      present.push_back(strategyName(s));
+    fail(SIM_ERROR_BUNDLE, "bundle '" + bundle->name +
+                               "' has no plan for strategy '" + name +
+                               "' (it has: " + listNames(present) + ")");
+  }
+  plan_ = &code.plan;
+
+  auto noCode = [&](const char *what, const char *backendName) {
+    fail(SIM_ERROR_BUNDLE, "bundle '" + bundle->name + "' has no " + what +
+                               " for strategy '" + name + "'; the " +
+                               backendName + " backend needs it");
+  };
+  switch (options.backend) {
+  case SIM_BACKEND_CUDA:
+    if (!code.ptx)
+      noCode("PTX", "CUDA");
+    backend = createCudaBackend(options.cuda_device);
+    break;
+  case SIM_BACKEND_AUTO:
+    if (!code.ptx) {
+      note = "the bundle has no PTX for strategy '" + name + "'";
+    } else {
+      try {
+        backend = createCudaBackend(options.cuda_device);
+      } catch (const Error &error) {
+        if (error.status != SIM_ERROR_NO_DRIVER &&
+            error.status != SIM_ERROR_NO_DEVICE)
+          throw;
+        note = error.what();
+      }
+    }
+    if (!backend && !code.cpu)
+      fail(SIM_ERROR_BUNDLE, "cannot run strategy '" + name + "' of bundle '" +
+                                 bundle->name + "': " + note +
+                                 ", and it has no CPU code for it either");
+    if (!backend)
+      backend = createCpuBackend(options.cpu_threads);
+    break;
+  case SIM_BACKEND_CPU:
+    if (!code.cpu)
+      noCode("CPU code", "CPU");
+    backend = createCpuBackend(options.cpu_threads);
+    break;
+  default:
+    fail(SIM_ERROR_INVALID_ARGUMENT,
+         "unknown backend " + std::to_string(int(options.backend)));
+  }
+  deviceName = backend->device();
+
+  groupSize_ = options.group_size ? options.group_size : plan_->groupSize;
+  backend->checkGroupSize(groupSize_);
+  kernelNames = plan_->kernelNames();
+  backend->load(code, strategy, kernelNames);
+
+  range_ = scene().range;
+  dt = scene().dt;
+  for (const SceneParam &param : scene().params)
+    params.push_back(param.defaultValue);
+  evaluations.assign(plan_->components.size(), 0);
+  histogram.assign(size_t(scene().maxSteps) + 1, 0);
+}
+
+Session::~Session() {
+  try {
+    backend->activate();
+  } catch (const Error &) {
+    // Freeing below fails quietly too; nothing else to do.
+  }
+  releaseAll();
+}
+
+//===----------------------------------------------------------------------===//
+// Values
+//===----------------------------------------------------------------------===//
+
+void Session::set(const std::string &name, const std::string &text) {
+  if (name == "range") {
+    Value value = parseValue(ScalarType::I64, text, "range");
+    if (value.i < 1)
+      fail(SIM_ERROR_INVALID_ARGUMENT,
+           "range: " + text + " is not a positive number of items");
+    for (const PlanBuffer &buffer : plan_->buffers)
+      if (value.i > kMaxBufferBytes / 2 / buffer.stride)
+        fail(SIM_ERROR_INVALID_ARGUMENT,
+             "range: " + text + " items of buffer '" + buffer.name +
+                 "' would not fit in memory");
+    if (value.i != range_) {
+      // The state of another size is meaningless: start over.
+      backend->activate();
+      releaseAll();
+      range_ = value.i;
+    }
+    return;
+  }
+  if (name == "dt") {
+    dt = parseValue(dt.type, text, "dt");
+    prepared = false;
+    return;
+  }
+  int index = scene().findParam(name);
+  if (index < 0) {
+    std::vector<std::string> names;
+    for (const SceneParam &param : scene().params)
+      names.push_back(param.name);
+    fail(SIM_ERROR_INVALID_ARGUMENT,
+         "'" + name + "' is not range, dt or a parameter of scene '" +
+             scene().name + "' (parameters: " + listNames(names) + ")");
+  }
+  params[index] =
+      parseValue(scene().params[index].type, text, "parameter '" + name + "'");
+  prepared = false;
+}
+
+std::string Session::get(const std::string &name) const {
+  if (name == "range")
+    return std::to_string(range_);
+  if (name == "dt")
+    return dt.text();
+  int index = scene().findParam(name);
+  if (index < 0)
+    fail(SIM_ERROR_INVALID_ARGUMENT, "'" + name +
+                                         "' is not range, dt or a parameter "
+                                         "of scene '" +
+                                         scene().name + "'");
+  return params[index].text();
+}
+
+int Session::bufferIndex(const std::string &name) const {
+  int index = plan_->findBuffer(name);
+  if (index >= 0)
+    return index;
+  std::vector<std::string> names;
+  for (const PlanBuffer &buffer : plan_->buffers)
+    names.push_back(buffer.name);
+  fail(SIM_ERROR_INVALID_ARGUMENT,
+       "'" + name + "' is not a buffer of the plan of strategy '" +
+           strategyName(plan_->strategy) + "' (buffers: " + listNames(names) +
+           ")");
+}
+
+size_t Session::deviceStride(int buffer) const {
+  return size_t(plan_->buffers[buffer].stride);
+}
+
+size_t Session::hostBytes(const std::string &name) const {
+  return size_t(range_) *
+         size_t(plan_->buffers[bufferIndex(name)].type.packedBytes());
+}
+
+//===----------------------------------------------------------------------===//
+// Memory and launches
+//===----------------------------------------------------------------------===//
+
+void Session::allocate() {
+  auto take = [&](size_t bytes) {
+    Memory memory{backend->allocate(bytes), bytes};
+    return memory;
+  };
+  clockMemory = take(size_t(plan_->clockSlots) * sizeof(int64_t));
+  for (size_t i = 0; i < plan_->buffers.size(); ++i) {
+    const PlanBuffer &buffer = plan_->buffers[i];
+    size_t half = size_t(range_) * deviceStride(int(i));
+    buffers.push_back(take(2 * half));
+    snapshots.push_back(buffer.snapshot ? take(half) : Memory{});
+    exacts.push_back(buffer.exact ? take(half) : Memory{});
+  }
+  clock.assign(size_t(plan_->clockSlots), 0);
+  allocated = true;
+}
+
+void Session::releaseAll() {
+  backend->dropGraph();
+  graphReady = false;
+  auto give = [&](Memory &memory) {
+    if (memory.pointer)
+      backend->release(memory.pointer);
+    memory = {};
+  };
+  give(clockMemory);
+  for (std::vector<Memory> *list : {&buffers, &snapshots, &exacts}) {
+    for (Memory &memory : *list)
+      give(memory);
+    list->clear();
+  }
+  clock.clear();
+  allocated = initialized = prepared = false;
+}
+
+void Session::prepare() {
+  if (prepared)
+    return;
+  backend->dropGraph();
+  graphReady = false;
+  for (int phase = 0; phase < kNumPhases; ++phase) {
+    std::vector<Prepared> &list = phases[phase];
+    list.clear();
+    for (const Launch &launch : plan_->phases[phase]) {
+      Prepared p;
+      p.launch = &launch;
+      p.kernel =
+          int(std::find(kernelNames.begin(), kernelNames.end(), launch.kernel) -
+              kernelNames.begin());
+      p.groupSize = launch.single ? 1 : groupSize_;
+      p.groups = launch.single ? 1 : (range_ + groupSize_ - 1) / groupSize_;
+      p.sharedBytes = launch.sharedPerThread * p.groupSize + launch.sharedFixed;
+      // A memref travels as its descriptor: allocated pointer, aligned
+      // pointer, offset, size, stride.
+      auto memref = [&](DevicePtr pointer, int64_t elements) {
+        p.values.insert(p.values.end(),
+                        {pointer, pointer, 0, uint64_t(elements), 1});
+      };
+      for (const Arg &arg : launch.args) {
+        switch (arg.kind) {
+        case ArgKind::Clock:
+          memref(clockMemory.pointer, plan_->clockSlots);
+          break;
+        case ArgKind::Buffer:
+          memref(buffers[arg.index].pointer, 2 * range_);
+          break;
+        case ArgKind::Snapshot:
+          memref(snapshots[arg.index].pointer, range_);
+          break;
+        case ArgKind::Exact:
+          memref(exacts[arg.index].pointer, range_);
+          break;
+        case ArgKind::Param:
+          p.values.push_back(params[arg.index].bits());
+          break;
+        case ArgKind::Range:
+          p.values.push_back(uint64_t(range_));
+          break;
+        case ArgKind::Dt:
+          p.values.push_back(dt.bits());
+          break;
+        case ArgKind::Time:
+          p.timeValues.push_back(p.values.size());
+          p.values.push_back(0);
+          break;
+        }
+      }
+      list.push_back(std::move(p));
+    }
+    // The values are final: point at them (each Prepared owns its vector,
+    // and moving a vector keeps its storage).
+    for (Prepared &p : list) {
+      p.params.clear();
+      for (uint64_t &value : p.values)
+        p.params.push_back(&value);
+    }
+  }
+  prepared = true;
+}
+
+void Session::launch(Prepared &p) {
+  backend->launch(p.kernel, p.params.data(), p.groups, p.groupSize,
+                  p.sharedBytes);
+  ++metrics.launches;
+}
+
+void Session::runPhase(PhaseKind phase) {
+  for (Prepared &p : phases[int(phase)])
+    launch(p);
+}
+
+void Session::runUncounted(PhaseKind phase) {
+  for (Prepared &p : phases[int(phase)])
+    backend->launch(p.kernel, p.params.data(), p.groups, p.groupSize,
+                    p.sharedBytes);
+}
+
+void Session::runStepPhase() {
+  std::vector<Prepared> &step = phases[int(PhaseKind::Step)];
+  if (options.check_finite) {
+    for (Prepared &p : step) {
+      launch(p);
+      if (p.launch->component >= 0)
+        checkFinite(p);
+    }
+    return;
+  }
+  if (options.cuda_graph && backend->supportsGraphs()) {
+    // The step phase is the same every big step (docs/Plan.md): record it
+    // once, replay it.
+    if (!graphReady) {
+      backend->beginCapture();
+      for (Prepared &p : step)
+        backend->launch(p.kernel, p.params.data(), p.groups, p.groupSize,
+                        p.sharedBytes);
+      backend->endCapture();
+      graphReady = true;
+    }
+    backend->replay();
+    metrics.launches += int64_t(step.size());
+    ++metrics.graph_launches;
+    return;
+  }
+  for (Prepared &p : step)
+    launch(p);
+}
+
+void Session::readClock(size_t slots) {
+  backend->read(clock.data(), clockMemory.pointer, slots * sizeof(int64_t));
+}
+
+void Session::checkFinite(const Prepared &p) {
+  const PlanComponent &component = plan_->components[p.launch->component];
+  for (int32_t index : component.writes) {
+    const PlanBuffer &buffer = plan_->buffers[index];
+    size_t stride = deviceStride(index);
+    std::vector<uint8_t> data(buffers[index].bytes);
+    backend->read(data.data(), buffers[index].pointer, data.size());
+    ++metrics.host_syncs;
+    // Both halves: the target just written, and the source, which holds
+    // the initial state the first time round.
+    for (int64_t element = 0; element < 2 * range_; ++element) {
+      const uint8_t *item = data.data() + size_t(element) * stride;
+      for (int32_t lane = 0; lane < buffer.type.lanes; ++lane) {
+        double value;
+        if (buffer.type.f64) {
+          std::memcpy(&value, item + lane * 8, 8);
+        } else {
+          float single;
+          std::memcpy(&single, item + lane * 4, 4);
+          value = single;
+        }
+        if (std::isfinite(value))
+          continue;
+        readClock(2);
+        nonFinite.found = true;
+        nonFinite.baseStep = clock[kSlotBegin];
+        nonFinite.component = component.name;
+        nonFinite.buffer = buffer.name;
+        nonFinite.kernel = p.launch->kernel;
+        nonFinite.item = element % range_;
+        nonFinite.lane = lane;
+        nonFinite.value = value;
+        std::string where = "item " + std::to_string(nonFinite.item);
+        if (buffer.type.lanes > 1)
+          where += ", lane " + std::to_string(lane);
+        fail(SIM_ERROR_NONFINITE,
+             "non-finite value " +
+                 std::string(std::isnan(value) ? "nan"
+                             : value > 0       ? "inf"
+                                               : "-inf") +
+                 " in buffer '" + buffer.name + "' (" + where +
+                 ") after kernel '" + p.launch->kernel + "' for component '" +
+                 component.name + "' at base step " +
+                 std::to_string(nonFinite.baseStep) + " (big step of " +
+                 std::to_string(clock[kSlotSize]) + ")");
+      }
+    }
+  }
+}
+
+//===----------------------------------------------------------------------===//
+// Phases
+//===----------------------------------------------------------------------===//
+
+void Session::init() {
+  backend->activate();
+  if (!allocated) {
+    allocate();
+  } else {
+    // Every run from the initial state starts from the same memory. The
+    // addresses stay, so a captured step phase stays valid.
+    backend->zero(clockMemory.pointer, clockMemory.bytes);
+    for (std::vector<Memory> *list : {&buffers, &snapshots, &exacts})
+      for (Memory &memory : *list)
+        if (memory.pointer)
+          backend->zero(memory.pointer, memory.bytes);
+  }
+  prepare();
+  runUncounted(PhaseKind::Init);
+  readClock(clock.size());
+  initialized = true;
+}
+
+void Session::ensureInitialized() {
+  if (!initialized)
+    init();
+}
+
+void Session::run(int64_t steps) {
+  if (steps < 0)
+    fail(SIM_ERROR_INVALID_ARGUMENT,
+         "cannot run " + std::to_string(steps) + " base steps");
+  backend->activate();
+  ensureInitialized();
+  prepare();
+  metrics = {};
+  nonFinite = {};
+  std::vector<int64_t> before = clock;
+  // After init and after finish m is 0, so this is T.
+  int64_t begin = clock[kSlotBegin] + clock[kSlotSize];
+  if (steps > std::numeric_limits<int64_t>::max() - begin)
+    fail(SIM_ERROR_INVALID_ARGUMENT, "cannot run " + std::to_string(steps) +
+                                         " base steps from " +
+                                         std::to_string(begin));
+  int64_t end = begin + steps;
+  // The largest big step: one base step under simple, max_steps otherwise.
+  int64_t cap = plan_->strategy == Strategy::Simple
+                    ? 1
+                    : std::max<int64_t>(1, scene().maxSteps);
+
+  auto wallStart = std::chrono::steady_clock::now();
+  backend->write(clockMemory.pointer + kSlotEnd * sizeof(int64_t), &end,
+                 sizeof end);
+  backend->startTimer();
+  int64_t now = begin;
+  // Base steps per big step as last observed. Starting from the cap, the
+  // first batch never launches past the end; later batches follow the
+  // kernels' recent step sizes, so a run of small big steps does not need
+  // a host round trip per few of them. A step phase launched past the end
+  // only costs its (empty) launches.
+  double meanStep = double(cap);
+  while (now < end) {
+    int64_t batch = options.check_finite
+                        ? 1
+                        : std::clamp<int64_t>(
+                              int64_t(std::ceil(double(end - now) / meanStep)),
+                              1, kMaxBatch);
+    for (int64_t i = 0; i < batch; ++i)
+      runStepPhase();
+    readClock(2);
+    ++metrics.host_syncs;
+    int64_t reached = clock[kSlotBegin] + clock[kSlotSize];
+    if (reached <= now)
+      fail(SIM_ERROR_CLOCK,
+           "the step phase made no progress at base step " +
+               std::to_string(now) + " of a run to " + std::to_string(end) +
+               " (clock: T = " + std::to_string(clock[kSlotBegin]) +
+               ", m = " + std::to_string(clock[kSlotSize]) + ")");
+    if (reached > end)
+      fail(SIM_ERROR_CLOCK, "the clock ran past the end of the run: T + m = " +
+                                std::to_string(reached) + " > " +
+                                std::to_string(end));
+    meanStep =
+        std::clamp(double(reached - now) / double(batch), 1.0, double(cap));
+    now = reached;
+    if (progress)
+      progress(progressUser, now - begin, steps);
+  }
+  runPhase(PhaseKind::Finish);
+  metrics.kernel_seconds = backend->stopTimer();
+  readClock(clock.size());
+  ++metrics.host_syncs;
+  metrics.wall_seconds = std::chrono::duration<double>(
+                             std::chrono::steady_clock::now() - wallStart)
+                             .count();
+
+  // The device-side clamp makes a run end exactly at its end.
+  if (clock[kSlotBegin] != end || clock[kSlotSize] != 0)
+    fail(SIM_ERROR_CLOCK, "a run of " + std::to_string(steps) +
+                              " base steps from base step " +
+                              std::to_string(begin) + " ended at base step " +
+                              std::to_string(clock[kSlotBegin]) +
+                              " (m = " + std::to_string(clock[kSlotSize]) +
+                              "), not at " + std::to_string(end));
+  metrics.steps = steps;
+  metrics.begin = begin;
+  metrics.end = end;
+  metrics.big_steps = clock[kSlotBigSteps] - before[kSlotBigSteps];
+  for (size_t i = 0; i < plan_->components.size(); ++i) {
+    size_t slot = size_t(plan_->components[i].evaluationSlot);
+    evaluations[i] = clock[slot] - before[slot];
+  }
+  for (int64_t m = 1; m < int64_t(histogram.size()); ++m) {
+    size_t slot = size_t(plan_->histogramSlot + m);
+    histogram[m] = clock[slot] - before[slot];
+  }
+}
+
+//===----------------------------------------------------------------------===//
+// Host arrays
+//===----------------------------------------------------------------------===//
+
+namespace {
+
+void checkBytes(size_t given, size_t expected, const std::string &buffer) {
+  if (given != expected)
+    fail(SIM_ERROR_INVALID_ARGUMENT,
+         "a host array of buffer '" + buffer + "' takes " +
+             std::to_string(expected) + " bytes, not " + std::to_string(given));
+}
+
+} // namespace
+
+void Session::getBuffer(const std::string &name, void *data, size_t bytes) {
+  int index = bufferIndex(name);
+  checkBytes(bytes, hostBytes(name), name);
+  backend->activate();
+  ensureInitialized();
+  size_t stride = deviceStride(index);
+  size_t packed = size_t(plan_->buffers[index].type.packedBytes());
+  DevicePtr half = buffers[index].pointer +
+                   size_t(clock[kSlotParity]) * size_t(range_) * stride;
+  if (stride == packed) {
+    backend->read(data, half, bytes);
+    return;
+  }
+  std::vector<uint8_t> device(size_t(range_) * stride);
+  backend->read(device.data(), half, device.size());
+  for (int64_t i = 0; i < range_; ++i)
+    std::memcpy(static_cast<uint8_t *>(data) + size_t(i) * packed,
+                device.data() + size_t(i) * stride, packed);
+}
+
+void Session::setBuffer(const std::string &name, const void *data,
+                        size_t bytes) {
+  int index = bufferIndex(name);
+  checkBytes(bytes, hostBytes(name), name);
+  backend->activate();
+  ensureInitialized();
+  size_t stride = deviceStride(index);
+  size_t packed = size_t(plan_->buffers[index].type.packedBytes());
+  DevicePtr half = buffers[index].pointer +
+                   size_t(clock[kSlotParity]) * size_t(range_) * stride;
+  if (stride == packed) {
+    backend->write(half, data, bytes);
+    return;
+  }
+  std::vector<uint8_t> device(size_t(range_) * stride, 0);
+  for (int64_t i = 0; i < range_; ++i)
+    std::memcpy(device.data() + size_t(i) * stride,
+                static_cast<const uint8_t *>(data) + size_t(i) * packed,
+                packed);
+  backend->write(half, device.data(), device.size());
+  // The CPU backend copies at once, CUDA stages pageable memory before
+  // returning: `device` may go.
+}
+
+bool Session::hasExact(const std::string &name) const {
+  int index = plan_->findBuffer(name);
+  return index >= 0 && plan_->buffers[index].exact &&
+         plan_->hasPhase[int(PhaseKind::Exact)];
+}
+
+void Session::exact(const std::string &name, void *data, size_t bytes) {
+  int index = bufferIndex(name);
+  if (!plan_->buffers[index].exact)
+    fail(SIM_ERROR_INVALID_ARGUMENT, "scene '" + scene().name +
+                                         "' declares no exact solution of "
+                                         "buffer '" +
+                                         name + "'");
+  if (!plan_->hasPhase[int(PhaseKind::Exact)])
+    fail(SIM_ERROR_BUNDLE, std::string("the plan of strategy '") +
+                               strategyName(plan_->strategy) +
+                               "' has no exact phase");
+  checkBytes(bytes, hostBytes(name), name);
+  backend->activate();
+  ensureInitialized();
+  prepare();
+  double time = double(clock[kSlotBegin]) *
+                (dt.type == ScalarType::F32 ? double(float(dt.f)) : dt.f);
+  uint64_t bits;
+  std::memcpy(&bits, &time, sizeof bits);
+  for (Prepared &p : phases[int(PhaseKind::Exact)])
+    for (size_t position : p.timeValues)
+      p.values[position] = bits;
+  // Outside a run: the last run's metrics stay as they were.
+  runUncounted(PhaseKind::Exact);
+  size_t stride = deviceStride(index);
+  size_t packed = size_t(plan_->buffers[index].type.packedBytes());
+  std::vector<uint8_t> device(size_t(range_) * stride);
+  backend->read(device.data(), exacts[index].pointer, device.size());
+  for (int64_t i = 0; i < range_; ++i)
+    std::memcpy(static_cast<uint8_t *>(data) + size_t(i) * packed,
+                device.data() + size_t(i) * stride, packed);
+}
+
+} // namespace sim::rt

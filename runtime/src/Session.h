@@ -1,0 +1,139 @@
+//===- Session.h - the plan executor ------------------------------*- C++
+//-*-===//
+//
+// A Session runs one strategy's plan (docs/Plan.md) of a bundle on one
+// backend: it owns the clock and the buffers, turns plan arguments into
+// kernel parameters, and runs the phases. Runs launch the step phase many
+// big steps ahead and look at the clock once per batch; the kernels decide
+// every step size on the device.
+//
+//===----------------------------------------------------------------------===//
+
+#ifndef SIM_RUNTIME_SESSION_H
+#define SIM_RUNTIME_SESSION_H
+
+#include "Backend.h"
+#include "Bundle.h"
+#include "sim/Runtime/sim_runtime.h"
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace sim::rt {
+
+class Session {
+public:
+  Session(std::shared_ptr<const Bundle> bundle,
+          const sim_session_options &options);
+  ~Session();
+  Session(const Session &) = delete;
+  Session &operator=(const Session &) = delete;
+
+  const Scene &scene() const { return bundle->scene; }
+  const Plan &plan() const { return *plan_; }
+  sim_backend backendKind() const { return backend->kind(); }
+  const std::string &device() const { return deviceName; }
+  /// Why `auto` did not choose CUDA (empty otherwise).
+  const std::string &backendNote() const { return note; }
+  int64_t groupSize() const { return groupSize_; }
+  int64_t range() const { return range_; }
+
+  /// `range`, `dt` or a scene parameter, from text.
+  void set(const std::string &name, const std::string &value);
+  std::string get(const std::string &name) const;
+
+  /// Allocates what is missing, zeroes everything and runs phase init.
+  void init();
+  /// The clock's T (0 before init).
+  int64_t time() const { return clock.empty() ? 0 : clock[kSlotBegin]; }
+
+  /// Host arrays hold `range` items of `lanes` packed scalars.
+  size_t hostBytes(const std::string &buffer) const;
+  void getBuffer(const std::string &buffer, void *data, size_t bytes);
+  void setBuffer(const std::string &buffer, const void *data, size_t bytes);
+  bool hasExact(const std::string &buffer) const;
+  /// The exact solution at time T * dt.
+  void exact(const std::string &buffer, void *data, size_t bytes);
+
+  /// Runs `steps` base steps; the run ends exactly at T + steps or throws.
+  void run(int64_t steps);
+
+  void setProgress(sim_progress_fn fn, void *user) {
+    progress = fn;
+    progressUser = user;
+  }
+
+  /// The last run's measurements.
+  sim_metrics metrics{};
+  std::vector<int64_t> evaluations; // per plan component
+  std::vector<int64_t> histogram;   // index m in 0 .. max_steps
+
+  /// Where the last run found a non-finite value.
+  struct NonFinite {
+    bool found = false;
+    int64_t baseStep = 0;
+    std::string component, buffer, kernel;
+    int64_t item = 0;
+    int32_t lane = 0;
+    double value = 0;
+  } nonFinite;
+
+private:
+  /// One device allocation, released with the session.
+  struct Memory {
+    DevicePtr pointer = 0;
+    size_t bytes = 0;
+  };
+  /// A launch with its parameter values laid out for the backend.
+  struct Prepared {
+    const Launch *launch;
+    int kernel;
+    int64_t groups, groupSize, sharedBytes;
+    std::vector<uint64_t> values;
+    std::vector<void *> params;
+    /// Positions of `time` arguments in `values`.
+    std::vector<size_t> timeValues;
+  };
+
+  int bufferIndex(const std::string &name) const;
+  void allocate();
+  void releaseAll();
+  void prepare();
+  void ensureInitialized();
+  void runPhase(PhaseKind phase);
+  void runUncounted(PhaseKind phase);
+  void runStepPhase();
+  void launch(Prepared &prepared);
+  void checkFinite(const Prepared &prepared);
+  void readClock(size_t slots);
+  /// The bytes of one item on the device and in a host array.
+  size_t deviceStride(int buffer) const;
+
+  std::shared_ptr<const Bundle> bundle;
+  const Plan *plan_ = nullptr;
+  sim_session_options options;
+  std::unique_ptr<Backend> backend;
+  std::string deviceName, note;
+  std::vector<std::string> kernelNames;
+
+  int64_t range_ = 0;
+  int64_t groupSize_ = 0;
+  Value dt;
+  std::vector<Value> params;
+
+  Memory clockMemory;
+  std::vector<Memory> buffers, snapshots, exacts;
+  /// The host's copy of the clock as last read (valid after init).
+  std::vector<int64_t> clock;
+  bool allocated = false, initialized = false, prepared = false;
+  bool graphReady = false;
+  std::vector<Prepared> phases[kNumPhases];
+
+  sim_progress_fn progress = nullptr;
+  void *progressUser = nullptr;
+};
+
+} // namespace sim::rt
+
+#endif // SIM_RUNTIME_SESSION_H

@@ -1,0 +1,422 @@
+//===- ExecutorTest.cpp - running plans on the CPU backend ----------------===//
+//
+// The executor end to end on the decay scene (kernels/decay.c): values
+// after N base steps against the closed form, runs that end exactly at N,
+// the big steps the device decided, the metrics, parameters, host arrays,
+// the exact solution and the NaN/Inf check.
+//
+//===----------------------------------------------------------------------===//
+
+#include "Bundle.h"
+#include "Error.h"
+#include "Session.h"
+#include "TestBundle.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstring>
+
+using namespace sim::rt;
+using namespace sim::test;
+
+namespace {
+
+std::shared_ptr<const Bundle> parseBytes(const std::string &bytes) {
+  return Bundle::parse(reinterpret_cast<const uint8_t *>(bytes.data()),
+                       bytes.size(), "decay.simb");
+}
+
+std::shared_ptr<const Bundle> decay() {
+  static std::shared_ptr<const Bundle> bundle = parseBytes(decayBundle());
+  return bundle;
+}
+
+sim_session_options cpuOptions(sim_strategy strategy, int threads = 3,
+                               int64_t groupSize = 0) {
+  sim_session_options options;
+  sim_session_options_init(&options);
+  options.strategy = strategy;
+  options.backend = SIM_BACKEND_CPU;
+  options.cpu_threads = threads;
+  options.group_size = groupSize;
+  return options;
+}
+
+std::vector<double> getX(Session &session) {
+  std::vector<double> x(size_t(session.range()));
+  session.getBuffer("X", x.data(), x.size() * sizeof(double));
+  return x;
+}
+
+std::vector<float> getV(Session &session) {
+  std::vector<float> v(size_t(session.range()) * 3);
+  session.getBuffer("V", v.data(), v.size() * sizeof(float));
+  return v;
+}
+
+/// x_i after `steps` base steps of x' = -k x with (1 - k dt) per step.
+double expectedX(int64_t item, int64_t steps, double k = 2, double dt = 0.01) {
+  return (1 + 0.01 * double(item)) * std::pow(1 - k * dt, double(steps));
+}
+
+void expectX(Session &session, int64_t steps, double k = 2, double dt = 0.01) {
+  std::vector<double> x = getX(session);
+  for (size_t i = 0; i < x.size(); ++i)
+    ASSERT_NEAR(x[i], expectedX(int64_t(i), steps, k, dt),
+                1e-12 * std::fabs(expectedX(int64_t(i), steps, k, dt)))
+        << "item " << i;
+}
+
+/// The message of the Error `body` throws, checking its status.
+template <typename Body> std::string errorOf(Body &&body, sim_status expected) {
+  try {
+    body();
+  } catch (const Error &error) {
+    EXPECT_EQ(error.status, expected) << error.what();
+    return error.what();
+  }
+  ADD_FAILURE() << "no error";
+  return "";
+}
+
+} // namespace
+
+TEST(Executor, SimpleRunMatchesTheClosedForm) {
+  Session session(decay(), cpuOptions(SIM_STRATEGY_SIMPLE));
+  EXPECT_EQ(session.backendKind(), SIM_BACKEND_CPU);
+  EXPECT_EQ(session.device(), "CPU (3 threads)");
+  EXPECT_EQ(session.groupSize(), 32);
+  session.run(37);
+  EXPECT_EQ(session.time(), 37);
+  expectX(session, 37);
+  std::vector<float> v = getV(session);
+  for (int64_t i = 0; i < session.range(); ++i) {
+    EXPECT_EQ(v[3 * i + 0], 37.0f); // base steps
+    EXPECT_EQ(v[3 * i + 1], float(i));
+    EXPECT_EQ(v[3 * i + 2], 37.0f); // evaluations: one per base step
+  }
+  const sim_metrics &m = session.metrics;
+  EXPECT_EQ(m.steps, 37);
+  EXPECT_EQ(m.begin, 0);
+  EXPECT_EQ(m.end, 37);
+  EXPECT_EQ(m.big_steps, 37);
+  EXPECT_EQ(session.histogram[1], 37);
+  EXPECT_EQ(session.evaluations[0], 37 * 100);
+  EXPECT_EQ(session.evaluations[1], 37 * 100);
+  // 37 step phases of 3 launches in one batch, then finish.
+  EXPECT_EQ(m.launches, 37 * 3 + 1);
+  EXPECT_EQ(m.host_syncs, 2);
+  EXPECT_EQ(m.graph_launches, 0);
+  EXPECT_GE(m.wall_seconds, m.kernel_seconds);
+  EXPECT_GT(m.kernel_seconds, 0);
+}
+
+TEST(Executor, HipRunEndsExactlyAtNWithTheDevicesBigSteps) {
+  for (int64_t steps : {1, 2, 5, 21, 53, 300}) {
+    Session session(decay(), cpuOptions(SIM_STRATEGY_HIP));
+    session.run(steps);
+    EXPECT_EQ(session.time(), steps);
+    EXPECT_EQ(session.metrics.end, steps);
+    expectX(session, steps);
+    std::vector<int64_t> sizes = decayBigSteps(0, steps, 4);
+    std::vector<int64_t> histogram(5, 0);
+    for (int64_t m : sizes)
+      ++histogram[m];
+    EXPECT_EQ(session.histogram, histogram) << steps << " steps";
+    int64_t bigSteps = int64_t(sizes.size());
+    EXPECT_EQ(session.metrics.big_steps, bigSteps);
+    EXPECT_EQ(session.evaluations[0], bigSteps * 100);
+    EXPECT_EQ(session.evaluations[1], bigSteps * 100);
+    std::vector<float> v = getV(session);
+    EXPECT_EQ(v[0], float(steps));
+    EXPECT_EQ(v[2], float(bigSteps));
+    // Launched ahead: at least every big step's 4 launches, far fewer
+    // host synchronisations than big steps.
+    EXPECT_GE(session.metrics.launches, bigSteps * 4 + 1);
+    EXPECT_GE(session.metrics.host_syncs, 2);
+    if (steps >= 21)
+      EXPECT_LT(session.metrics.host_syncs, bigSteps / 2);
+  }
+}
+
+TEST(Executor, RunsContinueFromTheirEnd) {
+  Session session(decay(), cpuOptions(SIM_STRATEGY_HIP));
+  session.run(10);
+  session.run(15);
+  EXPECT_EQ(session.time(), 25);
+  EXPECT_EQ(session.metrics.begin, 10);
+  EXPECT_EQ(session.metrics.end, 25);
+  expectX(session, 25);
+  std::vector<int64_t> sizes = decayBigSteps(10, 15, 4);
+  EXPECT_EQ(session.metrics.big_steps, int64_t(sizes.size()));
+  session.run(0);
+  EXPECT_EQ(session.time(), 25);
+  EXPECT_EQ(session.metrics.big_steps, 0);
+  EXPECT_EQ(session.metrics.steps, 0);
+  // init starts over.
+  session.init();
+  EXPECT_EQ(session.time(), 0);
+  expectX(session, 0);
+}
+
+TEST(Executor, ResultsDoNotDependOnThreadsOrGroupSize) {
+  Session reference(decay(), cpuOptions(SIM_STRATEGY_HIP, 1));
+  reference.run(40);
+  std::vector<double> x = getX(reference);
+  std::vector<float> v = getV(reference);
+  for (int threads : {2, 5})
+    for (int64_t group : {1, 7, 32, 1000}) {
+      Session session(decay(), cpuOptions(SIM_STRATEGY_HIP, threads, group));
+      EXPECT_EQ(session.groupSize(), group);
+      session.run(40);
+      EXPECT_EQ(getX(session), x) << threads << " threads, groups of " << group;
+      EXPECT_EQ(getV(session), v) << threads << " threads, groups of " << group;
+      EXPECT_EQ(session.evaluations, reference.evaluations);
+    }
+}
+
+TEST(Executor, LiveSessionsKeepTheirOwnKernels) {
+  // Each session loads its CPU object from its own memfd; dlopen must not
+  // take one for another (it matches loaded objects by path).
+  auto hip = std::make_unique<Session>(decay(), cpuOptions(SIM_STRATEGY_HIP));
+  Session simple(decay(), cpuOptions(SIM_STRATEGY_SIMPLE));
+  simple.run(8);
+  EXPECT_EQ(simple.metrics.big_steps, 8);
+  hip->run(8);
+  EXPECT_EQ(hip->metrics.big_steps, int64_t(decayBigSteps(0, 8, 4).size()));
+  hip.reset();
+  Session again(decay(), cpuOptions(SIM_STRATEGY_HIP));
+  again.run(8);
+  EXPECT_EQ(again.metrics.big_steps, int64_t(decayBigSteps(0, 8, 4).size()));
+  simple.run(8);
+  EXPECT_EQ(simple.metrics.big_steps, 8);
+}
+
+TEST(Executor, RangeDtAndParametersAreRunTimeValues) {
+  Session session(decay(), cpuOptions(SIM_STRATEGY_SIMPLE));
+  session.run(5);
+  session.set("range", "1037");
+  EXPECT_EQ(session.range(), 1037);
+  EXPECT_EQ(session.time(), 0); // a new range starts over
+  session.set("k", "0.5");
+  session.set("dt", "0.02");
+  EXPECT_EQ(session.get("k"), "0.5");
+  EXPECT_EQ(session.get("dt"), "0.02");
+  EXPECT_EQ(session.get("range"), "1037");
+  EXPECT_EQ(session.get("poison"), "-1");
+  session.run(12);
+  expectX(session, 12, 0.5, 0.02);
+  EXPECT_EQ(session.evaluations[0], 12 * 1037);
+  // Parameters change between runs without losing the state.
+  session.set("k", "0");
+  session.run(3);
+  EXPECT_EQ(session.time(), 15);
+  expectX(session, 12, 0.5, 0.02);
+}
+
+TEST(Executor, RejectsBadNamesAndValues) {
+  Session session(decay(), cpuOptions(SIM_STRATEGY_SIMPLE));
+  EXPECT_NE(
+      errorOf([&] { session.set("kappa", "1"); }, SIM_ERROR_INVALID_ARGUMENT)
+          .find("'kappa' is not range, dt or a parameter of scene "
+                "'decay' (parameters: k, poison)"),
+      std::string::npos);
+  EXPECT_NE(
+      errorOf([&] { session.set("poison", "1.5"); }, SIM_ERROR_INVALID_ARGUMENT)
+          .find("parameter 'poison': '1.5' is not an integer (i32)"),
+      std::string::npos);
+  EXPECT_NE(
+      errorOf([&] { session.set("range", "0"); }, SIM_ERROR_INVALID_ARGUMENT)
+          .find("not a positive number of items"),
+      std::string::npos);
+  EXPECT_NE(errorOf([&] { session.set("range", "1000000000000000"); },
+                    SIM_ERROR_INVALID_ARGUMENT)
+                .find("would not fit in memory"),
+            std::string::npos);
+  EXPECT_NE(errorOf([&] { session.run(-1); }, SIM_ERROR_INVALID_ARGUMENT)
+                .find("cannot run -1 base steps"),
+            std::string::npos);
+  std::vector<double> x(99);
+  EXPECT_NE(errorOf([&] { session.getBuffer("X", x.data(), 99 * 8); },
+                    SIM_ERROR_INVALID_ARGUMENT)
+                .find("a host array of buffer 'X' takes 800 bytes, not 792"),
+            std::string::npos);
+  EXPECT_NE(errorOf([&] { session.getBuffer("Y", x.data(), 8); },
+                    SIM_ERROR_INVALID_ARGUMENT)
+                .find("'Y' is not a buffer of the plan of strategy 'simple' "
+                      "(buffers: X, V)"),
+            std::string::npos);
+}
+
+TEST(Executor, HostArraysAreTheCurrentStateWithoutPadding) {
+  Session session(decay(), cpuOptions(SIM_STRATEGY_SIMPLE));
+  size_t bytes = session.hostBytes("V");
+  EXPECT_EQ(bytes, 100u * 12); // 3 packed lanes, not the 16-byte stride
+  session.run(3);              // odd: the state is in half 1
+  std::vector<double> x(100);
+  for (size_t i = 0; i < x.size(); ++i)
+    x[i] = double(i);
+  session.setBuffer("X", x.data(), x.size() * 8);
+  std::vector<float> v(300, 0.0f);
+  session.setBuffer("V", v.data(), v.size() * 4);
+  session.run(1);
+  std::vector<double> after = getX(session);
+  for (size_t i = 0; i < x.size(); ++i)
+    EXPECT_DOUBLE_EQ(after[i], double(i) * (1 - 2 * 0.01));
+  std::vector<float> grown = getV(session);
+  EXPECT_EQ(grown[3 * 5 + 0], 1.0f);
+  EXPECT_EQ(grown[3 * 5 + 1], 5.0f);
+  EXPECT_EQ(grown[3 * 5 + 2], 1.0f);
+}
+
+TEST(Executor, EvaluatesTheExactSolutionAtTheCurrentTime) {
+  Session session(decay(), cpuOptions(SIM_STRATEGY_HIP));
+  EXPECT_TRUE(session.hasExact("X"));
+  EXPECT_FALSE(session.hasExact("V"));
+  session.run(20);
+  int64_t launches = session.metrics.launches;
+  std::vector<double> exact(100);
+  session.exact("X", exact.data(), exact.size() * 8);
+  for (size_t i = 0; i < exact.size(); ++i)
+    EXPECT_NEAR(exact[i], (1 + 0.01 * double(i)) * std::exp(-2 * 20 * 0.01),
+                1e-14);
+  // Not part of the run.
+  EXPECT_EQ(session.metrics.launches, launches);
+  std::vector<float> v(300);
+  EXPECT_NE(errorOf([&] { session.exact("V", v.data(), v.size() * 4); },
+                    SIM_ERROR_INVALID_ARGUMENT)
+                .find("declares no exact solution of buffer 'V'"),
+            std::string::npos);
+}
+
+TEST(Executor, CheckFiniteStopsAtTheFirstNaN) {
+  for (sim_strategy strategy : {SIM_STRATEGY_SIMPLE, SIM_STRATEGY_HIP}) {
+    sim_session_options options = cpuOptions(strategy);
+    options.check_finite = 1;
+    Session session(decay(), options);
+    session.set("poison", "10");
+    std::string message =
+        errorOf([&] { session.run(40); }, SIM_ERROR_NONFINITE);
+    // hip's big steps start at 0 1 2 3 4 5 7 9 11: the first at or after
+    // base step 10 is 11.
+    int64_t at = strategy == SIM_STRATEGY_SIMPLE ? 10 : 11;
+    EXPECT_TRUE(session.nonFinite.found);
+    EXPECT_EQ(session.nonFinite.baseStep, at);
+    EXPECT_EQ(session.nonFinite.component, "Decay");
+    EXPECT_EQ(session.nonFinite.buffer, "X");
+    EXPECT_EQ(session.nonFinite.kernel, "evaluate_Decay");
+    EXPECT_EQ(session.nonFinite.item, 7);
+    EXPECT_TRUE(std::isnan(session.nonFinite.value));
+    EXPECT_NE(message.find("non-finite value nan in buffer 'X' (item 7) after "
+                           "kernel 'evaluate_Decay' for component 'Decay' at "
+                           "base step " +
+                           std::to_string(at)),
+              std::string::npos)
+        << message;
+  }
+  // Without the check the run completes, NaN and all.
+  Session session(decay(), cpuOptions(SIM_STRATEGY_SIMPLE));
+  session.set("poison", "10");
+  session.run(40);
+  EXPECT_TRUE(std::isnan(getX(session)[7]));
+  EXPECT_FALSE(session.nonFinite.found);
+}
+
+TEST(Executor, ReportsProgressAfterEachSynchronisation) {
+  Session session(decay(), cpuOptions(SIM_STRATEGY_HIP));
+  std::vector<std::pair<int64_t, int64_t>> calls;
+  session.setProgress(
+      [](void *user, int64_t done, int64_t total) {
+        static_cast<std::vector<std::pair<int64_t, int64_t>> *>(user)
+            ->push_back({done, total});
+      },
+      &calls);
+  session.run(100);
+  ASSERT_FALSE(calls.empty());
+  EXPECT_EQ(int64_t(calls.size()), session.metrics.host_syncs - 1);
+  EXPECT_EQ(calls.back(), std::make_pair(int64_t(100), int64_t(100)));
+  for (size_t i = 1; i < calls.size(); ++i)
+    EXPECT_GT(calls[i].first, calls[i - 1].first);
+}
+
+//===----------------------------------------------------------------------===//
+// Sessions that cannot be made or run
+//===----------------------------------------------------------------------===//
+
+TEST(Executor, NamesTheCodeABackendLacks) {
+  EXPECT_NE(
+      errorOf([] { Session s(decay(), cpuOptions(SIM_STRATEGY_TRADITIONAL)); },
+              SIM_ERROR_BUNDLE)
+          .find("bundle 'decay.simb' has no plan for strategy "
+                "'traditional' (it has: simple, hip)"),
+      std::string::npos);
+  sim_session_options cuda = cpuOptions(SIM_STRATEGY_HIP);
+  cuda.backend = SIM_BACKEND_CUDA;
+  EXPECT_NE(errorOf([&] { Session s(decay(), cuda); }, SIM_ERROR_BUNDLE)
+                .find("bundle 'decay.simb' has no PTX for strategy 'hip'; the "
+                      "CUDA backend needs it"),
+            std::string::npos);
+
+  std::vector<Section> sections = decaySections();
+  sections.erase(sections.begin() + 4); // hip's CPU code
+  auto noCpu = parseBytes(writeBundle(sections));
+  EXPECT_NE(errorOf([&] { Session s(noCpu, cpuOptions(SIM_STRATEGY_HIP)); },
+                    SIM_ERROR_BUNDLE)
+                .find("has no CPU code for strategy 'hip'; the CPU backend "
+                      "needs it"),
+            std::string::npos);
+  sim_session_options automatic = cpuOptions(SIM_STRATEGY_HIP);
+  automatic.backend = SIM_BACKEND_AUTO;
+  EXPECT_NE(errorOf([&] { Session s(noCpu, automatic); }, SIM_ERROR_BUNDLE)
+                .find("the bundle has no PTX for strategy 'hip', and it has no "
+                      "CPU code for it either"),
+            std::string::npos);
+}
+
+TEST(Executor, AutoRunsOnTheCpuWithoutPtx) {
+  sim_session_options options = cpuOptions(SIM_STRATEGY_HIP);
+  options.backend = SIM_BACKEND_AUTO;
+  Session session(decay(), options);
+  EXPECT_EQ(session.backendKind(), SIM_BACKEND_CPU);
+  EXPECT_EQ(session.backendNote(), "the bundle has no PTX for strategy 'hip'");
+}
+
+TEST(Executor, NamesAMissingKernel) {
+  std::vector<Section> sections = decaySections();
+  sections[1].bytes =
+      decayPlan(kSimple) + "# An extra phase is fine; its kernel must exist.\n";
+  size_t at = sections[1].bytes.find("launch advance single");
+  sections[1].bytes.insert(
+      at, "launch nowhere single for - shared 0 0 args clock\n");
+  auto bundle = parseBytes(writeBundle(sections));
+  EXPECT_NE(errorOf([&] { Session s(bundle, cpuOptions(SIM_STRATEGY_SIMPLE)); },
+                    SIM_ERROR_BACKEND)
+                .find("the CPU kernels of strategy 'simple' do not export "
+                      "sim_cpu_nowhere (kernel 'nowhere' of the plan)"),
+            std::string::npos);
+}
+
+TEST(Executor, RejectsKernelsThatStallTheClock) {
+  // A step phase without `advance` never moves T: the executor must stop
+  // rather than spin.
+  std::vector<Section> sections = decaySections();
+  std::string plan = decayPlan(kSimple);
+  size_t step = plan.find("phase step\n") + 11;
+  plan.erase(step, plan.find('\n', step) - step + 1);
+  sections[1].bytes = plan;
+  auto bundle = parseBytes(writeBundle(sections));
+  Session session(bundle, cpuOptions(SIM_STRATEGY_SIMPLE));
+  EXPECT_NE(errorOf([&] { session.run(5); }, SIM_ERROR_CLOCK)
+                .find("the step phase made no progress at base step 0 of a run "
+                      "to 5"),
+            std::string::npos);
+}
+
+TEST(Executor, RejectsAGroupSizeOfZeroOrLess) {
+  EXPECT_NE(
+      errorOf([] { Session s(decay(), cpuOptions(SIM_STRATEGY_HIP, 1, -4)); },
+              SIM_ERROR_INVALID_ARGUMENT)
+          .find("group size -4 is not positive"),
+      std::string::npos);
+}
