@@ -397,4 +397,91 @@ TEST_F(CPUKernelsTest, SubStepsTakeTheGroupMinimum) {
     EXPECT_TRUE(std::isfinite(hip->value("Y", item)));
 }
 
+/// @Drive moves @U linearly in time (so linear interpolation of it is
+/// exact); @Smooth integrates the mean of @U over the window i-1..i+1 (a
+/// cache under hip-cache) with sub-steps of 1 inside big steps of max_steps.
+constexpr const char *kSmooth = R"mlir(
+sim.simulation @smooth range(10) dt(1.0e-1 : f32) max_steps(4) {
+  sim.buffer @U : f32 boundary(wrap) init {
+  ^bb0(%i: index):
+    %i32 = arith.index_cast %i : index to i32
+    %x = arith.sitofp %i32 : i32 to f32
+    sim.yield %x : f32
+  }
+  sim.buffer @S : f32 init {
+  ^bb0(%i: index):
+    %zero = arith.constant 0.0 : f32
+    sim.yield %zero : f32
+  }
+  sim.component @Drive writes(@U) evaluate {
+  ^bb0(%i: index, %t: i64, %n: i32, %dt: f32):
+    %u = sim.read @U[%i] : f32
+    %nf = arith.sitofp %n : i32 to f32
+    %h = arith.mulf %nf, %dt : f32
+    %next = arith.addf %u, %h : f32
+    sim.yield %next : f32
+  }
+  sim.component @Smooth writes(@S) num_steps {
+  ^bb0(%i: index, %t: i64):
+    %c1 = arith.constant 1 : i32
+    sim.yield %c1 : i32
+  } evaluate {
+  ^bb0(%i: index, %t: i64, %n: i32, %dt: f32):
+    %lo = arith.constant -1 : index
+    %hi = arith.constant 2 : index
+    %one = arith.constant 1 : index
+    %zero = arith.constant 0.0 : f32
+    %sum = scf.for %k = %lo to %hi step %one iter_args(%acc = %zero) -> (f32) {
+      %j = arith.addi %i, %k : index
+      %u = sim.read @U[%j] : f32
+      %next = arith.addf %acc, %u : f32
+      scf.yield %next : f32
+    }
+    %third = arith.constant 0.333333343 : f32
+    %mean = arith.mulf %sum, %third : f32
+    %s = sim.read @S[%i] : f32
+    %nf = arith.sitofp %n : i32 to f32
+    %h = arith.mulf %nf, %dt : f32
+    %ds = arith.mulf %h, %mean : f32
+    %next = arith.addf %s, %ds : f32
+    sim.yield %next : f32
+  }
+  sim.schedule [@Drive]
+  sim.observe [@S]
+}
+)mlir";
+
+TEST_F(CPUKernelsTest, CachingNeverChangesResults) {
+  std::unique_ptr<CPURun> hip = lower(kSmooth, Strategy::hip);
+  std::unique_ptr<CPURun> cached = lower(kSmooth, Strategy::hip_cache);
+  ASSERT_TRUE(hip && cached);
+  for (CPURun *run : {hip.get(), cached.get()}) {
+    run->phase(simplan::PhaseKind::init);
+    run->run(11);
+  }
+  EXPECT_EQ(cached->clock[0], 11);
+  for (int64_t item = 0; item < 10; ++item)
+    EXPECT_EQ(cached->value("S", item), hip->value("S", item)) << item;
+}
+
+TEST_F(CPUKernelsTest, HipInterpolatesWhenBigStepsAreLong) {
+  // Big steps of 4: @Smooth takes 4 sub-steps in each and reads @U
+  // interpolated at the end of each sub-step. @U is linear in time, so the
+  // interpolation is exact and hip matches simple up to rounding; reading
+  // @U at T or at T + m instead would be off by up to 3 base steps of drift.
+  std::unique_ptr<CPURun> simple = lower(kSmooth, Strategy::simple);
+  std::unique_ptr<CPURun> hip = lower(kSmooth, Strategy::hip);
+  ASSERT_TRUE(simple && hip);
+  for (CPURun *run : {simple.get(), hip.get()}) {
+    run->phase(simplan::PhaseKind::init);
+    run->run(12);
+  }
+  EXPECT_EQ(hip->clock[5], 3) << "three big steps of 4";
+  EXPECT_EQ(hip->clock[9], 12 * 10) << "@Smooth still sub-steps every step";
+  for (int64_t item = 0; item < 10; ++item)
+    EXPECT_NEAR(hip->value("S", item), simple->value("S", item),
+                1e-5 * std::abs(simple->value("S", item)))
+        << item;
+}
+
 } // namespace

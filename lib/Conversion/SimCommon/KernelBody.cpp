@@ -13,7 +13,9 @@
 
 #include "mlir/Dialect/Arith/IR/Arith.h"
 #include "mlir/Dialect/MemRef/IR/MemRef.h"
+#include "mlir/Dialect/SCF/IR/SCF.h"
 #include "mlir/IR/IRMapping.h"
+#include "mlir/Transforms/RegionUtils.h"
 
 using namespace mlir;
 using namespace mlir::sim;
@@ -74,13 +76,19 @@ static Value castParam(OpBuilder &builder, Location loc, Value value,
   return nullptr;
 }
 
+static FailureOr<SmallVector<Value>>
+cloneAndLower(OpBuilder &builder, SimulationOp simulation,
+              ArrayRef<Operation *> ops, IRMapping &mapping, ValueRange yielded,
+              const KernelValues &values);
+
 namespace {
 
 /// Replaces the sim ops of one cloned body.
 class BodyLowering {
 public:
-  BodyLowering(SimulationOp simulation, const KernelValues &values)
-      : simulation(simulation), values(values) {}
+  BodyLowering(SimulationOp simulation, const KernelValues &values,
+               const llvm::DenseMap<StringAttr, FillCacheOp> &fills)
+      : simulation(simulation), values(values), fills(fills) {}
 
   FailureOr<Value> lower(OpBuilder &builder, Operation *op) {
     Location loc = op->getLoc();
@@ -112,6 +120,8 @@ private:
     if (version == Version::local)
       if (Value value = values.registers.lookup(name))
         return value;
+    if (version == Version::cache)
+      return lowerCacheLoad(builder, load);
 
     Value memory, base;
     switch (version) {
@@ -130,6 +140,8 @@ private:
     case Version::snapshot:
       memory = values.snapshots.lookup(name);
       break;
+    case Version::cache:
+      llvm_unreachable("handled above");
     }
     if (!memory || (version != Version::snapshot && !base))
       return load.emitOpError()
@@ -149,6 +161,51 @@ private:
           builder, loc, inBounds, value,
           buildZeroElement(builder, loc, value.getType()));
     return value;
+  }
+
+  /// Inside the group's cached items, the cache; elsewhere (or without a
+  /// cache) the value the fill computes, at the read item.
+  FailureOr<Value> lowerCacheLoad(OpBuilder &builder, LoadOp load) {
+    Location loc = load.getLoc();
+    StringAttr name = load.getBufferAttr().getAttr();
+    FillCacheOp fill = fills.lookup(name);
+    if (!fill)
+      return load.emitOpError() << "loads the cache of " << load.getBufferAttr()
+                                << ", but the body fills none";
+    auto compute = [&]() -> FailureOr<Value> {
+      IRMapping mapping;
+      Block &block = fill.getBody().front();
+      mapping.map(block.getArgument(0), load.getIndex());
+      SmallVector<Operation *> ops;
+      for (Operation &op : block.without_terminator())
+        ops.push_back(&op);
+      FailureOr<SmallVector<Value>> results =
+          cloneAndLower(builder, simulation, ops, mapping,
+                        block.getTerminator()->getOperands(), values);
+      if (failed(results))
+        return failure();
+      return results->front();
+    };
+    CacheView view = values.caches.lookup(name);
+    if (!view.memory)
+      return compute();
+    Value offset =
+        arith::SubIOp::create(builder, loc, load.getIndex(), view.first);
+    Value inside = arith::CmpIOp::create(
+        builder, loc, arith::CmpIPredicate::ult, offset, view.size);
+    auto branch = scf::IfOp::create(builder, loc, load.getType(), inside,
+                                    /*withElseRegion=*/true);
+    OpBuilder::InsertionGuard guard(builder);
+    builder.setInsertionPointToStart(&branch.getThenRegion().front());
+    scf::YieldOp::create(
+        builder, loc,
+        ValueRange{memref::LoadOp::create(builder, loc, view.memory, offset)});
+    builder.setInsertionPointToStart(&branch.getElseRegion().front());
+    FailureOr<Value> computed = compute();
+    if (failed(computed))
+      return failure();
+    scf::YieldOp::create(builder, loc, ValueRange{*computed});
+    return branch.getResult(0);
   }
 
   /// A read in an init or exact body sees the initial state: the read
@@ -185,32 +242,37 @@ private:
 
   SimulationOp simulation;
   const KernelValues &values;
+  const llvm::DenseMap<StringAttr, FillCacheOp> &fills;
 };
 
 } // namespace
 
-FailureOr<SmallVector<Value>>
-mlir::sim::inlineBody(OpBuilder &builder, SimulationOp simulation, Region &body,
-                      ValueRange arguments, const KernelValues &values) {
-  if (!body.hasOneBlock())
-    return emitError(body.getLoc()) << "a body with more than one block "
-                                       "cannot be lowered";
-  Block &block = body.front();
-  IRMapping mapping;
-  mapping.map(block.getArguments(), arguments);
+/// Clones `ops` (in order) with `mapping`, then replaces the sim ops in the
+/// clones. A `sim.fill_cache` stays as it is (its region is lowered where a
+/// cache load or fill clones it) and is erased at the end.
+static FailureOr<SmallVector<Value>>
+cloneAndLower(OpBuilder &builder, SimulationOp simulation,
+              ArrayRef<Operation *> ops, IRMapping &mapping, ValueRange yielded,
+              const KernelValues &values) {
   SmallVector<Operation *> simOps;
-  for (Operation &op : block.without_terminator()) {
-    Operation *clone = builder.clone(op, mapping);
-    clone->walk([&](Operation *nested) {
+  llvm::DenseMap<StringAttr, FillCacheOp> fills;
+  for (Operation *op : ops) {
+    Operation *clone = builder.clone(*op, mapping);
+    clone->walk<WalkOrder::PreOrder>([&](Operation *nested) {
+      if (auto fill = dyn_cast<FillCacheOp>(nested)) {
+        fills[fill.getBufferAttr().getAttr()] = fill;
+        return WalkResult::skip();
+      }
       if (isa<SimDialect>(nested->getDialect()))
         simOps.push_back(nested);
+      return WalkResult::advance();
     });
   }
   SmallVector<Value> results;
-  for (Value value : block.getTerminator()->getOperands())
+  for (Value value : yielded)
     results.push_back(mapping.lookupOrDefault(value));
 
-  BodyLowering lowering(simulation, values);
+  BodyLowering lowering(simulation, values, fills);
   for (Operation *op : simOps) {
     OpBuilder::InsertionGuard guard(builder);
     builder.setInsertionPoint(op);
@@ -230,11 +292,75 @@ mlir::sim::inlineBody(OpBuilder &builder, SimulationOp simulation, Region &body,
     for (auto [result, replacement] :
          llvm::zip_equal(op->getResults(), replacements)) {
       result.replaceAllUsesWith(replacement);
-      for (Value &yielded : results)
-        if (yielded == result)
-          yielded = replacement;
+      for (Value &value : results)
+        if (value == result)
+          value = replacement;
     }
     op->erase();
   }
+  for (auto &entry : fills)
+    entry.second->erase();
   return results;
+}
+
+FailureOr<SmallVector<Value>>
+mlir::sim::inlineBody(OpBuilder &builder, SimulationOp simulation, Region &body,
+                      ValueRange arguments, const KernelValues &values) {
+  if (!body.hasOneBlock())
+    return emitError(body.getLoc()) << "a body with more than one block "
+                                       "cannot be lowered";
+  Block &block = body.front();
+  IRMapping mapping;
+  mapping.map(block.getArguments(), arguments);
+  SmallVector<Operation *> ops;
+  for (Operation &op : block.without_terminator())
+    ops.push_back(&op);
+  return cloneAndLower(builder, simulation, ops, mapping,
+                       block.getTerminator()->getOperands(), values);
+}
+
+FailureOr<Value> mlir::sim::inlineCacheFill(OpBuilder &builder,
+                                            SimulationOp simulation,
+                                            Region &body, ValueRange arguments,
+                                            FlatSymbolRefAttr buffer,
+                                            Value index,
+                                            const KernelValues &values) {
+  Block &block = body.front();
+  FillCacheOp fill;
+  for (auto candidate : block.getOps<FillCacheOp>())
+    if (candidate.getBufferAttr() == buffer)
+      fill = candidate;
+  if (!fill)
+    return emitError(body.getLoc()) << "the body fills no cache of " << buffer;
+
+  // The body's ops the fill depends on (its time values), in body order.
+  llvm::SetVector<Value> captured;
+  getUsedValuesDefinedAbove(fill.getBody(), captured);
+  llvm::SmallPtrSet<Operation *, 16> needed;
+  SmallVector<Value> worklist(captured.begin(), captured.end());
+  while (!worklist.empty()) {
+    Operation *def = worklist.pop_back_val().getDefiningOp();
+    if (!def || def->getBlock() != &block || !needed.insert(def).second)
+      continue;
+    def->walk([&](Operation *nested) {
+      llvm::append_range(worklist, nested->getOperands());
+    });
+  }
+  SmallVector<Operation *> ops;
+  for (Operation &op : block)
+    if (needed.contains(&op))
+      ops.push_back(&op);
+  Block &fillBlock = fill.getBody().front();
+  for (Operation &op : fillBlock.without_terminator())
+    ops.push_back(&op);
+
+  IRMapping mapping;
+  mapping.map(block.getArguments(), arguments);
+  mapping.map(fillBlock.getArgument(0), index);
+  FailureOr<SmallVector<Value>> results =
+      cloneAndLower(builder, simulation, ops, mapping,
+                    fillBlock.getTerminator()->getOperands(), values);
+  if (failed(results))
+    return failure();
+  return results->front();
 }

@@ -192,6 +192,20 @@ private:
   Value estimate(Kernel &kernel, ComponentOp component, Value item, Value time,
                  const KernelValues &values);
 
+  /// A group cache of hip-cache: the fill the front end recorded and its
+  /// memory.
+  struct Cache {
+    FillCacheOp fill;
+    Value memory;
+  };
+  /// The caches of `component`'s evaluate body, on targets that keep them.
+  SmallVector<Cache> createCaches(Kernel &kernel, ComponentOp component);
+  /// Fills the caches of the group at `base` for an evaluation from local
+  /// time `time` of `steps` base steps, points `kernel.values` at them and
+  /// waits for the group.
+  void fillCaches(Kernel &kernel, ComponentOp component, ArrayRef<Cache> caches,
+                  Value base, Value time, Value steps, Value dt);
+
   LogicalResult emitResetClock(OpBuilder &launches);
   LogicalResult emitInit(BufferOp buffer, OpBuilder &launches);
   LogicalResult emitExact(BufferOp buffer, OpBuilder &launches);
@@ -403,7 +417,8 @@ LogicalResult SimulationLowering::endKernel(Kernel &kernel,
       launches.getArrayAttr(args),
       component ? FlatSymbolRefAttr::get(component.getSymNameAttr())
                 : FlatSymbolRefAttr(),
-      /*shared_per_thread=*/0, /*shared_fixed=*/0);
+      launches.getI64IntegerAttr(kernel.sharedPerThread),
+      launches.getI64IntegerAttr(kernel.sharedFixed));
   return success();
 }
 
@@ -459,6 +474,64 @@ Value SimulationLowering::estimate(Kernel &kernel, ComponentOp component,
                                    const KernelValues &values) {
   Value steps = inline_(component.getNumSteps(), {item, time}, values).front();
   return b.max(steps, b.i32(1));
+}
+
+SmallVector<SimulationLowering::Cache>
+SimulationLowering::createCaches(Kernel &kernel, ComponentOp component) {
+  SmallVector<Cache> caches;
+  if (!target.hasCaches())
+    return caches;
+  auto stride = [&](FillCacheOp fill) {
+    return simulation.lookupBuffer(fill.getBufferAttr()).getElementBytes();
+  };
+  SmallVector<FillCacheOp> fills(
+      component.getEvaluate().front().getOps<FillCacheOp>());
+  // By decreasing element size, so every cache is aligned to its elements.
+  llvm::stable_sort(fills, [&](FillCacheOp a, FillCacheOp b) {
+    return stride(a) > stride(b);
+  });
+  for (FillCacheOp fill : fills) {
+    BufferOp buffer = simulation.lookupBuffer(fill.getBufferAttr());
+    int64_t halo =
+        fill.getMaxOffsetAttr().getInt() - fill.getMinOffsetAttr().getInt();
+    caches.push_back(
+        {fill, target.createCache(b, kernel, buffer.getElementType(),
+                                  stride(fill), halo)});
+  }
+  return caches;
+}
+
+/// Fig. 8 of the paper: the group interpolates the values of its window once
+/// into shared memory (every lane fills some slots, padding lanes too),
+/// then reads inside the window come from there.
+void SimulationLowering::fillCaches(Kernel &kernel, ComponentOp component,
+                                    ArrayRef<Cache> caches, Value base,
+                                    Value time, Value steps, Value dt) {
+  kernel.values.caches.clear();
+  if (caches.empty())
+    return;
+  for (Cache cache : caches) {
+    int64_t low = cache.fill.getMinOffsetAttr().getInt();
+    int64_t halo = cache.fill.getMaxOffsetAttr().getInt() - low;
+    Value count = b.add(target.groupSize(b, kernel), b.index(halo));
+    Value first = b.add(base, b.index(low));
+    target.forEachSlot(b, kernel, count, [&](Value slot) {
+      Value item = b.add(first, slot);
+      KernelValues values = kernel.values;
+      values.item = nullptr; // the fill reads other items: boundary rules
+      FailureOr<Value> value = inlineCacheFill(
+          b, simulation, component.getEvaluate(), {item, time, steps, dt},
+          cache.fill.getBufferAttr(), item, values);
+      if (failed(value)) {
+        bodyFailed = true;
+        return;
+      }
+      b.store(*value, cache.memory, slot);
+    });
+    kernel.values.caches[cache.fill.getBufferAttr().getAttr()] = {cache.memory,
+                                                                  first, count};
+  }
+  target.barrier(b);
 }
 
 //===----------------------------------------------------------------------===//
@@ -608,20 +681,28 @@ LogicalResult SimulationLowering::emitEvaluate(ComponentOp component,
   kernel.values.bigStepSize = size;
   Value steps = b.truncate(size, b.getI32Type());
   Value dt = kernel.values.params.lookup("dt");
+  SmallVector<Cache> caches = createCaches(kernel, component);
   b.ifThen(b.cmp(arith::CmpIPredicate::sgt, size, b.i64(0)), [&] {
-    forEachItem(kernel, [&](const Lane &lane) {
-      b.ifThen(lane.active, [&] {
-        KernelValues values = kernel.values;
-        values.item = lane.item;
-        SmallVector<Value> results = inline_(
-            component.getEvaluate(), {lane.item, begin, steps, dt}, values);
-        for (auto [name, value] : llvm::zip_equal(
-                 component.getWrites().getAsRange<FlatSymbolRefAttr>(),
-                 results))
-          b.store(value, values.buffers.lookup(name.getAttr()),
-                  b.add(values.targetBase, lane.item));
+    target.forEachGroup(b, kernel, [&](Value base) {
+      if (!caches.empty()) {
+        // The previous group's reads of the caches are done.
+        target.barrier(b);
+        fillCaches(kernel, component, caches, base, begin, steps, dt);
+      }
+      target.forEachLane(b, kernel, base, [&](const Lane &lane) {
+        b.ifThen(lane.active, [&] {
+          KernelValues values = kernel.values;
+          values.item = lane.item;
+          SmallVector<Value> results = inline_(
+              component.getEvaluate(), {lane.item, begin, steps, dt}, values);
+          for (auto [name, value] : llvm::zip_equal(
+                   component.getWrites().getAsRange<FlatSymbolRefAttr>(),
+                   results))
+            b.store(value, values.buffers.lookup(name.getAttr()),
+                    b.add(values.targetBase, lane.item));
+        });
+        countEvaluation(count, lane);
       });
-      countEvaluation(count, lane);
     });
     target.reduceIntoClock(b, kernel, count, arith::AtomicRMWKind::addi,
                            evaluationSlots.lookup(component));
@@ -650,6 +731,7 @@ LogicalResult SimulationLowering::emitSubSteps(ComponentOp component,
   kernel.values.bigStepBegin = begin;
   kernel.values.bigStepSize = size;
   Value dt = kernel.values.params.lookup("dt");
+  SmallVector<Cache> caches = createCaches(kernel, component);
 
   // The values a lane's bodies read: its registers.
   auto laneValues = [&](const Lane &lane) {
@@ -705,6 +787,13 @@ LogicalResult SimulationLowering::emitSubSteps(ComponentOp component,
           });
       Value subStep = decided.getResult(0);
       Value subStep32 = b.truncate(subStep, b.getI32Type());
+      if (!caches.empty()) {
+        // The caches of the previous sub-step are free once every lane has
+        // passed the barrier of this sub-step's minimum; when m = 1 there
+        // was none.
+        b.ifThen(single, [&] { target.barrier(b); });
+        fillCaches(kernel, component, caches, base, time, subStep32, dt);
+      }
       target.forEachLane(b, kernel, base, [&](const Lane &lane) {
         b.ifThen(lane.active, [&] {
           SmallVector<Value> results =
@@ -866,19 +955,26 @@ LogicalResult SimulationLowering::emitRounds(ComponentOp component,
     kernel.values.bigStepSize = size;
     Value dt = kernel.values.params.lookup("dt");
     Value steps = b.truncate(subSize, b.getI32Type());
+    SmallVector<Cache> caches = createCaches(kernel, component);
     b.ifThen(b.cmp(arith::CmpIPredicate::sgt, subSize, b.i64(0)), [&] {
-      forEachItem(kernel, [&](const Lane &lane) {
-        b.ifThen(lane.active, [&] {
-          KernelValues values = kernel.values;
-          values.item = lane.item;
-          SmallVector<Value> results =
-              inline_(component.getEvaluate(), {lane.item, subBegin, steps, dt},
-                      values);
-          for (auto [write, value] : llvm::zip_equal(writes, results))
-            b.store(value, values.buffers.lookup(write.getAttr()),
-                    b.add(writeBase, lane.item));
+      target.forEachGroup(b, kernel, [&](Value base) {
+        if (!caches.empty()) {
+          target.barrier(b);
+          fillCaches(kernel, component, caches, base, subBegin, steps, dt);
+        }
+        target.forEachLane(b, kernel, base, [&](const Lane &lane) {
+          b.ifThen(lane.active, [&] {
+            KernelValues values = kernel.values;
+            values.item = lane.item;
+            SmallVector<Value> results =
+                inline_(component.getEvaluate(),
+                        {lane.item, subBegin, steps, dt}, values);
+            for (auto [write, value] : llvm::zip_equal(writes, results))
+              b.store(value, values.buffers.lookup(write.getAttr()),
+                      b.add(writeBase, lane.item));
+          });
+          countEvaluation(count, lane);
         });
-        countEvaluation(count, lane);
       });
       target.reduceIntoClock(b, kernel, count, arith::AtomicRMWKind::addi,
                              evaluationSlots.lookup(component));

@@ -98,6 +98,10 @@ public:
     return {memory};
   }
 
+  Value groupSize(KernelBuilder &, Kernel &kernel) override {
+    return kernel.targetState[0];
+  }
+
   void prepareGroupMin(KernelBuilder &, Kernel &) override {}
 
   Value groupMin(KernelBuilder &b, Kernel &kernel, LaneVar value) override {

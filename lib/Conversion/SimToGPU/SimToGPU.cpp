@@ -163,6 +163,48 @@ public:
     });
   }
 
+  bool hasCaches() const override { return true; }
+
+  Value groupSize(KernelBuilder &b, Kernel &) override {
+    return gpu::BlockDimOp::create(b, b.loc, gpu::Dimension::x);
+  }
+
+  /// Caches live in dynamic shared memory, one after another; each starts
+  /// at a multiple of its element size because SimulationKernels creates
+  /// them by decreasing element size.
+  Value createCache(KernelBuilder &b, Kernel &kernel, Type elementType,
+                    int64_t stride, int64_t halo) override {
+    MLIRContext *context = b.getContext();
+    auto workgroup =
+        gpu::AddressSpaceAttr::get(context, gpu::AddressSpace::Workgroup);
+    Value base = gpu::DynamicSharedMemoryOp::create(
+        b, b.loc,
+        MemRefType::get({ShapedType::kDynamic}, b.getI8Type(), nullptr,
+                        workgroup));
+    Value count = b.add(groupSize(b, kernel), b.index(halo));
+    Value offset = kernel.sharedOffset ? kernel.sharedOffset : b.index(0);
+    Value cache =
+        memref::ViewOp::create(b, b.loc,
+                               MemRefType::get({ShapedType::kDynamic},
+                                               elementType, nullptr, workgroup),
+                               base, offset, ValueRange{count});
+    kernel.sharedOffset = b.add(offset, b.mul(count, b.index(stride)));
+    kernel.sharedPerThread += stride;
+    kernel.sharedFixed += halo * stride;
+    return cache;
+  }
+
+  void forEachSlot(KernelBuilder &b, Kernel &kernel, Value count,
+                   function_ref<void(Value slot)> body) override {
+    auto loop =
+        scf::ForOp::create(b, b.loc, threadId(b), count, groupSize(b, kernel));
+    OpBuilder::InsertionGuard guard(b);
+    b.setInsertionPoint(loop.getBody()->getTerminator());
+    body(loop.getInductionVar());
+  }
+
+  void barrier(KernelBuilder &b) override { gpu::BarrierOp::create(b, b.loc); }
+
 private:
   static Value threadId(KernelBuilder &b) {
     return gpu::ThreadIdOp::create(b, b.loc, gpu::Dimension::x);

@@ -20,6 +20,13 @@
 
 namespace mlir::sim {
 
+/// A group's shared-memory cache of one buffer: the interpolated values of
+/// items `first .. first + size - 1`.
+struct CacheView {
+  Value memory;
+  Value first, size;
+};
+
 /// What the sim ops of a body stand for in one kernel.
 struct KernelValues {
   /// The number of items (index).
@@ -43,6 +50,10 @@ struct KernelValues {
   Value item;
   /// `sim.big_step` (i64 values); null where a body cannot ask for it.
   Value bigStepBegin, bigStepSize;
+  /// Per buffer name: the group's cache that `sim.load cache` reads inside
+  /// its items. Without one (a CPU, or outside the items) a cache load
+  /// computes the body's `sim.fill_cache` region at the read item.
+  llvm::DenseMap<StringAttr, CacheView> caches;
 };
 
 /// Returns the item index that a read of `index` actually reads under
@@ -65,6 +76,15 @@ FailureOr<SmallVector<Value>> inlineBody(OpBuilder &builder,
                                          SimulationOp simulation, Region &body,
                                          ValueRange arguments,
                                          const KernelValues &values);
+
+/// The value that `buffer`'s `sim.fill_cache` in the evaluate body `body`
+/// gives item `index`, for a body run with `arguments`: clones the fill's
+/// region and the body's ops it depends on (its time values) at the
+/// builder's insertion point.
+FailureOr<Value> inlineCacheFill(OpBuilder &builder, SimulationOp simulation,
+                                 Region &body, ValueRange arguments,
+                                 FlatSymbolRefAttr buffer, Value index,
+                                 const KernelValues &values);
 
 } // namespace mlir::sim
 

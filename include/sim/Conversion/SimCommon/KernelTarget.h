@@ -103,6 +103,10 @@ struct Kernel {
   /// Target-specific state of the kernel (for example its workgroup
   /// memory for group minima).
   llvm::SmallVector<Value> targetState;
+  /// Dynamic shared memory of a launch: `sharedPerThread * group size +
+  /// sharedFixed` bytes, and the byte offset of the next cache in it.
+  int64_t sharedPerThread = 0, sharedFixed = 0;
+  Value sharedOffset;
 };
 
 /// What a backend provides to the kernels.
@@ -146,6 +150,28 @@ public:
   /// after the last group, at the kernel's top level.
   virtual void reduceIntoClock(KernelBuilder &b, Kernel &kernel, LaneVar value,
                                arith::AtomicRMWKind kind, int64_t slot) = 0;
+
+  /// Whether the backend keeps hip-cache's shared-memory caches. Without
+  /// them a cache load computes its value (the results are the same).
+  virtual bool hasCaches() const { return false; }
+  /// The number of lanes of a group, at the builder's position.
+  virtual Value groupSize(KernelBuilder &b, Kernel &kernel) = 0;
+  /// A cache of `elementType` elements (`stride` bytes each) for a group's
+  /// items plus `halo` more, created at the builder's position (the
+  /// kernel's top level).
+  virtual Value createCache(KernelBuilder &b, Kernel &kernel, Type elementType,
+                            int64_t stride, int64_t halo) {
+    llvm_unreachable("this target keeps no caches");
+  }
+  /// Runs `body(slot)` for each of `count` slots, spread over the lanes of
+  /// the group (at group level).
+  virtual void forEachSlot(KernelBuilder &b, Kernel &kernel, Value count,
+                           function_ref<void(Value slot)> body) {
+    llvm_unreachable("this target keeps no caches");
+  }
+  /// Waits for every lane of the group (nothing on a target whose phases
+  /// run one after another).
+  virtual void barrier(KernelBuilder &b) {}
 
   Value laneLoad(KernelBuilder &b, LaneVar var, const Lane &lane) {
     return b.load(var.memory, lane.slot);

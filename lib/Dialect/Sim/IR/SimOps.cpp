@@ -789,11 +789,57 @@ LogicalResult LoadOp::verifySymbolUses(SymbolTableCollection &symbolTable) {
                          << ", but the memory plan keeps none: the buffer is "
                             "not marked 'snapshot'";
   ComponentOp component = getEnclosingBody(*this)->component;
+  if (getVersion() == Version::cache && !findFillCache(*this, getBufferAttr()))
+    return emitOpError() << "loads the cache of " << getBufferAttr()
+                         << ", but the body fills no cache of it "
+                            "(sim.fill_cache)";
   if (getVersion() == Version::local &&
       !component.writesBuffer(getBufferAttr()))
     return emitOpError() << "loads the local state of " << getBufferAttr()
                          << ", but component @" << component.getSymName()
                          << " does not write it";
+  return success();
+}
+
+FillCacheOp mlir::sim::findFillCache(Operation *op, FlatSymbolRefAttr buffer) {
+  std::optional<BodyLocation> body = getEnclosingBody(op);
+  if (!body || !body->component || body->kind != BodyKind::Evaluate)
+    return nullptr;
+  for (auto fill : body->component.getEvaluate().front().getOps<FillCacheOp>())
+    if (fill.getBufferAttr() == buffer)
+      return fill;
+  return nullptr;
+}
+
+LogicalResult FillCacheOp::verifyRegions() {
+  std::optional<BodyLocation> body = getEnclosingBody(*this);
+  if (!body || !body->component || body->kind != BodyKind::Evaluate ||
+      (*this)->getParentRegion() != &body->component.getEvaluate())
+    return emitOpError() << "must be at the top of a component's evaluate "
+                            "body";
+  Block &block = getBody().front();
+  if (block.getNumArguments() != 1 || !block.getArgument(0).getType().isIndex())
+    return emitOpError() << "expects one index argument (the item)";
+  int64_t lo = getMinOffsetAttr().getInt(), hi = getMaxOffsetAttr().getInt();
+  if (lo >= hi)
+    return emitOpError() << "expects a window of more than one offset, but "
+                            "got "
+                         << lo << ", " << hi;
+  return success();
+}
+
+LogicalResult
+FillCacheOp::verifySymbolUses(SymbolTableCollection &symbolTable) {
+  auto buffer =
+      symbolTable.lookupNearestSymbolFrom<BufferOp>(*this, getBufferAttr());
+  if (!buffer)
+    return emitOpError() << getBufferAttr()
+                         << " does not name a sim.buffer of the simulation";
+  auto yield = cast<YieldOp>(getBody().front().getTerminator());
+  if (yield.getValues().size() != 1 ||
+      yield.getValues().front().getType() != buffer.getElementType())
+    return emitOpError() << "must yield one " << buffer.getElementType()
+                         << ", the element of " << getBufferAttr();
   return success();
 }
 

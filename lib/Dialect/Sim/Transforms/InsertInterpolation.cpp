@@ -108,12 +108,15 @@ private:
     return {bigStep.getBegin(), bigStep.getSize()};
   }
 
+public:
+  /// A builder after the body's time values (they dominate what it builds).
   OpBuilder atBodyStart() {
     getBigStep();
     OpBuilder builder(insertionPoint);
     return builder;
   }
 
+private:
   void track(std::initializer_list<Value> values) {
     for (Value value : values)
       created.push_back(value.getDefiningOp());
@@ -177,6 +180,7 @@ struct InsertInterpolationPass
                   isEvaluate ? Value(component.getEvaluateSteps()) : Value(),
                   simulation.getTimeStepType());
     IRRewriter rewriter(&getContext());
+    fills.clear();
     for (ReadOp read : reads) {
       if (!read.getRoleAttr())
         return read.emitOpError()
@@ -197,11 +201,14 @@ struct InsertInterpolationPass
                                ComponentOp component, ReadOp read,
                                BodyKind kind, bool subSteps, BodyTime &time) {
     Location loc = read.getLoc();
-    auto load = [&](BufferOp buffer, Version version) -> Value {
-      return LoadOp::create(rewriter, loc, buffer.getElementType(),
+    auto loadAt = [&](OpBuilder &builder, BufferOp buffer, Version version,
+                      Value index) -> Value {
+      return LoadOp::create(builder, loc, buffer.getElementType(),
                             FlatSymbolRefAttr::get(buffer.getSymNameAttr()),
-                            read.getIndex(),
-                            VersionAttr::get(&getContext(), version));
+                            index, VersionAttr::get(&getContext(), version));
+    };
+    auto load = [&](BufferOp buffer, Version version) -> Value {
+      return loadAt(rewriter, buffer, version, read.getIndex());
     };
     BufferOp buffer = simulation.lookupBuffer(read.getBufferAttr());
     switch (read.getRole().value()) {
@@ -237,17 +244,54 @@ struct InsertInterpolationPass
                << component.getSymName() << " in the step";
       inputs.push_back(auxBuffer);
     }
-    SmallVector<Value> atBegin, atEnd;
-    for (BufferOp input : inputs) {
-      atBegin.push_back(load(input, input.getSnapshot() ? Version::snapshot
-                                                        : Version::source));
-      atEnd.push_back(load(input, Version::target));
-    }
+    // The interpolated value at an item, built where `builder` points.
     FloatType scalarType = buffer.getScalarType();
-    return interp.buildInterpolation(rewriter, loc, atBegin, atEnd,
-                                     time.getFraction(scalarType),
-                                     time.getSpan(scalarType));
+    Value fraction = time.getFraction(scalarType);
+    Value span = time.getSpan(scalarType);
+    auto interpolateAt = [&](OpBuilder &builder, Value index) {
+      SmallVector<Value> atBegin, atEnd;
+      for (BufferOp input : inputs) {
+        atBegin.push_back(loadAt(
+            builder, input,
+            input.getSnapshot() ? Version::snapshot : Version::source, index));
+        atEnd.push_back(loadAt(builder, input, Version::target, index));
+      }
+      return interp.buildInterpolation(builder, loc, atBegin, atEnd, fraction,
+                                       span);
+    };
+
+    // hip-cache: a recorded cache of this buffer is filled once per sub-step
+    // (at the end of the sub-step, as evaluate reads), and the read loads
+    // it. num_steps reads at another time and does not use it.
+    CacheAttr cache = findCache(component, read.getBufferAttr());
+    if (cache && kind == BodyKind::Evaluate) {
+      FillCacheOp &fill = fills[buffer.getSymNameAttr()];
+      if (!fill) {
+        OpBuilder builder = time.atBodyStart();
+        fill = FillCacheOp::create(
+            builder, loc, read.getBufferAttr(),
+            builder.getI64IntegerAttr(cache.getMinOffset()),
+            builder.getI64IntegerAttr(cache.getMaxOffset()));
+        Block *block = builder.createBlock(&fill.getBody(), {},
+                                           builder.getIndexType(), loc);
+        Value value = interpolateAt(builder, block->getArgument(0));
+        YieldOp::create(builder, loc, value);
+      }
+      return load(buffer, Version::cache);
+    }
+    return interpolateAt(rewriter, read.getIndex());
   }
+
+  static CacheAttr findCache(ComponentOp component, FlatSymbolRefAttr buffer) {
+    if (ArrayAttr caches = component.getCachesAttr())
+      for (auto cache : caches.getAsRange<CacheAttr>())
+        if (cache.getBuffer() == buffer)
+          return cache;
+    return nullptr;
+  }
+
+  /// The cache fills of the body being rewritten, by buffer.
+  llvm::DenseMap<StringAttr, FillCacheOp> fills;
 };
 
 } // namespace

@@ -83,14 +83,18 @@ def Sim_ParityAttr : EnumAttr<Sim_Dialect, Sim_Parity, "parity">;
 def Sim_Version : I32Enum<"Version",
     "which copy of a buffer an explicit load reads", [
     I32EnumCase<"source", 0>, I32EnumCase<"snapshot", 1>,
-    I32EnumCase<"target", 2>, I32EnumCase<"local", 3>]> {
+    I32EnumCase<"target", 2>, I32EnumCase<"local", 3>,
+    I32EnumCase<"cache", 4>]> {
   let cppNamespace = "::mlir::sim";
   let description = [{
     `source`: the half that holds the value at the start `T` of the big step;
     `snapshot`: the copy of the value at `T` taken before the writer ran (only
     for buffers the memory plan snapshots); `target`: the half that holds the
     value at `T + m` once the writer ran; `local`: the reading component's own
-    state at its current local time.
+    state at its current local time; `cache`: the interpolated value at the
+    reader's local time that the body's `sim.fill_cache` of the buffer
+    describes (a GPU serves it from the group's shared-memory cache inside
+    the cached window, and computes it like the fill outside it).
   }];
 }
 def Sim_VersionAttr : EnumAttr<Sim_Dialect, Sim_Version, "version">;

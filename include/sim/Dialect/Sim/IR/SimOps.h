@@ -26,6 +26,11 @@ struct StateResource : public SideEffects::Resource::Base<StateResource> {
   StringRef getName() final { return "SimState"; }
 };
 
+/// The memory-effect resource of the shared-memory caches of hip-cache.
+struct CacheResource : public SideEffects::Resource::Base<CacheResource> {
+  StringRef getName() final { return "SimCache"; }
+};
+
 /// The kinds of bodies that may read state.
 enum class BodyKind { NumSteps, Evaluate, Init, Exact };
 
@@ -53,6 +58,10 @@ struct BodyLocation {
   BufferOp buffer;
 };
 std::optional<BodyLocation> getEnclosingBody(Operation *op);
+
+/// The sim.fill_cache of `buffer` in the evaluate body that holds `op`, or
+/// null.
+FillCacheOp findFillCache(Operation *op, FlatSymbolRefAttr buffer);
 
 } // namespace mlir::sim
 

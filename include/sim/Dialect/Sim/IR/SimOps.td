@@ -27,6 +27,10 @@ class Sim_Op<string mnemonic, list<Trait> traits = []>
 /// across anything that writes state.
 def Sim_StateResource : Resource<"::mlir::sim::StateResource">;
 
+/// The shared-memory caches of interpolated values (hip-cache): a fill writes
+/// them, cache loads read them.
+def Sim_CacheResource : Resource<"::mlir::sim::CacheResource">;
+
 def Sim_TimeStepAttr : AnyAttrOf<[F32Attr, F64Attr]>;
 
 //===----------------------------------------------------------------------===//
@@ -401,8 +405,8 @@ def Sim_ObserveOp : Sim_Op<"observe", [HasParent<"SimulationOp">,
 //===----------------------------------------------------------------------===//
 
 def Sim_YieldOp : Sim_Op<"yield", [Pure, Terminator, ReturnLike,
-    ParentOneOf<["BufferOp", "ComponentOp"]>]> {
-  let summary = "returns the values of a buffer or component body";
+    ParentOneOf<["BufferOp", "ComponentOp", "FillCacheOp"]>]> {
+  let summary = "returns the values of a buffer, component or fill body";
   let description = [{
     Terminates `init`, `exact`, `num_steps` and `evaluate` bodies.
 
@@ -451,8 +455,9 @@ def Sim_LoadOp : Sim_Op<"load", [
   let summary = "an explicit read of one copy of a buffer";
   let description = [{
     Produced by `--sim-insert-interpolation` from view reads: reads item `%j`
-    of one specific copy of a buffer (`source`, `snapshot`, `target` or the
-    component's `local` state). Nothing about time is left to derive: a
+    of one specific copy of a buffer (`source`, `snapshot`, `target`, the
+    component's `local` state, or under `hip-cache` the interpolated value a
+    `sim.fill_cache` of the body describes). Nothing about time is left to derive: a
     lowering turns it into an address computation and a load.
 
     ```mlir
@@ -468,6 +473,44 @@ def Sim_LoadOp : Sim_Op<"load", [
     `:` type($result)
   }];
   let hasVerifier = 1;
+}
+
+def Sim_FillCacheOp : Sim_Op<"fill_cache", [
+    SingleBlock, DeclareOpInterfaceMethods<SymbolUserOpInterface>,
+    MemoryEffects<[MemWrite<Sim_CacheResource>]>]> {
+  let summary = "the interpolated values of one buffer that a group caches";
+  let description = [{
+    Produced by `--sim-insert-interpolation` under `hip-cache`, at the start
+    of an `evaluate` body, for each cache the memory plan records
+    (`#sim.cache<@B, min, max>` in the component's `caches`). The region
+    computes the value of `@B` at item `%k`, interpolated at the sub-step's
+    local time (from the body's time values). Once per sub-step a GPU group
+    fills its shared memory with the region's values at the items from its
+    first item plus `min` to its last item plus `max`, then serves
+    `sim.load cache @B[%j]` from it; a read outside those items, and a
+    backend without caches, computes the region at `%j` instead. So caching
+    never changes a result.
+
+    ```mlir
+    sim.fill_cache @B0 window(-4, 4) {
+    ^bb0(%k: index):
+      %a = sim.load source @B0[%k] : vector<4xf32>
+      %b = sim.load target @B0[%k] : vector<4xf32>
+      ...
+      sim.yield %v : vector<4xf32>
+    }
+    ...
+    %v = sim.load cache @B0[%j] : vector<4xf32>
+    ```
+  }];
+  let arguments = (ins FlatSymbolRefAttr:$buffer, I64Attr:$min_offset,
+                       I64Attr:$max_offset);
+  let regions = (region SizedRegion<1>:$body);
+  let assemblyFormat = [{
+    $buffer `window` `(` $min_offset `,` $max_offset `)` attr-dict-with-keyword
+    $body
+  }];
+  let hasRegionVerifier = 1;
 }
 
 def Sim_BigStepOp : Sim_Op<"big_step", [Pure]> {
