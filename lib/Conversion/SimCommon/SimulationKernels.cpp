@@ -205,6 +205,13 @@ private:
   /// waits for the group.
   void fillCaches(Kernel &kernel, ComponentOp component, ArrayRef<Cache> caches,
                   Value base, Value time, Value steps, Value dt);
+  /// Evaluates every item of the invocation once, from local time `time`
+  /// over `steps` base steps (i32), filling the caches of each group first,
+  /// writes the results at element offset `writeBase` and counts the
+  /// evaluations in `count`.
+  void evaluateItems(Kernel &kernel, ComponentOp component,
+                     ArrayRef<Cache> caches, Value time, Value steps,
+                     Value writeBase, LaneVar count);
 
   LogicalResult emitResetClock(OpBuilder &launches);
   LogicalResult emitInit(BufferOp buffer, OpBuilder &launches);
@@ -486,9 +493,11 @@ SimulationLowering::createCaches(Kernel &kernel, ComponentOp component) {
   };
   SmallVector<FillCacheOp> fills(
       component.getEvaluate().front().getOps<FillCacheOp>());
-  // By decreasing element size, so every cache is aligned to its elements.
-  llvm::stable_sort(fills, [&](FillCacheOp a, FillCacheOp b) {
-    return stride(a) > stride(b);
+  // By decreasing element size, so every cache is aligned to its elements
+  // (then by name, so the layout does not depend on the body's order).
+  llvm::sort(fills, [&](FillCacheOp a, FillCacheOp b) {
+    return std::make_pair(-stride(a), a.getBuffer()) <
+           std::make_pair(-stride(b), b.getBuffer());
   });
   for (FillCacheOp fill : fills) {
     BufferOp buffer = simulation.lookupBuffer(fill.getBufferAttr());
@@ -532,6 +541,34 @@ void SimulationLowering::fillCaches(Kernel &kernel, ComponentOp component,
                                                                   first, count};
   }
   target.barrier(b);
+}
+
+void SimulationLowering::evaluateItems(Kernel &kernel, ComponentOp component,
+                                       ArrayRef<Cache> caches, Value time,
+                                       Value steps, Value writeBase,
+                                       LaneVar count) {
+  Value dt = kernel.values.params.lookup("dt");
+  target.forEachGroup(b, kernel, [&](Value base) {
+    if (!caches.empty()) {
+      // The previous group's reads of the caches are done.
+      target.barrier(b);
+      fillCaches(kernel, component, caches, base, time, steps, dt);
+    }
+    target.forEachLane(b, kernel, base, [&](const Lane &lane) {
+      b.ifThen(lane.active, [&] {
+        KernelValues values = kernel.values;
+        values.item = lane.item;
+        SmallVector<Value> results = inline_(
+            component.getEvaluate(), {lane.item, time, steps, dt}, values);
+        for (auto [name, value] : llvm::zip_equal(
+                 component.getWrites().getAsRange<FlatSymbolRefAttr>(),
+                 results))
+          b.store(value, values.buffers.lookup(name.getAttr()),
+                  b.add(writeBase, lane.item));
+      });
+      countEvaluation(count, lane);
+    });
+  });
 }
 
 //===----------------------------------------------------------------------===//
@@ -680,30 +717,10 @@ LogicalResult SimulationLowering::emitEvaluate(ComponentOp component,
   kernel.values.bigStepBegin = begin;
   kernel.values.bigStepSize = size;
   Value steps = b.truncate(size, b.getI32Type());
-  Value dt = kernel.values.params.lookup("dt");
   SmallVector<Cache> caches = createCaches(kernel, component);
   b.ifThen(b.cmp(arith::CmpIPredicate::sgt, size, b.i64(0)), [&] {
-    target.forEachGroup(b, kernel, [&](Value base) {
-      if (!caches.empty()) {
-        // The previous group's reads of the caches are done.
-        target.barrier(b);
-        fillCaches(kernel, component, caches, base, begin, steps, dt);
-      }
-      target.forEachLane(b, kernel, base, [&](const Lane &lane) {
-        b.ifThen(lane.active, [&] {
-          KernelValues values = kernel.values;
-          values.item = lane.item;
-          SmallVector<Value> results = inline_(
-              component.getEvaluate(), {lane.item, begin, steps, dt}, values);
-          for (auto [name, value] : llvm::zip_equal(
-                   component.getWrites().getAsRange<FlatSymbolRefAttr>(),
-                   results))
-            b.store(value, values.buffers.lookup(name.getAttr()),
-                    b.add(values.targetBase, lane.item));
-        });
-        countEvaluation(count, lane);
-      });
-    });
+    evaluateItems(kernel, component, caches, begin, steps,
+                  kernel.values.targetBase, count);
     target.reduceIntoClock(b, kernel, count, arith::AtomicRMWKind::addi,
                            evaluationSlots.lookup(component));
   });
@@ -953,29 +970,11 @@ LogicalResult SimulationLowering::emitRounds(ComponentOp component,
         b.mul(b.toIndex(b.xorOne(readParity)), kernel.values.range);
     kernel.values.bigStepBegin = begin;
     kernel.values.bigStepSize = size;
-    Value dt = kernel.values.params.lookup("dt");
     Value steps = b.truncate(subSize, b.getI32Type());
     SmallVector<Cache> caches = createCaches(kernel, component);
     b.ifThen(b.cmp(arith::CmpIPredicate::sgt, subSize, b.i64(0)), [&] {
-      target.forEachGroup(b, kernel, [&](Value base) {
-        if (!caches.empty()) {
-          target.barrier(b);
-          fillCaches(kernel, component, caches, base, subBegin, steps, dt);
-        }
-        target.forEachLane(b, kernel, base, [&](const Lane &lane) {
-          b.ifThen(lane.active, [&] {
-            KernelValues values = kernel.values;
-            values.item = lane.item;
-            SmallVector<Value> results =
-                inline_(component.getEvaluate(),
-                        {lane.item, subBegin, steps, dt}, values);
-            for (auto [write, value] : llvm::zip_equal(writes, results))
-              b.store(value, values.buffers.lookup(write.getAttr()),
-                      b.add(writeBase, lane.item));
-          });
-          countEvaluation(count, lane);
-        });
-      });
+      evaluateItems(kernel, component, caches, subBegin, steps, writeBase,
+                    count);
       target.reduceIntoClock(b, kernel, count, arith::AtomicRMWKind::addi,
                              evaluationSlots.lookup(component));
     });
