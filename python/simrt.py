@@ -1,0 +1,251 @@
+"""Python binding of the sim runtime (ctypes over libsim_runtime.so).
+
+Runs scene bundles (`sim-translate scene.mlir --sim-to-bundle`) from Python
+with the standard library only:
+
+    import simrt
+    with simrt.Bundle("gravity.simb") as bundle:
+        with simrt.Session(bundle, strategy="hip", backend="cpu") as session:
+            session.set("range", 4096)
+            session.run(100)
+            b2 = session.get("B2")          # array('f'), item-major, lanes packed
+            print(session.metrics()["big_steps"], session.evaluations())
+
+The library is found through $SIM_RUNTIME_LIB, next to this file's checkout
+(build/lib/libsim_runtime.so), or on the loader's path. Every failing call
+raises simrt.Error with the runtime's message. docs/Runtime.md documents the
+C API this wraps.
+"""
+
+import array
+import ctypes
+import os
+
+__all__ = ["Error", "Bundle", "Session", "load_library"]
+
+_STRATEGIES = {"simple": 0, "traditional": 1, "hip": 2, "hip-cache": 3}
+_BACKENDS = {"auto": 0, "cpu": 1, "cuda": 2}
+
+
+class Error(RuntimeError):
+    """A failed runtime call: `status` is the sim_status code."""
+
+    def __init__(self, status, message):
+        super().__init__(message)
+        self.status = status
+
+
+class _Options(ctypes.Structure):
+    _fields_ = [("strategy", ctypes.c_int), ("backend", ctypes.c_int),
+                ("group_size", ctypes.c_int64), ("cpu_threads", ctypes.c_int32),
+                ("cuda_device", ctypes.c_int32), ("cuda_graph", ctypes.c_int32),
+                ("check_finite", ctypes.c_int32)]
+
+
+class _Metrics(ctypes.Structure):
+    _fields_ = [("steps", ctypes.c_int64), ("begin", ctypes.c_int64),
+                ("end", ctypes.c_int64), ("wall_seconds", ctypes.c_double),
+                ("kernel_seconds", ctypes.c_double),
+                ("launches", ctypes.c_int64), ("graph_launches", ctypes.c_int64),
+                ("host_syncs", ctypes.c_int64), ("big_steps", ctypes.c_int64)]
+
+
+_lib = None
+
+
+def load_library(path=None):
+    """Loads libsim_runtime.so once (see the module docstring for where)."""
+    global _lib
+    if _lib is not None:
+        return _lib
+    candidates = [path, os.environ.get("SIM_RUNTIME_LIB"),
+                  os.path.join(os.path.dirname(os.path.abspath(__file__)),
+                               "..", "build", "lib", "libsim_runtime.so"),
+                  "libsim_runtime.so"]
+    errors = []
+    for candidate in candidates:
+        if not candidate:
+            continue
+        try:
+            _lib = ctypes.CDLL(candidate)
+            break
+        except OSError as error:
+            errors.append(str(error))
+    if _lib is None:
+        raise OSError("cannot load libsim_runtime.so (set SIM_RUNTIME_LIB): " +
+                      "; ".join(errors))
+    _declare(_lib)
+    return _lib
+
+
+def _declare(lib):
+    c = ctypes
+    p = c.c_void_p
+    sigs = {
+        "sim_last_error": (c.c_char_p, []),
+        "sim_bundle_open": (c.c_int, [c.c_char_p, c.POINTER(p)]),
+        "sim_bundle_close": (None, [p]),
+        "sim_bundle_scene_name": (c.c_char_p, [p]),
+        "sim_bundle_range": (c.c_int64, [p]),
+        "sim_bundle_dt": (c.c_double, [p]),
+        "sim_bundle_max_steps": (c.c_int64, [p]),
+        "sim_bundle_has_strategy": (c.c_int, [p, c.c_int]),
+        "sim_session_options_init": (None, [c.POINTER(_Options)]),
+        "sim_session_create": (c.c_int, [p, c.POINTER(_Options), c.POINTER(p)]),
+        "sim_session_destroy": (None, [p]),
+        "sim_session_device": (c.c_char_p, [p]),
+        "sim_session_set": (c.c_int, [p, c.c_char_p, c.c_char_p]),
+        "sim_session_init": (c.c_int, [p]),
+        "sim_session_time": (c.c_int64, [p]),
+        "sim_session_buffer_bytes": (c.c_int, [p, c.c_char_p,
+                                               c.POINTER(c.c_size_t)]),
+        "sim_session_get_buffer": (c.c_int, [p, c.c_char_p, p, c.c_size_t]),
+        "sim_session_set_buffer": (c.c_int, [p, c.c_char_p, p, c.c_size_t]),
+        "sim_session_run": (c.c_int, [p, c.c_int64]),
+        "sim_session_metrics": (c.c_int, [p, c.POINTER(_Metrics)]),
+        "sim_session_num_components": (c.c_int32, [p]),
+        "sim_session_component": (c.c_char_p, [p, c.c_int32]),
+        "sim_session_evaluations": (c.c_int64, [p, c.c_int32]),
+        "sim_session_histogram": (c.c_int64, [p, c.c_int64]),
+    }
+    for name, (restype, argtypes) in sigs.items():
+        function = getattr(lib, name)
+        function.restype = restype
+        function.argtypes = argtypes
+
+
+def _check(status):
+    if status != 0:
+        raise Error(status, load_library().sim_last_error().decode())
+
+
+class Bundle:
+    """An opened scene bundle."""
+
+    def __init__(self, path, library=None):
+        lib = load_library(library)
+        self._handle = ctypes.c_void_p()
+        _check(lib.sim_bundle_open(os.fsencode(path), ctypes.byref(self._handle)))
+
+    @property
+    def name(self):
+        return load_library().sim_bundle_scene_name(self._handle).decode()
+
+    @property
+    def range(self):
+        return load_library().sim_bundle_range(self._handle)
+
+    @property
+    def dt(self):
+        return load_library().sim_bundle_dt(self._handle)
+
+    @property
+    def max_steps(self):
+        return load_library().sim_bundle_max_steps(self._handle)
+
+    def has_strategy(self, strategy):
+        return bool(load_library().sim_bundle_has_strategy(
+            self._handle, _STRATEGIES[strategy]))
+
+    def close(self):
+        if self._handle:
+            load_library().sim_bundle_close(self._handle)
+            self._handle = ctypes.c_void_p()
+
+    def __enter__(self):
+        return self
+
+    def __exit__(self, *exc):
+        self.close()
+
+
+class Session:
+    """One strategy of a bundle on one backend, with its state."""
+
+    def __init__(self, bundle, strategy="hip", backend="auto", group_size=0,
+                 check_finite=False):
+        lib = load_library()
+        options = _Options()
+        lib.sim_session_options_init(ctypes.byref(options))
+        options.strategy = _STRATEGIES[strategy]
+        options.backend = _BACKENDS[backend]
+        options.group_size = group_size
+        options.check_finite = int(check_finite)
+        self._bundle = bundle  # keeps the bundle open as long as the session
+        self._handle = ctypes.c_void_p()
+        _check(lib.sim_session_create(bundle._handle, ctypes.byref(options),
+                                      ctypes.byref(self._handle)))
+
+    @property
+    def device(self):
+        return load_library().sim_session_device(self._handle).decode()
+
+    @property
+    def time(self):
+        """The current base step T."""
+        return load_library().sim_session_time(self._handle)
+
+    def set(self, name, value):
+        """Sets `range`, `dt` or a parameter (like sim-run --set)."""
+        _check(load_library().sim_session_set(self._handle, name.encode(),
+                                              str(value).encode()))
+
+    def init(self):
+        _check(load_library().sim_session_init(self._handle))
+
+    def run(self, steps):
+        """Runs `steps` base steps; the run ends exactly at T + steps."""
+        _check(load_library().sim_session_run(self._handle, steps))
+
+    def _bytes(self, buffer):
+        size = ctypes.c_size_t()
+        _check(load_library().sim_session_buffer_bytes(
+            self._handle, buffer.encode(), ctypes.byref(size)))
+        return size.value
+
+    def get(self, buffer, typecode="f"):
+        """The buffer's current state as array.array (`typecode` 'f' for
+        f32 scenes, 'd' for f64), item-major with vector lanes packed."""
+        data = array.array(typecode, bytes(self._bytes(buffer)))
+        address, _ = data.buffer_info()
+        _check(load_library().sim_session_get_buffer(
+            self._handle, buffer.encode(), address,
+            len(data) * data.itemsize))
+        return data
+
+    def put(self, buffer, data):
+        """Replaces the buffer's current state with an array.array."""
+        address, _ = data.buffer_info()
+        _check(load_library().sim_session_set_buffer(
+            self._handle, buffer.encode(), address,
+            len(data) * data.itemsize))
+
+    def metrics(self):
+        metrics = _Metrics()
+        _check(load_library().sim_session_metrics(self._handle,
+                                                  ctypes.byref(metrics)))
+        return {name: getattr(metrics, name) for name, _ in _Metrics._fields_}
+
+    def evaluations(self):
+        """Item evaluations per component during the last run."""
+        lib = load_library()
+        return {lib.sim_session_component(self._handle, index).decode():
+                lib.sim_session_evaluations(self._handle, index)
+                for index in range(lib.sim_session_num_components(self._handle))}
+
+    def histogram(self, max_steps):
+        """Big steps taken of each size 1..max_steps in the last run."""
+        lib = load_library()
+        return {size: lib.sim_session_histogram(self._handle, size)
+                for size in range(1, max_steps + 1)}
+
+    def close(self):
+        if self._handle:
+            load_library().sim_session_destroy(self._handle)
+            self._handle = ctypes.c_void_p()
+
+    def __enter__(self):
+        return self
+
+    def __exit__(self, *exc):
+        self.close()
