@@ -7,6 +7,7 @@
 #ifndef SIM_INITALLTRANSLATIONS_H
 #define SIM_INITALLTRANSLATIONS_H
 
+#include "sim/Target/Bundle.h"
 #include "sim/Target/PTX/TranslateToPTX.h"
 
 namespace mlir::sim {
@@ -15,6 +16,7 @@ namespace mlir::sim {
 inline void registerSimTranslations() {
   static bool initOnce = [] {
     registerToPTXTranslations();
+    registerToBundleTranslation();
     return true;
   }();
   (void)initOnce;

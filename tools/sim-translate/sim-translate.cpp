@@ -8,11 +8,13 @@
 //===----------------------------------------------------------------------===//
 
 #include "sim/InitAllTranslations.h"
+#include "sim/Support/ToolDefaults.h"
 
 #include "mlir/Pass/PassManager.h"
 #include "mlir/Tools/mlir-translate/MlirTranslateMain.h"
 
 int main(int argc, char **argv) {
+  mlir::sim::setToolDefaults();
   mlir::sim::registerSimTranslations();
   // The translations run pass pipelines: --mlir-print-ir-after-failure,
   // --mlir-timing and friends apply to them.

@@ -8,9 +8,9 @@
 //                  GPU kernels, GPU back end)
 //   --gpu-to-ptx   gpu.modules: buildSimGPUToPTXPipeline only
 //
-// The options are translation options (--sim-chip=...), since
-// mlir-translate-style tools have no pipeline syntax. Failures are
-// diagnostics at the input's locations.
+// The options are translation options (--sim-chip=...,
+// sim/Target/TranslationOptions.h), since mlir-translate-style tools have no
+// pipeline syntax. Failures are diagnostics at the input's locations.
 //
 //===----------------------------------------------------------------------===//
 
@@ -18,6 +18,8 @@
 #include "sim/Dialect/Sim/IR/SimDialect.h"
 #include "sim/Dialect/Sim/IR/SimOps.h"
 #include "sim/Pipelines/Pipelines.h"
+#include "sim/Support/ToolDefaults.h"
+#include "sim/Target/TranslationOptions.h"
 
 #include "mlir/Dialect/Arith/IR/Arith.h"
 #include "mlir/Dialect/GPU/IR/GPUDialect.h"
@@ -29,79 +31,12 @@
 #include "mlir/Parser/Parser.h"
 #include "mlir/Pass/PassManager.h"
 #include "mlir/Tools/mlir-translate/Translation.h"
-#include "llvm/Support/CommandLine.h"
 #include "llvm/Support/SourceMgr.h"
 
 using namespace mlir;
 using namespace mlir::sim;
 
 namespace {
-
-/// The translation options, registered only by registerToPTXTranslations
-/// (so only in sim-translate). Their defaults are those of the pipelines'
-/// option structs.
-struct PTXTranslationOptions {
-  const SimToGPUOptions defaults;
-  llvm::cl::OptionCategory category{"PTX options (--sim-to-ptx, --gpu-to-ptx)"};
-  llvm::cl::opt<Strategy> strategy{
-      "sim-strategy",
-      llvm::cl::desc("--sim-to-ptx: the strategy to compile for (default hip)"),
-      llvm::cl::init(defaults.strategy.getValue()), getStrategyOptionValues(),
-      llvm::cl::cat(category)};
-  llvm::cl::opt<unsigned> groupSize{
-      "sim-group-size",
-      llvm::cl::desc("--sim-to-ptx: threads per thread group (default 256)"),
-      llvm::cl::init(defaults.groupSize.getValue()), llvm::cl::cat(category)};
-  llvm::cl::opt<std::string> chip{
-      "sim-chip",
-      llvm::cl::desc("The NVIDIA GPU to compile for (default sm_90)"),
-      llvm::cl::init(defaults.chip.getValue()), llvm::cl::cat(category)};
-  llvm::cl::opt<std::string> features{
-      "sim-features",
-      llvm::cl::desc("NVPTX features, e.g. +ptx80 (default: the chip's "
-                     "oldest PTX ISA)"),
-      llvm::cl::init(defaults.features.getValue()), llvm::cl::cat(category)};
-  llvm::cl::opt<unsigned> optLevel{
-      "sim-opt-level",
-      llvm::cl::desc("LLVM optimization level of the kernels, 0 to 3 "
-                     "(default 3)"),
-      llvm::cl::init(defaults.optLevel.getValue()), llvm::cl::cat(category)};
-  llvm::cl::opt<std::string> cudaPath{
-      "sim-cuda-path",
-      llvm::cl::desc("Root of the CUDA toolkit that provides libdevice "
-                     "(default: $CUDA_ROOT, $CUDA_HOME, $CUDA_PATH, then "
-                     "/usr/local/cuda)"),
-      llvm::cl::init(defaults.cudaPath.getValue()), llvm::cl::cat(category)};
-
-  void copyTo(GPUTargetOptions &options) const {
-    options.chip = chip.getValue();
-    options.features = features.getValue();
-    options.optLevel = optLevel.getValue();
-    options.cudaPath = cudaPath.getValue();
-  }
-  void copyTo(SimToGPUOptions &options) const {
-    options.strategy = strategy.getValue();
-    options.groupSize = groupSize.getValue();
-    options.chip = chip.getValue();
-    options.features = features.getValue();
-    options.optLevel = optLevel.getValue();
-    options.cudaPath = cudaPath.getValue();
-  }
-};
-
-/// mlirTranslateMain makes every context it creates print the whole failing
-/// operation under each diagnostic, which buries a one-line message under a
-/// dump of a lowered gpu.module. sim's tools print it only when asked
-/// (--mlir-print-op-on-diagnostic). mlirTranslateMain sets the flag after
-/// creating the context, so it can only be undone here, in the translation.
-// TODO: use include/sim/Support/ToolDefaults.h once sim-opt's shared helper
-// exists.
-void applyDiagnosticDefaults(MLIRContext *context) {
-  auto &options = llvm::cl::getRegisteredOptions();
-  auto it = options.find("mlir-print-op-on-diagnostic");
-  if (it == options.end() || it->second->getNumOccurrences() == 0)
-    context->printOpOnDiagnostic(false);
-}
 
 /// Writes the PTX of every gpu.binary in `module`: one PTX module as is, or
 /// several, each after a `// ----- @<gpu.module name>` line.
@@ -147,7 +82,7 @@ translateToPTX(const std::shared_ptr<llvm::SourceMgr> &sourceMgr,
                raw_ostream &os, MLIRContext *context,
                function_ref<void(DialectRegistry &)> registerDialects,
                function_ref<void(OpPassManager &)> build) {
-  applyDiagnosticDefaults(context);
+  applyPrintOpOnDiagnosticOption(context);
   // Some upstream passes report an error and still succeed (e.g.
   // gpu-module-to-binary when $CUDA_HOME names no CUDA toolkit); any error
   // fails the translation.
@@ -188,7 +123,8 @@ translateToPTX(const std::shared_ptr<llvm::SourceMgr> &sourceMgr,
 } // namespace
 
 void mlir::sim::registerToPTXTranslations() {
-  static PTXTranslationOptions options;
+  // Registers the --sim-* options.
+  (void)getTranslationOptions();
 
   TranslateRegistration simToPTX(
       "sim-to-ptx",
@@ -200,7 +136,7 @@ void mlir::sim::registerToPTXTranslations() {
             [](DialectRegistry &registry) { registry.insert<SimDialect>(); },
             [](OpPassManager &pm) {
               SimToGPUOptions pipeline;
-              options.copyTo(pipeline);
+              getTranslationOptions().copyTo(pipeline);
               buildSimToGPUPipeline(pm, pipeline);
             });
       });
@@ -215,7 +151,7 @@ void mlir::sim::registerToPTXTranslations() {
             sourceMgr, os, context, [](DialectRegistry &) {},
             [](OpPassManager &pm) {
               GPUTargetOptions pipeline;
-              options.copyTo(pipeline);
+              getTranslationOptions().copyTo(pipeline);
               buildSimGPUToPTXPipeline(pm, pipeline);
             });
       });

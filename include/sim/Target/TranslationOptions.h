@@ -1,0 +1,55 @@
+//===- TranslationOptions.h - options of sim-translate ----------*- C++ -*-===//
+//
+// The command-line options of sim's translations (--sim-chip=...), shared by
+// the PTX translations and the bundle writer. mlir-translate-style tools
+// have no pipeline syntax, so what a pipeline option says is a translation
+// option here. The options exist once per process and are registered by the
+// first call to getTranslationOptions(), which registerSimTranslations()
+// makes before the command line is parsed.
+//
+//===----------------------------------------------------------------------===//
+
+#ifndef SIM_TARGET_TRANSLATIONOPTIONS_H
+#define SIM_TARGET_TRANSLATIONOPTIONS_H
+
+#include "sim/Dialect/Sim/IR/SimAttrs.h"
+
+#include "llvm/Support/CommandLine.h"
+
+#include <string>
+
+namespace mlir::sim {
+
+struct GPUTargetOptions;
+struct SimToGPUOptions;
+
+/// The options of sim-translate's translations. Their defaults are those of
+/// the pipelines' option structs (lib/Pipelines).
+struct TranslationOptions {
+  TranslationOptions();
+
+  llvm::cl::OptionCategory category;
+  /// --sim-strategy: the strategy of --sim-to-ptx.
+  llvm::cl::opt<Strategy> strategy;
+  /// --sim-strategies: the strategies of --sim-to-bundle (empty: all four).
+  llvm::cl::list<Strategy> strategies;
+  /// --sim-group-size: threads per thread group.
+  llvm::cl::opt<unsigned> groupSize;
+  /// --sim-chip, --sim-features, --sim-opt-level, --sim-cuda-path: the GPU
+  /// back end's target (the optimization level applies to CPU kernels too).
+  llvm::cl::opt<std::string> chip;
+  llvm::cl::opt<std::string> features;
+  llvm::cl::opt<unsigned> optLevel;
+  llvm::cl::opt<std::string> cudaPath;
+
+  void copyTo(GPUTargetOptions &options) const;
+  void copyTo(SimToGPUOptions &options) const;
+};
+
+/// Returns the process's translation options, registering them on the first
+/// call.
+const TranslationOptions &getTranslationOptions();
+
+} // namespace mlir::sim
+
+#endif // SIM_TARGET_TRANSLATIONOPTIONS_H

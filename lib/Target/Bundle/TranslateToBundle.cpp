@@ -1,0 +1,52 @@
+//===- TranslateToBundle.cpp - sim-translate --sim-to-bundle --------------===//
+//
+// The translation that writes a scene's bundle (Bundle.cpp) with the options
+// every sim translation shares (--sim-group-size, --sim-chip, ...) and its
+// own --sim-strategies.
+//
+//===----------------------------------------------------------------------===//
+
+#include "sim/Support/ToolDefaults.h"
+#include "sim/Target/Bundle.h"
+#include "sim/Target/TranslationOptions.h"
+
+#include "mlir/IR/BuiltinOps.h"
+#include "mlir/Parser/Parser.h"
+#include "mlir/Tools/mlir-translate/Translation.h"
+#include "llvm/Support/SourceMgr.h"
+
+using namespace mlir;
+using namespace mlir::sim;
+
+void mlir::sim::registerToBundleTranslation() {
+  // Registers the --sim-* options.
+  (void)getTranslationOptions();
+
+  TranslateRegistration toBundle(
+      "sim-to-bundle",
+      "Compile a scene for every strategy into a bundle (.simb) for the "
+      "runtime (options --sim-*)",
+      [](const std::shared_ptr<llvm::SourceMgr> &sourceMgr, raw_ostream &os,
+         MLIRContext *context) {
+        applyPrintOpOnDiagnosticOption(context);
+        DialectRegistry registry;
+        registerBundleDependencies(registry);
+        context->appendDialectRegistry(registry);
+        OwningOpRef<ModuleOp> module =
+            parseSourceFile<ModuleOp>(sourceMgr, ParserConfig(context));
+        if (!module)
+          return failure();
+
+        const TranslationOptions &flags = getTranslationOptions();
+        BundleOptions options;
+        if (!flags.strategies.empty())
+          options.strategies.assign(flags.strategies.begin(),
+                                    flags.strategies.end());
+        options.groupSize = flags.groupSize;
+        options.chip = flags.chip;
+        options.features = flags.features;
+        options.optLevel = flags.optLevel;
+        options.cudaPath = flags.cudaPath;
+        return writeBundle(*module, options, os);
+      });
+}

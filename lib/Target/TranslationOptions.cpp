@@ -1,0 +1,81 @@
+//===- TranslationOptions.cpp - options of sim-translate ------------------===//
+//
+// One set of --sim-* options for every translation of sim-translate, so that
+// --sim-to-ptx and --sim-to-bundle compile a scene the same way for the same
+// command line.
+//
+//===----------------------------------------------------------------------===//
+
+#include "sim/Target/TranslationOptions.h"
+#include "sim/Dialect/Sim/Transforms/Passes.h"
+#include "sim/Pipelines/Pipelines.h"
+
+using namespace mlir;
+using namespace mlir::sim;
+
+namespace {
+/// The pipelines' defaults, read once.
+const SimToGPUOptions &getDefaults() {
+  static const SimToGPUOptions defaults;
+  return defaults;
+}
+} // namespace
+
+TranslationOptions::TranslationOptions()
+    : category("Translation options (--sim-to-ptx, --gpu-to-ptx, "
+               "--sim-to-bundle)"),
+      strategy("sim-strategy",
+               llvm::cl::desc("--sim-to-ptx: the strategy to compile for "
+                              "(default hip)"),
+               llvm::cl::init(getDefaults().strategy.getValue()),
+               getStrategyOptionValues(), llvm::cl::cat(category)),
+      strategies("sim-strategies",
+                 llvm::cl::desc("--sim-to-bundle: the strategies to compile "
+                                "for, comma-separated (default: all four)"),
+                 llvm::cl::CommaSeparated, getStrategyOptionValues(),
+                 llvm::cl::cat(category)),
+      groupSize("sim-group-size",
+                llvm::cl::desc("Threads per thread group (default 256)"),
+                llvm::cl::init(getDefaults().groupSize.getValue()),
+                llvm::cl::cat(category)),
+      chip("sim-chip",
+           llvm::cl::desc("The NVIDIA GPU to compile for (default sm_90)"),
+           llvm::cl::init(getDefaults().chip.getValue()),
+           llvm::cl::cat(category)),
+      features("sim-features",
+               llvm::cl::desc("NVPTX features, e.g. +ptx80 (default: the "
+                              "chip's oldest PTX ISA)"),
+               llvm::cl::init(getDefaults().features.getValue()),
+               llvm::cl::cat(category)),
+      optLevel("sim-opt-level",
+               llvm::cl::desc("LLVM optimization level of the kernels, 0 to 3 "
+                              "(default 3)"),
+               llvm::cl::init(getDefaults().optLevel.getValue()),
+               llvm::cl::cat(category)),
+      cudaPath("sim-cuda-path",
+               llvm::cl::desc("Root of the CUDA toolkit that provides "
+                              "libdevice (default: $CUDA_ROOT, $CUDA_HOME, "
+                              "$CUDA_PATH, then /usr/local/cuda)"),
+               llvm::cl::init(getDefaults().cudaPath.getValue()),
+               llvm::cl::cat(category)) {}
+
+void TranslationOptions::copyTo(GPUTargetOptions &options) const {
+  options.chip = chip.getValue();
+  options.features = features.getValue();
+  options.optLevel = optLevel.getValue();
+  options.cudaPath = cudaPath.getValue();
+}
+
+void TranslationOptions::copyTo(SimToGPUOptions &options) const {
+  options.strategy = strategy.getValue();
+  options.groupSize = groupSize.getValue();
+  options.chip = chip.getValue();
+  options.features = features.getValue();
+  options.optLevel = optLevel.getValue();
+  options.cudaPath = cudaPath.getValue();
+}
+
+const TranslationOptions &mlir::sim::getTranslationOptions() {
+  static const TranslationOptions options;
+  return options;
+}
