@@ -160,6 +160,15 @@ enum SubClockSlot : int64_t {
 constexpr int32_t kNoEstimate = std::numeric_limits<int32_t>::max();
 constexpr int64_t kNoEstimate64 = std::numeric_limits<int64_t>::max();
 
+/// The bytes one element of `buffer` takes in memory, as the kernels address
+/// it (LLVM's alloc size: vectors are padded to a power of two, so
+/// vector<3xf32> takes 16 bytes).
+int64_t elementStride(BufferOp buffer) {
+  int64_t bytes = buffer.getElementBytes();
+  return isa<VectorType>(buffer.getElementType()) ? llvm::PowerOf2Ceil(bytes)
+                                                  : bytes;
+}
+
 bool isSubStepping(Strategy strategy) {
   return strategy == Strategy::hip || strategy == Strategy::hip_cache;
 }
@@ -486,13 +495,20 @@ Value SimulationLowering::estimate(Kernel &kernel, ComponentOp component,
 SmallVector<SimulationLowering::Cache>
 SimulationLowering::createCaches(Kernel &kernel, ComponentOp component) {
   SmallVector<Cache> caches;
-  if (!target.hasCaches())
-    return caches;
   auto stride = [&](FillCacheOp fill) {
-    return simulation.lookupBuffer(fill.getBufferAttr()).getElementBytes();
+    return elementStride(simulation.lookupBuffer(fill.getBufferAttr()));
   };
   SmallVector<FillCacheOp> fills(
       component.getEvaluate().front().getOps<FillCacheOp>());
+  // The plan is the same for every target: the launch asks for the caches'
+  // bytes even where a target keeps none (the CPU runtime ignores them).
+  for (FillCacheOp fill : fills) {
+    kernel.sharedPerThread += stride(fill);
+    kernel.sharedFixed += stride(fill) * (fill.getMaxOffsetAttr().getInt() -
+                                          fill.getMinOffsetAttr().getInt());
+  }
+  if (!target.hasCaches())
+    return caches;
   // By decreasing element size, so every cache is aligned to its elements
   // (then by name, so the layout does not depend on the body's order).
   llvm::sort(fills, [&](FillCacheOp a, FillCacheOp b) {
@@ -1044,15 +1060,10 @@ LogicalResult SimulationLowering::run() {
     simplan::ParamOp::create(planBuilder, param.getLoc(),
                              param.getSymNameAttr(), param.getValue());
   for (BufferOp buffer : buffers) {
-    Type element = buffer.getElementType();
-    // Element stride as the kernels address it (LLVM's alloc size: vectors
-    // are padded to a power of two, so vector<3xf32> takes 16 bytes).
-    int64_t bytes = buffer.getElementBytes();
-    int64_t stride =
-        isa<VectorType>(element) ? llvm::PowerOf2Ceil(bytes) : bytes;
     simplan::BufferOp::create(
         planBuilder, buffer.getLoc(), buffer.getSymNameAttr(),
-        TypeAttr::get(element), planBuilder.getI64IntegerAttr(stride),
+        TypeAttr::get(buffer.getElementType()),
+        planBuilder.getI64IntegerAttr(elementStride(buffer)),
         unitIf(buffer.getSnapshot()),
         unitIf(observed.contains(buffer.getSymNameAttr())),
         unitIf(!buffer.getExact().empty()));

@@ -189,8 +189,6 @@ public:
                                                elementType, nullptr, workgroup),
                                base, offset, ValueRange{count});
     kernel.sharedOffset = b.add(offset, b.mul(count, b.index(stride)));
-    kernel.sharedPerThread += stride;
-    kernel.sharedFixed += halo * stride;
     return cache;
   }
 
