@@ -469,9 +469,8 @@ private:
       for (Diagnostic &diag : held) {
         StringRef function =
             StringRef(diag.str()).drop_front(kNeedsLibdevice.size());
-        code.missingLibdevice.push_back(function.take_until([](char c) {
-                                                  return c == '\'';
-                                                }).str());
+        code.missingLibdevice.push_back(
+            function.take_until([](char c) { return c == '\''; }).str());
         if (!code.firstLibdeviceCall)
           code.firstLibdeviceCall = diag.getLocation();
       }
