@@ -565,10 +565,12 @@ int run(const Options &options) {
   sim_metrics metrics{};
   for (int64_t r = 0; r < total; ++r) {
     bool warmUp = total > 1 && r == 0;
-    std::string label = total == 1 ? ""
-                        : warmUp   ? "warm-up: "
-                                   : "run " + std::to_string(r) + " of " +
-                                         std::to_string(options.repeat) + ": ";
+    std::string label;
+    if (warmUp)
+      label = "warm-up: ";
+    else if (total > 1)
+      label = "run " + std::to_string(r) + " of " +
+              std::to_string(options.repeat) + ": ";
     // A non-finite value (--check-finite) ends here with a message that
     // names the base step, component, buffer and item.
     runFromStart(session.handle, options, progress, label);
