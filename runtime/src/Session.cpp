@@ -538,7 +538,8 @@ void checkBytes(size_t given, size_t expected, const std::string &buffer) {
 
 } // namespace
 
-void Session::getBuffer(const std::string &name, void *data, size_t bytes) {
+Session::CurrentHalf Session::currentHalf(const std::string &name,
+                                          size_t bytes) {
   int index = bufferIndex(name);
   checkBytes(bytes, hostBytes(name), name);
   backend->activate();
@@ -547,6 +548,11 @@ void Session::getBuffer(const std::string &name, void *data, size_t bytes) {
   size_t packed = size_t(plan_->buffers[index].type.packedBytes());
   DevicePtr half = buffers[index].pointer +
                    size_t(clock[kSlotParity]) * size_t(range_) * stride;
+  return {half, stride, packed};
+}
+
+void Session::getBuffer(const std::string &name, void *data, size_t bytes) {
+  auto [half, stride, packed] = currentHalf(name, bytes);
   if (stride == packed) {
     backend->read(data, half, bytes);
     return;
@@ -560,14 +566,7 @@ void Session::getBuffer(const std::string &name, void *data, size_t bytes) {
 
 void Session::setBuffer(const std::string &name, const void *data,
                         size_t bytes) {
-  int index = bufferIndex(name);
-  checkBytes(bytes, hostBytes(name), name);
-  backend->activate();
-  ensureInitialized();
-  size_t stride = deviceStride(index);
-  size_t packed = size_t(plan_->buffers[index].type.packedBytes());
-  DevicePtr half = buffers[index].pointer +
-                   size_t(clock[kSlotParity]) * size_t(range_) * stride;
+  auto [half, stride, packed] = currentHalf(name, bytes);
   if (stride == packed) {
     backend->write(half, data, bytes);
     return;

@@ -80,6 +80,14 @@ public:
   } nonFinite;
 
 private:
+  /// Where a buffer's current state lives on the device (the half the
+  /// clock's parity selects) and its element stride there and on the host,
+  /// after checking a host array of `bytes` for it and initialising.
+  struct CurrentHalf {
+    DevicePtr half;
+    size_t stride, packed;
+  };
+  CurrentHalf currentHalf(const std::string &buffer, size_t bytes);
   /// One device allocation, released with the session.
   struct Memory {
     DevicePtr pointer = 0;

@@ -200,6 +200,10 @@ private:
                              const KernelValues &values);
   Value estimate(Kernel &kernel, ComponentOp component, Value item, Value time,
                  const KernelValues &values);
+  /// The minimum of `component`'s estimates at local time `time` over every
+  /// item (through lane variable `minimum`), combined into clock `slot`.
+  void estimateInto(Kernel &kernel, ComponentOp component, LaneVar minimum,
+                    Value time, int64_t slot);
 
   /// A group cache of hip-cache: the fill the front end recorded and its
   /// memory.
@@ -492,6 +496,21 @@ Value SimulationLowering::estimate(Kernel &kernel, ComponentOp component,
   return b.max(steps, b.i32(1));
 }
 
+void SimulationLowering::estimateInto(Kernel &kernel, ComponentOp component,
+                                      LaneVar minimum, Value time,
+                                      int64_t slot) {
+  forEachItem(kernel, [&](const Lane &lane) {
+    b.ifThen(lane.active, [&] {
+      KernelValues values = kernel.values;
+      values.item = lane.item;
+      Value steps = estimate(kernel, component, lane.item, time, values);
+      target.laneStore(b, b.min(target.laneLoad(b, minimum, lane), steps),
+                       minimum, lane);
+    });
+  });
+  target.reduceIntoClock(b, kernel, minimum, arith::AtomicRMWKind::mins, slot);
+}
+
 SmallVector<SimulationLowering::Cache>
 SimulationLowering::createCaches(Kernel &kernel, ComponentOp component) {
   SmallVector<Cache> caches;
@@ -658,17 +677,7 @@ LogicalResult SimulationLowering::emitEstimate(ComponentOp component,
   setHalves(kernel, nextParity, nextParity);
   Value end = b.load(kernel.clock, b.index(kSlotEnd));
   b.ifThen(b.cmp(arith::CmpIPredicate::slt, next, end), [&] {
-    forEachItem(kernel, [&](const Lane &lane) {
-      b.ifThen(lane.active, [&] {
-        KernelValues values = kernel.values;
-        values.item = lane.item;
-        Value steps = estimate(kernel, component, lane.item, next, values);
-        target.laneStore(b, b.min(target.laneLoad(b, minimum, lane), steps),
-                         minimum, lane);
-      });
-    });
-    target.reduceIntoClock(b, kernel, minimum, arith::AtomicRMWKind::mins,
-                           kSlotEstimate);
+    estimateInto(kernel, component, minimum, next, kSlotEstimate);
   });
   return endKernel(kernel, simplan::LaunchShape::items, launches);
 }
@@ -934,17 +943,7 @@ LogicalResult SimulationLowering::emitRounds(ComponentOp component,
     kernel.values.bigStepBegin = begin;
     kernel.values.bigStepSize = size;
     b.ifThen(b.cmp(arith::CmpIPredicate::slt, now, b.add(begin, size)), [&] {
-      forEachItem(kernel, [&](const Lane &lane) {
-        b.ifThen(lane.active, [&] {
-          KernelValues values = kernel.values;
-          values.item = lane.item;
-          Value steps = estimate(kernel, component, lane.item, now, values);
-          target.laneStore(b, b.min(target.laneLoad(b, minimum, lane), steps),
-                           minimum, lane);
-        });
-      });
-      target.reduceIntoClock(b, kernel, minimum, arith::AtomicRMWKind::mins,
-                             sub + kSubEstimate);
+      estimateInto(kernel, component, minimum, now, sub + kSubEstimate);
     });
     if (failed(endKernel(kernel, simplan::LaunchShape::items, roundLaunches)))
       return failure();
