@@ -15,16 +15,17 @@
 //
 // Every component: num_steps = (splitmix64 hash of the component, a key and the
 // local time t) % 3 + 1, with key = 0 (@dist = 0), i / @group (@dist = 1) or i
-// (@dist = 2). evaluate builds four vec4 rows from its reads, runs @L rounds of
-// a 4x4 matrix product X := M * X (the paper's per-item load) and relaxes its
-// own state towards tanh of the result; components without an own state (C1)
-// yield tanh of the result. All values stay in [-1, 1].
+// (@dist = 2); every n is 1 with @dist = 3 and max_steps with @dist = 4.
+// evaluate builds four vec4 rows from its reads, runs @L rounds of a 4x4 matrix
+// product X := M * X (the paper's per-item load) and relaxes its own state
+// towards tanh of the result; components without an own state (C1) yield tanh
+// of the result. All values stay in [-1, 1].
 // Interpolation: #sim.linear for every buffer.
 
 sim.simulation @gravity_like range(65536) dt(1.0e-3 : f32) max_steps(3) {
   // Rounds of the 4x4 matrix product per item and evaluation (the load).
   sim.param @L = 8 : i32
-  // Step counts: 0 per component, 1 per group of @group items, 2 per item.
+  // Step counts: 0 per component, 1 per group of @group items, 2 per item, 3 all 1, 4 all max_steps.
   sim.param @dist = 0 : i32
   // Items per group when @dist = 1.
   sim.param @group = 32 : i32
@@ -160,6 +161,8 @@ sim.simulation @gravity_like range(65536) dt(1.0e-3 : f32) max_steps(3) {
     %c31 = arith.constant 31 : i64
     %mix_mul1 = arith.constant -4658895280553007687 : i64 // 0xBF58476D1CE4E5B9
     %mix_mul2 = arith.constant -7723592293110705685 : i64 // 0x94D049BB133111EB
+    %c3_i32 = arith.constant 3 : i32
+    %c4_i32 = arith.constant 4 : i32
 
     // The hash key: 0 (@dist = 0, per component), i / @group (@dist = 1),
     // or i (otherwise, per item).
@@ -189,7 +192,13 @@ sim.simulation @gravity_like range(65536) dt(1.0e-3 : f32) max_steps(3) {
     %mixed = arith.xori %z4, %s31 : i64
     %r = arith.remui %mixed, %c3_i64 : i64
     %n64 = arith.addi %r, %c1_i64 : i64
-    %n = arith.trunci %n64 : i64 to i32
+    %hashed = arith.trunci %n64 : i64 to i32
+    // @dist = 3: every n is 1; @dist = 4: every n is max_steps.
+    %max_steps = sim.get_param @max_steps : i32
+    %all_one = arith.cmpi eq, %dist, %c3_i32 : i32
+    %all_max = arith.cmpi eq, %dist, %c4_i32 : i32
+    %n_or_one = arith.select %all_one, %c1_i32, %hashed : i32
+    %n = arith.select %all_max, %max_steps, %n_or_one : i32
     sim.yield %n : i32
   } evaluate {
   ^bb0(%i: index, %t: i64, %n: i32, %dt: f32):
@@ -303,6 +312,8 @@ sim.simulation @gravity_like range(65536) dt(1.0e-3 : f32) max_steps(3) {
     %c31 = arith.constant 31 : i64
     %mix_mul1 = arith.constant -4658895280553007687 : i64 // 0xBF58476D1CE4E5B9
     %mix_mul2 = arith.constant -7723592293110705685 : i64 // 0x94D049BB133111EB
+    %c3_i32 = arith.constant 3 : i32
+    %c4_i32 = arith.constant 4 : i32
 
     // The hash key: 0 (@dist = 0, per component), i / @group (@dist = 1),
     // or i (otherwise, per item).
@@ -332,7 +343,13 @@ sim.simulation @gravity_like range(65536) dt(1.0e-3 : f32) max_steps(3) {
     %mixed = arith.xori %z4, %s31 : i64
     %r = arith.remui %mixed, %c3_i64 : i64
     %n64 = arith.addi %r, %c1_i64 : i64
-    %n = arith.trunci %n64 : i64 to i32
+    %hashed = arith.trunci %n64 : i64 to i32
+    // @dist = 3: every n is 1; @dist = 4: every n is max_steps.
+    %max_steps = sim.get_param @max_steps : i32
+    %all_one = arith.cmpi eq, %dist, %c3_i32 : i32
+    %all_max = arith.cmpi eq, %dist, %c4_i32 : i32
+    %n_or_one = arith.select %all_one, %c1_i32, %hashed : i32
+    %n = arith.select %all_max, %max_steps, %n_or_one : i32
     sim.yield %n : i32
   } evaluate {
   ^bb0(%i: index, %t: i64, %n: i32, %dt: f32):
@@ -447,6 +464,8 @@ sim.simulation @gravity_like range(65536) dt(1.0e-3 : f32) max_steps(3) {
     %c31 = arith.constant 31 : i64
     %mix_mul1 = arith.constant -4658895280553007687 : i64 // 0xBF58476D1CE4E5B9
     %mix_mul2 = arith.constant -7723592293110705685 : i64 // 0x94D049BB133111EB
+    %c3_i32 = arith.constant 3 : i32
+    %c4_i32 = arith.constant 4 : i32
 
     // The hash key: 0 (@dist = 0, per component), i / @group (@dist = 1),
     // or i (otherwise, per item).
@@ -476,7 +495,13 @@ sim.simulation @gravity_like range(65536) dt(1.0e-3 : f32) max_steps(3) {
     %mixed = arith.xori %z4, %s31 : i64
     %r = arith.remui %mixed, %c3_i64 : i64
     %n64 = arith.addi %r, %c1_i64 : i64
-    %n = arith.trunci %n64 : i64 to i32
+    %hashed = arith.trunci %n64 : i64 to i32
+    // @dist = 3: every n is 1; @dist = 4: every n is max_steps.
+    %max_steps = sim.get_param @max_steps : i32
+    %all_one = arith.cmpi eq, %dist, %c3_i32 : i32
+    %all_max = arith.cmpi eq, %dist, %c4_i32 : i32
+    %n_or_one = arith.select %all_one, %c1_i32, %hashed : i32
+    %n = arith.select %all_max, %max_steps, %n_or_one : i32
     sim.yield %n : i32
   } evaluate {
   ^bb0(%i: index, %t: i64, %n: i32, %dt: f32):

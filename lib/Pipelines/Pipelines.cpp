@@ -34,6 +34,16 @@ void mlir::sim::buildFrontEndPipeline(OpPassManager &pm,
   simulation.addPass(createSimInsertInterpolation());
 }
 
+void mlir::sim::buildReferencePipeline(OpPassManager &pm,
+                                       const ReferenceOptions &options) {
+  OpPassManager &simulation = pm.nest<SimulationOp>();
+  if (options.prune)
+    simulation.addPass(createSimPrune());
+  simulation.addPass(createSimSchedule());
+  simulation.addPass(createSimSubstepLegality());
+  pm.addPass(createSimLowerToReference());
+}
+
 void mlir::sim::buildSimToGPUPipeline(OpPassManager &pm,
                                       const SimToGPUOptions &options) {
   FrontEndOptions frontEnd;
@@ -59,6 +69,11 @@ void mlir::sim::registerSimPipelines() {
       "Prune, schedule, check sub-stepping, plan memory and insert "
       "interpolation for one strategy",
       buildFrontEndPipeline);
+  PassPipelineRegistration<ReferenceOptions>(
+      "sim-reference-pipeline",
+      "Prune, schedule, check sub-stepping and lower every sim.simulation "
+      "to the per-item body functions of the reference executor",
+      buildReferencePipeline);
   PassPipelineRegistration<GPUTargetOptions>(
       "sim-gpu-to-ptx",
       "Lower gpu.modules to NVVM and serialize each to a gpu.binary holding "

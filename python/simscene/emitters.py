@@ -14,7 +14,8 @@ The formulas (all integer arithmetic is on unsigned 64-bit values, wrapping):
 * step count of component number `c` for `key` at local time `t`:
       n = mix((c + 1) * GOLDEN ^ key * KEY_MUL ^ t * TIME_MUL) % 3 + 1
   where key = 0 (@dist = 0, per component), i / @group (@dist = 1, per group
-  of items) or i (any other @dist, per item).
+  of items) or i (any other @dist, per item); @dist = 3 makes every n 1 and
+  @dist = 4 makes every n max_steps (the extremes of the cross-checks).
 * initial value of lane `l` (0..3) of item `i` in the buffer with seed `s`:
       z = mix((4 * i + l) * KEY_MUL ^ (s + 1) * GOLDEN)
       v = (z >> 40) * 2**-23 - 1          (exact in f32, in [-1, 1))
@@ -123,7 +124,8 @@ def emit_step_count(body: Body, component: int) -> str:
 
     `body` is a num_steps body. The hash key depends on `@dist` (0: per
     component, 1: per group of `@group` items, otherwise per item), so the
-    same scene covers the three distributions of the benchmarks.
+    same scene covers the three distributions of the benchmarks; @dist = 3
+    and 4 give every item 1 and max_steps.
     """
     i, t = body.arg("i"), body.arg("t")
     c0 = body.const(0, "i32")
@@ -156,7 +158,15 @@ def emit_step_count(body: Body, component: int) -> str:
     z = emit_splitmix64(body, x, "i64")
     r = body.op("r", f"arith.remui {z}, {c3_64} : i64")
     n = body.op("n64", f"arith.addi {r}, {c1_64} : i64")
-    return body.op("n", f"arith.trunci {n} : i64 to i32")
+    n = body.op("hashed", f"arith.trunci {n} : i64 to i32")
+    body.comment("@dist = 3: every n is 1; @dist = 4: every n is max_steps.")
+    c3 = body.const(3, "i32")
+    c4 = body.const(4, "i32")
+    max_steps = body.op("max_steps", "sim.get_param @max_steps : i32")
+    all_one = body.op("all_one", f"arith.cmpi eq, {dist}, {c3} : i32")
+    all_max = body.op("all_max", f"arith.cmpi eq, {dist}, {c4} : i32")
+    n = body.op("n_or_one", f"arith.select {all_one}, {c1}, {n} : i32")
+    return body.op("n", f"arith.select {all_max}, {max_steps}, {n} : i32")
 
 
 def emit_init_value(body: Body, seed: int) -> str:

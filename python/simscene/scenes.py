@@ -223,7 +223,8 @@ def build_scene(name: str, header: str, specs: list[ComponentSpec],
         textwrap.fill(
             "Every component: num_steps = (splitmix64 hash of the component, "
             "a key and the local time t) % 3 + 1, with key = 0 (@dist = 0), "
-            "i / @group (@dist = 1) or i (@dist = 2). evaluate builds four "
+            "i / @group (@dist = 1) or i (@dist = 2); every n is 1 with @dist = 3 "
+            "and max_steps with @dist = 4. evaluate builds four "
             "vec4 rows from its reads, runs @L rounds of a 4x4 matrix product "
             "X := M * X (the paper's per-item load) and relaxes its own state "
             "towards tanh of the result; components without an own state ("
@@ -239,7 +240,7 @@ def build_scene(name: str, header: str, specs: list[ComponentSpec],
                   "(the load).")
     sim.param("dist", dist, "i32",
               doc="Step counts: 0 per component, 1 per group of @group "
-                  "items, 2 per item.")
+                  "items, 2 per item, 3 all 1, 4 all max_steps.")
     sim.param("group", group, "i32", doc="Items per group when @dist = 1.")
 
     for seed, s in enumerate(specs):

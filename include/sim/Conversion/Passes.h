@@ -12,12 +12,17 @@
 #include "mlir/Dialect/Arith/IR/Arith.h"
 #include "mlir/Dialect/Func/IR/FuncOps.h"
 #include "mlir/Dialect/GPU/IR/GPUDialect.h"
+#include "mlir/Dialect/LLVMIR/LLVMDialect.h"
 #include "mlir/Dialect/MemRef/IR/MemRef.h"
 #include "mlir/Dialect/SCF/IR/SCF.h"
 #include "mlir/IR/BuiltinOps.h"
 #include "mlir/Pass/Pass.h"
 
 namespace mlir::sim {
+
+/// The attribute of a `--sim-lower-to-reference` module that holds the
+/// reference model text (docs/Reference.md).
+constexpr llvm::StringLiteral kReferenceModelAttrName = "sim.reference_model";
 
 #define GEN_PASS_DECL
 #include "sim/Conversion/Passes.h.inc"

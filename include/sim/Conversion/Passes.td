@@ -87,4 +87,31 @@ def SimLowerToCPU : Pass<"sim-lower-to-cpu", "::mlir::ModuleOp"> {
   ];
 }
 
+def SimLowerToReference : Pass<"sim-lower-to-reference", "::mlir::ModuleOp"> {
+  let summary = "Lower scheduled simulations to per-item body functions for "
+                "the reference executor";
+  let description = [{
+    The compiler's part of the reference executor (docs/Reference.md), the
+    oracle every backend is checked against. It starts from the *scheduled*
+    IR (after `--sim-prune`, `--sim-schedule` and `--sim-substep-legality`,
+    before `--sim-plan-memory`) and replaces every `sim.simulation` with a
+    `builtin.module @<name>_reference` that holds one `func.func` per body,
+    `sim_ref_init_<b>`, `sim_ref_exact_<b>`, `sim_ref_num_steps_<c>` and
+    `sim_ref_evaluate_<c>`, and the reference model text as its
+    `sim.reference_model` attribute. A view read `sim.read @B[%j]` becomes
+    a call through the context's `read` callback and a `sim.get_param` a
+    call through its `param` callback: which value a read sees (its local
+    time, interpolation, boundary rule) is decided by the executor, not
+    here, and no code of the kernel lowerings is involved.
+
+    ```
+    sim-opt scene.mlir --sim-reference-pipeline
+    ```
+  }];
+  let dependentDialects = [
+    "::mlir::arith::ArithDialect", "::mlir::func::FuncDialect",
+    "::mlir::LLVM::LLVMDialect"
+  ];
+}
+
 #endif // SIM_CONVERSION_PASSES_TD

@@ -40,6 +40,17 @@ struct FrontEndOptions : public PassPipelineOptions<FrontEndOptions> {
 /// every sim.simulation.
 void buildFrontEndPipeline(OpPassManager &pm, const FrontEndOptions &options);
 
+struct ReferenceOptions : public PassPipelineOptions<ReferenceOptions> {
+  PassOptions::Option<bool> prune{
+      *this, "prune",
+      llvm::cl::desc("Remove what no observed buffer depends on"),
+      llvm::cl::init(true)};
+};
+
+/// The scheduled IR (prune, schedule, sub-stepping verdicts) lowered to the
+/// reference executor's body functions (docs/Reference.md).
+void buildReferencePipeline(OpPassManager &pm, const ReferenceOptions &options);
+
 /// Options of the GPU back end: which GPU the PTX is for and how it is
 /// optimized. The fields are also the options of `--sim-gpu-to-ptx`.
 struct GPUTargetOptions : public PassPipelineOptions<GPUTargetOptions> {

@@ -31,6 +31,13 @@ struct CPUKernelOptions {
 FailureOr<std::string> compileCPUKernels(ModuleOp kernels,
                                          const CPUKernelOptions &options = {});
 
+/// Compiles the body functions of a reference module (what
+/// --sim-lower-to-reference makes of a simulation) into the bytes of a shared
+/// object that exports them with the C signatures of docs/Reference.md.
+FailureOr<std::string>
+compileReferenceFunctions(ModuleOp reference,
+                          const CPUKernelOptions &options = {});
+
 /// Registers the dialect translations the CPU compilation needs.
 void registerCPUKernelDialects(DialectRegistry &registry);
 

@@ -50,7 +50,14 @@ namespace {
 //===----------------------------------------------------------------------===//
 
 /// Section kinds and the scene's strategy field (docs/Bundle.md, "Layout").
-enum class SectionKind : uint32_t { scene = 1, plan = 2, ptx = 3, cpu = 4 };
+enum class SectionKind : uint32_t {
+  scene = 1,
+  plan = 2,
+  ptx = 3,
+  cpu = 4,
+  referenceModel = 5,
+  referenceLibrary = 6,
+};
 constexpr uint32_t kNoStrategy = 0xffffffffu;
 constexpr uint32_t kVersion = 1;
 constexpr uint64_t kHeaderSize = 24;
@@ -413,6 +420,40 @@ public:
     return success();
   }
 
+  /// Compiles the reference executor's part (docs/Reference.md): the model
+  /// text and the shared object of the body functions, from the scheduled
+  /// IR. It shares no lowering with the strategies' kernels.
+  LogicalResult compileReference(std::string &model, std::string &library) {
+    ScopedDiagnosticHandler note(context, [&](Diagnostic &diag) {
+      if (diag.getSeverity() == DiagnosticSeverity::Error)
+        diag.attachNote(simulation.getLoc())
+            << "while compiling the bundle's reference functions";
+      return failure();
+    });
+    OwningOpRef<ModuleOp> scheduled(module.clone());
+    PassManager pm(context, ModuleOp::getOperationName());
+    buildReferencePipeline(pm, ReferenceOptions());
+    if (failed(runPipeline(pm, *scheduled)))
+      return failure();
+    auto modules = scheduled->getOps<ModuleOp>();
+    if (modules.empty() || std::next(modules.begin()) != modules.end())
+      return emitError(simulation.getLoc())
+             << "the reference lowering made no single module of functions";
+    ModuleOp reference = *modules.begin();
+    auto text = reference->getAttrOfType<StringAttr>(kReferenceModelAttrName);
+    if (!text)
+      return reference.emitError() << "has no reference model text";
+    model = text.getValue().str();
+    CPUKernelOptions cpuOptions;
+    cpuOptions.optLevel = options.optLevel;
+    FailureOr<std::string> compiled =
+        compileReferenceFunctions(reference, cpuOptions);
+    if (failed(compiled))
+      return failure();
+    library = std::move(*compiled);
+    return success();
+  }
+
 private:
   /// Runs `pm` on `op`. Some upstream passes report an error and still
   /// succeed (gpu-module-to-binary without a toolkit), so any error fails.
@@ -596,6 +637,14 @@ LogicalResult mlir::sim::writeBundle(ModuleOp module,
     }
     sections.push_back({SectionKind::cpu, number, std::move(code.cpu)});
   }
+
+  std::string model, library;
+  if (failed(writer.compileReference(model, library)))
+    return failure();
+  sections.push_back(
+      {SectionKind::referenceModel, kNoStrategy, std::move(model)});
+  sections.push_back(
+      {SectionKind::referenceLibrary, kNoStrategy, std::move(library)});
 
   if (!withoutPTX.empty()) {
     InFlightDiagnostic warning =

@@ -70,20 +70,13 @@ static void addEntryPoint(llvm::Module &module, llvm::Function &kernel) {
   kernel.setLinkage(llvm::Function::InternalLinkage);
 }
 
-FailureOr<std::string>
-mlir::sim::compileCPUKernels(ModuleOp kernels,
-                             const CPUKernelOptions &options) {
-  Location loc = kernels.getLoc();
-  OwningOpRef<ModuleOp> module(cast<ModuleOp>(kernels->clone()));
+/// Lowers `module` (func.funcs of upstream dialects, consumed) to LLVM IR,
+/// lets `finish` add to it, and compiles and links it into the bytes of a
+/// shared object whose external functions are those of the module.
+static FailureOr<std::string> compileSharedObject(
+    OwningOpRef<ModuleOp> module, Location loc, const CPUKernelOptions &options,
+    function_ref<LogicalResult(llvm::Module &)> finish) {
   (*module)->removeAttr(SymbolTable::getSymbolAttrName());
-  SmallVector<std::string> names;
-  for (auto func : module->getOps<func::FuncOp>()) {
-    if (!func->hasAttr(simplan::PlanDialect::getGroupArgumentsAttrName()))
-      return emitError(func.getLoc())
-             << "is not a CPU kernel (run --sim-lower-to-cpu)";
-    names.push_back(func.getSymName().str());
-  }
-
   // To the LLVM dialect with upstream conversions.
   PassManager pm(module->getContext());
   pm.addPass(createSCFToControlFlowPass());
@@ -108,13 +101,8 @@ mlir::sim::compileCPUKernels(ModuleOp kernels,
       translateModuleToLLVMIR(*module, context, "sim_cpu_kernels");
   if (!llvmModule)
     return emitError(loc) << "could not translate the CPU kernels to LLVM IR";
-  for (const std::string &name : names) {
-    llvm::Function *kernel = llvmModule->getFunction(name);
-    if (!kernel || kernel->arg_size() < 3)
-      return emitError(loc)
-             << "lost CPU kernel '" << name << "' on the way to LLVM IR";
-    addEntryPoint(*llvmModule, *kernel);
-  }
+  if (failed(finish(*llvmModule)))
+    return failure();
 
   // An object for the host (generic x86-64, so that it runs on another
   // machine than the one that compiled it), position independent.
@@ -187,4 +175,39 @@ mlir::sim::compileCPUKernels(ModuleOp kernels,
   if (!library)
     return emitError(loc) << "could not read the linked CPU kernels";
   return (*library)->getBuffer().str();
+}
+
+FailureOr<std::string>
+mlir::sim::compileCPUKernels(ModuleOp kernels,
+                             const CPUKernelOptions &options) {
+  Location loc = kernels.getLoc();
+  SmallVector<std::string> names;
+  for (auto func : kernels.getOps<func::FuncOp>()) {
+    if (!func->hasAttr(simplan::PlanDialect::getGroupArgumentsAttrName()))
+      return emitError(func.getLoc())
+             << "is not a CPU kernel (run --sim-lower-to-cpu)";
+    names.push_back(func.getSymName().str());
+  }
+  return compileSharedObject(
+      OwningOpRef<ModuleOp>(cast<ModuleOp>(kernels->clone())), loc, options,
+      [&](llvm::Module &llvmModule) -> LogicalResult {
+        for (const std::string &name : names) {
+          llvm::Function *kernel = llvmModule.getFunction(name);
+          if (!kernel || kernel->arg_size() < 3)
+            return emitError(loc)
+                   << "lost CPU kernel '" << name << "' on the way to LLVM IR";
+          addEntryPoint(llvmModule, *kernel);
+        }
+        return success();
+      });
+}
+
+FailureOr<std::string>
+mlir::sim::compileReferenceFunctions(ModuleOp reference,
+                                     const CPUKernelOptions &options) {
+  // The functions already have the C signatures of docs/Reference.md.
+  return compileSharedObject(
+      OwningOpRef<ModuleOp>(cast<ModuleOp>(reference->clone())),
+      reference.getLoc(), options,
+      [](llvm::Module &) { return success(); });
 }
