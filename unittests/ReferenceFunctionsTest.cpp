@@ -171,8 +171,8 @@ protected:
 };
 
 TEST_F(ReferenceFunctionsTest, InitReadsThroughTheCallback) {
-  auto init = lookup<void (*)(const Context *, int64_t, void *)>(
-      "sim_ref_init_0");
+  auto init =
+      lookup<void (*)(const Context *, int64_t, void *)>("sim_ref_init_0");
   ASSERT_TRUE(init);
   float out = 0;
   init(&ctx, 3, &out);
@@ -183,8 +183,8 @@ TEST_F(ReferenceFunctionsTest, InitReadsThroughTheCallback) {
 }
 
 TEST_F(ReferenceFunctionsTest, VectorElementsArePacked) {
-  auto init = lookup<void (*)(const Context *, int64_t, void *)>(
-      "sim_ref_init_1");
+  auto init =
+      lookup<void (*)(const Context *, int64_t, void *)>("sim_ref_init_1");
   ASSERT_TRUE(init);
   float out[4] = {0, 0, 0, -1.0f};
   init(&ctx, 0, out);
@@ -204,8 +204,7 @@ TEST_F(ReferenceFunctionsTest, NumStepsReadsBuiltinParameters) {
 
 TEST_F(ReferenceFunctionsTest, EvaluateWritesEveryOutput) {
   auto evaluate = lookup<void (*)(const Context *, int64_t, int64_t, int32_t,
-                                  double, void *const *)>(
-      "sim_ref_evaluate_0");
+                                  double, void *const *)>("sim_ref_evaluate_0");
   ASSERT_TRUE(evaluate);
   float s = 0;
   float v[4] = {0, 0, 0, -1.0f};

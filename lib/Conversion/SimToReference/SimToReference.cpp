@@ -61,14 +61,11 @@ public:
 private:
   LogicalResult check();
   std::string model();
-  LogicalResult lowerBody(Region &body, StringRef name,
-                          ArrayRef<Type> argumentTypes, TypeRange results,
-                          function_ref<void(OpBuilder &, ValueRange,
-                                            IRMapping &)>
-                              mapArguments,
-                          function_ref<void(OpBuilder &, ValueRange,
-                                            ValueRange)>
-                              finish);
+  LogicalResult lowerBody(
+      Region &body, StringRef name, ArrayRef<Type> argumentTypes,
+      TypeRange results,
+      function_ref<void(OpBuilder &, ValueRange, IRMapping &)> mapArguments,
+      function_ref<void(OpBuilder &, ValueRange, ValueRange)> finish);
   Value loadField(OpBuilder &b, Location loc, Value ctx, ContextField field);
   Value callForValue(OpBuilder &b, Location loc, Value ctx, Value scratch,
                      ContextField callback, ValueRange indices, Type type);
@@ -148,8 +145,8 @@ std::string ReferenceLowering::model() {
   }
 
   for (auto [index, component] : llvm::enumerate(order)) {
-    os << "component " << index << " " << component.getSymName()
-       << " substep " << stringifySubStepping(*component.getSubStepping());
+    os << "component " << index << " " << component.getSymName() << " substep "
+       << stringifySubStepping(*component.getSubStepping());
     if (component.hasNumSteps())
       os << " num_steps";
     os << " writes";
@@ -225,8 +222,8 @@ LogicalResult ReferenceLowering::lowerBody(
 
   // One scratch slot for every callback: each read's value is loaded right
   // after its call, so the slot is free again.
-  Value one = LLVM::ConstantOp::create(b, loc, b.getI64Type(),
-                                       b.getI64IntegerAttr(1));
+  Value one =
+      LLVM::ConstantOp::create(b, loc, b.getI64Type(), b.getI64IntegerAttr(1));
   Value scratch = LLVM::AllocaOp::create(
       b, loc, ptrType, LLVM::LLVMArrayType::get(b.getI8Type(), kScratchBytes),
       one, /*alignment=*/16);
@@ -251,7 +248,8 @@ LogicalResult ReferenceLowering::lowerBody(
     Value value;
     if (auto read = dyn_cast<ReadOp>(op)) {
       Value buffer = arith::ConstantOp::create(
-          at, opLoc, at.getI32IntegerAttr(bufferIndex.lookup(read.getBuffer())));
+          at, opLoc,
+          at.getI32IntegerAttr(bufferIndex.lookup(read.getBuffer())));
       Value item = arith::IndexCastOp::create(at, opLoc, at.getI64Type(),
                                               read.getIndex());
       value = callForValue(at, opLoc, ctx, scratch, kReadCallback,
@@ -263,8 +261,8 @@ LogicalResult ReferenceLowering::lowerBody(
                       : param == "dt"        ? kDtParam
                       : param == "max_steps" ? kMaxStepsParam
                                              : paramIndex.lookup(param);
-      Value indexValue = arith::ConstantOp::create(
-          at, opLoc, at.getI32IntegerAttr(index));
+      Value indexValue =
+          arith::ConstantOp::create(at, opLoc, at.getI32IntegerAttr(index));
       value = callForValue(at, opLoc, ctx, scratch, kParamCallback,
                            {indexValue}, getParam.getType());
     }

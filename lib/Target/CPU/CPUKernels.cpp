@@ -73,9 +73,10 @@ static void addEntryPoint(llvm::Module &module, llvm::Function &kernel) {
 /// Lowers `module` (func.funcs of upstream dialects, consumed) to LLVM IR,
 /// lets `finish` add to it, and compiles and links it into the bytes of a
 /// shared object whose external functions are those of the module.
-static FailureOr<std::string> compileSharedObject(
-    OwningOpRef<ModuleOp> module, Location loc, const CPUKernelOptions &options,
-    function_ref<LogicalResult(llvm::Module &)> finish) {
+static FailureOr<std::string>
+compileSharedObject(OwningOpRef<ModuleOp> module, Location loc,
+                    const CPUKernelOptions &options,
+                    function_ref<LogicalResult(llvm::Module &)> finish) {
   (*module)->removeAttr(SymbolTable::getSymbolAttrName());
   // To the LLVM dialect with upstream conversions.
   PassManager pm(module->getContext());
@@ -208,6 +209,5 @@ mlir::sim::compileReferenceFunctions(ModuleOp reference,
   // The functions already have the C signatures of docs/Reference.md.
   return compileSharedObject(
       OwningOpRef<ModuleOp>(cast<ModuleOp>(reference->clone())),
-      reference.getLoc(), options,
-      [](llvm::Module &) { return success(); });
+      reference.getLoc(), options, [](llvm::Module &) { return success(); });
 }
