@@ -44,8 +44,24 @@ const char *kindName(uint32_t kind) {
     return "PTX";
   case SectionKind::Cpu:
     return "CPU";
+  case SectionKind::ReferenceModel:
+    return "reference model";
+  case SectionKind::ReferenceObject:
+    return "reference object";
   }
   return "?";
+}
+
+/// Scene and reference sections belong to no strategy.
+bool hasStrategy(uint32_t kind) {
+  return SectionKind(kind) == SectionKind::Plan ||
+         SectionKind(kind) == SectionKind::Ptx ||
+         SectionKind(kind) == SectionKind::Cpu;
+}
+
+bool isElf(const uint8_t *data, uint64_t size) {
+  static constexpr uint8_t elf[4] = {0x7f, 'E', 'L', 'F'};
+  return size >= 64 && std::memcmp(data, elf, 4) == 0;
 }
 
 } // namespace
@@ -99,6 +115,7 @@ std::shared_ptr<const Bundle> Bundle::parse(const uint8_t *data, size_t size,
   };
   std::vector<Section> sections;
   const Section *scene = nullptr;
+  const Section *referenceModel = nullptr, *referenceObject = nullptr;
   std::array<std::array<const Section *, 5>, kNumStrategies> byKind = {};
   sections.reserve(count);
   for (uint32_t i = 0; i < count; ++i) {
@@ -108,13 +125,13 @@ std::shared_ptr<const Bundle> Bundle::parse(const uint8_t *data, size_t size,
     uint64_t offset = readU64(entry + 8);
     uint64_t length = readU64(entry + 16);
     std::string what = "section " + std::to_string(i);
-    if (kind < 1 || kind > 4)
+    if (kind < 1 || kind > 6)
       error(what + " has unknown kind " + std::to_string(kind));
     what += " (" + std::string(kindName(kind)) + ")";
-    if (SectionKind(kind) == SectionKind::Scene) {
+    if (!hasStrategy(kind)) {
       if (strategy != kNoStrategy)
-        error(what + " has strategy " + std::to_string(strategy) +
-              " but a scene section has none (0xffffffff)");
+        error(what + " has strategy " + std::to_string(strategy) + " but a " +
+              kindName(kind) + " section has none (0xffffffff)");
     } else if (strategy >= kNumStrategies) {
       error(what + " has unknown strategy " + std::to_string(strategy));
     }
@@ -133,12 +150,16 @@ std::shared_ptr<const Bundle> Bundle::parse(const uint8_t *data, size_t size,
     sections.push_back({kind, strategy, data + offset, length});
   }
   for (const Section &section : sections) {
-    const Section *&slot = SectionKind(section.kind) == SectionKind::Scene
-                               ? scene
-                               : byKind[section.strategy][section.kind];
+    const Section *&slot =
+        SectionKind(section.kind) == SectionKind::Scene ? scene
+        : SectionKind(section.kind) == SectionKind::ReferenceModel
+            ? referenceModel
+        : SectionKind(section.kind) == SectionKind::ReferenceObject
+            ? referenceObject
+            : byKind[section.strategy][section.kind];
     if (slot) {
       std::string what = kindName(section.kind) + std::string(" section");
-      if (SectionKind(section.kind) != SectionKind::Scene)
+      if (hasStrategy(section.kind))
         what += std::string(" of strategy ") +
                 strategyName(Strategy(section.strategy));
       error("repeated " + what);
@@ -200,12 +221,31 @@ std::shared_ptr<const Bundle> Bundle::parse(const uint8_t *data, size_t size,
       code.ptx = std::string(body);
     }
     if (const Section *cpu = kinds[uint32_t(SectionKind::Cpu)]) {
-      static constexpr uint8_t elf[4] = {0x7f, 'E', 'L', 'F'};
-      if (cpu->size < 64 || std::memcmp(cpu->data, elf, 4) != 0)
+      if (!isElf(cpu->data, cpu->size))
         error("CPU section of strategy '" + name +
               "' is not an ELF shared object");
       code.cpu = std::vector<uint8_t>(cpu->data, cpu->data + cpu->size);
     }
+  }
+
+  // The model says what to call and the object is what it calls: one is
+  // useless without the other.
+  if (bool(referenceModel) != bool(referenceObject))
+    error(std::string("a reference ") +
+          (referenceModel
+               ? "model section without a reference object section"
+               : "object section without a reference model section") +
+          " (docs/Reference.md: both or neither)");
+  if (referenceModel) {
+    try {
+      bundle->reference = parseReferenceModel(text(referenceModel), sceneInfo);
+    } catch (const Error &e) {
+      error(e.what());
+    }
+    if (!isElf(referenceObject->data, referenceObject->size))
+      error("reference object section is not an ELF shared object");
+    bundle->referenceObject = std::vector<uint8_t>(
+        referenceObject->data, referenceObject->data + referenceObject->size);
   }
   return bundle;
 }

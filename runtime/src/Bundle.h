@@ -190,11 +190,74 @@ enum ClockSlot : int64_t {
 Plan parsePlan(std::string_view text, const Scene &scene, Strategy strategy);
 
 //===----------------------------------------------------------------------===//
+// Reference model
+//===----------------------------------------------------------------------===//
+
+enum class Interp { Linear, Cubic, Hermite, None };
+enum class Boundary { Clamp, Wrap, Zero };
+
+/// A `param` line: what index `i` of the `param` callback means.
+struct RefParam {
+  std::string name;
+  ScalarType type;
+  /// The scene parameter of that name (same type).
+  int32_t sceneParam = -1;
+};
+
+struct RefBuffer {
+  std::string name;
+  ElementType type;
+  Interp interp = Interp::Linear;
+  /// The buffer `hermite:<derivative>` names, or -1.
+  int32_t derivative = -1;
+  Boundary boundary = Boundary::Clamp;
+  bool observed = false;
+  bool exact = false;
+  /// The component that writes the buffer, or -1 (it keeps its initial
+  /// state).
+  int32_t writer = -1;
+};
+
+struct RefComponent {
+  std::string name;
+  /// `substep grid_sync`: sub-steps over the whole range at once.
+  bool gridSync = false;
+  bool numSteps = false;
+  std::vector<int32_t> writes, reads;
+  /// The component's place in `schedule`.
+  int32_t position = -1;
+};
+
+/// The text of the reference model section (docs/Reference.md).
+struct ReferenceModel {
+  std::string scene;
+  std::vector<RefParam> params;
+  std::vector<RefBuffer> buffers;
+  std::vector<RefComponent> components;
+  /// Components in the order they run.
+  std::vector<int32_t> schedule;
+
+  int findBuffer(std::string_view name) const;
+  int findComponent(std::string_view name) const;
+};
+
+/// Parses the text of the reference model section, resolving names against
+/// the scene; errors name the line.
+ReferenceModel parseReferenceModel(std::string_view text, const Scene &scene);
+
+//===----------------------------------------------------------------------===//
 // Bundle
 //===----------------------------------------------------------------------===//
 
 /// The section kinds of the table.
-enum class SectionKind : uint32_t { Scene = 1, Plan = 2, Ptx = 3, Cpu = 4 };
+enum class SectionKind : uint32_t {
+  Scene = 1,
+  Plan = 2,
+  Ptx = 3,
+  Cpu = 4,
+  ReferenceModel = 5,
+  ReferenceObject = 6
+};
 
 struct Bundle {
   /// The file, for messages ("bundle 'x.simb': ...").
@@ -207,6 +270,9 @@ struct Bundle {
     std::optional<std::vector<uint8_t>> cpu;
   };
   std::array<StrategyCode, kNumStrategies> strategies;
+  /// The reference sections (kinds 5 and 6): both or neither.
+  std::optional<ReferenceModel> reference;
+  std::optional<std::vector<uint8_t>> referenceObject;
 
   const StrategyCode &code(Strategy strategy) const {
     return strategies[uint32_t(strategy)];

@@ -1,9 +1,10 @@
 //===- CApi.cpp - the C API of sim_runtime.h ------------------------------===//
 //
-// Thin wrappers over Bundle and Session. This is the only place where
-// exceptions are caught: every entry point turns an Error (or any other
-// exception, e.g. std::bad_alloc) into a status code and a thread-local
-// message, so nothing but C crosses the API.
+// Thin wrappers over Bundle and the two executors (Session, the plan
+// executor, and ReferenceSession) behind the Executor interface. This is the
+// only place where exceptions are caught: every entry point turns an Error (or
+// any other exception, e.g. std::bad_alloc) into a status code and a
+// thread-local message, so nothing but C crosses the API.
 //
 //===----------------------------------------------------------------------===//
 
@@ -11,6 +12,7 @@
 
 #include "Bundle.h"
 #include "Error.h"
+#include "Reference.h"
 #include "Session.h"
 
 #include <cstring>
@@ -23,7 +25,7 @@ struct sim_bundle {
 };
 
 struct sim_session {
-  std::unique_ptr<Session> session;
+  std::unique_ptr<Executor> session;
 };
 
 namespace {
@@ -116,6 +118,8 @@ const char *sim_backend_name(sim_backend backend) {
     return "cpu";
   case SIM_BACKEND_CUDA:
     return "cuda";
+  case SIM_BACKEND_REFERENCE:
+    return "reference";
   }
   return "unknown";
 }
@@ -123,16 +127,16 @@ const char *sim_backend_name(sim_backend backend) {
 sim_status sim_backend_parse(const char *name, sim_backend *out) {
   SIM_REQUIRE(name);
   SIM_REQUIRE(out);
-  for (sim_backend backend :
-       {SIM_BACKEND_AUTO, SIM_BACKEND_CPU, SIM_BACKEND_CUDA})
+  for (sim_backend backend : {SIM_BACKEND_AUTO, SIM_BACKEND_CPU,
+                              SIM_BACKEND_CUDA, SIM_BACKEND_REFERENCE})
     if (std::strcmp(name, sim_backend_name(backend)) == 0) {
       *out = backend;
       lastError.clear();
       return SIM_OK;
     }
-  return failWith(SIM_ERROR_INVALID_ARGUMENT, "unknown backend '" +
-                                                  std::string(name) +
-                                                  "' (auto, cpu, cuda)");
+  return failWith(SIM_ERROR_INVALID_ARGUMENT,
+                  "unknown backend '" + std::string(name) +
+                      "' (auto, cpu, cuda, reference)");
 }
 
 //===----------------------------------------------------------------------===//
@@ -194,6 +198,9 @@ int sim_bundle_has_ptx(const sim_bundle *bundle, sim_strategy strategy) {
 int sim_bundle_has_cpu(const sim_bundle *bundle, sim_strategy strategy) {
   const Bundle::StrategyCode *code = codeOf(bundle, strategy);
   return code && code->cpu.has_value();
+}
+int sim_bundle_has_reference(const sim_bundle *bundle) {
+  return bundle && bundle->bundle->reference.has_value();
 }
 
 int32_t sim_bundle_num_buffers(const sim_bundle *bundle) {
@@ -266,9 +273,14 @@ sim_status sim_session_create(const sim_bundle *bundle,
   *out = nullptr;
   sim_session_options defaults;
   sim_session_options_init(&defaults);
+  const sim_session_options &chosen = options ? *options : defaults;
   return guard([&] {
-    *out = new sim_session{std::make_unique<Session>(
-        bundle->bundle, options ? *options : defaults)};
+    std::unique_ptr<Executor> session;
+    if (chosen.backend == SIM_BACKEND_REFERENCE)
+      session = std::make_unique<ReferenceSession>(bundle->bundle, chosen);
+    else
+      session = std::make_unique<Session>(bundle->bundle, chosen);
+    *out = new sim_session{std::move(session)};
   });
 }
 
@@ -380,14 +392,14 @@ sim_status sim_session_metrics(const sim_session *session, sim_metrics *out) {
 }
 
 int32_t sim_session_num_components(const sim_session *session) {
-  return session ? int32_t(session->session->plan().components.size()) : 0;
+  return session ? int32_t(session->session->numComponents()) : 0;
 }
 
 const char *sim_session_component(const sim_session *session, int32_t index) {
   if (!session || index < 0 ||
-      size_t(index) >= session->session->plan().components.size())
+      size_t(index) >= session->session->numComponents())
     return nullptr;
-  return session->session->plan().components[index].name.c_str();
+  return session->session->componentName(size_t(index)).c_str();
 }
 
 int64_t sim_session_evaluations(const sim_session *session, int32_t component) {
@@ -408,7 +420,7 @@ sim_status sim_session_nonfinite(const sim_session *session,
                                  sim_nonfinite *out) {
   SIM_REQUIRE(session);
   SIM_REQUIRE(out);
-  const Session::NonFinite &found = session->session->nonFinite;
+  const Executor::NonFinite &found = session->session->nonFinite;
   if (!found.found)
     return failWith(SIM_ERROR_INVALID_ARGUMENT,
                     "the last run found no non-finite value");

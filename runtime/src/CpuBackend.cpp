@@ -2,8 +2,7 @@
 //
 // The CPU section of a bundle is an ELF shared object exporting
 // `sim_cpu_<kernel>(params, first_group, end_group, group_size)`
-// (docs/Bundle.md). It is written to an anonymous memfd and dlopen'ed from
-// /proc/self/fd, so nothing touches the file system. An `items` launch
+// (docs/Bundle.md), loaded from memory (SharedObject.h). An `items` launch
 // splits its groups into contiguous ranges run by a small pool of threads;
 // the kernels update the clock with atomics, so concurrent disjoint ranges
 // are what the ABI promises to support. Launches are synchronous, which
@@ -13,16 +12,14 @@
 
 #include "Backend.h"
 #include "Error.h"
+#include "SharedObject.h"
 
 #include <chrono>
 #include <condition_variable>
 #include <cstdlib>
 #include <cstring>
-#include <dlfcn.h>
 #include <mutex>
-#include <sys/mman.h>
 #include <thread>
-#include <unistd.h>
 
 namespace sim::rt {
 
@@ -112,39 +109,11 @@ private:
   bool stopping = false;
 };
 
-#if defined(__x86_64__)
-constexpr uint16_t kHostMachine = 62; // EM_X86_64
-constexpr const char *kHostName = "x86-64";
-#elif defined(__aarch64__)
-constexpr uint16_t kHostMachine = 183; // EM_AARCH64
-constexpr const char *kHostName = "AArch64";
-#else
-constexpr uint16_t kHostMachine = 0;
-constexpr const char *kHostName = "this machine";
-#endif
-
 class CpuBackend final : public Backend {
 public:
   explicit CpuBackend(int threads)
       : pool(threads > 0 ? threads
                          : std::max(1u, std::thread::hardware_concurrency())) {}
-
-  ~CpuBackend() override {
-    if (!library)
-      return;
-    dlclose(library);
-    if (memfd < 0)
-      return;
-    // dlopen finds loaded objects by path first, and /proc/self/fd/N names
-    // whatever file descriptor N is now: the descriptor is released only
-    // once the object is really gone, so no later load can be mistaken for
-    // this one.
-    if (void *still = dlopen(path.c_str(), RTLD_NOW | RTLD_NOLOAD)) {
-      dlclose(still);
-      return;
-    }
-    close(memfd);
-  }
 
   sim_backend kind() const override { return SIM_BACKEND_CPU; }
 
@@ -161,14 +130,12 @@ public:
 
   void load(const Bundle::StrategyCode &code, Strategy strategy,
             const std::vector<std::string> &kernelNames) override {
-    const std::vector<uint8_t> &object = *code.cpu;
     std::string what = std::string("the CPU kernels of strategy '") +
                        strategyName(strategy) + "'";
-    checkElf(object, what);
-    openFromMemory(object, what);
+    library = std::make_unique<SharedObject>(*code.cpu, what);
     for (const std::string &name : kernelNames) {
       std::string symbol = "sim_cpu_" + name;
-      void *address = dlsym(library, symbol.c_str());
+      void *address = library->find(symbol);
       if (!address)
         fail(SIM_ERROR_BACKEND, what + " do not export " + symbol +
                                     " (kernel '" + name + "' of the plan)");
@@ -217,71 +184,8 @@ public:
   }
 
 private:
-  static void checkElf(const std::vector<uint8_t> &object,
-                       const std::string &what) {
-    // e_ident[EI_CLASS] == ELFCLASS64, e_type == ET_DYN, e_machine.
-    uint16_t type = uint16_t(object[16] | object[17] << 8);
-    uint16_t machine = uint16_t(object[18] | object[19] << 8);
-    if (object[4] != 2 || type != 3)
-      fail(SIM_ERROR_BUNDLE, what + " are not a 64-bit ELF shared object");
-    if (kHostMachine && machine != kHostMachine)
-      fail(SIM_ERROR_BUNDLE, what + " are for ELF machine " +
-                                 std::to_string(machine) + ", not for " +
-                                 kHostName);
-  }
-
-  /// dlopen needs a path: an anonymous memfd provides one without a file
-  /// on disk; where memfd_create is missing, a temporary file that is
-  /// removed as soon as it is mapped.
-  void openFromMemory(const std::vector<uint8_t> &object,
-                      const std::string &what) {
-    int fd = memfd_create("sim-cpu-kernels", MFD_CLOEXEC);
-    bool temporary = fd < 0;
-    if (temporary) {
-      const char *dir = std::getenv("TMPDIR");
-      path = std::string(dir && *dir ? dir : "/tmp") + "/sim-kernels-XXXXXX";
-      fd = mkstemp(path.data());
-      if (fd < 0)
-        fail(SIM_ERROR_BACKEND,
-             "cannot create a file for " + what + ": " + std::strerror(errno));
-    } else {
-      path = "/proc/self/fd/" + std::to_string(fd);
-    }
-    auto cleanUp = [&] {
-      close(fd);
-      if (temporary)
-        unlink(path.c_str());
-    };
-    size_t written = 0;
-    while (written < object.size()) {
-      ssize_t n = ::write(fd, object.data() + written, object.size() - written);
-      if (n < 0 && errno == EINTR)
-        continue;
-      if (n <= 0) {
-        int saved = errno;
-        cleanUp();
-        fail(SIM_ERROR_BACKEND,
-             "cannot write " + what + ": " + std::strerror(saved));
-      }
-      written += size_t(n);
-    }
-    library = dlopen(path.c_str(), RTLD_NOW | RTLD_LOCAL);
-    if (!library) {
-      std::string error = dlerror();
-      cleanUp();
-      fail(SIM_ERROR_BACKEND, "cannot load " + what + ": " + error);
-    }
-    if (temporary)
-      cleanUp();
-    else
-      memfd = fd;
-  }
-
   ThreadPool pool;
-  void *library = nullptr;
-  /// The memfd the library was loaded from, and the path it was loaded by.
-  int memfd = -1;
-  std::string path;
+  std::unique_ptr<SharedObject> library;
   std::vector<KernelFn> kernels;
   std::chrono::steady_clock::duration kernelTime{};
 };

@@ -30,18 +30,11 @@ constexpr int64_t kMaxBatch = 256;
 /// Largest number of bytes one buffer may take (both halves).
 constexpr int64_t kMaxBufferBytes = int64_t(1) << 50;
 
-std::string listNames(const std::vector<std::string> &names) {
-  std::string list;
-  for (const std::string &name : names)
-    list += (list.empty() ? "" : ", ") + name;
-  return list.empty() ? "none" : list;
-}
-
 } // namespace
 
 Session::Session(std::shared_ptr<const Bundle> bundleIn,
                  const sim_session_options &optionsIn)
-    : bundle(std::move(bundleIn)), options(optionsIn) {
+    : bundle(std::move(bundleIn)), options(optionsIn), settings(bundle->scene) {
   if (uint32_t(options.strategy) >= kNumStrategies)
     fail(SIM_ERROR_INVALID_ARGUMENT,
          "unknown strategy " + std::to_string(int(options.strategy)));
@@ -105,10 +98,6 @@ Session::Session(std::shared_ptr<const Bundle> bundleIn,
   kernelNames = plan_->kernelNames();
   backend->load(code, strategy, kernelNames);
 
-  range_ = scene().range;
-  dt = scene().dt;
-  for (const SceneParam &param : scene().params)
-    params.push_back(param.defaultValue);
   evaluations.assign(plan_->components.size(), 0);
   histogram.assign(size_t(scene().maxSteps) + 1, 0);
 }
@@ -127,55 +116,20 @@ Session::~Session() {
 //===----------------------------------------------------------------------===//
 
 void Session::set(const std::string &name, const std::string &text) {
-  if (name == "range") {
-    Value value = parseValue(ScalarType::I64, text, "range");
-    if (value.i < 1)
-      fail(SIM_ERROR_INVALID_ARGUMENT,
-           "range: " + text + " is not a positive number of items");
+  bool rangeChanged = settings.set(name, text, [&](int64_t range) {
     for (const PlanBuffer &buffer : plan_->buffers)
-      if (value.i > kMaxBufferBytes / 2 / buffer.stride)
+      if (range > kMaxBufferBytes / 2 / buffer.stride)
         fail(SIM_ERROR_INVALID_ARGUMENT,
              "range: " + text + " items of buffer '" + buffer.name +
                  "' would not fit in memory");
-    if (value.i != range_) {
-      // The state of another size is meaningless: start over.
-      backend->activate();
-      releaseAll();
-      range_ = value.i;
-    }
-    return;
+  });
+  if (rangeChanged) {
+    // The state of another size is meaningless: start over.
+    backend->activate();
+    releaseAll();
   }
-  if (name == "dt") {
-    dt = parseValue(dt.type, text, "dt");
-    prepared = false;
-    return;
-  }
-  int index = scene().findParam(name);
-  if (index < 0) {
-    std::vector<std::string> names;
-    for (const SceneParam &param : scene().params)
-      names.push_back(param.name);
-    fail(SIM_ERROR_INVALID_ARGUMENT,
-         "'" + name + "' is not range, dt or a parameter of scene '" +
-             scene().name + "' (parameters: " + listNames(names) + ")");
-  }
-  params[index] =
-      parseValue(scene().params[index].type, text, "parameter '" + name + "'");
+  // dt and parameters are launch arguments.
   prepared = false;
-}
-
-std::string Session::get(const std::string &name) const {
-  if (name == "range")
-    return std::to_string(range_);
-  if (name == "dt")
-    return dt.text();
-  int index = scene().findParam(name);
-  if (index < 0)
-    fail(SIM_ERROR_INVALID_ARGUMENT, "'" + name +
-                                         "' is not range, dt or a parameter "
-                                         "of scene '" +
-                                         scene().name + "'");
-  return params[index].text();
 }
 
 int Session::bufferIndex(const std::string &name) const {
@@ -196,7 +150,7 @@ size_t Session::deviceStride(int buffer) const {
 }
 
 size_t Session::hostBytes(const std::string &name) const {
-  return size_t(range_) *
+  return size_t(settings.range) *
          size_t(plan_->buffers[bufferIndex(name)].type.packedBytes());
 }
 
@@ -212,7 +166,7 @@ void Session::allocate() {
   clockMemory = take(size_t(plan_->clockSlots) * sizeof(int64_t));
   for (size_t i = 0; i < plan_->buffers.size(); ++i) {
     const PlanBuffer &buffer = plan_->buffers[i];
-    size_t half = size_t(range_) * deviceStride(int(i));
+    size_t half = size_t(settings.range) * deviceStride(int(i));
     buffers.push_back(take(2 * half));
     snapshots.push_back(buffer.snapshot ? take(half) : Memory{});
     exacts.push_back(buffer.exact ? take(half) : Memory{});
@@ -254,7 +208,8 @@ void Session::prepare() {
           int(std::find(kernelNames.begin(), kernelNames.end(), launch.kernel) -
               kernelNames.begin());
       p.groupSize = launch.single ? 1 : groupSize_;
-      p.groups = launch.single ? 1 : (range_ + groupSize_ - 1) / groupSize_;
+      p.groups =
+          launch.single ? 1 : (settings.range + groupSize_ - 1) / groupSize_;
       p.sharedBytes = launch.sharedPerThread * p.groupSize + launch.sharedFixed;
       // A memref travels as its descriptor: allocated pointer, aligned
       // pointer, offset, size, stride.
@@ -268,22 +223,22 @@ void Session::prepare() {
           memref(clockMemory.pointer, plan_->clockSlots);
           break;
         case ArgKind::Buffer:
-          memref(buffers[arg.index].pointer, 2 * range_);
+          memref(buffers[arg.index].pointer, 2 * settings.range);
           break;
         case ArgKind::Snapshot:
-          memref(snapshots[arg.index].pointer, range_);
+          memref(snapshots[arg.index].pointer, settings.range);
           break;
         case ArgKind::Exact:
-          memref(exacts[arg.index].pointer, range_);
+          memref(exacts[arg.index].pointer, settings.range);
           break;
         case ArgKind::Param:
-          p.values.push_back(params[arg.index].bits());
+          p.values.push_back(settings.params[arg.index].bits());
           break;
         case ArgKind::Range:
-          p.values.push_back(uint64_t(range_));
+          p.values.push_back(uint64_t(settings.range));
           break;
         case ArgKind::Dt:
-          p.values.push_back(dt.bits());
+          p.values.push_back(settings.dt.bits());
           break;
         case ArgKind::Time:
           p.timeValues.push_back(p.values.size());
@@ -365,7 +320,7 @@ void Session::checkFinite(const Prepared &p) {
     ++metrics.host_syncs;
     // Both halves: the target just written, and the source, which holds
     // the initial state the first time round.
-    for (int64_t element = 0; element < 2 * range_; ++element) {
+    for (int64_t element = 0; element < 2 * settings.range; ++element) {
       const uint8_t *item = data.data() + size_t(element) * stride;
       for (int32_t lane = 0; lane < buffer.type.lanes; ++lane) {
         double value;
@@ -384,7 +339,7 @@ void Session::checkFinite(const Prepared &p) {
         nonFinite.component = component.name;
         nonFinite.buffer = buffer.name;
         nonFinite.kernel = p.launch->kernel;
-        nonFinite.item = element % range_;
+        nonFinite.item = element % settings.range;
         nonFinite.lane = lane;
         nonFinite.value = value;
         std::string where = "item " + std::to_string(nonFinite.item);
@@ -547,7 +502,7 @@ Session::CurrentHalf Session::currentHalf(const std::string &name,
   size_t stride = deviceStride(index);
   size_t packed = size_t(plan_->buffers[index].type.packedBytes());
   DevicePtr half = buffers[index].pointer +
-                   size_t(clock[kSlotParity]) * size_t(range_) * stride;
+                   size_t(clock[kSlotParity]) * size_t(settings.range) * stride;
   return {half, stride, packed};
 }
 
@@ -557,9 +512,9 @@ void Session::getBuffer(const std::string &name, void *data, size_t bytes) {
     backend->read(data, half, bytes);
     return;
   }
-  std::vector<uint8_t> device(size_t(range_) * stride);
+  std::vector<uint8_t> device(size_t(settings.range) * stride);
   backend->read(device.data(), half, device.size());
-  for (int64_t i = 0; i < range_; ++i)
+  for (int64_t i = 0; i < settings.range; ++i)
     std::memcpy(static_cast<uint8_t *>(data) + size_t(i) * packed,
                 device.data() + size_t(i) * stride, packed);
 }
@@ -571,8 +526,8 @@ void Session::setBuffer(const std::string &name, const void *data,
     backend->write(half, data, bytes);
     return;
   }
-  std::vector<uint8_t> device(size_t(range_) * stride, 0);
-  for (int64_t i = 0; i < range_; ++i)
+  std::vector<uint8_t> device(size_t(settings.range) * stride, 0);
+  for (int64_t i = 0; i < settings.range; ++i)
     std::memcpy(device.data() + size_t(i) * stride,
                 static_cast<const uint8_t *>(data) + size_t(i) * packed,
                 packed);
@@ -602,8 +557,7 @@ void Session::exact(const std::string &name, void *data, size_t bytes) {
   backend->activate();
   ensureInitialized();
   prepare();
-  double time = double(clock[kSlotBegin]) *
-                (dt.type == ScalarType::F32 ? double(float(dt.f)) : dt.f);
+  double time = double(clock[kSlotBegin]) * settings.dtValue();
   uint64_t bits;
   std::memcpy(&bits, &time, sizeof bits);
   for (Prepared &p : phases[int(PhaseKind::Exact)])
@@ -613,9 +567,9 @@ void Session::exact(const std::string &name, void *data, size_t bytes) {
   runUncounted(PhaseKind::Exact);
   size_t stride = deviceStride(index);
   size_t packed = size_t(plan_->buffers[index].type.packedBytes());
-  std::vector<uint8_t> device(size_t(range_) * stride);
+  std::vector<uint8_t> device(size_t(settings.range) * stride);
   backend->read(device.data(), exacts[index].pointer, device.size());
-  for (int64_t i = 0; i < range_; ++i)
+  for (int64_t i = 0; i < settings.range; ++i)
     std::memcpy(static_cast<uint8_t *>(data) + size_t(i) * packed,
                 device.data() + size_t(i) * stride, packed);
 }

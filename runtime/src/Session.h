@@ -14,6 +14,7 @@
 
 #include "Backend.h"
 #include "Bundle.h"
+#include "Executor.h"
 #include "sim/Runtime/sim_runtime.h"
 
 #include <memory>
@@ -22,62 +23,47 @@
 
 namespace sim::rt {
 
-class Session {
+class Session final : public Executor {
 public:
   Session(std::shared_ptr<const Bundle> bundle,
           const sim_session_options &options);
-  ~Session();
+  ~Session() override;
   Session(const Session &) = delete;
   Session &operator=(const Session &) = delete;
 
-  const Scene &scene() const { return bundle->scene; }
+  const Scene &scene() const override { return bundle->scene; }
   const Plan &plan() const { return *plan_; }
-  sim_backend backendKind() const { return backend->kind(); }
-  const std::string &device() const { return deviceName; }
-  /// Why `auto` did not choose CUDA (empty otherwise).
-  const std::string &backendNote() const { return note; }
-  int64_t groupSize() const { return groupSize_; }
-  int64_t range() const { return range_; }
+  sim_backend backendKind() const override { return backend->kind(); }
+  const std::string &device() const override { return deviceName; }
+  const std::string &backendNote() const override { return note; }
+  int64_t groupSize() const override { return groupSize_; }
+  int64_t range() const override { return settings.range; }
 
-  /// `range`, `dt` or a scene parameter, from text.
-  void set(const std::string &name, const std::string &value);
-  std::string get(const std::string &name) const;
-
-  /// Allocates what is missing, zeroes everything and runs phase init.
-  void init();
-  /// The clock's T (0 before init).
-  int64_t time() const { return clock.empty() ? 0 : clock[kSlotBegin]; }
-
-  /// Host arrays hold `range` items of `lanes` packed scalars.
-  size_t hostBytes(const std::string &buffer) const;
-  void getBuffer(const std::string &buffer, void *data, size_t bytes);
-  void setBuffer(const std::string &buffer, const void *data, size_t bytes);
-  bool hasExact(const std::string &buffer) const;
-  /// The exact solution at time T * dt.
-  void exact(const std::string &buffer, void *data, size_t bytes);
-
-  /// Runs `steps` base steps; the run ends exactly at T + steps or throws.
-  void run(int64_t steps);
-
-  void setProgress(sim_progress_fn fn, void *user) {
-    progress = fn;
-    progressUser = user;
+  void set(const std::string &name, const std::string &value) override;
+  std::string get(const std::string &name) const override {
+    return settings.get(name);
   }
 
-  /// The last run's measurements.
-  sim_metrics metrics{};
-  std::vector<int64_t> evaluations; // per plan component
-  std::vector<int64_t> histogram;   // index m in 0 .. max_steps
+  /// Allocates what is missing, zeroes everything and runs phase init.
+  void init() override;
+  /// The clock's T (0 before init).
+  int64_t time() const override {
+    return clock.empty() ? 0 : clock[kSlotBegin];
+  }
 
-  /// Where the last run found a non-finite value.
-  struct NonFinite {
-    bool found = false;
-    int64_t baseStep = 0;
-    std::string component, buffer, kernel;
-    int64_t item = 0;
-    int32_t lane = 0;
-    double value = 0;
-  } nonFinite;
+  size_t hostBytes(const std::string &buffer) const override;
+  void getBuffer(const std::string &buffer, void *data, size_t bytes) override;
+  void setBuffer(const std::string &buffer, const void *data,
+                 size_t bytes) override;
+  bool hasExact(const std::string &buffer) const override;
+  void exact(const std::string &buffer, void *data, size_t bytes) override;
+
+  void run(int64_t steps) override;
+
+  size_t numComponents() const override { return plan_->components.size(); }
+  const std::string &componentName(size_t index) const override {
+    return plan_->components[index].name;
+  }
 
 private:
   /// Where a buffer's current state lives on the device (the half the
@@ -125,10 +111,8 @@ private:
   std::string deviceName, note;
   std::vector<std::string> kernelNames;
 
-  int64_t range_ = 0;
   int64_t groupSize_ = 0;
-  Value dt;
-  std::vector<Value> params;
+  Settings settings;
 
   Memory clockMemory;
   std::vector<Memory> buffers, snapshots, exacts;
@@ -137,9 +121,6 @@ private:
   bool allocated = false, initialized = false, prepared = false;
   bool graphReady = false;
   std::vector<Prepared> phases[kNumPhases];
-
-  sim_progress_fn progress = nullptr;
-  void *progressUser = nullptr;
 };
 
 } // namespace sim::rt

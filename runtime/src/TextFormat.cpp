@@ -693,4 +693,244 @@ Plan parsePlan(std::string_view text, const Scene &scene, Strategy strategy) {
   return plan;
 }
 
+//===----------------------------------------------------------------------===//
+// Reference model
+//===----------------------------------------------------------------------===//
+
+int ReferenceModel::findBuffer(std::string_view name) const {
+  for (size_t i = 0; i < buffers.size(); ++i)
+    if (buffers[i].name == name)
+      return int(i);
+  return -1;
+}
+
+int ReferenceModel::findComponent(std::string_view name) const {
+  for (size_t i = 0; i < components.size(); ++i)
+    if (components[i].name == name)
+      return int(i);
+  return -1;
+}
+
+ReferenceModel parseReferenceModel(std::string_view text, const Scene &scene) {
+  Records records(text, "reference model section");
+  ReferenceModel model;
+  bool header = false, schedule = false;
+  // Hermite derivatives may name a buffer declared later: resolved at the
+  // end, with the line that named them.
+  struct Derivative {
+    int32_t buffer;
+    std::string name;
+    int line;
+  };
+  std::vector<Derivative> derivatives;
+  // Indices are positions: the callbacks and symbol names use them.
+  auto index = [&](size_t count, const char *what) {
+    int64_t value = records.integer(1, what, 0, 1 << 30);
+    if (value != int64_t(count))
+      records.error(std::string(what) + " " + records.str(1) +
+                    " is out of order (expected " + std::to_string(count) +
+                    ": indices count 0, 1, ... in the order of the lines)");
+  };
+  auto buffer = [&](size_t i, const std::string &what) {
+    int found = model.findBuffer(records[i]);
+    if (found < 0)
+      records.error(what + " '" + records.str(i) +
+                    "', which is not a buffer declared before it");
+    return int32_t(found);
+  };
+
+  while (records.next()) {
+    std::string_view record = records[0];
+    if (!header && record != "reference")
+      records.error("expected the 'reference' record first, found '" +
+                    std::string(record) + "'");
+    if (schedule)
+      records.error("'" + std::string(record) +
+                    "' after 'schedule', which comes last");
+    if (record == "reference") {
+      if (header)
+        records.error("a second 'reference' record");
+      records.expectCount(2, "reference <scene>");
+      model.scene = records.str(1);
+      if (model.scene != scene.name)
+        records.error("the model is of scene '" + model.scene +
+                      "' but the bundle's scene is '" + scene.name + "'");
+      header = true;
+    } else if (record == "param") {
+      records.expectCount(4, "param <index> <name> <i32|i64|index|f32|f64>");
+      index(model.params.size(), "param index");
+      RefParam param;
+      param.name = records.str(2);
+      for (const RefParam &other : model.params)
+        if (other.name == param.name)
+          records.error("parameter '" + param.name + "' is declared twice");
+      std::optional<ScalarType> type = parseScalarType(records[3]);
+      if (!type)
+        records.error("parameter type '" + records.str(3) +
+                      "' is not one of i32, i64, index, f32, f64");
+      param.type = *type;
+      param.sceneParam = scene.findParam(param.name);
+      if (param.sceneParam < 0)
+        records.error("parameter '" + param.name +
+                      "' is not a parameter of scene '" + scene.name + "'");
+      if (scene.params[param.sceneParam].type != param.type)
+        records.error("parameter '" + param.name + "' has type " +
+                      records.str(3) + " but the scene says " +
+                      scalarTypeName(scene.params[param.sceneParam].type));
+      model.params.push_back(std::move(param));
+    } else if (record == "buffer") {
+      const char *syntax = "buffer <index> <name> <element type> interp "
+                           "<interp> boundary <boundary> [observed] [exact]";
+      records.expectAtLeast(8, syntax);
+      index(model.buffers.size(), "buffer index");
+      records.expect(4, "interp");
+      records.expect(6, "boundary");
+      RefBuffer buffer;
+      buffer.name = records.str(2);
+      if (model.findBuffer(buffer.name) >= 0)
+        records.error("buffer '" + buffer.name + "' is declared twice");
+      int sceneBuffer = scene.findBuffer(buffer.name);
+      if (sceneBuffer < 0)
+        records.error("buffer '" + buffer.name +
+                      "' is not a buffer of scene '" + scene.name + "'");
+      std::optional<ElementType> type = parseElementType(records[3]);
+      if (!type)
+        records.error("element type '" + records.str(3) +
+                      "' is not f32, f64, vector<Nxf32> or vector<Nxf64>");
+      if (!(*type == scene.buffers[sceneBuffer].type))
+        records.error("buffer '" + buffer.name + "' has element type " +
+                      records.str(3) + " but the scene says " +
+                      scene.buffers[sceneBuffer].type.text);
+      buffer.type = *type;
+      std::string_view interp = records[5];
+      if (interp == "linear") {
+        buffer.interp = Interp::Linear;
+      } else if (interp == "cubic") {
+        buffer.interp = Interp::Cubic;
+      } else if (interp == "none") {
+        buffer.interp = Interp::None;
+      } else if (auto derivative = afterPrefix(interp, "hermite:")) {
+        buffer.interp = Interp::Hermite;
+        derivatives.push_back({int32_t(model.buffers.size()),
+                               std::string(*derivative), records.lineNumber});
+      } else {
+        records.error("interpolation '" + records.str(5) +
+                      "' is not linear, cubic, hermite:<buffer> or none");
+      }
+      std::string_view boundary = records[7];
+      if (boundary == "clamp")
+        buffer.boundary = Boundary::Clamp;
+      else if (boundary == "wrap")
+        buffer.boundary = Boundary::Wrap;
+      else if (boundary == "zero")
+        buffer.boundary = Boundary::Zero;
+      else
+        records.error("boundary '" + records.str(7) +
+                      "' is not clamp, wrap or zero");
+      for (size_t i = 8; i < records.size(); ++i) {
+        bool *flag = records[i] == "observed" ? &buffer.observed
+                     : records[i] == "exact"  ? &buffer.exact
+                                              : nullptr;
+        if (!flag)
+          records.error("unknown buffer flag '" + records.str(i) + "'");
+        if (*flag)
+          records.error("buffer flag '" + records.str(i) + "' is repeated");
+        *flag = true;
+      }
+      model.buffers.push_back(std::move(buffer));
+    } else if (record == "component") {
+      const char *syntax = "component <index> <name> substep "
+                           "<in_kernel|grid_sync> [num_steps] writes <B>... "
+                           "reads <B>...";
+      records.expectAtLeast(7, syntax);
+      index(model.components.size(), "component index");
+      records.expect(3, "substep");
+      RefComponent component;
+      component.name = records.str(2);
+      if (model.findComponent(component.name) >= 0)
+        records.error("component '" + component.name + "' is declared twice");
+      if (records[4] != "in_kernel" && records[4] != "grid_sync")
+        records.error("substep '" + records.str(4) +
+                      "' is not in_kernel or grid_sync");
+      component.gridSync = records[4] == "grid_sync";
+      size_t at = 5;
+      if (records[at] == "num_steps") {
+        component.numSteps = true;
+        ++at;
+      }
+      records.expect(at, "writes");
+      size_t reads = at + 1;
+      while (reads < records.size() && records[reads] != "reads")
+        ++reads;
+      if (reads == records.size())
+        records.error("expected 'reads' (possibly followed by nothing) after "
+                      "the buffers the component writes");
+      if (reads == at + 1)
+        records.error("component '" + component.name + "' writes no buffer");
+      int32_t self = int32_t(model.components.size());
+      for (size_t i = at + 1; i < reads; ++i) {
+        int32_t written =
+            buffer(i, "component '" + component.name + "' writes");
+        RefBuffer &target = model.buffers[written];
+        if (target.writer >= 0)
+          records.error("buffer '" + target.name + "' is written by both '" +
+                        model.components[target.writer].name + "' and '" +
+                        component.name + "'");
+        target.writer = self;
+        component.writes.push_back(written);
+      }
+      for (size_t i = reads + 1; i < records.size(); ++i) {
+        int32_t read = buffer(i, "component '" + component.name + "' reads");
+        for (int32_t seen : component.reads)
+          if (seen == read)
+            records.error("component '" + component.name + "' lists '" +
+                          records.str(i) + "' twice in 'reads'");
+        component.reads.push_back(read);
+      }
+      model.components.push_back(std::move(component));
+    } else if (record == "schedule") {
+      records.expectAtLeast(1, "schedule <component>...");
+      for (size_t i = 1; i < records.size(); ++i) {
+        int found = model.findComponent(records[i]);
+        if (found < 0)
+          records.error("schedule names '" + records.str(i) +
+                        "', which is not a component");
+        RefComponent &component = model.components[found];
+        if (component.position >= 0)
+          records.error("schedule names '" + component.name + "' twice");
+        component.position = int32_t(model.schedule.size());
+        model.schedule.push_back(found);
+      }
+      for (const RefComponent &component : model.components)
+        if (component.position < 0)
+          records.error("component '" + component.name +
+                        "' is not in the schedule");
+      schedule = true;
+    } else {
+      records.error("unknown record '" + std::string(record) + "'");
+    }
+  }
+
+  const std::string section = records.section;
+  if (!header)
+    fail(SIM_ERROR_BUNDLE, section + ": no 'reference' record");
+  if (!schedule)
+    fail(SIM_ERROR_BUNDLE, section + ": no 'schedule' record");
+  for (const Derivative &derivative : derivatives) {
+    std::string where = section + ", line " + std::to_string(derivative.line) +
+                        ": buffer '" + model.buffers[derivative.buffer].name +
+                        "' interpolates with the derivative '" +
+                        derivative.name + "'";
+    int found = model.findBuffer(derivative.name);
+    if (found < 0)
+      fail(SIM_ERROR_BUNDLE, where + ", which is not a buffer of the model");
+    if (!(model.buffers[found].type == model.buffers[derivative.buffer].type))
+      fail(SIM_ERROR_BUNDLE,
+           where + ", whose element type " + model.buffers[found].type.text +
+               " differs from " + model.buffers[derivative.buffer].type.text);
+    model.buffers[derivative.buffer].derivative = int32_t(found);
+  }
+  return model;
+}
+
 } // namespace sim::rt

@@ -26,6 +26,7 @@ int sim_c_api_test(const char *path, char *message, size_t capacity) {
   int failed = 1;
   sim_bundle *bundle = NULL;
   sim_session *session = NULL;
+  sim_session *reference = NULL;
   double *x = NULL;
   float *v = NULL;
   message[0] = '\0';
@@ -72,6 +73,13 @@ int sim_c_api_test(const char *path, char *message, size_t capacity) {
   sim_backend backend;
   CHECK(sim_backend_parse("cpu", &backend) == SIM_OK &&
         backend == SIM_BACKEND_CPU);
+  CHECK(sim_backend_parse("reference", &backend) == SIM_OK &&
+        backend == SIM_BACKEND_REFERENCE);
+  CHECK(strcmp(sim_backend_name(SIM_BACKEND_REFERENCE), "reference") == 0);
+  CHECK(sim_backend_parse("oracle", &backend) == SIM_ERROR_INVALID_ARGUMENT);
+  CHECK(strstr(sim_last_error(), "(auto, cpu, cuda, reference)") != NULL);
+  CHECK(sim_bundle_has_reference(bundle));
+  CHECK(!sim_bundle_has_reference(NULL));
 
   /* A session. */
   sim_session_options options;
@@ -142,12 +150,38 @@ int sim_c_api_test(const char *path, char *message, size_t capacity) {
 
   sim_nonfinite where;
   CHECK(sim_session_nonfinite(session, &where) == SIM_ERROR_INVALID_ARGUMENT);
+
+  /* The reference executor behind the same calls, with the same settings:
+     the same work and the same values. */
+  CHECK(sim_bundle_open(path, &bundle) == SIM_OK);
+  options.backend = SIM_BACKEND_REFERENCE;
+  CHECK(sim_session_create(bundle, &options, &reference) == SIM_OK);
+  CHECK(sim_session_backend(reference) == SIM_BACKEND_REFERENCE);
+  CHECK(strcmp(sim_session_device(reference),
+               "reference executor (CPU, 1 thread)") == 0);
+  CHECK(sim_session_group_size(reference) == 32);
+  CHECK(sim_session_set(reference, "k", "1") == SIM_OK);
+  CHECK(sim_session_run(reference, 30) == SIM_OK);
+  sim_metrics referenceMetrics;
+  CHECK(sim_session_metrics(reference, &referenceMetrics) == SIM_OK);
+  CHECK(referenceMetrics.big_steps == metrics.big_steps);
+  CHECK(referenceMetrics.launches == 0 && referenceMetrics.host_syncs == 0);
+  CHECK(strcmp(sim_session_component(reference, 1), "Grow") == 0);
+  CHECK(sim_session_evaluations(reference, 0) ==
+        sim_session_evaluations(session, 0));
+  for (int64_t m = 1; m <= 4; ++m)
+    CHECK(sim_session_histogram(reference, m) ==
+          sim_session_histogram(session, m));
+  CHECK(sim_session_get_buffer(reference, "V", v, 100 * 3 * sizeof(float)) ==
+        SIM_OK);
+  CHECK(v[3 * 99 + 0] == 30 && v[3 * 99 + 1] == 99);
   failed = 0;
 
 done:
   free(x);
   free(v);
   sim_session_destroy(session);
+  sim_session_destroy(reference);
   sim_bundle_close(bundle);
   return failed;
 }

@@ -72,7 +72,8 @@ TEST_F(SimRun, PrintsHelp) {
   EXPECT_TRUE(
       contains(result.output, "USAGE: sim-run <scene.simb | scene.mlir>"));
   for (const char *option :
-       {"--backend auto|cpu|cuda", "--strategy S", "--steps N", "--repeat K",
+       {"--backend B", "auto, cpu, cuda or reference", "--check",
+        "--check-tolerance X", "--strategy S", "--steps N", "--repeat K",
         "--set NAME=VALUE", "--group-size G", "--reference simple|exact",
         "--dump DIR", "--json FILE", "--check-finite"})
     EXPECT_TRUE(contains(result.output, option)) << option;
@@ -92,6 +93,9 @@ TEST_F(SimRun, RejectsBadUsage) {
       {bundle + " --reference cubic", "--reference expects simple or exact"},
       {bundle + " --steps", "--steps expects a value"},
       {bundle + " --check-finite=yes", "--check-finite takes no value"},
+      {bundle + " --check-tolerance 1e-3", "--check-tolerance needs --check"},
+      {bundle + " --check --check-tolerance -1",
+       "--check-tolerance expects a positive number, not '-1'"},
       {bundle + " other.simb", "more than one input"},
   };
   for (const Case &c : cases) {
@@ -277,6 +281,144 @@ TEST_F(SimRun, TranslatesMlirScenesWithSimTranslate) {
       contains(failed.output, "sim-run: error: sim-translate failed on '" +
                                   scene + "' (exit status 1)"))
       << failed.output;
+}
+
+TEST_F(SimRun, RunsTheReferenceExecutor) {
+  Result result = simRun(bundle + " --backend reference --steps 25 --set k=1 "
+                                  "--reference exact");
+  ASSERT_EQ(result.status, 0) << result.output;
+  const std::string &out = result.output;
+  EXPECT_TRUE(contains(out, "scene decay, strategy hip, backend reference: "
+                            "reference executor (CPU, 1 thread)"))
+      << out;
+  EXPECT_TRUE(contains(out, "launches         0")) << out;
+  EXPECT_TRUE(contains(out, "big steps        15")) << out;
+  EXPECT_TRUE(contains(out, "1: 9  2: 3  3: 2  4: 1")) << out;
+  EXPECT_TRUE(contains(out, "Decay 1500  Grow 1500")) << out;
+  EXPECT_TRUE(contains(out, "error vs exact   X  max-abs")) << out;
+
+  result =
+      simRun(bundle + " --backend reference --steps 40 --reference simple");
+  ASSERT_EQ(result.status, 0) << result.output;
+  EXPECT_TRUE(contains(result.output, "error vs simple  V  max-abs 1.900e+01"))
+      << result.output;
+
+  std::string old = dir + "/old.simb";
+  writeFile(old, decayBundle(false, false));
+  result = simRun(old + " --backend reference");
+  EXPECT_EQ(result.status, 1);
+  EXPECT_TRUE(contains(result.output, "has no reference sections (made before "
+                                      "the reference executor existed; "
+                                      "rebuild it with sim-translate "
+                                      "--sim-to-bundle)"))
+      << result.output;
+}
+
+TEST_F(SimRun, ChecksAgainstTheReferenceExecutor) {
+  std::string out = dir + "/check";
+  std::string json = dir + "/check.json";
+  Result result = simRun(bundle +
+                         " --backend cpu --steps 25 --check "
+                         "--dump " +
+                         out + " --json " + json);
+  ASSERT_EQ(result.status, 0) << result.output;
+  const std::string &text = result.output;
+  for (const char *line :
+       {"\ncheck against the reference executor (strategy hip, group size "
+        "32, 25 base steps):\n",
+        "\n  buffer X  max-abs 0.000e+00  max-ref 1.201e+00  rms-rel "
+        "0.000e+00  tolerance 1.0e-10  pass\n",
+        "\n  buffer V  max-abs 0.000e+00  max-ref 9.900e+01  rms-rel "
+        "0.000e+00  tolerance 1.0e-04  pass\n",
+        "\n  evaluations Decay  backend 1500  reference 1500  equal\n",
+        "\n  evaluations Grow  backend 1500  reference 1500  equal\n",
+        "\n  big steps  backend 15  reference 15  equal\n",
+        "\n  big-step size 1  backend 9  reference 9  equal\n",
+        "\n  big-step size 4  backend 1  reference 1  equal\n",
+        "\ncheck: pass\n"})
+    EXPECT_TRUE(contains(text, line)) << line << "\n" << text;
+  EXPECT_TRUE(contains(readFile(out + "/X.check.npy"), "'shape': (100,)"));
+  std::string metrics = readFile(json);
+  for (const char *field :
+       {"\"check\": {\n    \"strategy\": \"hip\",\n    \"group_size\": "
+        "32,\n    \"steps\": 25,\n    \"pass\": true,",
+        "\"buffers\": {\"X\": {\"max_abs\": 0, \"max_reference\": "
+        "1.20089481, \"rms_rel\": 0, \"tolerance\": 1e-10, \"limit\": "
+        "1.20089481e-10, \"pass\": true}, \"V\": {",
+        "\"evaluations\": {\"backend\": {\"Decay\": 1500, \"Grow\": 1500}, "
+        "\"reference\": {\"Decay\": 1500, \"Grow\": 1500}, \"equal\": true}",
+        "\"big_steps\": {\"backend\": 15, \"reference\": 15, \"equal\": "
+        "true}",
+        "\"big_step_histogram\": {\"backend\": {\"1\": 9, \"2\": 3, \"3\": 2, "
+        "\"4\": 1}, \"reference\": {\"1\": 9, ",
+        "\"failures\": []"})
+    EXPECT_TRUE(contains(metrics, field)) << field << "\n" << metrics;
+  // Without --check the JSON says so.
+  ASSERT_EQ(simRun(bundle + " --backend cpu --steps 2 --json " + json).status,
+            0);
+  EXPECT_TRUE(contains(readFile(json), "\"check\": null"));
+}
+
+TEST_F(SimRun, FailsTheCheckOnDifferentValues) {
+  // A reference object that adds 1e-6 to item 3 in every evaluation.
+  std::vector<Section> sections = decaySections();
+  for (Section &section :
+       decayReferenceSections(SIM_TEST_DECAY_REFERENCE_WRONG_SO))
+    sections.push_back(section);
+  std::string wrong = dir + "/wrong.simb";
+  writeFile(wrong, writeBundle(sections));
+  std::string json = dir + "/wrong.json";
+  Result result = simRun(wrong +
+                         " --backend cpu --strategy simple --steps 25 "
+                         "--check --json " +
+                         json);
+  EXPECT_EQ(result.status, 1) << result.output;
+  EXPECT_TRUE(contains(result.output, "  buffer X  max-abs 1.983e-05  max-ref "
+                                      "1.201e+00  rms-rel 2.158e-06  tolerance "
+                                      "1.0e-10  FAIL\n"))
+      << result.output;
+  EXPECT_TRUE(contains(result.output,
+                       "\ncheck: FAIL: buffer X exceeds the tolerance (max-abs "
+                       "1.983e-05 > 1.201e-10)\n"))
+      << result.output;
+  std::string metrics = readFile(json);
+  EXPECT_TRUE(contains(metrics, "\"pass\": false")) << metrics;
+  EXPECT_TRUE(contains(metrics, "\"failures\": [\"buffer X exceeds the "
+                                "tolerance (max-abs 1.983e-05 > 1.201e-10)\"]"))
+      << metrics;
+
+  // A looser tolerance lets it pass.
+  result = simRun(wrong + " --backend cpu --strategy simple --steps 25 "
+                          "--check --check-tolerance 1e-4");
+  EXPECT_EQ(result.status, 0) << result.output;
+  EXPECT_TRUE(contains(result.output, "tolerance 1.0e-04  pass"))
+      << result.output;
+}
+
+TEST_F(SimRun, FailsTheCheckOnDifferentWork) {
+  // Without num_steps in the model Decay bounds nothing: the reference
+  // takes big steps of max_steps, fewer than the plan.
+  std::vector<Section> sections = decaySections();
+  std::vector<Section> reference = decayReferenceSections();
+  std::string model = reference[0].bytes;
+  model.replace(model.find(" num_steps"), 10, "");
+  reference[0].bytes = model;
+  sections.insert(sections.end(), reference.begin(), reference.end());
+  std::string unbounded = dir + "/unbounded.simb";
+  writeFile(unbounded, writeBundle(sections));
+  Result result = simRun(unbounded + " --backend cpu --steps 25 --check");
+  EXPECT_EQ(result.status, 1) << result.output;
+  for (const char *line :
+       {"  evaluations Decay  backend 1500  reference 700  DIFFER\n",
+        "  big steps  backend 15  reference 7  DIFFER\n",
+        "  big-step size 4  backend 1  reference 6  DIFFER\n",
+        "check: FAIL: buffer V exceeds the tolerance (max-abs 8.000e+00 > "
+        "9.900e-03); evaluations of Decay differ (1500 vs 700); evaluations "
+        "of Grow differ (1500 vs 700); big steps differ (15 vs 7); big steps "
+        "of size 1 differ (9 vs 1); big steps of size 2 differ (3 vs 0); big "
+        "steps of size 3 differ (2 vs 0); big steps of size 4 differ (1 vs "
+        "6)\n"})
+    EXPECT_TRUE(contains(result.output, line)) << line << "\n" << result.output;
 }
 
 TEST(Dependencies, NoMlirLlvmOrCuda) {

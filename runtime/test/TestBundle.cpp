@@ -115,7 +115,86 @@ std::vector<Section> decaySections(bool ptx) {
   return sections;
 }
 
-std::string decayBundle(bool ptx) { return writeBundle(decaySections(ptx)); }
+std::string decayReferenceModel() {
+  return "# kernels/decay_reference.c\n"
+         "reference decay\n"
+         "param 0 k f64\n"
+         "param 1 poison i32\n"
+         "buffer 0 X f64 interp linear boundary clamp observed exact\n"
+         "buffer 1 V vector<3xf32> interp none boundary clamp observed\n"
+         "component 0 Decay substep in_kernel num_steps writes X reads X V\n"
+         "component 1 Grow substep in_kernel writes V reads V\n"
+         "schedule Decay Grow\n";
+}
+
+std::vector<Section> decayReferenceSections(const std::string &object) {
+  return {{kReferenceModel, kNoStrategy, decayReferenceModel()},
+          {kReferenceObject, kNoStrategy, readFile(object)}};
+}
+
+std::string decayBundle(bool ptx, bool reference) {
+  std::vector<Section> sections = decaySections(ptx);
+  if (reference)
+    for (Section &section : decayReferenceSections())
+      sections.push_back(std::move(section));
+  return writeBundle(sections);
+}
+
+std::string probeScene() {
+  return "scene probe range 4 dt f64 0.5 max_steps 4\n"
+         "param cycle i32 0\n"
+         "param read_none i32 0\n"
+         "buffer D f64 interp linear boundary clamp\n"
+         "buffer A f64 interp linear boundary clamp observed\n"
+         "buffer C f64 interp cubic boundary wrap observed\n"
+         "buffer H f64 interp hermite:D boundary zero observed\n"
+         "buffer N f64 interp none boundary clamp\n"
+         "buffer L f64 interp linear boundary clamp\n"
+         "buffer RA vector<4xf64> interp linear boundary clamp observed\n"
+         "buffer RC vector<4xf64> interp linear boundary clamp observed\n"
+         "buffer RH vector<4xf64> interp linear boundary clamp observed\n"
+         "buffer E vector<6xf64> interp linear boundary clamp observed\n"
+         "strategies hip\n";
+}
+
+std::string probeModel() {
+  return "reference probe\n"
+         "param 0 cycle i32\n"
+         "param 1 read_none i32\n"
+         "buffer 0 D f64 interp linear boundary clamp\n"
+         "buffer 1 A f64 interp linear boundary clamp observed\n"
+         "buffer 2 C f64 interp cubic boundary wrap observed\n"
+         "buffer 3 H f64 interp hermite:D boundary zero observed\n"
+         "buffer 4 N f64 interp none boundary clamp\n"
+         "buffer 5 L f64 interp linear boundary clamp\n"
+         "buffer 6 RA vector<4xf64> interp linear boundary clamp observed\n"
+         "buffer 7 RC vector<4xf64> interp linear boundary clamp observed\n"
+         "buffer 8 RH vector<4xf64> interp linear boundary clamp observed\n"
+         "buffer 9 E vector<6xf64> interp linear boundary clamp observed\n"
+         "component 0 Source substep in_kernel writes D A C H N reads\n"
+         "component 1 Sink substep in_kernel num_steps writes RA RC RH "
+         "reads A C H N RA RC RH\n"
+         "component 2 Edge substep in_kernel writes E L reads A C H\n"
+         "schedule Source Sink Edge\n";
+}
+
+std::string probeBundle(const std::string &model) {
+  // The plan only gives the group size (2: two groups of two items); its
+  // kernels exist nowhere, and the reference executor needs none.
+  std::string plan = "plan hip group_size 2 clock_slots 16 histogram 10\n"
+                     "buffer A f64 stride 8 observed\n"
+                     "component Source evaluations 8 writes A\n"
+                     "phase init\nend\n"
+                     "phase step\n"
+                     "launch none single for - shared 0 0 args clock\n"
+                     "end\n"
+                     "phase finish\nend\n";
+  return writeBundle(
+      {{kScene, kNoStrategy, probeScene()},
+       {kPlan, kHip, plan},
+       {kReferenceModel, kNoStrategy, model},
+       {kReferenceObject, kNoStrategy, readFile(SIM_TEST_PROBE_REFERENCE_SO)}});
+}
 
 std::vector<int64_t> decayBigSteps(int64_t begin, int64_t steps, int64_t cap) {
   std::vector<int64_t> sizes;

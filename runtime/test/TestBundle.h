@@ -17,12 +17,13 @@
 namespace sim::test {
 
 struct Section {
-  uint32_t kind;     // 1 scene, 2 plan, 3 PTX, 4 CPU
-  uint32_t strategy; // 0..3, 0xffffffff for the scene
+  uint32_t kind;     // 1 scene, 2 plan, 3 PTX, 4 CPU, 5, 6 reference
+  uint32_t strategy; // 0..3, 0xffffffff for the scene and reference
   std::string bytes;
 };
 
 constexpr uint32_t kScene = 1, kPlan = 2, kPtx = 3, kCpu = 4;
+constexpr uint32_t kReferenceModel = 5, kReferenceObject = 6;
 constexpr uint32_t kNoStrategy = 0xffffffffu;
 constexpr uint32_t kSimple = 0, kTraditional = 1, kHip = 2, kHipCache = 3;
 
@@ -43,7 +44,21 @@ std::string decayPlan(uint32_t strategy);
 /// `ptx`, a PTX section per strategy too (a placeholder text: enough for
 /// the tests that never reach a driver).
 std::vector<Section> decaySections(bool ptx = false);
-std::string decayBundle(bool ptx = false);
+
+/// The decay scene's reference model (kernels/decay_reference.c), and its
+/// two sections with the object at `object` (default: the right one).
+std::string decayReferenceModel();
+std::vector<Section>
+decayReferenceSections(const std::string &object = SIM_TEST_DECAY_REFERENCE_SO);
+/// decaySections(ptx) and, with `reference`, decayReferenceSections().
+std::string decayBundle(bool ptx = false, bool reference = true);
+
+/// The "probe" scene of kernels/probe_reference.c: its scene text, a hip
+/// plan without kernels (the reference executor needs none), its model,
+/// and a bundle of them.
+std::string probeScene();
+std::string probeModel();
+std::string probeBundle(const std::string &model = probeModel());
 
 /// The reference of the decay scene: the big-step sizes the hip plan takes
 /// from T to T + steps (num_steps(T) = 1 + (T / 5) % 4, capped at 4).

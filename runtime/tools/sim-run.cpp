@@ -5,7 +5,9 @@
 // CUDA or the CPU, and reports wall and kernel time, launches, host
 // synchronisations, evaluations per component, the big steps taken and,
 // with --reference, the error against the simple strategy or the exact
-// solution. It uses only the C API of sim_runtime.h, like any other client.
+// solution. With --check it runs the reference executor too and compares
+// values, evaluations and big steps. It uses only the C API of
+// sim_runtime.h, like any other client.
 //
 //===----------------------------------------------------------------------===//
 
@@ -40,8 +42,9 @@ A .mlir scene is first translated with `sim-translate --sim-to-bundle`
 (looked up next to sim-run, then on PATH).
 
 OPTIONS:
-  --backend auto|cpu|cuda     where to run (default auto: CUDA when a driver,
-                              a device and the strategy's PTX are there)
+  --backend B                 auto, cpu, cuda or reference (default auto: CUDA
+                              when a driver, a device and the strategy's PTX
+                              are there; reference: the reference executor)
   --strategy S                simple, traditional, hip or hip-cache (default hip)
   --steps N                   base steps to run (default 100)
   --repeat K                  run K times from the initial state and report the
@@ -54,8 +57,16 @@ OPTIONS:
                               or evaluate the scene's exact solution at the
                               final time, and report per observed buffer the
                               max-abs and the RMS-relative error
+  --check                     also run the reference executor with the same
+                              strategy, group size, --set values and steps,
+                              and compare per observed buffer, evaluations
+                              and big steps; exit status 1 if they disagree
+  --check-tolerance X         a buffer passes --check when max-abs <= X *
+                              max(1, max|reference|) (default 1e-4 for f32
+                              buffers, 1e-10 for f64)
   --dump DIR                  write the observed buffers as DIR/<buffer>.npy
-                              (and the reference as <buffer>.reference.npy)
+                              (and the reference as <buffer>.reference.npy,
+                              --check's as <buffer>.check.npy)
   --json FILE                 write every metric as JSON
   --check-finite              run launch by launch and stop at the first NaN
                               or infinity, naming base step, component and item
@@ -67,7 +78,8 @@ OPTIONS:
 ENVIRONMENT:
   SIM_CUDA_DRIVER             the driver library to load instead of libcuda.so.1
 
-EXIT STATUS: 0 on success, 1 when the run fails, 2 on a usage error.
+EXIT STATUS: 0 on success, 1 when the run fails or --check finds a
+difference, 2 on a usage error.
 )";
 
 struct Options {
@@ -79,6 +91,9 @@ struct Options {
   std::vector<std::pair<std::string, std::string>> sets;
   int64_t groupSize = 0;
   std::string reference;
+  bool check = false;
+  /// --check-tolerance; 0: by scalar type.
+  double checkTolerance = 0;
   std::string dump;
   std::string json;
   bool checkFinite = false;
@@ -176,6 +191,17 @@ Options parseOptions(int argc, char **argv) {
       if (options.reference != "simple" && options.reference != "exact")
         usageError("--reference expects simple or exact, not '" +
                    options.reference + "'");
+    } else if (name == "--check") {
+      flag();
+      options.check = true;
+    } else if (name == "--check-tolerance") {
+      std::string text = takeValue();
+      char *end = nullptr;
+      options.checkTolerance = std::strtod(text.c_str(), &end);
+      if (text.empty() || *end || !(options.checkTolerance > 0) ||
+          !std::isfinite(options.checkTolerance))
+        usageError("--check-tolerance expects a positive number, not '" + text +
+                   "'");
     } else if (name == "--dump") {
       options.dump = takeValue();
     } else if (name == "--json") {
@@ -196,6 +222,8 @@ Options parseOptions(int argc, char **argv) {
   }
   if (options.input.empty())
     usageError("no input scene");
+  if (options.checkTolerance > 0 && !options.check)
+    usageError("--check-tolerance needs --check");
   return options;
 }
 
@@ -458,6 +486,116 @@ double median(std::vector<double> values) {
 }
 
 //===----------------------------------------------------------------------===//
+// --check
+//===----------------------------------------------------------------------===//
+
+/// What one session counted in its last run.
+struct Work {
+  std::vector<std::pair<std::string, int64_t>> evaluations;
+  int64_t bigSteps = 0;
+  std::vector<int64_t> histogram; // index m in 0 .. max_steps
+};
+
+Work workOf(sim_session *session, int64_t maxSteps) {
+  Work work;
+  for (int32_t c = 0; c < sim_session_num_components(session); ++c)
+    work.evaluations.emplace_back(sim_session_component(session, c),
+                                  sim_session_evaluations(session, c));
+  sim_metrics metrics;
+  check(sim_session_metrics(session, &metrics));
+  work.bigSteps = metrics.big_steps;
+  work.histogram.assign(size_t(maxSteps) + 1, 0);
+  for (int64_t m = 1; m <= maxSteps; ++m)
+    work.histogram[size_t(m)] = sim_session_histogram(session, m);
+  return work;
+}
+
+/// The run against the reference executor's.
+struct Check {
+  struct BufferRow {
+    std::string buffer;
+    ErrorNorms norms;
+    double maxReference = 0, tolerance = 0, limit = 0;
+    bool pass = false;
+  };
+  std::vector<BufferRow> buffers;
+  struct CountRow {
+    std::string component;
+    /// -1: the side has no such component.
+    int64_t backend = -1, reference = -1;
+  };
+  std::vector<CountRow> evaluations;
+  Work backend, reference;
+  /// What differs, in words; empty when the check passes.
+  std::vector<std::string> failures;
+};
+
+std::string scientific(double value, int digits = 3) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.*e", digits, value);
+  return text;
+}
+
+Check compareWithReference(const std::vector<Buffer> &results,
+                           const std::vector<Buffer> &references,
+                           const Work &backend, const Work &reference,
+                           double tolerance) {
+  Check check;
+  check.backend = backend;
+  check.reference = reference;
+  for (size_t i = 0; i < results.size(); ++i) {
+    Check::BufferRow row;
+    row.buffer = results[i].info.name;
+    row.norms = compare(results[i], references[i]);
+    for (size_t v = 0; v < references[i].values(); ++v)
+      row.maxReference =
+          std::max(row.maxReference, std::fabs(references[i].at(v)));
+    row.tolerance = tolerance > 0                       ? tolerance
+                    : results[i].info.scalar_bytes == 8 ? 1e-10
+                                                        : 1e-4;
+    row.limit = row.tolerance * std::max(1.0, row.maxReference);
+    // A NaN difference compares false: it fails.
+    row.pass = row.norms.maxAbs <= row.limit;
+    if (!row.pass)
+      check.failures.push_back(
+          "buffer " + row.buffer + " exceeds the tolerance (max-abs " +
+          scientific(row.norms.maxAbs) + " > " + scientific(row.limit) + ")");
+    check.buffers.push_back(row);
+  }
+  for (const auto &[name, count] : backend.evaluations)
+    check.evaluations.push_back({name, count, -1});
+  for (const auto &entry : reference.evaluations) {
+    auto row = std::find_if(check.evaluations.begin(), check.evaluations.end(),
+                            [&](const Check::CountRow &row) {
+                              return row.component == entry.first;
+                            });
+    if (row == check.evaluations.end())
+      check.evaluations.push_back({entry.first, -1, entry.second});
+    else
+      row->reference = entry.second;
+  }
+  auto count = [](int64_t value) {
+    return value < 0 ? std::string("-") : std::to_string(value);
+  };
+  for (const Check::CountRow &row : check.evaluations)
+    if (row.backend != row.reference)
+      check.failures.push_back("evaluations of " + row.component + " differ (" +
+                               count(row.backend) + " vs " +
+                               count(row.reference) + ")");
+  if (backend.bigSteps != reference.bigSteps)
+    check.failures.push_back("big steps differ (" +
+                             std::to_string(backend.bigSteps) + " vs " +
+                             std::to_string(reference.bigSteps) + ")");
+  for (size_t m = 1; m < backend.histogram.size(); ++m)
+    if (backend.histogram[m] != reference.histogram[m])
+      check.failures.push_back("big steps of size " + std::to_string(m) +
+                               " differ (" +
+                               std::to_string(backend.histogram[m]) + " vs " +
+                               std::to_string(reference.histogram[m]) + ")");
+  return check;
+}
+
+//===----------------------------------------------------------------------===//
 // Progress
 //===----------------------------------------------------------------------===//
 
@@ -628,6 +766,27 @@ int run(const Options &options) {
           {observed[i].name, references[i].has_value(),
            references[i] ? compare(results[i], *references[i]) : ErrorNorms{}});
 
+  // --check: the same run on the reference executor.
+  std::optional<Check> checked;
+  std::vector<Buffer> checkValues;
+  if (options.check) {
+    sim_session_options referenceOptions = sessionOptions;
+    referenceOptions.backend = SIM_BACKEND_REFERENCE;
+    referenceOptions.group_size = sim_session_group_size(session.handle);
+    referenceOptions.cuda_graph = 0;
+    Session reference;
+    check(sim_session_create(bundle.handle, &referenceOptions,
+                             &reference.handle));
+    applySets(reference.handle, options);
+    runFromStart(reference.handle, options, progress, "check: ");
+    for (const sim_buffer_info &info : observed)
+      checkValues.push_back(readBuffer(reference.handle, info, false));
+    int64_t maxSteps = sim_bundle_max_steps(bundle.handle);
+    checked = compareWithReference(
+        results, checkValues, workOf(session.handle, maxSteps),
+        workOf(reference.handle, maxSteps), options.checkTolerance);
+  }
+
   if (!options.dump.empty()) {
     makeDirectory(options.dump);
     for (size_t i = 0; i < observed.size(); ++i) {
@@ -637,6 +796,9 @@ int run(const Options &options) {
       if (references[i])
         writeAtomically(base + ".reference.npy",
                         npy(*references[i], sim_session_range(session.handle)));
+      if (checked)
+        writeAtomically(base + ".check.npy",
+                        npy(checkValues[i], sim_session_range(session.handle)));
     }
   }
 
@@ -693,6 +855,48 @@ int run(const Options &options) {
     row(label.c_str(), text);
   }
 
+  if (checked) {
+    std::printf("\ncheck against the reference executor (strategy %s, group "
+                "size %lld, %lld base steps):\n",
+                sim_strategy_name(options.strategy),
+                (long long)sim_session_group_size(session.handle),
+                (long long)options.steps);
+    for (const Check::BufferRow &buffer : checked->buffers)
+      std::printf("  buffer %s  max-abs %.3e  max-ref %.3e  rms-rel %.3e  "
+                  "tolerance %.1e  %s\n",
+                  buffer.buffer.c_str(), buffer.norms.maxAbs,
+                  buffer.maxReference, buffer.norms.rmsRel, buffer.tolerance,
+                  buffer.pass ? "pass" : "FAIL");
+    auto text = [](int64_t count) {
+      return count < 0 ? std::string("-") : std::to_string(count);
+    };
+    auto same = [](bool equal) { return equal ? "equal" : "DIFFER"; };
+    for (const Check::CountRow &row : checked->evaluations)
+      std::printf("  evaluations %s  backend %s  reference %s  %s\n",
+                  row.component.c_str(), text(row.backend).c_str(),
+                  text(row.reference).c_str(),
+                  same(row.backend == row.reference));
+    std::printf("  big steps  backend %lld  reference %lld  %s\n",
+                (long long)checked->backend.bigSteps,
+                (long long)checked->reference.bigSteps,
+                same(checked->backend.bigSteps == checked->reference.bigSteps));
+    for (size_t m = 1; m < checked->backend.histogram.size(); ++m) {
+      int64_t mine = checked->backend.histogram[m];
+      int64_t theirs = checked->reference.histogram[m];
+      if (mine || theirs)
+        std::printf("  big-step size %zu  backend %lld  reference %lld  %s\n",
+                    m, (long long)mine, (long long)theirs,
+                    same(mine == theirs));
+    }
+    std::string verdict = "pass";
+    if (!checked->failures.empty()) {
+      verdict = "FAIL: ";
+      for (size_t i = 0; i < checked->failures.size(); ++i)
+        verdict += (i ? "; " : "") + checked->failures[i];
+    }
+    std::printf("check: %s\n", verdict.c_str());
+  }
+
   if (!options.json.empty()) {
     std::ostringstream json;
     json << "{\n";
@@ -743,10 +947,73 @@ int run(const Options &options) {
            << ", \"rms_rel\": " << jsonNumber(comparison.norms.rmsRel) << "}";
       first = false;
     }
-    json << "}\n}\n";
+    json << "},\n  \"check\": ";
+    if (!checked) {
+      json << "null";
+    } else {
+      auto counts = [&](const Work &work) {
+        std::ostringstream out;
+        out << "{";
+        for (size_t c = 0; c < work.evaluations.size(); ++c)
+          out << (c ? ", " : "") << jsonString(work.evaluations[c].first)
+              << ": " << work.evaluations[c].second;
+        out << "}";
+        return out.str();
+      };
+      auto sizes = [&](const Work &work) {
+        std::ostringstream out;
+        out << "{";
+        for (size_t m = 1; m < work.histogram.size(); ++m)
+          out << (m > 1 ? ", " : "") << "\"" << m
+              << "\": " << work.histogram[m];
+        out << "}";
+        return out.str();
+      };
+      bool evaluationsEqual = true;
+      for (const Check::CountRow &row : checked->evaluations)
+        evaluationsEqual &= row.backend == row.reference;
+      auto boolean = [](bool value) { return value ? "true" : "false"; };
+      json << "{\n    \"strategy\": "
+           << jsonString(sim_strategy_name(options.strategy))
+           << ",\n    \"group_size\": "
+           << sim_session_group_size(session.handle)
+           << ",\n    \"steps\": " << options.steps
+           << ",\n    \"pass\": " << boolean(checked->failures.empty())
+           << ",\n    \"buffers\": {";
+      for (size_t i = 0; i < checked->buffers.size(); ++i) {
+        const Check::BufferRow &row = checked->buffers[i];
+        json << (i ? ", " : "") << jsonString(row.buffer)
+             << ": {\"max_abs\": " << jsonNumber(row.norms.maxAbs)
+             << ", \"max_reference\": " << jsonNumber(row.maxReference)
+             << ", \"rms_rel\": " << jsonNumber(row.norms.rmsRel)
+             << ", \"tolerance\": " << jsonNumber(row.tolerance)
+             << ", \"limit\": " << jsonNumber(row.limit)
+             << ", \"pass\": " << boolean(row.pass) << "}";
+      }
+      json << "},\n    \"evaluations\": {\"backend\": "
+           << counts(checked->backend)
+           << ", \"reference\": " << counts(checked->reference)
+           << ", \"equal\": " << boolean(evaluationsEqual)
+           << "},\n    \"big_steps\": {\"backend\": "
+           << checked->backend.bigSteps
+           << ", \"reference\": " << checked->reference.bigSteps
+           << ", \"equal\": "
+           << boolean(checked->backend.bigSteps == checked->reference.bigSteps)
+           << "},\n    \"big_step_histogram\": {\"backend\": "
+           << sizes(checked->backend)
+           << ", \"reference\": " << sizes(checked->reference)
+           << ", \"equal\": "
+           << boolean(checked->backend.histogram ==
+                      checked->reference.histogram)
+           << "},\n    \"failures\": [";
+      for (size_t i = 0; i < checked->failures.size(); ++i)
+        json << (i ? ", " : "") << jsonString(checked->failures[i]);
+      json << "]\n  }";
+    }
+    json << "\n}\n";
     writeAtomically(options.json, json.str());
   }
-  return 0;
+  return checked && !checked->failures.empty() ? 1 : 0;
 }
 
 } // namespace

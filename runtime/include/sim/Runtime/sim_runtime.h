@@ -74,12 +74,17 @@ typedef enum sim_backend {
   SIM_BACKEND_AUTO = 0,
   SIM_BACKEND_CPU = 1,
   SIM_BACKEND_CUDA = 2,
+  /// The reference executor (docs/Reference.md): the bundle's per-body
+  /// reference functions run item by item on the host, with big steps and
+  /// sub-steps decided by plain C++. The oracle for the other backends;
+  /// `auto` never chooses it.
+  SIM_BACKEND_REFERENCE = 3,
 } sim_backend;
 
 /// "simple", "traditional", "hip", "hip-cache".
 SIM_API const char *sim_strategy_name(sim_strategy strategy);
 SIM_API sim_status sim_strategy_parse(const char *name, sim_strategy *out);
-/// "auto", "cpu", "cuda".
+/// "auto", "cpu", "cuda", "reference".
 SIM_API const char *sim_backend_name(sim_backend backend);
 SIM_API sim_status sim_backend_parse(const char *name, sim_backend *out);
 
@@ -110,6 +115,9 @@ SIM_API int sim_bundle_has_strategy(const sim_bundle *bundle,
                                     sim_strategy strategy);
 SIM_API int sim_bundle_has_ptx(const sim_bundle *bundle, sim_strategy strategy);
 SIM_API int sim_bundle_has_cpu(const sim_bundle *bundle, sim_strategy strategy);
+/// Whether the bundle holds the reference model and functions (sections 5
+/// and 6) that SIM_BACKEND_REFERENCE runs.
+SIM_API int sim_bundle_has_reference(const sim_bundle *bundle);
 
 typedef struct sim_buffer_info {
   const char *name;
@@ -157,7 +165,7 @@ typedef struct sim_session_options {
   sim_strategy strategy;
   sim_backend backend;
   /// Threads per group; 0: the plan's group_size. A multiple of 32 on
-  /// CUDA.
+  /// CUDA. The reference executor sub-steps groups of this size.
   int64_t group_size;
   /// CPU worker threads; 0: one per hardware thread.
   int32_t cpu_threads;
@@ -182,7 +190,8 @@ SIM_API void sim_session_destroy(sim_session *session);
 
 /// The backend that runs the session (never SIM_BACKEND_AUTO).
 SIM_API sim_backend sim_session_backend(const sim_session *session);
-/// The device, e.g. "NVIDIA H100 (sm_90)" or "CPU (8 threads)".
+/// The device, e.g. "NVIDIA H100 (sm_90)", "CPU (8 threads)" or
+/// "reference executor (CPU, 1 thread)".
 SIM_API const char *sim_session_device(const sim_session *session);
 /// Why `auto` chose the CPU (empty when it did not).
 SIM_API const char *sim_session_backend_note(const sim_session *session);
@@ -255,7 +264,8 @@ SIM_API sim_status sim_session_run(sim_session *session, int64_t steps);
 SIM_API sim_status sim_session_metrics(const sim_session *session,
                                        sim_metrics *out);
 
-/// The components of the plan, for the counters below.
+/// The components of the plan (of the reference model for
+/// SIM_BACKEND_REFERENCE: the same names), for the counters below.
 SIM_API int32_t sim_session_num_components(const sim_session *session);
 SIM_API const char *sim_session_component(const sim_session *session,
                                           int32_t index);

@@ -1,0 +1,115 @@
+//===- Executor.h - what the C API runs: a session of a bundle ----*- C++
+//-*-===//
+//
+// Two kinds of session sit behind a sim_session: the plan executor
+// (Session.h), which runs a strategy's plan on CUDA or the CPU, and the
+// reference executor (Reference.h), which runs the per-body reference
+// functions with plain C++ semantics. The C API sees only this interface,
+// and both share the handling of range, dt and the scene parameters
+// (Settings).
+//
+//===----------------------------------------------------------------------===//
+
+#ifndef SIM_RUNTIME_EXECUTOR_H
+#define SIM_RUNTIME_EXECUTOR_H
+
+#include "Bundle.h"
+#include "sim/Runtime/sim_runtime.h"
+
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace sim::rt {
+
+/// `range`, `dt` and the scene's parameters, set and read as text.
+class Settings {
+public:
+  explicit Settings(const Scene &scene);
+
+  /// Sets `name` from `text`. `checkRange` is called with a new range
+  /// before it is taken and throws if the state would not fit. Returns
+  /// whether the range changed (the caller discards its state then).
+  bool set(const std::string &name, const std::string &text,
+           const std::function<void(int64_t)> &checkRange);
+  std::string get(const std::string &name) const;
+
+  /// dt as the bodies compute with it: an f32 dt rounded to float first.
+  double dtValue() const {
+    return dt.type == ScalarType::F32 ? double(float(dt.f)) : dt.f;
+  }
+
+  const Scene *scene;
+  int64_t range;
+  Value dt;
+  std::vector<Value> params;
+};
+
+/// Comma-separated names, "none" for none.
+std::string listNames(const std::vector<std::string> &names);
+
+class Executor {
+public:
+  virtual ~Executor() = default;
+
+  virtual const Scene &scene() const = 0;
+  virtual sim_backend backendKind() const = 0;
+  virtual const std::string &device() const = 0;
+  /// Why `auto` did not choose CUDA (empty otherwise).
+  virtual const std::string &backendNote() const = 0;
+  virtual int64_t groupSize() const = 0;
+  virtual int64_t range() const = 0;
+
+  virtual void set(const std::string &name, const std::string &value) = 0;
+  virtual std::string get(const std::string &name) const = 0;
+
+  /// Discards the state and computes the initial one (base step 0).
+  virtual void init() = 0;
+  /// The current base step T.
+  virtual int64_t time() const = 0;
+
+  /// Host arrays hold `range` items of `lanes` packed scalars.
+  virtual size_t hostBytes(const std::string &buffer) const = 0;
+  virtual void getBuffer(const std::string &buffer, void *data,
+                         size_t bytes) = 0;
+  virtual void setBuffer(const std::string &buffer, const void *data,
+                         size_t bytes) = 0;
+  virtual bool hasExact(const std::string &buffer) const = 0;
+  /// The exact solution at time T * dt.
+  virtual void exact(const std::string &buffer, void *data, size_t bytes) = 0;
+
+  /// Runs `steps` base steps; the run ends exactly at T + steps or throws.
+  virtual void run(int64_t steps) = 0;
+
+  /// The components the evaluation counters are for.
+  virtual size_t numComponents() const = 0;
+  virtual const std::string &componentName(size_t index) const = 0;
+
+  void setProgress(sim_progress_fn fn, void *user) {
+    progress = fn;
+    progressUser = user;
+  }
+
+  /// The last run's measurements.
+  sim_metrics metrics{};
+  std::vector<int64_t> evaluations; // per component
+  std::vector<int64_t> histogram;   // index m in 0 .. max_steps
+
+  /// Where the last run found a non-finite value.
+  struct NonFinite {
+    bool found = false;
+    int64_t baseStep = 0;
+    std::string component, buffer, kernel;
+    int64_t item = 0;
+    int32_t lane = 0;
+    double value = 0;
+  } nonFinite;
+
+protected:
+  sim_progress_fn progress = nullptr;
+  void *progressUser = nullptr;
+};
+
+} // namespace sim::rt
+
+#endif // SIM_RUNTIME_EXECUTOR_H

@@ -1,0 +1,669 @@
+//===- Reference.cpp - the reference executor -----------------------------===//
+//
+// docs/Reference.md, "What the executor does", literally. Deliberately
+// simple: one thread, one item at a time, every value copied, every rule
+// spelled out where it applies. Speed does not matter here; being obviously
+// right does.
+//
+//===----------------------------------------------------------------------===//
+
+#include "Reference.h"
+#include "Error.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstring>
+#include <limits>
+
+namespace sim::rt {
+
+namespace {
+
+/// Largest number of bytes the four copies of one buffer may take.
+constexpr int64_t kMaxBufferBytes = int64_t(1) << 50;
+
+enum : uint8_t { kNotComputed = 0, kComputing = 1, kComputed = 2 };
+
+template <typename S> S lane(const uint8_t *element, int32_t index) {
+  S value;
+  std::memcpy(&value, element + size_t(index) * sizeof(S), sizeof(S));
+  return value;
+}
+
+/// The interpolation table of docs/Reference.md, lane by lane in the
+/// element's scalar type S. `va`, `vb` are only used by hermite.
+template <typename S>
+void interpolateLanes(Interp interp, int32_t lanes, S f, S h, const uint8_t *a,
+                      const uint8_t *b, const uint8_t *va, const uint8_t *vb,
+                      uint8_t *out) {
+  for (int32_t l = 0; l < lanes; ++l) {
+    S av = lane<S>(a, l), bv = lane<S>(b, l);
+    S value;
+    switch (interp) {
+    case Interp::Linear:
+      value = (1 - f) * av + f * bv;
+      break;
+    case Interp::Cubic: {
+      S s = f * f * (3 - 2 * f);
+      value = (1 - s) * av + s * bv;
+      break;
+    }
+    case Interp::Hermite: {
+      S dva = lane<S>(va, l), dvb = lane<S>(vb, l);
+      value = (1 + 2 * f) * (1 - f) * (1 - f) * av +
+              f * (1 - f) * (1 - f) * h * dva + f * f * (3 - 2 * f) * bv +
+              f * f * (f - 1) * h * dvb;
+      break;
+    }
+    case Interp::None:
+      // The caller reports the read; there is no value to give.
+      value = 0;
+      break;
+    }
+    std::memcpy(out + size_t(l) * sizeof(S), &value, sizeof(S));
+  }
+}
+
+} // namespace
+
+ReferenceSession::ReferenceSession(std::shared_ptr<const Bundle> bundleIn,
+                                   const sim_session_options &options)
+    : bundle(std::move(bundleIn)), settings(bundle->scene) {
+  if (!bundle->reference)
+    fail(SIM_ERROR_BUNDLE,
+         "bundle '" + bundle->name +
+             "' has no reference sections (made before the reference "
+             "executor existed; rebuild it with sim-translate "
+             "--sim-to-bundle)");
+  model_ = &*bundle->reference;
+  if (uint32_t(options.strategy) >= kNumStrategies)
+    fail(SIM_ERROR_INVALID_ARGUMENT,
+         "unknown strategy " + std::to_string(int(options.strategy)));
+  strategy = Strategy(options.strategy);
+  checkFinite_ = options.check_finite;
+
+  // The group size decides the sub-steps of hip: by default the one the
+  // strategy's plan was made for, so a check compares like with like.
+  groupSize_ = options.group_size;
+  if (groupSize_ < 0)
+    fail(SIM_ERROR_INVALID_ARGUMENT,
+         "group size " + std::to_string(groupSize_) + " is not positive");
+  if (groupSize_ == 0) {
+    const Bundle::StrategyCode &code = bundle->code(strategy);
+    if (!code.present)
+      fail(SIM_ERROR_INVALID_ARGUMENT,
+           "bundle '" + bundle->name + "' has no plan for strategy '" +
+               strategyName(strategy) +
+               "' to take the group size from; give a group size");
+    groupSize_ = code.plan.groupSize;
+  }
+
+  object = std::make_unique<SharedObject>(*bundle->referenceObject,
+                                          "the reference functions");
+  auto lookUp = [&](const std::string &symbol, const std::string &body) {
+    void *address = object->find(symbol);
+    if (!address)
+      fail(SIM_ERROR_BACKEND, "the reference functions do not export " +
+                                  symbol + " (" + body + ")");
+    return address;
+  };
+  for (size_t b = 0; b < model_->buffers.size(); ++b) {
+    const RefBuffer &buffer = model_->buffers[b];
+    std::string index = std::to_string(b);
+    initFns.push_back(reinterpret_cast<InitFn>(
+        lookUp("sim_ref_init_" + index,
+               "the init body of buffer '" + buffer.name + "'")));
+    exactFns.push_back(
+        buffer.exact ? reinterpret_cast<ExactFn>(lookUp(
+                           "sim_ref_exact_" + index,
+                           "the exact body of buffer '" + buffer.name + "'"))
+                     : nullptr);
+  }
+  for (size_t c = 0; c < model_->components.size(); ++c) {
+    const RefComponent &component = model_->components[c];
+    std::string index = std::to_string(c);
+    numStepsFns.push_back(
+        component.numSteps
+            ? reinterpret_cast<NumStepsFn>(lookUp(
+                  "sim_ref_num_steps_" + index,
+                  "the num_steps body of component '" + component.name + "'"))
+            : nullptr);
+    evaluateFns.push_back(reinterpret_cast<EvaluateFn>(
+        lookUp("sim_ref_evaluate_" + index,
+               "the evaluate body of component '" + component.name + "'")));
+    bool readsLater = false;
+    for (int32_t read : component.reads) {
+      int32_t writer = model_->buffers[read].writer;
+      readsLater |= writer >= 0 &&
+                    model_->components[writer].position > component.position;
+    }
+    bounding.push_back(component.numSteps && readsLater);
+  }
+  context = {this, &ReferenceSession::readCallback,
+             &ReferenceSession::paramCallback};
+  evaluations.assign(model_->components.size(), 0);
+  histogram.assign(size_t(scene().maxSteps) + 1, 0);
+}
+
+ReferenceSession::~ReferenceSession() = default;
+
+//===----------------------------------------------------------------------===//
+// Values and host arrays
+//===----------------------------------------------------------------------===//
+
+void ReferenceSession::set(const std::string &name, const std::string &text) {
+  bool rangeChanged = settings.set(name, text, [&](int64_t range) {
+    for (const RefBuffer &buffer : model_->buffers)
+      if (range > kMaxBufferBytes / 4 / buffer.type.packedBytes())
+        fail(SIM_ERROR_INVALID_ARGUMENT,
+             "range: " + text + " items of buffer '" + buffer.name +
+                 "' would not fit in memory");
+  });
+  // The state of another size is meaningless: start over.
+  if (rangeChanged)
+    initialized = false;
+}
+
+int ReferenceSession::bufferIndex(const std::string &name) const {
+  int index = model_->findBuffer(name);
+  if (index >= 0)
+    return index;
+  std::vector<std::string> names;
+  for (const RefBuffer &buffer : model_->buffers)
+    names.push_back(buffer.name);
+  fail(SIM_ERROR_INVALID_ARGUMENT,
+       "'" + name + "' is not a buffer of the reference model (buffers: " +
+           listNames(names) + ")");
+}
+
+size_t ReferenceSession::hostBytes(const std::string &name) const {
+  return size_t(settings.range) * packed(bufferIndex(name));
+}
+
+namespace {
+
+void checkBytes(size_t given, size_t expected, const std::string &buffer) {
+  if (given != expected)
+    fail(SIM_ERROR_INVALID_ARGUMENT,
+         "a host array of buffer '" + buffer + "' takes " +
+             std::to_string(expected) + " bytes, not " + std::to_string(given));
+}
+
+} // namespace
+
+void ReferenceSession::getBuffer(const std::string &name, void *data,
+                                 size_t bytes) {
+  int index = bufferIndex(name);
+  checkBytes(bytes, hostBytes(name), name);
+  ensureInitialized();
+  std::memcpy(data, states[index].begin.data(), bytes);
+}
+
+void ReferenceSession::setBuffer(const std::string &name, const void *data,
+                                 size_t bytes) {
+  int index = bufferIndex(name);
+  checkBytes(bytes, hostBytes(name), name);
+  ensureInitialized();
+  std::memcpy(states[index].begin.data(), data, bytes);
+}
+
+bool ReferenceSession::hasExact(const std::string &name) const {
+  int index = model_->findBuffer(name);
+  return index >= 0 && model_->buffers[index].exact;
+}
+
+void ReferenceSession::exact(const std::string &name, void *data,
+                             size_t bytes) {
+  int index = bufferIndex(name);
+  if (!model_->buffers[index].exact)
+    fail(SIM_ERROR_INVALID_ARGUMENT, "scene '" + scene().name +
+                                         "' declares no exact solution of "
+                                         "buffer '" +
+                                         name + "'");
+  checkBytes(bytes, hostBytes(name), name);
+  ensureInitialized();
+  double time = double(now) * settings.dtValue();
+  running = {Body::Exact, -1, now};
+  for (int64_t i = 0; i < settings.range; ++i) {
+    exactFns[index](&context, i, time,
+                    static_cast<uint8_t *>(data) + size_t(i) * packed(index));
+    rethrowCallbackError();
+  }
+  running = {};
+}
+
+//===----------------------------------------------------------------------===//
+// Callbacks
+//===----------------------------------------------------------------------===//
+
+void ReferenceSession::readCallback(void *executor, int32_t buffer,
+                                    int64_t item, void *out) {
+  static_cast<ReferenceSession *>(executor)->read(buffer, item, out);
+}
+
+void ReferenceSession::paramCallback(void *executor, int32_t param, void *out) {
+  static_cast<ReferenceSession *>(executor)->param(param, out);
+}
+
+void ReferenceSession::rethrowCallbackError() {
+  if (!callbackFailed)
+    return;
+  callbackFailed = false;
+  running = {};
+  fail(callbackStatus, callbackMessage);
+}
+
+void ReferenceSession::read(int32_t buffer, int64_t item, void *out) {
+  if (buffer < 0 || size_t(buffer) >= model_->buffers.size()) {
+    // Without a valid buffer the size of `out` is unknown: write nothing.
+    if (!callbackFailed) {
+      callbackFailed = true;
+      callbackStatus = SIM_ERROR_BACKEND;
+      callbackMessage = "a reference body read buffer " +
+                        std::to_string(buffer) + ", but the model has " +
+                        std::to_string(model_->buffers.size()) + " buffers";
+    }
+    return;
+  }
+  uint8_t *bytes = static_cast<uint8_t *>(out);
+  std::memset(bytes, 0, packed(buffer));
+  // After a failure the body runs to its end on zeros; the executor throws
+  // when it returns.
+  if (callbackFailed)
+    return;
+  try {
+    const RefBuffer &info = model_->buffers[buffer];
+    int64_t range = settings.range;
+    int64_t index = item;
+    if (item < 0 || item >= range) {
+      switch (info.boundary) {
+      case Boundary::Clamp:
+        index = std::clamp<int64_t>(item, 0, range - 1);
+        break;
+      case Boundary::Wrap:
+        index = (item % range + range) % range;
+        break;
+      case Boundary::Zero:
+        return;
+      }
+    }
+    switch (running.body) {
+    case Body::Init:
+    case Body::Exact:
+      std::memcpy(bytes, initialItem(buffer, index), packed(buffer));
+      return;
+    case Body::NumSteps:
+    case Body::Evaluate:
+      readInStep(buffer, index, bytes);
+      return;
+    case Body::None:
+      fail(SIM_ERROR_BACKEND, "a read of buffer '" + info.name +
+                                  "' while no reference body is running");
+    }
+  } catch (const Error &error) {
+    callbackFailed = true;
+    callbackStatus = error.status;
+    callbackMessage = error.what();
+    std::memset(bytes, 0, packed(buffer));
+  }
+}
+
+void ReferenceSession::param(int32_t index, void *out) {
+  auto store = [&](const Value &value) {
+    switch (value.type) {
+    case ScalarType::I32: {
+      int32_t v = int32_t(value.i);
+      std::memcpy(out, &v, sizeof v);
+      break;
+    }
+    case ScalarType::I64:
+    case ScalarType::Index:
+      std::memcpy(out, &value.i, sizeof value.i);
+      break;
+    case ScalarType::F32: {
+      float v = float(value.f);
+      std::memcpy(out, &v, sizeof v);
+      break;
+    }
+    case ScalarType::F64:
+      std::memcpy(out, &value.f, sizeof value.f);
+      break;
+    }
+  };
+  if (index >= 0 && size_t(index) < model_->params.size()) {
+    store(settings.params[model_->params[index].sceneParam]);
+  } else if (index == -1) {
+    store(Value{ScalarType::I64, settings.range, 0});
+  } else if (index == -2) {
+    store(settings.dt);
+  } else if (index == -3) {
+    store(Value{ScalarType::I32, scene().maxSteps, 0});
+  } else if (!callbackFailed) {
+    callbackFailed = true;
+    callbackStatus = SIM_ERROR_BACKEND;
+    callbackMessage = "a reference body asked for parameter " +
+                      std::to_string(index) + ", but the model has " +
+                      std::to_string(model_->params.size()) +
+                      " (and -1 range, -2 dt, -3 max_steps)";
+  }
+}
+
+//===----------------------------------------------------------------------===//
+// Initial states
+//===----------------------------------------------------------------------===//
+
+void ReferenceSession::init() {
+  initialized = false;
+  int64_t range = settings.range;
+  states.assign(model_->buffers.size(), State{});
+  initStatus.assign(model_->buffers.size(), {});
+  for (size_t b = 0; b < states.size(); ++b) {
+    size_t bytes = size_t(range) * packed(int32_t(b));
+    states[b].initial.assign(bytes, 0);
+    initStatus[b].assign(size_t(range), kNotComputed);
+  }
+  initChain.clear();
+  callbackFailed = false;
+  for (size_t b = 0; b < states.size(); ++b)
+    for (int64_t i = 0; i < range; ++i)
+      initialItem(int32_t(b), i);
+  for (State &state : states)
+    state.begin = state.end = state.current = state.initial;
+  now = stepSize = 0;
+  initialized = true;
+}
+
+void ReferenceSession::ensureInitialized() {
+  if (!initialized)
+    init();
+}
+
+const uint8_t *ReferenceSession::initialItem(int32_t buffer, int64_t item) {
+  uint8_t *element =
+      states[buffer].initial.data() + size_t(item) * packed(buffer);
+  uint8_t &status = initStatus[buffer][size_t(item)];
+  if (status == kComputed)
+    return element;
+  if (status == kComputing) {
+    std::string cycle;
+    bool inCycle = false;
+    for (auto [b, i] : initChain) {
+      inCycle |= b == buffer && i == item;
+      if (inCycle)
+        cycle += model_->buffers[b].name + "[" + std::to_string(i) + "] -> ";
+    }
+    cycle += model_->buffers[buffer].name + "[" + std::to_string(item) + "]";
+    fail(SIM_ERROR_BUNDLE,
+         "the init bodies read each other in a cycle: " + cycle);
+  }
+  status = kComputing;
+  initChain.emplace_back(buffer, item);
+  Running saved = running;
+  running = {Body::Init, -1, 0};
+  initFns[buffer](&context, item, element);
+  running = saved;
+  initChain.pop_back();
+  status = kComputed;
+  // Only the outermost init rethrows: an inner one returns into a body.
+  if (initChain.empty())
+    rethrowCallbackError();
+  return element;
+}
+
+//===----------------------------------------------------------------------===//
+// Reads in a big step
+//===----------------------------------------------------------------------===//
+
+std::string ReferenceSession::describeRead(int32_t buffer, int64_t item) const {
+  const RefComponent &component = model_->components[running.component];
+  return std::string(running.body == Body::NumSteps ? "num_steps"
+                                                    : "evaluate") +
+         " of component '" + component.name + "' reads buffer '" +
+         model_->buffers[buffer].name + "' (item " + std::to_string(item) +
+         ") at base step " + std::to_string(running.readTime);
+}
+
+void ReferenceSession::readInStep(int32_t buffer, int64_t item, uint8_t *out) {
+  const RefComponent &component = model_->components[running.component];
+  if (std::find(component.reads.begin(), component.reads.end(), buffer) ==
+      component.reads.end())
+    fail(SIM_ERROR_BACKEND,
+         describeRead(buffer, item) +
+             ", which the model's 'reads' of the component does not list");
+  const State &state = states[buffer];
+  size_t at = size_t(item) * packed(buffer);
+  int32_t writer = model_->buffers[buffer].writer;
+  const uint8_t *from;
+  if (writer < 0) {
+    // No writer: the initial state (or what the user set).
+    from = state.begin.data();
+  } else if (writer == running.component) {
+    from = state.current.data();
+  } else if (model_->components[writer].position > component.position) {
+    // A back edge: the writer has not advanced yet.
+    from = state.begin.data();
+  } else {
+    interpolate(buffer, item, out);
+    return;
+  }
+  std::memcpy(out, from + at, packed(buffer));
+}
+
+void ReferenceSession::interpolate(int32_t buffer, int64_t item, uint8_t *out) {
+  const RefBuffer &info = model_->buffers[buffer];
+  const State &state = states[buffer];
+  size_t bytes = packed(buffer), at = size_t(item) * bytes;
+  int64_t time = running.readTime;
+  if (time == now) {
+    std::memcpy(out, state.begin.data() + at, bytes);
+    return;
+  }
+  if (time == now + stepSize) {
+    std::memcpy(out, state.end.data() + at, bytes);
+    return;
+  }
+  std::string inside = " inside the big step [" + std::to_string(now) + ", " +
+                       std::to_string(now + stepSize) + "]";
+  if (info.interp == Interp::None)
+    fail(SIM_ERROR_BACKEND,
+         describeRead(buffer, item) + inside +
+             ", but it has interp(none): its value means nothing there");
+  const uint8_t *va = nullptr, *vb = nullptr;
+  if (info.interp == Interp::Hermite) {
+    const RefBuffer &derivative = model_->buffers[info.derivative];
+    int32_t writer = derivative.writer;
+    const State &dstate = states[info.derivative];
+    va = dstate.begin.data() + at;
+    if (writer < 0)
+      vb = va;
+    else if (ran[writer])
+      vb = dstate.end.data() + at;
+    else
+      fail(SIM_ERROR_BACKEND,
+           describeRead(buffer, item) + inside +
+               ", but its hermite derivative '" + derivative.name +
+               "' has no value at the end of the big step yet (its writer '" +
+               model_->components[writer].name + "' runs later)");
+  }
+  const uint8_t *a = state.begin.data() + at, *b = state.end.data() + at;
+  int64_t offset = time - now;
+  if (info.type.f64) {
+    double f = double(offset) / double(stepSize);
+    double h = double(stepSize) * settings.dtValue();
+    interpolateLanes<double>(info.interp, info.type.lanes, f, h, a, b, va, vb,
+                             out);
+  } else {
+    float f = float(offset) / float(stepSize);
+    float h = float(stepSize) * float(settings.dtValue());
+    interpolateLanes<float>(info.interp, info.type.lanes, f, h, a, b, va, vb,
+                            out);
+  }
+}
+
+//===----------------------------------------------------------------------===//
+// Big steps
+//===----------------------------------------------------------------------===//
+
+int64_t ReferenceSession::numSteps(int32_t component, int64_t item, int64_t t) {
+  running = {Body::NumSteps, component, t};
+  int32_t n = numStepsFns[component](&context, item, t);
+  rethrowCallbackError();
+  running = {};
+  return std::clamp<int64_t>(n, 1, scene().maxSteps);
+}
+
+void ReferenceSession::evaluate(int32_t component, int64_t first, int64_t last,
+                                int64_t t, int64_t n) {
+  const RefComponent &info = model_->components[component];
+  // Every item of the group reads the state before the sub-step: evaluate
+  // into temporaries, then commit.
+  std::vector<std::vector<uint8_t>> temporaries;
+  for (int32_t buffer : info.writes)
+    temporaries.emplace_back(size_t(last - first) * packed(buffer));
+  std::vector<void *> outs(info.writes.size());
+  double dt = settings.dtValue();
+  running = {Body::Evaluate, component, t + n};
+  for (int64_t i = first; i < last; ++i) {
+    for (size_t k = 0; k < info.writes.size(); ++k)
+      outs[k] =
+          temporaries[k].data() + size_t(i - first) * packed(info.writes[k]);
+    evaluateFns[component](&context, i, t, int32_t(n), dt, outs.data());
+    rethrowCallbackError();
+  }
+  running = {};
+  evaluations[component] += last - first;
+  for (size_t k = 0; k < info.writes.size(); ++k) {
+    int32_t buffer = info.writes[k];
+    std::memcpy(states[buffer].current.data() + size_t(first) * packed(buffer),
+                temporaries[k].data(), temporaries[k].size());
+  }
+  if (checkFinite_)
+    checkFinite(component, first, last, t, n);
+}
+
+void ReferenceSession::checkFinite(int32_t component, int64_t first,
+                                   int64_t last, int64_t t, int64_t n) {
+  const RefComponent &info = model_->components[component];
+  for (int32_t buffer : info.writes) {
+    const RefBuffer &type = model_->buffers[buffer];
+    const uint8_t *data = states[buffer].current.data();
+    for (int64_t i = first; i < last; ++i) {
+      const uint8_t *element = data + size_t(i) * packed(buffer);
+      for (int32_t l = 0; l < type.type.lanes; ++l) {
+        double value = type.type.f64 ? lane<double>(element, l)
+                                     : double(lane<float>(element, l));
+        if (std::isfinite(value))
+          continue;
+        nonFinite.found = true;
+        nonFinite.baseStep = now;
+        nonFinite.component = info.name;
+        nonFinite.buffer = type.name;
+        nonFinite.kernel = "sim_ref_evaluate_" + std::to_string(component);
+        nonFinite.item = i;
+        nonFinite.lane = l;
+        nonFinite.value = value;
+        std::string where = "item " + std::to_string(i);
+        if (type.type.lanes > 1)
+          where += ", lane " + std::to_string(l);
+        fail(SIM_ERROR_NONFINITE,
+             "non-finite value " +
+                 std::string(std::isnan(value) ? "nan"
+                             : value > 0       ? "inf"
+                                               : "-inf") +
+                 " in buffer '" + type.name + "' (" + where +
+                 ") after the reference evaluate of component '" + info.name +
+                 "' at base step " + std::to_string(now) + " (big step of " +
+                 std::to_string(stepSize) + ", sub-step from " +
+                 std::to_string(t) + " to " + std::to_string(t + n) + ")");
+      }
+    }
+  }
+}
+
+void ReferenceSession::bigStep(int64_t end) {
+  const int64_t maxSteps = scene().maxSteps;
+  const int64_t range = settings.range;
+  const bool hip = strategy == Strategy::Hip || strategy == Strategy::HipCache;
+  for (State &state : states)
+    state.current = state.begin;
+  ran.assign(model_->components.size(), false);
+  stepSize = 0;
+
+  // The size m of the big step, from num_steps at T.
+  int64_t m = maxSteps;
+  if (strategy == Strategy::Simple) {
+    m = 1;
+  } else {
+    for (int32_t c : model_->schedule) {
+      if (!model_->components[c].numSteps || (hip && !bounding[c]))
+        continue;
+      for (int64_t i = 0; i < range; ++i)
+        m = std::min(m, numSteps(c, i, now));
+    }
+  }
+  m = std::min(m, end - now);
+  stepSize = m;
+  ++histogram[size_t(m)];
+  ++metrics.big_steps;
+
+  for (int32_t c : model_->schedule) {
+    const RefComponent &component = model_->components[c];
+    if (!hip || !component.numSteps) {
+      evaluate(c, 0, range, now, m);
+    } else {
+      int64_t group = component.gridSync ? range : groupSize_;
+      for (int64_t first = 0; first < range; first += group) {
+        int64_t last = std::min(first + group, range);
+        for (int64_t t = now; t < now + m;) {
+          int64_t n = now + m - t;
+          for (int64_t i = first; i < last; ++i)
+            n = std::min(n, numSteps(c, i, t));
+          evaluate(c, first, last, t, n);
+          t += n;
+        }
+      }
+    }
+    for (int32_t buffer : component.writes)
+      states[buffer].end = states[buffer].current;
+    ran[c] = true;
+  }
+  for (size_t b = 0; b < states.size(); ++b)
+    if (model_->buffers[b].writer >= 0)
+      states[b].begin = states[b].end;
+  now += m;
+  stepSize = 0;
+}
+
+void ReferenceSession::run(int64_t steps) {
+  if (steps < 0)
+    fail(SIM_ERROR_INVALID_ARGUMENT,
+         "cannot run " + std::to_string(steps) + " base steps");
+  ensureInitialized();
+  metrics = {};
+  nonFinite = {};
+  std::fill(evaluations.begin(), evaluations.end(), 0);
+  std::fill(histogram.begin(), histogram.end(), 0);
+  int64_t begin = now;
+  if (steps > std::numeric_limits<int64_t>::max() - begin)
+    fail(SIM_ERROR_INVALID_ARGUMENT, "cannot run " + std::to_string(steps) +
+                                         " base steps from " +
+                                         std::to_string(begin));
+  int64_t end = begin + steps;
+  auto start = std::chrono::steady_clock::now();
+  while (now < end) {
+    bigStep(end);
+    if (progress)
+      progress(progressUser, now - begin, steps);
+  }
+  metrics.wall_seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start)
+          .count();
+  // Every moment of a run is spent in or around the bodies.
+  metrics.kernel_seconds = metrics.wall_seconds;
+  metrics.steps = steps;
+  metrics.begin = begin;
+  metrics.end = end;
+}
+
+} // namespace sim::rt
