@@ -19,7 +19,7 @@ Usage:
                 [--tolerance X] [--jobs J]
 
 VARIANTS is a `;`-separated list of settings, each a `,`-separated list of
-K=V (`dist=0;dist=1` runs every case twice; `-` is the scene as it is).
+K=V (`dist=0;dist=1` runs every case twice; `as-is` is the scene as it is).
 Standard library only.
 """
 
@@ -55,7 +55,7 @@ def cases(args):
         for strategy in args.strategies.split(","):
             for range_ in args.ranges.split(","):
                 for variant in variants.split(";"):
-                    sets = [] if variant == "-" else variant.split(",")
+                    sets = [] if variant == "as-is" else variant.split(",")
                     yield name, bundle, strategy, int(range_), sets
 
 
@@ -82,9 +82,9 @@ def run_case(args, case):
                                    " ".join(sets) or "as-is")
     worst = None
     if status in (0, 1) and os.path.exists(out):
-        check = json.load(open(out)).get("check", {})
-        for buffer in check.get("buffers", []):
-            scale = max(1.0, buffer["max_abs_reference"])
+        check = json.load(open(out)).get("check") or {}
+        for buffer in check.get("buffers", {}).values():
+            scale = max(1.0, buffer["max_reference"])
             ratio = buffer["max_abs"] / scale
             worst = ratio if worst is None else max(worst, ratio)
     return label, status, output, worst, " ".join(command)

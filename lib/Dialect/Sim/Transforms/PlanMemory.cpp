@@ -8,8 +8,10 @@
 // so its source half is never overwritten during the big step: that half is
 // the value at T, and neither a snapshot nor a parity copy is needed. A
 // component without num_steps takes the whole big step in one evaluation, so
-// it does not ping-pong either. Only grid_sync components with num_steps
-// ping-pong through memory and pay for both.
+// it does not ping-pong either, and neither does one that bounds the hip big
+// step (its minimum num_steps at T is at least m, so it takes m at once).
+// Only the other grid_sync components with num_steps ping-pong through
+// memory and pay for both.
 //
 //===----------------------------------------------------------------------===//
 
@@ -34,13 +36,27 @@ bool isSubStepping(Strategy strategy) {
   return strategy == Strategy::hip || strategy == Strategy::hip_cache;
 }
 
+/// True when `component` bounds the hip big step (`bounded_by`): the big
+/// step is the minimum of its num_steps at T, so it takes it in one
+/// evaluation, as the lowering does.
+bool boundsBigStep(ComponentOp component) {
+  auto simulation = component->getParentOfType<SimulationOp>();
+  ScheduleOp schedule = simulation.getScheduleOp();
+  ArrayAttr bounds = schedule ? schedule.getBoundedByAttr() : ArrayAttr();
+  return bounds &&
+         llvm::is_contained(bounds.getAsRange<FlatSymbolRefAttr>(),
+                            FlatSymbolRefAttr::get(component.getSymNameAttr()));
+}
+
 /// True when `component`'s sub-steps ping-pong between the halves of its
 /// buffers through memory under `strategy`: a grid_sync component under hip
-/// or hip-cache that has num_steps. Without num_steps it takes the whole big
-/// step in one evaluation, from the source half into the target half.
+/// or hip-cache that has num_steps and does not bound the big step. Without
+/// num_steps, or bounding the step, it takes the whole big step in one
+/// evaluation, from the source half into the target half.
 bool pingPongs(ComponentOp component, Strategy strategy) {
   return isSubStepping(strategy) && component.hasNumSteps() &&
-         *component.getSubStepping() == SubStepping::grid_sync;
+         *component.getSubStepping() == SubStepping::grid_sync &&
+         !boundsBigStep(component);
 }
 
 struct PlanMemoryPass : public sim::impl::SimPlanMemoryBase<PlanMemoryPass> {

@@ -157,6 +157,55 @@ sim.simulation @grid_sync_one_evaluation range(1024) dt(1.0e-2 : f32) max_steps(
 
 // -----
 
+// @Lead reads its own neighbours (grid_sync) and has num_steps, but it reads
+// @W through the back edge, so it bounds the hip big step: the minimum of
+// its num_steps at T is at least m, and it takes the big step in one
+// evaluation. Nothing ping-pongs: no parity copy, and @U's source half keeps
+// its value at T for @Follow (no snapshot). (Planning a snapshot here left
+// it unfilled: the lowering never snapshots a bounding component, and the
+// reference executor caught the readers interpolating from zeros.)
+
+// CHECK-LABEL: sim.simulation @grid_sync_bounding
+// CHECK-NOT: snapshot
+// CHECK: sim.component @Lead writes(@U) attributes {parity = #sim<parity none>, sub_stepping = #sim<sub_stepping grid_sync>}
+// CHECK-NOT: snapshot
+// CHECK-NOT: copy_if_even
+// CHECK: sim.schedule [@Lead, @Follow] bounded_by [@Lead]
+sim.simulation @grid_sync_bounding range(1024) dt(1.0e-2 : f32) max_steps(4) {
+  sim.buffer @U : f32 init {
+  ^bb0(%i: index):
+    %c = arith.constant 0.0 : f32
+    sim.yield %c : f32
+  }
+  sim.buffer @W : f32 init {
+  ^bb0(%i: index):
+    %c = arith.constant 0.0 : f32
+    sim.yield %c : f32
+  }
+  sim.component @Lead writes(@U) num_steps {
+  ^bb0(%i: index, %t: i64):
+    %c = arith.constant 2 : i32
+    sim.yield %c : i32
+  } evaluate {
+  ^bb0(%i: index, %t: i64, %n: i32, %dt: f32):
+    %c1 = arith.constant 1 : index
+    %l = arith.subi %i, %c1 : index
+    %ul = sim.read @U[%l] : f32
+    %w = sim.read @W[%i] : f32
+    %s = arith.addf %ul, %w : f32
+    sim.yield %s : f32
+  }
+  sim.component @Follow writes(@W) evaluate {
+  ^bb0(%i: index, %t: i64, %n: i32, %dt: f32):
+    %u = sim.read @U[%i] : f32
+    sim.yield %u : f32
+  }
+  sim.schedule [@Lead]
+  sim.observe [@W]
+}
+
+// -----
+
 // Caches only where they can be hit. @Reader interpolates:
 // - @One at i+2 only: one offset, so no thread reads another's value;
 // - @Small at i-1..i+1 (a loop) and at i: cached as the window -1..1;

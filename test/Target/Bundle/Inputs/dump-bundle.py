@@ -14,7 +14,8 @@ import re
 import struct
 import sys
 
-KINDS = {1: "scene", 2: "plan", 3: "ptx", 4: "cpu"}
+KINDS = {1: "scene", 2: "plan", 3: "ptx", 4: "cpu", 5: "reference-model",
+         6: "reference-functions"}
 STRATEGIES = {0: "simple", 1: "traditional", 2: "hip", 3: "hip-cache",
               0xFFFFFFFF: "-"}
 
@@ -79,7 +80,7 @@ def main():
     kernels = {}
     for kind, strategy, offset, length in sections:
         body = data[offset:offset + length]
-        if kind in (1, 2):
+        if kind in (1, 2, 5):
             print("--- %s %s" % (KINDS[kind], strategy))
             sys.stdout.write(body.decode())
             if kind == 2:
@@ -99,6 +100,11 @@ def main():
                                     re.M).group(0),
                 len(wanted), "missing " + " ".join(missing) if missing
                 else "every one an .entry"))
+        elif kind == 6:
+            exports = sorted(e for e in elf_exports(body)
+                             if e.startswith("sim_ref_"))
+            print("--- reference functions: shared object, exports %s" %
+                  " ".join(exports))
         elif kind == 4:
             exports = elf_exports(body)
             missing = [k for k in wanted if "sim_cpu_" + k not in exports]
