@@ -322,6 +322,26 @@ std::optional<std::string_view> afterPrefix(std::string_view field,
   return std::nullopt;
 }
 
+/// The element type in field `typeField` of a plan or model `buffer` record
+/// that names buffer `name`, which must be a buffer of `scene` with the same
+/// element type.
+ElementType sceneBufferType(Records &records, const Scene &scene,
+                            const std::string &name, size_t typeField) {
+  int sceneBuffer = scene.findBuffer(name);
+  if (sceneBuffer < 0)
+    records.error("buffer '" + name + "' is not a buffer of scene '" +
+                  scene.name + "'");
+  std::optional<ElementType> type = parseElementType(records[typeField]);
+  if (!type)
+    records.error("element type '" + records.str(typeField) +
+                  "' is not f32, f64, vector<Nxf32> or vector<Nxf64>");
+  if (!(*type == scene.buffers[sceneBuffer].type))
+    records.error("buffer '" + name + "' has element type " +
+                  records.str(typeField) + " but the scene says " +
+                  scene.buffers[sceneBuffer].type.text);
+  return *type;
+}
+
 } // namespace
 
 //===----------------------------------------------------------------------===//
@@ -522,21 +542,9 @@ Plan parsePlan(std::string_view text, const Scene &scene, Strategy strategy) {
       buffer.name = records.str(1);
       if (plan.findBuffer(buffer.name) >= 0)
         records.error("buffer '" + buffer.name + "' is declared twice");
-      int sceneBuffer = scene.findBuffer(buffer.name);
-      if (sceneBuffer < 0)
-        records.error("buffer '" + buffer.name +
-                      "' is not a buffer of scene '" + scene.name + "'");
-      std::optional<ElementType> type = parseElementType(records[2]);
-      if (!type)
-        records.error("element type '" + records.str(2) +
-                      "' is not f32, f64, vector<Nxf32> or vector<Nxf64>");
-      if (!(*type == scene.buffers[sceneBuffer].type))
-        records.error("buffer '" + buffer.name + "' has element type " +
-                      records.str(2) + " but the scene says " +
-                      scene.buffers[sceneBuffer].type.text);
-      buffer.type = *type;
+      buffer.type = sceneBufferType(records, scene, buffer.name, 2);
       buffer.stride =
-          records.integer(4, "stride", type->packedBytes(), 1 << 20);
+          records.integer(4, "stride", buffer.type.packedBytes(), 1 << 20);
       for (size_t i = 5; i < records.size(); ++i) {
         bool *flag = records[i] == "snapshot"   ? &buffer.snapshot
                      : records[i] == "observed" ? &buffer.observed
@@ -789,19 +797,7 @@ ReferenceModel parseReferenceModel(std::string_view text, const Scene &scene) {
       buffer.name = records.str(2);
       if (model.findBuffer(buffer.name) >= 0)
         records.error("buffer '" + buffer.name + "' is declared twice");
-      int sceneBuffer = scene.findBuffer(buffer.name);
-      if (sceneBuffer < 0)
-        records.error("buffer '" + buffer.name +
-                      "' is not a buffer of scene '" + scene.name + "'");
-      std::optional<ElementType> type = parseElementType(records[3]);
-      if (!type)
-        records.error("element type '" + records.str(3) +
-                      "' is not f32, f64, vector<Nxf32> or vector<Nxf64>");
-      if (!(*type == scene.buffers[sceneBuffer].type))
-        records.error("buffer '" + buffer.name + "' has element type " +
-                      records.str(3) + " but the scene says " +
-                      scene.buffers[sceneBuffer].type.text);
-      buffer.type = *type;
+      buffer.type = sceneBufferType(records, scene, buffer.name, 3);
       std::string_view interp = records[5];
       if (interp == "linear") {
         buffer.interp = Interp::Linear;
