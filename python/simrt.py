@@ -24,7 +24,7 @@ import os
 __all__ = ["Error", "Bundle", "Session", "load_library"]
 
 _STRATEGIES = {"simple": 0, "traditional": 1, "hip": 2, "hip-cache": 3}
-_BACKENDS = {"auto": 0, "cpu": 1, "cuda": 2}
+_BACKENDS = {"auto": 0, "cpu": 1, "cuda": 2, "reference": 3}
 
 
 class Error(RuntimeError):

@@ -19,6 +19,11 @@ with simrt.Bundle(sys.argv[1]) as bundle:
     # simple takes 10 steps of 1: 0.99^10; hip three big steps of 4, 4 and 2
     # (the last one clamped to the end): 0.96^2 * 0.98.
     print("simple %.5f hip %.5f" % (results["simple"][0], results["hip"][0]))
+    # The reference executor (docs/Reference.md) gives hip's numbers.
+    with simrt.Session(bundle, strategy="hip", backend="reference") as session:
+        session.run(10)
+        print("reference", session.device, "%.5f" % session.get("X")[0],
+              "evaluations", session.evaluations())
 try:
     simrt.Bundle(sys.argv[1] + ".missing")
 except simrt.Error as error:
