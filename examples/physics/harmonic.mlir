@@ -19,8 +19,8 @@
 //
 // num_steps: n = floor(@c / (freq * dt)), i.e. at most @c radians of phase per
 // step (freq = w for @Driver, k for @Resonator); with dt = 1e-3 and @c = 0.02
-// the driver takes 1 (w >= 20) to 8 (capped) base steps, the resonator twice
-// as many. The interpolation of @X is what hip's resonator sees between big
+// the driver takes 1 (w > 10) to 8 (capped, w < 2.5) base steps, the
+// resonator about twice as many (w runs from 1 to 16.9 over 256 items). The interpolation of @X is what hip's resonator sees between big
 // step ends; python/accuracy_study.py substitutes #sim.linear and #sim.cubic
 // for the Hermite interpolation of @X (the line marked `study-interp`).
 //
