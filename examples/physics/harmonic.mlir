@@ -1,10 +1,11 @@
-// harmonic: harmonic oscillators, each driving a slower resonator (f64).
+// harmonic: harmonic oscillators, each driving a faster resonator (f64).
 //
 // Physics. Item i is one driver oscillator x'' = -w^2 x with w = 1 + i / 16
 // (x(0) = 1, x'(0) = 0, so x = cos(w t)) that drives a resonator of
-// frequency k = @ratio * w at rest: y'' = -k^2 y + x(t), y(0) = y'(0) = 0,
-// whose exact solution is y = (cos(w t) - cos(k t)) / (k^2 - w^2). Items are
-// independent; w (and so the step count) differs per item.
+// frequency k = @ratio * w (default 2) at rest: y'' = -k^2 y + x(t),
+// y(0) = y'(0) = 0, whose exact solution is
+// y = (cos(w t) - cos(k t)) / (k^2 - w^2). Items are independent; w (and so
+// the step counts) differs per item.
 //
 // Components (both velocity Verlet, one Verlet step of h = n dt per
 // evaluation):
@@ -18,11 +19,14 @@
 // traditional the big step is the global minimum (1 for the fastest item).
 //
 // num_steps: n = floor(@c / (freq * dt)), i.e. at most @c radians of phase per
-// step (freq = w for @Driver, k for @Resonator); with dt = 1e-3 and @c = 0.02
-// the driver takes 1 (w > 10) to 8 (capped, w < 2.5) base steps, the
-// resonator about twice as many (w runs from 1 to 16.9 over 256 items). The interpolation of @X is what hip's resonator sees between big
-// step ends; python/accuracy_study.py substitutes #sim.linear and #sim.cubic
-// for the Hermite interpolation of @X (the line marked `study-interp`).
+// step (freq = w for @Driver, k for @Resonator). With dt = 1e-3 and
+// @c = 0.04 over 256 items (w from 1 to 16.9) the driver takes 2 (w > 13.3)
+// to 8 (capped, w < 5) base steps and the resonator 1 (w > 10) to 8, half as
+// many as the driver, so under hip the resonator reads the driver inside
+// the big steps (max_steps, 8): the
+// interpolation of @X is what it sees there. python/accuracy_study.py
+// substitutes #sim.linear and #sim.cubic for the Hermite interpolation of @X
+// (the line marked `study-interp`).
 //
 // Items are grouped: hip sub-steps a thread group with its smallest
 // num_steps, so w grows slowly with i (groups of 32 items span a factor
@@ -31,9 +35,9 @@
 // Observed: @X and @Y, both with exact bodies (`sim-run --reference exact`).
 sim.simulation @harmonic range(256) dt(1.0e-3 : f64) max_steps(8) {
   // Radians of phase per (sub-)step that num_steps allows.
-  sim.param @c = 2.0e-2 : f64
+  sim.param @c = 4.0e-2 : f64
   // Resonator frequency over driver frequency (must not be 1).
-  sim.param @ratio = 5.0e-1 : f64
+  sim.param @ratio = 2.0 : f64
 
   sim.buffer @V : f64 interp(none) init {
   ^bb0(%i: index):
