@@ -427,7 +427,6 @@ def plot(results, path):
         import matplotlib
         matplotlib.use("Agg")
         import matplotlib.pyplot as plt
-        import matplotlib.ticker
     except ImportError:
         log("matplotlib is not installed: no plot")
         return False
@@ -451,7 +450,8 @@ def plot(results, path):
         ax.set_xlabel("error (rms-rel, %s)" % (
             "@" + first["error_of"] if first["error_of"] in first["error"]
             else first["error_of"]))
-        ax.xaxis.set_minor_formatter(matplotlib.ticker.NullFormatter())
+        ax.tick_params(axis="x", which="minor", labelsize=6,
+                       labelrotation=45)
         ax.set_ylabel("wall time (ms, fastest run)")
         ax.grid(True, which="both", alpha=0.3)
         ax.legend(fontsize=6)
@@ -486,6 +486,8 @@ def main():
                         help="pass --check-finite to sim-run (slower)")
     parser.add_argument("--scenes-dir",
                         default=os.path.join(ROOT, "examples", "physics"))
+    parser.add_argument("--replot", metavar="RESULTS_JSON",
+                        help="only redraw OUT/accuracy.png from a results.json")
     parser.add_argument("--sim-run")
     parser.add_argument("--sim-translate")
     args = parser.parse_args()
@@ -494,6 +496,11 @@ def main():
         if s not in SCENES:
             parser.error("unknown scene %s (known: %s)" % (s, ", ".join(
                 SCENES)))
+    if args.replot:
+        os.makedirs(args.out, exist_ok=True)
+        with open(args.replot) as f:
+            plot(json.load(f)["results"], os.path.join(args.out, "accuracy.png"))
+        return 0
     args.sim_run = find_tool("sim-run", args.sim_run)
     args.sim_translate = find_tool("sim-translate", args.sim_translate)
     os.makedirs(args.out, exist_ok=True)
