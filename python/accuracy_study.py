@@ -12,7 +12,7 @@ the error against the scene's reference:
 
   * scenes with `exact` bodies (harmonic, kpr, kepler): sim-run's error
     against the exact solution at the final time;
-  * the others (springs, nbody): the dumped state against `simple` run at
+  * the others (springs, nbody, pbd): the dumped state against `simple` run at
     dt / 8 for 8 times the steps (the same end time), computed here.
 
 Per observed buffer the error is the max-abs difference and
@@ -85,6 +85,8 @@ SCENES = {
                     sets=[{}]),
     "nbody": dict(ref="fine", steps=1000, quick_steps=50, quick_range=64,
                   interps=[None], sets=[{}]),
+    "pbd": dict(ref="fine", steps=1000, quick_steps=100, quick_range=64,
+                interps=[None], sets=[{}]),
 }
 
 
