@@ -43,10 +43,6 @@ Agg; skipped with a note when matplotlib is missing). Progress goes to
 stderr; stdout gets one `run ...` line per configuration (for FileCheck) and
 the convergence slopes. Standard library only (plus matplotlib for the
 plot).
-
-Compatibility: a bundle section of a kind the runtime does not know (the
-compiler's reference sections 5 and 6, newer than this runtime) is dropped
-from the bundle before sim-run reads it; sim-run never needs them.
 """
 
 import argparse
@@ -111,27 +107,6 @@ def find_tool(name, given):
 
 # --- bundles ---------------------------------------------------------------
 
-def strip_unknown_sections(data):
-    """Drops sections of kinds other than 1-4 (scene, plan, PTX, CPU)."""
-    magic, version, count, _ = struct.unpack_from("<8sIIQ", data, 0)
-    entries = [struct.unpack_from("<IIQQQ", data, 24 + 32 * k)
-               for k in range(count)]
-    keep = [e for e in entries if 1 <= e[0] <= 4]
-    if len(keep) == len(entries):
-        return data
-    head = 24 + 32 * len(keep)
-    head += (-head) % 8
-    table, body = b"", b""
-    for kind, strategy, offset, length, _ in keep:
-        table += struct.pack("<IIQQQ", kind, strategy, head + len(body),
-                             length, 0)
-        body += data[offset:offset + length] + b"\0" * ((-length) % 8)
-    pad = b"\0" * (head - 24 - len(table))
-    total = head + len(body)
-    return (struct.pack("<8sIIQ", magic, version, len(keep), total) + table +
-            pad + body)
-
-
 def variant_text(text, interp):
     if interp is None:
         return text
@@ -158,9 +133,6 @@ def build_bundle(args, scene, interp):
     log("compiling %s" % tag)
     subprocess.run([args.sim_translate, mlir, "--sim-to-bundle", "-o", simb],
                    check=True)
-    data = open(simb, "rb").read()
-    with open(simb, "wb") as f:
-        f.write(strip_unknown_sections(data))
     return simb
 
 

@@ -366,18 +366,28 @@ struct ErrorNorms {
   double maxAbs = 0;
   /// ||a - b||_2 / ||b||_2; 0 when both are zero, inf when only b is.
   double rmsRel = 0;
+  /// Values that are NaN on both sides, or the same infinity, when they are
+  /// taken as equal (the check: a scene that blows up must blow up alike).
+  size_t sameNonFinite = 0;
 };
 
-ErrorNorms compare(const Buffer &value, const Buffer &reference) {
+ErrorNorms compare(const Buffer &value, const Buffer &reference,
+                   bool sameNonFiniteIsEqual = false) {
   ErrorNorms norms;
   double diff2 = 0, ref2 = 0;
   for (size_t i = 0; i < value.values(); ++i) {
-    double d = value.at(i) - reference.at(i);
+    double a = value.at(i), b = reference.at(i);
+    if (sameNonFiniteIsEqual && !std::isfinite(b) &&
+        ((std::isnan(a) && std::isnan(b)) || a == b)) {
+      ++norms.sameNonFinite;
+      continue;
+    }
+    double d = a - b;
     norms.maxAbs = std::max(norms.maxAbs, std::fabs(d));
     if (std::isnan(d))
       norms.maxAbs = d;
     diff2 += d * d;
-    ref2 += reference.at(i) * reference.at(i);
+    ref2 += b * b;
   }
   norms.rmsRel = ref2 > 0 ? std::sqrt(diff2 / ref2) : diff2 > 0 ? INFINITY : 0;
   return norms;
@@ -546,10 +556,12 @@ Check compareWithReference(const std::vector<Buffer> &results,
   for (size_t i = 0; i < results.size(); ++i) {
     Check::BufferRow row;
     row.buffer = results[i].info.name;
-    row.norms = compare(results[i], references[i]);
+    row.norms = compare(results[i], references[i],
+                        /*sameNonFiniteIsEqual=*/true);
     for (size_t v = 0; v < references[i].values(); ++v)
-      row.maxReference =
-          std::max(row.maxReference, std::fabs(references[i].at(v)));
+      if (std::isfinite(references[i].at(v)))
+        row.maxReference =
+            std::max(row.maxReference, std::fabs(references[i].at(v)));
     row.tolerance = tolerance > 0                       ? tolerance
                     : results[i].info.scalar_bytes == 8 ? 1e-10
                                                         : 1e-4;
@@ -863,10 +875,15 @@ int run(const Options &options) {
                 (long long)options.steps);
     for (const Check::BufferRow &buffer : checked->buffers)
       std::printf("  buffer %s  max-abs %.3e  max-ref %.3e  rms-rel %.3e  "
-                  "tolerance %.1e  %s\n",
+                  "tolerance %.1e  %s%s\n",
                   buffer.buffer.c_str(), buffer.norms.maxAbs,
                   buffer.maxReference, buffer.norms.rmsRel, buffer.tolerance,
-                  buffer.pass ? "pass" : "FAIL");
+                  buffer.pass ? "pass" : "FAIL",
+                  buffer.norms.sameNonFinite
+                      ? ("  (" + std::to_string(buffer.norms.sameNonFinite) +
+                         " values non-finite on both sides)")
+                            .c_str()
+                      : "");
     auto text = [](int64_t count) {
       return count < 0 ? std::string("-") : std::to_string(count);
     };
@@ -988,6 +1005,7 @@ int run(const Options &options) {
              << ", \"rms_rel\": " << jsonNumber(row.norms.rmsRel)
              << ", \"tolerance\": " << jsonNumber(row.tolerance)
              << ", \"limit\": " << jsonNumber(row.limit)
+             << ", \"same_non_finite\": " << row.norms.sameNonFinite
              << ", \"pass\": " << boolean(row.pass) << "}";
       }
       json << "},\n    \"evaluations\": {\"backend\": "

@@ -84,9 +84,13 @@ def run_case(args, case):
     if status in (0, 1) and os.path.exists(out):
         check = json.load(open(out)).get("check") or {}
         for buffer in check.get("buffers", {}).values():
-            scale = max(1.0, buffer["max_reference"])
-            ratio = buffer["max_abs"] / scale
-            worst = ratio if worst is None else max(worst, ratio)
+            # JSON has no NaN: sim-run writes null for a NaN difference.
+            if buffer["max_abs"] is None or buffer["max_reference"] is None:
+                ratio = float("nan")
+            else:
+                ratio = buffer["max_abs"] / max(1.0, buffer["max_reference"])
+            worst = ratio if worst is None or ratio != ratio else max(
+                worst, ratio)
     return label, status, output, worst, " ".join(command)
 
 
