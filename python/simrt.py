@@ -107,6 +107,10 @@ def _declare(lib):
         "sim_session_component": (c.c_char_p, [p, c.c_int32]),
         "sim_session_evaluations": (c.c_int64, [p, c.c_int32]),
         "sim_session_histogram": (c.c_int64, [p, c.c_int64]),
+        "sim_session_num_totals": (c.c_int32, [p]),
+        "sim_session_total_name": (c.c_char_p, [p, c.c_int32]),
+        "sim_session_total": (c.c_int, [p, c.c_char_p,
+                                        c.POINTER(c.c_double)]),
     }
     for name, (restype, argtypes) in sigs.items():
         function = getattr(lib, name)
@@ -232,6 +236,20 @@ class Session:
         return {lib.sim_session_component(self._handle, index).decode():
                 lib.sim_session_evaluations(self._handle, index)
                 for index in range(lib.sim_session_num_components(self._handle))}
+
+    def totals(self):
+        """The scene's totals at the current time, by name (declaration
+        order): per-item values from the device, summed on the host in item
+        order in double."""
+        lib = load_library()
+        result = {}
+        for index in range(lib.sim_session_num_totals(self._handle)):
+            name = lib.sim_session_total_name(self._handle, index)
+            value = ctypes.c_double()
+            _check(lib.sim_session_total(self._handle, name,
+                                         ctypes.byref(value)))
+            result[name.decode()] = value.value
+        return result
 
     def histogram(self, max_steps):
         """Big steps taken of each size 1..max_steps in the last run."""

@@ -228,6 +228,8 @@ static Value getItemArgument(const ReadInfo &info) {
     return info.owner.getInitItem();
   case BodyKind::Exact:
     return info.owner.getExactItem();
+  case BodyKind::Total:
+    break; // Total bodies are not analysed (see analyzeReads).
   }
   llvm_unreachable("unknown body kind");
 }
@@ -263,6 +265,10 @@ void DependencyAnalysis::analyzeReads() {
     BufferOp buffer = bufferByName.lookup(read.getBufferAttr().getAttr());
     if (!location || !buffer)
       return; // Not in verified IR.
+    // A total reads the state at T after a run; it is an output, not a
+    // component, so it takes no part in the schedule or the memory plan.
+    if (location->kind == BodyKind::Total)
+      return;
     ReadInfo info{read,
                   buffer,
                   location->kind,

@@ -118,11 +118,22 @@ Scene parseScene(std::string_view text);
 // Plan
 //===----------------------------------------------------------------------===//
 
-enum class ArgKind { Clock, Buffer, Snapshot, Exact, Param, Range, Dt, Time };
+enum class ArgKind {
+  Clock,
+  Buffer,
+  Snapshot,
+  Exact,
+  Param,
+  Range,
+  Dt,
+  Time,
+  Total
+};
 
 struct Arg {
   ArgKind kind;
-  /// The plan buffer (Buffer, Snapshot, Exact) or scene parameter (Param).
+  /// The plan buffer (Buffer, Snapshot, Exact), scene parameter (Param) or
+  /// plan total (Total).
   int32_t index = -1;
 };
 
@@ -151,8 +162,16 @@ struct PlanComponent {
   std::vector<int32_t> writes;
 };
 
-enum class PhaseKind { Init = 0, Step = 1, Finish = 2, Exact = 3 };
-constexpr int kNumPhases = 4;
+/// A `total` record: a sum over items the scene observes. The `total` phase
+/// writes its per-item values as doubles; the runtime sums them.
+struct PlanTotal {
+  std::string name;
+  /// The type the scene declared (f32 or f64).
+  ScalarType type = ScalarType::F64;
+};
+
+enum class PhaseKind { Init = 0, Step = 1, Finish = 2, Exact = 3, Total = 4 };
+constexpr int kNumPhases = 5;
 const char *phaseName(PhaseKind phase);
 
 struct Plan {
@@ -162,6 +181,7 @@ struct Plan {
   int64_t histogramSlot = 0;
   std::vector<PlanBuffer> buffers;
   std::vector<PlanComponent> components;
+  std::vector<PlanTotal> totals;
   /// The launches of each phase in order, `repeat` blocks unrolled.
   std::array<std::vector<Launch>, kNumPhases> phases;
   std::array<bool, kNumPhases> hasPhase = {};
@@ -170,6 +190,7 @@ struct Plan {
     return phases[int(kind)];
   }
   int findBuffer(std::string_view name) const;
+  int findTotal(std::string_view name) const;
   /// Every kernel some phase launches, each once.
   std::vector<std::string> kernelNames() const;
 };
@@ -218,6 +239,13 @@ struct RefBuffer {
   int32_t writer = -1;
 };
 
+/// A `total` line: what `sim_ref_total_<index>` computes.
+struct RefTotal {
+  std::string name;
+  ScalarType type = ScalarType::F64;
+  std::vector<int32_t> reads;
+};
+
 struct RefComponent {
   std::string name;
   /// `substep grid_sync`: sub-steps over the whole range at once.
@@ -234,6 +262,7 @@ struct ReferenceModel {
   std::vector<RefParam> params;
   std::vector<RefBuffer> buffers;
   std::vector<RefComponent> components;
+  std::vector<RefTotal> totals;
   /// Components in the order they run.
   std::vector<int32_t> schedule;
 

@@ -372,6 +372,37 @@ sim_status sim_session_exact(sim_session *session, const char *buffer,
   return guard([&] { session->session->exact(buffer, data, bytes); });
 }
 
+int32_t sim_session_num_totals(const sim_session *session) {
+  return session ? int32_t(session->session->numTotals()) : 0;
+}
+
+const char *sim_session_total_name(const sim_session *session, int32_t index) {
+  if (!session || index < 0 || size_t(index) >= session->session->numTotals())
+    return nullptr;
+  return session->session->totalName(size_t(index)).c_str();
+}
+
+sim_status sim_session_total(sim_session *session, const char *name,
+                             double *out) {
+  SIM_REQUIRE(session);
+  SIM_REQUIRE(name);
+  SIM_REQUIRE(out);
+  return guard([&] {
+    Executor &executor = *session->session;
+    for (size_t i = 0; i < executor.numTotals(); ++i)
+      if (executor.totalName(i) == name) {
+        *out = executor.totals()[i];
+        return;
+      }
+    std::vector<std::string> names;
+    for (size_t i = 0; i < executor.numTotals(); ++i)
+      names.push_back(executor.totalName(i));
+    fail(SIM_ERROR_INVALID_ARGUMENT,
+         "'" + std::string(name) + "' is not a total of scene '" +
+             executor.scene().name + "' (totals: " + listNames(names) + ")");
+  });
+}
+
 void sim_session_set_progress(sim_session *session, sim_progress_fn progress,
                               void *user) {
   if (session)

@@ -81,6 +81,13 @@ public:
   /// Runs `steps` base steps; the run ends exactly at T + steps or throws.
   virtual void run(int64_t steps) = 0;
 
+  /// The totals the scene declares (sums over items it observes).
+  virtual size_t numTotals() const = 0;
+  virtual const std::string &totalName(size_t index) const = 0;
+  /// Every total at the current T, in declaration order: the per-item
+  /// values summed in item order in double precision.
+  virtual std::vector<double> totals() = 0;
+
   /// The components the evaluation counters are for.
   virtual size_t numComponents() const = 0;
   virtual const std::string &componentName(size_t index) const = 0;

@@ -140,6 +140,10 @@ ReferenceSession::ReferenceSession(std::shared_ptr<const Bundle> bundleIn,
     }
     bounding.push_back(component.numSteps && readsLater);
   }
+  for (size_t t = 0; t < model_->totals.size(); ++t)
+    totalFns.push_back(reinterpret_cast<TotalFn>(
+        lookUp("sim_ref_total_" + std::to_string(t),
+               "the body of total '" + model_->totals[t].name + "'")));
   context = {this, &ReferenceSession::readCallback,
              &ReferenceSession::paramCallback};
   evaluations.assign(model_->components.size(), 0);
@@ -233,6 +237,36 @@ void ReferenceSession::exact(const std::string &name, void *data,
   running = {};
 }
 
+std::vector<double> ReferenceSession::totals() {
+  std::vector<double> sums(model_->totals.size(), 0.0);
+  if (sums.empty())
+    return sums;
+  ensureInitialized();
+  running = {Body::Total, -1, now};
+  for (size_t t = 0; t < sums.size(); ++t) {
+    bool isF32 = model_->totals[t].type == ScalarType::F32;
+    double sum = 0.0;
+    for (int64_t i = 0; i < settings.range; ++i) {
+      // Room for either type; an f32 widens to double as the kernels do.
+      alignas(8) uint8_t out[8] = {};
+      totalFns[t](&context, i, out);
+      rethrowCallbackError();
+      if (isF32) {
+        float value;
+        std::memcpy(&value, out, sizeof value);
+        sum += double(value);
+      } else {
+        double value;
+        std::memcpy(&value, out, sizeof value);
+        sum += value;
+      }
+    }
+    sums[t] = sum;
+  }
+  running = {};
+  return sums;
+}
+
 //===----------------------------------------------------------------------===//
 // Callbacks
 //===----------------------------------------------------------------------===//
@@ -296,6 +330,12 @@ void ReferenceSession::read(int32_t buffer, int64_t item, void *out) {
     case Body::NumSteps:
     case Body::Evaluate:
       readInStep(buffer, index, bytes);
+      return;
+    case Body::Total:
+      // A total sees the state at T.
+      std::memcpy(bytes,
+                  states[buffer].begin.data() + size_t(index) * packed(buffer),
+                  packed(buffer));
       return;
     case Body::None:
       fail(SIM_ERROR_BACKEND, "a read of buffer '" + info.name +

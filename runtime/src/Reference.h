@@ -61,6 +61,12 @@ public:
 
   void run(int64_t steps) override;
 
+  size_t numTotals() const override { return model_->totals.size(); }
+  const std::string &totalName(size_t index) const override {
+    return model_->totals[index].name;
+  }
+  std::vector<double> totals() override;
+
   size_t numComponents() const override { return model_->components.size(); }
   const std::string &componentName(size_t index) const override {
     return model_->components[index].name;
@@ -70,6 +76,7 @@ private:
   using InitFn = void (*)(const sim_ref_context *, int64_t item, void *out);
   using ExactFn = void (*)(const sim_ref_context *, int64_t item, double t,
                            void *out);
+  using TotalFn = void (*)(const sim_ref_context *, int64_t item, void *out);
   using NumStepsFn = int32_t (*)(const sim_ref_context *, int64_t item,
                                  int64_t t);
   using EvaluateFn = void (*)(const sim_ref_context *, int64_t item, int64_t t,
@@ -83,7 +90,7 @@ private:
   };
 
   /// The body running now: what its reads mean.
-  enum class Body { None, Init, Exact, NumSteps, Evaluate };
+  enum class Body { None, Init, Exact, NumSteps, Evaluate, Total };
   struct Running {
     Body body = Body::None;
     int32_t component = -1;
@@ -133,6 +140,7 @@ private:
   std::vector<ExactFn> exactFns;
   std::vector<NumStepsFn> numStepsFns;
   std::vector<EvaluateFn> evaluateFns;
+  std::vector<TotalFn> totalFns;
   /// Components with num_steps that read a buffer written later in the
   /// schedule: under hip they bound the big step.
   std::vector<bool> bounding;

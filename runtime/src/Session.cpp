@@ -171,6 +171,8 @@ void Session::allocate() {
     snapshots.push_back(buffer.snapshot ? take(half) : Memory{});
     exacts.push_back(buffer.exact ? take(half) : Memory{});
   }
+  for (size_t i = 0; i < plan_->totals.size(); ++i)
+    totalValues.push_back(take(size_t(settings.range) * sizeof(double)));
   clock.assign(size_t(plan_->clockSlots), 0);
   allocated = true;
 }
@@ -184,7 +186,8 @@ void Session::releaseAll() {
     memory = {};
   };
   give(clockMemory);
-  for (std::vector<Memory> *list : {&buffers, &snapshots, &exacts}) {
+  for (std::vector<Memory> *list :
+       {&buffers, &snapshots, &exacts, &totalValues}) {
     for (Memory &memory : *list)
       give(memory);
     list->clear();
@@ -230,6 +233,9 @@ void Session::prepare() {
           break;
         case ArgKind::Exact:
           memref(exacts[arg.index].pointer, settings.range);
+          break;
+        case ArgKind::Total:
+          memref(totalValues[arg.index].pointer, settings.range);
           break;
         case ArgKind::Param:
           p.values.push_back(settings.params[arg.index].bits());
@@ -372,7 +378,8 @@ void Session::init() {
     // Every run from the initial state starts from the same memory. The
     // addresses stay, so a captured step phase stays valid.
     backend->zero(clockMemory.pointer, clockMemory.bytes);
-    for (std::vector<Memory> *list : {&buffers, &snapshots, &exacts})
+    for (std::vector<Memory> *list :
+         {&buffers, &snapshots, &exacts, &totalValues})
       for (Memory &memory : *list)
         if (memory.pointer)
           backend->zero(memory.pointer, memory.bytes);
@@ -572,6 +579,33 @@ void Session::exact(const std::string &name, void *data, size_t bytes) {
   for (int64_t i = 0; i < settings.range; ++i)
     std::memcpy(static_cast<uint8_t *>(data) + size_t(i) * packed,
                 device.data() + size_t(i) * stride, packed);
+}
+
+std::vector<double> Session::totals() {
+  std::vector<double> sums(plan_->totals.size(), 0.0);
+  if (sums.empty())
+    return sums;
+  if (!plan_->hasPhase[int(PhaseKind::Total)])
+    fail(SIM_ERROR_BUNDLE, std::string("the plan of strategy '") +
+                               strategyName(plan_->strategy) +
+                               "' has no total phase");
+  backend->activate();
+  ensureInitialized();
+  prepare();
+  // Outside a run: the last run's metrics stay as they were.
+  runUncounted(PhaseKind::Total);
+  // The device computes every item's value; the host adds them in item
+  // order, so the sum does not depend on the backend's grouping.
+  std::vector<double> values(size_t(settings.range));
+  for (size_t t = 0; t < sums.size(); ++t) {
+    backend->read(values.data(), totalValues[t].pointer,
+                  values.size() * sizeof(double));
+    double sum = 0.0;
+    for (double value : values)
+      sum += value;
+    sums[t] = sum;
+  }
+  return sums;
 }
 
 } // namespace sim::rt

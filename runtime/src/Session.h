@@ -60,6 +60,12 @@ public:
 
   void run(int64_t steps) override;
 
+  size_t numTotals() const override { return plan_->totals.size(); }
+  const std::string &totalName(size_t index) const override {
+    return plan_->totals[index].name;
+  }
+  std::vector<double> totals() override;
+
   size_t numComponents() const override { return plan_->components.size(); }
   const std::string &componentName(size_t index) const override {
     return plan_->components[index].name;
@@ -116,6 +122,8 @@ private:
 
   Memory clockMemory;
   std::vector<Memory> buffers, snapshots, exacts;
+  /// Per total: its per-item values (`range` doubles).
+  std::vector<Memory> totalValues;
   /// The host's copy of the clock as last read (valid after init).
   std::vector<int64_t> clock;
   bool allocated = false, initialized = false, prepared = false;

@@ -79,6 +79,8 @@ const char *phaseName(PhaseKind phase) {
     return "finish";
   case PhaseKind::Exact:
     return "exact";
+  case PhaseKind::Total:
+    return "total";
   }
   return "?";
 }
@@ -199,6 +201,13 @@ int Scene::findBuffer(std::string_view name) const {
 int Plan::findBuffer(std::string_view name) const {
   for (size_t i = 0; i < buffers.size(); ++i)
     if (buffers[i].name == name)
+      return int(i);
+  return -1;
+}
+
+int Plan::findTotal(std::string_view name) const {
+  for (size_t i = 0; i < totals.size(); ++i)
+    if (totals[i].name == name)
       return int(i);
   return -1;
 }
@@ -577,8 +586,19 @@ Plan parsePlan(std::string_view text, const Scene &scene, Strategy strategy) {
         component.writes.push_back(buffer);
       }
       plan.components.push_back(std::move(component));
+    } else if (record == "total") {
+      records.expectCount(3, "total <name> <f32|f64>");
+      PlanTotal total;
+      total.name = records.str(1);
+      if (plan.findTotal(total.name) >= 0)
+        records.error("total '" + total.name + "' is declared twice");
+      std::optional<ScalarType> type = parseScalarType(records[2]);
+      if (!type || (*type != ScalarType::F32 && *type != ScalarType::F64))
+        records.error("total type '" + records.str(2) + "' is not f32 or f64");
+      total.type = *type;
+      plan.totals.push_back(std::move(total));
     } else if (record == "phase") {
-      records.expectCount(2, "phase <init|step|finish|exact>");
+      records.expectCount(2, "phase <init|step|finish|exact|total>");
       std::optional<PhaseKind> kind;
       for (int i = 0; i < kNumPhases; ++i)
         if (records[1] == phaseName(PhaseKind(i)))
@@ -668,6 +688,12 @@ Plan parsePlan(std::string_view text, const Scene &scene, Strategy strategy) {
           bufferArg(*name, ArgKind::Snapshot);
         } else if (auto name = afterPrefix(field, "exact:")) {
           bufferArg(*name, ArgKind::Exact);
+        } else if (auto name = afterPrefix(field, "total:")) {
+          arg.kind = ArgKind::Total;
+          arg.index = plan.findTotal(*name);
+          if (arg.index < 0)
+            records.error("argument '" + std::string(field) +
+                          "' names no plan total");
         } else if (auto name = afterPrefix(field, "param:")) {
           arg.kind = ArgKind::Param;
           arg.index = scene.findParam(*name);
@@ -884,6 +910,23 @@ ReferenceModel parseReferenceModel(std::string_view text, const Scene &scene) {
         component.reads.push_back(read);
       }
       model.components.push_back(std::move(component));
+    } else if (record == "total") {
+      const char *syntax = "total <index> <name> <f32|f64> reads <B>...";
+      records.expectAtLeast(5, syntax);
+      index(model.totals.size(), "total index");
+      records.expect(4, "reads");
+      RefTotal total;
+      total.name = records.str(2);
+      for (const RefTotal &other : model.totals)
+        if (other.name == total.name)
+          records.error("total '" + total.name + "' is declared twice");
+      std::optional<ScalarType> type = parseScalarType(records[3]);
+      if (!type || (*type != ScalarType::F32 && *type != ScalarType::F64))
+        records.error("total type '" + records.str(3) + "' is not f32 or f64");
+      total.type = *type;
+      for (size_t i = 5; i < records.size(); ++i)
+        total.reads.push_back(buffer(i, "total '" + total.name + "' reads"));
+      model.totals.push_back(std::move(total));
     } else if (record == "schedule") {
       records.expectAtLeast(1, "schedule <component>...");
       for (size_t i = 1; i < records.size(); ++i) {

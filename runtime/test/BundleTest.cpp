@@ -376,6 +376,49 @@ TEST(PlanText, RejectsWhatDoesNotParse) {
   }
 }
 
+TEST(PlanText, ReadsTotals) {
+  std::string plan =
+      replace(decayPlan(kHip), "component Grow evaluations 9 writes V\n",
+              "component Grow evaluations 9 writes V\ntotal Energy f64\n"
+              "total Count f32\n") +
+      "phase total\nlaunch total_Energy items for - shared 0 0 args clock "
+      "buffer:X total:Energy range\nlaunch total_Count items for - shared 0 "
+      "0 args total:Count range\nend\n";
+  std::string bytes = writeBundle(withPlan(kHip, plan));
+  auto bundle = Bundle::parse(reinterpret_cast<const uint8_t *>(bytes.data()),
+                              bytes.size(), "t");
+  const Plan &parsed = bundle->code(Strategy::Hip).plan;
+  ASSERT_EQ(parsed.totals.size(), 2u);
+  EXPECT_EQ(parsed.totals[0].name, "Energy");
+  EXPECT_EQ(parsed.totals[0].type, ScalarType::F64);
+  EXPECT_EQ(parsed.totals[1].type, ScalarType::F32);
+  EXPECT_TRUE(parsed.hasPhase[int(PhaseKind::Total)]);
+  const std::vector<Launch> &totals = parsed.phase(PhaseKind::Total);
+  ASSERT_EQ(totals.size(), 2u);
+  EXPECT_EQ(totals[0].args[2].kind, ArgKind::Total);
+  EXPECT_EQ(totals[0].args[2].index, 0);
+  EXPECT_EQ(totals[1].args[0].index, 1);
+
+  struct Case {
+    std::string from, to, message;
+  } cases[] = {
+      {"total Energy f64", "total Energy f16",
+       "total type 'f16' is not f32 or f64"},
+      {"total Energy f64", "total Energy i32",
+       "total type 'i32' is not f32 or f64"},
+      {"total Count f32", "total Energy f32",
+       "total 'Energy' is declared twice"},
+      {"total Energy f64", "total Energy", "expected 'total <name> <f32|f64>'"},
+      {"args total:Count", "args total:Mass",
+       "argument 'total:Mass' names no plan total"},
+  };
+  for (const Case &c : cases) {
+    std::string message = errorOf(withPlan(kHip, replace(plan, c.from, c.to)));
+    EXPECT_NE(message.find(c.message), std::string::npos)
+        << "for '" << c.to << "': " << message;
+  }
+}
+
 TEST(PlanText, UnrollsRepeats) {
   std::string plan =
       replace(decayPlan(kHip),

@@ -135,6 +135,15 @@ int sim_c_api_test(const char *path, char *message, size_t capacity) {
   CHECK(sim_session_num_components(session) == 2);
   CHECK(strcmp(sim_session_component(session, 0), "Decay") == 0);
   CHECK(sim_session_component(session, 2) == NULL);
+  /* The decay scene declares no totals. */
+  CHECK(sim_session_num_totals(session) == 0);
+  CHECK(sim_session_total_name(session, 0) == NULL);
+  double total = 0;
+  CHECK(sim_session_total(session, "Energy", &total) ==
+        SIM_ERROR_INVALID_ARGUMENT);
+  CHECK(strstr(sim_last_error(), "'Energy' is not a total of scene 'decay'") !=
+        NULL);
+  CHECK(sim_session_total(session, NULL, &total) == SIM_ERROR_INVALID_ARGUMENT);
   CHECK(sim_session_evaluations(session, 0) == metrics.big_steps * 100);
   int64_t steps = 0, bigSteps = 0;
   for (int64_t m = 1; m <= 4; ++m) {

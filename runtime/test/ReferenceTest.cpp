@@ -110,6 +110,39 @@ TEST(ReferenceModelText, ParsesTheDecayModel) {
   EXPECT_EQ(probe.buffers[5].writer, 2);
 }
 
+TEST(ReferenceModelText, ReadsTotals) {
+  std::string text =
+      replace(decayReferenceModel(), "schedule Decay Grow\n",
+              "total 0 Energy f64 reads X V\ntotal 1 Count f32 reads\n"
+              "schedule Decay Grow\n");
+  ReferenceModel model = parseReferenceModel(text, decayScene_());
+  ASSERT_EQ(model.totals.size(), 2u);
+  EXPECT_EQ(model.totals[0].name, "Energy");
+  EXPECT_EQ(model.totals[0].type, ScalarType::F64);
+  EXPECT_EQ(model.totals[0].reads, (std::vector<int32_t>{0, 1}));
+  EXPECT_EQ(model.totals[1].type, ScalarType::F32);
+  EXPECT_TRUE(model.totals[1].reads.empty());
+
+  struct Case {
+    std::string from, to, message;
+  } cases[] = {
+      {"total 1 Count", "total 0 Count", "total index 0 is out of order"},
+      {"Count f32", "Count i64", "total type 'i64' is not f32 or f64"},
+      {"total 1 Count", "total 1 Energy", "total 'Energy' is declared twice"},
+      {"f64 reads X V", "f64 reads X W",
+       "total 'Energy' reads 'W', which is not a buffer declared before it"},
+      {"Energy f64 reads", "Energy f64 sees", "expected 'reads'"},
+  };
+  for (const Case &c : cases) {
+    std::string message = errorOf(
+        [&] {
+          parseReferenceModel(replace(text, c.from, c.to), decayScene_());
+        },
+        SIM_ERROR_BUNDLE);
+    EXPECT_TRUE(contains(message, c.message)) << c.message << "\n" << message;
+  }
+}
+
 TEST(ReferenceModelText, RejectsWhatDoesNotParse) {
   const std::string model = decayReferenceModel();
   struct Case {

@@ -50,6 +50,10 @@ OPTIONS:
   --repeat K                  run K times from the initial state and report the
                               median; with K > 1 one more warm-up run comes
                               first and is not counted (default 1)
+  --report-every N            run once more (a session of its own) from the
+                              initial state in chunks of N base steps and print
+                              the scene's totals at every output time (0, N,
+                              2N, ..., the end)
   --set NAME=VALUE            set range, dt or a scene parameter (repeatable)
   --group-size G              threads per group (default: the plan's; a
                               multiple of 32 on CUDA)
@@ -59,11 +63,12 @@ OPTIONS:
                               max-abs and the RMS-relative error
   --check                     also run the reference executor with the same
                               strategy, group size, --set values and steps,
-                              and compare per observed buffer, evaluations
-                              and big steps; exit status 1 if they disagree
+                              and compare per observed buffer, total,
+                              evaluations and big steps; exit status 1 if they
+                              disagree
   --check-tolerance X         a buffer passes --check when max-abs <= X *
                               max(1, max|reference|) (default 1e-4 for f32
-                              buffers, 1e-10 for f64)
+                              buffers, 1e-10 for f64; 1e-8 for totals)
   --dump DIR                  write the observed buffers as DIR/<buffer>.npy
                               (and the reference as <buffer>.reference.npy,
                               --check's as <buffer>.check.npy)
@@ -88,6 +93,8 @@ struct Options {
   sim_strategy strategy = SIM_STRATEGY_HIP;
   int64_t steps = 100;
   int64_t repeat = 1;
+  /// --report-every; 0: no report per output time.
+  int64_t reportEvery = 0;
   std::vector<std::pair<std::string, std::string>> sets;
   int64_t groupSize = 0;
   std::string reference;
@@ -177,6 +184,8 @@ Options parseOptions(int argc, char **argv) {
       options.steps = parseCount(name, takeValue(), 0);
     } else if (name == "--repeat") {
       options.repeat = parseCount(name, takeValue(), 1);
+    } else if (name == "--report-every") {
+      options.reportEvery = parseCount(name, takeValue(), 1);
     } else if (name == "--set") {
       std::string assignment = takeValue();
       size_t at = assignment.find('=');
@@ -685,6 +694,73 @@ void runFromStart(sim_session *session, const Options &options,
              std::to_string(options.steps));
 }
 
+/// The totals of a session at its current time, in declaration order.
+std::vector<double> totalsOf(sim_session *session) {
+  std::vector<double> values;
+  for (int32_t t = 0; t < sim_session_num_totals(session); ++t) {
+    double value = 0;
+    check(
+        sim_session_total(session, sim_session_total_name(session, t), &value));
+    values.push_back(value);
+  }
+  return values;
+}
+
+/// The totals at one output time.
+struct TotalsAt {
+  int64_t time;
+  std::vector<double> values;
+};
+
+/// --report-every: runs `steps` from the initial state in chunks of
+/// `every` base steps and takes the totals at the start and after each.
+std::vector<TotalsAt> totalsPerOutputTime(sim_session *session,
+                                          const Options &options,
+                                          Progress &progress,
+                                          const std::string &label) {
+  check(sim_session_init(session));
+  std::vector<TotalsAt> series = {{0, totalsOf(session)}};
+  while (sim_session_time(session) < options.steps) {
+    int64_t chunk = std::min(options.reportEvery,
+                             options.steps - sim_session_time(session));
+    progress.begin(label);
+    sim_session_set_progress(session, &Progress::report, &progress);
+    sim_status status = sim_session_run(session, chunk);
+    progress.end();
+    check(status);
+    series.push_back({sim_session_time(session), totalsOf(session)});
+  }
+  return series;
+}
+
+/// One total of the backend against the reference executor's.
+struct TotalRow {
+  std::string total;
+  int64_t time;
+  double backend, reference, limit;
+  bool pass;
+};
+
+/// Compares totals with `tolerance` (relative to max(1, |reference|)).
+void compareTotals(const std::vector<std::string> &names, int64_t time,
+                   const std::vector<double> &backend,
+                   const std::vector<double> &reference, double tolerance,
+                   std::vector<TotalRow> &rows,
+                   std::vector<std::string> &failures) {
+  for (size_t t = 0; t < names.size(); ++t) {
+    TotalRow row{names[t], time, backend[t], reference[t], 0, false};
+    row.limit = tolerance * std::max(1.0, std::fabs(row.reference));
+    // A NaN difference compares false: it fails.
+    row.pass = std::fabs(row.backend - row.reference) <= row.limit;
+    if (!row.pass)
+      failures.push_back("total " + row.total + " at base step " +
+                         std::to_string(time) + " differs (" +
+                         scientific(row.backend, 9) + " vs " +
+                         scientific(row.reference, 9) + ")");
+    rows.push_back(row);
+  }
+}
+
 int run(const Options &options) {
   TemporaryFile translated;
   std::string path = options.input;
@@ -731,6 +807,12 @@ int run(const Options &options) {
     }
   }
   double wall = median(walls), kernel = median(kernels);
+
+  // Totals at the end of the run (and per output time, below).
+  std::vector<std::string> totalNames;
+  for (int32_t t = 0; t < sim_session_num_totals(session.handle); ++t)
+    totalNames.push_back(sim_session_total_name(session.handle, t));
+  std::vector<double> totals = totalsOf(session.handle);
 
   char range[64], dt[64];
   check(sim_session_get(session.handle, "range", range, sizeof range));
@@ -781,6 +863,16 @@ int run(const Options &options) {
   // --check: the same run on the reference executor.
   std::optional<Check> checked;
   std::vector<Buffer> checkValues;
+  std::vector<TotalsAt> series;
+  std::vector<TotalRow> totalRows, seriesRows;
+  // --report-every runs on a session of its own, so that the measured run's
+  // counters stay what the table and --check report.
+  auto seriesOfNewSession = [&] {
+    Session chunked;
+    check(sim_session_create(bundle.handle, &sessionOptions, &chunked.handle));
+    applySets(chunked.handle, options);
+    return totalsPerOutputTime(chunked.handle, options, progress, "totals: ");
+  };
   if (options.check) {
     sim_session_options referenceOptions = sessionOptions;
     referenceOptions.backend = SIM_BACKEND_REFERENCE;
@@ -797,7 +889,22 @@ int run(const Options &options) {
     checked = compareWithReference(
         results, checkValues, workOf(session.handle, maxSteps),
         workOf(reference.handle, maxSteps), options.checkTolerance);
+    double totalTolerance =
+        options.checkTolerance > 0 ? options.checkTolerance : 1e-8;
+    compareTotals(totalNames, options.steps, totals, totalsOf(reference.handle),
+                  totalTolerance, totalRows, checked->failures);
+    if (options.reportEvery > 0 && !totalNames.empty()) {
+      std::vector<TotalsAt> theirs = totalsPerOutputTime(
+          reference.handle, options, progress, "check totals: ");
+      series = seriesOfNewSession();
+      for (size_t k = 0; k < series.size() && k < theirs.size(); ++k)
+        compareTotals(totalNames, series[k].time, series[k].values,
+                      theirs[k].values, totalTolerance, seriesRows,
+                      checked->failures);
+    }
   }
+  if (options.reportEvery > 0 && series.empty())
+    series = seriesOfNewSession();
 
   if (!options.dump.empty()) {
     makeDirectory(options.dump);
@@ -866,6 +973,23 @@ int run(const Options &options) {
                     comparison.buffer.c_str());
     row(label.c_str(), text);
   }
+  auto formatTotals = [&](const std::vector<double> &values) {
+    std::string text;
+    for (size_t t = 0; t < values.size(); ++t)
+      text += (t ? "  " : "") + totalNames[t] + " " + scientific(values[t], 9);
+    return text;
+  };
+  if (!series.empty()) {
+    std::printf("\ntotals every %lld base steps:\n",
+                (long long)options.reportEvery);
+    double dtValue = std::strtod(dt, nullptr);
+    for (const TotalsAt &at : series)
+      std::printf("  T %lld  time %s  %s\n", (long long)at.time,
+                  scientific(double(at.time) * dtValue, 9).c_str(),
+                  formatTotals(at.values).c_str());
+  }
+  if (!totalNames.empty())
+    std::printf("\ntotals  %s\n", formatTotals(totals).c_str());
 
   if (checked) {
     std::printf("\ncheck against the reference executor (strategy %s, group "
@@ -884,6 +1008,16 @@ int run(const Options &options) {
                          " values non-finite on both sides)")
                             .c_str()
                       : "");
+    for (const TotalRow &total : totalRows)
+      std::printf("  total %s  backend %.9e  reference %.9e  limit %.1e  %s\n",
+                  total.total.c_str(), total.backend, total.reference,
+                  total.limit, total.pass ? "pass" : "FAIL");
+    if (!seriesRows.empty()) {
+      bool all = std::all_of(seriesRows.begin(), seriesRows.end(),
+                             [](const TotalRow &row) { return row.pass; });
+      std::printf("  totals at %zu output times  %s\n",
+                  seriesRows.size() / totalNames.size(), all ? "pass" : "FAIL");
+    }
     auto text = [](int64_t count) {
       return count < 0 ? std::string("-") : std::to_string(count);
     };
@@ -952,7 +1086,25 @@ int run(const Options &options) {
       json << (c ? ", " : "")
            << jsonString(sim_session_component(session.handle, c)) << ": "
            << sim_session_evaluations(session.handle, c);
-    json << "},\n  \"reference\": "
+    json << "},\n  \"totals\": {";
+    for (size_t t = 0; t < totalNames.size(); ++t)
+      json << (t ? ", " : "") << jsonString(totalNames[t]) << ": "
+           << jsonNumber(totals[t]);
+    json << "},\n  \"totals_per_output_time\": ";
+    if (series.empty()) {
+      json << "null";
+    } else {
+      json << "[";
+      for (size_t k = 0; k < series.size(); ++k) {
+        json << (k ? ", " : "") << "{\"T\": " << series[k].time;
+        for (size_t t = 0; t < totalNames.size(); ++t)
+          json << ", " << jsonString(totalNames[t]) << ": "
+               << jsonNumber(series[k].values[t]);
+        json << "}";
+      }
+      json << "]";
+    }
+    json << ",\n  \"reference\": "
          << (options.reference.empty() ? "null" : jsonString(options.reference))
          << ",\n  \"error\": {";
     bool first = true;
@@ -996,7 +1148,14 @@ int run(const Options &options) {
            << sim_session_group_size(session.handle)
            << ",\n    \"steps\": " << options.steps
            << ",\n    \"pass\": " << boolean(checked->failures.empty())
-           << ",\n    \"buffers\": {";
+           << ",\n    \"totals\": {";
+      for (size_t i = 0; i < totalRows.size(); ++i)
+        json << (i ? ", " : "") << jsonString(totalRows[i].total)
+             << ": {\"backend\": " << jsonNumber(totalRows[i].backend)
+             << ", \"reference\": " << jsonNumber(totalRows[i].reference)
+             << ", \"limit\": " << jsonNumber(totalRows[i].limit)
+             << ", \"pass\": " << boolean(totalRows[i].pass) << "}";
+      json << "},\n    \"buffers\": {";
       for (size_t i = 0; i < checked->buffers.size(); ++i) {
         const Check::BufferRow &row = checked->buffers[i];
         json << (i ? ", " : "") << jsonString(row.buffer)

@@ -187,7 +187,8 @@ private:
   void planClock();
 
   // Kernels and launches.
-  Kernel beginKernel(StringRef name, BufferOp exactOf = nullptr);
+  Kernel beginKernel(StringRef name, BufferOp exactOf = nullptr,
+                     TotalOp totalOf = nullptr);
   LogicalResult endKernel(Kernel &kernel, simplan::LaunchShape shape,
                           OpBuilder &launches, ComponentOp component = nullptr);
   void readClock(Kernel &kernel, Value &begin, Value &size, Value &parity);
@@ -229,6 +230,7 @@ private:
   LogicalResult emitResetClock(OpBuilder &launches);
   LogicalResult emitInit(BufferOp buffer, OpBuilder &launches);
   LogicalResult emitExact(BufferOp buffer, OpBuilder &launches);
+  LogicalResult emitTotal(TotalOp total, OpBuilder &launches);
   LogicalResult emitEstimate(ComponentOp component, OpBuilder &launches);
   LogicalResult emitAdvance(OpBuilder &launches, bool hasEstimates);
   LogicalResult emitEvaluate(ComponentOp component, OpBuilder &launches);
@@ -291,6 +293,15 @@ LogicalResult SimulationLowering::checkFrontEnd() {
     if (walk.wasInterrupted())
       return failure();
   }
+  for (TotalOp total : simulation.getTotals()) {
+    WalkResult walk = total.walk([](ReadOp read) {
+      read.emitOpError() << "is a view read; run --sim-insert-interpolation "
+                            "(or the whole front end) before lowering it";
+      return WalkResult::interrupt();
+    });
+    if (walk.wasInterrupted())
+      return failure();
+  }
   for (ParamOp param : simulation.getParams()) {
     Type type = cast<TypedAttr>(param.getValue()).getType();
     if (!type.isInteger(32) && !type.isInteger(64) && !type.isIndex() &&
@@ -330,7 +341,8 @@ void SimulationLowering::planClock() {
 /// Every kernel starts with every argument a body could read; endKernel drops
 /// the ones it does not use, so each launch passes only what its kernel
 /// needs.
-Kernel SimulationLowering::beginKernel(StringRef name, BufferOp exactOf) {
+Kernel SimulationLowering::beginKernel(StringRef name, BufferOp exactOf,
+                                       TotalOp totalOf) {
   MLIRContext *context = simulation.getContext();
   auto arg = [&](simplan::ArgKind kind, StringAttr symbol = {}) {
     return simplan::ArgAttr::get(
@@ -358,6 +370,11 @@ Kernel SimulationLowering::beginKernel(StringRef name, BufferOp exactOf) {
     types.push_back(dynamic(exactOf.getElementType()));
     kernel.args.push_back(
         arg(simplan::ArgKind::exact, exactOf.getSymNameAttr()));
+  }
+  if (totalOf) {
+    types.push_back(dynamic(b.getF64Type()));
+    kernel.args.push_back(
+        arg(simplan::ArgKind::total, totalOf.getSymNameAttr()));
   }
   for (ParamOp param : params) {
     // An index parameter is passed as i64 (sim.get_param casts it back).
@@ -388,6 +405,7 @@ Kernel SimulationLowering::beginKernel(StringRef name, BufferOp exactOf) {
     if (buffer.getSnapshot())
       values.snapshots[buffer.getSymNameAttr()] = next();
   Value exactOut = exactOf ? next() : Value();
+  kernel.totalOut = totalOf ? next() : Value();
   for (ParamOp param : params)
     values.params[param.getSymName()] = next();
   Value range = next();
@@ -655,6 +673,28 @@ LogicalResult SimulationLowering::emitExact(BufferOp buffer,
       Value value =
           inline_(buffer.getExact(), {lane.item, kernel.time}, values).front();
       b.store(value, out, lane.item);
+    });
+  });
+  return endKernel(kernel, simplan::LaunchShape::items, launches);
+}
+
+/// The value of one total at every item, at the current T (after a run's
+/// finish, or after init): reads load the source half, the one the clock's
+/// parity selects. The per-item values go out as f64; the runtime sums them.
+LogicalResult SimulationLowering::emitTotal(TotalOp total,
+                                            OpBuilder &launches) {
+  Kernel kernel = beginKernel(("total_" + total.getSymName()).str(),
+                              /*exactOf=*/nullptr, total);
+  Value parity = b.load(kernel.clock, b.index(kSlotParity));
+  kernel.values.sourceBase = b.mul(b.toIndex(parity), kernel.values.range);
+  forEachItem(kernel, [&](const Lane &lane) {
+    b.ifThen(lane.active, [&] {
+      KernelValues values = kernel.values;
+      values.item = lane.item;
+      Value value = inline_(total.getBody(), {lane.item}, values).front();
+      if (!value.getType().isF64())
+        value = arith::ExtFOp::create(b, b.loc, b.getF64Type(), value);
+      b.store(value, kernel.totalOut, lane.item);
     });
   });
   return endKernel(kernel, simplan::LaunchShape::items, launches);
@@ -1073,6 +1113,10 @@ LogicalResult SimulationLowering::run() {
         component.getWrites(),
         planBuilder.getI64IntegerAttr(evaluationSlots.lookup(component)));
 
+  for (TotalOp total : simulation.getTotals())
+    simplan::TotalOp::create(planBuilder, total.getLoc(),
+                             total.getSymNameAttr(), total.getValueTypeAttr());
+
   auto phase = [&](simplan::PhaseKind kind) {
     auto op = simplan::PhaseOp::create(planBuilder, simulation.getLoc(), kind);
     return OpBuilder::atBlockEnd(&op.getBody().emplaceBlock());
@@ -1135,6 +1179,14 @@ LogicalResult SimulationLowering::run() {
     OpBuilder exact = phase(simplan::PhaseKind::exact);
     for (BufferOp buffer : buffers)
       if (!buffer.getExact().empty() && failed(emitExact(buffer, exact)))
+        return failure();
+  }
+
+  // total: the per-item values of the totals the scene declares.
+  if (!simulation.getTotals().empty()) {
+    OpBuilder totals = phase(simplan::PhaseKind::total);
+    for (TotalOp total : simulation.getTotals())
+      if (failed(emitTotal(total, totals)))
         return failure();
   }
   simulation.erase();

@@ -160,6 +160,15 @@ std::string ReferenceLowering::model() {
       os << " " << name;
     os << "\n";
   }
+  for (auto [index, total] : llvm::enumerate(simulation.getTotals())) {
+    os << "total " << index << " " << total.getSymName() << " "
+       << typeString(total.getValueType()) << " reads";
+    llvm::SetVector<StringRef> reads;
+    total.walk([&](ReadOp read) { reads.insert(read.getBuffer()); });
+    for (StringRef name : reads)
+      os << " " << name;
+    os << "\n";
+  }
   os << "schedule";
   for (ComponentOp component : order)
     os << " " << component.getSymName();
@@ -374,6 +383,19 @@ LogicalResult ReferenceLowering::run() {
                 return LLVM::LoadOp::create(builder, component.getLoc(),
                                             ptrType, slot);
               });
+            })))
+      return failure();
+  }
+  int64_t totalNumber = 0;
+  for (TotalOp total : simulation.getTotals()) {
+    if (failed(lowerBody(
+            total.getBody(), "sim_ref_total_" + std::to_string(totalNumber++),
+            {i64, ptrType}, {},
+            [&](OpBuilder &builder, ValueRange args, IRMapping &mapping) {
+              mapping.map(total.getItem(), itemArgument(builder, args[0]));
+            },
+            [&](OpBuilder &builder, ValueRange args, ValueRange values) {
+              storeAll(builder, values, [&](unsigned) { return args.back(); });
             })))
       return failure();
   }

@@ -231,6 +231,7 @@ LogicalResult writeArg(simplan::LaunchOp launch, simplan::ArgAttr arg,
   case simplan::ArgKind::snapshot:
   case simplan::ArgKind::exact:
   case simplan::ArgKind::param:
+  case simplan::ArgKind::total:
     if (!arg.getName())
       return launch.emitOpError() << "passes " << arg << " without a name";
     os << simplan::stringifyArgKind(arg.getKind()) << ":"
@@ -299,6 +300,9 @@ LogicalResult mlir::sim::writePlanText(simplan::PlanOp plan, raw_ostream &os) {
       for (auto name : component.getWrites().getAsRange<FlatSymbolRefAttr>())
         os << " " << name.getValue();
       os << "\n";
+    } else if (auto total = dyn_cast<simplan::TotalOp>(op)) {
+      os << "total " << total.getSymName() << " "
+         << getTypeText(total.getType()) << "\n";
     } else if (auto phase = dyn_cast<simplan::PhaseOp>(op)) {
       os << "phase " << simplan::stringifyPhaseKind(phase.getKind()) << "\n";
       if (failed(writeLaunches(phase.getBody().front(), os)))

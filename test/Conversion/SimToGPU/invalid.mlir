@@ -80,3 +80,27 @@ sim.simulation @early range(8) dt(1.0e-2 : f32) max_steps(2) attributes {strateg
   sim.schedule [@Keep] bounded_by [@Keep]
   sim.observe [@X]
 }
+
+// -----
+
+// A total whose reads --sim-insert-interpolation has not turned into loads.
+sim.simulation @rawtotal range(8) dt(1.0e-2 : f32) max_steps(2) attributes {strategy = #sim<strategy simple>} {
+  sim.buffer @X : f32 init {
+  ^bb0(%i: index):
+    %c = arith.constant 1.0 : f32
+    sim.yield %c : f32
+  }
+  sim.component @Keep writes(@X) attributes {parity = #sim<parity none>, sub_stepping = #sim<sub_stepping in_kernel>} evaluate {
+  ^bb0(%i: index, %t: i64, %n: i32, %dt: f32):
+    %x = sim.load local @X[%i] : f32
+    sim.yield %x : f32
+  }
+  sim.total @Sum : f32 {
+  ^bb0(%i: index):
+    // expected-error @+1 {{'sim.read' op is a view read; run --sim-insert-interpolation (or the whole front end) before lowering it}}
+    %x = sim.read @X[%i] : f32
+    sim.yield %x : f32
+  }
+  sim.schedule [@Keep]
+  sim.observe [@X]
+}

@@ -449,7 +449,7 @@ sim.simulation @s range(16) dt(1.0 : f32) max_steps(1) {
 // sim.yield
 //===----------------------------------------------------------------------===//
 
-// expected-error @+1 {{'sim.yield' op expects parent op to be one of 'sim.buffer, sim.component, sim.fill_cache'}}
+// expected-error @+1 {{'sim.yield' op expects parent op to be one of 'sim.buffer, sim.component, sim.fill_cache, sim.total'}}
 sim.yield
 
 // -----
@@ -464,7 +464,7 @@ sim.simulation @s range(16) dt(1.0 : f32) max_steps(1) {
   ^bb0(%i: index, %t: i64, %n: i32, %dt: f32):
     %x = sim.read @B[%i] : f32
     %r = scf.execute_region -> f32 {
-      // expected-error @+1 {{'sim.yield' op expects parent op to be one of 'sim.buffer, sim.component, sim.fill_cache'}}
+      // expected-error @+1 {{'sim.yield' op expects parent op to be one of 'sim.buffer, sim.component, sim.fill_cache, sim.total'}}
       sim.yield %x : f32
     }
     sim.yield %r : f32

@@ -78,7 +78,7 @@ sim.simulation @s range(16) dt(1 : i32) max_steps(1) {
 // -----
 
 sim.simulation @s range(16) dt(1.0 : f32) max_steps(1) {
-  // expected-error @+1 {{'arith.constant' cannot appear directly in a simulation; it holds only sim.param, sim.buffer, sim.component, sim.schedule and sim.observe}}
+  // expected-error @+1 {{'arith.constant' cannot appear directly in a simulation; it holds only sim.param, sim.buffer, sim.component, sim.total, sim.schedule and sim.observe}}
   %c = arith.constant 0 : i32
 }
 

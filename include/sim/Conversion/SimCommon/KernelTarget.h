@@ -100,6 +100,8 @@ struct Kernel {
   KernelValues values;
   /// The time argument of an exact kernel.
   Value time;
+  /// The per-item output array (f64) of a total kernel.
+  Value totalOut;
   /// Target-specific state of the kernel (for example its workgroup
   /// memory for group minima).
   llvm::SmallVector<Value> targetState;

@@ -68,13 +68,15 @@ void PlanDialect::registerAttributes() {
 /// Kinds that name a symbol of the plan.
 static bool needsName(ArgKind kind) {
   return kind == ArgKind::buffer || kind == ArgKind::snapshot ||
-         kind == ArgKind::exact || kind == ArgKind::param;
+         kind == ArgKind::exact || kind == ArgKind::param ||
+         kind == ArgKind::total;
 }
 
 /// Kinds that the runtime passes as memory (a memref descriptor).
 static bool isMemory(ArgKind kind) {
   return kind == ArgKind::clock || kind == ArgKind::buffer ||
-         kind == ArgKind::snapshot || kind == ArgKind::exact;
+         kind == ArgKind::snapshot || kind == ArgKind::exact ||
+         kind == ArgKind::total;
 }
 
 LogicalResult ArgAttr::verify(function_ref<InFlightDiagnostic()> emitError,
@@ -126,7 +128,7 @@ void ArgAttr::print(AsmPrinter &printer) const {
 
 LogicalResult PlanOp::verifyRegions() {
   for (Operation &op : getBlock()) {
-    if (!isa<ParamOp, BufferOp, ComponentOp, PhaseOp>(op))
+    if (!isa<ParamOp, BufferOp, ComponentOp, TotalOp, PhaseOp>(op))
       return op.emitOpError() << "cannot appear directly in a plan";
   }
   llvm::SmallDenseSet<PhaseKind> phases;
@@ -181,6 +183,13 @@ LogicalResult LaunchOp::verifySymbolUses(SymbolTableCollection &symbolTable) {
     if (!attr.getName())
       continue;
     Operation *symbol = symbolTable.lookupSymbolIn(plan, attr.getName());
+    if (attr.getKind() == ArgKind::total) {
+      if (!isa_and_nonnull<TotalOp>(symbol))
+        return emitOpError()
+               << "passes " << attr << ", but the plan has no total "
+               << attr.getName();
+      continue;
+    }
     bool isParam = attr.getKind() == ArgKind::param;
     auto buffer = dyn_cast_or_null<BufferOp>(symbol);
     if (isParam ? !isa_and_nonnull<ParamOp>(symbol) : !buffer)

@@ -37,6 +37,8 @@ StringRef mlir::sim::stringifyBodyKind(BodyKind kind) {
     return "init";
   case BodyKind::Exact:
     return "exact";
+  case BodyKind::Total:
+    return "total";
   }
   llvm_unreachable("unknown body kind");
 }
@@ -66,6 +68,8 @@ std::optional<BodyLocation> mlir::sim::getEnclosingBody(Operation *op) {
           region == &buffer.getInit() ? BodyKind::Init : BodyKind::Exact;
       return BodyLocation{kind, nullptr, buffer};
     }
+    if (auto total = dyn_cast<TotalOp>(parent))
+      return BodyLocation{BodyKind::Total, nullptr, nullptr, total};
     region = parent->getParentRegion();
   }
   return std::nullopt;
@@ -364,12 +368,12 @@ LogicalResult SimulationOp::verifyRegions() {
       observe = &op;
       continue;
     }
-    if (!isa<ParamOp, BufferOp, ComponentOp>(op))
+    if (!isa<ParamOp, BufferOp, ComponentOp, TotalOp>(op))
       return op.emitError()
              << "'" << op.getName()
              << "' cannot appear directly in a simulation; it holds only "
-                "sim.param, sim.buffer, sim.component, sim.schedule and "
-                "sim.observe";
+                "sim.param, sim.buffer, sim.component, sim.total, "
+                "sim.schedule and sim.observe";
   }
 
   // Every buffer is written by exactly one component.
@@ -552,6 +556,33 @@ LogicalResult BufferOp::verify() {
                            << formatTypes(exactYield.getValues().getTypes())
                            << ")";
   }
+  return success();
+}
+
+//===----------------------------------------------------------------------===//
+// TotalOp
+//===----------------------------------------------------------------------===//
+
+void TotalOp::getAsmBlockArgumentNames(Region &region,
+                                       OpAsmSetValueNameFn setNameFn) {
+  nameBodyArguments(region, {"i"}, setNameFn);
+}
+
+LogicalResult TotalOp::verify() {
+  Type type = getValueType();
+  if (!type.isF32() && !type.isF64())
+    return emitOpError() << "expects a total of type f32 or f64, but got "
+                         << type;
+  Builder b(getContext());
+  YieldOp yield = verifyBodySignature(*this, getBody(), "total",
+                                      {b.getIndexType()}, "(index)");
+  if (!yield)
+    return failure();
+  if (yield.getValues().getTypes() != TypeRange(type))
+    return emitOpError() << "expects the total body to yield one value of "
+                            "the total's type "
+                         << type << ", but it yields ("
+                         << formatTypes(yield.getValues().getTypes()) << ")";
   return success();
 }
 
@@ -773,9 +804,16 @@ LogicalResult ReadOp::verifySymbolUses(SymbolTableCollection &symbolTable) {
 
 LogicalResult LoadOp::verify() {
   std::optional<BodyLocation> body = getEnclosingBody(*this);
+  if (body && body->total) {
+    if (getVersion() != Version::source)
+      return emitOpError() << "loads the " << stringifyVersion(getVersion())
+                           << " copy in a total body; a total reads the "
+                              "state at T, the source copy";
+    return success();
+  }
   if (!body || !body->component)
     return emitOpError() << "must be inside a component's num_steps or "
-                            "evaluate body";
+                            "evaluate body, or a total body";
   return success();
 }
 
@@ -789,6 +827,8 @@ LogicalResult LoadOp::verifySymbolUses(SymbolTableCollection &symbolTable) {
                          << ", but the memory plan keeps none: the buffer is "
                             "not marked 'snapshot'";
   ComponentOp component = getEnclosingBody(*this)->component;
+  if (!component)
+    return success(); // A total body's source load (checked by verify()).
   if (getVersion() == Version::cache && !findFillCache(*this, getBufferAttr()))
     return emitOpError() << "loads the cache of " << getBufferAttr()
                          << ", but the body fills no cache of it "

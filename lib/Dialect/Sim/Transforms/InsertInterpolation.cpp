@@ -156,6 +156,22 @@ struct InsertInterpolationPass
                              BodyKind::Evaluate, subSteps)))
         return signalPassFailure();
     }
+    for (TotalOp total : simulation.getTotals())
+      rewriteTotal(total);
+  }
+
+  /// A total reads every buffer at T, after a run: the source copy (the
+  /// half the clock's parity selects), whatever the strategy.
+  void rewriteTotal(TotalOp total) {
+    SmallVector<ReadOp> reads;
+    total.getBody().walk([&](ReadOp read) { reads.push_back(read); });
+    IRRewriter rewriter(&getContext());
+    for (ReadOp read : reads) {
+      rewriter.setInsertionPoint(read);
+      rewriter.replaceOpWithNewOp<LoadOp>(
+          read, read.getType(), read.getBufferAttr(), read.getIndex(),
+          VersionAttr::get(&getContext(), Version::source));
+    }
   }
 
   /// An interpolation's auxiliary buffers must be advanced before the

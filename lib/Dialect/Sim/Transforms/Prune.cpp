@@ -1,7 +1,8 @@
 //===- Prune.cpp - remove what no observed output needs -------------------===//
 //
-// "Model only what a scene needs": a buffer is needed when it is observed or
-// when something needed depends on it. The dependencies of a buffer B are
+// "Model only what a scene needs": a buffer is needed when it is observed,
+// when a `sim.total` reads it (a total is an output too), or when something
+// needed depends on it. The dependencies of a buffer B are
 // computed per written buffer, not per component: the buffers its writer
 // reads in num_steps (the step size affects everything it writes), the
 // buffers read in the backward slice of B's yielded value in evaluate, the
@@ -95,6 +96,8 @@ struct PrunePass : public sim::impl::SimPruneBase<PrunePass> {
     SymbolSet needed;
     for (auto name : observe.getBuffers().getAsRange<FlatSymbolRefAttr>())
       needed.insert(name.getAttr());
+    for (TotalOp total : simulation.getTotals())
+      collectRegionReads(total.getBody(), needed);
     // `needed` grows while we walk it: it doubles as the worklist.
     for (unsigned index = 0; index < needed.size(); ++index) {
       BufferOp buffer =

@@ -233,6 +233,16 @@ SIM_API int sim_session_has_exact(const sim_session *session,
 SIM_API sim_status sim_session_exact(sim_session *session, const char *buffer,
                                      void *data, size_t bytes);
 
+/// The totals the scene declares (`sim.total`: sums over all items it
+/// observes), in declaration order.
+SIM_API int32_t sim_session_num_totals(const sim_session *session);
+SIM_API const char *sim_session_total_name(const sim_session *session,
+                                           int32_t index);
+/// The value of total `name` at the current time: the device computes the
+/// value of every item, the host adds them in item order in double.
+SIM_API sim_status sim_session_total(sim_session *session, const char *name,
+                                     double *out);
+
 /// Called after each host synchronisation of a run with the base steps done
 /// so far and the run's total.
 typedef void (*sim_progress_fn)(void *user, int64_t done, int64_t total);

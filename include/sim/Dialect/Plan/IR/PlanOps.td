@@ -23,13 +23,15 @@ include "mlir/IR/SymbolInterfaces.td"
 
 def Plan_PhaseKind : I32Enum<"PhaseKind", "when a phase runs", [
     I32EnumCase<"init", 0>, I32EnumCase<"step", 1>, I32EnumCase<"finish", 2>,
-    I32EnumCase<"exact", 3>]> {
+    I32EnumCase<"exact", 3>, I32EnumCase<"total", 4>]> {
   let cppNamespace = "::mlir::simplan";
   let description = [{
     `init` runs once before the first big step; `step` is one big step and is
     repeated until the clock reaches the end of the run; `finish` runs once
     after the last big step of a run; `exact` evaluates the exact solution of
-    the buffers that declare one, at a time given by the runtime.
+    the buffers that declare one, at a time given by the runtime; `total`
+    writes the per-item values of every `simplan.total` at the current `T`
+    (the runtime sums them).
   }];
 }
 def Plan_PhaseKindAttr : EnumAttr<Plan_Dialect, Plan_PhaseKind, "phase">;
@@ -50,7 +52,8 @@ def Plan_ArgKind : I32Enum<"ArgKind", "what a launch argument is", [
     I32EnumCase<"clock", 0>, I32EnumCase<"buffer", 1>,
     I32EnumCase<"snapshot", 2>, I32EnumCase<"exact", 3>,
     I32EnumCase<"param", 4>, I32EnumCase<"range", 5>, I32EnumCase<"dt", 6>,
-    I32EnumCase<"max_steps", 7>, I32EnumCase<"time", 8>]> {
+    I32EnumCase<"max_steps", 7>, I32EnumCase<"time", 8>,
+    I32EnumCase<"total", 9>]> {
   let cppNamespace = "::mlir::simplan";
   let description = [{
     `clock`: the clock (`memref<?xi64>`, `clock_slots` entries). `buffer @B`:
@@ -60,7 +63,8 @@ def Plan_ArgKind : I32Enum<"ArgKind", "what a launch argument is", [
     elements). `param @P`: the run-time value of parameter P (its type).
     `range`: the item count (`i64`). `dt`: the base time step (the plan's dt
     type). `max_steps`: the largest big step (`i64`). `time`: the time of an
-    exact solution, in time units (`f64`).
+    exact solution, in time units (`f64`). `total @T`: the per-item values of
+    total T (`memref<?xf64>`, `range` elements).
   }];
 }
 
@@ -190,6 +194,22 @@ def Plan_ComponentOp : Plan_Op<"component", [Symbol, HasParent<"PlanOp">]> {
   let assemblyFormat = [{
     $sym_name `writes` $writes `evaluations` `(` $evaluations `)` attr-dict
   }];
+}
+
+def Plan_TotalOp : Plan_Op<"total", [Symbol, HasParent<"PlanOp">]> {
+  let summary = "a total the scene observes, summed by the runtime";
+  let description = [{
+    A `sim.total` of the scene: the `total` phase writes its value at every
+    item, as `f64`, into an array of `range` elements
+    (`#simplan.arg<total @T>`); the runtime adds them in item order in
+    double precision. `type` is the type the scene declared.
+
+    ```mlir
+    simplan.total @Energy : f64
+    ```
+  }];
+  let arguments = (ins SymbolNameAttr:$sym_name, TypeAttr:$type);
+  let assemblyFormat = "$sym_name `:` $type attr-dict";
 }
 
 def Plan_PhaseOp : Plan_Op<"phase", [HasParent<"PlanOp">, NoTerminator,

@@ -32,9 +32,10 @@ struct CacheResource : public SideEffects::Resource::Base<CacheResource> {
 };
 
 /// The kinds of bodies that may read state.
-enum class BodyKind { NumSteps, Evaluate, Init, Exact };
+enum class BodyKind { NumSteps, Evaluate, Init, Exact, Total };
 
-/// Returns a printable name ("num_steps", "evaluate", "init", "exact").
+/// Returns a printable name ("num_steps", "evaluate", "init", "exact",
+/// "total").
 StringRef stringifyBodyKind(BodyKind kind);
 
 /// Returns true when `type` can be a buffer element: f32, f64, or a vector of
@@ -56,6 +57,8 @@ struct BodyLocation {
   ComponentOp component;
   /// The buffer for init and exact bodies, else null.
   BufferOp buffer;
+  /// The total for a total body, else null.
+  TotalOp total = nullptr;
 };
 std::optional<BodyLocation> getEnclosingBody(Operation *op);
 

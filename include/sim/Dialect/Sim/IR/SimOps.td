@@ -45,7 +45,8 @@ def Sim_SimulationOp : Sim_Op<"simulation", [
     A simulation advances the state of `range` items in base steps of `dt`
     time units. Big steps take at most `max_steps` base steps. The body is a
     graph region (order does not matter) of `sim.param`, `sim.buffer`,
-    `sim.component`, at most one `sim.schedule` and at most one `sim.observe`.
+    `sim.component`, `sim.total`, at most one `sim.schedule` and at most one
+    `sim.observe`.
 
     ```mlir
     sim.simulation @gravity_like range(65536) dt(1.0e-3 : f32) max_steps(3) {
@@ -88,6 +89,7 @@ def Sim_SimulationOp : Sim_Op<"simulation", [
     auto getBuffers() { return getBody().front().getOps<BufferOp>(); }
     auto getComponents() { return getBody().front().getOps<ComponentOp>(); }
     auto getParams() { return getBody().front().getOps<ParamOp>(); }
+    auto getTotals() { return getBody().front().getOps<TotalOp>(); }
     /// The schedule, or null when the user gave none and no pass made one.
     ScheduleOp getScheduleOp();
     /// The observed outputs, or null.
@@ -259,6 +261,53 @@ def Sim_BufferOp : Sim_Op<"buffer", [
 }
 
 //===----------------------------------------------------------------------===//
+// TotalOp
+//===----------------------------------------------------------------------===//
+
+def Sim_TotalOp : Sim_Op<"total", [
+    Symbol, IsolatedFromAbove, HasParent<"SimulationOp">,
+    DeclareOpInterfaceMethods<OpAsmOpInterface, ["getAsmBlockArgumentNames"]>]> {
+  let summary = "a total the scene observes: a sum over all items";
+  let description = [{
+    A total (energy, momentum, mass) is the sum over all items `%i` of the
+    range of the value its body yields for `%i`: one `f32` or `f64` scalar
+    (the declared type). Reads in the body see every buffer at the current
+    time `T` (the state a runtime reads after a run), not initial states as
+    in `init` and `exact` bodies, and not an interpolation. A runtime adds
+    the per-item values in item order in double precision.
+
+    A total is an output like an observed buffer: `--sim-prune` keeps
+    everything its body reads. It is not a component: the schedule, the
+    dependency graph and the memory plan ignore it, and
+    `--sim-insert-interpolation` turns its reads into loads of the
+    `source` copy (the half the clock's parity selects).
+
+    ```mlir
+    sim.total @Energy : f64 {
+    ^bb0(%i: index):
+      %v = sim.read @V[%i] : f64
+      %half = arith.constant 0.5 : f64
+      %v2 = arith.mulf %v, %v : f64
+      %e = arith.mulf %half, %v2 : f64
+      sim.yield %e : f64
+    }
+    ```
+  }];
+
+  let arguments = (ins SymbolNameAttr:$sym_name, TypeAttr:$value_type);
+  let regions = (region SizedRegion<1>:$body);
+  let assemblyFormat = [{
+    $sym_name `:` $value_type attr-dict-with-keyword $body
+  }];
+  let hasVerifier = 1;
+
+  let extraClassDeclaration = [{
+    /// The item argument `%i` of the body.
+    ::mlir::BlockArgument getItem() { return getBody().front().getArgument(0); }
+  }];
+}
+
+//===----------------------------------------------------------------------===//
 // ComponentOp
 //===----------------------------------------------------------------------===//
 
@@ -405,10 +454,10 @@ def Sim_ObserveOp : Sim_Op<"observe", [HasParent<"SimulationOp">,
 //===----------------------------------------------------------------------===//
 
 def Sim_YieldOp : Sim_Op<"yield", [Pure, Terminator, ReturnLike,
-    ParentOneOf<["BufferOp", "ComponentOp", "FillCacheOp"]>]> {
-  let summary = "returns the values of a buffer, component or fill body";
+    ParentOneOf<["BufferOp", "ComponentOp", "FillCacheOp", "TotalOp"]>]> {
+  let summary = "returns the values of a buffer, component, fill or total body";
   let description = [{
-    Terminates `init`, `exact`, `num_steps` and `evaluate` bodies.
+    Terminates `init`, `exact`, `num_steps`, `evaluate` and total bodies.
 
     ```mlir
     sim.yield %x, %v : f64, f64
@@ -427,7 +476,8 @@ def Sim_ReadOp : Sim_Op<"read", [
     at the end `t + n` of the sub-step for buffers advanced earlier in the
     step, at `T` for buffers read through the back edge, and the own current
     state for buffers the component writes; in `num_steps` everything at `t`;
-    in `init` and `exact` bodies the initial state. The index may be any
+    in `init` and `exact` bodies the initial state; in a `sim.total` body the
+    state at `T`. The index may be any
     value; the analyses classify it (own item, window `%i + c`, gather).
     Items outside the range follow the buffer's boundary rule.
 

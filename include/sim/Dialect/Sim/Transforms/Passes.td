@@ -116,7 +116,7 @@ def SimPrune : Pass<"sim-prune", "::mlir::sim::SimulationOp"> {
   let summary = "Remove what no observed output depends on";
   let description = [{
     "Model only what a scene needs": starting from the buffers in
-    `sim.observe`, keeps the writer of every needed buffer and, transitively
+    `sim.observe` and the buffers `sim.total` bodies read, keeps the writer of every needed buffer and, transitively
     (across the back edge too), every buffer that the writer reads to compute
     a needed buffer or its step size, the derivative buffers of needed
     buffers' interpolations, and the buffers that needed init and exact
@@ -200,6 +200,8 @@ def SimInsertInterpolation
     it reads. Interpolation functions build their own arithmetic through
     `InterpolationAttrInterface`, so adding one does not touch this pass.
     Reads in init and exact bodies (initial states) are left as they are.
+    Reads in `sim.total` bodies load the `source` copy (the state at `T`
+    after a run), under every strategy.
   }];
   let dependentDialects = ["::mlir::arith::ArithDialect",
                            "::mlir::vector::VectorDialect"];
