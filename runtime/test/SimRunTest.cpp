@@ -344,7 +344,8 @@ TEST_F(SimRun, ChecksAgainstTheReferenceExecutor) {
         "32,\n    \"steps\": 25,\n    \"pass\": true,",
         "\"buffers\": {\"X\": {\"max_abs\": 0, \"max_reference\": "
         "1.20089481, \"rms_rel\": 0, \"tolerance\": 1e-10, \"limit\": "
-        "1.20089481e-10, \"pass\": true}, \"V\": {",
+        "1.20089481e-10, \"same_non_finite\": 0, \"pass\": true}, "
+        "\"V\": {",
         "\"evaluations\": {\"backend\": {\"Decay\": 1500, \"Grow\": 1500}, "
         "\"reference\": {\"Decay\": 1500, \"Grow\": 1500}, \"equal\": true}",
         "\"big_steps\": {\"backend\": 15, \"reference\": 15, \"equal\": "
