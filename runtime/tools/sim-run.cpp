@@ -487,6 +487,16 @@ std::string jsonNumber(double value) {
   return text;
 }
 
+/// A value that must read back exactly (totals, whose drift is measured
+/// from them): 17 significant digits.
+std::string jsonExactNumber(double value) {
+  if (!std::isfinite(value))
+    return "null";
+  char text[32];
+  std::snprintf(text, sizeof text, "%.17g", value);
+  return text;
+}
+
 std::string formatTime(double seconds) {
   char text[32];
   if (seconds < 1e-3)
@@ -1089,7 +1099,7 @@ int run(const Options &options) {
     json << "},\n  \"totals\": {";
     for (size_t t = 0; t < totalNames.size(); ++t)
       json << (t ? ", " : "") << jsonString(totalNames[t]) << ": "
-           << jsonNumber(totals[t]);
+           << jsonExactNumber(totals[t]);
     json << "},\n  \"totals_per_output_time\": ";
     if (series.empty()) {
       json << "null";
@@ -1099,7 +1109,7 @@ int run(const Options &options) {
         json << (k ? ", " : "") << "{\"T\": " << series[k].time;
         for (size_t t = 0; t < totalNames.size(); ++t)
           json << ", " << jsonString(totalNames[t]) << ": "
-               << jsonNumber(series[k].values[t]);
+               << jsonExactNumber(series[k].values[t]);
         json << "}";
       }
       json << "]";
@@ -1151,8 +1161,8 @@ int run(const Options &options) {
            << ",\n    \"totals\": {";
       for (size_t i = 0; i < totalRows.size(); ++i)
         json << (i ? ", " : "") << jsonString(totalRows[i].total)
-             << ": {\"backend\": " << jsonNumber(totalRows[i].backend)
-             << ", \"reference\": " << jsonNumber(totalRows[i].reference)
+             << ": {\"backend\": " << jsonExactNumber(totalRows[i].backend)
+             << ", \"reference\": " << jsonExactNumber(totalRows[i].reference)
              << ", \"limit\": " << jsonNumber(totalRows[i].limit)
              << ", \"pass\": " << boolean(totalRows[i].pass) << "}";
       json << "},\n    \"buffers\": {";
