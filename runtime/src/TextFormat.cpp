@@ -331,6 +331,22 @@ std::optional<std::string_view> afterPrefix(std::string_view field,
   return std::nullopt;
 }
 
+/// The `observed` and `exact` flags of a scene or model `buffer` record,
+/// from field `first` on, each at most once.
+void parseBufferFlags(Records &records, size_t first, bool &observed,
+                      bool &exact) {
+  for (size_t i = first; i < records.size(); ++i) {
+    bool *flag = records[i] == "observed" ? &observed
+                 : records[i] == "exact"  ? &exact
+                                          : nullptr;
+    if (!flag)
+      records.error("unknown buffer flag '" + records.str(i) + "'");
+    if (*flag)
+      records.error("buffer flag '" + records.str(i) + "' is repeated");
+    *flag = true;
+  }
+}
+
 /// The element type in field `typeField` of a plan or model `buffer` record
 /// that names buffer `name`, which must be a buffer of `scene` with the same
 /// element type.
@@ -436,16 +452,7 @@ Scene parseScene(std::string_view text) {
           buffer.boundary != "zero")
         records.error("boundary '" + buffer.boundary +
                       "' is not clamp, wrap or zero");
-      for (size_t i = 7; i < records.size(); ++i) {
-        bool *flag = records[i] == "observed" ? &buffer.observed
-                     : records[i] == "exact"  ? &buffer.exact
-                                              : nullptr;
-        if (!flag)
-          records.error("unknown buffer flag '" + records.str(i) + "'");
-        if (*flag)
-          records.error("buffer flag '" + records.str(i) + "' is repeated");
-        *flag = true;
-      }
+      parseBufferFlags(records, 7, buffer.observed, buffer.exact);
       scene.buffers.push_back(std::move(buffer));
     } else if (record == "strategies") {
       if (strategies)
@@ -849,16 +856,7 @@ ReferenceModel parseReferenceModel(std::string_view text, const Scene &scene) {
       else
         records.error("boundary '" + records.str(7) +
                       "' is not clamp, wrap or zero");
-      for (size_t i = 8; i < records.size(); ++i) {
-        bool *flag = records[i] == "observed" ? &buffer.observed
-                     : records[i] == "exact"  ? &buffer.exact
-                                              : nullptr;
-        if (!flag)
-          records.error("unknown buffer flag '" + records.str(i) + "'");
-        if (*flag)
-          records.error("buffer flag '" + records.str(i) + "' is repeated");
-        *flag = true;
-      }
+      parseBufferFlags(records, 8, buffer.observed, buffer.exact);
       model.buffers.push_back(std::move(buffer));
     } else if (record == "component") {
       const char *syntax = "component <index> <name> substep "
