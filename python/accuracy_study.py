@@ -23,8 +23,9 @@ rms-rel over its observed buffers, except for harmonic: there the error of
 @Y, the resonator that reads the interpolated driver. The wall time is the
 fastest of the --repeat runs (the least disturbed by other load). kepler
 also gets the drift of energy and angular momentum per orbit, nbody the
-drift of the total energy, computed from the dumped state (totals are not
-computed on the device yet).
+drift of the total energy, computed from the dumped state (per orbit for
+kepler, which the scene's device-side totals cannot show: a sum over the
+orbits lets their drifts cancel; see docs/accuracy.md, "Totals").
 
 Interpolation variants: in a scene, the buffer line marked `// study-interp`
 has its `interp(...)` replaced by #sim.linear, #sim.cubic or
