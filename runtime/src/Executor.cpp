@@ -3,6 +3,8 @@
 #include "Executor.h"
 #include "Error.h"
 
+#include <limits>
+
 namespace sim::rt {
 
 std::string listNames(const std::vector<std::string> &names) {
@@ -10,6 +12,17 @@ std::string listNames(const std::vector<std::string> &names) {
   for (const std::string &name : names)
     list += (list.empty() ? "" : ", ") + name;
   return list.empty() ? "none" : list;
+}
+
+int64_t runEnd(int64_t begin, int64_t steps) {
+  if (steps < 0)
+    fail(SIM_ERROR_INVALID_ARGUMENT,
+         "cannot run " + std::to_string(steps) + " base steps");
+  if (steps > std::numeric_limits<int64_t>::max() - begin)
+    fail(SIM_ERROR_INVALID_ARGUMENT, "cannot run " + std::to_string(steps) +
+                                         " base steps from " +
+                                         std::to_string(begin));
+  return begin + steps;
 }
 
 Settings::Settings(const Scene &scene)

@@ -48,6 +48,10 @@ public:
 /// Comma-separated names, "none" for none.
 std::string listNames(const std::vector<std::string> &names);
 
+/// The end `begin + steps` of a run, after checking that `steps` is not
+/// negative and the end fits in the clock.
+int64_t runEnd(int64_t begin, int64_t steps);
+
 class Executor {
 public:
   virtual ~Executor() = default;

@@ -676,20 +676,14 @@ void ReferenceSession::bigStep(int64_t end) {
 }
 
 void ReferenceSession::run(int64_t steps) {
-  if (steps < 0)
-    fail(SIM_ERROR_INVALID_ARGUMENT,
-         "cannot run " + std::to_string(steps) + " base steps");
+  runEnd(now, steps); // Checks the steps before initialising.
   ensureInitialized();
   metrics = {};
   nonFinite = {};
   std::fill(evaluations.begin(), evaluations.end(), 0);
   std::fill(histogram.begin(), histogram.end(), 0);
   int64_t begin = now;
-  if (steps > std::numeric_limits<int64_t>::max() - begin)
-    fail(SIM_ERROR_INVALID_ARGUMENT, "cannot run " + std::to_string(steps) +
-                                         " base steps from " +
-                                         std::to_string(begin));
-  int64_t end = begin + steps;
+  int64_t end = runEnd(begin, steps);
   auto start = std::chrono::steady_clock::now();
   while (now < end) {
     bigStep(end);

@@ -396,9 +396,7 @@ void Session::ensureInitialized() {
 }
 
 void Session::run(int64_t steps) {
-  if (steps < 0)
-    fail(SIM_ERROR_INVALID_ARGUMENT,
-         "cannot run " + std::to_string(steps) + " base steps");
+  runEnd(0, steps); // Checks the steps before touching the device.
   backend->activate();
   ensureInitialized();
   prepare();
@@ -407,11 +405,7 @@ void Session::run(int64_t steps) {
   std::vector<int64_t> before = clock;
   // After init and after finish m is 0, so this is T.
   int64_t begin = clock[kSlotBegin] + clock[kSlotSize];
-  if (steps > std::numeric_limits<int64_t>::max() - begin)
-    fail(SIM_ERROR_INVALID_ARGUMENT, "cannot run " + std::to_string(steps) +
-                                         " base steps from " +
-                                         std::to_string(begin));
-  int64_t end = begin + steps;
+  int64_t end = runEnd(begin, steps);
   // The largest big step: one base step under simple, max_steps otherwise.
   int64_t cap = plan_->strategy == Strategy::Simple
                     ? 1
