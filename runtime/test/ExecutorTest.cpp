@@ -11,6 +11,7 @@
 #include "Error.h"
 #include "Session.h"
 #include "TestBundle.h"
+#include "TestUtil.h"
 
 #include <gtest/gtest.h>
 
@@ -22,13 +23,9 @@ using namespace sim::test;
 
 namespace {
 
-std::shared_ptr<const Bundle> parseBytes(const std::string &bytes) {
-  return Bundle::parse(reinterpret_cast<const uint8_t *>(bytes.data()),
-                       bytes.size(), "decay.simb");
-}
-
 std::shared_ptr<const Bundle> decay() {
-  static std::shared_ptr<const Bundle> bundle = parseBytes(decayBundle());
+  static std::shared_ptr<const Bundle> bundle =
+      parseBytes(decayBundle(), "decay.simb");
   return bundle;
 }
 
@@ -66,18 +63,6 @@ void expectX(Session &session, int64_t steps, double k = 2, double dt = 0.01) {
     ASSERT_NEAR(x[i], expectedX(int64_t(i), steps, k, dt),
                 1e-12 * std::fabs(expectedX(int64_t(i), steps, k, dt)))
         << "item " << i;
-}
-
-/// The message of the Error `body` throws, checking its status.
-template <typename Body> std::string errorOf(Body &&body, sim_status expected) {
-  try {
-    body();
-  } catch (const Error &error) {
-    EXPECT_EQ(error.status, expected) << error.what();
-    return error.what();
-  }
-  ADD_FAILURE() << "no error";
-  return "";
 }
 
 } // namespace
@@ -360,7 +345,7 @@ TEST(Executor, NamesTheCodeABackendLacks) {
 
   std::vector<Section> sections = decaySections();
   sections.erase(sections.begin() + 4); // hip's CPU code
-  auto noCpu = parseBytes(writeBundle(sections));
+  auto noCpu = parseBytes(writeBundle(sections), "decay.simb");
   EXPECT_NE(errorOf([&] { Session s(noCpu, cpuOptions(SIM_STRATEGY_HIP)); },
                     SIM_ERROR_BUNDLE)
                 .find("has no CPU code for strategy 'hip'; the CPU backend "
@@ -389,7 +374,7 @@ TEST(Executor, NamesAMissingKernel) {
   size_t at = sections[1].bytes.find("launch advance single");
   sections[1].bytes.insert(
       at, "launch nowhere single for - shared 0 0 args clock\n");
-  auto bundle = parseBytes(writeBundle(sections));
+  auto bundle = parseBytes(writeBundle(sections), "decay.simb");
   EXPECT_NE(errorOf([&] { Session s(bundle, cpuOptions(SIM_STRATEGY_SIMPLE)); },
                     SIM_ERROR_BACKEND)
                 .find("the CPU kernels of strategy 'simple' do not export "
@@ -405,7 +390,7 @@ TEST(Executor, RejectsKernelsThatStallTheClock) {
   size_t step = plan.find("phase step\n") + 11;
   plan.erase(step, plan.find('\n', step) - step + 1);
   sections[1].bytes = plan;
-  auto bundle = parseBytes(writeBundle(sections));
+  auto bundle = parseBytes(writeBundle(sections), "decay.simb");
   Session session(bundle, cpuOptions(SIM_STRATEGY_SIMPLE));
   EXPECT_NE(errorOf([&] { session.run(5); }, SIM_ERROR_CLOCK)
                 .find("the step phase made no progress at base step 0 of a run "

@@ -14,6 +14,7 @@
 #include "Error.h"
 #include "Session.h"
 #include "TestBundle.h"
+#include "TestUtil.h"
 
 #include <gtest/gtest.h>
 
@@ -23,27 +24,6 @@ using namespace sim::rt;
 using namespace sim::test;
 
 namespace {
-
-std::shared_ptr<const Bundle> parseBytes(const std::string &bytes) {
-  return Bundle::parse(reinterpret_cast<const uint8_t *>(bytes.data()),
-                       bytes.size(), "test.simb");
-}
-
-/// The message of the Error `body` throws, checking its status.
-template <typename Body> std::string errorOf(Body &&body, sim_status expected) {
-  try {
-    body();
-  } catch (const Error &error) {
-    EXPECT_EQ(error.status, expected) << error.what();
-    return error.what();
-  }
-  ADD_FAILURE() << "no error";
-  return "";
-}
-
-bool contains(const std::string &text, const std::string &part) {
-  return text.find(part) != std::string::npos;
-}
 
 /// `text` with the first `from` replaced by `to`.
 std::string replace(std::string text, const std::string &from,

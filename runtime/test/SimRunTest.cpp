@@ -7,6 +7,7 @@
 //===----------------------------------------------------------------------===//
 
 #include "TestBundle.h"
+#include "TestUtil.h"
 
 #include <gtest/gtest.h>
 
@@ -44,10 +45,6 @@ Result shell(const std::string &command) {
 
 Result simRun(const std::string &args) {
   return shell(std::string(SIM_RUN_PATH) + " " + args);
-}
-
-bool contains(const std::string &text, const std::string &part) {
-  return text.find(part) != std::string::npos;
 }
 
 class SimRun : public ::testing::Test {

@@ -46,29 +46,38 @@ def check(label, value, bound):
     print("%s %.2e <= %.0e: %s" % (label, value, bound, "ok" if ok else "MISSED"))
 
 
+def finite_case(label, name, scene, steps, sets=(), extra=()):
+    """Runs a case that must stay finite; the output's JSON, or None."""
+    status, text, out = run(name, scene, steps, sets, extra)
+    print("%s: exit %d%s" % (label, status,
+                             ", finite" if status == 0 else "\n" + text))
+    if status != 0:
+        global failures
+        failures += 1
+        return None
+    return out
+
+
 # Kepler, e = 0.6: 10^4 base steps (1.6 orbits) in big steps of max_steps
 # (8), pericentre passages at 1 base step.
-status, text, out = run("kepler", "physics/kepler.mlir", 10000,
-                        extra=["--report-every", "10000"])
-print("kepler 10000 base steps: exit %d%s" % (status, ", finite" if status == 0 else "\n" + text))
-if status == 0:
+out = finite_case("kepler 10000 base steps", "kepler", "physics/kepler.mlir",
+                  10000, extra=["--report-every", "10000"])
+if out:
     check("kepler energy drift", drift(out, "Energy"), 1e-7)
     check("kepler angular momentum drift", drift(out, "AngularMomentum"), 1e-12)
 
 # Plummer N-body with close encounters: 10^4 base steps.
-status, text, out = run("nbody", "physics/nbody.mlir", 10000,
-                        extra=["--report-every", "10000"])
-print("nbody 10000 base steps: exit %d%s" % (status, ", finite" if status == 0 else "\n" + text))
-if status == 0:
+out = finite_case("nbody 10000 base steps", "nbody", "physics/nbody.mlir",
+                  10000, extra=["--report-every", "10000"])
+if out:
     check("nbody energy drift", drift(out, "Energy"), 2e-3)
     check("nbody momentum drift", drift(out, "MomentumX"), 1e-12)
 
 # KPR at omega = 1000 (dt 5e-5 resolves the fast mode): one time unit.
-status, text, out = run("kpr", "physics/kpr.mlir", 20000,
-                        sets=["omega=1000", "dt=5e-5"],
-                        extra=["--reference", "exact"])
-print("kpr omega 1000 20000 base steps: exit %d%s" % (status, ", finite" if status == 0 else "\n" + text))
-if status == 0:
+out = finite_case("kpr omega 1000 20000 base steps", "kpr", "physics/kpr.mlir",
+                  20000, sets=["omega=1000", "dt=5e-5"],
+                  extra=["--reference", "exact"])
+if out:
     error = json.load(open(out))["error"]
     check("kpr omega 1000 U rms-rel", error["U"]["rms_rel"], 1e-4)
     check("kpr omega 1000 V rms-rel", error["V"]["rms_rel"], 2e-3)
