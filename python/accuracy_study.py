@@ -47,16 +47,18 @@ plot).
 """
 
 import argparse
-import ast
 import json
 import math
 import os
 import re
 import shutil
-import struct
 import subprocess
 import sys
 import time
+
+sys.dont_write_bytecode = True
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from simnpy import compare, read_npy  # noqa: E402
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(HERE)
@@ -139,37 +141,10 @@ def build_bundle(args, scene, interp):
 
 # --- .npy ------------------------------------------------------------------
 
-def read_npy(path):
-    """Returns (shape, flat list of floats) of a little-endian f4/f8 .npy."""
-    data = open(path, "rb").read()
-    major = data[6]
-    if major == 1:
-        (length,) = struct.unpack("<H", data[8:10])
-        start = 10
-    else:
-        (length,) = struct.unpack("<I", data[8:12])
-        start = 12
-    header = ast.literal_eval(data[start:start + length].decode("latin1"))
-    code = {"<f4": "f", "<f8": "d"}[header["descr"]]
-    body = data[start + length:]
-    count = len(body) // struct.calcsize(code)
-    return header["shape"], list(struct.unpack("<%d%s" % (count, code), body))
-
-
 def rows(path):
     shape, flat = read_npy(path)
     lanes = shape[1] if len(shape) > 1 else 1
     return [flat[k * lanes:(k + 1) * lanes] for k in range(shape[0])]
-
-
-def compare(a, b):
-    diff = [x - y for x, y in zip(a, b)]
-    max_abs = max((abs(d) for d in diff), default=0.0)
-    norm_b = math.sqrt(sum(y * y for y in b))
-    norm_d = math.sqrt(sum(d * d for d in diff))
-    rms_rel = norm_d / norm_b if norm_b > 0 else (0.0 if norm_d == 0 else
-                                                  math.inf)
-    return {"max_abs": max_abs, "rms_rel": rms_rel}
 
 
 # --- physics diagnostics from the dumped state ------------------------------

@@ -1,0 +1,950 @@
+//===- baseline.cu - Hand-written CUDA of the paper's two scenes ----------===//
+//
+// What a user would write instead of sim: the gravity-like and PBD-like
+// scenes of examples/paper, each with the four algorithms (simple,
+// traditional, hip = the paper's HIP-NoCache, hip-cache = HIP), written by
+// hand in CUDA for the benchmarks of bench/run. It computes the same numbers
+// as the scenes compiled by sim (docs/Model.md is the contract; the bodies
+// are those python/simscene generates), so bench/run can check the final
+// state against sim's and compare times algorithm by algorithm.
+//
+// Like sim's runtime it keeps the clock (T, m, parity, the step estimate) in
+// device memory, launches the step kernels in batches and reads the clock
+// once per batch; --m-on-host reads it after every big step instead, as the
+// paper's implementation does.
+//
+// The same source compiles for the host (cuda_compat.h), where CI checks it
+// against sim-run --backend cpu bit for bit (test/Bench/baseline.test).
+//
+//===----------------------------------------------------------------------===//
+
+#include "cuda_compat.h"
+
+#include <algorithm>
+#include <cerrno>
+#include <chrono>
+#include <climits>
+#include <cmath>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <tuple>
+#include <utility>
+#include <vector>
+
+namespace {
+
+//===----------------------------------------------------------------------===//
+// The scenes
+//===----------------------------------------------------------------------===//
+
+constexpr int kMaxBuffers = 7;
+constexpr int kMaxComponents = 7;
+constexpr int kMaxSteps = 3;
+// Window reads span i-4..i+4.
+constexpr int kHalo = 4;
+
+constexpr uint64_t kGolden = 0x9E3779B97F4A7C15ull;
+constexpr uint64_t kMixMul1 = 0xBF58476D1CE4E5B9ull;
+constexpr uint64_t kMixMul2 = 0x94D049BB133111EBull;
+constexpr uint64_t kKeyMul = 0xD6E8FEB86659FD93ull;
+constexpr uint64_t kTimeMul = 0xFF51AFD7ED558CCDull;
+
+/// How a component builds the four rows of its load from its reads (the
+/// row choice of python/simscene/scenes.py).
+enum class Pattern {
+  PointOwn,      // [P, self, P*self, (P-self)/2], bias P; relaxes its state
+  OneWindow,     // [mean W, W[i], W[i-1], W[i+1]], bias mean W
+  TwoWindows,    // [mean A, mean B, A[i], B[i]], bias mean A
+  TwoWindowsOwn, // as TwoWindows; relaxes its state
+  WindowPoint,   // [mean A, A[i], B[i], A[i-1]], bias mean A
+  WindowOwn,     // [mean A, A[i], self, A[i-1]], bias mean A; relaxes
+};
+
+template <int Index, Pattern P, int Writes, int A, int B = -1>
+struct Component {
+  static constexpr int index = Index;
+  static constexpr Pattern pattern = P;
+  static constexpr int writes = Writes;
+  static constexpr int a = A;
+  static constexpr int b = B;
+  static constexpr bool own = P == Pattern::PointOwn ||
+                              P == Pattern::TwoWindowsOwn ||
+                              P == Pattern::WindowOwn;
+  /// The buffers read in windows, which hip-cache keeps in shared memory.
+  static constexpr int numCached =
+      P == Pattern::PointOwn
+          ? 0
+          : (P == Pattern::TwoWindows || P == Pattern::TwoWindowsOwn ? 2 : 1);
+};
+
+// Component k writes buffer Bk. Component 0 reads the last buffer through
+// the back edge and is the only one that bounds the hip big step.
+struct GravityLike {
+  static constexpr const char *name = "gravity_like";
+  static constexpr int numBuffers = 3;
+  static constexpr int observed = 2;
+  using Components = std::tuple<Component<0, Pattern::PointOwn, 0, 2>,
+                                Component<1, Pattern::OneWindow, 1, 0>,
+                                Component<2, Pattern::TwoWindowsOwn, 2, 0, 1>>;
+  /// Buffers the checked-in scene interpolates with #sim.cubic.
+  static constexpr unsigned cubicInScene = 0;
+};
+
+struct PbdLike {
+  static constexpr const char *name = "pbd_like";
+  static constexpr int numBuffers = 7;
+  static constexpr int observed = 6;
+  using Components = std::tuple<Component<0, Pattern::PointOwn, 0, 6>,
+                                Component<1, Pattern::OneWindow, 1, 0>,
+                                Component<2, Pattern::WindowPoint, 2, 1, 0>,
+                                Component<3, Pattern::OneWindow, 3, 2>,
+                                Component<4, Pattern::OneWindow, 4, 3>,
+                                Component<5, Pattern::TwoWindows, 5, 4, 3>,
+                                Component<6, Pattern::WindowOwn, 6, 5>>;
+  static constexpr unsigned cubicInScene = (1u << 3) | (1u << 4);
+};
+
+template <typename Scene>
+constexpr int numComponents =
+    std::tuple_size<typename Scene::Components>::value;
+
+/// Run-time values: every kernel gets them by value.
+struct Params {
+  long long range;
+  float dt;
+  int rounds; // @L
+  int dist;   // @dist
+  int group;  // @group: items per hash group when dist = 1
+  int maxSteps;
+  unsigned cubic; // bit b: buffer b interpolates with the smoothstep
+};
+
+/// Every buffer holds two halves of `range` elements; half `parity` of the
+/// clock is the state at T.
+struct Buffers {
+  float4 *base[kMaxBuffers];
+};
+
+struct Clock {
+  long long T, m, end;
+  int parity;
+  int estimate; // minimum num_steps for the next big step
+  unsigned long long bigSteps;
+  unsigned long long histogram[kMaxSteps + 1];
+  unsigned long long evaluations[kMaxComponents];
+};
+
+__host__ __device__ __forceinline__ long long minOf(long long a, long long b) {
+  return a < b ? a : b;
+}
+
+__host__ __device__ __forceinline__ uint64_t splitmix64(uint64_t z) {
+  z = (z ^ (z >> 30)) * kMixMul1;
+  z = (z ^ (z >> 27)) * kMixMul2;
+  return z ^ (z >> 31);
+}
+
+/// The scenes' vector.fma as sim compiles it: MLIR lowers it to
+/// llvm.fmuladd, which the NVPTX backend fuses into fma.rn and generic
+/// x86-64 (sim's CPU kernels) computes as a multiply and an add. The host
+/// build is compiled with -ffp-contract=off, so it does the same.
+__device__ __forceinline__ float fmaLikeSim(float a, float b, float c) {
+#ifdef __CUDACC__
+  return __fmaf_rn(a, b, c);
+#else
+  return a * b + c;
+#endif
+}
+/// The init body of buffer `seed` at item i: four floats in [-1, 1).
+__device__ __forceinline__ float4 initValue(int seed, long long i) {
+  float lanes[4];
+  for (int lane = 0; lane < 4; ++lane) {
+    uint64_t x =
+        (4ull * (uint64_t)i + lane) * kKeyMul ^ (uint64_t)(seed + 1) * kGolden;
+    float u = (float)(splitmix64(x) >> 40);
+    lanes[lane] = fmaLikeSim(u, 1.1920928955078125e-7f, -1.0f);
+  }
+  return make_float4(lanes[0], lanes[1], lanes[2], lanes[3]);
+}
+
+/// The num_steps body of component c, clamped to [1, max_steps].
+__device__ __forceinline__ int numSteps(int c, long long i, long long t,
+                                        const Params &p) {
+  int n;
+  if (p.dist == 3) {
+    n = 1;
+  } else if (p.dist == 4) {
+    n = p.maxSteps;
+  } else {
+    uint64_t group = (uint64_t)(p.group > 1 ? p.group : 1);
+    uint64_t key = p.dist == 0   ? 0
+                   : p.dist == 1 ? (uint64_t)i / group
+                                 : (uint64_t)i;
+    uint64_t x =
+        (uint64_t)(c + 1) * kGolden ^ key * kKeyMul ^ (uint64_t)t * kTimeMul;
+    n = (int)(splitmix64(x) % 3 + 1);
+  }
+  return n < 1 ? 1 : (n > p.maxSteps ? p.maxSteps : n);
+}
+
+__device__ __forceinline__ float4 add(float4 a, float4 b) {
+  return make_float4(a.x + b.x, a.y + b.y, a.z + b.z, a.w + b.w);
+}
+__device__ __forceinline__ float4 sub(float4 a, float4 b) {
+  return make_float4(a.x - b.x, a.y - b.y, a.z - b.z, a.w - b.w);
+}
+__device__ __forceinline__ float4 mul(float4 a, float4 b) {
+  return make_float4(a.x * b.x, a.y * b.y, a.z * b.z, a.w * b.w);
+}
+__device__ __forceinline__ float4 scale(float s, float4 a) {
+  return make_float4(s * a.x, s * a.y, s * a.z, s * a.w);
+}
+__device__ __forceinline__ float4 fma4(float s, float4 a, float4 c) {
+  return make_float4(fmaLikeSim(s, a.x, c.x), fmaLikeSim(s, a.y, c.y),
+                     fmaLikeSim(s, a.z, c.z), fmaLikeSim(s, a.w, c.w));
+}
+
+/// The load and the new value: L rounds of X := M X with M = rows / 4, the
+/// sum of X's rows plus the bias, then tanh, relaxed towards from `self`
+/// over n base steps when the component has a state.
+template <bool Own>
+__device__ __forceinline__ float4 loadAndUpdate(float4 r0, float4 r1, float4 r2,
+                                                float4 r3, float4 bias,
+                                                float4 self, int n,
+                                                const Params &p) {
+  float4 m0 = scale(0.25f, r0), m1 = scale(0.25f, r1);
+  float4 m2 = scale(0.25f, r2), m3 = scale(0.25f, r3);
+  float4 x0 = m0, x1 = m1, x2 = m2, x3 = m3;
+  for (int round = 0; round < p.rounds; ++round) {
+    float4 y0 = fma4(m0.w, x3, fma4(m0.z, x2, fma4(m0.y, x1, scale(m0.x, x0))));
+    float4 y1 = fma4(m1.w, x3, fma4(m1.z, x2, fma4(m1.y, x1, scale(m1.x, x0))));
+    float4 y2 = fma4(m2.w, x3, fma4(m2.z, x2, fma4(m2.y, x1, scale(m2.x, x0))));
+    float4 y3 = fma4(m3.w, x3, fma4(m3.z, x2, fma4(m3.y, x1, scale(m3.x, x0))));
+    x0 = y0;
+    x1 = y1;
+    x2 = y2;
+    x3 = y3;
+  }
+  float4 force = add(add(add(add(x0, x1), x2), x3), bias);
+  float4 target = make_float4(tanhf(force.x), tanhf(force.y), tanhf(force.z),
+                              tanhf(force.w));
+  if (!Own)
+    return target;
+  float h = (float)n * p.dt;
+  h = h < 1.0f ? h : 1.0f;
+  return fma4(h, sub(target, self), self);
+}
+
+__device__ __forceinline__ long long clampItem(long long j, long long range) {
+  return j < 0 ? 0 : (j >= range ? range - 1 : j);
+}
+
+/// One evaluation of component `Comp` at item i. `read.template get<B>(j)`
+/// is buffer B at item j as the component sees it (its value at T through
+/// the back edge, or interpolated at the end of the sub-step).
+template <typename Comp, typename Reader>
+__device__ __forceinline__ float4 evaluate(const Reader &read, long long i,
+                                           float4 self, int n,
+                                           const Params &p) {
+  constexpr int A = Comp::a, B = Comp::b;
+  constexpr Pattern P = Comp::pattern;
+  if constexpr (P == Pattern::PointOwn) {
+    float4 point = read.template get<A>(i);
+    float4 prod = mul(point, self);
+    float4 halfDiff = scale(0.5f, sub(point, self));
+    return loadAndUpdate<true>(point, self, prod, halfDiff, point, self, n, p);
+  } else {
+    const float ninth = 0.111111112f;
+    float4 sumA = make_float4(0, 0, 0, 0), sumB = make_float4(0, 0, 0, 0);
+    for (int k = -kHalo; k <= kHalo; ++k) {
+      sumA = add(sumA, read.template get<A>(i + k));
+      if constexpr (P == Pattern::TwoWindows || P == Pattern::TwoWindowsOwn)
+        sumB = add(sumB, read.template get<B>(i + k));
+    }
+    float4 meanA = scale(ninth, sumA);
+    if constexpr (P == Pattern::OneWindow) {
+      return loadAndUpdate<false>(
+          meanA, read.template get<A>(i), read.template get<A>(i - 1),
+          read.template get<A>(i + 1), meanA, self, n, p);
+    } else if constexpr (P == Pattern::TwoWindows ||
+                         P == Pattern::TwoWindowsOwn) {
+      float4 meanB = scale(ninth, sumB);
+      return loadAndUpdate<Comp::own>(meanA, meanB, read.template get<A>(i),
+                                      read.template get<B>(i), meanA, self, n,
+                                      p);
+    } else if constexpr (P == Pattern::WindowPoint) {
+      return loadAndUpdate<false>(
+          meanA, read.template get<A>(i), read.template get<B>(i),
+          read.template get<A>(i - 1), meanA, self, n, p);
+    } else {
+      static_assert(P == Pattern::WindowOwn, "a pattern without rows");
+      return loadAndUpdate<true>(meanA, read.template get<A>(i), self,
+                                 read.template get<A>(i - 1), meanA, self, n,
+                                 p);
+    }
+  }
+}
+
+//===----------------------------------------------------------------------===//
+// Readers: where a read's value comes from
+//===----------------------------------------------------------------------===//
+
+/// One half of every buffer: the state at T (back edge) or at T + m.
+struct HalfReader {
+  const float4 *half[kMaxBuffers];
+  long long range;
+  template <int B> __device__ __forceinline__ float4 get(long long j) const {
+    return half[B][clampItem(j, range)];
+  }
+};
+
+/// The weights of the value at T and at T + m at fraction f of the big
+/// step, as sim's interpolation attributes compute them.
+struct Weights {
+  float beginLinear, endLinear, beginCubic, endCubic;
+  __device__ __forceinline__ explicit Weights(float f) {
+    beginLinear = 1.0f - f;
+    endLinear = f;
+    float twoF = 2.0f * f;
+    float s = (f * f) * (3.0f - twoF);
+    beginCubic = 1.0f - s;
+    endCubic = s;
+  }
+};
+
+/// Interpolated between the halves (every buffer a later component reads
+/// was written earlier in the step in these scenes).
+struct InterpolatingReader {
+  const float4 *source[kMaxBuffers];
+  const float4 *target[kMaxBuffers];
+  long long range;
+  unsigned cubic;
+  Weights weights;
+  template <int B> __device__ __forceinline__ float4 get(long long j) const {
+    long long item = clampItem(j, range);
+    // A uniform select, not an indexed array, keeps the weights in registers.
+    bool smooth = (cubic >> B) & 1;
+    float begin = smooth ? weights.beginCubic : weights.beginLinear;
+    float end = smooth ? weights.endCubic : weights.endLinear;
+    return add(scale(begin, source[B][item]), scale(end, target[B][item]));
+  }
+};
+
+/// hip-cache: the window buffers of the component come from shared memory,
+/// filled once per sub-step for the group's items and the halo.
+template <typename Comp> struct CachingReader {
+  InterpolatingReader global;
+  const float4 *cache; // numCached slices of (group + 2 * halo) elements
+  long long first;     // the item in slot 0: the group's first minus the halo
+  int slice;
+  template <int B> __device__ __forceinline__ float4 get(long long j) const {
+    if constexpr (B == Comp::a && Comp::numCached >= 1)
+      return cache[j - first];
+    else if constexpr (B == Comp::b && Comp::numCached == 2)
+      return cache[slice + (j - first)];
+    else
+      return global.template get<B>(j);
+  }
+};
+
+//===----------------------------------------------------------------------===//
+// Kernels
+//===----------------------------------------------------------------------===//
+
+__device__ __forceinline__ const float4 *halfOf(const Buffers &buffers, int b,
+                                                int half, long long range) {
+  return buffers.base[b] + (half ? range : 0);
+}
+
+template <typename Scene>
+__global__ void initKernel(Clock *clock, Buffers buffers, Params p) {
+  long long i = (long long)blockIdx.x * blockDim.x + threadIdx.x;
+  if (i == 0) {
+    *clock = Clock{};
+    clock->estimate = INT_MAX;
+  }
+  if (i >= p.range)
+    return;
+  for (int b = 0; b < Scene::numBuffers; ++b)
+    buffers.base[b][i] = initValue(b, i);
+}
+
+/// Commits the big step that just ended and decides the next one.
+__global__ void advanceKernel(Clock *clock, int cap) {
+  if (clock->m > 0) {
+    clock->T += clock->m;
+    clock->parity ^= 1;
+    clock->bigSteps += 1;
+    clock->histogram[clock->m] += 1;
+  }
+  long long left = clock->end - clock->T;
+  clock->m = left > 0 ? minOf(minOf(clock->estimate, cap), left) : 0;
+  clock->estimate = INT_MAX;
+}
+
+/// The minimum of num_steps of components [First, Last) over every item,
+/// at the start T + m of the next big step, into clock->estimate.
+template <int First, int Last>
+__global__ void estimateKernel(Clock *clock, Params p) {
+  __shared__ int blockMin;
+  long long next = clock->T + clock->m;
+  if (next >= clock->end)
+    return;
+  if (threadIdx.x == 0)
+    blockMin = INT_MAX;
+  __syncthreads();
+  long long i = (long long)blockIdx.x * blockDim.x + threadIdx.x;
+  if (i < p.range) {
+    int mine = INT_MAX;
+    for (int c = First; c < Last; ++c)
+      mine = (int)minOf(mine, numSteps(c, i, next, p));
+    atomicMin(&blockMin, mine);
+  }
+  __syncthreads();
+  if (threadIdx.x == 0)
+    atomicMin(&clock->estimate, blockMin);
+}
+
+__device__ __forceinline__ int itemsInGroup(const Params &p) {
+  long long first = (long long)blockIdx.x * blockDim.x;
+  return (int)minOf(blockDim.x, p.range - first);
+}
+
+/// One evaluation per item with n = m from T (simple, traditional, and the
+/// component that bounds the hip step).
+template <typename Scene, typename Comp>
+__global__ void evaluateKernel(Clock *clock, Buffers buffers, Params p) {
+  long long m = clock->m;
+  if (m == 0)
+    return;
+  int parity = clock->parity;
+  long long i = (long long)blockIdx.x * blockDim.x + threadIdx.x;
+  if (threadIdx.x == 0)
+    atomicAdd(&clock->evaluations[Comp::index],
+              (unsigned long long)itemsInGroup(p));
+  if (i >= p.range)
+    return;
+  // Component 0 reads the others at T (back edge), the others read earlier
+  // components at T + m: the half just written.
+  HalfReader read;
+  read.range = p.range;
+  for (int b = 0; b < Scene::numBuffers; ++b)
+    read.half[b] =
+        halfOf(buffers, b, Comp::index == 0 ? parity : parity ^ 1, p.range);
+  float4 self = Comp::own ? halfOf(buffers, Comp::writes, parity, p.range)[i]
+                          : make_float4(0, 0, 0, 0);
+  float4 value = evaluate<Comp>(read, i, self, (int)m, p);
+  buffers.base[Comp::writes][(parity ^ 1 ? p.range : 0) + i] = value;
+}
+
+/// Algorithm 2 of the paper for one component: sub-steps of the group's
+/// minimum num_steps inside the big step, the state in a register, the
+/// target written once. With Cache, the window buffers' interpolated values
+/// of every sub-step are staged in shared memory.
+template <typename Scene, typename Comp, bool Cache>
+__global__ void substepKernel(Clock *clock, Buffers buffers, Params p) {
+  // Three slots, so one barrier per sub-step is enough: the slot of sub-step
+  // k + 2 is reset after the barrier of sub-step k, when every thread has
+  // read the slot of sub-step k - 1 (the same one).
+  __shared__ int stepMin[3];
+  SIM_DYNAMIC_SHARED(float4, cache);
+  long long m = clock->m;
+  if (m == 0)
+    return;
+  long long T = clock->T;
+  int parity = clock->parity;
+  long long first = (long long)blockIdx.x * blockDim.x;
+  long long i = first + threadIdx.x;
+  bool valid = i < p.range;
+
+  InterpolatingReader global{{}, {}, p.range, p.cubic, Weights(1.0f)};
+  for (int b = 0; b < Scene::numBuffers; ++b) {
+    global.source[b] = halfOf(buffers, b, parity, p.range);
+    global.target[b] = halfOf(buffers, b, parity ^ 1, p.range);
+  }
+  float4 state = Comp::own && valid ? global.source[Comp::writes][i]
+                                    : make_float4(0, 0, 0, 0);
+  if (threadIdx.x < 3)
+    stepMin[threadIdx.x] = INT_MAX;
+  __syncthreads();
+
+  int slice = blockDim.x + 2 * kHalo;
+  unsigned long long evaluations = 0;
+  int group = itemsInGroup(p);
+  long long t = T;
+  for (int k = 0; t < T + m; ++k) {
+    long long n = 1;
+    if (m > 1) {
+      if (valid)
+        atomicMin(&stepMin[k % 3], numSteps(Comp::index, i, t, p));
+      __syncthreads();
+      n = minOf(stepMin[k % 3], T + m - t);
+      if (threadIdx.x == 0)
+        stepMin[(k + 2) % 3] = INT_MAX;
+    }
+    global.weights = Weights((float)(t + n - T) / (float)m);
+    if constexpr (Cache) {
+      // Every lane fills slots a group apart: the group and its halo.
+      for (int s = threadIdx.x; s < slice; s += blockDim.x) {
+        long long j = first - kHalo + s;
+        cache[s] = global.template get<Comp::a>(j);
+        if constexpr (Comp::numCached == 2)
+          cache[slice + s] = global.template get<Comp::b>(j);
+      }
+      __syncthreads();
+      CachingReader<Comp> read{global, cache, first - kHalo, slice};
+      // The next sub-step's fill waits for its minimum's barrier, which
+      // every lane reaches only after its reads of this one.
+      if (valid)
+        state = evaluate<Comp>(read, i, state, (int)n, p);
+    } else {
+      if (valid)
+        state = evaluate<Comp>(global, i, state, (int)n, p);
+    }
+    evaluations += group;
+    t += n;
+  }
+  if (valid)
+    buffers.base[Comp::writes][(parity ^ 1 ? p.range : 0) + i] = state;
+  if (threadIdx.x == 0)
+    atomicAdd(&clock->evaluations[Comp::index], evaluations);
+}
+
+//===----------------------------------------------------------------------===//
+// The host side
+//===----------------------------------------------------------------------===//
+
+enum class Strategy { Simple, Traditional, Hip, HipCache };
+
+const char *strategyName(Strategy s) {
+  switch (s) {
+  case Strategy::Simple:
+    return "simple";
+  case Strategy::Traditional:
+    return "traditional";
+  case Strategy::Hip:
+    return "hip";
+  case Strategy::HipCache:
+    return "hip-cache";
+  }
+  return "?";
+}
+
+struct Options {
+  std::string scene = "gravity_like";
+  Strategy strategy = Strategy::Hip;
+  long long steps = 100;
+  int repeat = 1;
+  int groupSize = 256;
+  std::string interp = "linear";
+  bool mOnHost = false;
+  std::string dumpDir, jsonPath;
+  Params params{65536, 1.0e-3f, 8, 0, 32, kMaxSteps, 0};
+};
+
+struct RunMetrics {
+  double wallSeconds = 0, kernelSeconds = 0;
+  unsigned long long launches = 0, hostSyncs = 0;
+  Clock clock{};
+};
+
+template <typename Scene> class Simulation {
+public:
+  Simulation(const Options &options) : options_(options), p_(options.params) {
+    p_.cubic = options.interp == "cubic" ? (1u << Scene::numBuffers) - 1
+                                         : Scene::cubicInScene;
+    clock_ = compat::deviceAlloc<Clock>(1);
+    for (int b = 0; b < kMaxBuffers; ++b)
+      buffers_.base[b] = b < Scene::numBuffers
+                             ? compat::deviceAlloc<float4>(2 * p_.range)
+                             : nullptr;
+    blocks_ =
+        (unsigned)((p_.range + options.groupSize - 1) / options.groupSize);
+  }
+  ~Simulation() {
+    compat::deviceFree(clock_);
+    for (int b = 0; b < Scene::numBuffers; ++b)
+      compat::deviceFree(buffers_.base[b]);
+  }
+
+  /// Runs `steps` base steps from the initial state.
+  RunMetrics run(long long steps) {
+    RunMetrics metrics;
+    compat::launch(initKernel<Scene>, blocks_, threads(), 0, clock_, buffers_,
+                   p_);
+    // The run's end: the host writes it, like sim's runtime.
+    Clock start{};
+    compat::copyToHost(&start, clock_, 1);
+    start.end = steps;
+    compat::copyToDevice(clock_, &start, 1);
+
+    auto wallStart = std::chrono::steady_clock::now();
+    compat::Timer timer;
+    timer.start();
+    int cap = options_.strategy == Strategy::Simple ? 1 : p_.maxSteps;
+    long long reached = 0;
+    // Batches of step phases, sized by the big steps of the last batch, as
+    // sim's runtime sizes them; one host synchronisation per batch.
+    double meanStep = cap;
+    while (reached < steps) {
+      long long batch = (long long)std::ceil((steps - reached) / meanStep);
+      batch = std::max(1ll, std::min(256ll, batch));
+      if (options_.mOnHost)
+        batch = 1;
+      for (long long k = 0; k < batch; ++k)
+        stepPhase(metrics, cap);
+      Clock clock;
+      compat::copyToHost(&clock, clock_, 1);
+      metrics.hostSyncs += 1;
+      if (clock.T + clock.m <= reached) {
+        std::fprintf(stderr, "error: the clock made no progress at T = %lld\n",
+                     clock.T);
+        std::exit(1);
+      }
+      meanStep = std::clamp((double)(clock.T + clock.m - reached) / batch, 1.0,
+                            (double)cap);
+      reached = clock.T + clock.m;
+    }
+    compat::launch(advanceKernel, 1, 1, 0, clock_, cap);
+    metrics.launches += 1;
+    metrics.kernelSeconds = timer.stopSeconds();
+    metrics.wallSeconds = std::chrono::duration<double>(
+                              std::chrono::steady_clock::now() - wallStart)
+                              .count();
+    compat::copyToHost(&metrics.clock, clock_, 1);
+    metrics.hostSyncs += 1;
+    if (metrics.clock.T != steps || metrics.clock.m != 0) {
+      std::fprintf(stderr,
+                   "error: the run ended at T = %lld, m = %lld, not at "
+                   "%lld\n",
+                   metrics.clock.T, metrics.clock.m, steps);
+      std::exit(1);
+    }
+    return metrics;
+  }
+
+  /// The observed buffer at the current T, `range` x 4 floats.
+  std::vector<float> observed() {
+    Clock clock;
+    compat::copyToHost(&clock, clock_, 1);
+    std::vector<float4> items(p_.range);
+    compat::copyToHost(items.data(),
+                       buffers_.base[Scene::observed] +
+                           (clock.parity ? p_.range : 0),
+                       p_.range);
+    std::vector<float> values;
+    values.reserve(4 * p_.range);
+    for (const float4 &v : items)
+      values.insert(values.end(), {v.x, v.y, v.z, v.w});
+    return values;
+  }
+
+private:
+  unsigned threads() const { return (unsigned)options_.groupSize; }
+
+  template <typename F> static void forEachComponent(F &&f) {
+    forEachComponentImpl(std::forward<F>(f),
+                         std::make_index_sequence<numComponents<Scene>>{});
+  }
+  template <typename F, size_t... I>
+  static void forEachComponentImpl(F &&f, std::index_sequence<I...>) {
+    (f(std::tuple_element_t<I, typename Scene::Components>{}), ...);
+  }
+
+  void stepPhase(RunMetrics &metrics, int cap) {
+    Strategy s = options_.strategy;
+    if (s == Strategy::Traditional) {
+      // One kernel estimates every component (sim launches one each).
+      compat::launch(estimateKernel<0, numComponents<Scene>>, blocks_,
+                     threads(), 0, clock_, p_);
+      metrics.launches += 1;
+    } else if (s != Strategy::Simple) {
+      // Component 0 is the only one that reads through the back edge.
+      compat::launch(estimateKernel<0, 1>, blocks_, threads(), 0, clock_, p_);
+      metrics.launches += 1;
+    }
+    compat::launch(advanceKernel, 1, 1, 0, clock_, cap);
+    metrics.launches += 1;
+    forEachComponent([&](auto component) {
+      using Comp = decltype(component);
+      if constexpr (Comp::index == 0) {
+        compat::launch(evaluateKernel<Scene, Comp>, blocks_, threads(), 0,
+                       clock_, buffers_, p_);
+      } else if (s == Strategy::Simple || s == Strategy::Traditional) {
+        compat::launch(evaluateKernel<Scene, Comp>, blocks_, threads(), 0,
+                       clock_, buffers_, p_);
+      } else if (s == Strategy::Hip) {
+        compat::launch(substepKernel<Scene, Comp, false>, blocks_, threads(), 0,
+                       clock_, buffers_, p_);
+      } else {
+        size_t shared = (size_t)Comp::numCached *
+                        (options_.groupSize + 2 * kHalo) * sizeof(float4);
+        compat::launch(substepKernel<Scene, Comp, true>, blocks_, threads(),
+                       shared, clock_, buffers_, p_);
+      }
+      metrics.launches += 1;
+    });
+  }
+
+  Options options_;
+  Params p_;
+  Clock *clock_ = nullptr;
+  Buffers buffers_{};
+  unsigned blocks_ = 0;
+};
+
+//===----------------------------------------------------------------------===//
+// Command line, output
+//===----------------------------------------------------------------------===//
+
+const char *kUsage =
+    R"(OVERVIEW: hand-written CUDA of the paper's scenes (sim's benchmark baseline)
+
+USAGE: sim-baseline-cuda [options]    (sim-baseline-host: the same kernels
+                                      emulated on the CPU, for checking)
+
+Runs the gravity-like or PBD-like scene of examples/paper with one of the
+four algorithms, written by hand, and reports the same metrics as
+`sim-run --json` (bench/run compares the two).
+
+OPTIONS:
+  --scene S            gravity_like or pbd_like (default gravity_like)
+  --strategy S         simple, traditional, hip or hip-cache (default hip)
+  --steps N            base steps per run (default 100)
+  --repeat K           measured runs from the initial state, median reported;
+                       with K > 1 one more warm-up run comes first (default 1)
+  --set NAME=VALUE     range, dt, L, dist or group, as for sim-run --set
+                       (defaults 65536, 1e-3, 8, 0, 32)
+  --group-size G       threads per group: the hip sub-step group (default 256)
+  --interp I           linear: the scene as checked in (pbd_like keeps B3 and
+                       B4 cubic); cubic: every buffer cubic, as bench/run
+                       substitutes it (default linear)
+  --m-on-host          read the clock after every big step (the paper's
+                       implementation) instead of once per batch
+  --dump DIR           write the observed buffer as DIR/<buffer>.npy
+  --json FILE          write the metrics as JSON (sim-run's keys)
+  --help               this text
+)";
+
+[[noreturn]] void usageError(const std::string &message) {
+  std::fprintf(stderr, "error: %s (see --help)\n", message.c_str());
+  std::exit(2);
+}
+
+long long parseInteger(const std::string &name, const std::string &text,
+                       long long low, long long high) {
+  char *end = nullptr;
+  errno = 0;
+  long long value = std::strtoll(text.c_str(), &end, 10);
+  if (text.empty() || *end || errno || value < low || value > high)
+    usageError(name + " expects an integer in [" + std::to_string(low) + ", " +
+               std::to_string(high) + "], got '" + text + "'");
+  return value;
+}
+
+Options parseOptions(int argc, char **argv) {
+  Options o;
+  for (int a = 1; a < argc; ++a) {
+    std::string name = argv[a];
+    auto value = [&]() -> std::string {
+      if (a + 1 >= argc)
+        usageError(name + " expects a value");
+      return argv[++a];
+    };
+    if (name == "--help" || name == "-h") {
+      std::fputs(kUsage, stdout);
+      std::exit(0);
+    } else if (name == "--scene") {
+      o.scene = value();
+      if (o.scene != "gravity_like" && o.scene != "pbd_like")
+        usageError("unknown scene '" + o.scene + "'");
+    } else if (name == "--strategy") {
+      std::string s = value();
+      if (s == "simple")
+        o.strategy = Strategy::Simple;
+      else if (s == "traditional")
+        o.strategy = Strategy::Traditional;
+      else if (s == "hip")
+        o.strategy = Strategy::Hip;
+      else if (s == "hip-cache")
+        o.strategy = Strategy::HipCache;
+      else
+        usageError("unknown strategy '" + s + "'");
+    } else if (name == "--steps") {
+      o.steps = parseInteger(name, value(), 0, LLONG_MAX / 2);
+    } else if (name == "--repeat") {
+      o.repeat = (int)parseInteger(name, value(), 1, 100000);
+    } else if (name == "--group-size") {
+      o.groupSize = (int)parseInteger(name, value(), 32, 1024);
+      if (o.groupSize % 32)
+        usageError("--group-size must be a multiple of 32");
+    } else if (name == "--interp") {
+      o.interp = value();
+      if (o.interp != "linear" && o.interp != "cubic")
+        usageError("--interp expects linear or cubic");
+    } else if (name == "--m-on-host") {
+      o.mOnHost = true;
+    } else if (name == "--dump") {
+      o.dumpDir = value();
+    } else if (name == "--json") {
+      o.jsonPath = value();
+    } else if (name == "--set") {
+      std::string pair = value();
+      size_t eq = pair.find('=');
+      if (eq == std::string::npos)
+        usageError("--set expects NAME=VALUE");
+      std::string key = pair.substr(0, eq), text = pair.substr(eq + 1);
+      if (key == "range")
+        o.params.range = parseInteger(key, text, 1, 1ll << 31);
+      else if (key == "L")
+        o.params.rounds = (int)parseInteger(key, text, 0, INT_MAX);
+      else if (key == "dist")
+        o.params.dist = (int)parseInteger(key, text, INT_MIN, INT_MAX);
+      else if (key == "group")
+        o.params.group = (int)parseInteger(key, text, INT_MIN, INT_MAX);
+      else if (key == "dt") {
+        char *end = nullptr;
+        o.params.dt = std::strtof(text.c_str(), &end);
+        if (text.empty() || *end)
+          usageError("dt expects a number, got '" + text + "'");
+      } else {
+        usageError("unknown parameter '" + key +
+                   "' (range, dt, L, dist or group)");
+      }
+    } else {
+      usageError("unknown option '" + name + "'");
+    }
+  }
+  return o;
+}
+
+void writeNpy(const std::string &path, const std::vector<float> &values,
+              long long range) {
+  std::string header = "{'descr': '<f4', 'fortran_order': False, 'shape': (" +
+                       std::to_string(range) + ", 4), }";
+  size_t total = 10 + header.size() + 1;
+  header += std::string((64 - total % 64) % 64, ' ') + "\n";
+  std::string temporary = path + ".tmp";
+  std::ofstream out(temporary, std::ios::binary);
+  out.write("\x93NUMPY\x01\x00", 8);
+  unsigned short length = (unsigned short)header.size();
+  out.put((char)(length & 0xff)).put((char)(length >> 8));
+  out << header;
+  out.write(reinterpret_cast<const char *>(values.data()),
+            values.size() * sizeof(float));
+  out.close();
+  if (!out || std::rename(temporary.c_str(), path.c_str()) != 0) {
+    std::fprintf(stderr, "error: cannot write %s\n", path.c_str());
+    std::exit(1);
+  }
+}
+
+double median(std::vector<double> values) {
+  std::sort(values.begin(), values.end());
+  size_t n = values.size();
+  return n % 2 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
+}
+
+std::string jsonNumber(double value) {
+  char text[40];
+  std::snprintf(text, sizeof text, "%.17g", value);
+  return text;
+}
+
+template <typename Scene> int runScene(const Options &o) {
+  std::string device = compat::deviceName();
+  Simulation<Scene> simulation(o);
+  std::vector<double> walls, kernels;
+  RunMetrics last;
+  int total = o.repeat > 1 ? o.repeat + 1 : 1;
+  for (int r = 0; r < total; ++r) {
+    RunMetrics metrics = simulation.run(o.steps);
+    if (total > 1 && r == 0)
+      continue; // warm-up
+    walls.push_back(metrics.wallSeconds);
+    kernels.push_back(metrics.kernelSeconds);
+    last = metrics;
+  }
+  const Clock &clock = last.clock;
+  unsigned long long evaluations = 0;
+  for (int c = 0; c < numComponents<Scene>; ++c)
+    evaluations += clock.evaluations[c];
+
+  std::printf("%s %s (hand-written, %s%s): range %lld, group size %d, %lld "
+              "base steps",
+              Scene::name, strategyName(o.strategy), compat::backendName(),
+              o.mOnHost ? ", m on host" : "", (long long)o.params.range,
+              o.groupSize, o.steps);
+  if (o.repeat > 1)
+    std::printf(", median of %d runs after a warm-up", o.repeat);
+  std::printf("\n  device           %s\n", device.c_str());
+  std::printf("  kernel time      %.3f ms\n", 1e3 * median(kernels));
+  std::printf("  wall time        %.3f ms\n", 1e3 * median(walls));
+  std::printf("  launches         %llu\n", last.launches);
+  std::printf("  host syncs       %llu\n", last.hostSyncs);
+  std::printf("  big steps        %llu\n  big-step sizes  ", clock.bigSteps);
+  for (int m = 1; m <= kMaxSteps; ++m)
+    std::printf(" %d: %llu", m, clock.histogram[m]);
+  std::printf("\n  evaluations     ");
+  for (int c = 0; c < numComponents<Scene>; ++c)
+    std::printf(" C%d %llu", c, clock.evaluations[c]);
+  std::printf("\n");
+
+  if (!o.dumpDir.empty())
+    writeNpy(o.dumpDir + "/B" + std::to_string(Scene::observed) + ".npy",
+             simulation.observed(), o.params.range);
+  if (!o.jsonPath.empty()) {
+    std::ostringstream json;
+    auto list = [&](const std::vector<double> &values) {
+      std::string text = "[";
+      for (size_t i = 0; i < values.size(); ++i)
+        text += (i ? ", " : "") + jsonNumber(values[i]);
+      return text + "]";
+    };
+    json << "{\n  \"scene\": \"" << Scene::name << "\",\n"
+         << "  \"strategy\": \"" << strategyName(o.strategy) << "\",\n"
+         << "  \"implementation\": \"hand-written\",\n"
+         << "  \"backend\": \"" << compat::backendName() << "\",\n"
+         << "  \"device\": \"" << device << "\",\n"
+         << "  \"m_on_host\": " << (o.mOnHost ? "true" : "false") << ",\n"
+         << "  \"interp\": \"" << o.interp << "\",\n"
+         << "  \"range\": " << o.params.range << ",\n"
+         << "  \"dt\": " << jsonNumber(o.params.dt) << ",\n"
+         << "  \"L\": " << o.params.rounds << ",\n"
+         << "  \"dist\": " << o.params.dist << ",\n"
+         << "  \"group_size\": " << o.groupSize << ",\n"
+         << "  \"steps\": " << o.steps << ",\n"
+         << "  \"repeat\": " << o.repeat << ",\n"
+         << "  \"wall_seconds\": " << jsonNumber(median(walls)) << ",\n"
+         << "  \"kernel_seconds\": " << jsonNumber(median(kernels)) << ",\n"
+         << "  \"wall_seconds_runs\": " << list(walls) << ",\n"
+         << "  \"kernel_seconds_runs\": " << list(kernels) << ",\n"
+         << "  \"launches\": " << last.launches << ",\n"
+         << "  \"host_syncs\": " << last.hostSyncs << ",\n"
+         << "  \"big_steps\": " << clock.bigSteps << ",\n"
+         << "  \"big_step_histogram\": {";
+    for (int m = 1; m <= kMaxSteps; ++m)
+      json << (m > 1 ? ", " : "") << "\"" << m << "\": " << clock.histogram[m];
+    json << "},\n  \"evaluations\": {";
+    for (int c = 0; c < numComponents<Scene>; ++c)
+      json << (c ? ", " : "") << "\"C" << c << "\": " << clock.evaluations[c];
+    json << "},\n  \"total_evaluations\": " << evaluations << "\n}\n";
+    std::ofstream out(o.jsonPath);
+    out << json.str();
+    if (!out) {
+      std::fprintf(stderr, "error: cannot write %s\n", o.jsonPath.c_str());
+      return 1;
+    }
+  }
+  return 0;
+}
+
+} // namespace
+
+int main(int argc, char **argv) {
+  Options options = parseOptions(argc, argv);
+  if (options.scene == "gravity_like")
+    return runScene<GravityLike>(options);
+  return runScene<PbdLike>(options);
+}
