@@ -1,7 +1,8 @@
 """Reading the .npy files sim-run --dump writes, with the standard library.
 
 `read_npy(path)` returns the shape and the values (a flat list of floats) of a
-little-endian `<f4` or `<f8` array, the only kinds sim-run writes;
+little-endian `<f4` or `<f8` array, the only kinds sim-run writes (and the
+raw bytes with `with_bytes=True`);
 `compare(a, b)` the largest absolute difference and the RMS-relative
 difference of two equally long lists (b the reference).
 """
@@ -13,8 +14,9 @@ import struct
 __all__ = ["read_npy", "compare"]
 
 
-def read_npy(path):
-    """Returns (shape, flat list of floats) of a little-endian f4/f8 .npy."""
+def read_npy(path, with_bytes=False):
+    """Returns (shape, flat list of floats) of a little-endian f4/f8 .npy,
+    and with `with_bytes` the raw data too (for comparing bit for bit)."""
     with open(path, "rb") as f:
         data = f.read()
     if data[:6] != b"\x93NUMPY":
@@ -32,7 +34,9 @@ def read_npy(path):
         raise ValueError("%s: unsupported array %r" % (path, header))
     body = data[start + length:]
     count = len(body) // struct.calcsize(code)
-    return header["shape"], list(struct.unpack("<%d%s" % (count, code), body))
+    values = list(struct.unpack("<%d%s" % (count, code), body))
+    return (header["shape"], values, body) if with_bytes else (header["shape"],
+                                                                values)
 
 
 def compare(a, b):

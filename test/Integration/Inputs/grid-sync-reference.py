@@ -17,7 +17,7 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from strategies import read_npy  # noqa: E402
 
 path, ns, bigs = sys.argv[1], int(sys.argv[2]), [int(m) for m in sys.argv[3:]]
-shape, got, _ = read_npy(path)
+shape, got = read_npy(path)
 R, dt = shape[0], 0.05
 u = [math.sin(i * 0.2) for i in range(R)]
 subs = []

@@ -27,13 +27,16 @@ Usage: strategies.py SIM_RUN BUNDLE OUTDIR --steps N [--set K=V]...
 """
 
 import argparse
-import ast
 import json
 import math
 import os
-import struct
 import subprocess
 import sys
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+sys.dont_write_bytecode = True
+sys.path.insert(0, os.path.join(HERE, "..", "..", "..", "python"))
+from simnpy import read_npy  # noqa: E402
 
 STRATEGIES = ["simple", "traditional", "hip", "hip-cache"]
 
@@ -41,26 +44,6 @@ STRATEGIES = ["simple", "traditional", "hip", "hip-cache"]
 def fail(message):
     print("error: " + message)
     sys.exit(1)
-
-
-def read_npy(path):
-    """Returns (shape, flat list of floats) of a little-endian f4/f8 .npy."""
-    data = open(path, "rb").read()
-    if data[:6] != b"\x93NUMPY":
-        fail("%s is not a .npy file" % path)
-    major = data[6]
-    if major == 1:
-        (length,) = struct.unpack("<H", data[8:10])
-        start = 10
-    else:
-        (length,) = struct.unpack("<I", data[8:12])
-        start = 12
-    header = ast.literal_eval(data[start:start + length].decode("latin1"))
-    body = data[start + length:]
-    code = {"<f4": "f", "<f8": "d"}[header["descr"]]
-    count = len(body) // struct.calcsize(code)
-    values = list(struct.unpack("<%d%s" % (count, code), body))
-    return header["shape"], values, body
 
 
 def run(args, strategy, sets, tag, bundle=None):
@@ -96,7 +79,7 @@ def run(args, strategy, sets, tag, bundle=None):
     for name in sorted(os.listdir(out)):
         if not name.endswith(".npy") or name.endswith(".reference.npy"):
             continue
-        shape, values, body = read_npy(os.path.join(out, name))
+        shape, values, body = read_npy(os.path.join(out, name), with_bytes=True)
         bad = [k for k, v in enumerate(values) if not math.isfinite(v)]
         if bad:
             fail("%s %s: %s has %d non-finite values, the first at %d" %
