@@ -517,19 +517,11 @@ __global__ void substepKernel(Clock *clock, Buffers buffers, Params p) {
 
 enum class Strategy { Simple, Traditional, Hip, HipCache };
 
-const char *strategyName(Strategy s) {
-  switch (s) {
-  case Strategy::Simple:
-    return "simple";
-  case Strategy::Traditional:
-    return "traditional";
-  case Strategy::Hip:
-    return "hip";
-  case Strategy::HipCache:
-    return "hip-cache";
-  }
-  return "?";
-}
+// Indexed by Strategy: the names sim-run takes.
+const char *const kStrategyNames[] = {"simple", "traditional", "hip",
+                                      "hip-cache"};
+
+const char *strategyName(Strategy s) { return kStrategyNames[(int)s]; }
 
 struct Options {
   std::string scene = "gravity_like";
@@ -761,16 +753,11 @@ Options parseOptions(int argc, char **argv) {
         usageError("unknown scene '" + o.scene + "'");
     } else if (name == "--strategy") {
       std::string s = value();
-      if (s == "simple")
-        o.strategy = Strategy::Simple;
-      else if (s == "traditional")
-        o.strategy = Strategy::Traditional;
-      else if (s == "hip")
-        o.strategy = Strategy::Hip;
-      else if (s == "hip-cache")
-        o.strategy = Strategy::HipCache;
-      else
+      auto *known =
+          std::find(std::begin(kStrategyNames), std::end(kStrategyNames), s);
+      if (known == std::end(kStrategyNames))
         usageError("unknown strategy '" + s + "'");
+      o.strategy = Strategy(known - std::begin(kStrategyNames));
     } else if (name == "--steps") {
       o.steps = parseInteger(name, value(), 0, LLONG_MAX / 2);
     } else if (name == "--repeat") {

@@ -171,7 +171,6 @@ inline unsigned long long atomicAdd(unsigned long long *address,
                                     unsigned long long value) {
   return std::atomic_ref<unsigned long long>(*address).fetch_add(value);
 }
-inline float __fmaf_rn(float a, float b, float c) { return std::fma(a, b, c); }
 
 #define SIM_DYNAMIC_SHARED(type, name)                                         \
   type *name = reinterpret_cast<type *>(compat::threadState.dynamicShared)
