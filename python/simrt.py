@@ -39,7 +39,7 @@ class _Options(ctypes.Structure):
     _fields_ = [("strategy", ctypes.c_int), ("backend", ctypes.c_int),
                 ("group_size", ctypes.c_int64), ("cpu_threads", ctypes.c_int32),
                 ("cuda_device", ctypes.c_int32), ("cuda_graph", ctypes.c_int32),
-                ("check_finite", ctypes.c_int32)]
+                ("check_finite", ctypes.c_int32), ("max_memory", ctypes.c_int64)]
 
 
 class _Metrics(ctypes.Structure):

@@ -33,6 +33,9 @@ public:
   virtual sim_backend kind() const = 0;
   /// The device in words, for reports.
   virtual std::string device() const = 0;
+  /// Bytes of memory of the device (0 if unknown): the default memory
+  /// limit of a session is three quarters of it.
+  virtual int64_t memoryBytes() const = 0;
   /// Throws SIM_ERROR_INVALID_ARGUMENT if the device cannot run groups of
   /// this size.
   virtual void checkGroupSize(int64_t groupSize) const = 0;

@@ -87,6 +87,10 @@ const char *sim_status_name(sim_status status) {
     return "non-finite value";
   case SIM_ERROR_CLOCK:
     return "clock error";
+  case SIM_ERROR_INTERRUPTED:
+    return "interrupted";
+  case SIM_ERROR_MEMORY_LIMIT:
+    return "memory limit";
   }
   return "unknown status";
 }
@@ -323,6 +327,14 @@ sim_status sim_session_get(const sim_session *session, const char *name,
   });
 }
 
+int64_t sim_session_memory_bytes(const sim_session *session) {
+  return session ? session->session->memoryBytes(session->session->range()) : 0;
+}
+
+int64_t sim_session_memory_limit(const sim_session *session) {
+  return session ? session->session->memoryLimit() : 0;
+}
+
 int64_t sim_session_range(const sim_session *session) {
   return session ? session->session->range() : 0;
 }
@@ -412,6 +424,16 @@ void sim_session_set_progress(sim_session *session, sim_progress_fn progress,
 sim_status sim_session_run(sim_session *session, int64_t steps) {
   SIM_REQUIRE(session);
   return guard([&] { session->session->run(steps); });
+}
+
+void sim_session_interrupt(sim_session *session) {
+  if (session)
+    session->session->interrupt();
+}
+
+void sim_session_resume(sim_session *session) {
+  if (session)
+    session->session->resume();
 }
 
 sim_status sim_session_metrics(const sim_session *session, sim_metrics *out) {

@@ -12,18 +12,25 @@
 
 #include "Backend.h"
 #include "Error.h"
+#include "Executor.h"
 #include "SharedObject.h"
 
+#include <algorithm>
 #include <chrono>
 #include <condition_variable>
 #include <cstdlib>
 #include <cstring>
 #include <mutex>
+#include <system_error>
 #include <thread>
 
 namespace sim::rt {
 
 namespace {
+
+/// The largest group the CPU kernels take, and the most worker threads.
+constexpr int64_t kMaxGroupSize = 4096;
+constexpr int kMaxThreads = 1024;
 
 using KernelFn = void (*)(void **params, int64_t firstGroup, int64_t endGroup,
                           int64_t groupSize);
@@ -33,18 +40,24 @@ using KernelFn = void (*)(void **params, int64_t firstGroup, int64_t endGroup,
 class ThreadPool {
 public:
   explicit ThreadPool(int threads) {
-    for (int i = 1; i < threads; ++i)
-      workers.emplace_back([this, i] { work(i); });
-  }
-  ~ThreadPool() {
-    {
-      std::lock_guard<std::mutex> lock(mutex);
-      stopping = true;
+    if (threads < 1 || threads > kMaxThreads)
+      fail(SIM_ERROR_INVALID_ARGUMENT,
+           std::to_string(threads) +
+               " CPU threads: the CPU backend takes 1 to " +
+               std::to_string(kMaxThreads));
+    try {
+      for (int i = 1; i < threads; ++i)
+        workers.emplace_back([this, i] { work(i); });
+    } catch (const std::system_error &error) {
+      // A constructor that throws runs no destructor: stop the workers
+      // started so far, or their std::thread objects terminate the process.
+      stop();
+      fail(SIM_ERROR_BACKEND, "cannot start " + std::to_string(threads) +
+                                  " CPU threads (" + error.what() +
+                                  "); ask for fewer");
     }
-    wake.notify_all();
-    for (std::thread &worker : workers)
-      worker.join();
   }
+  ~ThreadPool() { stop(); }
 
   int size() const { return int(workers.size()) + 1; }
 
@@ -69,6 +82,17 @@ public:
   }
 
 private:
+  void stop() {
+    {
+      std::lock_guard<std::mutex> lock(mutex);
+      stopping = true;
+    }
+    wake.notify_all();
+    for (std::thread &worker : workers)
+      worker.join();
+    workers.clear();
+  }
+
   struct Job {
     KernelFn fn;
     void **params;
@@ -112,8 +136,10 @@ private:
 class CpuBackend final : public Backend {
 public:
   explicit CpuBackend(int threads)
-      : pool(threads > 0 ? threads
-                         : std::max(1u, std::thread::hardware_concurrency())) {}
+      : pool(threads > 0
+                 ? threads
+                 : std::clamp<int>(int(std::thread::hardware_concurrency()), 1,
+                                   kMaxThreads)) {}
 
   sim_backend kind() const override { return SIM_BACKEND_CPU; }
 
@@ -122,10 +148,15 @@ public:
            (pool.size() == 1 ? " thread)" : " threads)");
   }
 
+  int64_t memoryBytes() const override { return physicalMemoryBytes(); }
+
   void checkGroupSize(int64_t groupSize) const override {
-    if (groupSize < 1)
+    // A kernel keeps per-lane variables of a group on its thread's stack.
+    if (groupSize < 1 || groupSize > kMaxGroupSize)
       fail(SIM_ERROR_INVALID_ARGUMENT,
-           "group size " + std::to_string(groupSize) + " is not positive");
+           "group size " + std::to_string(groupSize) +
+               " is not between 1 and " + std::to_string(kMaxGroupSize) +
+               ", as the CPU backend needs");
   }
 
   void load(const Bundle::StrategyCode &code, Strategy strategy,

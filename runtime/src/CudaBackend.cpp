@@ -154,6 +154,9 @@ public:
              "cuDeviceGetAttribute");
     description = std::string(name) + " (sm_" + std::to_string(major) +
                   std::to_string(minor) + ")";
+    size_t total = 0;
+    cu.check(cu.cuDeviceTotalMem(&total, device_), "cuDeviceTotalMem");
+    totalMemory = int64_t(std::min<size_t>(total, INT64_MAX));
     // The primary context is the one the CUDA runtime and other libraries
     // in the process share.
     cu.check(cu.cuDevicePrimaryCtxRetain(&context, device_),
@@ -194,6 +197,7 @@ public:
 
   sim_backend kind() const override { return SIM_BACKEND_CUDA; }
   std::string device() const override { return description; }
+  int64_t memoryBytes() const override { return totalMemory; }
 
   void checkGroupSize(int64_t groupSize) const override {
     // Kernels reduce per warp with every lane taking part.
@@ -338,6 +342,7 @@ private:
 
   const Driver &cu;
   CUdevice device_ = 0;
+  int64_t totalMemory = 0;
   std::string description;
   CUcontext context = nullptr;
   bool retained = false;

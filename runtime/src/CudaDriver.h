@@ -59,6 +59,7 @@ constexpr CUstreamCaptureMode CU_STREAM_CAPTURE_MODE_THREAD_LOCAL = 1;
   X(cuDeviceGetCount, "cuDeviceGetCount", (int *))                             \
   X(cuDeviceGet, "cuDeviceGet", (CUdevice *, int))                             \
   X(cuDeviceGetName, "cuDeviceGetName", (char *, int, CUdevice))               \
+  X(cuDeviceTotalMem, "cuDeviceTotalMem_v2", (size_t *, CUdevice))             \
   X(cuDeviceGetAttribute, "cuDeviceGetAttribute",                              \
     (int *, CUdevice_attribute, CUdevice))                                     \
   X(cuDevicePrimaryCtxRetain, "cuDevicePrimaryCtxRetain",                      \

@@ -3,7 +3,10 @@
 #include "Executor.h"
 #include "Error.h"
 
+#include <cmath>
+#include <cstdio>
 #include <limits>
+#include <unistd.h>
 
 namespace sim::rt {
 
@@ -25,6 +28,72 @@ int64_t runEnd(int64_t begin, int64_t steps) {
   return begin + steps;
 }
 
+int64_t saturatingMul(int64_t a, int64_t b) {
+  int64_t product;
+  if (a < 0 || b < 0 || __builtin_mul_overflow(a, b, &product))
+    return std::numeric_limits<int64_t>::max();
+  return product;
+}
+
+int64_t saturatingAdd(int64_t a, int64_t b) {
+  int64_t sum;
+  if (a < 0 || b < 0 || __builtin_add_overflow(a, b, &sum))
+    return std::numeric_limits<int64_t>::max();
+  return sum;
+}
+
+int64_t physicalMemoryBytes() {
+  long pages = sysconf(_SC_PHYS_PAGES), pageSize = sysconf(_SC_PAGESIZE);
+  if (pages <= 0 || pageSize <= 0)
+    return 0;
+  return saturatingMul(pages, pageSize);
+}
+
+std::string formatBytes(int64_t bytes) {
+  if (bytes == std::numeric_limits<int64_t>::max())
+    return "more than 8 EiB";
+  const char *units[] = {"KiB", "MiB", "GiB", "TiB", "PiB", "EiB"};
+  if (bytes < 1024)
+    return std::to_string(bytes) + " bytes";
+  double value = double(bytes);
+  int unit = -1;
+  while (value >= 1024 && unit < 5) {
+    value /= 1024;
+    ++unit;
+  }
+  char text[32];
+  std::snprintf(text, sizeof text, "%.2f %s", value, units[unit]);
+  return text;
+}
+
+void Executor::setMemoryLimit(int64_t requested, int64_t deviceBytes) {
+  if (requested < 0)
+    fail(SIM_ERROR_INVALID_ARGUMENT,
+         "max_memory " + std::to_string(requested) + " is negative");
+  memoryLimit_ = requested         ? requested
+                 : deviceBytes > 0 ? deviceBytes / 4 * 3
+                                   : std::numeric_limits<int64_t>::max();
+}
+
+void Executor::checkMemory(int64_t range, const std::string &what) const {
+  int64_t needed = memoryBytes(range);
+  if (needed <= memoryLimit_)
+    return;
+  fail(SIM_ERROR_MEMORY_LIMIT,
+       what + " needs " + formatBytes(needed) + " for the state of scene '" +
+           scene().name + "', more than the limit of " +
+           formatBytes(memoryLimit_) +
+           " (a smaller range, or a larger max_memory / --max-memory)");
+}
+
+void Executor::failInterrupted(int64_t begin, int64_t reached,
+                               int64_t end) const {
+  fail(SIM_ERROR_INTERRUPTED, "interrupted at base step " +
+                                  std::to_string(reached) + " of a run from " +
+                                  std::to_string(begin) + " to " +
+                                  std::to_string(end));
+}
+
 Settings::Settings(const Scene &scene)
     : scene(&scene), range(scene.range), dt(scene.dt) {
   for (const SceneParam &param : scene.params)
@@ -35,16 +104,22 @@ bool Settings::set(const std::string &name, const std::string &text,
                    const std::function<void(int64_t)> &checkRange) {
   if (name == "range") {
     Value value = parseValue(ScalarType::I64, text, "range");
-    if (value.i < 1)
+    if (value.i < 1 || value.i > kMaxRange)
       fail(SIM_ERROR_INVALID_ARGUMENT,
-           "range: " + text + " is not a positive number of items");
+           "range: " + text + " is not a number of items from 1 to 2^40");
     checkRange(value.i);
     bool changed = value.i != range;
     range = value.i;
     return changed;
   }
   if (name == "dt") {
-    dt = parseValue(dt.type, text, "dt");
+    Value value = parseValue(dt.type, text, "dt");
+    double asUsed =
+        value.type == ScalarType::F32 ? double(float(value.f)) : value.f;
+    if (!std::isfinite(asUsed) || !(asUsed > 0))
+      fail(SIM_ERROR_INVALID_ARGUMENT,
+           "dt: " + text + " is not a positive finite time step");
+    dt = value;
     return false;
   }
   int index = scene->findParam(name);

@@ -16,6 +16,7 @@
 #include "Bundle.h"
 #include "sim/Runtime/sim_runtime.h"
 
+#include <atomic>
 #include <functional>
 #include <string>
 #include <vector>
@@ -29,7 +30,9 @@ public:
 
   /// Sets `name` from `text`. `checkRange` is called with a new range
   /// before it is taken and throws if the state would not fit. Returns
-  /// whether the range changed (the caller discards its state then).
+  /// whether the range changed (the caller discards its state then). A
+  /// range is a positive item count of at most kMaxRange, dt a positive
+  /// finite number.
   bool set(const std::string &name, const std::string &text,
            const std::function<void(int64_t)> &checkRange);
   std::string get(const std::string &name) const;
@@ -44,6 +47,22 @@ public:
   Value dt;
   std::vector<Value> params;
 };
+
+/// The largest range a session takes: far above any memory, and small
+/// enough that item indices, element offsets and byte counts of a buffer
+/// fit in 64 bits.
+constexpr int64_t kMaxRange = int64_t(1) << 40;
+
+/// `a * b` and `a + b` of byte counts, saturating at INT64_MAX (which no
+/// memory limit allows).
+int64_t saturatingMul(int64_t a, int64_t b);
+int64_t saturatingAdd(int64_t a, int64_t b);
+
+/// Bytes of physical memory of this machine (0 if unknown).
+int64_t physicalMemoryBytes();
+
+/// "1.50 GiB", "512 KiB", "37 bytes".
+std::string formatBytes(int64_t bytes);
 
 /// Comma-separated names, "none" for none.
 std::string listNames(const std::vector<std::string> &names);
@@ -101,6 +120,16 @@ public:
     progressUser = user;
   }
 
+  /// The bytes the state takes at `range` items (saturating).
+  virtual int64_t memoryBytes(int64_t range) const = 0;
+  /// The most the state may take.
+  int64_t memoryLimit() const { return memoryLimit_; }
+
+  /// Requests that runs stop at their next host synchronisation; safe from
+  /// a signal handler.
+  void interrupt() { interruptRequested.store(true, std::memory_order_relaxed); }
+  void resume() { interruptRequested.store(false, std::memory_order_relaxed); }
+
   /// The last run's measurements.
   sim_metrics metrics{};
   std::vector<int64_t> evaluations; // per component
@@ -117,8 +146,28 @@ public:
   } nonFinite;
 
 protected:
+  /// Sets the limit from the options (0: three quarters of `deviceBytes`,
+  /// the device's memory; no limit when that is unknown).
+  void setMemoryLimit(int64_t requested, int64_t deviceBytes);
+  /// Throws SIM_ERROR_MEMORY_LIMIT when the state at `range` items would
+  /// not fit the limit; `what` names the request ("range 100000000").
+  void checkMemory(int64_t range, const std::string &what) const;
+  bool interruptPending() const {
+    return interruptRequested.load(std::memory_order_relaxed);
+  }
+  /// Throws SIM_ERROR_INTERRUPTED for a run from `begin` to `end` that
+  /// stopped at `reached`.
+  [[noreturn]] void failInterrupted(int64_t begin, int64_t reached,
+                                    int64_t end) const;
+
   sim_progress_fn progress = nullptr;
   void *progressUser = nullptr;
+
+private:
+  static_assert(std::atomic<bool>::is_always_lock_free,
+                "sim_session_interrupt must be async-signal-safe");
+  std::atomic<bool> interruptRequested{false};
+  int64_t memoryLimit_ = 0;
 };
 
 } // namespace sim::rt

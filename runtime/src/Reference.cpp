@@ -20,9 +20,6 @@ namespace sim::rt {
 
 namespace {
 
-/// Largest number of bytes the four copies of one buffer may take.
-constexpr int64_t kMaxBufferBytes = int64_t(1) << 50;
-
 enum : uint8_t { kNotComputed = 0, kComputing = 1, kComputed = 2 };
 
 template <typename S> S lane(const uint8_t *element, int32_t index) {
@@ -82,6 +79,7 @@ ReferenceSession::ReferenceSession(std::shared_ptr<const Bundle> bundleIn,
          "unknown strategy " + std::to_string(int(options.strategy)));
   strategy = Strategy(options.strategy);
   checkFinite_ = options.check_finite;
+  setMemoryLimit(options.max_memory, physicalMemoryBytes());
 
   // The group size decides the sub-steps of hip: by default the one the
   // strategy's plan was made for, so a check compares like with like.
@@ -158,11 +156,7 @@ ReferenceSession::~ReferenceSession() = default;
 
 void ReferenceSession::set(const std::string &name, const std::string &text) {
   bool rangeChanged = settings.set(name, text, [&](int64_t range) {
-    for (const RefBuffer &buffer : model_->buffers)
-      if (range > kMaxBufferBytes / 4 / buffer.type.packedBytes())
-        fail(SIM_ERROR_INVALID_ARGUMENT,
-             "range: " + text + " items of buffer '" + buffer.name +
-                 "' would not fit in memory");
+    checkMemory(range, "range " + std::to_string(range));
   });
   // The state of another size is meaningless: start over.
   if (rangeChanged)
@@ -179,6 +173,19 @@ int ReferenceSession::bufferIndex(const std::string &name) const {
   fail(SIM_ERROR_INVALID_ARGUMENT,
        "'" + name + "' is not a buffer of the reference model (buffers: " +
            listNames(names) + ")");
+}
+
+int64_t ReferenceSession::memoryBytes(int64_t range) const {
+  // Per buffer: the initial state, begin, end and current copies, the
+  // temporaries of a sub-step, and a status byte per item.
+  int64_t bytes = 0;
+  for (const RefBuffer &buffer : model_->buffers)
+    bytes = saturatingAdd(
+        bytes,
+        saturatingAdd(
+            saturatingMul(saturatingMul(range, buffer.type.packedBytes()), 5),
+            range));
+  return bytes;
 }
 
 size_t ReferenceSession::hostBytes(const std::string &name) const {
@@ -396,6 +403,7 @@ void ReferenceSession::param(int32_t index, void *out) {
 void ReferenceSession::init() {
   initialized = false;
   int64_t range = settings.range;
+  checkMemory(range, "range " + std::to_string(range));
   states.assign(model_->buffers.size(), State{});
   initStatus.assign(model_->buffers.size(), {});
   for (size_t b = 0; b < states.size(); ++b) {
@@ -685,7 +693,12 @@ void ReferenceSession::run(int64_t steps) {
   int64_t begin = now;
   int64_t end = runEnd(begin, steps);
   auto start = std::chrono::steady_clock::now();
+  bool interrupted = false;
   while (now < end) {
+    if (interruptPending()) {
+      interrupted = true;
+      break;
+    }
     bigStep(end);
     if (progress)
       progress(progressUser, now - begin, steps);
@@ -695,9 +708,11 @@ void ReferenceSession::run(int64_t steps) {
           .count();
   // Every moment of a run is spent in or around the bodies.
   metrics.kernel_seconds = metrics.wall_seconds;
-  metrics.steps = steps;
+  metrics.steps = now - begin;
   metrics.begin = begin;
-  metrics.end = end;
+  metrics.end = now;
+  if (interrupted)
+    failInterrupted(begin, now, end);
 }
 
 } // namespace sim::rt

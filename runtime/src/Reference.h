@@ -52,6 +52,7 @@ public:
   void init() override;
   int64_t time() const override { return now; }
 
+  int64_t memoryBytes(int64_t range) const override;
   size_t hostBytes(const std::string &buffer) const override;
   void getBuffer(const std::string &buffer, void *data, size_t bytes) override;
   void setBuffer(const std::string &buffer, const void *data,

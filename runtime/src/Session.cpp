@@ -27,9 +27,6 @@ namespace {
 /// driver's launch queue reasonable.
 constexpr int64_t kMaxBatch = 256;
 
-/// Largest number of bytes one buffer may take (both halves).
-constexpr int64_t kMaxBufferBytes = int64_t(1) << 50;
-
 } // namespace
 
 Session::Session(std::shared_ptr<const Bundle> bundleIn,
@@ -93,6 +90,7 @@ Session::Session(std::shared_ptr<const Bundle> bundleIn,
   }
   deviceName = backend->device();
 
+  setMemoryLimit(options.max_memory, backend->memoryBytes());
   groupSize_ = options.group_size ? options.group_size : plan_->groupSize;
   backend->checkGroupSize(groupSize_);
   kernelNames = plan_->kernelNames();
@@ -117,11 +115,7 @@ Session::~Session() {
 
 void Session::set(const std::string &name, const std::string &text) {
   bool rangeChanged = settings.set(name, text, [&](int64_t range) {
-    for (const PlanBuffer &buffer : plan_->buffers)
-      if (range > kMaxBufferBytes / 2 / buffer.stride)
-        fail(SIM_ERROR_INVALID_ARGUMENT,
-             "range: " + text + " items of buffer '" + buffer.name +
-                 "' would not fit in memory");
+    checkMemory(range, "range " + std::to_string(range));
   });
   if (rangeChanged) {
     // The state of another size is meaningless: start over.
@@ -149,6 +143,18 @@ size_t Session::deviceStride(int buffer) const {
   return size_t(plan_->buffers[buffer].stride);
 }
 
+int64_t Session::memoryBytes(int64_t range) const {
+  int64_t bytes = saturatingMul(plan_->clockSlots, sizeof(int64_t));
+  for (const PlanBuffer &buffer : plan_->buffers) {
+    int64_t copies = 2 + int64_t(buffer.snapshot) + int64_t(buffer.exact);
+    bytes = saturatingAdd(
+        bytes, saturatingMul(saturatingMul(range, buffer.stride), copies));
+  }
+  return saturatingAdd(bytes,
+                       saturatingMul(saturatingMul(range, sizeof(double)),
+                                     int64_t(plan_->totals.size())));
+}
+
 size_t Session::hostBytes(const std::string &name) const {
   return size_t(settings.range) *
          size_t(plan_->buffers[bufferIndex(name)].type.packedBytes());
@@ -159,6 +165,7 @@ size_t Session::hostBytes(const std::string &name) const {
 //===----------------------------------------------------------------------===//
 
 void Session::allocate() {
+  checkMemory(settings.range, "range " + std::to_string(settings.range));
   auto take = [&](size_t bytes) {
     Memory memory{backend->allocate(bytes), bytes};
     return memory;
@@ -423,6 +430,14 @@ void Session::run(int64_t steps) {
   // only costs its (empty) launches.
   double meanStep = double(cap);
   while (now < end) {
+    if (interruptPending()) {
+      // Stop on the big-step boundary reached: end the run there, so that
+      // finish commits the last big step and decides none.
+      end = now;
+      backend->write(clockMemory.pointer + kSlotEnd * sizeof(int64_t), &end,
+                     sizeof end);
+      break;
+    }
     int64_t batch = options.check_finite
                         ? 1
                         : std::clamp<int64_t>(
@@ -459,13 +474,13 @@ void Session::run(int64_t steps) {
 
   // The device-side clamp makes a run end exactly at its end.
   if (clock[kSlotBegin] != end || clock[kSlotSize] != 0)
-    fail(SIM_ERROR_CLOCK, "a run of " + std::to_string(steps) +
+    fail(SIM_ERROR_CLOCK, "a run of " + std::to_string(end - begin) +
                               " base steps from base step " +
                               std::to_string(begin) + " ended at base step " +
                               std::to_string(clock[kSlotBegin]) +
                               " (m = " + std::to_string(clock[kSlotSize]) +
                               "), not at " + std::to_string(end));
-  metrics.steps = steps;
+  metrics.steps = end - begin;
   metrics.begin = begin;
   metrics.end = end;
   metrics.big_steps = clock[kSlotBigSteps] - before[kSlotBigSteps];
@@ -477,6 +492,8 @@ void Session::run(int64_t steps) {
     size_t slot = size_t(plan_->histogramSlot + m);
     histogram[m] = clock[slot] - before[slot];
   }
+  if (end < begin + steps)
+    failInterrupted(begin, end, begin + steps);
 }
 
 //===----------------------------------------------------------------------===//

@@ -51,6 +51,7 @@ public:
     return clock.empty() ? 0 : clock[kSlotBegin];
   }
 
+  int64_t memoryBytes(int64_t range) const override;
   size_t hostBytes(const std::string &buffer) const override;
   void getBuffer(const std::string &buffer, void *data, size_t bytes) override;
   void setBuffer(const std::string &buffer, const void *data,

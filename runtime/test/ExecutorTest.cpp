@@ -213,12 +213,8 @@ TEST(Executor, RejectsBadNamesAndValues) {
       std::string::npos);
   EXPECT_NE(
       errorOf([&] { session.set("range", "0"); }, SIM_ERROR_INVALID_ARGUMENT)
-          .find("not a positive number of items"),
+          .find("not a number of items from 1 to 2^40"),
       std::string::npos);
-  EXPECT_NE(errorOf([&] { session.set("range", "1000000000000000"); },
-                    SIM_ERROR_INVALID_ARGUMENT)
-                .find("would not fit in memory"),
-            std::string::npos);
   EXPECT_NE(errorOf([&] { session.run(-1); }, SIM_ERROR_INVALID_ARGUMENT)
                 .find("cannot run -1 base steps"),
             std::string::npos);
@@ -398,10 +394,90 @@ TEST(Executor, RejectsKernelsThatStallTheClock) {
             std::string::npos);
 }
 
-TEST(Executor, RejectsAGroupSizeOfZeroOrLess) {
-  EXPECT_NE(
-      errorOf([] { Session s(decay(), cpuOptions(SIM_STRATEGY_HIP, 1, -4)); },
-              SIM_ERROR_INVALID_ARGUMENT)
-          .find("group size -4 is not positive"),
-      std::string::npos);
+TEST(Executor, RejectsGroupSizesTheCpuCannotRun) {
+  for (int64_t groupSize : {int64_t(-4), int64_t(4097), int64_t(1) << 19})
+    EXPECT_TRUE(contains(
+        errorOf(
+            [&] {
+              Session s(decay(), cpuOptions(SIM_STRATEGY_HIP, 1, groupSize));
+            },
+            SIM_ERROR_INVALID_ARGUMENT),
+        "group size " + std::to_string(groupSize) +
+            " is not between 1 and 4096, as the CPU backend needs"));
+}
+
+TEST(Executor, RejectsThreadCountsOutsideItsRange) {
+  EXPECT_TRUE(contains(
+      errorOf([] { Session s(decay(), cpuOptions(SIM_STRATEGY_HIP, 5000)); },
+              SIM_ERROR_INVALID_ARGUMENT),
+      "5000 CPU threads: the CPU backend takes 1 to 1024"));
+}
+
+TEST(Executor, RejectsTimeStepsThatAreNotPositiveAndFinite) {
+  Session session(decay(), cpuOptions(SIM_STRATEGY_HIP));
+  for (const char *dt : {"nan", "inf", "-inf", "0", "-1", "1e-400"})
+    EXPECT_TRUE(contains(
+        errorOf([&] { session.set("dt", dt); }, SIM_ERROR_INVALID_ARGUMENT),
+        "is not a positive finite time step"))
+        << dt;
+  EXPECT_EQ(session.get("dt"), "0.01");
+  for (const char *range : {"0", "-3", "1099511627777"})
+    EXPECT_TRUE(contains(errorOf([&] { session.set("range", range); },
+                                 SIM_ERROR_INVALID_ARGUMENT),
+                         "is not a number of items from 1 to 2^40"))
+        << range;
+}
+
+TEST(Executor, RefusesAStateAboveTheMemoryLimit) {
+  sim_session_options options = cpuOptions(SIM_STRATEGY_HIP);
+  options.max_memory = 4096;
+  Session session(decay(), options);
+  EXPECT_EQ(session.memoryLimit(), 4096);
+  // 100 items: clock, X (2 x 8 bytes, exact 8) and V (2 x 16) per item.
+  EXPECT_GT(session.memoryBytes(100), 4096);
+  std::string message =
+      errorOf([&] { session.run(3); }, SIM_ERROR_MEMORY_LIMIT);
+  EXPECT_TRUE(contains(message, "range 100 needs "));
+  EXPECT_TRUE(contains(message, "more than the limit of 4.00 KiB"));
+  session.set("range", "10");
+  session.run(3);
+  EXPECT_EQ(session.time(), 3);
+  // A range too large for any memory is refused before it is taken.
+  Session unlimited(decay(), cpuOptions(SIM_STRATEGY_HIP));
+  EXPECT_GT(unlimited.memoryLimit(), 0);
+  EXPECT_TRUE(contains(errorOf([&] { unlimited.set("range", "1099511627776"); },
+                               SIM_ERROR_MEMORY_LIMIT),
+                       "range 1099511627776 needs"));
+  EXPECT_EQ(unlimited.range(), 100);
+}
+
+TEST(Executor, StopsAnInterruptedRunOnABigStepBoundary) {
+  Session session(decay(), cpuOptions(SIM_STRATEGY_HIP));
+  // Asked before the run: it stops where it starts.
+  session.interrupt();
+  EXPECT_TRUE(contains(errorOf([&] { session.run(50); }, SIM_ERROR_INTERRUPTED),
+                       "interrupted at base step 0 of a run from 0 to 50"));
+  EXPECT_EQ(session.time(), 0);
+  EXPECT_EQ(session.metrics.steps, 0);
+  session.resume();
+  // Asked during the run (from the progress callback): the state is the
+  // one at the boundary reached, and a later run continues from there.
+  session.setProgress(
+      [](void *user, int64_t done, int64_t) {
+        if (done >= 20)
+          static_cast<Session *>(user)->interrupt();
+      },
+      &session);
+  errorOf([&] { session.run(200); }, SIM_ERROR_INTERRUPTED);
+  int64_t reached = session.time();
+  EXPECT_GE(reached, 20);
+  EXPECT_LT(reached, 200);
+  EXPECT_EQ(session.metrics.steps, reached);
+  EXPECT_EQ(session.metrics.end, reached);
+  expectX(session, reached);
+  session.setProgress(nullptr, nullptr);
+  session.resume();
+  session.run(200 - reached);
+  EXPECT_EQ(session.time(), 200);
+  expectX(session, 200);
 }

@@ -326,6 +326,29 @@ TEST(ReferenceExecutor, AgreesWithThePlanKernelsOnDecay) {
   EXPECT_EQ(hip->metrics.big_steps, 8);
 }
 
+TEST(ReferenceExecutor, StopsWhenInterruptedAndKeepsItsMemoryLimit) {
+  auto bundle = parseBytes(decayBundle());
+  sim_session_options options;
+  sim_session_options_init(&options);
+  options.strategy = SIM_STRATEGY_HIP;
+  options.backend = SIM_BACKEND_REFERENCE;
+  options.max_memory = 1000;
+  ReferenceSession session(bundle, options);
+  EXPECT_TRUE(contains(errorOf([&] { session.run(5); }, SIM_ERROR_MEMORY_LIMIT),
+                       "more than the limit of 1000 bytes"));
+  session.set("range", "4");
+  session.setProgress(
+      [](void *user, int64_t done, int64_t) {
+        if (done >= 7)
+          static_cast<ReferenceSession *>(user)->interrupt();
+      },
+      &session);
+  errorOf([&] { session.run(30); }, SIM_ERROR_INTERRUPTED);
+  EXPECT_GE(session.time(), 7);
+  EXPECT_LT(session.time(), 30);
+  EXPECT_EQ(session.metrics.steps, session.time());
+}
+
 TEST(ReferenceExecutor, NeedsAGroupSizeWithoutAPlan) {
   auto bundle = parseBytes(decayBundle());
   EXPECT_TRUE(contains(

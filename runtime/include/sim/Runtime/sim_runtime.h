@@ -47,6 +47,12 @@ typedef enum sim_status {
   SIM_ERROR_NONFINITE = 7,
   /// The kernels broke the clock contract of docs/Plan.md.
   SIM_ERROR_CLOCK = 8,
+  /// A run stopped early because sim_session_interrupt() asked it to; the
+  /// state is the one at the big-step boundary it reached.
+  SIM_ERROR_INTERRUPTED = 9,
+  /// The session would need more memory than its limit allows
+  /// (sim_session_options.max_memory).
+  SIM_ERROR_MEMORY_LIMIT = 10,
 } sim_status;
 
 /// The message of the last failed call on this thread (never null; empty
@@ -177,10 +183,15 @@ typedef struct sim_session_options {
   /// Run the step phase launch by launch and stop at the first NaN or
   /// infinity in the buffers a component writes (SIM_ERROR_NONFINITE).
   int32_t check_finite;
+  /// The most bytes the session may allocate on its device (the host for
+  /// the CPU and reference backends); a range whose buffers would need more
+  /// is refused with SIM_ERROR_MEMORY_LIMIT before anything is allocated.
+  /// 0: three quarters of the device's memory.
+  int64_t max_memory;
 } sim_session_options;
 
 /// Fills in the defaults: hip, auto, the plan's group size, all threads,
-/// device 0, no graph, no check.
+/// device 0, no graph, no check, the default memory limit.
 SIM_API void sim_session_options_init(sim_session_options *options);
 
 SIM_API sim_status sim_session_create(const sim_bundle *bundle,
@@ -201,6 +212,11 @@ SIM_API int64_t sim_session_group_size(const sim_session *session);
 /// range discards the state (the next call that needs it runs init).
 SIM_API sim_status sim_session_set(sim_session *session, const char *name,
                                    const char *value);
+/// The bytes the session's state takes on its device at the current range
+/// (allocated or not), and the most it may take (its max_memory, or the
+/// default limit).
+SIM_API int64_t sim_session_memory_bytes(const sim_session *session);
+SIM_API int64_t sim_session_memory_limit(const sim_session *session);
 /// The current value of `range`, `dt` or a parameter as text.
 SIM_API sim_status sim_session_get(const sim_session *session, const char *name,
                                    char *value, size_t capacity);
@@ -269,8 +285,15 @@ typedef struct sim_metrics {
 } sim_metrics;
 
 /// Runs `steps` base steps from the current state (initialising first if
-/// needed). The run ends exactly at T + steps, or fails.
+/// needed). The run ends exactly at T + steps, or fails. An interrupted run
+/// returns SIM_ERROR_INTERRUPTED with the state at the big-step boundary it
+/// reached (sim_session_time) and metrics of the base steps it did.
 SIM_API sim_status sim_session_run(sim_session *session, int64_t steps);
+/// Asks the session's current and later runs to stop at their next host
+/// synchronisation (SIM_ERROR_INTERRUPTED). Safe to call from another thread
+/// or a signal handler; the request stays until sim_session_resume().
+SIM_API void sim_session_interrupt(sim_session *session);
+SIM_API void sim_session_resume(sim_session *session);
 SIM_API sim_status sim_session_metrics(const sim_session *session,
                                        sim_metrics *out);
 
