@@ -272,3 +272,45 @@ mlir::sim::computeSchedule(const DependencyAnalysis &analysis,
   }
   return Schedule(std::move(order));
 }
+
+FailureOr<Stepping> mlir::sim::decideStepping(ComponentOp component,
+                                              Strategy strategy) {
+  auto simulation = component->getParentOfType<SimulationOp>();
+  ScheduleOp schedule = simulation.getScheduleOp();
+  if (!schedule || !simulation.getSchedulePosition(component))
+    return component.emitOpError()
+           << "is not in a complete schedule; run --sim-schedule before "
+              "deciding how it takes a big step";
+  bool hasNumSteps = component.hasNumSteps();
+  switch (strategy) {
+  case Strategy::simple:
+    return Stepping{Advance::whole_step, false};
+  case Strategy::traditional:
+    return Stepping{Advance::whole_step, hasNumSteps};
+  case Strategy::hip:
+  case Strategy::hip_cache:
+    break;
+  }
+  // hip: the big step is the minimum num_steps at T of the components that
+  // read through the back edge. One of them takes the whole step in one
+  // evaluation (its own minimum is at least m); the others sub-step.
+  ArrayAttr bounds = schedule.getBoundedByAttr();
+  bool bounding =
+      hasNumSteps && bounds &&
+      llvm::is_contained(bounds.getAsRange<FlatSymbolRefAttr>(),
+                         FlatSymbolRefAttr::get(component.getSymNameAttr()));
+  if (!hasNumSteps || bounding)
+    return Stepping{Advance::whole_step, bounding};
+  if (!component.getSubSteppingAttr())
+    return component.emitOpError()
+           << "has no sub-stepping verdict; run --sim-substep-legality "
+              "before deciding how it takes a big step";
+  return Stepping{*component.getSubStepping() == SubStepping::in_kernel
+                      ? Advance::group_substeps
+                      : Advance::grid_substeps,
+                  false};
+}
+
+int64_t mlir::sim::getStepCap(SimulationOp simulation, Strategy strategy) {
+  return strategy == Strategy::simple ? 1 : simulation.getMaxSteps();
+}

@@ -15,12 +15,14 @@
 // RUN: sim-opt %examples/paper/gravity_like.mlir --sim-front-end --sim-report-memory -o /dev/null | FileCheck %s --check-prefix=GRAVITY-MEM
 // RUN: sim-opt %examples/paper/pbd_like.mlir --sim-front-end=strategy=hip-cache --sim-report-memory -o /dev/null | FileCheck %s --check-prefix=PBD-MEM
 
-// FIG5-LABEL: sim.simulation @fig5 {{.*}} attributes {strategy = #sim<strategy hip>}
-// FIG5-LABEL: sim.component @C0 writes(@B0) attributes {parity = #sim<parity none>, sub_stepping = #sim<sub_stepping in_kernel>}
+// C0 reads B3 through the back edge: it bounds the big step and takes it
+// in one evaluation; the others sub-step in one kernel each.
+// FIG5-LABEL: sim.simulation @fig5 {{.*}} attributes {step_cap = 3 : i32, strategy = #sim<strategy hip>}
+// FIG5-LABEL: sim.component @C0 writes(@B0) attributes {advance = #sim<advance whole_step>, estimates, parity = #sim<parity none>, sub_stepping = #sim<sub_stepping in_kernel>}
 // FIG5: } evaluate {
 // FIG5: sim.load local @B0[%i] : f32
 // FIG5: sim.load source @B3[%i] : f32
-// FIG5-LABEL: sim.component @C1
+// FIG5-LABEL: sim.component @C1 writes(@B1) attributes {advance = #sim<advance group_substeps>, parity
 // FIG5: } evaluate {
 // FIG5-NEXT: ^bb0(%i: index, %t: i64, %n: i32, %dt: f32):
 // FIG5-NEXT: %begin, %size = sim.big_step : i64, i64
@@ -68,7 +70,7 @@
 
 // One evaluation per big step: interpolated reads take the target in
 // evaluate and the source in num_steps; no fraction is computed.
-// SIMPLE-LABEL: sim.simulation @gravity_like {{.*}} attributes {strategy = #sim<strategy simple>}
+// SIMPLE-LABEL: sim.simulation @gravity_like {{.*}} attributes {step_cap = 1 : i32, strategy = #sim<strategy simple>}
 // SIMPLE-LABEL: sim.component @C1
 // SIMPLE: sim.load target @B0[
 // SIMPLE-NOT: sim.load source @B0
@@ -88,10 +90,10 @@
 // Under hip-cache @C1 caches its window of @B0, @C2 those of @B0 and @B1
 // (each i-4..i+4); @C0 reads only at its own item and through the back edge.
 // GRAVITY-CACHE-LABEL: sim.simulation @gravity_like
-// GRAVITY-CACHE-SAME: attributes {strategy = #sim<strategy "hip-cache">}
-// GRAVITY-CACHE: sim.component @C0 writes(@B0) attributes {parity
-// GRAVITY-CACHE: sim.component @C1 writes(@B1) attributes {caches = [#sim.cache<@B0, -4, 4>], parity
-// GRAVITY-CACHE: sim.component @C2 writes(@B2) attributes {caches = [#sim.cache<@B0, -4, 4>, #sim.cache<@B1, -4, 4>], parity
+// GRAVITY-CACHE-SAME: attributes {step_cap = 3 : i32, strategy = #sim<strategy "hip-cache">}
+// GRAVITY-CACHE: sim.component @C0 writes(@B0) attributes {advance = #sim<advance whole_step>, estimates, parity
+// GRAVITY-CACHE: sim.component @C1 writes(@B1) attributes {advance = #sim<advance group_substeps>, caches = [#sim.cache<@B0, -4, 4>], parity
+// GRAVITY-CACHE: sim.component @C2 writes(@B2) attributes {advance = #sim<advance group_substeps>, caches = [#sim.cache<@B0, -4, 4>, #sim.cache<@B1, -4, 4>], parity
 
 // Under hip-cache every component caches the buffers it interpolates through
 // windows i-4..i+4: one vec4 per thread of a 256-thread group plus 8 of

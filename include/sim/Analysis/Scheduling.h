@@ -65,6 +65,26 @@ FailureOr<Schedule> computeSchedule(const DependencyAnalysis &analysis,
 /// The user's order from the simulation's sim.schedule (empty without one).
 SmallVector<ComponentOp> getUserOrder(SimulationOp simulation);
 
+/// How a component takes a big step under a strategy (docs/Model.md,
+/// "Time"). `--sim-plan-memory` records it on the component for its
+/// strategy, the reference lowering for every strategy; every later stage
+/// reads the record, so this is the one place that decides it.
+struct Stepping {
+  Advance advance;
+  /// The component's num_steps decides the size of the big step.
+  bool estimates;
+};
+
+/// Decides `component`'s stepping under `strategy` from what the front end
+/// recorded: the step bounds of sim.schedule (`bounded_by`, recorded by
+/// --sim-schedule) and, under hip and hip-cache, the component's
+/// sub-stepping verdict (--sim-substep-legality). Emits an error at the
+/// component and fails when a record it needs is missing.
+FailureOr<Stepping> decideStepping(ComponentOp component, Strategy strategy);
+
+/// The largest big step of `strategy`: 1 under simple, max_steps otherwise.
+int64_t getStepCap(SimulationOp simulation, Strategy strategy);
+
 } // namespace mlir::sim
 
 #endif // SIM_ANALYSIS_SCHEDULING_H

@@ -169,10 +169,6 @@ int64_t elementStride(BufferOp buffer) {
                                                   : bytes;
 }
 
-bool isSubStepping(Strategy strategy) {
-  return strategy == Strategy::hip || strategy == Strategy::hip_cache;
-}
-
 class SimulationLowering {
 public:
   SimulationLowering(SimulationOp simulation, KernelTarget &target,
@@ -242,7 +238,7 @@ private:
   int64_t groupSize;
   KernelBuilder b;
   Strategy strategy;
-  int64_t maxSteps;
+  int64_t maxSteps, stepCap;
 
   Operation *kernels;
   simplan::PlanOp plan;
@@ -263,12 +259,13 @@ private:
 
 LogicalResult SimulationLowering::checkFrontEnd() {
   StrategyAttr strategyAttr = simulation.getStrategyAttr();
-  if (!strategyAttr)
+  if (!strategyAttr || !simulation.getStepCapAttr())
     return simulation.emitOpError()
            << "has no memory plan; run the front end (--sim-front-end) "
               "before lowering it";
   strategy = strategyAttr.getValue();
   maxSteps = simulation.getMaxSteps();
+  stepCap = simulation.getStepCapAttr().getInt();
 
   ScheduleOp schedule = simulation.getScheduleOp();
   size_t numComponents = llvm::range_size(simulation.getComponents());
@@ -281,10 +278,11 @@ LogicalResult SimulationLowering::checkFrontEnd() {
     order.push_back(simulation.lookupComponent(name));
 
   for (ComponentOp component : order) {
-    if (!component.getSubSteppingAttr() || !component.getParityAttr())
+    if (!component.getSubSteppingAttr() || !component.getAdvanceAttr() ||
+        !component.getParityAttr())
       return component.emitOpError()
-             << "has no sub-stepping verdict or parity; run the front end "
-                "(--sim-front-end) before lowering it";
+             << "has no sub-stepping verdict, advance or parity; run the "
+                "front end (--sim-front-end) before lowering it";
     WalkResult walk = component.walk([](ReadOp read) {
       read.emitOpError() << "is a view read; run --sim-insert-interpolation "
                             "(or the whole front end) before lowering it";
@@ -325,8 +323,7 @@ void SimulationLowering::planClock() {
   for (ComponentOp component : order)
     evaluationSlots[component] = next++;
   for (ComponentOp component : order)
-    if (isSubStepping(strategy) && component.hasNumSteps() &&
-        *component.getSubStepping() == SubStepping::grid_sync) {
+    if (component.getAdvance() == Advance::grid_substeps) {
       subClockSlots[component] = next;
       next += kSubClockSlots;
     }
@@ -743,7 +740,7 @@ LogicalResult SimulationLowering::emitAdvance(OpBuilder &launches,
   Value bigSteps =
       b.add(slot(kSlotBigSteps), b.extend(stepped, b.getI64Type()));
   Value remaining = b.sub(slot(kSlotEnd), now);
-  Value cap = b.i64(strategy == Strategy::simple ? 1 : maxSteps);
+  Value cap = b.i64(stepCap);
   Value bound = hasEstimates ? b.min(slot(kSlotEstimate), cap) : cap;
   Value positive = b.cmp(arith::CmpIPredicate::sgt, remaining, zero);
   Value next = b.select(positive, b.min(bound, remaining), zero);
@@ -1132,36 +1129,31 @@ LogicalResult SimulationLowering::run() {
 
   // step: estimates, the decision, the components in schedule order.
   OpBuilder step = phase(simplan::PhaseKind::step);
-  SmallVector<ComponentOp> estimated;
-  if (strategy == Strategy::traditional) {
-    for (ComponentOp component : order)
-      if (component.hasNumSteps())
-        estimated.push_back(component);
-  } else if (isSubStepping(strategy)) {
-    if (ArrayAttr bounds = simulation.getScheduleOp().getBoundedByAttr())
-      for (FlatSymbolRefAttr bound : bounds.getAsRange<FlatSymbolRefAttr>())
-        if (ComponentOp component = simulation.lookupComponent(bound);
-            component && component.hasNumSteps())
-          estimated.push_back(component);
-  }
-  for (ComponentOp component : estimated)
+  // The estimates, the decision, then every component as the front end
+  // recorded it advances.
+  bool hasEstimates = false;
+  for (ComponentOp component : order) {
+    if (!component.getEstimates())
+      continue;
+    hasEstimates = true;
     if (failed(emitEstimate(component, step)))
       return failure();
-  if (failed(emitAdvance(step, !estimated.empty())))
+  }
+  if (failed(emitAdvance(step, hasEstimates)))
     return failure();
   for (ComponentOp component : order) {
     LogicalResult result = success();
-    // A component that bounds the big step takes it in one sub-step: at T
-    // the minimum of its num_steps over any group is at least the minimum
-    // over all items, which is m. So it needs neither num_steps again nor
-    // a reduction.
-    if (!isSubStepping(strategy) || !component.hasNumSteps() ||
-        llvm::is_contained(estimated, component))
+    switch (component.getAdvance().value()) {
+    case Advance::whole_step:
       result = emitEvaluate(component, step);
-    else if (*component.getSubStepping() == SubStepping::in_kernel)
+      break;
+    case Advance::group_substeps:
       result = emitSubSteps(component, step);
-    else
+      break;
+    case Advance::grid_substeps:
       result = emitRounds(component, step);
+      break;
+    }
     if (failed(result))
       return failure();
   }

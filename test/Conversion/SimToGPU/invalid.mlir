@@ -22,13 +22,13 @@ sim.simulation @raw range(8) dt(1.0e-2 : f32) max_steps(2) {
 
 // A plan without a complete schedule.
 // expected-error @+1 {{'sim.simulation' op has no complete schedule; run the front end (--sim-front-end) before lowering it}}
-sim.simulation @unscheduled range(8) dt(1.0e-2 : f32) max_steps(2) attributes {strategy = #sim<strategy simple>} {
+sim.simulation @unscheduled range(8) dt(1.0e-2 : f32) max_steps(2) attributes {step_cap = 1 : i32, strategy = #sim<strategy simple>} {
   sim.buffer @X : f32 init {
   ^bb0(%i: index):
     %c = arith.constant 1.0 : f32
     sim.yield %c : f32
   }
-  sim.component @Keep writes(@X) attributes {parity = #sim<parity none>, sub_stepping = #sim<sub_stepping in_kernel>} evaluate {
+  sim.component @Keep writes(@X) attributes {advance = #sim<advance whole_step>, parity = #sim<parity none>, sub_stepping = #sim<sub_stepping in_kernel>} evaluate {
   ^bb0(%i: index, %t: i64, %n: i32, %dt: f32):
     %x = sim.load local @X[%i] : f32
     sim.yield %x : f32
@@ -39,7 +39,7 @@ sim.simulation @unscheduled range(8) dt(1.0e-2 : f32) max_steps(2) attributes {s
 // -----
 
 // A parameter type that no kernel argument can carry.
-sim.simulation @half range(8) dt(1.0e-2 : f32) max_steps(2) attributes {strategy = #sim<strategy simple>} {
+sim.simulation @half range(8) dt(1.0e-2 : f32) max_steps(2) attributes {step_cap = 1 : i32, strategy = #sim<strategy simple>} {
   // expected-error @+1 {{'sim.param' op has type 'f16', which a kernel cannot take as an argument; use i32, i64, index, f32 or f64}}
   sim.param @h = 1.0 : f16
   sim.buffer @X : f32 init {
@@ -47,7 +47,7 @@ sim.simulation @half range(8) dt(1.0e-2 : f32) max_steps(2) attributes {strategy
     %c = arith.constant 1.0 : f32
     sim.yield %c : f32
   }
-  sim.component @Keep writes(@X) attributes {parity = #sim<parity none>, sub_stepping = #sim<sub_stepping in_kernel>} evaluate {
+  sim.component @Keep writes(@X) attributes {advance = #sim<advance whole_step>, parity = #sim<parity none>, sub_stepping = #sim<sub_stepping in_kernel>} evaluate {
   ^bb0(%i: index, %t: i64, %n: i32, %dt: f32):
     %x = sim.load local @X[%i] : f32
     sim.yield %x : f32
@@ -60,13 +60,13 @@ sim.simulation @half range(8) dt(1.0e-2 : f32) max_steps(2) attributes {strategy
 
 // The big step is not known yet when the components that bound it estimate
 // it, so their num_steps cannot ask for it.
-sim.simulation @early range(8) dt(1.0e-2 : f32) max_steps(2) attributes {strategy = #sim<strategy hip>} {
+sim.simulation @early range(8) dt(1.0e-2 : f32) max_steps(2) attributes {step_cap = 2 : i32, strategy = #sim<strategy hip>} {
   sim.buffer @X : f32 init {
   ^bb0(%i: index):
     %c = arith.constant 1.0 : f32
     sim.yield %c : f32
   }
-  sim.component @Keep writes(@X) attributes {parity = #sim<parity none>, sub_stepping = #sim<sub_stepping in_kernel>} num_steps {
+  sim.component @Keep writes(@X) attributes {advance = #sim<advance whole_step>, estimates, parity = #sim<parity none>, sub_stepping = #sim<sub_stepping in_kernel>} num_steps {
   ^bb0(%i: index, %t: i64):
     // expected-error @+1 {{'sim.big_step' op asks for the big step in a body that runs before the big step is decided}}
     %begin, %size = sim.big_step : i64, i64
@@ -84,13 +84,13 @@ sim.simulation @early range(8) dt(1.0e-2 : f32) max_steps(2) attributes {strateg
 // -----
 
 // A total whose reads --sim-insert-interpolation has not turned into loads.
-sim.simulation @rawtotal range(8) dt(1.0e-2 : f32) max_steps(2) attributes {strategy = #sim<strategy simple>} {
+sim.simulation @rawtotal range(8) dt(1.0e-2 : f32) max_steps(2) attributes {step_cap = 1 : i32, strategy = #sim<strategy simple>} {
   sim.buffer @X : f32 init {
   ^bb0(%i: index):
     %c = arith.constant 1.0 : f32
     sim.yield %c : f32
   }
-  sim.component @Keep writes(@X) attributes {parity = #sim<parity none>, sub_stepping = #sim<sub_stepping in_kernel>} evaluate {
+  sim.component @Keep writes(@X) attributes {advance = #sim<advance whole_step>, parity = #sim<parity none>, sub_stepping = #sim<sub_stepping in_kernel>} evaluate {
   ^bb0(%i: index, %t: i64, %n: i32, %dt: f32):
     %x = sim.load local @X[%i] : f32
     sim.yield %x : f32

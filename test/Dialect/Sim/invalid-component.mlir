@@ -526,3 +526,35 @@ sim.simulation @s range(16) dt(1.0 : f32) max_steps(1) {
     sim.yield %x : f32
   }
 }
+
+// -----
+
+sim.simulation @s range(16) dt(1.0 : f32) max_steps(2) {
+  sim.buffer @A : f32 init {
+  ^bb0(%i: index):
+    %c = arith.constant 0.0 : f32
+    sim.yield %c : f32
+  }
+  // expected-error @+1 {{'sim.component' op advances by group_substeps but has no num_steps body to size them}}
+  sim.component @CA writes(@A) attributes {advance = #sim<advance group_substeps>} evaluate {
+  ^bb0(%i: index, %t: i64, %n: i32, %dt: f32):
+    %x = sim.read @A[%i] : f32
+    sim.yield %x : f32
+  }
+}
+
+// -----
+
+sim.simulation @s range(16) dt(1.0 : f32) max_steps(2) {
+  sim.buffer @A : f32 init {
+  ^bb0(%i: index):
+    %c = arith.constant 0.0 : f32
+    sim.yield %c : f32
+  }
+  // expected-error @+1 {{'sim.component' op estimates the big step but has no num_steps body}}
+  sim.component @CA writes(@A) attributes {estimates} evaluate {
+  ^bb0(%i: index, %t: i64, %n: i32, %dt: f32):
+    %x = sim.read @A[%i] : f32
+    sim.yield %x : f32
+  }
+}

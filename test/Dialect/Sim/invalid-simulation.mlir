@@ -15,6 +15,12 @@ sim.simulation @s range(-5) dt(1.0 : f32) max_steps(1) {
 
 // -----
 
+// expected-error @+1 {{'sim.simulation' op expects an item range of at most 2^40, but got 1099511627777}}
+sim.simulation @s range(1099511627777) dt(1.0 : f32) max_steps(1) {
+}
+
+// -----
+
 // expected-error @+1 {{'sim.simulation' op expects max_steps to be at least 1, but got 0}}
 sim.simulation @s range(16) dt(1.0 : f32) max_steps(0) {
 }
@@ -23,6 +29,24 @@ sim.simulation @s range(16) dt(1.0 : f32) max_steps(0) {
 
 // expected-error @+1 {{'sim.simulation' op expects max_steps to be at least 1, but got -3}}
 sim.simulation @s range(16) dt(1.0 : f32) max_steps(-3) {
+}
+
+// -----
+
+// expected-error @+1 {{'sim.simulation' op expects max_steps to be at most 2^20, but got 1048577}}
+sim.simulation @s range(16) dt(1.0 : f32) max_steps(1048577) {
+}
+
+// -----
+
+// expected-error @+1 {{'sim.simulation' op has a step_cap of 4, but a big step takes 1 to max_steps (3) base steps}}
+sim.simulation @s range(16) dt(1.0 : f32) max_steps(3) attributes {step_cap = 4 : i32} {
+}
+
+// -----
+
+// expected-error @+1 {{'sim.simulation' op has a step_cap of 0, but a big step takes 1 to max_steps (3) base steps}}
+sim.simulation @s range(16) dt(1.0 : f32) max_steps(3) attributes {step_cap = 0 : i32} {
 }
 
 // -----

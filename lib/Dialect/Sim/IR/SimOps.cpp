@@ -332,10 +332,23 @@ LogicalResult SimulationOp::verify() {
   int64_t range = getRangeAttr().getInt();
   if (range <= 0)
     return emitOpError() << "expects a positive item range, but got " << range;
+  if (range > kMaxRange)
+    return emitOpError() << "expects an item range of at most 2^40, but got "
+                         << range;
   int64_t maxSteps = getMaxStepsAttr().getInt();
   if (maxSteps < 1)
     return emitOpError() << "expects max_steps to be at least 1, but got "
                          << maxSteps;
+  if (maxSteps > kMaxMaxSteps)
+    return emitOpError() << "expects max_steps to be at most 2^20, but got "
+                         << maxSteps;
+  if (IntegerAttr cap = getStepCapAttr()) {
+    int64_t value = cap.getInt();
+    if (value < 1 || value > maxSteps)
+      return emitOpError() << "has a step_cap of " << value
+                           << ", but a big step takes 1 to max_steps ("
+                           << maxSteps << ") base steps";
+  }
   double dt = getTimeStep();
   if (!(dt > 0.0) || !std::isfinite(dt))
     return emitOpError() << "expects a positive, finite base time step dt, "
@@ -629,6 +642,17 @@ LogicalResult ComponentOp::verify() {
   for (Attribute name : writes)
     if (!seen.insert(name).second)
       return emitOpError() << "lists buffer " << name << " twice in writes";
+
+  // Sub-steps and estimates are sized by num_steps.
+  if (!hasNumSteps()) {
+    if (std::optional<Advance> advance = getAdvance();
+        advance && *advance != Advance::whole_step)
+      return emitOpError() << "advances by " << stringifyAdvance(*advance)
+                           << " but has no num_steps body to size them";
+    if (getEstimates())
+      return emitOpError()
+             << "estimates the big step but has no num_steps body";
+  }
 
   Builder b(getContext());
   if (hasNumSteps()) {

@@ -1,6 +1,9 @@
-//===- PlanMemory.cpp - snapshots, parity copies and caches ---------------===//
+//===- PlanMemory.cpp - stepping, snapshots, parity copies and caches -----===//
 //
-// Plans the memory a strategy needs beyond the two halves of every buffer.
+// Records how each component takes a big step under the strategy (`advance`,
+// `estimates`, and the simulation's `step_cap`, decided once by
+// decideStepping in lib/Analysis/Scheduling.cpp), then plans the memory that
+// needs beyond the two halves of every buffer.
 // Algorithm 2 snapshots every interpolated buffer and copies after an even
 // number of sub-steps because its sub-steps ping-pong between the halves. We
 // keep an in_kernel component's state in registers between sub-steps (each
@@ -16,6 +19,7 @@
 //===----------------------------------------------------------------------===//
 
 #include "sim/Analysis/DependencyAnalysis.h"
+#include "sim/Analysis/Scheduling.h"
 #include "sim/Dialect/Sim/IR/SimOps.h"
 #include "sim/Dialect/Sim/Transforms/Passes.h"
 
@@ -36,27 +40,12 @@ bool isSubStepping(Strategy strategy) {
   return strategy == Strategy::hip || strategy == Strategy::hip_cache;
 }
 
-/// True when `component` bounds the hip big step (`bounded_by`): the big
-/// step is the minimum of its num_steps at T, so it takes it in one
-/// evaluation, as the lowering does.
-bool boundsBigStep(ComponentOp component) {
-  auto simulation = component->getParentOfType<SimulationOp>();
-  ScheduleOp schedule = simulation.getScheduleOp();
-  ArrayAttr bounds = schedule ? schedule.getBoundedByAttr() : ArrayAttr();
-  return bounds &&
-         llvm::is_contained(bounds.getAsRange<FlatSymbolRefAttr>(),
-                            FlatSymbolRefAttr::get(component.getSymNameAttr()));
-}
-
 /// True when `component`'s sub-steps ping-pong between the halves of its
-/// buffers through memory under `strategy`: a grid_sync component under hip
-/// or hip-cache that has num_steps and does not bound the big step. Without
-/// num_steps, or bounding the step, it takes the whole big step in one
-/// evaluation, from the source half into the target half.
-bool pingPongs(ComponentOp component, Strategy strategy) {
-  return isSubStepping(strategy) && component.hasNumSteps() &&
-         *component.getSubStepping() == SubStepping::grid_sync &&
-         !boundsBigStep(component);
+/// buffers through memory: it takes grid-wide sub-steps (its recorded
+/// `advance`). Every other way of advancing reads the source half and
+/// writes the target half once.
+bool pingPongs(ComponentOp component) {
+  return component.getAdvance() == Advance::grid_substeps;
 }
 
 struct PlanMemoryPass : public sim::impl::SimPlanMemoryBase<PlanMemoryPass> {
@@ -78,7 +67,18 @@ struct PlanMemoryPass : public sim::impl::SimPlanMemoryBase<PlanMemoryPass> {
       return signalPassFailure();
 
     MLIRContext *context = &getContext();
+    // How each component takes a big step first: the memory plan follows
+    // from it.
+    for (ComponentOp component : analysis.getComponents()) {
+      FailureOr<Stepping> stepping = decideStepping(component, strategy);
+      if (failed(stepping))
+        return signalPassFailure();
+      component.setAdvanceAttr(AdvanceAttr::get(context, stepping->advance));
+      component.setEstimates(stepping->estimates);
+    }
     simulation.setStrategyAttr(StrategyAttr::get(context, strategy));
+    simulation.setStepCapAttr(IntegerAttr::get(
+        IntegerType::get(context, 32), getStepCap(simulation, strategy)));
     for (BufferOp buffer : analysis.getBuffers())
       buffer.removeSnapshotAttr();
 
@@ -86,8 +86,7 @@ struct PlanMemoryPass : public sim::impl::SimPlanMemoryBase<PlanMemoryPass> {
     for (ComponentOp component : analysis.getComponents()) {
       component.removeCachesAttr();
       component.setParityAttr(ParityAttr::get(
-          context, pingPongs(component, strategy) ? Parity::copy_if_even
-                                                  : Parity::none));
+          context, pingPongs(component) ? Parity::copy_if_even : Parity::none));
       if (!isSubStepping(strategy))
         continue;
 
@@ -102,7 +101,8 @@ struct PlanMemoryPass : public sim::impl::SimPlanMemoryBase<PlanMemoryPass> {
           if (BufferOp auxBuffer = simulation.lookupBuffer(aux))
             atBegin.push_back(auxBuffer);
         for (BufferOp buffer : atBegin)
-          if (pingPongs(analysis.getWriter(buffer), strategy))
+          if (ComponentOp writer = analysis.getWriter(buffer);
+              writer && pingPongs(writer))
             snapshots.insert(buffer);
       }
       if (strategy == Strategy::hip_cache)

@@ -128,6 +128,12 @@ struct SetParamsPass : public sim::impl::SimSetParamsBase<SetParamsPass> {
         return simulation.emitError()
                << "cannot set parameter '" << name << "' to "
                << intValue.getInt() << ": it must be at least 1";
+      int64_t most = name == "range" ? SimulationOp::kMaxRange
+                                     : SimulationOp::kMaxMaxSteps;
+      if (intValue.getInt() > most)
+        return simulation.emitError()
+               << "cannot set parameter '" << name << "' to "
+               << intValue.getInt() << ": it must be at most " << most;
       if (name == "range")
         simulation.setRangeAttr(intValue);
       else

@@ -7,17 +7,17 @@
 // so nothing is snapshotted and no parity copy is needed, in any strategy.
 
 // CHECK-LABEL: sim.simulation @no_snapshot
-// HIP-SAME: attributes {strategy = #sim<strategy hip>}
-// SIMPLE-SAME: attributes {strategy = #sim<strategy simple>}
-// CACHE-SAME: attributes {strategy = #sim<strategy "hip-cache">}
-// CACHE16-SAME: attributes {strategy = #sim<strategy "hip-cache">}
+// HIP-SAME: attributes {step_cap = 4 : i32, strategy = #sim<strategy hip>}
+// SIMPLE-SAME: attributes {step_cap = 1 : i32, strategy = #sim<strategy simple>}
+// CACHE-SAME: attributes {step_cap = 4 : i32, strategy = #sim<strategy "hip-cache">}
+// CACHE16-SAME: attributes {step_cap = 4 : i32, strategy = #sim<strategy "hip-cache">}
 // CHECK-NOT: snapshot
-// CHECK: sim.component @Source writes(@S, @G) attributes {parity = #sim<parity none>
-// HIP: sim.component @Reader writes(@R) attributes {parity = #sim<parity none>, sub_stepping
-// SIMPLE: sim.component @Reader writes(@R) attributes {parity = #sim<parity none>, sub_stepping
+// CHECK: sim.component @Source writes(@S, @G) attributes {advance = #sim<advance whole_step>, parity = #sim<parity none>
+// HIP: sim.component @Reader writes(@R) attributes {advance = #sim<advance whole_step>, parity = #sim<parity none>, sub_stepping
+// SIMPLE: sim.component @Reader writes(@R) attributes {advance = #sim<advance whole_step>, parity = #sim<parity none>, sub_stepping
 // @S, read at i and i+1 (a window i..i+1), is cached; the gather of @G is
 // not.
-// CACHE: sim.component @Reader writes(@R) attributes {caches = [#sim.cache<@S, 0, 1>], parity = #sim<parity none>
+// CACHE: sim.component @Reader writes(@R) attributes {advance = #sim<advance whole_step>, caches = [#sim.cache<@S, 0, 1>], parity = #sim<parity none>
 // CHECK-NOT: snapshot
 sim.simulation @no_snapshot range(1024) dt(1.0e-2 : f32) max_steps(4) {
   sim.buffer @S : f32 init {
@@ -74,9 +74,9 @@ sim.simulation @no_snapshot range(1024) dt(1.0e-2 : f32) max_steps(4) {
 // SIMPLE: sim.buffer @U : f32 interp(#sim.hermite<@dU>) init
 // SIMPLE: sim.buffer @dU : f32 init
 // CHECK: sim.buffer @W : f32 init
-// HIP: sim.component @Diffuse writes(@U, @dU) attributes {parity = #sim<parity copy_if_even>, sub_stepping = #sim<sub_stepping grid_sync>}
-// SIMPLE: sim.component @Diffuse writes(@U, @dU) attributes {parity = #sim<parity none>, sub_stepping = #sim<sub_stepping grid_sync>}
-// HIP: sim.component @Sample writes(@W) attributes {parity = #sim<parity none>, sub_stepping = #sim<sub_stepping in_kernel>}
+// HIP: sim.component @Diffuse writes(@U, @dU) attributes {advance = #sim<advance grid_substeps>, parity = #sim<parity copy_if_even>, sub_stepping = #sim<sub_stepping grid_sync>}
+// SIMPLE: sim.component @Diffuse writes(@U, @dU) attributes {advance = #sim<advance whole_step>, parity = #sim<parity none>, sub_stepping = #sim<sub_stepping grid_sync>}
+// HIP: sim.component @Sample writes(@W) attributes {advance = #sim<advance whole_step>, parity = #sim<parity none>, sub_stepping = #sim<sub_stepping in_kernel>}
 sim.simulation @needs_snapshot range(1024) dt(1.0e-2 : f32) max_steps(4) {
   sim.buffer @U : f32 interp(#sim.hermite<@dU>) init {
   ^bb0(%i: index):
@@ -126,7 +126,7 @@ sim.simulation @needs_snapshot range(1024) dt(1.0e-2 : f32) max_steps(4) {
 
 // CHECK-LABEL: sim.simulation @grid_sync_one_evaluation
 // CHECK-NOT: snapshot
-// CHECK: sim.component @Smooth writes(@U) attributes {parity = #sim<parity none>, sub_stepping = #sim<sub_stepping grid_sync>}
+// CHECK: sim.component @Smooth writes(@U) attributes {advance = #sim<advance whole_step>, parity = #sim<parity none>, sub_stepping = #sim<sub_stepping grid_sync>}
 // CHECK-NOT: snapshot
 // CHECK-NOT: copy_if_even
 sim.simulation @grid_sync_one_evaluation range(1024) dt(1.0e-2 : f32) max_steps(4) {
@@ -167,7 +167,8 @@ sim.simulation @grid_sync_one_evaluation range(1024) dt(1.0e-2 : f32) max_steps(
 
 // CHECK-LABEL: sim.simulation @grid_sync_bounding
 // CHECK-NOT: snapshot
-// CHECK: sim.component @Lead writes(@U) attributes {parity = #sim<parity none>, sub_stepping = #sim<sub_stepping grid_sync>}
+// SIMPLE: sim.component @Lead writes(@U) attributes {advance = #sim<advance whole_step>, parity = #sim<parity none>, sub_stepping = #sim<sub_stepping grid_sync>}
+// HIP: sim.component @Lead writes(@U) attributes {advance = #sim<advance whole_step>, estimates, parity = #sim<parity none>, sub_stepping = #sim<sub_stepping grid_sync>}
 // CHECK-NOT: snapshot
 // CHECK-NOT: copy_if_even
 // CHECK: sim.schedule [@Lead, @Follow] bounded_by [@Lead]
@@ -216,9 +217,9 @@ sim.simulation @grid_sync_bounding range(1024) dt(1.0e-2 : f32) max_steps(4) {
 // Nothing is cached under hip.
 
 // CHECK-LABEL: sim.simulation @cache_conditions
-// CACHE: sim.component @Reader writes(@R) attributes {caches = [#sim.cache<@Small, -1, 1>, #sim.cache<@Wide, -8, 8>, #sim.cache<@Mixed, 0, 1>], parity
-// CACHE16: sim.component @Reader writes(@R) attributes {caches = [#sim.cache<@Small, -1, 1>, #sim.cache<@Mixed, 0, 1>], parity
-// HIP: sim.component @Reader writes(@R) attributes {parity
+// CACHE: sim.component @Reader writes(@R) attributes {advance = #sim<advance whole_step>, caches = [#sim.cache<@Small, -1, 1>, #sim.cache<@Wide, -8, 8>, #sim.cache<@Mixed, 0, 1>], parity
+// CACHE16: sim.component @Reader writes(@R) attributes {advance = #sim<advance whole_step>, caches = [#sim.cache<@Small, -1, 1>, #sim.cache<@Mixed, 0, 1>], parity
+// HIP: sim.component @Reader writes(@R) attributes {advance = #sim<advance whole_step>, parity
 sim.simulation @cache_conditions range(1024) dt(1.0e-2 : f32) max_steps(4) {
   sim.buffer @One : f32 init {
   ^bb0(%i: index):
@@ -295,8 +296,8 @@ sim.simulation @cache_conditions range(1024) dt(1.0e-2 : f32) max_steps(4) {
 // With a single item no thread of a group reads another's value: no cache.
 
 // CHECK-LABEL: sim.simulation @one_item
-// CACHE: sim.component @Reader writes(@R) attributes {parity
-// CACHE16: sim.component @Reader writes(@R) attributes {parity
+// CACHE: sim.component @Reader writes(@R) attributes {advance = #sim<advance whole_step>, parity
+// CACHE16: sim.component @Reader writes(@R) attributes {advance = #sim<advance whole_step>, parity
 sim.simulation @one_item range(1) dt(1.0e-2 : f32) max_steps(4) {
   sim.buffer @S : f32 init {
   ^bb0(%i: index):

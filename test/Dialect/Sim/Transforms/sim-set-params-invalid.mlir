@@ -15,6 +15,8 @@
 // RUN: sim-opt %t/range-zero.mlir --sim-set-params="values=range=0" --verify-diagnostics
 // RUN: sim-opt %t/range-negative.mlir --sim-set-params="values=range=-4" --verify-diagnostics
 // RUN: sim-opt %t/range-too-wide.mlir --sim-set-params="values=range=18446744073709551615" --verify-diagnostics
+// RUN: sim-opt %t/range-above-limit.mlir --sim-set-params="values=range=1099511627777" --verify-diagnostics
+// RUN: sim-opt %t/max-steps-above-limit.mlir --sim-set-params="values=max_steps=1048577" --verify-diagnostics
 // RUN: sim-opt %t/max-steps-zero.mlir --sim-set-params="values=max_steps=0" --verify-diagnostics
 // RUN: sim-opt %t/max-steps-too-wide.mlir --sim-set-params="values=max_steps=4294967295" --verify-diagnostics
 // RUN: sim-opt %t/dt-zero.mlir --sim-set-params="values=dt=0" --verify-diagnostics
@@ -526,4 +528,14 @@ sim.simulation @s range(16) dt(1.0 : f32) max_steps(1) {
     %x = sim.read @B[%i] : f32
     sim.yield %x : f32
   }
+}
+
+//--- range-above-limit.mlir
+// expected-error @+1 {{cannot set parameter 'range' to 1099511627777: it must be at most 1099511627776}}
+sim.simulation @s range(16) dt(1.0 : f32) max_steps(1) {
+}
+
+//--- max-steps-above-limit.mlir
+// expected-error @+1 {{cannot set parameter 'max_steps' to 1048577: it must be at most 1048576}}
+sim.simulation @s range(16) dt(1.0 : f32) max_steps(1) {
 }

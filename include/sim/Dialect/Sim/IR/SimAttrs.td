@@ -80,6 +80,28 @@ def Sim_Parity : I32Enum<"Parity",
 }
 def Sim_ParityAttr : EnumAttr<Sim_Dialect, Sim_Parity, "parity">;
 
+def Sim_Advance : I32Enum<"Advance",
+    "how a component advances through a big step", [
+    I32EnumCase<"whole_step", 0>, I32EnumCase<"group_substeps", 1>,
+    I32EnumCase<"grid_substeps", 2>]> {
+  let cppNamespace = "::mlir::sim";
+  let description = [{
+    Recorded by `--sim-plan-memory` on every component for the strategy it
+    plans, and read by every later stage (the lowering, the plan, the
+    bundle, the runtime); the reference lowering records it for every
+    strategy. `whole_step`: one evaluation per item with `n = m`, from the
+    state at `T` into the target half (every component under `simple` and
+    `traditional`; under `hip` a component without `num_steps`, or one whose
+    `num_steps` bounds the big step, since its minimum at `T` is at least
+    `m`). `group_substeps`: sub-steps of the minimum `num_steps` of a thread
+    group inside one kernel, the own state in registers (an `in_kernel`
+    component with `num_steps` under `hip`). `grid_substeps`: sub-steps of
+    the minimum over the whole range, one launch each, ping-ponging between
+    the halves (a `grid_sync` component with `num_steps` under `hip`).
+  }];
+}
+def Sim_AdvanceAttr : EnumAttr<Sim_Dialect, Sim_Advance, "advance">;
+
 def Sim_Version : I32Enum<"Version",
     "which copy of a buffer an explicit load reads", [
     I32EnumCase<"source", 0>, I32EnumCase<"snapshot", 1>,

@@ -62,12 +62,15 @@ def Sim_SimulationOp : Sim_Op<"simulation", [
 
     `strategy` is recorded by `--sim-plan-memory`: the memory plan and the
     explicit reads that `--sim-insert-interpolation` produces are for that
-    strategy.
+    strategy. So is `step_cap`, the largest big step the strategy takes (1
+    under `simple`, `max_steps` otherwise), which the lowering and the
+    runtime read.
   }];
 
   let arguments = (ins SymbolNameAttr:$sym_name, I64Attr:$range,
                        Sim_TimeStepAttr:$dt, I32Attr:$max_steps,
-                       OptionalAttr<Sim_StrategyAttr>:$strategy);
+                       OptionalAttr<Sim_StrategyAttr>:$strategy,
+                       OptionalAttr<I32Attr>:$step_cap);
   let regions = (region SizedRegion<1>:$body);
   let assemblyFormat = [{
     $sym_name `range` `(` $range `)` `dt` `(` $dt `)`
@@ -77,6 +80,11 @@ def Sim_SimulationOp : Sim_Op<"simulation", [
   let hasRegionVerifier = 1;
 
   let extraClassDeclaration = [{
+    /// The largest item range (2^40: byte offsets of every buffer fit in
+    /// 64 bits, and the runtime takes no more) and the largest max_steps
+    /// (the clock counts big steps of every size up to it).
+    static constexpr int64_t kMaxRange = int64_t(1) << 40;
+    static constexpr int64_t kMaxMaxSteps = int64_t(1) << 20;
     /// The scalar float type of the base time step (f32 or f64).
     ::mlir::FloatType getTimeStepType() {
       return ::llvm::cast<::mlir::FloatType>(
@@ -335,10 +343,12 @@ def Sim_ComponentOp : Sim_Op<"component", [
     `getEvaluateTime()`, `getEvaluateSteps()`, `getEvaluateTimeStep()`.
 
     Both bodies read state only through `sim.read`. The analyses record
-    their verdicts as attributes: `sub_stepping` (`--sim-substep-legality`),
-    `parity` and, under `hip-cache`, `caches` (a `#sim.cache<@B, lo, hi>`
-    for each buffer whose interpolated values in the window `i+lo..i+hi`
-    the component caches in shared memory), both by `--sim-plan-memory`.
+    their verdicts as attributes: `sub_stepping` (`--sim-substep-legality`);
+    `advance` (how the component advances through a big step), `estimates`
+    (its `num_steps` decides the size of the big step), `parity` and, under
+    `hip-cache`, `caches` (a `#sim.cache<@B, lo, hi>` for each buffer whose
+    interpolated values in the window `i+lo..i+hi` the component caches in
+    shared memory), all by `--sim-plan-memory` for its strategy.
 
     ```mlir
     sim.component @Integrate writes(@X, @V) num_steps {
@@ -358,6 +368,8 @@ def Sim_ComponentOp : Sim_Op<"component", [
   let arguments = (ins SymbolNameAttr:$sym_name,
                        FlatSymbolRefArrayAttr:$writes,
                        OptionalAttr<Sim_SubSteppingAttr>:$sub_stepping,
+                       OptionalAttr<Sim_AdvanceAttr>:$advance,
+                       UnitAttr:$estimates,
                        OptionalAttr<Sim_ParityAttr>:$parity,
                        OptionalAttr<TypedArrayAttrBase<Sim_CacheAttr,
                            "array of #sim.cache">>:$caches);
