@@ -3,10 +3,11 @@
 // Lowers scenes with the front end and --sim-lower-to-cpu, compiles the CPU
 // kernels into a shared object, loads it and runs the plan with a minimal
 // launcher written from docs/Plan.md. The kernels are the same algorithms as
-// the GPU kernels (SimulationKernels.cpp), so this checks those algorithms
-// without a GPU: every run ends exactly at its end, strategies agree with
-// `simple` when every big step is one base step, sub-steps follow the group
-// minimum, and the grid-wide rounds ping-pong and copy correctly.
+// the GPU kernels (lib/Conversion/SimCommon, SimulationLowering.h), so this
+// checks those algorithms without a GPU: every run ends exactly at its end,
+// strategies agree with `simple` when every big step is one base step,
+// sub-steps follow the group minimum, and the grid-wide rounds ping-pong and
+// copy correctly.
 //
 //===----------------------------------------------------------------------===//
 

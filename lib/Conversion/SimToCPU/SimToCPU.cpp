@@ -1,12 +1,12 @@
 //===- SimToCPU.cpp - simulations to CPU kernels and a host plan ----------===//
 //
-// The CPU target of the shared kernel algorithms (SimulationKernels.cpp),
-// with the GPU kernels' semantics: one call runs a range of groups, a group
-// runs phase by phase (a loop over its lanes between what would be barriers
-// on a GPU), and takes the same group-wide sub-step. Kernels are func.funcs
-// in a nested module named like the GPU kernel module, with the plan's
-// arguments followed by the first group, the end group and the group size
-// (docs/Bundle.md: the runtime calls them through `sim_cpu_<kernel>`).
+// The CPU target of the shared kernel algorithms (lib/Conversion/SimCommon,
+// SimulationLowering.h), with the GPU kernels' semantics: one call runs a range
+// of groups, a group runs phase by phase (a loop over its lanes between what
+// would be barriers on a GPU), and takes the same group-wide sub-step. Kernels
+// are func.funcs in a nested module named like the GPU kernel module, with the
+// plan's arguments followed by the first group, the end group and the group
+// size (docs/Bundle.md: the runtime calls them through `sim_cpu_<kernel>`).
 // Clock updates are atomic, so disjoint group ranges may run on different
 // threads at once.
 //

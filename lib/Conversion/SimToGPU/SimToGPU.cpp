@@ -1,12 +1,12 @@
 //===- SimToGPU.cpp - simulations to GPU kernels and a host plan ----------===//
 //
-// The GPU target of the shared kernel algorithms (SimulationKernels.cpp): a
-// group of items is a thread block, a lane a thread. Kernels loop over the
-// padded range with a grid stride, so every lane of a block runs every
-// iteration and group-wide barriers and reductions are legal. Group minima
-// and sums are a uniform warp reduction (every lane takes part, padding lanes
-// with a neutral value, so it lowers to one redux.sync) followed by an atomic
-// into workgroup or global memory.
+// The GPU target of the shared kernel algorithms (lib/Conversion/SimCommon,
+// SimulationLowering.h): a group of items is a thread block, a lane a thread.
+// Kernels loop over the padded range with a grid stride, so every lane of a
+// block runs every iteration and group-wide barriers and reductions are legal.
+// Group minima and sums are a uniform warp reduction (every lane takes part,
+// padding lanes with a neutral value, so it lowers to one redux.sync) followed
+// by an atomic into workgroup or global memory.
 //
 //===----------------------------------------------------------------------===//
 
@@ -170,7 +170,7 @@ public:
   }
 
   /// Caches live in dynamic shared memory, one after another; each starts
-  /// at a multiple of its element size because SimulationKernels creates
+  /// at a multiple of its element size because SimulationLowering creates
   /// them by decreasing element size.
   Value createCache(KernelBuilder &b, Kernel &kernel, Type elementType,
                     int64_t stride, int64_t halo) override {

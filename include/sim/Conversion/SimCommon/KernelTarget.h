@@ -2,11 +2,11 @@
 //
 // The kernels of a lowered simulation (the clock updates, estimates,
 // Algorithm 2, the grid-wide rounds) are written once, in
-// SimulationKernels.cpp, in terms of *groups* of items and per-lane
-// *phases*: code that every lane of a group runs, separated by group-wide
-// operations (a minimum, a sum into the clock). A KernelTarget says what
-// those are on one backend. On a GPU a group is a thread block, a phase is
-// the thread's own code and a group operation is a warp reduction plus
+// lib/Conversion/SimCommon (SimulationLowering.h), in terms of *groups* of
+// items and per-lane *phases*: code that every lane of a group runs, separated
+// by group-wide operations (a minimum, a sum into the clock). A KernelTarget
+// says what those are on one backend. On a GPU a group is a thread block, a
+// phase is the thread's own code and a group operation is a warp reduction plus
 // workgroup memory between barriers; on a CPU a group is a loop iteration
 // and a phase is a loop over its lanes. Values that live across phases are
 // lane variables: one element of private memory per thread on a GPU

@@ -1,0 +1,146 @@
+//===- SimulationLowering.h - kernels and plan of one simulation -*- C++
+//-*-===//
+//
+// The lowering of one simulation that went through the front end into
+// kernels (through a KernelTarget: GPU or CPU) and a simplan.plan. Its
+// methods live in one file per concern (lib/Conversion/SimCommon/):
+//
+//   SimulationLowering.cpp   checks, the clock layout, kernel scaffolding,
+//                            the plan and its phases (run)
+//   ClockKernels.cpp         reset_clock, estimate_C, advance
+//   StateKernels.cpp         init_B, exact_B, total_T
+//   EvaluateKernels.cpp      evaluate_C and the hip-cache caches
+//   SubStepKernels.cpp       substep_C: group sub-steps in one kernel
+//   GridSubStepKernels.cpp   snapshot_B, the rounds of grid-wide sub-steps,
+//                            parity_C
+//
+// Everything here decides *how* to run what the front end recorded: the
+// strategy, the schedule, how each component advances (`advance`,
+// `estimates`, `step_cap`), parity and snapshots come from the IR.
+//
+//===----------------------------------------------------------------------===//
+
+#ifndef SIM_CONVERSION_SIMCOMMON_SIMULATIONLOWERING_H
+#define SIM_CONVERSION_SIMCOMMON_SIMULATIONLOWERING_H
+
+#include "sim/Conversion/SimCommon/KernelTarget.h"
+#include "sim/Dialect/Sim/IR/SimOps.h"
+#include "sim/Runtime/bundle_generated.h"
+
+#include <limits>
+
+namespace mlir::sim {
+
+/// The fixed slots of the device clock: the layout is the bundle schema's
+/// (runtime/schema/bundle.fbs, ClockSlot), which the runtime reads.
+/// Evaluation counters, sub-step clocks and the big-step histogram follow
+/// from kFirstFreeSlot.
+constexpr int64_t kSlotBegin = int64_t(::sim::bundle::ClockSlot::Begin);
+constexpr int64_t kSlotSize = int64_t(::sim::bundle::ClockSlot::Size);
+constexpr int64_t kSlotParity = int64_t(::sim::bundle::ClockSlot::Parity);
+constexpr int64_t kSlotEnd = int64_t(::sim::bundle::ClockSlot::End);
+constexpr int64_t kSlotEstimate = int64_t(::sim::bundle::ClockSlot::Estimate);
+constexpr int64_t kSlotBigSteps = int64_t(::sim::bundle::ClockSlot::BigSteps);
+constexpr int64_t kFirstFreeSlot = int64_t(::sim::bundle::ClockSlot::FirstFree);
+
+/// Slots of a grid-sub-stepping component's sub-step clock, from its first.
+constexpr int64_t kSubBegin = int64_t(::sim::bundle::SubClockSlot::Begin);
+constexpr int64_t kSubSize = int64_t(::sim::bundle::SubClockSlot::Size);
+constexpr int64_t kSubCount = int64_t(::sim::bundle::SubClockSlot::Done);
+constexpr int64_t kSubEstimate = int64_t(::sim::bundle::SubClockSlot::Estimate);
+constexpr int64_t kSubClockSlots = int64_t(::sim::bundle::SubClockSlot::Slots);
+
+/// No estimate yet: the identity of the minimum.
+constexpr int32_t kNoEstimate = std::numeric_limits<int32_t>::max();
+constexpr int64_t kNoEstimate64 = std::numeric_limits<int64_t>::max();
+
+/// The bytes one element of `buffer` takes in memory, as the kernels address
+/// it (LLVM's alloc size: vectors are padded to a power of two, so
+/// vector<3xf32> takes 16 bytes).
+int64_t getElementStride(BufferOp buffer);
+
+class SimulationLowering {
+public:
+  SimulationLowering(SimulationOp simulation, KernelTarget &target,
+                     int64_t groupSize)
+      : simulation(simulation), target(target), groupSize(groupSize),
+        b(simulation.getContext(), simulation.getLoc()) {}
+
+  LogicalResult run();
+
+private:
+  LogicalResult checkFrontEnd();
+  void planClock();
+
+  // Kernels and launches.
+  Kernel beginKernel(StringRef name, BufferOp exactOf = nullptr,
+                     TotalOp totalOf = nullptr);
+  LogicalResult endKernel(Kernel &kernel, simplan::LaunchShape shape,
+                          OpBuilder &launches, ComponentOp component = nullptr);
+  void readClock(Kernel &kernel, Value &begin, Value &size, Value &parity);
+  void setHalves(Kernel &kernel, Value parity, Value localParity);
+  /// Runs `body` for every lane of every group the invocation handles.
+  void forEachItem(Kernel &kernel, function_ref<void(const Lane &)> body);
+  /// Counts an evaluation of the lane's item in `count` when it is active.
+  void countEvaluation(LaneVar count, const Lane &lane);
+  SmallVector<Value> inline_(Region &body, ValueRange args,
+                             const KernelValues &values);
+  Value estimate(Kernel &kernel, ComponentOp component, Value item, Value time,
+                 const KernelValues &values);
+  /// The minimum of `component`'s estimates at local time `time` over every
+  /// item (through lane variable `minimum`), combined into clock `slot`.
+  void estimateInto(Kernel &kernel, ComponentOp component, LaneVar minimum,
+                    Value time, int64_t slot);
+
+  /// A group cache of hip-cache: the fill the front end recorded and its
+  /// memory.
+  struct Cache {
+    FillCacheOp fill;
+    Value memory;
+  };
+  /// The caches of `component`'s evaluate body, on targets that keep them.
+  SmallVector<Cache> createCaches(Kernel &kernel, ComponentOp component);
+  /// Fills the caches of the group at `base` for an evaluation from local
+  /// time `time` of `steps` base steps, points `kernel.values` at them and
+  /// waits for the group.
+  void fillCaches(Kernel &kernel, ComponentOp component, ArrayRef<Cache> caches,
+                  Value base, Value time, Value steps, Value dt);
+  /// Evaluates every item of the invocation once, from local time `time`
+  /// over `steps` base steps (i32), filling the caches of each group first,
+  /// writes the results at element offset `writeBase` and counts the
+  /// evaluations in `count`.
+  void evaluateItems(Kernel &kernel, ComponentOp component,
+                     ArrayRef<Cache> caches, Value time, Value steps,
+                     Value writeBase, LaneVar count);
+
+  LogicalResult emitResetClock(OpBuilder &launches);
+  LogicalResult emitInit(BufferOp buffer, OpBuilder &launches);
+  LogicalResult emitExact(BufferOp buffer, OpBuilder &launches);
+  LogicalResult emitTotal(TotalOp total, OpBuilder &launches);
+  LogicalResult emitEstimate(ComponentOp component, OpBuilder &launches);
+  LogicalResult emitAdvance(OpBuilder &launches, bool hasEstimates);
+  LogicalResult emitEvaluate(ComponentOp component, OpBuilder &launches);
+  LogicalResult emitSubSteps(ComponentOp component, OpBuilder &launches);
+  LogicalResult emitRounds(ComponentOp component, OpBuilder &launches);
+
+  SimulationOp simulation;
+  KernelTarget &target;
+  int64_t groupSize;
+  KernelBuilder b;
+  Strategy strategy;
+  int64_t maxSteps, stepCap;
+
+  Operation *kernels;
+  simplan::PlanOp plan;
+  SmallVector<BufferOp> buffers;
+  SmallVector<ParamOp> params;
+  SmallVector<ComponentOp> order;
+  llvm::DenseMap<Operation *, int64_t> evaluationSlots, subClockSlots;
+  int64_t histogramSlot = 0, clockSlots = 0;
+  /// Set when inlining a body failed inside a builder callback.
+  bool bodyFailed = false;
+};
+
+} // namespace mlir::sim
+
+#endif // SIM_CONVERSION_SIMCOMMON_SIMULATIONLOWERING_H

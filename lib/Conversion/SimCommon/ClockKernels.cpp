@@ -1,0 +1,99 @@
+//===- ClockKernels.cpp - the clock's kernels -----------------------------===//
+//
+// reset_clock (the initial clock), estimate_C (a component's minimum
+// num_steps for the next big step) and advance (commits a big step and
+// decides the next on the device).
+//
+//===----------------------------------------------------------------------===//
+
+#include "mlir/Dialect/Arith/IR/Arith.h"
+#include "mlir/Dialect/SCF/IR/SCF.h"
+#include "sim/Conversion/SimCommon/SimulationLowering.h"
+
+using namespace mlir;
+using namespace mlir::sim;
+
+/// Puts the clock in its initial state: T = 0, parity 0, no pending
+/// estimate, all counters zero. The host sets the end of each run.
+LogicalResult SimulationLowering::emitResetClock(OpBuilder &launches) {
+  Kernel kernel = beginKernel("reset_clock");
+  Value zero = b.i64(0);
+  auto loop =
+      scf::ForOp::create(b, b.loc, b.index(0), b.index(clockSlots), b.index(1));
+  {
+    OpBuilder::InsertionGuard guard(b);
+    b.setInsertionPoint(loop.getBody()->getTerminator());
+    b.store(zero, kernel.clock, loop.getInductionVar());
+  }
+  b.store(b.i64(kNoEstimate64), kernel.clock, b.index(kSlotEstimate));
+  return endKernel(kernel, simplan::LaunchShape::single, launches);
+}
+
+/// One component's estimate of the next big step: the minimum of
+/// `num_steps` over all items at the start T' of the next big step, into the
+/// clock. It runs before `advance` commits the current big step, so it
+/// computes T' and the parity itself, and does nothing past the end.
+LogicalResult SimulationLowering::emitEstimate(ComponentOp component,
+                                               OpBuilder &launches) {
+  Kernel kernel = beginKernel(("estimate_" + component.getSymName()).str());
+  LaneVar minimum =
+      target.createLaneVar(b, kernel, b.getI32Type(), b.i32(kNoEstimate));
+  Value begin, size, parity;
+  readClock(kernel, begin, size, parity);
+  Value stepped = b.cmp(arith::CmpIPredicate::sgt, size, b.i64(0));
+  Value next = b.add(begin, size);
+  Value nextParity = b.select(stepped, b.xorOne(parity), parity);
+  setHalves(kernel, nextParity, nextParity);
+  Value end = b.load(kernel.clock, b.index(kSlotEnd));
+  b.ifThen(b.cmp(arith::CmpIPredicate::slt, next, end), [&] {
+    estimateInto(kernel, component, minimum, next, kSlotEstimate);
+  });
+  return endKernel(kernel, simplan::LaunchShape::items, launches);
+}
+
+/// Commits the big step that just ended (T += m, flip the parity when it
+/// advanced) and decides the next one: m = min(estimate, cap, end - T), 0
+/// past the end. Also counts big steps by size and restarts the sub-step
+/// clocks.
+LogicalResult SimulationLowering::emitAdvance(OpBuilder &launches,
+                                              bool hasEstimates) {
+  Kernel kernel = beginKernel("advance");
+  Value clock = kernel.clock;
+  auto slot = [&](int64_t index) { return b.load(clock, b.index(index)); };
+  auto setSlot = [&](int64_t index, Value value) {
+    b.store(value, clock, b.index(index));
+  };
+  Value begin, size, parity;
+  readClock(kernel, begin, size, parity);
+  Value zero = b.i64(0), one = b.i64(1);
+  Value stepped = b.cmp(arith::CmpIPredicate::sgt, size, zero);
+  Value now = b.add(begin, size);
+  Value nowParity = b.select(stepped, b.xorOne(parity), parity);
+  Value bigSteps =
+      b.add(slot(kSlotBigSteps), b.extend(stepped, b.getI64Type()));
+  Value remaining = b.sub(slot(kSlotEnd), now);
+  Value cap = b.i64(stepCap);
+  Value bound = hasEstimates ? b.min(slot(kSlotEstimate), cap) : cap;
+  Value positive = b.cmp(arith::CmpIPredicate::sgt, remaining, zero);
+  Value next = b.select(positive, b.min(bound, remaining), zero);
+
+  setSlot(kSlotBegin, now);
+  setSlot(kSlotSize, next);
+  setSlot(kSlotParity, nowParity);
+  setSlot(kSlotBigSteps, bigSteps);
+  setSlot(kSlotEstimate, b.i64(kNoEstimate64));
+  b.ifThen(b.cmp(arith::CmpIPredicate::sgt, next, zero), [&] {
+    Value at = b.add(b.index(histogramSlot), b.toIndex(next));
+    b.store(b.add(b.load(clock, at), one), clock, at);
+  });
+  for (ComponentOp component : order) {
+    auto it = subClockSlots.find(component);
+    if (it == subClockSlots.end())
+      continue;
+    setSlot(it->second + kSubBegin, now);
+    setSlot(it->second + kSubSize, zero);
+    setSlot(it->second + kSubCount, zero);
+    setSlot(it->second + kSubEstimate, b.i64(kNoEstimate64));
+  }
+  return endKernel(kernel, simplan::LaunchShape::single, launches);
+}

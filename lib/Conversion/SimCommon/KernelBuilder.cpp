@@ -1,0 +1,113 @@
+//===- KernelBuilder.cpp - the vocabulary kernels are written in ----------===//
+//
+// KernelBuilder's index and i64 arithmetic, memory accesses and structured
+// control flow over OpBuilder (include/sim/Conversion/SimCommon/
+// KernelTarget.h): constants are made once per kernel at its entry.
+//
+//===----------------------------------------------------------------------===//
+
+#include "sim/Conversion/SimCommon/KernelTarget.h"
+
+#include "mlir/Dialect/Arith/IR/Arith.h"
+#include "mlir/Dialect/MemRef/IR/MemRef.h"
+#include "mlir/Dialect/SCF/IR/SCF.h"
+
+using namespace mlir;
+using namespace mlir::sim;
+
+void KernelBuilder::startKernel(Block *entry) {
+  kernelEntry = entry;
+  constants.clear();
+}
+
+Value KernelBuilder::constant(Type type, int64_t value) {
+  Value &cached = constants[{type, value}];
+  if (!cached) {
+    InsertionGuard guard(*this);
+    setInsertionPointToStart(kernelEntry);
+    cached = arith::ConstantOp::create(*this, loc, type,
+                                       getIntegerAttr(type, value));
+  }
+  return cached;
+}
+
+Value KernelBuilder::add(Value a, Value b) {
+  return arith::AddIOp::create(*this, loc, a, b);
+}
+Value KernelBuilder::sub(Value a, Value b) {
+  return arith::SubIOp::create(*this, loc, a, b);
+}
+Value KernelBuilder::mul(Value a, Value b) {
+  return arith::MulIOp::create(*this, loc, a, b);
+}
+Value KernelBuilder::min(Value a, Value b) {
+  return arith::MinSIOp::create(*this, loc, a, b);
+}
+Value KernelBuilder::max(Value a, Value b) {
+  return arith::MaxSIOp::create(*this, loc, a, b);
+}
+Value KernelBuilder::cmp(arith::CmpIPredicate predicate, Value a, Value b) {
+  return arith::CmpIOp::create(*this, loc, predicate, a, b);
+}
+Value KernelBuilder::select(Value cond, Value a, Value b) {
+  return arith::SelectOp::create(*this, loc, cond, a, b);
+}
+Value KernelBuilder::xorOne(Value value) {
+  return arith::XOrIOp::create(*this, loc, value, constant(value.getType(), 1));
+}
+Value KernelBuilder::toIndex(Value value) {
+  return arith::IndexCastOp::create(*this, loc, getIndexType(), value);
+}
+Value KernelBuilder::extend(Value value, Type type) {
+  // Flags (i1) extend unsigned, counts and estimates signed.
+  if (value.getType().isInteger(1))
+    return arith::ExtUIOp::create(*this, loc, type, value);
+  return arith::ExtSIOp::create(*this, loc, type, value);
+}
+Value KernelBuilder::truncate(Value value, Type type) {
+  return arith::TruncIOp::create(*this, loc, type, value);
+}
+Value KernelBuilder::load(Value memref, Value index) {
+  return memref::LoadOp::create(*this, loc, memref, index);
+}
+void KernelBuilder::store(Value value, Value memref, Value index) {
+  memref::StoreOp::create(*this, loc, value, memref, index);
+}
+void KernelBuilder::atomic(arith::AtomicRMWKind kind, Value value, Value memref,
+                           Value index) {
+  memref::AtomicRMWOp::create(*this, loc, kind, value, memref, index);
+}
+
+scf::IfOp
+KernelBuilder::ifThenElse(TypeRange types, Value cond,
+                          function_ref<SmallVector<Value>()> thenBuilder,
+                          function_ref<SmallVector<Value>()> elseBuilder) {
+  auto ifOp = scf::IfOp::create(*this, loc, types, cond,
+                                /*withElseRegion=*/true);
+  InsertionGuard guard(*this);
+  for (auto [region, build] :
+       {std::pair<Region *, function_ref<SmallVector<Value>()>>{
+            &ifOp.getThenRegion(), thenBuilder},
+        {&ifOp.getElseRegion(), elseBuilder}}) {
+    Block &block = region->front();
+    // Without results the builder already added the terminator.
+    if (types.empty())
+      setInsertionPoint(block.getTerminator());
+    else
+      setInsertionPointToEnd(&block);
+    SmallVector<Value> values = build();
+    if (!types.empty())
+      scf::YieldOp::create(*this, loc, values);
+  }
+  return ifOp;
+}
+
+void KernelBuilder::ifThen(Value cond, function_ref<void()> thenBuilder) {
+  auto ifOp = scf::IfOp::create(*this, loc, TypeRange(), cond,
+                                /*withElseRegion=*/false);
+  InsertionGuard guard(*this);
+  setInsertionPoint(ifOp.getThenRegion().front().getTerminator());
+  thenBuilder();
+}
+
+KernelTarget::~KernelTarget() = default;

@@ -1,0 +1,424 @@
+//===- SimulationLowering.cpp - checks, the clock, kernels and the plan ---===//
+//
+// The driver of the lowering of one simulation (SimulationLowering.h): it
+// checks that the front end recorded everything, lays out the clock, gives
+// every kernel its arguments and its launch, and builds the plan's phases
+// from the kernel families of the other files.
+//
+// The size of each big step never travels to the host. A device-resident
+// clock (docs/Plan.md) holds T, m, the parity of the halves and the end of
+// the run; estimate kernels reduce into it, a one-thread `advance` kernel
+// commits the previous big step and decides the next, and every other
+// kernel reads T and m from it and does nothing once the run has ended. The
+// host can therefore launch many big steps ahead (or replay a graph of one)
+// and look at the clock rarely. Because which half of a buffer is the
+// source is the clock's parity, no launch argument changes between big
+// steps either.
+//
+//===----------------------------------------------------------------------===//
+
+#include "sim/Conversion/SimCommon/SimulationLowering.h"
+#include "mlir/Dialect/Arith/IR/Arith.h"
+#include "mlir/Dialect/MemRef/IR/MemRef.h"
+#include "mlir/Dialect/SCF/IR/SCF.h"
+#include "mlir/Transforms/RegionUtils.h"
+
+using namespace mlir;
+using namespace mlir::sim;
+
+int64_t mlir::sim::getElementStride(BufferOp buffer) {
+  int64_t bytes = buffer.getElementBytes();
+  return isa<VectorType>(buffer.getElementType()) ? llvm::PowerOf2Ceil(bytes)
+                                                  : bytes;
+}
+
+LogicalResult SimulationLowering::checkFrontEnd() {
+  StrategyAttr strategyAttr = simulation.getStrategyAttr();
+  if (!strategyAttr || !simulation.getStepCapAttr())
+    return simulation.emitOpError()
+           << "has no memory plan; run the front end (--sim-front-end) "
+              "before lowering it";
+  strategy = strategyAttr.getValue();
+  maxSteps = simulation.getMaxSteps();
+  stepCap = simulation.getStepCapAttr().getInt();
+
+  ScheduleOp schedule = simulation.getScheduleOp();
+  size_t numComponents = llvm::range_size(simulation.getComponents());
+  if (!schedule || schedule.getOrder().size() != numComponents)
+    return simulation.emitOpError()
+           << "has no complete schedule; run the front end (--sim-front-end) "
+              "before lowering it";
+  for (FlatSymbolRefAttr name :
+       schedule.getOrder().getAsRange<FlatSymbolRefAttr>())
+    order.push_back(simulation.lookupComponent(name));
+
+  for (ComponentOp component : order) {
+    if (!component.getSubSteppingAttr() || !component.getAdvanceAttr() ||
+        !component.getParityAttr())
+      return component.emitOpError()
+             << "has no sub-stepping verdict, advance or parity; run the "
+                "front end (--sim-front-end) before lowering it";
+    WalkResult walk = component.walk([](ReadOp read) {
+      read.emitOpError() << "is a view read; run --sim-insert-interpolation "
+                            "(or the whole front end) before lowering it";
+      return WalkResult::interrupt();
+    });
+    if (walk.wasInterrupted())
+      return failure();
+  }
+  for (TotalOp total : simulation.getTotals()) {
+    WalkResult walk = total.walk([](ReadOp read) {
+      read.emitOpError() << "is a view read; run --sim-insert-interpolation "
+                            "(or the whole front end) before lowering it";
+      return WalkResult::interrupt();
+    });
+    if (walk.wasInterrupted())
+      return failure();
+  }
+  for (ParamOp param : simulation.getParams()) {
+    Type type = cast<TypedAttr>(param.getValue()).getType();
+    if (!type.isInteger(32) && !type.isInteger(64) && !type.isIndex() &&
+        !type.isF32() && !type.isF64())
+      return param.emitOpError()
+             << "has type " << type
+             << ", which a kernel cannot take as an argument; use i32, i64, "
+                "index, f32 or f64";
+    params.push_back(param);
+  }
+  for (BufferOp buffer : simulation.getBuffers())
+    buffers.push_back(buffer);
+  return success();
+}
+
+/// Assigns clock slots: the fixed ones, one evaluation counter per
+/// component, a sub-step clock per component that takes grid-wide sub-steps,
+/// then the histogram of big-step sizes (index m, 0..max_steps).
+void SimulationLowering::planClock() {
+  int64_t next = kFirstFreeSlot;
+  for (ComponentOp component : order)
+    evaluationSlots[component] = next++;
+  for (ComponentOp component : order)
+    if (component.getAdvance() == Advance::grid_substeps) {
+      subClockSlots[component] = next;
+      next += kSubClockSlots;
+    }
+  histogramSlot = next;
+  clockSlots = next + maxSteps + 1;
+}
+
+/// Every kernel starts with every argument a body could read; endKernel drops
+/// the ones it does not use, so each launch passes only what its kernel
+/// needs.
+Kernel SimulationLowering::beginKernel(StringRef name, BufferOp exactOf,
+                                       TotalOp totalOf) {
+  MLIRContext *context = simulation.getContext();
+  auto arg = [&](simplan::ArgKind kind, StringAttr symbol = {}) {
+    return simplan::ArgAttr::get(
+        context, kind, symbol ? FlatSymbolRefAttr::get(symbol) : nullptr);
+  };
+  auto dynamic = [](Type element) {
+    return MemRefType::get({ShapedType::kDynamic}, element);
+  };
+  Kernel kernel;
+  SmallVector<Type> types;
+  types.push_back(dynamic(b.getI64Type()));
+  kernel.args.push_back(arg(simplan::ArgKind::clock));
+  for (BufferOp buffer : buffers) {
+    types.push_back(dynamic(buffer.getElementType()));
+    kernel.args.push_back(
+        arg(simplan::ArgKind::buffer, buffer.getSymNameAttr()));
+  }
+  for (BufferOp buffer : buffers)
+    if (buffer.getSnapshot()) {
+      types.push_back(dynamic(buffer.getElementType()));
+      kernel.args.push_back(
+          arg(simplan::ArgKind::snapshot, buffer.getSymNameAttr()));
+    }
+  if (exactOf) {
+    types.push_back(dynamic(exactOf.getElementType()));
+    kernel.args.push_back(
+        arg(simplan::ArgKind::exact, exactOf.getSymNameAttr()));
+  }
+  if (totalOf) {
+    types.push_back(dynamic(b.getF64Type()));
+    kernel.args.push_back(
+        arg(simplan::ArgKind::total, totalOf.getSymNameAttr()));
+  }
+  for (ParamOp param : params) {
+    // An index parameter is passed as i64 (sim.get_param casts it back).
+    Type type = cast<TypedAttr>(param.getValue()).getType();
+    types.push_back(type.isIndex() ? b.getI64Type() : type);
+    kernel.args.push_back(arg(simplan::ArgKind::param, param.getSymNameAttr()));
+  }
+  types.push_back(b.getI64Type());
+  kernel.args.push_back(arg(simplan::ArgKind::range));
+  types.push_back(simulation.getTimeStepType());
+  kernel.args.push_back(arg(simplan::ArgKind::dt));
+  if (exactOf) {
+    types.push_back(b.getF64Type());
+    kernel.args.push_back(arg(simplan::ArgKind::time));
+  }
+
+  b.setInsertionPointToEnd(&kernels->getRegion(0).front());
+  Block *entry = target.createKernel(b, kernel, name, types);
+  b.startKernel(entry);
+
+  unsigned position = 0;
+  auto next = [&] { return entry->getArgument(position++); };
+  kernel.clock = next();
+  KernelValues &values = kernel.values;
+  for (BufferOp buffer : buffers)
+    values.buffers[buffer.getSymNameAttr()] = next();
+  for (BufferOp buffer : buffers)
+    if (buffer.getSnapshot())
+      values.snapshots[buffer.getSymNameAttr()] = next();
+  Value exactOut = exactOf ? next() : Value();
+  kernel.totalOut = totalOf ? next() : Value();
+  for (ParamOp param : params)
+    values.params[param.getSymName()] = next();
+  Value range = next();
+  values.params["range"] = range;
+  values.params["dt"] = next();
+  values.params["max_steps"] = b.i64(maxSteps);
+  values.range = b.toIndex(range);
+  if (exactOf) {
+    kernel.time = next();
+    // The exact kernel's output is addressed like a snapshot.
+    values.snapshots[exactOf.getSymNameAttr()] = exactOut;
+  }
+  return kernel;
+}
+
+LogicalResult SimulationLowering::endKernel(Kernel &kernel,
+                                            simplan::LaunchShape shape,
+                                            OpBuilder &launches,
+                                            ComponentOp component) {
+  target.finishKernel(b, kernel);
+  if (bodyFailed)
+    return failure();
+
+  // Drop what the kernel ended up not reading (a constant or cast made for
+  // every kernel may be its only use), then the unused arguments; the
+  // target's own trailing arguments stay.
+  IRRewriter rewriter(b.getContext());
+  (void)runRegionDCE(rewriter, kernel.func.getFunctionBody());
+  unsigned planArgs = kernel.args.size();
+  llvm::BitVector unused(kernel.func.getNumArguments());
+  for (unsigned index = 0; index < planArgs; ++index)
+    if (kernel.func.getArgument(index).use_empty())
+      unused.set(index);
+  if (failed(kernel.func.eraseArguments(unused)))
+    return failure();
+  SmallVector<Attribute> args;
+  for (auto [index, arg] : llvm::enumerate(kernel.args))
+    if (!unused.test(index))
+      args.push_back(arg);
+
+  auto kernelRef = SymbolRefAttr::get(
+      SymbolTable::getSymbolName(kernels),
+      {FlatSymbolRefAttr::get(SymbolTable::getSymbolName(kernel.func))});
+  simplan::LaunchOp::create(
+      launches, b.loc, kernelRef,
+      simplan::LaunchShapeAttr::get(b.getContext(), shape),
+      launches.getArrayAttr(args),
+      component ? FlatSymbolRefAttr::get(component.getSymNameAttr())
+                : FlatSymbolRefAttr(),
+      launches.getI64IntegerAttr(kernel.sharedPerThread),
+      launches.getI64IntegerAttr(kernel.sharedFixed));
+  return success();
+}
+
+void SimulationLowering::readClock(Kernel &kernel, Value &begin, Value &size,
+                                   Value &parity) {
+  begin = b.load(kernel.clock, b.index(kSlotBegin));
+  size = b.load(kernel.clock, b.index(kSlotSize));
+  parity = b.load(kernel.clock, b.index(kSlotParity));
+}
+
+/// Source and target halves from the clock's parity; `local` loads (own
+/// state not in registers) read the half `localParity` selects.
+void SimulationLowering::setHalves(Kernel &kernel, Value parity,
+                                   Value localParity) {
+  KernelValues &values = kernel.values;
+  Value range = values.range;
+  values.sourceBase = b.mul(b.toIndex(parity), range);
+  values.targetBase = b.mul(b.toIndex(b.xorOne(parity)), range);
+  values.localBase = b.mul(b.toIndex(localParity), range);
+}
+
+void SimulationLowering::forEachItem(Kernel &kernel,
+                                     function_ref<void(const Lane &)> body) {
+  target.forEachGroup(b, kernel, [&](Value base) {
+    target.forEachLane(b, kernel, base, body);
+  });
+}
+
+void SimulationLowering::countEvaluation(LaneVar count, const Lane &lane) {
+  Value one = b.extend(lane.active, b.getI32Type());
+  target.laneStore(b, b.add(target.laneLoad(b, count, lane), one), count, lane);
+}
+
+SmallVector<Value> SimulationLowering::inline_(Region &body, ValueRange args,
+                                               const KernelValues &values) {
+  FailureOr<SmallVector<Value>> results =
+      inlineBody(b, simulation, body, args, values);
+  if (succeeded(results))
+    return *results;
+  bodyFailed = true;
+  // Keep the IR well formed until the failure is reported: zero values of
+  // the yielded types.
+  SmallVector<Value> zeros;
+  for (Type type : body.front().getTerminator()->getOperandTypes())
+    zeros.push_back(
+        arith::ConstantOp::create(b, b.loc, type, b.getZeroAttr(type)));
+  return zeros;
+}
+
+/// num_steps of one item, at least 1 (values below 1 count as 1).
+Value SimulationLowering::estimate(Kernel &kernel, ComponentOp component,
+                                   Value item, Value time,
+                                   const KernelValues &values) {
+  Value steps = inline_(component.getNumSteps(), {item, time}, values).front();
+  return b.max(steps, b.i32(1));
+}
+
+void SimulationLowering::estimateInto(Kernel &kernel, ComponentOp component,
+                                      LaneVar minimum, Value time,
+                                      int64_t slot) {
+  forEachItem(kernel, [&](const Lane &lane) {
+    b.ifThen(lane.active, [&] {
+      KernelValues values = kernel.values;
+      values.item = lane.item;
+      Value steps = estimate(kernel, component, lane.item, time, values);
+      target.laneStore(b, b.min(target.laneLoad(b, minimum, lane), steps),
+                       minimum, lane);
+    });
+  });
+  target.reduceIntoClock(b, kernel, minimum, arith::AtomicRMWKind::mins, slot);
+}
+
+LogicalResult SimulationLowering::run() {
+  if (failed(checkFrontEnd()))
+    return failure();
+  planClock();
+  StringRef name = simulation.getSymName();
+
+  OpBuilder top(simulation);
+  kernels = target.createContainer(top, simulation.getLoc(),
+                                   (name + "_kernels").str());
+  plan = simplan::PlanOp::create(
+      top, simulation.getLoc(), simulation.getSymNameAttr(),
+      top.getStringAttr(stringifyStrategy(strategy)),
+      FlatSymbolRefAttr::get(SymbolTable::getSymbolName(kernels)),
+      top.getI64IntegerAttr(simulation.getRange()),
+      cast<TypedAttr>(simulation.getDt()), top.getI64IntegerAttr(maxSteps),
+      top.getI64IntegerAttr(groupSize), top.getI64IntegerAttr(clockSlots),
+      top.getI64IntegerAttr(histogramSlot));
+  Block *body = &plan.getBody().emplaceBlock();
+  auto unitIf = [&](bool set) { return set ? top.getUnitAttr() : UnitAttr(); };
+  OpBuilder planBuilder = OpBuilder::atBlockEnd(body);
+
+  // Symbols.
+  llvm::DenseSet<StringAttr> observed;
+  if (ObserveOp observe = simulation.getObserveOp())
+    for (FlatSymbolRefAttr buffer :
+         observe.getBuffers().getAsRange<FlatSymbolRefAttr>())
+      observed.insert(buffer.getAttr());
+  for (ParamOp param : params)
+    simplan::ParamOp::create(planBuilder, param.getLoc(),
+                             param.getSymNameAttr(), param.getValue());
+  for (BufferOp buffer : buffers) {
+    simplan::BufferOp::create(
+        planBuilder, buffer.getLoc(), buffer.getSymNameAttr(),
+        TypeAttr::get(buffer.getElementType()),
+        planBuilder.getI64IntegerAttr(getElementStride(buffer)),
+        unitIf(buffer.getSnapshot()),
+        unitIf(observed.contains(buffer.getSymNameAttr())),
+        unitIf(!buffer.getExact().empty()));
+  }
+  for (ComponentOp component : order)
+    simplan::ComponentOp::create(
+        planBuilder, component.getLoc(), component.getSymNameAttr(),
+        component.getWrites(),
+        planBuilder.getI64IntegerAttr(evaluationSlots.lookup(component)));
+
+  for (TotalOp total : simulation.getTotals())
+    simplan::TotalOp::create(planBuilder, total.getLoc(),
+                             total.getSymNameAttr(), total.getValueTypeAttr());
+
+  auto phase = [&](simplan::PhaseKind kind) {
+    auto op = simplan::PhaseOp::create(planBuilder, simulation.getLoc(), kind);
+    return OpBuilder::atBlockEnd(&op.getBody().emplaceBlock());
+  };
+
+  // init: the clock, then every buffer's initial state.
+  OpBuilder init = phase(simplan::PhaseKind::init);
+  if (failed(emitResetClock(init)))
+    return failure();
+  for (BufferOp buffer : buffers)
+    if (failed(emitInit(buffer, init)))
+      return failure();
+
+  // step: estimates, the decision, the components in schedule order.
+  OpBuilder step = phase(simplan::PhaseKind::step);
+  // The estimates, the decision, then every component as the front end
+  // recorded it advances.
+  bool hasEstimates = false;
+  for (ComponentOp component : order) {
+    if (!component.getEstimates())
+      continue;
+    hasEstimates = true;
+    if (failed(emitEstimate(component, step)))
+      return failure();
+  }
+  if (failed(emitAdvance(step, hasEstimates)))
+    return failure();
+  for (ComponentOp component : order) {
+    LogicalResult result = success();
+    switch (component.getAdvance().value()) {
+    case Advance::whole_step:
+      result = emitEvaluate(component, step);
+      break;
+    case Advance::group_substeps:
+      result = emitSubSteps(component, step);
+      break;
+    case Advance::grid_substeps:
+      result = emitRounds(component, step);
+      break;
+    }
+    if (failed(result))
+      return failure();
+  }
+
+  // finish: commit the last big step (advance with nothing left to do).
+  OpBuilder finish = phase(simplan::PhaseKind::finish);
+  for (auto launch : step.getBlock()->getOps<simplan::LaunchOp>())
+    if (launch.getKernel().getLeafReference() == "advance")
+      finish.clone(*launch.getOperation());
+
+  // exact: the exact solutions the scene declares.
+  if (llvm::any_of(buffers, [](BufferOp buffer) {
+        return !buffer.getExact().empty();
+      })) {
+    OpBuilder exact = phase(simplan::PhaseKind::exact);
+    for (BufferOp buffer : buffers)
+      if (!buffer.getExact().empty() && failed(emitExact(buffer, exact)))
+        return failure();
+  }
+
+  // total: the per-item values of the totals the scene declares.
+  if (!simulation.getTotals().empty()) {
+    OpBuilder totals = phase(simplan::PhaseKind::total);
+    for (TotalOp total : simulation.getTotals())
+      if (failed(emitTotal(total, totals)))
+        return failure();
+  }
+  simulation.erase();
+  return success();
+}
+
+LogicalResult mlir::sim::lowerSimulation(SimulationOp simulation,
+                                         KernelTarget &target,
+                                         int64_t groupSize) {
+  return SimulationLowering(simulation, target, groupSize).run();
+}

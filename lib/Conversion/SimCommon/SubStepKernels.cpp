@@ -1,0 +1,126 @@
+//===- SubStepKernels.cpp - group sub-steps inside one kernel -------------===//
+//
+// substep_C, Algorithm 2 for components that advance by `group_substeps`:
+// the own state in registers, sub-steps of the group minimum of num_steps,
+// the target written once.
+//
+//===----------------------------------------------------------------------===//
+
+#include "mlir/Dialect/Arith/IR/Arith.h"
+#include "mlir/Dialect/SCF/IR/SCF.h"
+#include "sim/Conversion/SimCommon/SimulationLowering.h"
+
+using namespace mlir;
+using namespace mlir::sim;
+
+/// Algorithm 2 for an in_kernel component with num_steps: each lane keeps
+/// its item's state in registers from T to T + m, the group takes sub-steps
+/// of the group-wide minimum of num_steps, and the target is written once.
+/// When m = 1 there is one sub-step of 1: no num_steps, no reduction.
+LogicalResult SimulationLowering::emitSubSteps(ComponentOp component,
+                                               OpBuilder &launches) {
+  Kernel kernel = beginKernel(("substep_" + component.getSymName()).str());
+  auto writes =
+      llvm::to_vector(component.getWrites().getAsRange<FlatSymbolRefAttr>());
+  LaneVar count = target.createLaneVar(b, kernel, b.getI32Type(), b.i32(0));
+  LaneVar steps = target.createLaneVar(b, kernel, b.getI32Type());
+  SmallVector<LaneVar> state;
+  for (FlatSymbolRefAttr name : writes)
+    state.push_back(target.createLaneVar(
+        b, kernel, simulation.lookupBuffer(name).getElementType()));
+  Value begin, size, parity;
+  readClock(kernel, begin, size, parity);
+  setHalves(kernel, parity, parity);
+  kernel.values.bigStepBegin = begin;
+  kernel.values.bigStepSize = size;
+  Value dt = kernel.values.params.lookup("dt");
+  SmallVector<Cache> caches = createCaches(kernel, component);
+
+  // The values a lane's bodies read: its registers.
+  auto laneValues = [&](const Lane &lane) {
+    KernelValues values = kernel.values;
+    values.item = lane.item;
+    for (auto [name, var] : llvm::zip_equal(writes, state))
+      values.registers[name.getAttr()] = target.laneLoad(b, var, lane);
+    return values;
+  };
+
+  b.ifThen(b.cmp(arith::CmpIPredicate::sgt, size, b.i64(0)), [&] {
+    target.prepareGroupMin(b, kernel);
+    Value end = b.add(begin, size);
+    Value single = b.cmp(arith::CmpIPredicate::eq, size, b.i64(1));
+    target.forEachGroup(b, kernel, [&](Value base) {
+      // Own state at T into registers.
+      target.forEachLane(b, kernel, base, [&](const Lane &lane) {
+        b.ifThen(lane.active, [&] {
+          for (auto [name, var] : llvm::zip_equal(writes, state))
+            target.laneStore(
+                b,
+                b.load(kernel.values.buffers.lookup(name.getAttr()),
+                       b.add(kernel.values.sourceBase, lane.item)),
+                var, lane);
+        });
+      });
+      // Sub-steps until the group reaches T + m (the same for every lane).
+      auto loop = scf::WhileOp::create(b, b.loc, b.getI64Type(), begin);
+      Block *before =
+          b.createBlock(&loop.getBefore(), {}, b.getI64Type(), b.loc);
+      scf::ConditionOp::create(
+          b, b.loc,
+          b.cmp(arith::CmpIPredicate::slt, before->getArgument(0), end),
+          before->getArguments());
+      Block *after = b.createBlock(&loop.getAfter(), {}, b.getI64Type(), b.loc);
+      Value time = after->getArgument(0);
+      auto decided = b.ifThenElse(
+          b.getI64Type(), single, [&] { return SmallVector<Value>{b.i64(1)}; },
+          [&] {
+            target.forEachLane(b, kernel, base, [&](const Lane &lane) {
+              auto estimated = b.ifThenElse(
+                  b.getI32Type(), lane.active,
+                  [&] {
+                    return SmallVector<Value>{estimate(
+                        kernel, component, lane.item, time, laneValues(lane))};
+                  },
+                  [&] { return SmallVector<Value>{b.i32(kNoEstimate)}; });
+              target.laneStore(b, estimated.getResult(0), steps, lane);
+            });
+            Value groupMin =
+                b.extend(target.groupMin(b, kernel, steps), b.getI64Type());
+            return SmallVector<Value>{b.min(groupMin, b.sub(end, time))};
+          });
+      Value subStep = decided.getResult(0);
+      Value subStep32 = b.truncate(subStep, b.getI32Type());
+      if (!caches.empty()) {
+        // The caches of the previous sub-step are free once every lane has
+        // passed the barrier of this sub-step's minimum; when m = 1 there
+        // was none.
+        b.ifThen(single, [&] { target.barrier(b); });
+        fillCaches(kernel, component, caches, base, time, subStep32, dt);
+      }
+      target.forEachLane(b, kernel, base, [&](const Lane &lane) {
+        b.ifThen(lane.active, [&] {
+          SmallVector<Value> results =
+              inline_(component.getEvaluate(), {lane.item, time, subStep32, dt},
+                      laneValues(lane));
+          for (auto [value, var] : llvm::zip_equal(results, state))
+            target.laneStore(b, value, var, lane);
+        });
+        countEvaluation(count, lane);
+      });
+      scf::YieldOp::create(b, b.loc, b.add(time, subStep));
+      b.setInsertionPointAfter(loop);
+      // The target half, once.
+      target.forEachLane(b, kernel, base, [&](const Lane &lane) {
+        b.ifThen(lane.active, [&] {
+          for (auto [name, var] : llvm::zip_equal(writes, state))
+            b.store(target.laneLoad(b, var, lane),
+                    kernel.values.buffers.lookup(name.getAttr()),
+                    b.add(kernel.values.targetBase, lane.item));
+        });
+      });
+    });
+    target.reduceIntoClock(b, kernel, count, arith::AtomicRMWKind::addi,
+                           evaluationSlots.lookup(component));
+  });
+  return endKernel(kernel, simplan::LaunchShape::items, launches, component);
+}
