@@ -19,10 +19,13 @@ build_type="${SIM_BUILD_TYPE:-Release}"
 
 # MLIR/LLVM 22 (headers, CMake package, mlir-tblgen, FileCheck, lit), the
 # compiler and linker, the build tools, GoogleTest, Python for lit and the
-# scene generator, and Graphviz to render dependency graphs in tests.
+# scene generator, Graphviz to render dependency graphs in tests, and what
+# the bundle format needs: FlatBuffers (the schema compiler and headers) and
+# zlib (its CRC-32).
 packages=(
   libmlir-22-dev mlir-22-tools llvm-22-dev llvm-22-tools clang-22 lld-22
   cmake ninja-build libgtest-dev python3 graphviz
+  libflatbuffers-dev flatbuffers-compiler zlib1g-dev
 )
 missing=()
 for package in "${packages[@]}"; do
