@@ -40,10 +40,9 @@ public:
   /// this size.
   virtual void checkGroupSize(int64_t groupSize) const = 0;
 
-  /// Loads the strategy's kernels and resolves `kernels`; a launch names a
-  /// kernel by its index in that list.
-  virtual void load(const Bundle::StrategyCode &code, Strategy strategy,
-                    const std::vector<std::string> &kernels) = 0;
+  /// Loads the code of `plan` of `bundle` and resolves its kernels; a
+  /// launch names a kernel by its index in `plan.kernels`.
+  virtual void load(const Bundle &bundle, const schema::PlanT &plan) = 0;
 
   /// Device memory, zeroed.
   virtual DevicePtr allocate(size_t bytes) = 0;

@@ -1,253 +1,386 @@
-//===- Bundle.cpp - reading and validating a .simb file -------------------===//
+//===- Bundle.cpp - reading a .simb file ----------------------------------===//
 //
-// The binary container of docs/Bundle.md: header, section table, sections.
-// Every field is checked before it is used (offsets and sizes with overflow
-// in mind), so a truncated or hostile file gives a message that names the
-// problem rather than a crash.
+// The checks before anything of a bundle is used, outermost first: the file
+// (a regular file of at most kMaxBundleBytes, read whole), the header
+// (BundleFormat.h: magic, version, size, reserved bits), the CRC-32 of the
+// rest, the FlatBuffer (FlatBuffers' verifier), and the cross-references
+// (verifyBundle). Each gives a message that names what is wrong, so a
+// damaged or hostile file never reaches the executor.
 //
 //===----------------------------------------------------------------------===//
 
 #include "Bundle.h"
 #include "Error.h"
 
+#include "sim/Runtime/BundleFormat.h"
+
 #include <cerrno>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
 #include <cstring>
-#include <fstream>
-#include <iterator>
+#include <fcntl.h>
+#include <limits>
+#include <sys/stat.h>
+#include <unistd.h>
+#include <zlib.h>
 
 namespace sim::rt {
 
-namespace {
+//===----------------------------------------------------------------------===//
+// Names
+//===----------------------------------------------------------------------===//
 
-constexpr uint8_t kMagic[8] = {'S', 'I', 'M', 'B', 'N', 'D', 'L', 0};
-constexpr uint32_t kVersion = 1;
-constexpr size_t kHeaderSize = 24;
-constexpr size_t kEntrySize = 32;
-constexpr uint32_t kNoStrategy = 0xffffffffu;
-
-uint32_t readU32(const uint8_t *p) {
-  return uint32_t(p[0]) | uint32_t(p[1]) << 8 | uint32_t(p[2]) << 16 |
-         uint32_t(p[3]) << 24;
-}
-
-uint64_t readU64(const uint8_t *p) {
-  return uint64_t(readU32(p)) | uint64_t(readU32(p + 4)) << 32;
-}
-
-const char *kindName(uint32_t kind) {
-  switch (SectionKind(kind)) {
-  case SectionKind::Scene:
-    return "scene";
-  case SectionKind::Plan:
-    return "plan";
-  case SectionKind::Ptx:
-    return "PTX";
-  case SectionKind::Cpu:
-    return "CPU";
-  case SectionKind::ReferenceModel:
-    return "reference model";
-  case SectionKind::ReferenceObject:
-    return "reference object";
+const char *strategyName(Strategy strategy) {
+  switch (strategy) {
+  case Strategy::Simple:
+    return "simple";
+  case Strategy::Traditional:
+    return "traditional";
+  case Strategy::Hip:
+    return "hip";
+  case Strategy::HipCache:
+    return "hip-cache";
   }
   return "?";
 }
 
-/// Scene and reference sections belong to no strategy.
-bool hasStrategy(uint32_t kind) {
-  return SectionKind(kind) == SectionKind::Plan ||
-         SectionKind(kind) == SectionKind::Ptx ||
-         SectionKind(kind) == SectionKind::Cpu;
+std::optional<Strategy> parseStrategy(std::string_view name) {
+  for (int i = 0; i < kNumStrategies; ++i)
+    if (name == strategyName(Strategy(i)))
+      return Strategy(i);
+  return std::nullopt;
 }
 
-bool isElf(const uint8_t *data, uint64_t size) {
-  static constexpr uint8_t elf[4] = {0x7f, 'E', 'L', 'F'};
-  return size >= 64 && std::memcmp(data, elf, 4) == 0;
+const char *scalarTypeName(ScalarType type) {
+  switch (type) {
+  case ScalarType::I32:
+    return "i32";
+  case ScalarType::I64:
+    return "i64";
+  case ScalarType::Index:
+    return "index";
+  case ScalarType::F32:
+    return "f32";
+  case ScalarType::F64:
+    return "f64";
+  }
+  return "?";
+}
+
+const char *phaseName(PhaseKind phase) {
+  switch (phase) {
+  case PhaseKind::Init:
+    return "init";
+  case PhaseKind::Step:
+    return "step";
+  case PhaseKind::Finish:
+    return "finish";
+  case PhaseKind::Exact:
+    return "exact";
+  case PhaseKind::Total:
+    return "total";
+  }
+  return "?";
+}
+
+const char *interpName(Interp interp) {
+  switch (interp) {
+  case Interp::Linear:
+    return "linear";
+  case Interp::Cubic:
+    return "cubic";
+  case Interp::Hermite:
+    return "hermite";
+  case Interp::None:
+    return "none";
+  }
+  return "?";
+}
+
+const char *boundaryName(Boundary boundary) {
+  switch (boundary) {
+  case Boundary::Clamp:
+    return "clamp";
+  case Boundary::Wrap:
+    return "wrap";
+  case Boundary::Zero:
+    return "zero";
+  }
+  return "?";
+}
+
+const char *advanceName(Advance advance) {
+  switch (advance) {
+  case Advance::WholeStep:
+    return "whole_step";
+  case Advance::GroupSubSteps:
+    return "group_substeps";
+  case Advance::GridSubSteps:
+    return "grid_substeps";
+  }
+  return "?";
+}
+
+const char *hostIsa() {
+#if defined(__x86_64__)
+  return "x86-64";
+#elif defined(__aarch64__)
+  return "aarch64";
+#else
+  return "unknown";
+#endif
+}
+
+//===----------------------------------------------------------------------===//
+// Elements and values
+//===----------------------------------------------------------------------===//
+
+std::string elementText(const schema::Element &element) {
+  std::string scalar = scalarTypeName(element.scalar());
+  if (element.lanes() == 1)
+    return scalar;
+  return "vector<" + std::to_string(element.lanes()) + "x" + scalar + ">";
+}
+
+uint64_t Value::bits() const {
+  switch (type) {
+  case ScalarType::I32:
+    return uint32_t(int32_t(i));
+  case ScalarType::I64:
+  case ScalarType::Index:
+    return uint64_t(i);
+  case ScalarType::F32: {
+    float value = float(f);
+    uint32_t bits;
+    std::memcpy(&bits, &value, sizeof bits);
+    return bits;
+  }
+  case ScalarType::F64: {
+    uint64_t bits;
+    std::memcpy(&bits, &f, sizeof bits);
+    return bits;
+  }
+  }
+  return 0;
+}
+
+std::string Value::text() const {
+  if (!isFloat())
+    return std::to_string(i);
+  char buffer[64];
+  std::snprintf(buffer, sizeof buffer,
+                type == ScalarType::F32 ? "%.9g" : "%.17g", f);
+  return buffer;
+}
+
+Value parseValue(ScalarType type, std::string_view text,
+                 const std::string &what) {
+  std::string copy(text);
+  std::string typeName = scalarTypeName(type);
+  auto bad = [&](const std::string &why) {
+    fail(SIM_ERROR_INVALID_ARGUMENT, what + ": '" + copy + "' " + why);
+  };
+  // strtoll and strtod skip leading blanks and accept an empty string; a
+  // value is one token.
+  if (copy.empty() || std::isspace((unsigned char)copy.front()))
+    bad("is not a " + typeName + " value");
+  Value value;
+  value.type = type;
+  char *end = nullptr;
+  errno = 0;
+  if (value.isFloat()) {
+    value.f = type == ScalarType::F32 ? double(std::strtof(copy.c_str(), &end))
+                                      : std::strtod(copy.c_str(), &end);
+    if (*end)
+      bad("is not a " + typeName + " value");
+    if (errno == ERANGE && std::isinf(value.f))
+      bad("is out of range for " + typeName);
+    return value;
+  }
+  long long parsed = std::strtoll(copy.c_str(), &end, 10);
+  if (*end)
+    bad("is not an integer (" + typeName + ")");
+  if (errno == ERANGE || (type == ScalarType::I32 &&
+                          (parsed < std::numeric_limits<int32_t>::min() ||
+                           parsed > std::numeric_limits<int32_t>::max())))
+    bad("is out of range for " + typeName);
+  value.i = parsed;
+  return value;
+}
+
+//===----------------------------------------------------------------------===//
+// The bundle
+//===----------------------------------------------------------------------===//
+
+const schema::PlanT *Bundle::plan(Strategy strategy) const {
+  for (const auto &plan : contents.plans)
+    if (plan->strategy == strategy)
+      return plan.get();
+  return nullptr;
+}
+
+std::vector<Strategy> Bundle::strategies() const {
+  std::vector<Strategy> list;
+  for (const auto &plan : contents.plans)
+    list.push_back(plan->strategy);
+  return list;
+}
+
+const schema::CpuCodeT *Bundle::cpuCode(const schema::PlanT &plan) const {
+  for (const auto &code : plan.cpu)
+    if (code->isa == hostIsa())
+      return code.get();
+  return nullptr;
+}
+
+int Bundle::findParam(std::string_view name) const {
+  for (size_t i = 0; i < scene().params.size(); ++i)
+    if (scene().params[i]->name == name)
+      return int(i);
+  return -1;
+}
+
+const schema::PhaseT *findPhase(const schema::PlanT &plan, PhaseKind kind) {
+  for (const auto &phase : plan.phases)
+    if (phase->kind == kind)
+      return phase.get();
+  return nullptr;
+}
+
+namespace {
+
+void unrollSteps(const std::vector<std::unique_ptr<schema::StepT>> &steps,
+                 std::vector<const schema::LaunchT *> &into) {
+  for (const auto &step : steps) {
+    if (step->launch) {
+      into.push_back(step->launch.get());
+      continue;
+    }
+    for (uint32_t i = 0; i < step->repeat->count; ++i)
+      unrollSteps(step->repeat->body, into);
+  }
 }
 
 } // namespace
 
+std::vector<const schema::LaunchT *> unrollPhase(const schema::PhaseT &phase) {
+  std::vector<const schema::LaunchT *> launches;
+  unrollSteps(phase.body, launches);
+  return launches;
+}
+
 std::shared_ptr<const Bundle> Bundle::read(const std::string &path) {
-  std::ifstream file(path, std::ios::binary);
-  if (!file)
+  int fd = open(path.c_str(), O_RDONLY | O_CLOEXEC);
+  if (fd < 0)
     fail(SIM_ERROR_IO,
          "cannot open bundle '" + path + "': " + std::strerror(errno));
-  std::vector<uint8_t> bytes((std::istreambuf_iterator<char>(file)),
-                             std::istreambuf_iterator<char>());
-  if (file.bad())
-    fail(SIM_ERROR_IO, "cannot read bundle '" + path + "'");
+  struct Closer {
+    int fd;
+    ~Closer() { close(fd); }
+  } closer{fd};
+  struct stat info;
+  if (fstat(fd, &info) != 0)
+    fail(SIM_ERROR_IO,
+         "cannot read bundle '" + path + "': " + std::strerror(errno));
+  // A device, FIFO or directory has no size to trust (/dev/zero never
+  // ends).
+  if (!S_ISREG(info.st_mode))
+    fail(SIM_ERROR_IO,
+         "cannot read bundle '" + path + "': it is not a regular file");
+  if (uint64_t(info.st_size) > schema::kMaxBundleBytes)
+    fail(SIM_ERROR_BUNDLE, "bundle '" + path + "': the file has " +
+                               std::to_string(info.st_size) +
+                               " bytes, more than a bundle may have (" +
+                               std::to_string(schema::kMaxBundleBytes) + ")");
+  std::vector<uint8_t> bytes(size_t(info.st_size));
+  size_t done = 0;
+  while (done < bytes.size()) {
+    ssize_t n = ::read(fd, bytes.data() + done, bytes.size() - done);
+    if (n < 0 && errno == EINTR)
+      continue;
+    if (n < 0)
+      fail(SIM_ERROR_IO,
+           "cannot read bundle '" + path + "': " + std::strerror(errno));
+    if (n == 0)
+      break; // Shrunk while reading: the header check reports it.
+    done += size_t(n);
+  }
+  bytes.resize(done);
   return parse(bytes.data(), bytes.size(), path);
 }
 
 std::shared_ptr<const Bundle> Bundle::parse(const uint8_t *data, size_t size,
                                             const std::string &name) {
-  auto bundle = std::make_shared<Bundle>();
-  bundle->name = name;
+  auto result = std::make_shared<Bundle>();
+  result->name = name;
   const std::string where = "bundle '" + name + "': ";
   auto error = [&](const std::string &message) {
     fail(SIM_ERROR_BUNDLE, where + message);
   };
 
-  if (size < kHeaderSize)
-    error("the file has " + std::to_string(size) +
-          " bytes, fewer than the 24-byte header (truncated?)");
-  if (std::memcmp(data, kMagic, sizeof kMagic) != 0)
-    error("not a sim bundle (wrong magic; expected \"SIMBNDL\\0\")");
-  uint32_t version = readU32(data + 8);
-  if (version != kVersion)
-    error("format version " + std::to_string(version) +
-          " is not supported (this runtime reads version 1)");
-  uint32_t count = readU32(data + 12);
-  uint64_t declared = readU64(data + 16);
-  if (declared != size)
-    error("the header gives a file size of " + std::to_string(declared) +
+  if (!schema::hasMagic(data, size))
+    error(size < sizeof schema::kMagic
+              ? "the file has " + std::to_string(size) +
+                    " bytes, too few for a bundle (truncated?)"
+              : "not a sim bundle (wrong magic; expected \"SIMBNDL\\0\")");
+  if (size < schema::kHeaderSize)
+    error("the file has " + std::to_string(size) + " bytes, fewer than the " +
+          std::to_string(schema::kHeaderSize) + "-byte header (truncated?)");
+  schema::Header header = schema::decodeHeader(data);
+  if (header.version != schema::kFormatVersion)
+    error("format version " + std::to_string(header.version) +
+          (header.version == 1
+               ? " is no longer supported: this runtime reads version 2; "
+                 "recompile the scene with sim-translate --sim-to-bundle"
+               : " is not supported (this runtime reads version 2)"));
+  if (header.size != size)
+    error("the header gives a file size of " + std::to_string(header.size) +
           " bytes but the file has " + std::to_string(size) +
-          (declared > size ? " (truncated?)" : ""));
-  // count < 2^32, so the table size cannot overflow 64 bits.
-  uint64_t tableEnd = kHeaderSize + uint64_t(count) * kEntrySize;
-  if (tableEnd > size)
-    error("the section table of " + std::to_string(count) +
-          " entries reaches past the end of the file");
+          (header.size > size ? " (truncated?)" : ""));
+  if (header.reserved != 0)
+    error("the reserved header field is not zero (damaged?)");
+  const uint8_t *payload = data + schema::kHeaderSize;
+  size_t payloadSize = size - schema::kHeaderSize;
+  // zlib's crc32 takes sizes as uInt: a bundle is at most 1 GiB.
+  if (payloadSize > schema::kMaxBundleBytes)
+    error("the file is larger than a bundle may be");
+  uint32_t crc = uint32_t(crc32(0L, Z_NULL, 0));
+  crc = uint32_t(crc32(crc, payload, uInt(payloadSize)));
+  if (crc != header.checksum)
+    error("the checksum does not match its contents (CRC-32 " +
+          std::to_string(crc) + ", the header says " +
+          std::to_string(header.checksum) + "): the file is damaged");
 
-  struct Section {
-    uint32_t kind, strategy;
-    const uint8_t *data;
-    uint64_t size;
-  };
-  std::vector<Section> sections;
-  const Section *scene = nullptr;
-  const Section *referenceModel = nullptr, *referenceObject = nullptr;
-  std::array<std::array<const Section *, 5>, kNumStrategies> byKind = {};
-  sections.reserve(count);
-  for (uint32_t i = 0; i < count; ++i) {
-    const uint8_t *entry = data + kHeaderSize + size_t(i) * kEntrySize;
-    uint32_t kind = readU32(entry);
-    uint32_t strategy = readU32(entry + 4);
-    uint64_t offset = readU64(entry + 8);
-    uint64_t length = readU64(entry + 16);
-    std::string what = "section " + std::to_string(i);
-    if (kind < 1 || kind > 6)
-      error(what + " has unknown kind " + std::to_string(kind));
-    what += " (" + std::string(kindName(kind)) + ")";
-    if (!hasStrategy(kind)) {
-      if (strategy != kNoStrategy)
-        error(what + " has strategy " + std::to_string(strategy) + " but a " +
-              kindName(kind) + " section has none (0xffffffff)");
-    } else if (strategy >= kNumStrategies) {
-      error(what + " has unknown strategy " + std::to_string(strategy));
-    }
-    if (offset > size || length > size - offset)
-      error(what + " at offset " + std::to_string(offset) + " with " +
-            std::to_string(length) +
-            " bytes reaches past the end of the file (" + std::to_string(size) +
-            " bytes)");
-    if (offset < tableEnd && length > 0)
-      error(what + " at offset " + std::to_string(offset) +
-            " overlaps the header or the section table (which ends at " +
-            std::to_string(tableEnd) + ")");
-    if (offset % 8 != 0)
-      error(what + " starts at offset " + std::to_string(offset) +
-            ", which is not a multiple of 8");
-    sections.push_back({kind, strategy, data + offset, length});
-  }
-  for (const Section &section : sections) {
-    const Section *&slot =
-        SectionKind(section.kind) == SectionKind::Scene ? scene
-        : SectionKind(section.kind) == SectionKind::ReferenceModel
-            ? referenceModel
-        : SectionKind(section.kind) == SectionKind::ReferenceObject
-            ? referenceObject
-            : byKind[section.strategy][section.kind];
-    if (slot) {
-      std::string what = kindName(section.kind) + std::string(" section");
-      if (hasStrategy(section.kind))
-        what += std::string(" of strategy ") +
-                strategyName(Strategy(section.strategy));
-      error("repeated " + what);
-    }
-    slot = &section;
-  }
-
-  if (!scene)
-    error("no scene section");
-  auto text = [](const Section *section) {
-    return std::string_view(reinterpret_cast<const char *>(section->data),
-                            section->size);
-  };
+  // FlatBuffers reads scalars in place: the buffer must be aligned as the
+  // writer aligned it (8), which `data` need not be.
+  std::vector<uint8_t> aligned(payload, payload + payloadSize);
+  flatbuffers::Verifier::Options options;
+  options.max_depth = 64;
+  options.max_tables = 1000000;
+  flatbuffers::Verifier verifier(aligned.data(), aligned.size(), options);
+  if (!schema::BundleBufferHasIdentifier(aligned.data()))
+    error("the contents are not a bundle FlatBuffer (wrong identifier)");
+  if (!schema::VerifyBundleBuffer(verifier))
+    error("the contents do not verify as a bundle FlatBuffer (an offset, "
+          "length or nesting outside the buffer)");
+  schema::GetBundle(aligned.data())->UnPackTo(&result->contents);
   try {
-    bundle->scene = parseScene(text(scene));
+    verifyBundle(result->contents);
   } catch (const Error &e) {
     error(e.what());
   }
-  const Scene &sceneInfo = bundle->scene;
 
-  for (int s = 0; s < kNumStrategies; ++s) {
-    Strategy strategy = Strategy(s);
-    std::string name = strategyName(strategy);
-    const auto &kinds = byKind[s];
-    bool listed = false;
-    for (Strategy other : sceneInfo.strategies)
-      listed |= other == strategy;
-    const Section *planSection = kinds[uint32_t(SectionKind::Plan)];
-    if (!planSection) {
-      if (listed)
-        error("the scene lists strategy '" + name +
-              "' but there is no plan section for it");
-      for (SectionKind kind : {SectionKind::Ptx, SectionKind::Cpu})
-        if (kinds[uint32_t(kind)])
-          error(std::string(kindName(uint32_t(kind))) +
-                " section of strategy '" + name +
-                "' without a plan section for it");
-      continue;
-    }
-    if (!listed)
-      error("plan section of strategy '" + name +
-            "', which the scene's 'strategies' record does not list");
-    Bundle::StrategyCode &code = bundle->strategies[s];
-    code.present = true;
-    try {
-      code.plan = parsePlan(text(planSection), sceneInfo, strategy);
-    } catch (const Error &e) {
-      error(e.what());
-    }
-    if (const Section *ptx = kinds[uint32_t(SectionKind::Ptx)]) {
-      // The format NUL-terminates the PTX; the string adds its own NUL
-      // for the driver either way.
-      std::string_view body = text(ptx);
-      size_t nul = body.find('\0');
-      if (nul != std::string_view::npos)
-        body = body.substr(0, nul);
-      if (body.empty())
-        error("PTX section of strategy '" + name + "' is empty");
-      code.ptx = std::string(body);
-    }
-    if (const Section *cpu = kinds[uint32_t(SectionKind::Cpu)]) {
-      if (!isElf(cpu->data, cpu->size))
-        error("CPU section of strategy '" + name +
-              "' is not an ELF shared object");
-      code.cpu = std::vector<uint8_t>(cpu->data, cpu->data + cpu->size);
-    }
+  for (const auto &buffer : result->scene().buffers) {
+    result->elementTexts.push_back(elementText(*buffer->element));
+    std::string interp = interpName(buffer->interp);
+    if (buffer->interp == Interp::Hermite)
+      interp += ":" + result->scene().buffers[size_t(buffer->derivative)]->name;
+    result->interpTexts.push_back(interp);
   }
-
-  // The model says what to call and the object is what it calls: one is
-  // useless without the other.
-  if (bool(referenceModel) != bool(referenceObject))
-    error(std::string("a reference ") +
-          (referenceModel
-               ? "model section without a reference object section"
-               : "object section without a reference model section") +
-          " (docs/Reference.md: both or neither)");
-  if (referenceModel) {
-    try {
-      bundle->reference = parseReferenceModel(text(referenceModel), sceneInfo);
-    } catch (const Error &e) {
-      error(e.what());
-    }
-    if (!isElf(referenceObject->data, referenceObject->size))
-      error("reference object section is not an ELF shared object");
-    bundle->referenceObject = std::vector<uint8_t>(
-        referenceObject->data, referenceObject->data + referenceObject->size);
-  }
-  return bundle;
+  for (const auto &param : result->scene().params)
+    result->defaultTexts.push_back(Value::of(*param->value).text());
+  return result;
 }
 
 } // namespace sim::rt

@@ -169,66 +169,66 @@ sim_status sim_bundle_open_memory(const void *data, size_t size,
 void sim_bundle_close(sim_bundle *bundle) { delete bundle; }
 
 const char *sim_bundle_scene_name(const sim_bundle *bundle) {
-  return bundle ? bundle->bundle->scene.name.c_str() : "";
+  return bundle ? bundle->bundle->scene().name.c_str() : "";
 }
 int64_t sim_bundle_range(const sim_bundle *bundle) {
-  return bundle ? bundle->bundle->scene.range : 0;
+  return bundle ? bundle->bundle->scene().range : 0;
 }
 double sim_bundle_dt(const sim_bundle *bundle) {
-  return bundle ? bundle->bundle->scene.dt.f : 0;
+  return bundle ? bundle->bundle->scene().dt->float_value() : 0;
 }
 const char *sim_bundle_dt_type(const sim_bundle *bundle) {
-  return bundle ? scalarTypeName(bundle->bundle->scene.dt.type) : "";
+  return bundle ? scalarTypeName(bundle->bundle->scene().dt->type()) : "";
 }
 int64_t sim_bundle_max_steps(const sim_bundle *bundle) {
-  return bundle ? bundle->bundle->scene.maxSteps : 0;
+  return bundle ? bundle->bundle->scene().max_steps : 0;
 }
 
-static const Bundle::StrategyCode *codeOf(const sim_bundle *bundle,
-                                          sim_strategy strategy) {
+static const schema::PlanT *planOf(const sim_bundle *bundle,
+                                   sim_strategy strategy) {
   if (!bundle || uint32_t(strategy) >= uint32_t(kNumStrategies))
     return nullptr;
-  const Bundle::StrategyCode &code = bundle->bundle->code(Strategy(strategy));
-  return code.present ? &code : nullptr;
+  return bundle->bundle->plan(Strategy(strategy));
 }
 
 int sim_bundle_has_strategy(const sim_bundle *bundle, sim_strategy strategy) {
-  return codeOf(bundle, strategy) != nullptr;
+  return planOf(bundle, strategy) != nullptr;
 }
 int sim_bundle_has_ptx(const sim_bundle *bundle, sim_strategy strategy) {
-  const Bundle::StrategyCode *code = codeOf(bundle, strategy);
-  return code && code->ptx.has_value();
+  const schema::PlanT *plan = planOf(bundle, strategy);
+  return plan && !plan->ptx.empty();
 }
 int sim_bundle_has_cpu(const sim_bundle *bundle, sim_strategy strategy) {
-  const Bundle::StrategyCode *code = codeOf(bundle, strategy);
-  return code && code->cpu.has_value();
+  const schema::PlanT *plan = planOf(bundle, strategy);
+  return plan && bundle->bundle->cpuCode(*plan) != nullptr;
 }
 int sim_bundle_has_reference(const sim_bundle *bundle) {
-  return bundle && bundle->bundle->reference.has_value();
+  return bundle && bundle->bundle->reference() != nullptr;
 }
 
 int32_t sim_bundle_num_buffers(const sim_bundle *bundle) {
-  return bundle ? int32_t(bundle->bundle->scene.buffers.size()) : 0;
+  return bundle ? int32_t(bundle->bundle->scene().buffers.size()) : 0;
 }
 
 sim_status sim_bundle_buffer(const sim_bundle *bundle, int32_t index,
                              sim_buffer_info *out) {
   SIM_REQUIRE(bundle);
   SIM_REQUIRE(out);
-  const std::vector<SceneBuffer> &buffers = bundle->bundle->scene.buffers;
+  const Bundle &contents = *bundle->bundle;
+  const auto &buffers = contents.scene().buffers;
   if (index < 0 || size_t(index) >= buffers.size())
     return failWith(SIM_ERROR_INVALID_ARGUMENT,
                     "buffer index " + std::to_string(index) +
                         " is out of range (" + std::to_string(buffers.size()) +
                         " buffers)");
-  const SceneBuffer &buffer = buffers[index];
+  const schema::BufferT &buffer = *buffers[size_t(index)];
   out->name = buffer.name.c_str();
-  out->element_type = buffer.type.text.c_str();
-  out->scalar_type = buffer.type.f64 ? "f64" : "f32";
-  out->scalar_bytes = buffer.type.scalarBytes();
-  out->lanes = buffer.type.lanes;
-  out->interp = buffer.interp.c_str();
-  out->boundary = buffer.boundary.c_str();
+  out->element_type = contents.elementTexts[size_t(index)].c_str();
+  out->scalar_type = isF64(*buffer.element) ? "f64" : "f32";
+  out->scalar_bytes = int32_t(scalarBytes(*buffer.element));
+  out->lanes = buffer.element->lanes();
+  out->interp = contents.interpTexts[size_t(index)].c_str();
+  out->boundary = boundaryName(buffer.boundary);
   out->observed = buffer.observed;
   out->exact = buffer.exact;
   lastError.clear();
@@ -236,23 +236,24 @@ sim_status sim_bundle_buffer(const sim_bundle *bundle, int32_t index,
 }
 
 int32_t sim_bundle_num_params(const sim_bundle *bundle) {
-  return bundle ? int32_t(bundle->bundle->scene.params.size()) : 0;
+  return bundle ? int32_t(bundle->bundle->scene().params.size()) : 0;
 }
 
 sim_status sim_bundle_param(const sim_bundle *bundle, int32_t index,
                             sim_param_info *out) {
   SIM_REQUIRE(bundle);
   SIM_REQUIRE(out);
-  const std::vector<SceneParam> &params = bundle->bundle->scene.params;
+  const Bundle &contents = *bundle->bundle;
+  const auto &params = contents.scene().params;
   if (index < 0 || size_t(index) >= params.size())
     return failWith(SIM_ERROR_INVALID_ARGUMENT,
                     "parameter index " + std::to_string(index) +
                         " is out of range (" + std::to_string(params.size()) +
                         " parameters)");
-  const SceneParam &param = params[index];
+  const schema::ParamT &param = *params[size_t(index)];
   out->name = param.name.c_str();
-  out->type = scalarTypeName(param.type);
-  out->default_value = param.defaultText.c_str();
+  out->type = scalarTypeName(param.value->type());
+  out->default_value = contents.defaultTexts[size_t(index)].c_str();
   lastError.clear();
   return SIM_OK;
 }

@@ -159,17 +159,21 @@ public:
                ", as the CPU backend needs");
   }
 
-  void load(const Bundle::StrategyCode &code, Strategy strategy,
-            const std::vector<std::string> &kernelNames) override {
+  void load(const Bundle &bundle, const schema::PlanT &plan) override {
     std::string what = std::string("the CPU kernels of strategy '") +
-                       strategyName(strategy) + "'";
-    library = std::make_unique<SharedObject>(*code.cpu, what);
-    for (const std::string &name : kernelNames) {
-      std::string symbol = "sim_cpu_" + name;
+                       strategyName(plan.strategy) + "'";
+    const schema::CpuCodeT *code = bundle.cpuCode(plan);
+    if (!code)
+      fail(SIM_ERROR_BUNDLE,
+           "bundle '" + bundle.name + "' has no " + what + " for " + hostIsa());
+    library = std::make_unique<SharedObject>(code->object, what);
+    for (const auto &kernel : plan.kernels) {
+      std::string symbol = "sim_cpu_" + kernel->name;
       void *address = library->find(symbol);
       if (!address)
         fail(SIM_ERROR_BACKEND, what + " do not export " + symbol +
-                                    " (kernel '" + name + "' of the plan)");
+                                    " (kernel '" + kernel->name +
+                                    "' of the plan)");
       kernels.push_back(reinterpret_cast<KernelFn>(address));
     }
   }

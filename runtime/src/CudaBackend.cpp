@@ -211,10 +211,9 @@ public:
     cu.check(cu.cuCtxSetCurrent(context), "cuCtxSetCurrent");
   }
 
-  void load(const Bundle::StrategyCode &code, Strategy strategy,
-            const std::vector<std::string> &kernelNames) override {
-    std::string what =
-        std::string("the PTX of strategy '") + strategyName(strategy) + "'";
+  void load(const Bundle &, const schema::PlanT &plan) override {
+    std::string what = std::string("the PTX of strategy '") +
+                       strategyName(plan.strategy) + "'";
     std::string infoLog(16384, '\0'), errorLog(16384, '\0');
     CUjit_option options[] = {
         CU_JIT_INFO_LOG_BUFFER, CU_JIT_INFO_LOG_BUFFER_SIZE_BYTES,
@@ -223,7 +222,7 @@ public:
         infoLog.data(), reinterpret_cast<void *>(uintptr_t(infoLog.size())),
         errorLog.data(), reinterpret_cast<void *>(uintptr_t(errorLog.size()))};
     CUresult result =
-        cu.cuModuleLoadDataEx(&module, code.ptx->c_str(), 4, options, values);
+        cu.cuModuleLoadDataEx(&module, plan.ptx.c_str(), 4, options, values);
     if (result != CUDA_SUCCESS) {
       module = nullptr;
       std::string log = errorLog.c_str();
@@ -234,14 +233,49 @@ public:
                                   cu.message(result, "cuModuleLoadDataEx") +
                                   (log.empty() ? "" : "\nJIT log:\n" + log));
     }
-    for (const std::string &name : kernelNames) {
+    for (const auto &kernel : plan.kernels) {
       CUfunction function = nullptr;
-      result = cu.cuModuleGetFunction(&function, module, name.c_str());
+      result = cu.cuModuleGetFunction(&function, module, kernel->name.c_str());
       if (result != CUDA_SUCCESS)
-        fail(SIM_ERROR_BACKEND, what + " has no kernel '" + name + "' (" +
-                                    cu.message(result, "cuModuleGetFunction") +
-                                    ")");
+        fail(SIM_ERROR_BACKEND,
+             what + " has no kernel '" + kernel->name + "' (" +
+                 cu.message(result, "cuModuleGetFunction") + ")");
+      checkParams(function, *kernel, what);
       kernels.push_back({function, 48 * 1024});
+    }
+  }
+
+  /// Where the driver can tell (cuFuncGetParamInfo, CUDA 12.4+), checks
+  /// that the PTX entry takes the parameters the kernel's record says: a
+  /// memref as five 8-byte values, a scalar as itself.
+  void checkParams(CUfunction function, const schema::KernelT &kernel,
+                   const std::string &what) {
+    if (!cu.cuFuncGetParamInfo)
+      return;
+    std::vector<size_t> sizes;
+    for (const schema::KernelParam &param : kernel.params) {
+      if (param.type() == ParamType::Memref)
+        sizes.insert(sizes.end(), 5, 8);
+      else
+        sizes.push_back(param.type() == ParamType::I32 ||
+                                param.type() == ParamType::F32
+                            ? 4
+                            : 8);
+    }
+    for (size_t i = 0; i <= sizes.size(); ++i) {
+      size_t offset = 0, size = 0;
+      CUresult result = cu.cuFuncGetParamInfo(function, i, &offset, &size);
+      bool exists = result == CUDA_SUCCESS;
+      if (i == sizes.size() ? !exists : exists && size == sizes[i])
+        continue;
+      fail(SIM_ERROR_BUNDLE,
+           what + ": the PTX entry '" + kernel.name + "' does not take the " +
+               std::to_string(sizes.size()) +
+               " parameter values its kernel record says (value " +
+               std::to_string(i) +
+               (exists ? " has " + std::to_string(size) + " bytes"
+                       : " is missing") +
+               ")");
     }
   }
 

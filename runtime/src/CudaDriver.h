@@ -95,6 +95,8 @@ constexpr CUstreamCaptureMode CU_STREAM_CAPTURE_MODE_THREAD_LOCAL = 1;
 
 /// Entry points that older drivers lack; the features using them turn off.
 #define SIM_CUDA_OPTIONAL_SYMBOLS(X)                                           \
+  X(cuFuncGetParamInfo, "cuFuncGetParamInfo",                                  \
+    (CUfunction, size_t, size_t *, size_t *))                                  \
   X(cuStreamBeginCapture, "cuStreamBeginCapture_v2",                           \
     (CUstream, CUstreamCaptureMode))                                           \
   X(cuStreamEndCapture, "cuStreamEndCapture", (CUstream, CUgraph *))           \

@@ -94,10 +94,11 @@ void Executor::failInterrupted(int64_t begin, int64_t reached,
                                   std::to_string(end));
 }
 
-Settings::Settings(const Scene &scene)
-    : scene(&scene), range(scene.range), dt(scene.dt) {
-  for (const SceneParam &param : scene.params)
-    params.push_back(param.defaultValue);
+Settings::Settings(const Bundle &bundle)
+    : bundle(&bundle), range(bundle.scene().range),
+      dt(Value::of(*bundle.scene().dt)) {
+  for (const auto &param : bundle.scene().params)
+    params.push_back(Value::of(*param->value));
 }
 
 bool Settings::set(const std::string &name, const std::string &text,
@@ -122,17 +123,18 @@ bool Settings::set(const std::string &name, const std::string &text,
     dt = value;
     return false;
   }
-  int index = scene->findParam(name);
+  int index = bundle->findParam(name);
+  const schema::SceneT &scene = bundle->scene();
   if (index < 0) {
     std::vector<std::string> names;
-    for (const SceneParam &param : scene->params)
-      names.push_back(param.name);
+    for (const auto &param : scene.params)
+      names.push_back(param->name);
     fail(SIM_ERROR_INVALID_ARGUMENT,
          "'" + name + "' is not range, dt or a parameter of scene '" +
-             scene->name + "' (parameters: " + listNames(names) + ")");
+             scene.name + "' (parameters: " + listNames(names) + ")");
   }
-  params[index] =
-      parseValue(scene->params[index].type, text, "parameter '" + name + "'");
+  params[index] = parseValue(scene.params[index]->value->type(), text,
+                             "parameter '" + name + "'");
   return false;
 }
 
@@ -141,12 +143,12 @@ std::string Settings::get(const std::string &name) const {
     return std::to_string(range);
   if (name == "dt")
     return dt.text();
-  int index = scene->findParam(name);
+  int index = bundle->findParam(name);
   if (index < 0)
     fail(SIM_ERROR_INVALID_ARGUMENT, "'" + name +
                                          "' is not range, dt or a parameter "
                                          "of scene '" +
-                                         scene->name + "'");
+                                         bundle->scene().name + "'");
   return params[index].text();
 }
 

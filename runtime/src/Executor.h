@@ -26,7 +26,7 @@ namespace sim::rt {
 /// `range`, `dt` and the scene's parameters, set and read as text.
 class Settings {
 public:
-  explicit Settings(const Scene &scene);
+  explicit Settings(const Bundle &bundle);
 
   /// Sets `name` from `text`. `checkRange` is called with a new range
   /// before it is taken and throws if the state would not fit. Returns
@@ -42,7 +42,7 @@ public:
     return dt.type == ScalarType::F32 ? double(float(dt.f)) : dt.f;
   }
 
-  const Scene *scene;
+  const Bundle *bundle;
   int64_t range;
   Value dt;
   std::vector<Value> params;
@@ -75,7 +75,7 @@ class Executor {
 public:
   virtual ~Executor() = default;
 
-  virtual const Scene &scene() const = 0;
+  virtual const schema::SceneT &scene() const = 0;
   virtual sim_backend backendKind() const = 0;
   virtual const std::string &device() const = 0;
   /// Why `auto` did not choose CUDA (empty otherwise).
@@ -127,7 +127,9 @@ public:
 
   /// Requests that runs stop at their next host synchronisation; safe from
   /// a signal handler.
-  void interrupt() { interruptRequested.store(true, std::memory_order_relaxed); }
+  void interrupt() {
+    interruptRequested.store(true, std::memory_order_relaxed);
+  }
   void resume() { interruptRequested.store(false, std::memory_order_relaxed); }
 
   /// The last run's measurements.

@@ -66,14 +66,11 @@ void interpolateLanes(Interp interp, int32_t lanes, S f, S h, const uint8_t *a,
 
 ReferenceSession::ReferenceSession(std::shared_ptr<const Bundle> bundleIn,
                                    const sim_session_options &options)
-    : bundle(std::move(bundleIn)), settings(bundle->scene) {
-  if (!bundle->reference)
+    : bundle(std::move(bundleIn)), settings(*bundle) {
+  model_ = bundle->reference();
+  if (!model_)
     fail(SIM_ERROR_BUNDLE,
-         "bundle '" + bundle->name +
-             "' has no reference sections (made before the reference "
-             "executor existed; rebuild it with sim-translate "
-             "--sim-to-bundle)");
-  model_ = &*bundle->reference;
+         "bundle '" + bundle->name + "' has no reference model and functions");
   if (uint32_t(options.strategy) >= kNumStrategies)
     fail(SIM_ERROR_INVALID_ARGUMENT,
          "unknown strategy " + std::to_string(int(options.strategy)));
@@ -88,17 +85,33 @@ ReferenceSession::ReferenceSession(std::shared_ptr<const Bundle> bundleIn,
     fail(SIM_ERROR_INVALID_ARGUMENT,
          "group size " + std::to_string(groupSize_) + " is not positive");
   if (groupSize_ == 0) {
-    const Bundle::StrategyCode &code = bundle->code(strategy);
-    if (!code.present)
+    const schema::PlanT *plan = bundle->plan(strategy);
+    if (!plan)
       fail(SIM_ERROR_INVALID_ARGUMENT,
            "bundle '" + bundle->name + "' has no plan for strategy '" +
                strategyName(strategy) +
                "' to take the group size from; give a group size");
-    groupSize_ = code.plan.groupSize;
+    groupSize_ = plan->group_size;
   }
 
-  object = std::make_unique<SharedObject>(*bundle->referenceObject,
-                                          "the reference functions");
+  // The model against the scene (indices the verifier checked).
+  std::vector<int32_t> modelIndex(scene().buffers.size(), -1);
+  for (size_t b = 0; b < model_->buffers.size(); ++b) {
+    buffers_.push_back({scene().buffers[model_->buffers[b]].get()});
+    modelIndex[model_->buffers[b]] = int32_t(b);
+  }
+  for (ModelBuffer &buffer : buffers_)
+    if (buffer.info->interp == Interp::Hermite)
+      buffer.derivative = modelIndex[size_t(buffer.info->derivative)];
+  for (size_t c = 0; c < model_->components.size(); ++c) {
+    for (uint32_t write : model_->components[c]->writes)
+      buffers_[write].writer = int32_t(c);
+    stepping.push_back(model_->components[c]->stepping[size_t(strategy)]);
+  }
+  stepCap = model_->step_caps[size_t(strategy)];
+
+  object =
+      std::make_unique<SharedObject>(model_->object, "the reference functions");
   auto lookUp = [&](const std::string &symbol, const std::string &body) {
     void *address = object->find(symbol);
     if (!address)
@@ -106,8 +119,8 @@ ReferenceSession::ReferenceSession(std::shared_ptr<const Bundle> bundleIn,
                                   symbol + " (" + body + ")");
     return address;
   };
-  for (size_t b = 0; b < model_->buffers.size(); ++b) {
-    const RefBuffer &buffer = model_->buffers[b];
+  for (size_t b = 0; b < buffers_.size(); ++b) {
+    const schema::BufferT &buffer = *buffers_[b].info;
     std::string index = std::to_string(b);
     initFns.push_back(reinterpret_cast<InitFn>(
         lookUp("sim_ref_init_" + index,
@@ -119,10 +132,10 @@ ReferenceSession::ReferenceSession(std::shared_ptr<const Bundle> bundleIn,
                      : nullptr);
   }
   for (size_t c = 0; c < model_->components.size(); ++c) {
-    const RefComponent &component = model_->components[c];
+    const schema::RefComponentT &component = *model_->components[c];
     std::string index = std::to_string(c);
     numStepsFns.push_back(
-        component.numSteps
+        component.num_steps
             ? reinterpret_cast<NumStepsFn>(lookUp(
                   "sim_ref_num_steps_" + index,
                   "the num_steps body of component '" + component.name + "'"))
@@ -130,22 +143,15 @@ ReferenceSession::ReferenceSession(std::shared_ptr<const Bundle> bundleIn,
     evaluateFns.push_back(reinterpret_cast<EvaluateFn>(
         lookUp("sim_ref_evaluate_" + index,
                "the evaluate body of component '" + component.name + "'")));
-    bool readsLater = false;
-    for (int32_t read : component.reads) {
-      int32_t writer = model_->buffers[read].writer;
-      readsLater |= writer >= 0 &&
-                    model_->components[writer].position > component.position;
-    }
-    bounding.push_back(component.numSteps && readsLater);
   }
   for (size_t t = 0; t < model_->totals.size(); ++t)
     totalFns.push_back(reinterpret_cast<TotalFn>(
         lookUp("sim_ref_total_" + std::to_string(t),
-               "the body of total '" + model_->totals[t].name + "'")));
+               "the body of total '" + totalName(t) + "'")));
   context = {this, &ReferenceSession::readCallback,
              &ReferenceSession::paramCallback};
   evaluations.assign(model_->components.size(), 0);
-  histogram.assign(size_t(scene().maxSteps) + 1, 0);
+  histogram.assign(size_t(scene().max_steps) + 1, 0);
 }
 
 ReferenceSession::~ReferenceSession() = default;
@@ -164,12 +170,12 @@ void ReferenceSession::set(const std::string &name, const std::string &text) {
 }
 
 int ReferenceSession::bufferIndex(const std::string &name) const {
-  int index = model_->findBuffer(name);
-  if (index >= 0)
-    return index;
+  for (size_t b = 0; b < buffers_.size(); ++b)
+    if (buffers_[b].info->name == name)
+      return int(b);
   std::vector<std::string> names;
-  for (const RefBuffer &buffer : model_->buffers)
-    names.push_back(buffer.name);
+  for (const ModelBuffer &buffer : buffers_)
+    names.push_back(buffer.info->name);
   fail(SIM_ERROR_INVALID_ARGUMENT,
        "'" + name + "' is not a buffer of the reference model (buffers: " +
            listNames(names) + ")");
@@ -179,11 +185,12 @@ int64_t ReferenceSession::memoryBytes(int64_t range) const {
   // Per buffer: the initial state, begin, end and current copies, the
   // temporaries of a sub-step, and a status byte per item.
   int64_t bytes = 0;
-  for (const RefBuffer &buffer : model_->buffers)
+  for (const ModelBuffer &buffer : buffers_)
     bytes = saturatingAdd(
         bytes,
         saturatingAdd(
-            saturatingMul(saturatingMul(range, buffer.type.packedBytes()), 5),
+            saturatingMul(
+                saturatingMul(range, packedBytes(*buffer.info->element)), 5),
             range));
   return bytes;
 }
@@ -220,14 +227,16 @@ void ReferenceSession::setBuffer(const std::string &name, const void *data,
 }
 
 bool ReferenceSession::hasExact(const std::string &name) const {
-  int index = model_->findBuffer(name);
-  return index >= 0 && model_->buffers[index].exact;
+  for (const ModelBuffer &buffer : buffers_)
+    if (buffer.info->name == name)
+      return buffer.info->exact;
+  return false;
 }
 
 void ReferenceSession::exact(const std::string &name, void *data,
                              size_t bytes) {
   int index = bufferIndex(name);
-  if (!model_->buffers[index].exact)
+  if (!buffers_[size_t(index)].info->exact)
     fail(SIM_ERROR_INVALID_ARGUMENT, "scene '" + scene().name +
                                          "' declares no exact solution of "
                                          "buffer '" +
@@ -251,7 +260,8 @@ std::vector<double> ReferenceSession::totals() {
   ensureInitialized();
   running = {Body::Total, -1, now};
   for (size_t t = 0; t < sums.size(); ++t) {
-    bool isF32 = model_->totals[t].type == ScalarType::F32;
+    bool isF32 =
+        scene().totals[model_->totals[t]->total]->type == ScalarType::F32;
     double sum = 0.0;
     for (int64_t i = 0; i < settings.range; ++i) {
       // Room for either type; an f32 widens to double as the kernels do.
@@ -296,14 +306,14 @@ void ReferenceSession::rethrowCallbackError() {
 }
 
 void ReferenceSession::read(int32_t buffer, int64_t item, void *out) {
-  if (buffer < 0 || size_t(buffer) >= model_->buffers.size()) {
+  if (buffer < 0 || size_t(buffer) >= buffers_.size()) {
     // Without a valid buffer the size of `out` is unknown: write nothing.
     if (!callbackFailed) {
       callbackFailed = true;
       callbackStatus = SIM_ERROR_BACKEND;
       callbackMessage = "a reference body read buffer " +
                         std::to_string(buffer) + ", but the model has " +
-                        std::to_string(model_->buffers.size()) + " buffers";
+                        std::to_string(buffers_.size()) + " buffers";
     }
     return;
   }
@@ -314,7 +324,7 @@ void ReferenceSession::read(int32_t buffer, int64_t item, void *out) {
   if (callbackFailed)
     return;
   try {
-    const RefBuffer &info = model_->buffers[buffer];
+    const schema::BufferT &info = *buffers_[size_t(buffer)].info;
     int64_t range = settings.range;
     int64_t index = item;
     if (item < 0 || item >= range) {
@@ -379,13 +389,13 @@ void ReferenceSession::param(int32_t index, void *out) {
     }
   };
   if (index >= 0 && size_t(index) < model_->params.size()) {
-    store(settings.params[model_->params[index].sceneParam]);
+    store(settings.params[model_->params[size_t(index)]]);
   } else if (index == -1) {
     store(Value{ScalarType::I64, settings.range, 0});
   } else if (index == -2) {
     store(settings.dt);
   } else if (index == -3) {
-    store(Value{ScalarType::I32, scene().maxSteps, 0});
+    store(Value{ScalarType::I32, scene().max_steps, 0});
   } else if (!callbackFailed) {
     callbackFailed = true;
     callbackStatus = SIM_ERROR_BACKEND;
@@ -404,8 +414,8 @@ void ReferenceSession::init() {
   initialized = false;
   int64_t range = settings.range;
   checkMemory(range, "range " + std::to_string(range));
-  states.assign(model_->buffers.size(), State{});
-  initStatus.assign(model_->buffers.size(), {});
+  states.assign(buffers_.size(), State{});
+  initStatus.assign(buffers_.size(), {});
   for (size_t b = 0; b < states.size(); ++b) {
     size_t bytes = size_t(range) * packed(int32_t(b));
     states[b].initial.assign(bytes, 0);
@@ -439,9 +449,11 @@ const uint8_t *ReferenceSession::initialItem(int32_t buffer, int64_t item) {
     for (auto [b, i] : initChain) {
       inCycle |= b == buffer && i == item;
       if (inCycle)
-        cycle += model_->buffers[b].name + "[" + std::to_string(i) + "] -> ";
+        cycle +=
+            buffers_[size_t(b)].info->name + "[" + std::to_string(i) + "] -> ";
     }
-    cycle += model_->buffers[buffer].name + "[" + std::to_string(item) + "]";
+    cycle +=
+        buffers_[size_t(buffer)].info->name + "[" + std::to_string(item) + "]";
     fail(SIM_ERROR_BUNDLE,
          "the init bodies read each other in a cycle: " + cycle);
   }
@@ -464,16 +476,19 @@ const uint8_t *ReferenceSession::initialItem(int32_t buffer, int64_t item) {
 //===----------------------------------------------------------------------===//
 
 std::string ReferenceSession::describeRead(int32_t buffer, int64_t item) const {
-  const RefComponent &component = model_->components[running.component];
+  const schema::RefComponentT &component =
+      *model_->components[size_t(running.component)];
   return std::string(running.body == Body::NumSteps ? "num_steps"
                                                     : "evaluate") +
          " of component '" + component.name + "' reads buffer '" +
-         model_->buffers[buffer].name + "' (item " + std::to_string(item) +
-         ") at base step " + std::to_string(running.readTime);
+         buffers_[size_t(buffer)].info->name + "' (item " +
+         std::to_string(item) + ") at base step " +
+         std::to_string(running.readTime);
 }
 
 void ReferenceSession::readInStep(int32_t buffer, int64_t item, uint8_t *out) {
-  const RefComponent &component = model_->components[running.component];
+  const schema::RefComponentT &component =
+      *model_->components[size_t(running.component)];
   if (std::find(component.reads.begin(), component.reads.end(), buffer) ==
       component.reads.end())
     fail(SIM_ERROR_BACKEND,
@@ -481,14 +496,14 @@ void ReferenceSession::readInStep(int32_t buffer, int64_t item, uint8_t *out) {
              ", which the model's 'reads' of the component does not list");
   const State &state = states[buffer];
   size_t at = size_t(item) * packed(buffer);
-  int32_t writer = model_->buffers[buffer].writer;
+  int32_t writer = buffers_[size_t(buffer)].writer;
   const uint8_t *from;
   if (writer < 0) {
     // No writer: the initial state (or what the user set).
     from = state.begin.data();
   } else if (writer == running.component) {
     from = state.current.data();
-  } else if (model_->components[writer].position > component.position) {
+  } else if (writer > running.component) {
     // A back edge: the writer has not advanced yet.
     from = state.begin.data();
   } else {
@@ -499,7 +514,8 @@ void ReferenceSession::readInStep(int32_t buffer, int64_t item, uint8_t *out) {
 }
 
 void ReferenceSession::interpolate(int32_t buffer, int64_t item, uint8_t *out) {
-  const RefBuffer &info = model_->buffers[buffer];
+  const schema::BufferT &info = *buffers_[size_t(buffer)].info;
+  const schema::Element &element = *info.element;
   const State &state = states[buffer];
   size_t bytes = packed(buffer), at = size_t(item) * bytes;
   int64_t time = running.readTime;
@@ -519,9 +535,9 @@ void ReferenceSession::interpolate(int32_t buffer, int64_t item, uint8_t *out) {
              ", but it has interp(none): its value means nothing there");
   const uint8_t *va = nullptr, *vb = nullptr;
   if (info.interp == Interp::Hermite) {
-    const RefBuffer &derivative = model_->buffers[info.derivative];
-    int32_t writer = derivative.writer;
-    const State &dstate = states[info.derivative];
+    int32_t derivative = buffers_[size_t(buffer)].derivative;
+    int32_t writer = buffers_[size_t(derivative)].writer;
+    const State &dstate = states[size_t(derivative)];
     va = dstate.begin.data() + at;
     if (writer < 0)
       vb = va;
@@ -530,21 +546,22 @@ void ReferenceSession::interpolate(int32_t buffer, int64_t item, uint8_t *out) {
     else
       fail(SIM_ERROR_BACKEND,
            describeRead(buffer, item) + inside +
-               ", but its hermite derivative '" + derivative.name +
+               ", but its hermite derivative '" +
+               buffers_[size_t(derivative)].info->name +
                "' has no value at the end of the big step yet (its writer '" +
-               model_->components[writer].name + "' runs later)");
+               model_->components[size_t(writer)]->name + "' runs later)");
   }
   const uint8_t *a = state.begin.data() + at, *b = state.end.data() + at;
   int64_t offset = time - now;
-  if (info.type.f64) {
+  if (isF64(element)) {
     double f = double(offset) / double(stepSize);
     double h = double(stepSize) * settings.dtValue();
-    interpolateLanes<double>(info.interp, info.type.lanes, f, h, a, b, va, vb,
+    interpolateLanes<double>(info.interp, element.lanes(), f, h, a, b, va, vb,
                              out);
   } else {
     float f = float(offset) / float(stepSize);
     float h = float(stepSize) * float(settings.dtValue());
-    interpolateLanes<float>(info.interp, info.type.lanes, f, h, a, b, va, vb,
+    interpolateLanes<float>(info.interp, element.lanes(), f, h, a, b, va, vb,
                             out);
   }
 }
@@ -558,12 +575,12 @@ int64_t ReferenceSession::numSteps(int32_t component, int64_t item, int64_t t) {
   int32_t n = numStepsFns[component](&context, item, t);
   rethrowCallbackError();
   running = {};
-  return std::clamp<int64_t>(n, 1, scene().maxSteps);
+  return std::clamp<int64_t>(n, 1, scene().max_steps);
 }
 
 void ReferenceSession::evaluate(int32_t component, int64_t first, int64_t last,
                                 int64_t t, int64_t n) {
-  const RefComponent &info = model_->components[component];
+  const schema::RefComponentT &info = *model_->components[size_t(component)];
   // Every item of the group reads the state before the sub-step: evaluate
   // into temporaries, then commit.
   std::vector<std::vector<uint8_t>> temporaries;
@@ -592,15 +609,16 @@ void ReferenceSession::evaluate(int32_t component, int64_t first, int64_t last,
 
 void ReferenceSession::checkFinite(int32_t component, int64_t first,
                                    int64_t last, int64_t t, int64_t n) {
-  const RefComponent &info = model_->components[component];
-  for (int32_t buffer : info.writes) {
-    const RefBuffer &type = model_->buffers[buffer];
+  const schema::RefComponentT &info = *model_->components[size_t(component)];
+  for (uint32_t buffer : info.writes) {
+    const schema::BufferT &type = *buffers_[buffer].info;
+    const schema::Element &elementType = *type.element;
     const uint8_t *data = states[buffer].current.data();
     for (int64_t i = first; i < last; ++i) {
-      const uint8_t *element = data + size_t(i) * packed(buffer);
-      for (int32_t l = 0; l < type.type.lanes; ++l) {
-        double value = type.type.f64 ? lane<double>(element, l)
-                                     : double(lane<float>(element, l));
+      const uint8_t *element = data + size_t(i) * packed(int32_t(buffer));
+      for (int32_t l = 0; l < int32_t(elementType.lanes()); ++l) {
+        double value = isF64(elementType) ? lane<double>(element, l)
+                                          : double(lane<float>(element, l));
         if (std::isfinite(value))
           continue;
         nonFinite.found = true;
@@ -612,7 +630,7 @@ void ReferenceSession::checkFinite(int32_t component, int64_t first,
         nonFinite.lane = l;
         nonFinite.value = value;
         std::string where = "item " + std::to_string(i);
-        if (type.type.lanes > 1)
+        if (elementType.lanes() > 1)
           where += ", lane " + std::to_string(l);
         fail(SIM_ERROR_NONFINITE,
              "non-finite value " +
@@ -630,37 +648,37 @@ void ReferenceSession::checkFinite(int32_t component, int64_t first,
 }
 
 void ReferenceSession::bigStep(int64_t end) {
-  const int64_t maxSteps = scene().maxSteps;
   const int64_t range = settings.range;
-  const bool hip = strategy == Strategy::Hip || strategy == Strategy::HipCache;
+  const int32_t components = int32_t(model_->components.size());
   for (State &state : states)
     state.current = state.begin;
   ran.assign(model_->components.size(), false);
   stepSize = 0;
 
-  // The size m of the big step, from num_steps at T.
-  int64_t m = maxSteps;
-  if (strategy == Strategy::Simple) {
-    m = 1;
-  } else {
-    for (int32_t c : model_->schedule) {
-      if (!model_->components[c].numSteps || (hip && !bounding[c]))
-        continue;
-      for (int64_t i = 0; i < range; ++i)
-        m = std::min(m, numSteps(c, i, now));
-    }
+  // The size m of the big step: the minimum num_steps at T of the
+  // components that estimate it, within the strategy's cap.
+  int64_t m = stepCap;
+  for (int32_t c = 0; c < components; ++c) {
+    if (!stepping[size_t(c)].estimates())
+      continue;
+    for (int64_t i = 0; i < range; ++i)
+      m = std::min(m, numSteps(c, i, now));
   }
   m = std::min(m, end - now);
   stepSize = m;
   ++histogram[size_t(m)];
   ++metrics.big_steps;
 
-  for (int32_t c : model_->schedule) {
-    const RefComponent &component = model_->components[c];
-    if (!hip || !component.numSteps) {
+  // The components in schedule order, each as the front end recorded it
+  // takes the big step: whole, or in sub-steps of the minimum num_steps of
+  // a group or of the whole range.
+  for (int32_t c = 0; c < components; ++c) {
+    const schema::RefComponentT &component = *model_->components[size_t(c)];
+    Advance advance = stepping[size_t(c)].advance();
+    if (advance == Advance::WholeStep) {
       evaluate(c, 0, range, now, m);
     } else {
-      int64_t group = component.gridSync ? range : groupSize_;
+      int64_t group = advance == Advance::GridSubSteps ? range : groupSize_;
       for (int64_t first = 0; first < range; first += group) {
         int64_t last = std::min(first + group, range);
         for (int64_t t = now; t < now + m;) {
@@ -672,12 +690,12 @@ void ReferenceSession::bigStep(int64_t end) {
         }
       }
     }
-    for (int32_t buffer : component.writes)
+    for (uint32_t buffer : component.writes)
       states[buffer].end = states[buffer].current;
     ran[c] = true;
   }
   for (size_t b = 0; b < states.size(); ++b)
-    if (model_->buffers[b].writer >= 0)
+    if (buffers_[b].writer >= 0)
       states[b].begin = states[b].end;
   now += m;
   stepSize = 0;

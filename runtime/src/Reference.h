@@ -36,8 +36,8 @@ public:
                    const sim_session_options &options);
   ~ReferenceSession() override;
 
-  const Scene &scene() const override { return bundle->scene; }
-  const ReferenceModel &model() const { return *model_; }
+  const schema::SceneT &scene() const override { return bundle->scene(); }
+  const schema::ReferenceT &model() const { return *model_; }
   sim_backend backendKind() const override { return SIM_BACKEND_REFERENCE; }
   const std::string &device() const override { return deviceName; }
   const std::string &backendNote() const override { return note; }
@@ -64,13 +64,13 @@ public:
 
   size_t numTotals() const override { return model_->totals.size(); }
   const std::string &totalName(size_t index) const override {
-    return model_->totals[index].name;
+    return scene().totals[model_->totals[index]->total]->name;
   }
   std::vector<double> totals() override;
 
   size_t numComponents() const override { return model_->components.size(); }
   const std::string &componentName(size_t index) const override {
-    return model_->components[index].name;
+    return model_->components[index]->name;
   }
 
 private:
@@ -110,7 +110,7 @@ private:
 
   int bufferIndex(const std::string &name) const;
   size_t packed(int32_t buffer) const {
-    return size_t(model_->buffers[buffer].type.packedBytes());
+    return size_t(packedBytes(*buffers_[size_t(buffer)].info->element));
   }
   void ensureInitialized();
   /// The initial element of `buffer` at `item`, computed on demand.
@@ -129,7 +129,19 @@ private:
                    int64_t n);
 
   std::shared_ptr<const Bundle> bundle;
-  const ReferenceModel *model_;
+  const schema::ReferenceT *model_;
+  /// The model's buffers resolved against the scene: what a buffer is, its
+  /// Hermite derivative and its writer as model indices (-1: none).
+  struct ModelBuffer {
+    const schema::BufferT *info;
+    int32_t derivative = -1;
+    int32_t writer = -1;
+  };
+  std::vector<ModelBuffer> buffers_;
+  /// How each component takes a big step under the session's strategy,
+  /// and the largest big step: the front end's records.
+  std::vector<schema::Stepping> stepping;
+  int64_t stepCap = 1;
   Strategy strategy;
   int64_t groupSize_ = 0;
   bool checkFinite_ = false;
@@ -142,9 +154,6 @@ private:
   std::vector<NumStepsFn> numStepsFns;
   std::vector<EvaluateFn> evaluateFns;
   std::vector<TotalFn> totalFns;
-  /// Components with num_steps that read a buffer written later in the
-  /// schedule: under hip they bound the big step.
-  std::vector<bool> bounding;
   sim_ref_context context;
 
   std::vector<State> states;

@@ -17,6 +17,7 @@
 #include <cmath>
 #include <cstring>
 #include <limits>
+#include <map>
 
 namespace sim::rt {
 
@@ -31,22 +32,23 @@ constexpr int64_t kMaxBatch = 256;
 
 Session::Session(std::shared_ptr<const Bundle> bundleIn,
                  const sim_session_options &optionsIn)
-    : bundle(std::move(bundleIn)), options(optionsIn), settings(bundle->scene) {
+    : bundle(std::move(bundleIn)), options(optionsIn), settings(*bundle) {
   if (uint32_t(options.strategy) >= kNumStrategies)
     fail(SIM_ERROR_INVALID_ARGUMENT,
          "unknown strategy " + std::to_string(int(options.strategy)));
   Strategy strategy = Strategy(options.strategy);
   std::string name = strategyName(strategy);
-  const Bundle::StrategyCode &code = bundle->code(strategy);
-  if (!code.present) {
+  plan_ = bundle->plan(strategy);
+  if (!plan_) {
     std::vector<std::string> present;
-    for (Strategy s : bundle->scene.strategies)
+    for (Strategy s : bundle->strategies())
       present.push_back(strategyName(s));
     fail(SIM_ERROR_BUNDLE, "bundle '" + bundle->name +
                                "' has no plan for strategy '" + name +
                                "' (it has: " + listNames(present) + ")");
   }
-  plan_ = &code.plan;
+  bool hasPtx = !plan_->ptx.empty();
+  const schema::CpuCodeT *cpu = bundle->cpuCode(*plan_);
 
   auto noCode = [&](const char *what, const char *backendName) {
     fail(SIM_ERROR_BUNDLE, "bundle '" + bundle->name + "' has no " + what +
@@ -55,12 +57,12 @@ Session::Session(std::shared_ptr<const Bundle> bundleIn,
   };
   switch (options.backend) {
   case SIM_BACKEND_CUDA:
-    if (!code.ptx)
+    if (!hasPtx)
       noCode("PTX", "CUDA");
     backend = createCudaBackend(options.cuda_device);
     break;
   case SIM_BACKEND_AUTO:
-    if (!code.ptx) {
+    if (!hasPtx) {
       note = "the bundle has no PTX for strategy '" + name + "'";
     } else {
       try {
@@ -72,7 +74,7 @@ Session::Session(std::shared_ptr<const Bundle> bundleIn,
         note = error.what();
       }
     }
-    if (!backend && !code.cpu)
+    if (!backend && !cpu)
       fail(SIM_ERROR_BUNDLE, "cannot run strategy '" + name + "' of bundle '" +
                                  bundle->name + "': " + note +
                                  ", and it has no CPU code for it either");
@@ -80,8 +82,8 @@ Session::Session(std::shared_ptr<const Bundle> bundleIn,
       backend = createCpuBackend(options.cpu_threads);
     break;
   case SIM_BACKEND_CPU:
-    if (!code.cpu)
-      noCode("CPU code", "CPU");
+    if (!cpu)
+      noCode((std::string("CPU code for ") + hostIsa()).c_str(), "CPU");
     backend = createCpuBackend(options.cpu_threads);
     break;
   default:
@@ -91,13 +93,14 @@ Session::Session(std::shared_ptr<const Bundle> bundleIn,
   deviceName = backend->device();
 
   setMemoryLimit(options.max_memory, backend->memoryBytes());
-  groupSize_ = options.group_size ? options.group_size : plan_->groupSize;
+  groupSize_ = options.group_size ? options.group_size : plan_->group_size;
   backend->checkGroupSize(groupSize_);
-  kernelNames = plan_->kernelNames();
-  backend->load(code, strategy, kernelNames);
+  backend->load(*bundle, *plan_);
+  for (const auto &phase : plan_->phases)
+    hasPhase[int(phase->kind)] = true;
 
   evaluations.assign(plan_->components.size(), 0);
-  histogram.assign(size_t(scene().maxSteps) + 1, 0);
+  histogram.assign(size_t(scene().max_steps) + 1, 0);
 }
 
 Session::~Session() {
@@ -127,12 +130,12 @@ void Session::set(const std::string &name, const std::string &text) {
 }
 
 int Session::bufferIndex(const std::string &name) const {
-  int index = plan_->findBuffer(name);
-  if (index >= 0)
-    return index;
+  for (size_t i = 0; i < plan_->buffers.size(); ++i)
+    if (sceneBuffer(i).name == name)
+      return int(i);
   std::vector<std::string> names;
-  for (const PlanBuffer &buffer : plan_->buffers)
-    names.push_back(buffer.name);
+  for (size_t i = 0; i < plan_->buffers.size(); ++i)
+    names.push_back(sceneBuffer(i).name);
   fail(SIM_ERROR_INVALID_ARGUMENT,
        "'" + name + "' is not a buffer of the plan of strategy '" +
            strategyName(plan_->strategy) + "' (buffers: " + listNames(names) +
@@ -140,13 +143,15 @@ int Session::bufferIndex(const std::string &name) const {
 }
 
 size_t Session::deviceStride(int buffer) const {
-  return size_t(plan_->buffers[buffer].stride);
+  return size_t(plan_->buffers[buffer]->stride);
 }
 
 int64_t Session::memoryBytes(int64_t range) const {
-  int64_t bytes = saturatingMul(plan_->clockSlots, sizeof(int64_t));
-  for (const PlanBuffer &buffer : plan_->buffers) {
-    int64_t copies = 2 + int64_t(buffer.snapshot) + int64_t(buffer.exact);
+  int64_t bytes = saturatingMul(plan_->clock_slots, sizeof(int64_t));
+  for (size_t i = 0; i < plan_->buffers.size(); ++i) {
+    const schema::PlanBufferT &buffer = *plan_->buffers[i];
+    int64_t copies =
+        2 + int64_t(buffer.snapshot) + int64_t(sceneBuffer(i).exact);
     bytes = saturatingAdd(
         bytes, saturatingMul(saturatingMul(range, buffer.stride), copies));
   }
@@ -157,7 +162,7 @@ int64_t Session::memoryBytes(int64_t range) const {
 
 size_t Session::hostBytes(const std::string &name) const {
   return size_t(settings.range) *
-         size_t(plan_->buffers[bufferIndex(name)].type.packedBytes());
+         size_t(packedBytes(*sceneBuffer(size_t(bufferIndex(name))).element));
 }
 
 //===----------------------------------------------------------------------===//
@@ -170,17 +175,16 @@ void Session::allocate() {
     Memory memory{backend->allocate(bytes), bytes};
     return memory;
   };
-  clockMemory = take(size_t(plan_->clockSlots) * sizeof(int64_t));
+  clockMemory = take(size_t(plan_->clock_slots) * sizeof(int64_t));
   for (size_t i = 0; i < plan_->buffers.size(); ++i) {
-    const PlanBuffer &buffer = plan_->buffers[i];
     size_t half = size_t(settings.range) * deviceStride(int(i));
     buffers.push_back(take(2 * half));
-    snapshots.push_back(buffer.snapshot ? take(half) : Memory{});
-    exacts.push_back(buffer.exact ? take(half) : Memory{});
+    snapshots.push_back(plan_->buffers[i]->snapshot ? take(half) : Memory{});
+    exacts.push_back(sceneBuffer(i).exact ? take(half) : Memory{});
   }
   for (size_t i = 0; i < plan_->totals.size(); ++i)
     totalValues.push_back(take(size_t(settings.range) * sizeof(double)));
-  clock.assign(size_t(plan_->clockSlots), 0);
+  clock.assign(size_t(plan_->clock_slots), 0);
   allocated = true;
 }
 
@@ -208,68 +212,79 @@ void Session::prepare() {
     return;
   backend->dropGraph();
   graphReady = false;
-  for (int phase = 0; phase < kNumPhases; ++phase) {
-    std::vector<Prepared> &list = phases[phase];
-    list.clear();
-    for (const Launch &launch : plan_->phases[phase]) {
-      Prepared p;
-      p.launch = &launch;
-      p.kernel =
-          int(std::find(kernelNames.begin(), kernelNames.end(), launch.kernel) -
-              kernelNames.begin());
-      p.groupSize = launch.single ? 1 : groupSize_;
-      p.groups =
-          launch.single ? 1 : (settings.range + groupSize_ - 1) / groupSize_;
-      p.sharedBytes = launch.sharedPerThread * p.groupSize + launch.sharedFixed;
-      // A memref travels as its descriptor: allocated pointer, aligned
-      // pointer, offset, size, stride.
-      auto memref = [&](DevicePtr pointer, int64_t elements) {
-        p.values.insert(p.values.end(),
-                        {pointer, pointer, 0, uint64_t(elements), 1});
-      };
-      for (const Arg &arg : launch.args) {
-        switch (arg.kind) {
-        case ArgKind::Clock:
-          memref(clockMemory.pointer, plan_->clockSlots);
-          break;
-        case ArgKind::Buffer:
-          memref(buffers[arg.index].pointer, 2 * settings.range);
-          break;
-        case ArgKind::Snapshot:
-          memref(snapshots[arg.index].pointer, settings.range);
-          break;
-        case ArgKind::Exact:
-          memref(exacts[arg.index].pointer, settings.range);
-          break;
-        case ArgKind::Total:
-          memref(totalValues[arg.index].pointer, settings.range);
-          break;
-        case ArgKind::Param:
-          p.values.push_back(settings.params[arg.index].bits());
-          break;
-        case ArgKind::Range:
-          p.values.push_back(uint64_t(settings.range));
-          break;
-        case ArgKind::Dt:
-          p.values.push_back(settings.dt.bits());
-          break;
-        case ArgKind::Time:
-          p.timeValues.push_back(p.values.size());
-          p.values.push_back(0);
-          break;
-        }
-      }
-      list.push_back(std::move(p));
-    }
-    // The values are final: point at them (each Prepared owns its vector,
-    // and moving a vector keeps its storage).
-    for (Prepared &p : list) {
-      p.params.clear();
-      for (uint64_t &value : p.values)
-        p.params.push_back(&value);
+  launches.clear();
+  // Every launch once; phases refer to them by index, so a repeat costs an
+  // index per unrolled launch.
+  std::map<const schema::LaunchT *, uint32_t> index;
+  for (int phase = 0; phase < kNumPhases; ++phase)
+    phases[phase].clear();
+  for (const auto &phase : plan_->phases) {
+    std::vector<uint32_t> &order = phases[int(phase->kind)];
+    for (const schema::LaunchT *launch : unrollPhase(*phase)) {
+      auto [it, inserted] = index.try_emplace(launch, launches.size());
+      if (inserted)
+        launches.push_back(prepareLaunch(*launch));
+      order.push_back(it->second);
     }
   }
+  // The values are final: point at them (each Prepared owns its vector,
+  // and moving a vector keeps its storage).
+  for (Prepared &p : launches) {
+    p.params.clear();
+    for (uint64_t &value : p.values)
+      p.params.push_back(&value);
+  }
   prepared = true;
+}
+
+Session::Prepared Session::prepareLaunch(const schema::LaunchT &launch) {
+  Prepared p;
+  p.launch = &launch;
+  p.kernel = int(launch.kernel);
+  bool single = launch.shape == LaunchShape::Single;
+  p.groupSize = single ? 1 : groupSize_;
+  p.groups = single ? 1 : (settings.range + groupSize_ - 1) / groupSize_;
+  p.sharedBytes =
+      int64_t(launch.shared_per_thread) * p.groupSize + launch.shared_fixed;
+  // A memref travels as its descriptor: allocated pointer, aligned
+  // pointer, offset, size, stride.
+  auto memref = [&](DevicePtr pointer, int64_t elements) {
+    p.values.insert(p.values.end(),
+                    {pointer, pointer, 0, uint64_t(elements), 1});
+  };
+  for (const schema::Arg &arg : launch.args) {
+    switch (arg.kind()) {
+    case ArgKind::Clock:
+      memref(clockMemory.pointer, plan_->clock_slots);
+      break;
+    case ArgKind::Buffer:
+      memref(buffers[arg.index()].pointer, 2 * settings.range);
+      break;
+    case ArgKind::Snapshot:
+      memref(snapshots[arg.index()].pointer, settings.range);
+      break;
+    case ArgKind::Exact:
+      memref(exacts[arg.index()].pointer, settings.range);
+      break;
+    case ArgKind::Total:
+      memref(totalValues[arg.index()].pointer, settings.range);
+      break;
+    case ArgKind::Param:
+      p.values.push_back(settings.params[arg.index()].bits());
+      break;
+    case ArgKind::Range:
+      p.values.push_back(uint64_t(settings.range));
+      break;
+    case ArgKind::Dt:
+      p.values.push_back(settings.dt.bits());
+      break;
+    case ArgKind::Time:
+      p.timeValues.push_back(p.values.size());
+      p.values.push_back(0);
+      break;
+    }
+  }
+  return p;
 }
 
 void Session::launch(Prepared &p) {
@@ -279,20 +294,23 @@ void Session::launch(Prepared &p) {
 }
 
 void Session::runPhase(PhaseKind phase) {
-  for (Prepared &p : phases[int(phase)])
-    launch(p);
+  for (uint32_t index : phases[int(phase)])
+    launch(launches[index]);
 }
 
 void Session::runUncounted(PhaseKind phase) {
-  for (Prepared &p : phases[int(phase)])
+  for (uint32_t index : phases[int(phase)]) {
+    Prepared &p = launches[index];
     backend->launch(p.kernel, p.params.data(), p.groups, p.groupSize,
                     p.sharedBytes);
+  }
 }
 
 void Session::runStepPhase() {
-  std::vector<Prepared> &step = phases[int(PhaseKind::Step)];
+  const std::vector<uint32_t> &step = phases[int(PhaseKind::Step)];
   if (options.check_finite) {
-    for (Prepared &p : step) {
+    for (uint32_t index : step) {
+      Prepared &p = launches[index];
       launch(p);
       if (p.launch->component >= 0)
         checkFinite(p);
@@ -304,9 +322,11 @@ void Session::runStepPhase() {
     // once, replay it.
     if (!graphReady) {
       backend->beginCapture();
-      for (Prepared &p : step)
+      for (uint32_t index : step) {
+        Prepared &p = launches[index];
         backend->launch(p.kernel, p.params.data(), p.groups, p.groupSize,
                         p.sharedBytes);
+      }
       backend->endCapture();
       graphReady = true;
     }
@@ -315,8 +335,8 @@ void Session::runStepPhase() {
     ++metrics.graph_launches;
     return;
   }
-  for (Prepared &p : step)
-    launch(p);
+  for (uint32_t index : step)
+    launch(launches[index]);
 }
 
 void Session::readClock(size_t slots) {
@@ -324,10 +344,12 @@ void Session::readClock(size_t slots) {
 }
 
 void Session::checkFinite(const Prepared &p) {
-  const PlanComponent &component = plan_->components[p.launch->component];
-  for (int32_t index : component.writes) {
-    const PlanBuffer &buffer = plan_->buffers[index];
-    size_t stride = deviceStride(index);
+  const schema::ComponentT &component =
+      *plan_->components[size_t(p.launch->component)];
+  for (uint32_t index : component.writes) {
+    const schema::BufferT &buffer = sceneBuffer(index);
+    const schema::Element &type = *buffer.element;
+    size_t stride = deviceStride(int(index));
     std::vector<uint8_t> data(buffers[index].bytes);
     backend->read(data.data(), buffers[index].pointer, data.size());
     ++metrics.host_syncs;
@@ -335,9 +357,9 @@ void Session::checkFinite(const Prepared &p) {
     // the initial state the first time round.
     for (int64_t element = 0; element < 2 * settings.range; ++element) {
       const uint8_t *item = data.data() + size_t(element) * stride;
-      for (int32_t lane = 0; lane < buffer.type.lanes; ++lane) {
+      for (int32_t lane = 0; lane < int32_t(type.lanes()); ++lane) {
         double value;
-        if (buffer.type.f64) {
+        if (isF64(type)) {
           std::memcpy(&value, item + lane * 8, 8);
         } else {
           float single;
@@ -351,12 +373,12 @@ void Session::checkFinite(const Prepared &p) {
         nonFinite.baseStep = clock[kSlotBegin];
         nonFinite.component = component.name;
         nonFinite.buffer = buffer.name;
-        nonFinite.kernel = p.launch->kernel;
+        nonFinite.kernel = plan_->kernels[p.launch->kernel]->name;
         nonFinite.item = element % settings.range;
         nonFinite.lane = lane;
         nonFinite.value = value;
         std::string where = "item " + std::to_string(nonFinite.item);
-        if (buffer.type.lanes > 1)
+        if (type.lanes() > 1)
           where += ", lane " + std::to_string(lane);
         fail(SIM_ERROR_NONFINITE,
              "non-finite value " +
@@ -364,7 +386,7 @@ void Session::checkFinite(const Prepared &p) {
                              : value > 0       ? "inf"
                                                : "-inf") +
                  " in buffer '" + buffer.name + "' (" + where +
-                 ") after kernel '" + p.launch->kernel + "' for component '" +
+                 ") after kernel '" + nonFinite.kernel + "' for component '" +
                  component.name + "' at base step " +
                  std::to_string(nonFinite.baseStep) + " (big step of " +
                  std::to_string(clock[kSlotSize]) + ")");
@@ -413,10 +435,8 @@ void Session::run(int64_t steps) {
   // After init and after finish m is 0, so this is T.
   int64_t begin = clock[kSlotBegin] + clock[kSlotSize];
   int64_t end = runEnd(begin, steps);
-  // The largest big step: one base step under simple, max_steps otherwise.
-  int64_t cap = plan_->strategy == Strategy::Simple
-                    ? 1
-                    : std::max<int64_t>(1, scene().maxSteps);
+  // The largest big step, as the front end recorded it.
+  int64_t cap = plan_->step_cap;
 
   auto wallStart = std::chrono::steady_clock::now();
   backend->write(clockMemory.pointer + kSlotEnd * sizeof(int64_t), &end,
@@ -485,11 +505,11 @@ void Session::run(int64_t steps) {
   metrics.end = end;
   metrics.big_steps = clock[kSlotBigSteps] - before[kSlotBigSteps];
   for (size_t i = 0; i < plan_->components.size(); ++i) {
-    size_t slot = size_t(plan_->components[i].evaluationSlot);
+    size_t slot = size_t(plan_->components[i]->evaluations);
     evaluations[i] = clock[slot] - before[slot];
   }
   for (int64_t m = 1; m < int64_t(histogram.size()); ++m) {
-    size_t slot = size_t(plan_->histogramSlot + m);
+    size_t slot = size_t(plan_->histogram + m);
     histogram[m] = clock[slot] - before[slot];
   }
   if (end < begin + steps)
@@ -518,7 +538,7 @@ Session::CurrentHalf Session::currentHalf(const std::string &name,
   backend->activate();
   ensureInitialized();
   size_t stride = deviceStride(index);
-  size_t packed = size_t(plan_->buffers[index].type.packedBytes());
+  size_t packed = size_t(packedBytes(*sceneBuffer(size_t(index)).element));
   DevicePtr half = buffers[index].pointer +
                    size_t(clock[kSlotParity]) * size_t(settings.range) * stride;
   return {half, stride, packed};
@@ -555,19 +575,20 @@ void Session::setBuffer(const std::string &name, const void *data,
 }
 
 bool Session::hasExact(const std::string &name) const {
-  int index = plan_->findBuffer(name);
-  return index >= 0 && plan_->buffers[index].exact &&
-         plan_->hasPhase[int(PhaseKind::Exact)];
+  for (size_t i = 0; i < plan_->buffers.size(); ++i)
+    if (sceneBuffer(i).name == name)
+      return sceneBuffer(i).exact && hasPhase[int(PhaseKind::Exact)];
+  return false;
 }
 
 void Session::exact(const std::string &name, void *data, size_t bytes) {
   int index = bufferIndex(name);
-  if (!plan_->buffers[index].exact)
+  if (!sceneBuffer(size_t(index)).exact)
     fail(SIM_ERROR_INVALID_ARGUMENT, "scene '" + scene().name +
                                          "' declares no exact solution of "
                                          "buffer '" +
                                          name + "'");
-  if (!plan_->hasPhase[int(PhaseKind::Exact)])
+  if (!hasPhase[int(PhaseKind::Exact)])
     fail(SIM_ERROR_BUNDLE, std::string("the plan of strategy '") +
                                strategyName(plan_->strategy) +
                                "' has no exact phase");
@@ -578,13 +599,13 @@ void Session::exact(const std::string &name, void *data, size_t bytes) {
   double time = double(clock[kSlotBegin]) * settings.dtValue();
   uint64_t bits;
   std::memcpy(&bits, &time, sizeof bits);
-  for (Prepared &p : phases[int(PhaseKind::Exact)])
-    for (size_t position : p.timeValues)
-      p.values[position] = bits;
+  for (uint32_t launch : phases[int(PhaseKind::Exact)])
+    for (size_t position : launches[launch].timeValues)
+      launches[launch].values[position] = bits;
   // Outside a run: the last run's metrics stay as they were.
   runUncounted(PhaseKind::Exact);
   size_t stride = deviceStride(index);
-  size_t packed = size_t(plan_->buffers[index].type.packedBytes());
+  size_t packed = size_t(packedBytes(*sceneBuffer(size_t(index)).element));
   std::vector<uint8_t> device(size_t(settings.range) * stride);
   backend->read(device.data(), exacts[index].pointer, device.size());
   for (int64_t i = 0; i < settings.range; ++i)
@@ -596,7 +617,7 @@ std::vector<double> Session::totals() {
   std::vector<double> sums(plan_->totals.size(), 0.0);
   if (sums.empty())
     return sums;
-  if (!plan_->hasPhase[int(PhaseKind::Total)])
+  if (!hasPhase[int(PhaseKind::Total)])
     fail(SIM_ERROR_BUNDLE, std::string("the plan of strategy '") +
                                strategyName(plan_->strategy) +
                                "' has no total phase");

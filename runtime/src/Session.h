@@ -31,8 +31,8 @@ public:
   Session(const Session &) = delete;
   Session &operator=(const Session &) = delete;
 
-  const Scene &scene() const override { return bundle->scene; }
-  const Plan &plan() const { return *plan_; }
+  const schema::SceneT &scene() const override { return bundle->scene(); }
+  const schema::PlanT &plan() const { return *plan_; }
   sim_backend backendKind() const override { return backend->kind(); }
   const std::string &device() const override { return deviceName; }
   const std::string &backendNote() const override { return note; }
@@ -63,13 +63,13 @@ public:
 
   size_t numTotals() const override { return plan_->totals.size(); }
   const std::string &totalName(size_t index) const override {
-    return plan_->totals[index].name;
+    return scene().totals[plan_->totals[index]]->name;
   }
   std::vector<double> totals() override;
 
   size_t numComponents() const override { return plan_->components.size(); }
   const std::string &componentName(size_t index) const override {
-    return plan_->components[index].name;
+    return plan_->components[index]->name;
   }
 
 private:
@@ -88,7 +88,7 @@ private:
   };
   /// A launch with its parameter values laid out for the backend.
   struct Prepared {
-    const Launch *launch;
+    const schema::LaunchT *launch;
     int kernel;
     int64_t groups, groupSize, sharedBytes;
     std::vector<uint64_t> values;
@@ -98,9 +98,14 @@ private:
   };
 
   int bufferIndex(const std::string &name) const;
+  /// The plan buffer `index` as the scene declares it.
+  const schema::BufferT &sceneBuffer(size_t index) const {
+    return *scene().buffers[plan_->buffers[index]->buffer];
+  }
   void allocate();
   void releaseAll();
   void prepare();
+  Prepared prepareLaunch(const schema::LaunchT &launch);
   void ensureInitialized();
   void runPhase(PhaseKind phase);
   void runUncounted(PhaseKind phase);
@@ -112,11 +117,10 @@ private:
   size_t deviceStride(int buffer) const;
 
   std::shared_ptr<const Bundle> bundle;
-  const Plan *plan_ = nullptr;
+  const schema::PlanT *plan_ = nullptr;
   sim_session_options options;
   std::unique_ptr<Backend> backend;
   std::string deviceName, note;
-  std::vector<std::string> kernelNames;
 
   int64_t groupSize_ = 0;
   Settings settings;
@@ -129,7 +133,11 @@ private:
   std::vector<int64_t> clock;
   bool allocated = false, initialized = false, prepared = false;
   bool graphReady = false;
-  std::vector<Prepared> phases[kNumPhases];
+  /// Every launch of the plan once, and per phase the order they run in
+  /// (repeats unrolled into indices).
+  std::vector<Prepared> launches;
+  std::vector<uint32_t> phases[kNumPhases];
+  bool hasPhase[kNumPhases] = {};
 };
 
 } // namespace sim::rt

@@ -16,11 +16,17 @@
 
 namespace sim::rt {
 
+/// Checks that `object` is a 64-bit little-endian ELF shared object whose
+/// headers (the ELF header, the program and section header tables, every
+/// segment's and section's bytes) lie inside it, before anything maps it;
+/// throws SIM_ERROR_BUNDLE naming `what` ("the CPU kernels of ...").
+void checkElfImage(const std::vector<uint8_t> &object, const std::string &what);
+
 class SharedObject {
 public:
   /// Checks that `object` is a 64-bit ELF shared object for this machine
-  /// and loads it; `what` (plural, "the CPU kernels of ...") names it in
-  /// messages.
+  /// (checkElfImage, and its machine) and loads it; `what` (plural, "the
+  /// CPU kernels of ...") names it in messages.
   SharedObject(const std::vector<uint8_t> &object, std::string what);
   ~SharedObject();
   SharedObject(const SharedObject &) = delete;

@@ -1,18 +1,26 @@
 //===- BundleTest.cpp - reading and rejecting bundles ---------------------===//
 //
-// Every malformation docs/Bundle.md lists is rejected with a message that
-// names it, and the text sections parse into the structures the executor
-// uses.
+// A bundle is read only when its header, its CRC, its FlatBuffer and its
+// cross-references are right; everything else is rejected with a message
+// that names the problem (docs/Bundle.md). The tests damage bundles the
+// ways files get damaged (truncated anywhere, bits flipped anywhere) and
+// edit them the ways a careless or hostile writer would (every check of
+// BundleVerifier.cpp, with a valid CRC).
 //
 //===----------------------------------------------------------------------===//
 
 #include "Bundle.h"
 #include "Error.h"
 #include "TestBundle.h"
+#include "TestUtil.h"
+
+#include "sim/Runtime/BundleFormat.h"
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstring>
+#include <functional>
 
 using namespace sim::rt;
 using namespace sim::test;
@@ -23,8 +31,7 @@ namespace {
 std::string errorOf(const std::string &bytes,
                     sim_status expected = SIM_ERROR_BUNDLE) {
   try {
-    Bundle::parse(reinterpret_cast<const uint8_t *>(bytes.data()), bytes.size(),
-                  "test.simb");
+    parseBytes(bytes);
   } catch (const Error &error) {
     EXPECT_EQ(error.status, expected) << error.what();
     return error.what();
@@ -32,422 +39,505 @@ std::string errorOf(const std::string &bytes,
   return "";
 }
 
-std::string errorOf(const std::vector<Section> &sections) {
-  return errorOf(writeBundle(sections));
+/// The error of the decay bundle after `edit` (with a valid CRC: what the
+/// verifier must catch).
+std::string errorAfter(const std::function<void(schema::BundleT &)> &edit) {
+  schema::BundleT contents = decayContents();
+  edit(contents);
+  return errorOf(serialize(contents));
 }
 
-/// The decay sections with the plan of `strategy` replaced.
-std::vector<Section> withPlan(uint32_t strategy, const std::string &plan) {
-  std::vector<Section> sections = decaySections();
-  for (Section &section : sections)
-    if (section.kind == kPlan && section.strategy == strategy)
-      section.bytes = plan;
-  return sections;
+schema::PlanT &hipPlan(schema::BundleT &contents) {
+  return planOf(contents, Strategy::Hip);
 }
 
-std::vector<Section> withScene(const std::string &scene) {
-  std::vector<Section> sections = decaySections();
-  sections[0].bytes = scene;
-  return sections;
-}
-
-/// `text` with the first `from` replaced by `to`.
-std::string replace(std::string text, const std::string &from,
-                    const std::string &to) {
-  size_t at = text.find(from);
-  EXPECT_NE(at, std::string::npos) << from;
-  return at == std::string::npos ? text : text.replace(at, from.size(), to);
+/// The launch `index` of the step phase of `plan`.
+schema::LaunchT &stepLaunch(schema::PlanT &plan, size_t index) {
+  for (auto &phase : plan.phases)
+    if (phase->kind == PhaseKind::Step)
+      return *phase->body[index]->launch;
+  throw std::runtime_error("no step phase");
 }
 
 } // namespace
 
 TEST(Bundle, ReadsTheDecayBundle) {
-  std::string bytes = decayBundle();
-  auto bundle = Bundle::parse(reinterpret_cast<const uint8_t *>(bytes.data()),
-                              bytes.size(), "decay.simb");
-  const Scene &scene = bundle->scene;
+  auto bundle = parseBytes(decayBundle(), "decay.simb");
+  const schema::SceneT &scene = bundle->scene();
   EXPECT_EQ(scene.name, "decay");
   EXPECT_EQ(scene.range, 100);
-  EXPECT_EQ(scene.dt.type, ScalarType::F64);
-  EXPECT_DOUBLE_EQ(scene.dt.f, 0.01);
-  EXPECT_EQ(scene.maxSteps, 4);
+  EXPECT_EQ(scene.dt->type(), ScalarType::F64);
+  EXPECT_DOUBLE_EQ(scene.dt->float_value(), 0.01);
+  EXPECT_EQ(scene.max_steps, 4);
   ASSERT_EQ(scene.params.size(), 2u);
-  EXPECT_EQ(scene.params[1].name, "poison");
-  EXPECT_EQ(scene.params[1].type, ScalarType::I32);
-  EXPECT_EQ(scene.params[1].defaultValue.i, -1);
-  ASSERT_EQ(scene.buffers.size(), 2u);
-  EXPECT_TRUE(scene.buffers[0].exact);
-  EXPECT_EQ(scene.buffers[1].type.lanes, 3);
-  EXPECT_FALSE(scene.buffers[1].type.f64);
+  EXPECT_EQ(scene.params[1]->name, "poison");
+  EXPECT_EQ(scene.params[1]->value->int_value(), -1);
+  EXPECT_EQ(bundle->defaultTexts[1], "-1");
+  EXPECT_EQ(bundle->elementTexts[1], "vector<3xf32>");
+  EXPECT_EQ(bundle->interpTexts[0], "linear");
 
-  const Bundle::StrategyCode &hip = bundle->code(Strategy::Hip);
-  ASSERT_TRUE(hip.present);
-  EXPECT_TRUE(hip.cpu.has_value());
-  EXPECT_FALSE(hip.ptx.has_value());
-  EXPECT_FALSE(bundle->code(Strategy::Traditional).present);
-  const Plan &plan = hip.plan;
-  EXPECT_EQ(plan.groupSize, 32);
-  EXPECT_EQ(plan.clockSlots, 16);
-  EXPECT_EQ(plan.histogramSlot, 10);
-  ASSERT_EQ(plan.buffers.size(), 2u);
-  EXPECT_EQ(plan.buffers[1].stride, 16);
-  ASSERT_EQ(plan.components.size(), 2u);
-  EXPECT_EQ(plan.components[0].evaluationSlot, 8);
-  EXPECT_EQ(plan.components[1].writes, std::vector<int32_t>{1});
-  const std::vector<Launch> &step = plan.phase(PhaseKind::Step);
-  ASSERT_EQ(step.size(), 4u);
-  EXPECT_EQ(step[0].kernel, "estimate_Decay");
-  EXPECT_EQ(step[1].kernel, "advance");
-  EXPECT_TRUE(step[1].single);
-  EXPECT_EQ(step[2].component, 0);
-  ASSERT_EQ(step[2].args.size(), 6u);
-  EXPECT_EQ(step[2].args[3].kind, ArgKind::Param);
-  EXPECT_EQ(step[2].args[3].index, 1);
-  EXPECT_EQ(plan.kernelNames().size(), 8u);
+  const schema::PlanT *hip = bundle->plan(Strategy::Hip);
+  ASSERT_TRUE(hip);
+  EXPECT_TRUE(bundle->cpuCode(*hip));
+  EXPECT_TRUE(hip->ptx.empty());
+  EXPECT_FALSE(bundle->plan(Strategy::Traditional));
+  EXPECT_EQ(bundle->strategies(),
+            (std::vector<Strategy>{Strategy::Simple, Strategy::Hip}));
+  EXPECT_EQ(hip->step_cap, 4u);
+  const schema::PhaseT *step = findPhase(*hip, PhaseKind::Step);
+  ASSERT_TRUE(step);
+  std::vector<const schema::LaunchT *> launches = unrollPhase(*step);
+  ASSERT_EQ(launches.size(), 4u);
+  EXPECT_EQ(hip->kernels[launches[0]->kernel]->name, "estimate_Decay");
+  EXPECT_EQ(hip->kernels[launches[1]->kernel]->name, "advance");
+  EXPECT_EQ(launches[2]->component, 0);
+  ASSERT_TRUE(bundle->reference());
+  EXPECT_EQ(bundle->reference()->components[0]->stepping[2].estimates(), true);
+}
+
+TEST(Bundle, UnrollsRepeats) {
+  schema::BundleT contents = decayContents();
+  schema::PlanT &plan = hipPlan(contents);
+  // The step phase's advance three times, twice over.
+  for (auto &phase : plan.phases) {
+    if (phase->kind != PhaseKind::Step)
+      continue;
+    auto inner = std::make_unique<schema::RepeatT>();
+    inner->count = 3;
+    inner->body.push_back(std::move(phase->body[1]));
+    auto innerStep = std::make_unique<schema::StepT>();
+    innerStep->repeat = std::move(inner);
+    auto outer = std::make_unique<schema::RepeatT>();
+    outer->count = 2;
+    outer->body.push_back(std::move(innerStep));
+    phase->body[1] = std::make_unique<schema::StepT>();
+    phase->body[1]->repeat = std::move(outer);
+  }
+  auto bundle = parseBytes(serialize(contents));
+  std::vector<const schema::LaunchT *> launches =
+      unrollPhase(*findPhase(*bundle->plan(Strategy::Hip), PhaseKind::Step));
+  ASSERT_EQ(launches.size(), 9u);
+  for (size_t i = 1; i < 7; ++i)
+    EXPECT_EQ(launches[i], launches[1]);
 }
 
 //===----------------------------------------------------------------------===//
-// The container
+// The file and its header
 //===----------------------------------------------------------------------===//
 
-TEST(Bundle, RejectsTruncatedFiles) {
-  std::string bytes = decayBundle();
-  EXPECT_NE(errorOf(bytes.substr(0, 10)).find("fewer than the 24-byte header"),
-            std::string::npos);
-  EXPECT_NE(errorOf(bytes.substr(0, bytes.size() / 2)).find("(truncated?)"),
-            std::string::npos);
-  EXPECT_NE(errorOf("").find("has 0 bytes"), std::string::npos);
-}
-
-TEST(Bundle, RejectsAWrongMagic) {
-  std::string bytes = decayBundle();
+TEST(Bundle, RejectsAWrongMagicVersionSizeOrReservedField) {
+  std::string good = decayBundle();
+  std::string bytes = good;
   bytes[0] = 'X';
-  EXPECT_NE(errorOf(bytes).find("not a sim bundle (wrong magic"),
-            std::string::npos);
+  EXPECT_TRUE(contains(errorOf(bytes), "not a sim bundle (wrong magic"));
+  EXPECT_TRUE(contains(errorOf("SIMB"), "the file has 4 bytes, too few"));
+
+  schema::Header header =
+      schema::decodeHeader(reinterpret_cast<const uint8_t *>(good.data()));
+  auto withField = [&](auto change) {
+    schema::Header edited = header;
+    change(edited);
+    return schema::encodeHeader(edited) + good.substr(schema::kHeaderSize);
+  };
+  EXPECT_EQ(errorOf(withField([](schema::Header &h) { h.version = 1; })),
+            "bundle 'test.simb': format version 1 is no longer supported: "
+            "this runtime reads version 2; recompile the scene with "
+            "sim-translate --sim-to-bundle");
+  EXPECT_TRUE(contains(
+      errorOf(withField([](schema::Header &h) { h.version = 7; })),
+      "format version 7 is not supported (this runtime reads version 2)"));
+  EXPECT_TRUE(
+      contains(errorOf(withField([](schema::Header &h) { h.size += 8; })),
+               "the header gives a file size of"));
+  EXPECT_TRUE(
+      contains(errorOf(withField([](schema::Header &h) { h.reserved = 1; })),
+               "the reserved header field is not zero"));
+  EXPECT_TRUE(
+      contains(errorOf(withField([](schema::Header &h) { h.checksum ^= 1; })),
+               "the checksum does not match its contents"));
 }
 
-TEST(Bundle, RejectsAnUnknownVersion) {
+TEST(Bundle, RejectsEveryTruncation) {
   std::string bytes = decayBundle();
-  putU32(bytes, 8, 2);
-  EXPECT_NE(errorOf(bytes).find("format version 2 is not supported"),
-            std::string::npos);
-}
-
-TEST(Bundle, RejectsASizeMismatch) {
-  std::string bytes = decayBundle();
-  std::string longer = bytes + std::string(8, '\0');
-  EXPECT_NE(errorOf(longer).find("the header gives a file size of"),
-            std::string::npos);
-  putU64(bytes, 16, bytes.size() + 1);
-  EXPECT_NE(errorOf(bytes).find("(truncated?)"), std::string::npos);
-}
-
-TEST(Bundle, RejectsATableBeyondTheFile) {
-  std::string bytes = decayBundle();
-  putU32(bytes, 12, 1000000);
-  EXPECT_NE(errorOf(bytes).find(
-                "the section table of 1000000 entries reaches past the end"),
-            std::string::npos);
-}
-
-TEST(Bundle, RejectsSectionsOutOfBounds) {
-  std::string bytes = decayBundle();
-  // Section 1: its size runs past the end.
-  putU64(bytes, 24 + 32 + 16, bytes.size());
-  EXPECT_NE(errorOf(bytes).find("section 1 (plan) at offset"),
-            std::string::npos);
-  EXPECT_NE(errorOf(bytes).find("reaches past the end of the file"),
-            std::string::npos);
-  // An offset + size that overflows 64 bits.
-  bytes = decayBundle();
-  putU64(bytes, 24 + 8, 8);
-  putU64(bytes, 24 + 16, ~uint64_t(0));
-  EXPECT_NE(errorOf(bytes).find("reaches past the end"), std::string::npos);
-}
-
-TEST(Bundle, RejectsSectionsOverlappingTheTable) {
-  std::string bytes = decayBundle();
-  putU64(bytes, 24 + 8, 16);
-  EXPECT_NE(errorOf(bytes).find("overlaps the header or the section table"),
-            std::string::npos);
-}
-
-TEST(Bundle, RejectsMisalignedSections) {
-  std::string bytes = decayBundle();
-  uint64_t offset = 0;
-  for (int i = 0; i < 8; ++i)
-    offset |= uint64_t(uint8_t(bytes[24 + 8 + i])) << (8 * i);
-  putU64(bytes, 24 + 8, offset + 1);
-  putU64(bytes, 24 + 16, 8);
-  EXPECT_NE(errorOf(bytes).find("not a multiple of 8"), std::string::npos);
-}
-
-TEST(Bundle, RejectsUnknownKindsAndStrategies) {
-  std::vector<Section> sections = decaySections();
-  sections.push_back({7, kSimple, "x"});
-  EXPECT_NE(errorOf(sections).find("section 5 has unknown kind 7"),
-            std::string::npos);
-  sections = decaySections();
-  sections.push_back({kPtx, 9, "x"});
-  EXPECT_NE(errorOf(sections).find("section 5 (PTX) has unknown strategy 9"),
-            std::string::npos);
-  sections = decaySections();
-  sections[0].strategy = kHip;
-  EXPECT_NE(errorOf(sections).find("a scene section has none"),
-            std::string::npos);
-}
-
-TEST(Bundle, RejectsMissingAndRepeatedSections) {
-  std::vector<Section> sections = decaySections();
-  sections.erase(sections.begin());
-  EXPECT_NE(errorOf(sections).find("no scene section"), std::string::npos);
-
-  sections = decaySections();
-  sections.push_back(sections[0]);
-  EXPECT_NE(errorOf(sections).find("repeated scene section"),
-            std::string::npos);
-
-  sections = decaySections();
-  sections.push_back(sections[1]);
-  EXPECT_NE(errorOf(sections).find("repeated plan section of strategy simple"),
-            std::string::npos);
-
-  sections = decaySections(/*ptx=*/true);
-  sections.push_back(sections.back());
-  EXPECT_NE(errorOf(sections).find("repeated PTX section of strategy hip"),
-            std::string::npos);
-
-  // The scene lists hip, but its plan is gone (with its code).
-  sections = decaySections();
-  sections.erase(sections.begin() + 3, sections.begin() + 5);
-  EXPECT_NE(errorOf(sections).find(
-                "the scene lists strategy 'hip' but there is no plan section"),
-            std::string::npos);
-
-  sections = decaySections();
-  sections.push_back({kCpu, kTraditional, sections[2].bytes});
-  EXPECT_NE(errorOf(sections).find(
-                "CPU section of strategy 'traditional' without a plan"),
-            std::string::npos);
-
-  sections = withScene(
-      replace(decayScene(), "strategies simple hip", "strategies simple"));
-  EXPECT_NE(errorOf(sections).find("plan section of strategy 'hip', which the "
-                                   "scene's 'strategies' record does not list"),
-            std::string::npos);
-}
-
-TEST(Bundle, RejectsACpuSectionThatIsNotElf) {
-  std::vector<Section> sections = decaySections();
-  sections[2].bytes = std::string(100, 'x');
-  EXPECT_NE(errorOf(sections).find(
-                "CPU section of strategy 'simple' is not an ELF shared object"),
-            std::string::npos);
-}
-
-TEST(Bundle, ReportsAMissingFile) {
-  try {
-    Bundle::read("/nonexistent/x.simb");
-    FAIL() << "no error";
-  } catch (const Error &error) {
-    EXPECT_EQ(error.status, SIM_ERROR_IO);
-    EXPECT_NE(std::string(error.what()).find("cannot open bundle"),
-              std::string::npos);
+  // Every length of the header and the first kilobyte, then every 61st.
+  for (size_t size = 0; size < bytes.size(); size += size < 1024 ? 1 : 61) {
+    std::string message = errorOf(bytes.substr(0, size));
+    EXPECT_FALSE(message.empty()) << size;
   }
 }
 
+TEST(Bundle, RejectsEveryFlippedBit) {
+  // The CRC-32 detects every single-bit error; the header fields are
+  // checked by value. Every bit of the header and of a sample of the rest.
+  std::string good = decayBundle();
+  size_t rejected = 0, tried = 0;
+  for (size_t at = 0; at < good.size(); at += at < 64 ? 1 : 37) {
+    for (int bit = 0; bit < 8; ++bit) {
+      std::string bytes = good;
+      bytes[at] = char(bytes[at] ^ (1 << bit));
+      ++tried;
+      rejected += !errorOf(bytes).empty();
+    }
+  }
+  EXPECT_EQ(rejected, tried);
+}
+
+TEST(Bundle, RejectsABufferThatIsNotABundleFlatBuffer) {
+  // A right CRC over bytes that are no FlatBuffer of the schema.
+  EXPECT_TRUE(contains(errorOf(withHeader(std::string(64, '\x01'))),
+                       "the contents are not a bundle FlatBuffer"));
+  // The right identifier, offsets pointing outside the buffer.
+  std::string payload(64, '\0');
+  payload[0] = 8; // root table at 8
+  std::memcpy(&payload[4], "SIMB", 4);
+  payload[8] = char(0xf0); // vtable offset far away
+  payload[9] = char(0xff);
+  EXPECT_TRUE(contains(errorOf(withHeader(payload)),
+                       "do not verify as a bundle FlatBuffer"));
+}
+
+TEST(Bundle, ReportsMissingAndSpecialFiles) {
+  EXPECT_TRUE(contains(
+      errorOf([] { Bundle::read("/nonexistent/x.simb"); }, SIM_ERROR_IO),
+      "cannot open bundle '/nonexistent/x.simb'"));
+  // A device never ends: it is refused before anything is read.
+  EXPECT_TRUE(contains(errorOf([] { Bundle::read("/dev/zero"); }, SIM_ERROR_IO),
+                       "it is not a regular file"));
+  EXPECT_TRUE(contains(errorOf([] { Bundle::read("/tmp"); }, SIM_ERROR_IO),
+                       "it is not a regular file"));
+}
+
 //===----------------------------------------------------------------------===//
-// The scene text
+// Cross-references (BundleVerifier.cpp)
 //===----------------------------------------------------------------------===//
 
-TEST(SceneText, RejectsWhatDoesNotParse) {
+TEST(BundleVerifier, ChecksTheScene) {
   struct Case {
-    std::string from, to, message;
-  } cases[] = {
-      {"scene decay range 100", "scene decay range x",
-       "scene section, line 2: range 'x' is not an integer"},
-      {"range 100", "range 0", "range 0 is out of range"},
-      {"dt f64 0.01", "dt f16 0.01", "dt type 'f16' is not f32 or f64"},
-      {"dt f64 0.01", "dt f64 fast", "dt: 'fast' is not a f64 value"},
-      {"max_steps 4\n", "max_steps 4 extra\n", "expected 'scene <name> range"},
-      {"param k f64 2", "param k f16 2", "parameter type 'f16' is not one of"},
-      {"param poison i32 -1", "param poison i32 99999999999",
-       "parameter 'poison': '99999999999' is out of range for i32"},
-      {"param poison i32 -1", "param k i32 -1",
+    std::function<void(schema::BundleT &)> edit;
+    const char *message;
+  };
+  const Case cases[] = {
+      {[](auto &c) { c.scene->range = 0; },
+       "scene 'decay' has a range of 0 items, not 1 to 2^40"},
+      {[](auto &c) { c.scene->range = (int64_t(1) << 40) + 1; },
+       "has a range of 1099511627777 items"},
+      {[](auto &c) {
+         c.scene->dt = std::make_unique<schema::Value>(0, 0.0, ScalarType::F64);
+       },
+       "has dt 0, not a positive finite number"},
+      {[](auto &c) {
+         c.scene->dt = std::make_unique<schema::Value>(0, NAN, ScalarType::F64);
+       },
+       "has dt nan, not a positive finite number"},
+      {[](auto &c) {
+         c.scene->dt = std::make_unique<schema::Value>(0, 1, ScalarType::I32);
+       },
+       "has a dt of type 0, not f32 or f64"},
+      {[](auto &c) { c.scene->max_steps = 0; }, "has max_steps 0"},
+      {[](auto &c) { c.scene->params[1]->name = "k"; },
        "parameter 'k' is declared twice"},
-      {"param poison i32 -1", "param dt i32 -1",
-       "a parameter named 'dt' clashes with the scene's dt"},
-      {"buffer X f64", "buffer X f16", "element type 'f16' is not f32"},
-      {"vector<3xf32>", "vector<0xf32>", "element type 'vector<0xf32>'"},
-      {"interp linear", "interp quartic", "interpolation 'quartic' is not"},
-      {"interp linear", "interp hermite:W",
-       "interpolates with the derivative 'W', which is not a buffer"},
-      {"boundary clamp observed exact", "boundary mirror observed exact",
-       "boundary 'mirror' is not clamp, wrap or zero"},
-      {"observed exact", "observed observed",
-       "buffer flag 'observed' is "
-       "repeated"},
-      {"observed exact", "observed shiny", "unknown buffer flag 'shiny'"},
-      {"strategies simple hip", "strategies simple fast",
-       "unknown strategy 'fast'"},
-      {"strategies simple hip", "strategies simple hip\nwhat is this",
-       "line 8: unknown record 'what'"},
-      {"# The runtime's test scene (kernels/decay.c).\nscene",
-       "param k f64 2\nscene", "expected the 'scene' record first"},
+      {[](auto &c) { c.scene->params[1]->name = "dt"; },
+       "parameter 'dt' clashes with the scene's own dt"},
+      {[](auto &c) {
+         c.scene->params[1]->value = std::make_unique<schema::Value>(
+             int64_t(1) << 40, 0.0, ScalarType::I32);
+       },
+       "has the i32 value 1099511627776, which does not fit"},
+      {[](auto &c) {
+         c.scene->params[0]->value =
+             std::make_unique<schema::Value>(0, 0.0, ScalarType(9));
+       },
+       "parameter 'k' has no value of a known type"},
+      {[](auto &c) { c.scene->buffers[1]->name = "X"; },
+       "buffer 'X' is declared twice"},
+      {[](auto &c) {
+         c.scene->buffers[1]->element =
+             std::make_unique<schema::Element>(ScalarType::I32, 3);
+       },
+       "buffer 'V' has element scalar type 0, not f32 or f64"},
+      {[](auto &c) {
+         c.scene->buffers[1]->element =
+             std::make_unique<schema::Element>(ScalarType::F32, 0);
+       },
+       "buffer 'V' has 0 lanes, not 1 to 64"},
+      {[](auto &c) { c.scene->buffers[0]->interp = Interp(7); },
+       "buffer 'X' has interpolation 7"},
+      {[](auto &c) { c.scene->buffers[0]->boundary = Boundary(3); },
+       "buffer 'X' has boundary rule 3"},
+      {[](auto &c) { c.scene->buffers[0]->derivative = 1; },
+       "buffer 'X' names a derivative but is not interpolated by hermite"},
+      {[](auto &c) {
+         c.scene->buffers[0]->interp = Interp::Hermite;
+         c.scene->buffers[0]->derivative = 5;
+       },
+       "buffer 'X': its hermite derivative is 5, but there are only 2"},
+      {[](auto &c) {
+         c.scene->buffers[0]->interp = Interp::Hermite;
+         c.scene->buffers[0]->derivative = 1;
+       },
+       "interpolates with the derivative 'V', whose element type differs"},
   };
-  for (const Case &c : cases) {
-    std::string message =
-        errorOf(withScene(replace(decayScene(), c.from, c.to)));
-    EXPECT_NE(message.find(c.message), std::string::npos)
-        << "for '" << c.to << "': " << message;
-    EXPECT_EQ(message.rfind("bundle 'test.simb': scene section", 0), 0u)
-        << message;
-  }
+  for (const Case &c : cases)
+    EXPECT_TRUE(contains(errorAfter(c.edit), c.message)) << c.message;
 }
 
-TEST(SceneText, AcceptsCommentsBlankLinesAndCrLf) {
-  std::string scene = "\n# c\n\r\n" + replace(decayScene(), "\n", "\r\n");
-  EXPECT_EQ(errorOf(withScene(scene)), "");
-}
-
-//===----------------------------------------------------------------------===//
-// The plan text
-//===----------------------------------------------------------------------===//
-
-TEST(PlanText, RejectsWhatDoesNotParse) {
+TEST(BundleVerifier, ChecksPlansAndTheirClocks) {
   struct Case {
-    std::string from, to, message;
-  } cases[] = {
-      {"plan hip", "plan simple",
-       "the plan is for strategy 'simple' but its section is for 'hip'"},
-      {"group_size 32", "group_size 0", "group_size 0 is out of range"},
-      {"clock_slots 16 histogram 10", "clock_slots 12 histogram 10",
-       "histogram slot 10 is out of range [8, 7]"},
-      {"histogram 10", "histogram", "expected 'plan <strategy> group_size"},
-      {"buffer X f64 stride 8", "buffer Q f64 stride 8",
-       "buffer 'Q' is not a buffer of scene 'decay'"},
-      {"buffer X f64 stride 8", "buffer X f32 stride 8",
-       "buffer 'X' has element type f32 but the scene says f64"},
-      {"vector<3xf32> stride 16", "vector<3xf32> stride 8",
-       "stride 8 is out of range [12,"},
-      {"component Decay evaluations 8", "component Decay evaluations 99",
-       "evaluations slot 99 is out of range"},
-      {"writes X", "writes Y",
-       "component 'Decay' writes 'Y', which is not a "
-       "plan buffer"},
-      {"phase init", "phase boot", "unknown phase 'boot'"},
-      {"phase finish", "phase init", "phase 'init' is repeated"},
-      {"for Decay", "for Nobody",
-       "is for 'Nobody', which is not a plan "
-       "component"},
-      {"items for Decay", "many for Decay", "launch shape 'many' is not"},
-      {"param:k param:poison", "param:k param:zeta",
-       "argument 'param:zeta' names no parameter of scene 'decay'"},
-      {"args exact:X", "args snapshot:X", "buffer 'X' has no snapshot"},
-      {"args clock buffer:V", "args clock buffer:W",
-       "argument 'buffer:W' names no plan buffer"},
-      {"range dt\n", "range dt speed\n", "unknown argument 'speed'"},
-      {"shared 0 0 args clock\nend\nphase exact",
-       "shared 0 0 args clock\nphase exact",
-       "'phase' inside phase 'finish' (missing 'end'?)"},
-      {"time\nend\n", "time\n", "phase 'exact' is not closed with 'end'"},
-      {"phase finish\nlaunch advance single for - shared 0 0 args clock\nend\n",
-       "", "no 'finish' phase"},
-      {"component Grow", "repeat 2\ncomponent Grow",
-       "'repeat' outside a phase"},
-      {"component Grow",
-       "launch advance single for - shared 0 0 args clock\n"
-       "component Grow",
-       "'launch' outside a phase"},
-      {"component Grow", "end\ncomponent Grow",
-       "'end' without an open phase or repeat"},
-      {"shared 0 0 args clock range", "shared 0 x args clock range",
-       "fixed shared bytes 'x' is not an integer"},
+    std::function<void(schema::BundleT &)> edit;
+    const char *message;
   };
-  for (const Case &c : cases) {
-    std::string message =
-        errorOf(withPlan(kHip, replace(decayPlan(kHip), c.from, c.to)));
-    EXPECT_NE(message.find(c.message), std::string::npos)
-        << "for '" << c.to << "': " << message;
-    EXPECT_EQ(
-        message.rfind("bundle 'test.simb': plan section of strategy hip", 0),
-        0u)
-        << message;
-  }
+  const Case cases[] = {
+      {[](auto &c) { c.plans[1]->strategy = Strategy::Simple; },
+       "there are two plans of strategy 'simple'"},
+      {[](auto &c) { c.plans[1]->strategy = Strategy(4); },
+       "a plan has unknown strategy 4"},
+      {[](auto &c) { hipPlan(c).group_size = 0; },
+       "the plan of strategy 'hip' is made for groups of 0"},
+      {[](auto &c) { hipPlan(c).step_cap = 5; },
+       "caps big steps at 5 base steps, not 1 to max_steps (4)"},
+      {[](auto &c) { planOf(c, Strategy::Simple).step_cap = 0; },
+       "caps big steps at 0 base steps, not 1 to max_steps (4)"},
+      {[](auto &c) { hipPlan(c).histogram = 12; },
+       "puts the histogram of big-step sizes at slot 12, which with "
+       "max_steps 4 does not fit"},
+      {[](auto &c) { hipPlan(c).clock_slots = uint32_t(1) << 30; },
+       "asks for a clock of 1073741824 slots"},
+      {[](auto &c) { hipPlan(c).components[1]->evaluations = 8; },
+       "component 'Grow''s evaluation counter uses clock slot 8, which "
+       "another counter uses too"},
+      {[](auto &c) { hipPlan(c).components[1]->evaluations = 3; },
+       "uses clock slot 3, outside the free slots 8 to 9"},
+      {[](auto &c) { hipPlan(c).components[1]->evaluations = 10; },
+       "uses clock slot 10, outside the free slots 8 to 9"},
+      {[](auto &c) {
+         hipPlan(c).components[1]->advance = Advance::GridSubSteps;
+         hipPlan(c).components[1]->sub_clock = 8;
+       },
+       "component 'Grow''s sub-step clock uses clock slot 8 to 11"},
+      {[](auto &c) { hipPlan(c).components[1]->writes = {0}; },
+       "buffer 'X' is written by both 'Decay' and 'Grow'"},
+      {[](auto &c) { hipPlan(c).components[1]->writes = {}; },
+       "component 'Grow' writes no buffer"},
+      {[](auto &c) { hipPlan(c).components[1]->writes = {2}; },
+       "a buffer component 'Grow' writes is 2, but there are only 2"},
+      {[](auto &c) { hipPlan(c).components[1]->name = "Decay"; },
+       "component 'Decay' is declared twice"},
+      {[](auto &c) { hipPlan(c).components[1]->advance = Advance(5); },
+       "component 'Grow' advances in an unknown way (5)"},
+      {[](auto &c) { hipPlan(c).buffers[1]->buffer = 0; },
+       "buffer 'X' is listed twice"},
+      {[](auto &c) { hipPlan(c).buffers[1]->buffer = 9; },
+       "a buffer's scene buffer is 9, but there are only 2"},
+      {[](auto &c) { hipPlan(c).buffers[1]->stride = 8; },
+       "buffer 'V' has a stride of 8 bytes, which cannot hold its elements "
+       "(vector<3xf32>)"},
+      {[](auto &c) { hipPlan(c).totals = {0}; },
+       "a total's scene total is 0, but there are only 0"},
+  };
+  for (const Case &c : cases)
+    EXPECT_TRUE(contains(errorAfter(c.edit), c.message)) << c.message;
 }
 
-TEST(PlanText, ReadsTotals) {
-  std::string plan =
-      replace(decayPlan(kHip), "component Grow evaluations 9 writes V\n",
-              "component Grow evaluations 9 writes V\ntotal Energy f64\n"
-              "total Count f32\n") +
-      "phase total\nlaunch total_Energy items for - shared 0 0 args clock "
-      "buffer:X total:Energy range\nlaunch total_Count items for - shared 0 "
-      "0 args total:Count range\nend\n";
-  std::string bytes = writeBundle(withPlan(kHip, plan));
-  auto bundle = Bundle::parse(reinterpret_cast<const uint8_t *>(bytes.data()),
-                              bytes.size(), "t");
-  const Plan &parsed = bundle->code(Strategy::Hip).plan;
-  ASSERT_EQ(parsed.totals.size(), 2u);
-  EXPECT_EQ(parsed.totals[0].name, "Energy");
-  EXPECT_EQ(parsed.totals[0].type, ScalarType::F64);
-  EXPECT_EQ(parsed.totals[1].type, ScalarType::F32);
-  EXPECT_TRUE(parsed.hasPhase[int(PhaseKind::Total)]);
-  const std::vector<Launch> &totals = parsed.phase(PhaseKind::Total);
-  ASSERT_EQ(totals.size(), 2u);
-  EXPECT_EQ(totals[0].args[2].kind, ArgKind::Total);
-  EXPECT_EQ(totals[0].args[2].index, 0);
-  EXPECT_EQ(totals[1].args[0].index, 1);
-
+TEST(BundleVerifier, ChecksEveryLaunchAgainstItsKernel) {
   struct Case {
-    std::string from, to, message;
-  } cases[] = {
-      {"total Energy f64", "total Energy f16",
-       "total type 'f16' is not f32 or f64"},
-      {"total Energy f64", "total Energy i32",
-       "total type 'i32' is not f32 or f64"},
-      {"total Count f32", "total Energy f32",
-       "total 'Energy' is declared twice"},
-      {"total Energy f64", "total Energy", "expected 'total <name> <f32|f64>'"},
-      {"args total:Count", "args total:Mass",
-       "argument 'total:Mass' names no plan total"},
+    std::function<void(schema::BundleT &)> edit;
+    const char *message;
   };
-  for (const Case &c : cases) {
-    std::string message = errorOf(withPlan(kHip, replace(plan, c.from, c.to)));
-    EXPECT_NE(message.find(c.message), std::string::npos)
-        << "for '" << c.to << "': " << message;
-  }
+  const Case cases[] = {
+      // Fewer arguments than the kernel takes (a kernel would read past
+      // its parameters).
+      {[](auto &c) { stepLaunch(hipPlan(c), 2).args.pop_back(); },
+       "the launch of 'evaluate_Decay' passes 5 arguments, but the kernel "
+       "takes 6"},
+      // Swapped element types: V where the kernel takes X.
+      {[](auto &c) {
+         stepLaunch(hipPlan(c), 2).args[1] = schema::Arg(ArgKind::Buffer, 1);
+       },
+       "argument 1 passes memref<?xvector<3xf32>> (stride 16), but the "
+       "kernel's parameter is memref<?xf64> (stride 8)"},
+      {[](auto &c) {
+         stepLaunch(hipPlan(c), 2).args[2] = schema::Arg(ArgKind::Param, 1);
+       },
+       "argument 2 passes i32, but the kernel's parameter is f64"},
+      {[](auto &c) {
+         stepLaunch(hipPlan(c), 2).args[2] = schema::Arg(ArgKind::Clock, 0);
+       },
+       "argument 2 passes memref<?xi64> (stride 8), but the kernel's "
+       "parameter is f64"},
+      {[](auto &c) {
+         stepLaunch(hipPlan(c), 2).args[1] = schema::Arg(ArgKind::Snapshot, 0);
+       },
+       "passes the snapshot of buffer 'X', which has none"},
+      {[](auto &c) {
+         stepLaunch(hipPlan(c), 3).args[1] = schema::Arg(ArgKind::Exact, 1);
+       },
+       "passes the exact solution of buffer 'V', which has none"},
+      {[](auto &c) {
+         stepLaunch(hipPlan(c), 2).args[1] = schema::Arg(ArgKind::Buffer, 7);
+       },
+       "argument 1's buffer is 7, but there are only 2"},
+      {[](auto &c) {
+         stepLaunch(hipPlan(c), 2).args[2] = schema::Arg(ArgKind::Param, 9);
+       },
+       "argument 2's parameter is 9, but there are only 2"},
+      {[](auto &c) {
+         stepLaunch(hipPlan(c), 2).args[0] = schema::Arg(ArgKind(12), 0);
+       },
+       "argument 0 has unknown kind 12"},
+      // A kernel made with another element stride than the plan's buffer.
+      {[](auto &c) {
+         hipPlan(c).kernels[2]->params[0] = schema::KernelParam(
+             ParamType::Memref, schema::Element(ScalarType::F32, 3), 12);
+       },
+       "argument 0 passes memref<?xvector<3xf32>> (stride 16), but the "
+       "kernel's parameter is memref<?xvector<3xf32>> (stride 12)"},
+      {[](auto &c) { stepLaunch(hipPlan(c), 2).shared_fixed = 64; },
+       "asks for 0 bytes of shared memory per thread and 64 fixed, but the "
+       "kernel needs 0 and 0"},
+      {[](auto &c) { hipPlan(c).kernels[4]->clock_slots = 12; },
+       "kernel 'evaluate_Decay' was made for a clock of 12 slots, but the "
+       "plan's has 16"},
+      {[](auto &c) { stepLaunch(hipPlan(c), 2).kernel = 40; },
+       "a launch's kernel is 40, but there are only 8"},
+      {[](auto &c) { stepLaunch(hipPlan(c), 2).component = 2; },
+       "its component is 2, but there are only 2"},
+      {[](auto &c) { stepLaunch(hipPlan(c), 2).shape = LaunchShape(2); },
+       "has unknown shape 2"},
+      {[](auto &c) { hipPlan(c).kernels[4]->name = "../evaluate"; },
+       "kernel '../evaluate' is not named by an identifier"},
+      {[](auto &c) { hipPlan(c).kernels[5]->name = "advance"; },
+       "kernel 'advance' is declared twice"},
+      {[](auto &c) {
+         hipPlan(c).kernels[4]->params[1] =
+             schema::KernelParam(ParamType(9), schema::Element(), 0);
+       },
+       "parameter 1 has unknown type 9"},
+  };
+  for (const Case &c : cases)
+    EXPECT_TRUE(contains(errorAfter(c.edit), c.message)) << c.message;
 }
 
-TEST(PlanText, UnrollsRepeats) {
-  std::string plan =
-      replace(decayPlan(kHip),
-              "launch evaluate_Grow items for Grow shared 0 0 args clock "
-              "buffer:V range\n",
-              "repeat 3\nlaunch evaluate_Grow items for Grow shared 0 0 args "
-              "clock buffer:V range\nrepeat 2\nlaunch advance single for - "
-              "shared 4 8 args clock\nend\nend\n");
-  std::string bytes = writeBundle(withPlan(kHip, plan));
-  auto bundle = Bundle::parse(reinterpret_cast<const uint8_t *>(bytes.data()),
-                              bytes.size(), "t");
-  const std::vector<Launch> &step =
-      bundle->code(Strategy::Hip).plan.phase(PhaseKind::Step);
-  // estimate, advance, evaluate_Decay, then 3 x (evaluate_Grow, 2 x advance).
-  ASSERT_EQ(step.size(), 3u + 3 * 3);
-  EXPECT_EQ(step[3].kernel, "evaluate_Grow");
-  EXPECT_EQ(step[4].kernel, "advance");
-  EXPECT_EQ(step[4].sharedPerThread, 4);
-  EXPECT_EQ(step[4].sharedFixed, 8);
-  EXPECT_EQ(step[11].kernel, "advance");
+TEST(BundleVerifier, ChecksPhasesAndCode) {
+  struct Case {
+    std::function<void(schema::BundleT &)> edit;
+    const char *message;
+  };
+  auto repeat = [](schema::PlanT &plan, uint32_t count, uint32_t depth) {
+    for (auto &phase : plan.phases) {
+      if (phase->kind != PhaseKind::Step)
+        continue;
+      std::unique_ptr<schema::StepT> step = std::move(phase->body[1]);
+      for (uint32_t d = 0; d < depth; ++d) {
+        auto block = std::make_unique<schema::RepeatT>();
+        block->count = count;
+        block->body.push_back(std::move(step));
+        step = std::make_unique<schema::StepT>();
+        step->repeat = std::move(block);
+      }
+      phase->body[1] = std::move(step);
+    }
+  };
+  const Case cases[] = {
+      {[](auto &c) { hipPlan(c).phases.erase(hipPlan(c).phases.begin() + 2); },
+       "the plan of strategy 'hip' has no finish phase"},
+      {[](auto &c) { hipPlan(c).phases[2]->kind = PhaseKind::Step; },
+       "has two step phases"},
+      {[](auto &c) { hipPlan(c).phases[2]->kind = PhaseKind(8); },
+       "has a phase of unknown kind 8"},
+      {[](auto &c) { hipPlan(c).phases[1]->body.clear(); },
+       "phase step launches nothing"},
+      // A small file that unrolls to 2^40 launches.
+      {[&](auto &c) { repeat(hipPlan(c), 1 << 20, 2); },
+       "repeats its launches more than 4194304 times"},
+      {[&](auto &c) { repeat(hipPlan(c), 0, 1); }, "repeats a block 0 times"},
+      {[](auto &c) {
+         auto both = std::make_unique<schema::StepT>();
+         both->repeat = std::make_unique<schema::RepeatT>();
+         hipPlan(c).phases[1]->body.push_back(std::move(both));
+         hipPlan(c).phases[1]->body.back()->launch =
+             std::make_unique<schema::LaunchT>(
+                 *hipPlan(c).phases[1]->body[1]->launch);
+       },
+       "has a step that is not exactly one of a launch and a repeat"},
+      {[](auto &c) { hipPlan(c).ptx_chip = "sm_90"; },
+       "names the chip 'sm_90' of PTX it does not have"},
+      {[](auto &c) {
+         hipPlan(c).cpu.push_back(
+             std::make_unique<schema::CpuCodeT>(*hipPlan(c).cpu[0]));
+       },
+       "has two CPU objects for 'x86-64'"},
+      {[](auto &c) { hipPlan(c).cpu[0]->object.resize(40); },
+       "the CPU kernels (x86-64) of the plan of strategy 'hip' are not a "
+       "loadable shared object: the 40 bytes are too few for an ELF header"},
+      {[](auto &c) { hipPlan(c).cpu[0]->object[0] = 'X'; }, "no ELF magic"},
+      // Every program header of a truncated object reaches outside it.
+      {[](auto &c) {
+         std::vector<uint8_t> &object = hipPlan(c).cpu[0]->object;
+         object.resize(object.size() / 2);
+       },
+       "reaches past the end of its"},
+  };
+  for (const Case &c : cases)
+    EXPECT_TRUE(contains(errorAfter(c.edit), c.message)) << c.message;
 }
 
-TEST(PlanText, BoundsUnrolling) {
-  std::string plan = replace(
-      decayPlan(kHip), "launch advance single for - shared 0 0 args clock\n",
-      "repeat 1048576\nrepeat 1048576\nlaunch advance single for - shared 0 "
-      "0 args clock\nend\nend\n");
-  EXPECT_NE(errorOf(withPlan(kHip, plan)).find("unrolls to more than"),
-            std::string::npos);
+TEST(BundleVerifier, ChecksTheReferenceModel) {
+  struct Case {
+    std::function<void(schema::BundleT &)> edit;
+    const char *message;
+  };
+  const Case cases[] = {
+      {[](auto &c) {
+         c.reference->params = {0, 0};
+       },
+       "the reference model lists parameter 'k' twice"},
+      {[](auto &c) { c.reference->params = {5}; },
+       "the reference model: a parameter is 5, but there are only 2"},
+      {[](auto &c) {
+         c.reference->buffers = {0, 0};
+       },
+       "the reference model lists buffer 'X' twice"},
+      {[](auto &c) { c.reference->components[1]->writes = {0}; },
+       "buffer 'X' is written by both 'Decay' and 'Grow'"},
+      {[](auto &c) {
+         c.reference->components[1]->reads = {1, 1};
+       },
+       "component 'Grow' lists a read of 'V' twice"},
+      {[](auto &c) { c.reference->components[1]->reads = {4}; },
+       "component 'Grow': a buffer it reads is 4, but there are only 2"},
+      {[](auto &c) { c.reference->components[1]->name = "Decay"; },
+       "component 'Decay' is declared twice"},
+      {[](auto &c) { c.reference->components[1]->stepping.pop_back(); },
+       "says how it steps under 3 strategies, not 4"},
+      {[](auto &c) {
+         c.reference->components[1]->stepping[2] =
+             schema::Stepping(Advance::GroupSubSteps, false);
+       },
+       "component 'Grow' under hip estimates or sub-steps, but it has no "
+       "num_steps"},
+      {[](auto &c) {
+         c.reference->components[0]->sub_stepping = schema::SubStepping(4);
+       },
+       "component 'Decay' has an unknown sub-stepping verdict"},
+      {[](auto &c) { c.reference->step_caps.pop_back(); },
+       "gives the largest big step of 3 strategies, not 4"},
+      {[](auto &c) { c.reference->step_caps[0] = 9; },
+       "caps big steps under simple at 9 base steps, not 1 to max_steps (4)"},
+      {[](auto &c) {
+         auto w = std::make_unique<schema::BufferT>(*c.scene->buffers[0]);
+         w->name = "W";
+         w->exact = false;
+         c.scene->buffers.push_back(std::move(w));
+         c.scene->buffers[0]->interp = Interp::Hermite;
+         c.scene->buffers[0]->derivative = 2;
+       },
+       "buffer 'X' interpolates with the derivative 'W', which is not a "
+       "buffer of the model"},
+      {[](auto &c) { c.reference->object.resize(10); },
+       "the reference functions are not a loadable shared object"},
+  };
+  for (const Case &c : cases)
+    EXPECT_TRUE(contains(errorAfter(c.edit), c.message)) << c.message;
 }
 
 //===----------------------------------------------------------------------===//

@@ -108,15 +108,16 @@ namespace {
 /// The decay sections with the committed PTX of decay.cu (or `ptx` for
 /// both strategies).
 std::shared_ptr<const Bundle> decayWithRealPtx(const std::string &ptx = "") {
-  std::vector<Section> sections = decaySections();
-  for (auto [strategy, name] : {std::pair{kSimple, "simple"}, {kHip, "hip"}}) {
-    std::string text = ptx.empty()
-                           ? readFile(std::string(SIM_TEST_KERNELS_DIR) +
+  schema::BundleT contents = decayContents();
+  for (auto [strategy, name] :
+       {std::pair{Strategy::Simple, "simple"}, {Strategy::Hip, "hip"}}) {
+    schema::PlanT &plan = planOf(contents, strategy);
+    plan.ptx = ptx.empty() ? readFile(std::string(SIM_TEST_KERNELS_DIR) +
                                       "/decay-" + name + ".ptx")
                            : ptx;
-    sections.push_back({kPtx, strategy, text + '\0'});
+    plan.ptx_chip = "sm_90";
   }
-  std::string bytes = writeBundle(sections);
+  std::string bytes = serialize(contents);
   return Bundle::parse(reinterpret_cast<const uint8_t *>(bytes.data()),
                        bytes.size(), "decay-gpu.simb");
 }

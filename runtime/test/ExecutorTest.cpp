@@ -339,13 +339,22 @@ TEST(Executor, NamesTheCodeABackendLacks) {
                       "CUDA backend needs it"),
             std::string::npos);
 
-  std::vector<Section> sections = decaySections();
-  sections.erase(sections.begin() + 4); // hip's CPU code
-  auto noCpu = parseBytes(writeBundle(sections), "decay.simb");
+  schema::BundleT contents = decayContents();
+  planOf(contents, Strategy::Hip).cpu.clear();
+  auto noCpu = parseBytes(serialize(contents), "decay.simb");
   EXPECT_NE(errorOf([&] { Session s(noCpu, cpuOptions(SIM_STRATEGY_HIP)); },
                     SIM_ERROR_BUNDLE)
-                .find("has no CPU code for strategy 'hip'; the CPU backend "
-                      "needs it"),
+                .find("has no CPU code for x86-64 for strategy 'hip'; the CPU "
+                      "backend needs it"),
+            std::string::npos);
+  // CPU code for another machine only is no CPU code for this one.
+  planOf(contents, Strategy::Hip).cpu =
+      std::move(decayContents().plans[1]->cpu);
+  planOf(contents, Strategy::Hip).cpu[0]->isa = "riscv64";
+  auto otherIsa = parseBytes(serialize(contents), "decay.simb");
+  EXPECT_NE(errorOf([&] { Session s(otherIsa, cpuOptions(SIM_STRATEGY_HIP)); },
+                    SIM_ERROR_BUNDLE)
+                .find("has no CPU code for x86-64 for strategy 'hip'"),
             std::string::npos);
   sim_session_options automatic = cpuOptions(SIM_STRATEGY_HIP);
   automatic.backend = SIM_BACKEND_AUTO;
@@ -364,13 +373,9 @@ TEST(Executor, AutoRunsOnTheCpuWithoutPtx) {
 }
 
 TEST(Executor, NamesAMissingKernel) {
-  std::vector<Section> sections = decaySections();
-  sections[1].bytes =
-      decayPlan(kSimple) + "# An extra phase is fine; its kernel must exist.\n";
-  size_t at = sections[1].bytes.find("launch advance single");
-  sections[1].bytes.insert(
-      at, "launch nowhere single for - shared 0 0 args clock\n");
-  auto bundle = parseBytes(writeBundle(sections), "decay.simb");
+  schema::BundleT contents = decayContents();
+  planOf(contents, Strategy::Simple).kernels[3]->name = "nowhere";
+  auto bundle = parseBytes(serialize(contents), "decay.simb");
   EXPECT_NE(errorOf([&] { Session s(bundle, cpuOptions(SIM_STRATEGY_SIMPLE)); },
                     SIM_ERROR_BACKEND)
                 .find("the CPU kernels of strategy 'simple' do not export "
@@ -381,12 +386,11 @@ TEST(Executor, NamesAMissingKernel) {
 TEST(Executor, RejectsKernelsThatStallTheClock) {
   // A step phase without `advance` never moves T: the executor must stop
   // rather than spin.
-  std::vector<Section> sections = decaySections();
-  std::string plan = decayPlan(kSimple);
-  size_t step = plan.find("phase step\n") + 11;
-  plan.erase(step, plan.find('\n', step) - step + 1);
-  sections[1].bytes = plan;
-  auto bundle = parseBytes(writeBundle(sections), "decay.simb");
+  schema::BundleT contents = decayContents();
+  for (auto &phase : planOf(contents, Strategy::Simple).phases)
+    if (phase->kind == PhaseKind::Step)
+      phase->body.erase(phase->body.begin());
+  auto bundle = parseBytes(serialize(contents), "decay.simb");
   Session session(bundle, cpuOptions(SIM_STRATEGY_SIMPLE));
   EXPECT_NE(errorOf([&] { session.run(5); }, SIM_ERROR_CLOCK)
                 .find("the step phase made no progress at base step 0 of a run "

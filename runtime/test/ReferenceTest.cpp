@@ -1,7 +1,7 @@
 //===- ReferenceTest.cpp - the reference model and the reference executor -===//
 //
-// The model text against each malformation, the reference sections of a
-// bundle, and the executor: on the decay scene it agrees with the CPU
+// The reference part of a bundle (its checks are in BundleTest.cpp) and the
+// executor: on the decay scene it agrees with the CPU
 // backend running the hand-written plan kernels (values, evaluations, big
 // steps); on the probe scene (kernels/probe_reference.c) it reads through
 // each interpolation and boundary rule exactly as docs/Reference.md says,
@@ -25,14 +25,6 @@ using namespace sim::test;
 
 namespace {
 
-/// `text` with the first `from` replaced by `to`.
-std::string replace(std::string text, const std::string &from,
-                    const std::string &to) {
-  size_t at = text.find(from);
-  EXPECT_NE(at, std::string::npos) << from;
-  return at == std::string::npos ? text : text.replace(at, from.size(), to);
-}
-
 sim_session_options options(sim_strategy strategy, sim_backend backend,
                             int64_t groupSize = 0) {
   sim_session_options result;
@@ -51,214 +43,18 @@ std::vector<T> values(Executor &session, const std::string &buffer) {
   return data;
 }
 
-Scene decayScene_() { return parseScene(decayScene()); }
-
 } // namespace
 
 //===----------------------------------------------------------------------===//
-// The model text
+// The reference part of a bundle
 //===----------------------------------------------------------------------===//
 
-TEST(ReferenceModelText, ParsesTheDecayModel) {
-  ReferenceModel model =
-      parseReferenceModel(decayReferenceModel(), decayScene_());
-  EXPECT_EQ(model.scene, "decay");
-  ASSERT_EQ(model.params.size(), 2u);
-  EXPECT_EQ(model.params[1].name, "poison");
-  EXPECT_EQ(model.params[1].sceneParam, 1);
-  ASSERT_EQ(model.buffers.size(), 2u);
-  EXPECT_EQ(model.buffers[0].interp, Interp::Linear);
-  EXPECT_TRUE(model.buffers[0].exact);
-  EXPECT_EQ(model.buffers[1].type.lanes, 3);
-  EXPECT_EQ(model.buffers[1].interp, Interp::None);
-  EXPECT_EQ(model.buffers[0].writer, 0);
-  EXPECT_EQ(model.buffers[1].writer, 1);
-  ASSERT_EQ(model.components.size(), 2u);
-  EXPECT_TRUE(model.components[0].numSteps);
-  EXPECT_FALSE(model.components[1].numSteps);
-  EXPECT_EQ(model.components[0].reads, (std::vector<int32_t>{0, 1}));
-  EXPECT_EQ(model.schedule, (std::vector<int32_t>{0, 1}));
-  EXPECT_EQ(model.components[1].position, 1);
-
-  ReferenceModel probe =
-      parseReferenceModel(probeModel(), parseScene(probeScene()));
-  EXPECT_EQ(probe.buffers[3].interp, Interp::Hermite);
-  EXPECT_EQ(probe.buffers[3].derivative, 0);
-  EXPECT_EQ(probe.buffers[2].boundary, Boundary::Wrap);
-  EXPECT_EQ(probe.buffers[3].boundary, Boundary::Zero);
-  EXPECT_TRUE(probe.components[0].reads.empty());
-  EXPECT_EQ(probe.buffers[5].writer, 2);
-}
-
-TEST(ReferenceModelText, ReadsTotals) {
-  std::string text =
-      replace(decayReferenceModel(), "schedule Decay Grow\n",
-              "total 0 Energy f64 reads X V\ntotal 1 Count f32 reads\n"
-              "schedule Decay Grow\n");
-  ReferenceModel model = parseReferenceModel(text, decayScene_());
-  ASSERT_EQ(model.totals.size(), 2u);
-  EXPECT_EQ(model.totals[0].name, "Energy");
-  EXPECT_EQ(model.totals[0].type, ScalarType::F64);
-  EXPECT_EQ(model.totals[0].reads, (std::vector<int32_t>{0, 1}));
-  EXPECT_EQ(model.totals[1].type, ScalarType::F32);
-  EXPECT_TRUE(model.totals[1].reads.empty());
-
-  struct Case {
-    std::string from, to, message;
-  } cases[] = {
-      {"total 1 Count", "total 0 Count", "total index 0 is out of order"},
-      {"Count f32", "Count i64", "total type 'i64' is not f32 or f64"},
-      {"total 1 Count", "total 1 Energy", "total 'Energy' is declared twice"},
-      {"f64 reads X V", "f64 reads X W",
-       "total 'Energy' reads 'W', which is not a buffer declared before it"},
-      {"Energy f64 reads", "Energy f64 sees", "expected 'reads'"},
-  };
-  for (const Case &c : cases) {
-    std::string message = errorOf(
-        [&] {
-          parseReferenceModel(replace(text, c.from, c.to), decayScene_());
-        },
-        SIM_ERROR_BUNDLE);
-    EXPECT_TRUE(contains(message, c.message)) << c.message << "\n" << message;
-  }
-}
-
-TEST(ReferenceModelText, RejectsWhatDoesNotParse) {
-  const std::string model = decayReferenceModel();
-  struct Case {
-    std::string text, message;
-  } cases[] = {
-      {replace(model, "reference decay\n", ""),
-       "line 2: expected the 'reference' record first, found 'param'"},
-      {replace(model, "reference decay", "reference rod"),
-       "line 2: the model is of scene 'rod' but the bundle's scene is 'decay'"},
-      {replace(model, "param 1 poison", "param 0 poison"),
-       "line 4: param index 0 is out of order (expected 1"},
-      {replace(model, "param 1 poison i32", "param 1 poison f32"),
-       "line 4: parameter 'poison' has type f32 but the scene says i32"},
-      {replace(model, "param 1 poison", "param 1 speed"),
-       "line 4: parameter 'speed' is not a parameter of scene 'decay'"},
-      {replace(model, "buffer 1 V", "buffer 2 V"),
-       "line 6: buffer index 2 is out of order (expected 1"},
-      {replace(model, "buffer 1 V vector<3xf32>", "buffer 1 V vector<3xi32>"),
-       "line 6: element type 'vector<3xi32>' is not f32, f64"},
-      {replace(model, "buffer 1 V vector<3xf32>", "buffer 1 V vector<4xf32>"),
-       "line 6: buffer 'V' has element type vector<4xf32> but the scene says "
-       "vector<3xf32>"},
-      {replace(model, "buffer 1 V", "buffer 1 X"),
-       "line 6: buffer 'X' is declared twice"},
-      {replace(model, "interp none", "interp spline"),
-       "line 6: interpolation 'spline' is not linear, cubic, hermite:<buffer> "
-       "or none"},
-      {replace(model, "boundary clamp observed\n", "boundary mirror\n"),
-       "line 6: boundary 'mirror' is not clamp, wrap or zero"},
-      {replace(model, "observed exact", "observed observed"),
-       "line 5: buffer flag 'observed' is repeated"},
-      {replace(model, "interp linear", "interp hermite:W"),
-       "line 5: buffer 'X' interpolates with the derivative 'W', which is "
-       "not a buffer of the model"},
-      {replace(model, "interp linear", "interp hermite:V"),
-       "line 5: buffer 'X' interpolates with the derivative 'V', whose "
-       "element type vector<3xf32> differs from f64"},
-      {replace(model, "reads X V", "reads X W"),
-       "line 7: component 'Decay' reads 'W', which is not a buffer declared "
-       "before it"},
-      {replace(model, "writes X reads", "writes Y reads"),
-       "line 7: component 'Decay' writes 'Y', which is not a buffer"},
-      {replace(model, "writes X reads", "writes reads"),
-       "line 7: component 'Decay' writes no buffer"},
-      {replace(model, "reads X V", "X V"), "line 7: expected 'reads'"},
-      {replace(model, "reads X V", "reads X X"),
-       "line 7: component 'Decay' lists 'X' twice in 'reads'"},
-      {replace(model, "substep in_kernel num_steps", "substep warp"),
-       "line 7: substep 'warp' is not in_kernel or grid_sync"},
-      {replace(model, "writes V reads V", "writes X reads V"),
-       "line 8: buffer 'X' is written by both 'Decay' and 'Grow'"},
-      {replace(model, "component 1 Grow", "component 0 Grow"),
-       "line 8: component index 0 is out of order"},
-      {replace(model, "component 1 Grow", "component 1 Decay"),
-       "line 8: component 'Decay' is declared twice"},
-      {replace(model, "schedule Decay Grow\n", ""), "no 'schedule' record"},
-      {replace(model, "schedule Decay Grow", "schedule Decay"),
-       "line 9: component 'Grow' is not in the schedule"},
-      {replace(model, "schedule Decay Grow", "schedule Decay Grow Decay"),
-       "line 9: schedule names 'Decay' twice"},
-      {replace(model, "schedule Decay Grow", "schedule Decay Grow Shrink"),
-       "line 9: schedule names 'Shrink', which is not a component"},
-      {model + "param 2 k f64\n",
-       "line 10: 'param' after 'schedule', which comes last"},
-      {replace(model, "schedule", "order"), "line 9: unknown record 'order'"},
-      {"", "no 'reference' record"},
-  };
-  for (const Case &c : cases) {
-    std::string message = errorOf(
-        [&] { parseReferenceModel(c.text, decayScene_()); }, SIM_ERROR_BUNDLE);
-    EXPECT_TRUE(contains(message, "reference model section"))
-        << c.message << "\n"
-        << message;
-    EXPECT_TRUE(contains(message, c.message)) << c.message << "\n" << message;
-  }
-}
-
-//===----------------------------------------------------------------------===//
-// The reference sections of a bundle
-//===----------------------------------------------------------------------===//
-
-TEST(ReferenceSections, AreReadWhenBothArePresent) {
+TEST(ReferenceModel, IsReadWhenPresent) {
   auto bundle = parseBytes(decayBundle());
-  ASSERT_TRUE(bundle->reference.has_value());
-  EXPECT_EQ(bundle->reference->components.size(), 2u);
-  ASSERT_TRUE(bundle->referenceObject.has_value());
-  EXPECT_FALSE(parseBytes(decayBundle(false, false))->reference.has_value());
-}
-
-TEST(ReferenceSections, AreRejectedWhenMalformed) {
-  auto error = [](const std::vector<Section> &sections) {
-    return errorOf([&] { parseBytes(writeBundle(sections)); },
-                   SIM_ERROR_BUNDLE);
-  };
-  std::vector<Section> base = decaySections();
-  std::vector<Section> reference = decayReferenceSections();
-
-  std::vector<Section> sections = base;
-  sections.push_back(reference[0]);
-  EXPECT_TRUE(contains(error(sections),
-                       "a reference model section without a reference object "
-                       "section (docs/Reference.md: both or neither)"));
-  sections = base;
-  sections.push_back(reference[1]);
-  EXPECT_TRUE(contains(error(sections),
-                       "a reference object section without a reference model "
-                       "section"));
-
-  sections = base;
-  sections.insert(sections.end(), {reference[0], reference[1], reference[0]});
-  EXPECT_TRUE(contains(error(sections), "repeated reference model section"));
-
-  sections = base;
-  sections.insert(sections.end(), {reference[0], reference[1]});
-  sections[5].strategy = kHip;
-  EXPECT_TRUE(contains(error(sections),
-                       "section 5 (reference model) has strategy 2 but a "
-                       "reference model section has none (0xffffffff)"));
-
-  sections = base;
-  sections.insert(sections.end(), {reference[0], reference[1]});
-  sections[6].bytes = std::string(100, 'x');
-  EXPECT_TRUE(contains(error(sections),
-                       "reference object section is not an ELF shared object"));
-
-  sections = base;
-  sections.insert(
-      sections.end(),
-      {{kReferenceModel, kNoStrategy, "reference decay\n"}, reference[1]});
-  EXPECT_TRUE(contains(error(sections),
-                       "bundle 'test.simb': reference model section: no "
-                       "'schedule' record"));
-
-  sections = base;
-  sections.push_back({7, kNoStrategy, "x"});
-  EXPECT_TRUE(contains(error(sections), "section 5 has unknown kind 7"));
+  ASSERT_TRUE(bundle->reference());
+  EXPECT_EQ(bundle->reference()->components.size(), 2u);
+  EXPECT_FALSE(bundle->reference()->object.empty());
+  EXPECT_FALSE(parseBytes(decayBundle(false, false))->reference());
 }
 
 //===----------------------------------------------------------------------===//
@@ -410,13 +206,9 @@ TEST(ReferenceExecutor, StopsAtTheFirstNonFiniteValue) {
 }
 
 TEST(ReferenceExecutor, NamesAMissingFunction) {
-  std::vector<Section> sections = decaySections();
-  sections.push_back(
-      {kReferenceModel, kNoStrategy,
-       replace(decayReferenceModel(), "Grow substep in_kernel writes",
-               "Grow substep in_kernel num_steps writes")});
-  sections.push_back(decayReferenceSections()[1]);
-  auto bundle = parseBytes(writeBundle(sections));
+  schema::BundleT contents = decayContents();
+  contents.reference->components[1]->num_steps = true;
+  auto bundle = parseBytes(serialize(contents));
   EXPECT_EQ(errorOf(
                 [&] {
                   ReferenceSession(
@@ -427,7 +219,7 @@ TEST(ReferenceExecutor, NamesAMissingFunction) {
             "num_steps body of component 'Grow')");
 }
 
-TEST(ReferenceExecutor, NeedsTheReferenceSections) {
+TEST(ReferenceExecutor, NeedsTheReferenceModel) {
   auto bundle = parseBytes(decayBundle(false, false));
   EXPECT_EQ(errorOf(
                 [&] {
@@ -435,9 +227,27 @@ TEST(ReferenceExecutor, NeedsTheReferenceSections) {
                       bundle, options(SIM_STRATEGY_HIP, SIM_BACKEND_REFERENCE));
                 },
                 SIM_ERROR_BUNDLE),
-            "bundle 'test.simb' has no reference sections (made before the "
-            "reference executor existed; rebuild it with sim-translate "
-            "--sim-to-bundle)");
+            "bundle 'test.simb' has no reference model and functions");
+}
+
+TEST(ReferenceExecutor, StepsAsTheModelRecords) {
+  // The records decide, not the executor: with Decay recorded as not
+  // estimating under hip, nothing bounds the big step and it is always
+  // max_steps; with a recorded cap of 2, never more than 2.
+  schema::BundleT contents = decayContents();
+  contents.reference->components[0]->stepping[2] =
+      schema::Stepping(Advance::WholeStep, false);
+  auto unbounded = std::make_unique<ReferenceSession>(
+      parseBytes(serialize(contents)),
+      options(SIM_STRATEGY_HIP, SIM_BACKEND_REFERENCE));
+  unbounded->run(20);
+  EXPECT_EQ(unbounded->histogram[4], 5);
+  contents.reference->step_caps[2] = 2;
+  auto capped = std::make_unique<ReferenceSession>(
+      parseBytes(serialize(contents)),
+      options(SIM_STRATEGY_HIP, SIM_BACKEND_REFERENCE));
+  capped->run(20);
+  EXPECT_EQ(capped->histogram[2], 10);
 }
 
 //===----------------------------------------------------------------------===//
@@ -447,9 +257,10 @@ TEST(ReferenceExecutor, NeedsTheReferenceSections) {
 namespace {
 
 std::unique_ptr<ReferenceSession>
-probe(sim_strategy strategy, const std::string &model = probeModel()) {
+probe(sim_strategy strategy,
+      const schema::BundleT &contents = probeContents()) {
   return std::make_unique<ReferenceSession>(
-      parseBytes(probeBundle(model)),
+      parseBytes(serialize(contents)),
       options(strategy, SIM_BACKEND_REFERENCE,
               strategy == SIM_STRATEGY_HIP ? 0 : 2));
 }
@@ -527,8 +338,9 @@ TEST(ReferenceExecutor, RefusesReadsItCannotServe) {
   simple->run(4);
 
   // H's derivative L is written by Edge, after Sink.
-  auto late =
-      probe(SIM_STRATEGY_HIP, replace(probeModel(), "hermite:D", "hermite:L"));
+  schema::BundleT lateDerivative = probeContents();
+  lateDerivative.scene->buffers[3]->derivative = 5; // L
+  auto late = probe(SIM_STRATEGY_HIP, lateDerivative);
   EXPECT_EQ(errorOf([&] { late->run(4); }, SIM_ERROR_BACKEND),
             "evaluate of component 'Sink' reads buffer 'H' (item 0) at base "
             "step 1 inside the big step [0, 4], but its hermite derivative "
@@ -536,9 +348,9 @@ TEST(ReferenceExecutor, RefusesReadsItCannotServe) {
             "'Edge' runs later)");
 
   // A body that reads what its component's 'reads' does not list.
-  auto undeclared =
-      probe(SIM_STRATEGY_HIP, replace(probeModel(), "reads A C H N RA RC RH",
-                                      "reads A C N RA RC RH"));
+  schema::BundleT withoutH = probeContents();
+  withoutH.reference->components[1]->reads = {1, 2, 4, 6, 7, 8};
+  auto undeclared = probe(SIM_STRATEGY_HIP, withoutH);
   EXPECT_TRUE(contains(errorOf([&] { undeclared->run(4); }, SIM_ERROR_BACKEND),
                        "evaluate of component 'Sink' reads buffer 'H' (item "
                        "0) at base step 1, which the model's 'reads' of the "
@@ -554,9 +366,12 @@ TEST(ReferenceExecutor, DetectsCyclesInInitReads) {
 
 TEST(ReferenceExecutor, SubStepsGridSyncComponentsOverTheWholeRange) {
   // The same reads, one group of all four items: the same values.
-  auto session =
-      probe(SIM_STRATEGY_HIP, replace(probeModel(), "Sink substep in_kernel",
-                                      "Sink substep grid_sync"));
+  schema::BundleT gridWide = probeContents();
+  gridWide.reference->components[1]->sub_stepping =
+      schema::SubStepping::GridSync;
+  gridWide.reference->components[1]->stepping[2] =
+      schema::Stepping(Advance::GridSubSteps, false);
+  auto session = probe(SIM_STRATEGY_HIP, gridWide);
   session->run(4);
   std::vector<double> rc = values<double>(*session, "RC");
   EXPECT_EQ(std::vector<double>(rc.begin() + 12, rc.begin() + 16),

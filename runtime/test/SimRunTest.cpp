@@ -304,10 +304,7 @@ TEST_F(SimRun, RunsTheReferenceExecutor) {
   writeFile(old, decayBundle(false, false));
   result = simRun(old + " --backend reference");
   EXPECT_EQ(result.status, 1);
-  EXPECT_TRUE(contains(result.output, "has no reference sections (made before "
-                                      "the reference executor existed; "
-                                      "rebuild it with sim-translate "
-                                      "--sim-to-bundle)"))
+  EXPECT_TRUE(contains(result.output, "has no reference model and functions"))
       << result.output;
 }
 
@@ -359,12 +356,9 @@ TEST_F(SimRun, ChecksAgainstTheReferenceExecutor) {
 
 TEST_F(SimRun, FailsTheCheckOnDifferentValues) {
   // A reference object that adds 1e-6 to item 3 in every evaluation.
-  std::vector<Section> sections = decaySections();
-  for (Section &section :
-       decayReferenceSections(SIM_TEST_DECAY_REFERENCE_WRONG_SO))
-    sections.push_back(section);
   std::string wrong = dir + "/wrong.simb";
-  writeFile(wrong, writeBundle(sections));
+  writeFile(wrong, serialize(decayContents(false, true,
+                                           SIM_TEST_DECAY_REFERENCE_WRONG_SO)));
   std::string json = dir + "/wrong.json";
   Result result = simRun(wrong +
                          " --backend cpu --strategy simple --steps 25 "
@@ -394,16 +388,14 @@ TEST_F(SimRun, FailsTheCheckOnDifferentValues) {
 }
 
 TEST_F(SimRun, FailsTheCheckOnDifferentWork) {
-  // Without num_steps in the model Decay bounds nothing: the reference
-  // takes big steps of max_steps, fewer than the plan.
-  std::vector<Section> sections = decaySections();
-  std::vector<Section> reference = decayReferenceSections();
-  std::string model = reference[0].bytes;
-  model.replace(model.find(" num_steps"), 10, "");
-  reference[0].bytes = model;
-  sections.insert(sections.end(), reference.begin(), reference.end());
+  // With Decay recorded as not estimating in the model, nothing bounds the
+  // big step there: the reference takes big steps of max_steps, fewer than
+  // the plan.
+  schema::BundleT contents = decayContents();
+  contents.reference->components[0]->stepping[2] =
+      schema::Stepping(schema::Advance::WholeStep, false);
   std::string unbounded = dir + "/unbounded.simb";
-  writeFile(unbounded, writeBundle(sections));
+  writeFile(unbounded, serialize(contents));
   Result result = simRun(unbounded + " --backend cpu --steps 25 --check");
   EXPECT_EQ(result.status, 1) << result.output;
   for (const char *line :

@@ -2,44 +2,35 @@
 
 #include "TestBundle.h"
 
+#include "sim/Runtime/BundleFormat.h"
+
 #include <algorithm>
 #include <cstdlib>
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
+#include <zlib.h>
 
 namespace sim::test {
 
-void putU32(std::string &bytes, size_t offset, uint32_t value) {
-  for (int i = 0; i < 4; ++i)
-    bytes[offset + i] = char((value >> (8 * i)) & 0xff);
+using namespace schema;
+
+std::string withHeader(const std::string &payload) {
+  uint32_t crc = uint32_t(crc32(0L, Z_NULL, 0));
+  crc = uint32_t(crc32(crc, reinterpret_cast<const Bytef *>(payload.data()),
+                       uInt(payload.size())));
+  Header header;
+  header.checksum = crc;
+  header.size = kHeaderSize + payload.size();
+  return encodeHeader(header) + payload;
 }
 
-void putU64(std::string &bytes, size_t offset, uint64_t value) {
-  for (int i = 0; i < 8; ++i)
-    bytes[offset + i] = char((value >> (8 * i)) & 0xff);
-}
-
-std::string writeBundle(const std::vector<Section> &sections) {
-  size_t offset = 24 + 32 * sections.size();
-  std::string bytes(offset, '\0');
-  std::string contents;
-  for (size_t i = 0; i < sections.size(); ++i) {
-    size_t at = offset + contents.size();
-    size_t entry = 24 + 32 * i;
-    putU32(bytes, entry, sections[i].kind);
-    putU32(bytes, entry + 4, sections[i].strategy);
-    putU64(bytes, entry + 8, at);
-    putU64(bytes, entry + 16, sections[i].bytes.size());
-    contents += sections[i].bytes;
-    contents.append((8 - contents.size() % 8) % 8, '\0');
-  }
-  bytes += contents;
-  bytes.replace(0, 8, std::string("SIMBNDL\0", 8));
-  putU32(bytes, 8, 1);
-  putU32(bytes, 12, uint32_t(sections.size()));
-  putU64(bytes, 16, bytes.size());
-  return bytes;
+std::string serialize(const BundleT &contents) {
+  flatbuffers::FlatBufferBuilder builder;
+  FinishBundleBuffer(builder, Bundle::Pack(builder, &contents));
+  return withHeader(
+      std::string(reinterpret_cast<const char *>(builder.GetBufferPointer()),
+                  builder.GetSize()));
 }
 
 std::string readFile(const std::string &path) {
@@ -58,142 +49,324 @@ void writeFile(const std::string &path, const std::string &bytes) {
     throw std::runtime_error("cannot write " + path);
 }
 
-std::string decayScene() {
-  return "# The runtime's test scene (kernels/decay.c).\n"
-         "scene decay range 100 dt f64 0.01 max_steps 4\n"
-         "param k f64 2\n"
-         "param poison i32 -1\n"
-         "buffer X f64 interp linear boundary clamp observed exact\n"
-         "buffer V vector<3xf32> interp none boundary clamp observed\n"
-         "strategies simple hip\n";
+namespace {
+
+std::vector<uint8_t> readBytes(const std::string &path) {
+  std::string bytes = readFile(path);
+  return std::vector<uint8_t>(bytes.begin(), bytes.end());
 }
 
-std::string decayPlan(uint32_t strategy) {
-  bool hip = strategy == kHip;
-  std::string plan = hip ? "plan hip" : "plan simple";
-  plan += " group_size 32 clock_slots 16 histogram 10\n"
-          "buffer X f64 stride 8 observed exact\n"
-          "buffer V vector<3xf32> stride 16 observed\n"
-          "component Decay evaluations 8 writes X\n"
-          "component Grow evaluations 9 writes V\n"
-          "phase init\n"
-          "launch reset_clock single for - shared 0 0 args clock\n"
-          "launch init_X items for - shared 0 0 args buffer:X range\n"
-          "launch init_V items for - shared 0 0 args buffer:V range\n"
-          "end\n"
-          "phase step\n";
+std::unique_ptr<ParamT> param(const std::string &name, ScalarType type,
+                              int64_t i, double f) {
+  auto result = std::make_unique<ParamT>();
+  result->name = name;
+  result->value = std::make_unique<Value>(i, f, type);
+  return result;
+}
+
+std::unique_ptr<BufferT> buffer(const std::string &name, ScalarType scalar,
+                                uint16_t lanes, Interp interp,
+                                Boundary boundary, bool observed,
+                                bool exact = false, int32_t derivative = -1) {
+  auto result = std::make_unique<BufferT>();
+  result->name = name;
+  result->element = std::make_unique<Element>(scalar, lanes);
+  result->interp = interp;
+  result->derivative = derivative;
+  result->boundary = boundary;
+  result->observed = observed;
+  result->exact = exact;
+  return result;
+}
+
+KernelParam memref(ScalarType scalar, uint16_t lanes, uint32_t stride) {
+  return KernelParam(ParamType::Memref, Element(scalar, lanes), stride);
+}
+
+KernelParam scalar(ParamType type) { return KernelParam(type, Element(), 0); }
+
+const KernelParam kClock = memref(ScalarType::I64, 1, 8);
+const KernelParam kRange = scalar(ParamType::I64);
+
+std::unique_ptr<KernelT> kernel(const std::string &name,
+                                std::vector<KernelParam> params,
+                                uint32_t clockSlots) {
+  auto result = std::make_unique<KernelT>();
+  result->name = name;
+  result->params = std::move(params);
+  result->clock_slots = clockSlots;
+  return result;
+}
+
+std::unique_ptr<StepT> launch(uint32_t kernel, LaunchShape shape,
+                              int32_t component, std::vector<Arg> args) {
+  auto step = std::make_unique<StepT>();
+  step->launch = std::make_unique<LaunchT>();
+  step->launch->kernel = kernel;
+  step->launch->shape = shape;
+  step->launch->component = component;
+  step->launch->args = std::move(args);
+  return step;
+}
+
+std::unique_ptr<PhaseT> phase(PhaseKind kind,
+                              std::vector<std::unique_ptr<StepT>> steps) {
+  auto result = std::make_unique<PhaseT>();
+  result->kind = kind;
+  result->body = std::move(steps);
+  return result;
+}
+
+template <typename T, typename... Rest>
+std::vector<std::unique_ptr<T>> list(std::unique_ptr<T> first, Rest... rest) {
+  std::vector<std::unique_ptr<T>> result;
+  result.push_back(std::move(first));
+  (result.push_back(std::move(rest)), ...);
+  return result;
+}
+
+std::unique_ptr<ComponentT> component(const std::string &name,
+                                      std::vector<uint32_t> writes,
+                                      uint32_t evaluations, bool estimates) {
+  auto result = std::make_unique<ComponentT>();
+  result->name = name;
+  result->writes = std::move(writes);
+  result->evaluations = evaluations;
+  result->advance = Advance::WholeStep;
+  result->estimates = estimates;
+  return result;
+}
+
+Arg arg(ArgKind kind, uint32_t index = 0) { return Arg(kind, index); }
+
+/// The decay scene's plan of simple or hip (kernels/decay.c).
+std::unique_ptr<PlanT> decayPlan(Strategy strategy, bool ptx) {
+  bool hip = strategy == Strategy::Hip;
+  auto plan = std::make_unique<PlanT>();
+  plan->strategy = strategy;
+  plan->group_size = 32;
+  plan->step_cap = hip ? 4 : 1;
+  plan->clock_slots = 16;
+  plan->histogram = 10;
+  for (auto [index, stride] : {std::pair{0u, 8u}, {1u, 16u}}) {
+    auto planBuffer = std::make_unique<PlanBufferT>();
+    planBuffer->buffer = index;
+    planBuffer->stride = stride;
+    plan->buffers.push_back(std::move(planBuffer));
+  }
+  plan->components.push_back(component("Decay", {0}, 8, hip));
+  plan->components.push_back(component("Grow", {1}, 9, false));
+
+  const uint32_t slots = plan->clock_slots;
+  KernelParam x = memref(ScalarType::F64, 1, 8);
+  KernelParam v = memref(ScalarType::F32, 3, 16);
+  KernelParam f64 = scalar(ParamType::F64), i32 = scalar(ParamType::I32);
+  enum : uint32_t {
+    kReset,
+    kInitX,
+    kInitV,
+    kAdvance,
+    kEvaluateDecay,
+    kEvaluateGrow,
+    kExactX,
+    kEstimateDecay
+  };
+  plan->kernels.push_back(kernel("reset_clock", {kClock}, slots));
+  plan->kernels.push_back(kernel("init_X", {x, kRange}, slots));
+  plan->kernels.push_back(kernel("init_V", {v, kRange}, slots));
+  plan->kernels.push_back(kernel("advance", {kClock}, slots));
+  plan->kernels.push_back(
+      kernel("evaluate_Decay", {kClock, x, f64, i32, kRange, f64}, slots));
+  plan->kernels.push_back(kernel("evaluate_Grow", {kClock, v, kRange}, slots));
+  plan->kernels.push_back(kernel("exact_X", {x, f64, kRange, f64}, slots));
   if (hip)
-    plan += "launch estimate_Decay items for - shared 0 0 args clock range\n";
-  plan += "launch advance single for - shared 0 0 args clock\n"
-          "launch evaluate_Decay items for Decay shared 0 0 args clock "
-          "buffer:X param:k param:poison range dt\n"
-          "launch evaluate_Grow items for Grow shared 0 0 args clock "
-          "buffer:V range\n"
-          "end\n"
-          "phase finish\n"
-          "launch advance single for - shared 0 0 args clock\n"
-          "end\n"
-          "phase exact\n"
-          "launch exact_X items for - shared 0 0 args exact:X param:k range "
-          "time\n"
-          "end\n";
+    plan->kernels.push_back(kernel("estimate_Decay", {kClock, kRange}, slots));
+
+  plan->phases.push_back(
+      phase(PhaseKind::Init,
+            list(launch(kReset, LaunchShape::Single, -1, {arg(ArgKind::Clock)}),
+                 launch(kInitX, LaunchShape::Items, -1,
+                        {arg(ArgKind::Buffer, 0), arg(ArgKind::Range)}),
+                 launch(kInitV, LaunchShape::Items, -1,
+                        {arg(ArgKind::Buffer, 1), arg(ArgKind::Range)}))));
+  std::vector<std::unique_ptr<StepT>> step;
+  if (hip)
+    step.push_back(launch(kEstimateDecay, LaunchShape::Items, -1,
+                          {arg(ArgKind::Clock), arg(ArgKind::Range)}));
+  step.push_back(
+      launch(kAdvance, LaunchShape::Single, -1, {arg(ArgKind::Clock)}));
+  step.push_back(launch(kEvaluateDecay, LaunchShape::Items, 0,
+                        {arg(ArgKind::Clock), arg(ArgKind::Buffer, 0),
+                         arg(ArgKind::Param, 0), arg(ArgKind::Param, 1),
+                         arg(ArgKind::Range), arg(ArgKind::Dt)}));
+  step.push_back(launch(
+      kEvaluateGrow, LaunchShape::Items, 1,
+      {arg(ArgKind::Clock), arg(ArgKind::Buffer, 1), arg(ArgKind::Range)}));
+  plan->phases.push_back(phase(PhaseKind::Step, std::move(step)));
+  plan->phases.push_back(phase(
+      PhaseKind::Finish,
+      list(launch(kAdvance, LaunchShape::Single, -1, {arg(ArgKind::Clock)}))));
+  plan->phases.push_back(
+      phase(PhaseKind::Exact,
+            list(launch(kExactX, LaunchShape::Items, -1,
+                        {arg(ArgKind::Exact, 0), arg(ArgKind::Param, 0),
+                         arg(ArgKind::Range), arg(ArgKind::Time)}))));
+
+  if (ptx) {
+    plan->ptx = "// not real PTX\n";
+    plan->ptx_chip = "sm_90";
+  }
+  auto cpu = std::make_unique<CpuCodeT>();
+  cpu->isa = "x86-64";
+  cpu->object =
+      readBytes(hip ? SIM_TEST_DECAY_HIP_SO : SIM_TEST_DECAY_SIMPLE_SO);
+  plan->cpu.push_back(std::move(cpu));
   return plan;
 }
 
-std::vector<Section> decaySections(bool ptx) {
-  std::vector<Section> sections = {
-      {kScene, kNoStrategy, decayScene()},
-      {kPlan, kSimple, decayPlan(kSimple)},
-      {kCpu, kSimple, readFile(SIM_TEST_DECAY_SIMPLE_SO)},
-      {kPlan, kHip, decayPlan(kHip)},
-      {kCpu, kHip, readFile(SIM_TEST_DECAY_HIP_SO)},
-  };
-  if (ptx)
-    for (uint32_t strategy : {kSimple, kHip})
-      sections.push_back(
-          {kPtx, strategy, std::string("// not real PTX\n\0", 17)});
-  return sections;
+/// `advance` and `estimates` of a component under every strategy.
+std::vector<Stepping> stepping(Stepping simple, Stepping traditional,
+                               Stepping hip) {
+  return {simple, traditional, hip, hip};
 }
 
-std::string decayReferenceModel() {
-  return "# kernels/decay_reference.c\n"
-         "reference decay\n"
-         "param 0 k f64\n"
-         "param 1 poison i32\n"
-         "buffer 0 X f64 interp linear boundary clamp observed exact\n"
-         "buffer 1 V vector<3xf32> interp none boundary clamp observed\n"
-         "component 0 Decay substep in_kernel num_steps writes X reads X V\n"
-         "component 1 Grow substep in_kernel writes V reads V\n"
-         "schedule Decay Grow\n";
+std::unique_ptr<RefComponentT> refComponent(const std::string &name,
+                                            bool numSteps,
+                                            std::vector<uint32_t> writes,
+                                            std::vector<uint32_t> reads,
+                                            std::vector<Stepping> steps) {
+  auto result = std::make_unique<RefComponentT>();
+  result->name = name;
+  result->sub_stepping = SubStepping::InKernel;
+  result->num_steps = numSteps;
+  result->writes = std::move(writes);
+  result->reads = std::move(reads);
+  result->stepping = std::move(steps);
+  return result;
 }
 
-std::vector<Section> decayReferenceSections(const std::string &object) {
-  return {{kReferenceModel, kNoStrategy, decayReferenceModel()},
-          {kReferenceObject, kNoStrategy, readFile(object)}};
+} // namespace
+
+BundleT decayContents(bool ptx, bool reference,
+                      const std::string &referenceObject) {
+  BundleT contents;
+  contents.producer = "runtime/test/TestBundle.cpp";
+  auto scene = std::make_unique<SceneT>();
+  scene->name = "decay";
+  scene->range = 100;
+  scene->dt = std::make_unique<Value>(0, 0.01, ScalarType::F64);
+  scene->max_steps = 4;
+  scene->params.push_back(param("k", ScalarType::F64, 0, 2));
+  scene->params.push_back(param("poison", ScalarType::I32, -1, 0));
+  scene->buffers.push_back(buffer("X", ScalarType::F64, 1, Interp::Linear,
+                                  Boundary::Clamp, true, true));
+  scene->buffers.push_back(
+      buffer("V", ScalarType::F32, 3, Interp::None, Boundary::Clamp, true));
+  contents.scene = std::move(scene);
+  contents.plans.push_back(decayPlan(Strategy::Simple, ptx));
+  contents.plans.push_back(decayPlan(Strategy::Hip, ptx));
+  if (!reference)
+    return contents;
+
+  // Decay reads V, which Grow writes later: it bounds the hip big step.
+  auto model = std::make_unique<ReferenceT>();
+  model->params = {0, 1};
+  model->buffers = {0, 1};
+  Stepping whole(Advance::WholeStep, false),
+      estimating(Advance::WholeStep, true);
+  model->components.push_back(refComponent(
+      "Decay", true, {0}, {0, 1}, stepping(whole, estimating, estimating)));
+  model->components.push_back(
+      refComponent("Grow", false, {1}, {1}, stepping(whole, whole, whole)));
+  model->step_caps = {1, 4, 4, 4};
+  model->object = readBytes(referenceObject);
+  model->isa = "x86-64";
+  contents.reference = std::move(model);
+  return contents;
 }
 
 std::string decayBundle(bool ptx, bool reference) {
-  std::vector<Section> sections = decaySections(ptx);
-  if (reference)
-    for (Section &section : decayReferenceSections())
-      sections.push_back(std::move(section));
-  return writeBundle(sections);
+  return serialize(decayContents(ptx, reference));
 }
 
-std::string probeScene() {
-  return "scene probe range 4 dt f64 0.5 max_steps 4\n"
-         "param cycle i32 0\n"
-         "param read_none i32 0\n"
-         "buffer D f64 interp linear boundary clamp\n"
-         "buffer A f64 interp linear boundary clamp observed\n"
-         "buffer C f64 interp cubic boundary wrap observed\n"
-         "buffer H f64 interp hermite:D boundary zero observed\n"
-         "buffer N f64 interp none boundary clamp\n"
-         "buffer L f64 interp linear boundary clamp\n"
-         "buffer RA vector<4xf64> interp linear boundary clamp observed\n"
-         "buffer RC vector<4xf64> interp linear boundary clamp observed\n"
-         "buffer RH vector<4xf64> interp linear boundary clamp observed\n"
-         "buffer E vector<6xf64> interp linear boundary clamp observed\n"
-         "strategies hip\n";
-}
+BundleT probeContents() {
+  BundleT contents;
+  auto scene = std::make_unique<SceneT>();
+  scene->name = "probe";
+  scene->range = 4;
+  scene->dt = std::make_unique<Value>(0, 0.5, ScalarType::F64);
+  scene->max_steps = 4;
+  scene->params.push_back(param("cycle", ScalarType::I32, 0, 0));
+  scene->params.push_back(param("read_none", ScalarType::I32, 0, 0));
+  auto f64 = [&](const std::string &name, Interp interp, Boundary boundary,
+                 bool observed, int32_t derivative = -1) {
+    scene->buffers.push_back(buffer(name, ScalarType::F64, 1, interp, boundary,
+                                    observed, false, derivative));
+  };
+  f64("D", Interp::Linear, Boundary::Clamp, false);
+  f64("A", Interp::Linear, Boundary::Clamp, true);
+  f64("C", Interp::Cubic, Boundary::Wrap, true);
+  f64("H", Interp::Hermite, Boundary::Zero, true, 0);
+  f64("N", Interp::None, Boundary::Clamp, false);
+  f64("L", Interp::Linear, Boundary::Clamp, false);
+  for (const char *name : {"RA", "RC", "RH"})
+    scene->buffers.push_back(buffer(name, ScalarType::F64, 4, Interp::Linear,
+                                    Boundary::Clamp, true));
+  scene->buffers.push_back(
+      buffer("E", ScalarType::F64, 6, Interp::Linear, Boundary::Clamp, true));
+  contents.scene = std::move(scene);
 
-std::string probeModel() {
-  return "reference probe\n"
-         "param 0 cycle i32\n"
-         "param 1 read_none i32\n"
-         "buffer 0 D f64 interp linear boundary clamp\n"
-         "buffer 1 A f64 interp linear boundary clamp observed\n"
-         "buffer 2 C f64 interp cubic boundary wrap observed\n"
-         "buffer 3 H f64 interp hermite:D boundary zero observed\n"
-         "buffer 4 N f64 interp none boundary clamp\n"
-         "buffer 5 L f64 interp linear boundary clamp\n"
-         "buffer 6 RA vector<4xf64> interp linear boundary clamp observed\n"
-         "buffer 7 RC vector<4xf64> interp linear boundary clamp observed\n"
-         "buffer 8 RH vector<4xf64> interp linear boundary clamp observed\n"
-         "buffer 9 E vector<6xf64> interp linear boundary clamp observed\n"
-         "component 0 Source substep in_kernel writes D A C H N reads\n"
-         "component 1 Sink substep in_kernel num_steps writes RA RC RH "
-         "reads A C H N RA RC RH\n"
-         "component 2 Edge substep in_kernel writes E L reads A C H\n"
-         "schedule Source Sink Edge\n";
-}
-
-std::string probeBundle(const std::string &model) {
   // The plan only gives the group size (2: two groups of two items); its
-  // kernels exist nowhere, and the reference executor needs none.
-  std::string plan = "plan hip group_size 2 clock_slots 16 histogram 10\n"
-                     "buffer A f64 stride 8 observed\n"
-                     "component Source evaluations 8 writes A\n"
-                     "phase init\nend\n"
-                     "phase step\n"
-                     "launch none single for - shared 0 0 args clock\n"
-                     "end\n"
-                     "phase finish\nend\n";
-  return writeBundle(
-      {{kScene, kNoStrategy, probeScene()},
-       {kPlan, kHip, plan},
-       {kReferenceModel, kNoStrategy, model},
-       {kReferenceObject, kNoStrategy, readFile(SIM_TEST_PROBE_REFERENCE_SO)}});
+  // kernel exists nowhere, and the reference executor needs none.
+  auto plan = std::make_unique<PlanT>();
+  plan->strategy = Strategy::Hip;
+  plan->group_size = 2;
+  plan->step_cap = 4;
+  plan->clock_slots = 16;
+  plan->histogram = 10;
+  auto planBuffer = std::make_unique<PlanBufferT>();
+  planBuffer->buffer = 1;
+  planBuffer->stride = 8;
+  plan->buffers.push_back(std::move(planBuffer));
+  plan->components.push_back(component("Source", {0}, 8, false));
+  plan->kernels.push_back(kernel("none", {kClock}, 16));
+  plan->phases.push_back(phase(PhaseKind::Init, {}));
+  plan->phases.push_back(
+      phase(PhaseKind::Step,
+            list(launch(0, LaunchShape::Single, -1, {arg(ArgKind::Clock)}))));
+  plan->phases.push_back(phase(PhaseKind::Finish, {}));
+  contents.plans.push_back(std::move(plan));
+
+  // Source writes D A C H N; Sink (num_steps, in no back edge: it
+  // sub-steps under hip) reads them; Edge writes E and L after both.
+  auto model = std::make_unique<ReferenceT>();
+  model->params = {0, 1};
+  for (uint32_t b = 0; b < 10; ++b)
+    model->buffers.push_back(b);
+  Stepping whole(Advance::WholeStep, false),
+      estimating(Advance::WholeStep, true),
+      group(Advance::GroupSubSteps, false);
+  model->components.push_back(refComponent("Source", false, {0, 1, 2, 3, 4}, {},
+                                           stepping(whole, whole, whole)));
+  model->components.push_back(refComponent("Sink", true, {6, 7, 8},
+                                           {1, 2, 3, 4, 6, 7, 8},
+                                           stepping(whole, estimating, group)));
+  model->components.push_back(refComponent("Edge", false, {9, 5}, {1, 2, 3},
+                                           stepping(whole, whole, whole)));
+  model->step_caps = {1, 4, 4, 4};
+  model->object = readBytes(SIM_TEST_PROBE_REFERENCE_SO);
+  model->isa = "x86-64";
+  contents.reference = std::move(model);
+  return contents;
+}
+
+std::string probeBundle() { return serialize(probeContents()); }
+
+PlanT &planOf(BundleT &contents, Strategy strategy) {
+  for (auto &plan : contents.plans)
+    if (plan->strategy == strategy)
+      return *plan;
+  throw std::runtime_error("no plan of that strategy");
 }
 
 std::vector<int64_t> decayBigSteps(int64_t begin, int64_t steps, int64_t cap) {

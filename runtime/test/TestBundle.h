@@ -1,14 +1,19 @@
 //===- TestBundle.h - bundles for the runtime's tests -------------*- C++
 //-*-===//
 //
-// No compiler-made bundle exists yet, so the tests write their own: a
-// minimal writer of the format of docs/Bundle.md, and the texts of the
-// "decay" test scene whose CPU kernels are hand-written in kernels/decay.c.
+// The runtime's tests need no compiler: they build the contents of a bundle
+// with the schema's object API (runtime/schema/bundle.fbs) and serialise
+// them as sim-translate does (header, CRC-32, FlatBuffer). Two scenes:
+// "decay", whose CPU kernels and reference functions are hand-written C
+// (kernels/decay.c, kernels/decay_reference.c), and "probe", a scene for
+// the reference executor alone (kernels/probe_reference.c).
 //
 //===----------------------------------------------------------------------===//
 
 #ifndef SIM_RUNTIME_TEST_TESTBUNDLE_H
 #define SIM_RUNTIME_TEST_TESTBUNDLE_H
+
+#include "sim/Runtime/bundle_generated.h"
 
 #include <cstdint>
 #include <string>
@@ -16,49 +21,35 @@
 
 namespace sim::test {
 
-struct Section {
-  uint32_t kind;     // 1 scene, 2 plan, 3 PTX, 4 CPU, 5, 6 reference
-  uint32_t strategy; // 0..3, 0xffffffff for the scene and reference
-  std::string bytes;
-};
+namespace schema = ::sim::bundle;
 
-constexpr uint32_t kScene = 1, kPlan = 2, kPtx = 3, kCpu = 4;
-constexpr uint32_t kReferenceModel = 5, kReferenceObject = 6;
-constexpr uint32_t kNoStrategy = 0xffffffffu;
-constexpr uint32_t kSimple = 0, kTraditional = 1, kHip = 2, kHipCache = 3;
+/// The bytes of a bundle file of `contents`: header, CRC and FlatBuffer.
+std::string serialize(const schema::BundleT &contents);
 
-/// The bytes of a bundle holding `sections` in order, each 8-aligned.
-std::string writeBundle(const std::vector<Section> &sections);
+/// The bytes of a bundle file whose FlatBuffer is `payload` as it is (the
+/// header and CRC made for it).
+std::string withHeader(const std::string &payload);
 
 std::string readFile(const std::string &path);
 void writeFile(const std::string &path, const std::string &bytes);
 
-/// Little-endian stores into a bundle's bytes, to corrupt it.
-void putU32(std::string &bytes, size_t offset, uint32_t value);
-void putU64(std::string &bytes, size_t offset, uint64_t value);
-
-/// The decay scene and its plans (simple and hip).
-std::string decayScene();
-std::string decayPlan(uint32_t strategy);
-/// Its sections: scene, and plan and CPU code of simple and hip; with
-/// `ptx`, a PTX section per strategy too (a placeholder text: enough for
-/// the tests that never reach a driver).
-std::vector<Section> decaySections(bool ptx = false);
-
-/// The decay scene's reference model (kernels/decay_reference.c), and its
-/// two sections with the object at `object` (default: the right one).
-std::string decayReferenceModel();
-std::vector<Section>
-decayReferenceSections(const std::string &object = SIM_TEST_DECAY_REFERENCE_SO);
-/// decaySections(ptx) and, with `reference`, decayReferenceSections().
+/// The decay scene with plans of simple and hip (CPU code of kernels/
+/// decay.c; with `ptx`, a placeholder PTX text per plan, enough for the
+/// tests that never reach a driver) and, with `reference`, the reference
+/// model with the object at `referenceObject`.
+schema::BundleT
+decayContents(bool ptx = false, bool reference = true,
+              const std::string &referenceObject = SIM_TEST_DECAY_REFERENCE_SO);
 std::string decayBundle(bool ptx = false, bool reference = true);
 
-/// The "probe" scene of kernels/probe_reference.c: its scene text, a hip
-/// plan without kernels (the reference executor needs none), its model,
-/// and a bundle of them.
-std::string probeScene();
-std::string probeModel();
-std::string probeBundle(const std::string &model = probeModel());
+/// The "probe" scene of kernels/probe_reference.c: a hip plan whose
+/// kernels exist nowhere (the reference executor needs none) and its
+/// reference model.
+schema::BundleT probeContents();
+std::string probeBundle();
+
+/// The plan of `strategy` in `contents`.
+schema::PlanT &planOf(schema::BundleT &contents, schema::Strategy strategy);
 
 /// The reference of the decay scene: the big-step sizes the hip plan takes
 /// from T to T + steps (num_steps(T) = 1 + (T / 5) % 4, capped at 4).
