@@ -18,11 +18,14 @@ build_dir="${SIM_BUILD_DIR:-build}"
 build_type="${SIM_BUILD_TYPE:-Release}"
 
 # MLIR/LLVM 22 (headers, CMake package, mlir-tblgen, FileCheck, lit), the
-# compiler and linker, the build tools, GoogleTest, Python for lit and the
-# scene generator, and Graphviz to render dependency graphs in tests.
+# compiler and linker, the build tools, GoogleTest, sim-run's header-only
+# libraries (CLI11 for its command line, nlohmann-json for its JSON), Python
+# for lit and the scene generator, and Graphviz to render dependency graphs
+# in tests.
 packages=(
   libmlir-22-dev mlir-22-tools llvm-22-dev llvm-22-tools clang-22 lld-22
-  cmake ninja-build libgtest-dev python3 graphviz
+  cmake ninja-build libgtest-dev libcli11-dev nlohmann-json3-dev python3
+  graphviz
 )
 missing=()
 for package in "${packages[@]}"; do
