@@ -941,7 +941,8 @@ TEST_F(SimRun, StopsOnSigterm) {
                            "--repeat", "2", "--json", json},
                           sub + "/stdout", sub + "/stderr");
   ASSERT_GT(pid, 0);
-  std::this_thread::sleep_for(std::chrono::milliseconds(500));
+  ASSERT_TRUE(waitForText(sub + "/stderr", "warm-up: base step"))
+      << readFile(sub + "/stderr");
   ASSERT_EQ(kill(pid, SIGTERM), 0);
   int status = waitFor(pid);
   ASSERT_TRUE(WIFEXITED(status)) << status;
@@ -953,6 +954,36 @@ TEST_F(SimRun, StopsOnSigterm) {
   EXPECT_EQ(metrics["interruption"]["run"], 0);
   EXPECT_EQ(metrics["wall_seconds_runs"], Json::array());
   EXPECT_TRUE(contains(readFile(sub + "/stdout"), "(in the warm-up)"));
+
+  // A signal before the first run leaves nothing to report: here, while
+  // the bundle is read from a FIFO that nobody has opened yet.
+  std::string fifo = sub + "/slow.simb";
+  ASSERT_EQ(mkfifo(fifo.c_str(), 0644), 0);
+  pid = spawnSimRun(SIM_RUN_PATH, {fifo, "--json", sub + "/early.json"},
+                    sub + "/stdout", sub + "/stderr");
+  ASSERT_GT(pid, 0);
+  // Opening the FIFO without blocking succeeds once sim-run waits on it.
+  int fd = -1;
+  for (int i = 0; i < 3000 && fd < 0; ++i) {
+    fd = open(fifo.c_str(), O_WRONLY | O_NONBLOCK);
+    if (fd < 0)
+      std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  }
+  ASSERT_GE(fd, 0) << "sim-run never opened " << fifo;
+  ASSERT_EQ(kill(pid, SIGTERM), 0);
+  // The bundle arrives after the signal.
+  fcntl(fd, F_SETFL, 0);
+  std::string bytes = decayBundle();
+  EXPECT_EQ(write(fd, bytes.data(), bytes.size()), ssize_t(bytes.size()));
+  close(fd);
+  status = waitFor(pid);
+  ASSERT_TRUE(WIFEXITED(status)) << status;
+  EXPECT_EQ(WEXITSTATUS(status), 143);
+  EXPECT_TRUE(contains(readFile(sub + "/stderr"),
+                       "sim-run: interrupted by SIGTERM before the run; "
+                       "nothing was run"))
+      << readFile(sub + "/stderr");
+  EXPECT_FALSE(exists(sub + "/early.json"));
 }
 
 TEST_F(SimRun, RemovesTheTemporaryBundleOnSignals) {

@@ -727,7 +727,9 @@ int run(const Options &options) {
                  "' declares no exact solution of an observed buffer");
   }
 
-  // The runs, each session freed when its part is done.
+  // The runs, each session freed when its part is done. A signal that came
+  // before the first leaves nothing to report.
+  stopIfInterrupted("before the run");
   Progress progress;
   Results results;
   results.main =
