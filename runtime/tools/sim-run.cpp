@@ -224,8 +224,8 @@ public:
   Session(const sim_bundle *bundle, const sim_session_options &options,
           const Options &cli) {
     require(sim_session_create(bundle, &options, &handle), "");
-    registerSession(handle);
     try {
+      registerSession(handle);
       for (const auto &[name, value] : cli.sets)
         require(sim_session_set(handle, name.c_str(), value.c_str()),
                 "--set " + name + "=" + value + ": ");
@@ -701,8 +701,8 @@ void writeDumps(Results &results, const Options &options,
 // The run
 //===----------------------------------------------------------------------===//
 
-int run(const Options &options) {
-  // Before anything runs: the input and the output paths...
+/// The input and the output paths, checked before the bundle is read.
+OutputPlan planOutputs(const Options &options) {
   checkInput(options.input);
   OutputPlan outputs;
   outputs.addInput(options.input);
@@ -710,26 +710,24 @@ int run(const Options &options) {
     outputs.addDirectory("--dump", options.dump);
   if (!options.json.empty())
     outputs.addFile("--json", options.json);
+  return outputs;
+}
 
-  // ... the bundle, every session and every --set, the dump files.
-  Input input(options.input);
-  const sim_bundle *bundle = input.bundle();
-  Sessions sessions = createSessions(bundle, options);
-  std::vector<sim_buffer_info> observed = observedBuffers(bundle);
-  std::vector<std::string> stems = planDumps(outputs, options, observed);
-  if (options.reference == "exact") {
-    bool any = false;
-    for (const sim_buffer_info &info : observed)
-      any |= sim_session_has_exact(sessions.main->get(), info.name) != 0;
-    if (!any)
-      usageError(std::string("--reference exact: scene '") +
-                 displayName(sim_bundle_scene_name(bundle)) +
-                 "' declares no exact solution of an observed buffer");
-  }
+/// --reference exact needs an exact solution of an observed buffer.
+void requireExactSolution(const sim_bundle *bundle, sim_session *session,
+                          const std::vector<sim_buffer_info> &observed) {
+  for (const sim_buffer_info &info : observed)
+    if (sim_session_has_exact(session, info.name))
+      return;
+  usageError(std::string("--reference exact: scene '") +
+             displayName(sim_bundle_scene_name(bundle)) +
+             "' declares no exact solution of an observed buffer");
+}
 
-  // The runs, each session freed when its part is done. A signal that came
-  // before the first leaves nothing to report.
-  stopIfInterrupted("before the run");
+/// Every run in order, each session freed when its part is done.
+Results runAll(Sessions &sessions, const sim_bundle *bundle,
+               const Options &options,
+               const std::vector<sim_buffer_info> &observed) {
   Progress progress;
   Results results;
   results.main =
@@ -750,6 +748,24 @@ int run(const Options &options) {
     sessions.check.reset();
   }
   results.signal = receivedSignal();
+  return results;
+}
+
+int run(const Options &options) {
+  // Before anything runs: the paths, the bundle, every session and every
+  // --set, the dump files.
+  OutputPlan outputs = planOutputs(options);
+  Input input(options.input);
+  const sim_bundle *bundle = input.bundle();
+  Sessions sessions = createSessions(bundle, options);
+  std::vector<sim_buffer_info> observed = observedBuffers(bundle);
+  std::vector<std::string> stems = planDumps(outputs, options, observed);
+  if (options.reference == "exact")
+    requireExactSolution(bundle, sessions.main->get(), observed);
+  // A signal that came before the first run leaves nothing to report.
+  stopIfInterrupted("before the run");
+
+  Results results = runAll(sessions, bundle, options, observed);
 
   // The report and the files: the JSON last, so that its presence says
   // the dumps are complete.

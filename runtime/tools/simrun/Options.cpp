@@ -331,8 +331,8 @@ void declareOptions(CLI::App &app, Options &options, std::string &backend,
   app.add_option("--dump", options.dump,
                  "write the observed buffers as DIR/<buffer>.npy\n"
                  "(and the reference as <buffer>.reference.npy,\n"
-                 "--check's as <buffer>.check.npy; other bytes than\n"
-                 "A-Z a-z 0-9 _ . - of a name, and a leading '.',\n"
+                 "--check's as <buffer>.check.npy; a name's bytes\n"
+                 "other than A-Z a-z 0-9 _ . -, and a leading '.',\n"
                  "as %XX)")
       ->option_text("DIR")
       ->check(path());
