@@ -223,7 +223,13 @@ class Session {
 public:
   Session(const sim_bundle *bundle, const sim_session_options &options,
           const Options &cli) {
-    require(sim_session_create(bundle, &options, &handle), "");
+    sim_status created;
+    {
+      // The session's threads inherit this: signals go to the main thread.
+      BlockSignals blocked;
+      created = sim_session_create(bundle, &options, &handle);
+    }
+    require(created, "");
     try {
       registerSession(handle);
       for (const auto &[name, value] : cli.sets)

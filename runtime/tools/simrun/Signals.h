@@ -46,9 +46,12 @@ void unregisterSession(sim_session *session);
 int registerTemporary(const char *path);
 void unregisterTemporary(int slot);
 
-/// Holds SIGINT and SIGTERM back on this thread while it lives: around
-/// creating a temporary file and registering it, so that a second signal
-/// cannot leave it behind unregistered.
+/// Holds SIGINT and SIGTERM back on this thread while it lives (a signal
+/// meanwhile waits, and is handled when it ends). Around creating a
+/// temporary file and registering it, so that a second signal cannot leave
+/// it behind unregistered; and around creating a session, so that the
+/// threads the runtime starts (CPU workers, the CUDA driver's) inherit the
+/// block and every signal is handled on the main thread.
 class BlockSignals {
 public:
   BlockSignals();
