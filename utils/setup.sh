@@ -18,14 +18,15 @@ build_dir="${SIM_BUILD_DIR:-build}"
 build_type="${SIM_BUILD_TYPE:-Release}"
 
 # MLIR/LLVM 22 (headers, CMake package, mlir-tblgen, FileCheck, lit), the
-# compiler and linker, the build tools, GoogleTest, Python for lit and the
-# scene generator, Graphviz to render dependency graphs in tests, and what
-# the bundle format needs: FlatBuffers (the schema compiler and headers) and
-# zlib (its CRC-32).
+# compiler and linker, the build tools, GoogleTest, sim-run's header-only
+# libraries (CLI11 for its command line, nlohmann-json for its JSON), what
+# the bundle format needs (FlatBuffers' schema compiler and headers, zlib for
+# its CRC-32), Python for lit and the scene generator, and Graphviz to render
+# dependency graphs in tests.
 packages=(
   libmlir-22-dev mlir-22-tools llvm-22-dev llvm-22-tools clang-22 lld-22
-  cmake ninja-build libgtest-dev python3 graphviz
-  libflatbuffers-dev flatbuffers-compiler zlib1g-dev
+  cmake ninja-build libgtest-dev libcli11-dev nlohmann-json3-dev
+  libflatbuffers-dev flatbuffers-compiler zlib1g-dev python3 graphviz
 )
 missing=()
 for package in "${packages[@]}"; do

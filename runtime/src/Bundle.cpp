@@ -271,7 +271,9 @@ std::vector<const schema::LaunchT *> unrollPhase(const schema::PhaseT &phase) {
 }
 
 std::shared_ptr<const Bundle> Bundle::read(const std::string &path) {
-  int fd = open(path.c_str(), O_RDONLY | O_CLOEXEC);
+  // Without blocking: opening a FIFO for reading would wait for a writer
+  // before the check below can refuse it.
+  int fd = open(path.c_str(), O_RDONLY | O_CLOEXEC | O_NONBLOCK);
   if (fd < 0)
     fail(SIM_ERROR_IO,
          "cannot open bundle '" + path + "': " + std::strerror(errno));

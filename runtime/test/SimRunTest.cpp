@@ -1,8 +1,11 @@
 //===- SimRunTest.cpp - the sim-run tool ----------------------------------===//
 //
-// Runs the sim-run binary as a user would: help, usage errors, a run with
-// its table, the reference, .npy dumps, JSON, the NaN check, .mlir input
-// through sim-translate, and the libraries it links.
+// Runs the sim-run binary as a user would: help, usage errors (every value
+// outside its domain, before anything runs and without an output file), a
+// run with its table, the reference, .npy dumps, JSON, the NaN check, .mlir
+// input through sim-translate, outputs that never land on an input or
+// follow a symlink, hostile buffer names, SIGINT and SIGTERM, and the
+// libraries it links.
 //
 //===----------------------------------------------------------------------===//
 
@@ -10,17 +13,26 @@
 #include "TestUtil.h"
 
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
+#include <csignal>
 #include <cstdio>
 #include <cstring>
 #include <dirent.h>
+#include <fcntl.h>
+#include <spawn.h>
 #include <sys/stat.h>
 #include <sys/wait.h>
+#include <thread>
 #include <unistd.h>
 
 using namespace sim::test;
+using Json = nlohmann::json;
+
+extern char **environ;
 
 namespace {
 
@@ -45,6 +57,132 @@ Result shell(const std::string &command) {
 
 Result simRun(const std::string &args) {
   return shell(std::string(SIM_RUN_PATH) + " " + args);
+}
+
+bool exists(const std::string &path) {
+  struct stat info;
+  return lstat(path.c_str(), &info) == 0;
+}
+
+/// The names in a directory, sorted, without "." and "..".
+std::vector<std::string> listDirectory(const std::string &path) {
+  std::vector<std::string> names;
+  if (DIR *listing = opendir(path.c_str())) {
+    while (dirent *entry = readdir(listing))
+      if (std::strcmp(entry->d_name, ".") && std::strcmp(entry->d_name, ".."))
+        names.push_back(entry->d_name);
+    closedir(listing);
+  }
+  std::sort(names.begin(), names.end());
+  return names;
+}
+
+Json readJson(const std::string &path) {
+  // nlohmann's parser rejects invalid JSON and invalid UTF-8.
+  return Json::parse(readFile(path));
+}
+
+/// Values of a .npy file written by sim-run (after its header).
+std::string npyData(const std::string &file) {
+  size_t header = uint8_t(file[8]) | uint8_t(file[9]) << 8;
+  return file.substr(10 + header);
+}
+
+double f64At(const std::string &data, size_t i) {
+  double value;
+  std::memcpy(&value, data.data() + i * 8, 8);
+  return value;
+}
+
+float f32At(const std::string &data, size_t i) {
+  float value;
+  std::memcpy(&value, data.data() + i * 4, 4);
+  return value;
+}
+
+/// sim-run started in the background with stdout and stderr in files and
+/// SIGINT and SIGTERM at their defaults (whatever the test runner does).
+pid_t spawnSimRun(const std::string &program,
+                  const std::vector<std::string> &args, const std::string &out,
+                  const std::string &err,
+                  const std::vector<std::string> &env = {}) {
+  std::vector<std::string> all = {program};
+  all.insert(all.end(), args.begin(), args.end());
+  std::vector<char *> argv;
+  for (std::string &arg : all)
+    argv.push_back(arg.data());
+  argv.push_back(nullptr);
+  std::vector<std::string> envStrings = env;
+  for (char **e = environ; *e; ++e)
+    envStrings.push_back(*e);
+  std::vector<char *> envp;
+  for (std::string &entry : envStrings)
+    envp.push_back(entry.data());
+  envp.push_back(nullptr);
+
+  posix_spawn_file_actions_t actions;
+  posix_spawn_file_actions_init(&actions);
+  posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, out.c_str(),
+                                   O_WRONLY | O_CREAT | O_TRUNC, 0644);
+  posix_spawn_file_actions_addopen(&actions, STDERR_FILENO, err.c_str(),
+                                   O_WRONLY | O_CREAT | O_TRUNC, 0644);
+  posix_spawnattr_t attributes;
+  posix_spawnattr_init(&attributes);
+  sigset_t defaults, none;
+  sigemptyset(&defaults);
+  sigaddset(&defaults, SIGINT);
+  sigaddset(&defaults, SIGTERM);
+  sigemptyset(&none);
+  posix_spawnattr_setsigdefault(&attributes, &defaults);
+  posix_spawnattr_setsigmask(&attributes, &none);
+  posix_spawnattr_setflags(&attributes,
+                           POSIX_SPAWN_SETSIGDEF | POSIX_SPAWN_SETSIGMASK);
+  pid_t pid = -1;
+  if (posix_spawn(&pid, program.c_str(), &actions, &attributes, argv.data(),
+                  envp.data()) != 0)
+    pid = -1;
+  posix_spawn_file_actions_destroy(&actions);
+  posix_spawnattr_destroy(&attributes);
+  return pid;
+}
+
+/// The wait status of `pid`, killing it after `seconds`.
+int waitFor(pid_t pid, double seconds = 60) {
+  auto deadline =
+      std::chrono::steady_clock::now() + std::chrono::duration<double>(seconds);
+  int status = 0;
+  while (waitpid(pid, &status, WNOHANG) == 0) {
+    if (std::chrono::steady_clock::now() > deadline) {
+      kill(pid, SIGKILL);
+      waitpid(pid, &status, 0);
+      ADD_FAILURE() << "sim-run did not end within " << seconds << " s";
+      return status;
+    }
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  }
+  return status;
+}
+
+/// Waits until `path` exists and contains `text`.
+bool waitForText(const std::string &path, const std::string &text,
+                 double seconds = 60) {
+  auto deadline =
+      std::chrono::steady_clock::now() + std::chrono::duration<double>(seconds);
+  while (std::chrono::steady_clock::now() < deadline) {
+    if (exists(path) && contains(readFile(path), text))
+      return true;
+    std::this_thread::sleep_for(std::chrono::milliseconds(50));
+  }
+  return false;
+}
+
+/// The decay bundle (with its reference model) with buffers X and V
+/// renamed: names are FlatBuffer strings, so any bytes go.
+std::string decayBundleNamed(const std::string &x, const std::string &v) {
+  schema::BundleT contents = decayContents();
+  contents.scene->buffers[0]->name = x;
+  contents.scene->buffers[1]->name = v;
+  return serialize(contents);
 }
 
 class SimRun : public ::testing::Test {
@@ -72,40 +210,134 @@ TEST_F(SimRun, PrintsHelp) {
        {"--backend B", "auto, cpu, cuda or reference", "--check",
         "--check-tolerance X", "--strategy S", "--steps N", "--repeat K",
         "--set NAME=VALUE", "--group-size G", "--reference simple|exact",
-        "--dump DIR", "--json FILE", "--check-finite"})
+        "--dump DIR", "--json FILE", "--check-finite", "--max-memory SIZE",
+        "EXIT STATUS"})
     EXPECT_TRUE(contains(result.output, option)) << option;
 }
 
-TEST_F(SimRun, RejectsBadUsage) {
+TEST_F(SimRun, RejectsBadUsageBeforeAnythingRuns) {
+  // Every case also asks for --json and --dump: neither may appear.
+  std::string json = dir + "/usage.json", dump = dir + "/usage-dump";
   struct Case {
     std::string args, message;
   } cases[] = {
       {"", "sim-run: error: no input scene (see sim-run --help)"},
       {bundle + " --fast", "unknown option '--fast'"},
-      {bundle + " --steps x", "--steps expects an integer >= 0, not 'x'"},
-      {bundle + " --repeat 0", "--repeat expects an integer >= 1"},
-      {bundle + " --strategy best", "unknown strategy 'best'"},
-      {bundle + " --backend tpu", "unknown backend 'tpu'"},
-      {bundle + " --set k", "--set expects NAME=VALUE, not 'k'"},
-      {bundle + " --reference cubic", "--reference expects simple or exact"},
-      {bundle + " --steps", "--steps expects a value"},
-      {bundle + " --check-finite=yes", "--check-finite takes no value"},
-      {bundle + " --check-tolerance 1e-3", "--check-tolerance needs --check"},
-      {bundle + " --check --check-tolerance -1",
-       "--check-tolerance expects a positive number, not '-1'"},
       {bundle + " other.simb", "more than one input"},
+      {bundle + " --steps x",
+       "--steps: 'x' is not an integer from 0 to 1000000000000"},
+      {bundle + " --steps -1", "--steps: '-1' is not an integer"},
+      {bundle + " --steps 1000000000001",
+       "--steps: '1000000000001' is not an integer"},
+      {bundle + " --steps 99999999999999999999",
+       "--steps: '99999999999999999999' is not"},
+      {bundle + " --steps", "--steps expects a value"},
+      {bundle + " --repeat 0",
+       "--repeat: '0' is not an integer from 1 to 1000000"},
+      {bundle + " --repeat 9223372036854775807",
+       "--repeat: '9223372036854775807' is not an integer from 1 to 1000000"},
+      {bundle + " --repeat 1000001", "--repeat: '1000001' is not"},
+      {bundle + " --group-size 0",
+       "--group-size: '0' is not an integer from 1 to 4096"},
+      {bundle + " --group-size 4097", "--group-size: '4097' is not"},
+      {bundle + " --threads 0",
+       "--threads: '0' is not an integer from 1 to 1024"},
+      {bundle + " --threads 1025", "--threads: '1025' is not"},
+      {bundle + " --device -1", "--device: '-1' is not a device ordinal"},
+      {bundle + " --report-every 0",
+       "--report-every: '0' is not an integer from 1 to"},
+      {bundle + " --check --check-tolerance -1",
+       "--check-tolerance: '-1' is not a positive finite number"},
+      {bundle + " --check --check-tolerance 0",
+       "--check-tolerance: '0' is not"},
+      {bundle + " --check --check-tolerance nan",
+       "--check-tolerance: 'nan' is not"},
+      {bundle + " --check --check-tolerance inf",
+       "--check-tolerance: 'inf' is not"},
+      {bundle + " --check-tolerance 1e-3",
+       "--check-tolerance requires --check"},
+      {bundle + " --max-memory -1",
+       "--max-memory: '-1' is not a size in bytes"},
+      {bundle + " --max-memory 12X", "--max-memory: '12X' is not a size"},
+      {bundle + " --max-memory 99999999T",
+       "--max-memory: '99999999T' is not a size"},
+      {bundle + " --strategy best", "--strategy: unknown strategy 'best'"},
+      {bundle + " --backend tpu", "--backend: unknown backend 'tpu'"},
+      {bundle + " --reference cubic",
+       "--reference: 'cubic' is not simple or exact"},
+      {bundle + " --set k", "--set: 'k' is not NAME=VALUE"},
+      {bundle + " --set =2", "--set: '=2' is not NAME=VALUE"},
+      {bundle + " --check-finite=yes", "--check-finite takes no value"},
+      {dir + "/missing.simb", "cannot read the input '" + dir +
+                                  "/missing.simb': No such file or directory"},
+      {dir, "the input '" + dir + "' is a directory"},
   };
   for (const Case &c : cases) {
-    Result result = simRun(c.args);
+    // (First: an option that expects a value takes the next argument.)
+    Result result = simRun("--json " + json + " --dump " + dump + " " + c.args);
     EXPECT_EQ(result.status, 2) << c.args << ": " << result.output;
     EXPECT_TRUE(contains(result.output, c.message))
         << c.args << ": " << result.output;
+    EXPECT_FALSE(exists(json)) << c.args;
+    EXPECT_FALSE(exists(dump)) << c.args;
   }
 }
 
+TEST_F(SimRun, RejectsSettingsTheSceneRefusesBeforeRunning) {
+  std::string json = dir + "/set.json", dump = dir + "/set-dump";
+  struct Case {
+    std::string args, message;
+  } cases[] = {
+      {"--set speed=3", "--set speed=3: 'speed' is not range, dt or a "
+                        "parameter of scene 'decay'"},
+      {"--set k=fast", "--set k=fast: parameter 'k'"},
+      {"--set dt=nan", "--set dt=nan: "},
+      {"--set dt=inf", "--set dt=inf: "},
+      {"--set dt=0", "--set dt=0: dt: 0 is not a positive finite time step"},
+      {"--set dt=-1", "--set dt=-1: dt: -1 is not a positive finite"},
+      {"--set range=0", "--set range=0: range: 0 is not a number of items"},
+      // The sessions of --reference, --check and --report-every are made
+      // before anything runs, so their settings are checked too.
+      {"--check --reference simple --report-every 5 --set dt=0",
+       "--set dt=0: "},
+  };
+  for (const Case &c : cases) {
+    Result result = simRun(bundle + " --backend cpu --steps 5 " + c.args +
+                           " --json " + json + " --dump " + dump);
+    EXPECT_EQ(result.status, 2) << c.args << ": " << result.output;
+    EXPECT_TRUE(contains(result.output, c.message))
+        << c.args << ": " << result.output;
+    EXPECT_FALSE(contains(result.output, "wall time")) << result.output;
+    EXPECT_FALSE(exists(json)) << c.args;
+    EXPECT_FALSE(exists(dump)) << c.args;
+  }
+
+  // A scene without an exact solution cannot be compared with one (the
+  // probe scene runs on the reference executor only).
+  std::string probe = dir + "/probe.simb";
+  writeFile(probe, probeBundle());
+  Result result = simRun(probe + " --backend reference --reference exact");
+  EXPECT_EQ(result.status, 2) << result.output;
+  EXPECT_TRUE(contains(result.output,
+                       "--reference exact: scene 'probe' declares no exact "
+                       "solution of an observed buffer"))
+      << result.output;
+
+  // A state larger than --max-memory is a failure of the run (status 1),
+  // found before it starts.
+  result = simRun(bundle +
+                  " --backend cpu --max-memory 1K --set range=1000 "
+                  "--json " +
+                  json);
+  EXPECT_EQ(result.status, 1) << result.output;
+  EXPECT_TRUE(contains(result.output, "more than the limit of 1.00 KiB"))
+      << result.output;
+  EXPECT_FALSE(exists(json));
+}
+
 TEST_F(SimRun, RunsAndPrintsTheTable) {
-  Result result =
-      simRun(bundle + " --backend cpu --steps 25 --threads 2 --set k=1");
+  Result result = simRun(bundle + " --backend cpu --steps 25 --threads 2 "
+                                  "--set k=1 --max-memory 1M");
   ASSERT_EQ(result.status, 0) << result.output;
   const std::string &out = result.output;
   EXPECT_TRUE(
@@ -121,6 +353,10 @@ TEST_F(SimRun, RunsAndPrintsTheTable) {
   EXPECT_TRUE(contains(out, "big steps        15")) << out;
   EXPECT_TRUE(contains(out, "1: 9  2: 3  3: 2  4: 1")) << out;
   EXPECT_TRUE(contains(out, "Decay 1500  Grow 1500")) << out;
+  // Clock (16 slots), X (f64: two halves and the exact output) and V (16
+  // bytes: two halves) at 100 items, against --max-memory.
+  EXPECT_TRUE(contains(out, "memory           5.59 KiB (limit 1.00 MiB)"))
+      << out;
 }
 
 TEST_F(SimRun, AutoFallsBackToTheCpuAndSaysWhy) {
@@ -174,9 +410,7 @@ TEST_F(SimRun, DumpsNpyFilesAndJson) {
       << header;
   EXPECT_EQ(header.back(), '\n');
   ASSERT_EQ(x.size(), 10 + headerLength + 100 * 8);
-  double x5;
-  std::memcpy(&x5, x.data() + 10 + headerLength + 5 * 8, 8);
-  EXPECT_NEAR(x5, 1.05 * std::pow(0.98, 7), 1e-12);
+  EXPECT_NEAR(f64At(npyData(x), 5), 1.05 * std::pow(0.98, 7), 1e-12);
 
   std::string v = readFile(out + "/V.npy");
   size_t vHeader = uint8_t(v[8]) | uint8_t(v[9]) << 8;
@@ -187,26 +421,42 @@ TEST_F(SimRun, DumpsNpyFilesAndJson) {
   EXPECT_TRUE(contains(readFile(out + "/X.reference.npy"), "'shape': (100,)"));
 
   // Only the finished files: no temporaries left behind.
-  std::vector<std::string> names;
-  DIR *listing = opendir(out.c_str());
-  ASSERT_NE(listing, nullptr);
-  while (dirent *entry = readdir(listing))
-    if (entry->d_name[0] != '.')
-      names.push_back(entry->d_name);
-  closedir(listing);
-  std::sort(names.begin(), names.end());
-  EXPECT_EQ(names,
+  EXPECT_EQ(listDirectory(out),
             (std::vector<std::string>{"V.npy", "X.npy", "X.reference.npy"}));
 
-  std::string metrics = readFile(json);
-  for (const char *field :
-       {"\"scene\": \"decay\"", "\"strategy\": \"simple\"",
-        "\"backend\": \"cpu\"", "\"steps\": 7", "\"repeat\": 3",
-        "\"big_steps\": 7", "\"big_step_histogram\": {\"1\": 7, \"2\": 0",
-        "\"evaluations\": {\"Decay\": 700, \"Grow\": 700}",
-        "\"reference\": \"exact\"", "\"error\": {\"X\": {\"max_abs\": ",
-        "\"wall_seconds_runs\": [", "\"host_syncs\": 2"})
-    EXPECT_TRUE(contains(metrics, field)) << field << "\n" << metrics;
+  Json metrics = readJson(json);
+  EXPECT_EQ(metrics["scene"], "decay");
+  EXPECT_EQ(metrics["strategy"], "simple");
+  EXPECT_EQ(metrics["backend"], "cpu");
+  EXPECT_EQ(metrics["range"], 100);
+  EXPECT_EQ(metrics["dt"], 0.01);
+  EXPECT_EQ(metrics["steps"], 7);
+  EXPECT_EQ(metrics["steps_done"], 7);
+  EXPECT_EQ(metrics["repeat"], 3);
+  EXPECT_EQ(metrics["interrupted"], false);
+  EXPECT_TRUE(metrics["interruption"].is_null());
+  EXPECT_EQ(metrics["big_steps"], 7);
+  EXPECT_EQ(metrics["big_step_histogram"],
+            Json::parse(R"({"1": 7, "2": 0, "3": 0, "4": 0})"));
+  EXPECT_EQ(metrics["evaluations"],
+            Json::parse(R"({"Decay": 700, "Grow": 700})"));
+  EXPECT_EQ(metrics["reference"], "exact");
+  EXPECT_TRUE(metrics["error"]["X"]["max_abs"].is_number());
+  EXPECT_TRUE(metrics["error"]["X"]["rms_rel"].is_number());
+  EXPECT_FALSE(metrics["error"].contains("V"));
+  EXPECT_EQ(metrics["wall_seconds_runs"].size(), 3u);
+  EXPECT_EQ(metrics["kernel_seconds_runs"].size(), 3u);
+  EXPECT_EQ(metrics["host_syncs"], 2);
+  EXPECT_EQ(metrics["max_memory"], 0);
+  EXPECT_EQ(metrics["memory_bytes"], 5728);
+  EXPECT_GT(metrics["memory_limit"].get<int64_t>(), 0);
+  EXPECT_TRUE(metrics["totals"].empty());
+  EXPECT_TRUE(metrics["totals_per_output_time"].is_null());
+  EXPECT_TRUE(metrics["check"].is_null());
+  EXPECT_EQ(metrics["dump"]["directory"], out);
+  EXPECT_EQ(metrics["dump"]["files"][0],
+            Json::parse(R"({"buffer": "X", "state": "X.npy",
+                            "reference": "X.reference.npy", "check": null})"));
 }
 
 TEST_F(SimRun, StopsAtTheFirstNonFiniteValue) {
@@ -220,18 +470,13 @@ TEST_F(SimRun, StopsAtTheFirstNonFiniteValue) {
       << result.output;
 }
 
-TEST_F(SimRun, ReportsBadBundlesAndSettings) {
+TEST_F(SimRun, ReportsBadBundles) {
   std::string bad = dir + "/bad.simb";
   writeFile(bad, "not a bundle at all, but long enough");
   Result result = simRun(bad);
   EXPECT_EQ(result.status, 1);
   EXPECT_TRUE(contains(result.output, "sim-run: error: bundle '" + bad +
                                           "': not a sim bundle (wrong magic"))
-      << result.output;
-  result = simRun(bundle + " --set speed=3");
-  EXPECT_EQ(result.status, 1);
-  EXPECT_TRUE(contains(result.output, "--set speed=3: 'speed' is not range, dt "
-                                      "or a parameter of scene 'decay'"))
       << result.output;
   result = simRun(bundle + " --backend cuda");
   EXPECT_EQ(result.status, 1);
@@ -249,6 +494,8 @@ TEST_F(SimRun, TranslatesMlirScenesWithSimTranslate) {
   ASSERT_EQ(shell("cp " + std::string(SIM_RUN_PATH) + " " + simRun).status, 0);
   std::string scene = dir + "/decay.mlir";
   writeFile(scene, "// not read by the stand-in sim-translate\n");
+  std::string tmp = dir + "/translate-tmp";
+  ASSERT_EQ(mkdir(tmp.c_str(), 0755), 0);
 
   Result missing = shell("PATH=/nonexistent " + simRun + " " + scene);
   EXPECT_EQ(missing.status, 1);
@@ -264,20 +511,30 @@ TEST_F(SimRun, TranslatesMlirScenesWithSimTranslate) {
                        "-o ] || exit 3\n/bin/cp '" +
                            bundle + "' \"$4\"\n");
   chmod(translate.c_str(), 0755);
-  Result translated = shell("PATH=/nonexistent " + simRun + " " + scene +
-                            " --backend cpu --steps 4");
+  Result translated = shell("TMPDIR=" + tmp + " PATH=/nonexistent " + simRun +
+                            " " + scene + " --backend cpu --steps 4");
   EXPECT_EQ(translated.status, 0) << translated.output;
   EXPECT_TRUE(contains(translated.output, "scene decay, strategy hip"))
       << translated.output;
+  // The temporary bundle is gone.
+  EXPECT_EQ(listDirectory(tmp), std::vector<std::string>{});
+
+  // Not even a .mlir input is written onto, before it is translated.
+  Result onto = shell("TMPDIR=" + tmp + " PATH=/nonexistent " + simRun + " " +
+                      scene + " --json " + scene);
+  EXPECT_EQ(onto.status, 2) << onto.output;
+  EXPECT_EQ(readFile(scene), "// not read by the stand-in sim-translate\n");
 
   writeFile(translate, "#!/bin/sh\necho 'error: no such op' >&2\nexit 1\n");
-  Result failed = shell("PATH=/nonexistent " + simRun + " " + scene);
+  Result failed =
+      shell("TMPDIR=" + tmp + " PATH=/nonexistent " + simRun + " " + scene);
   EXPECT_EQ(failed.status, 1);
   EXPECT_TRUE(contains(failed.output, "error: no such op")) << failed.output;
   EXPECT_TRUE(
       contains(failed.output, "sim-run: error: sim-translate failed on '" +
                                   scene + "' (exit status 1)"))
       << failed.output;
+  EXPECT_EQ(listDirectory(tmp), std::vector<std::string>{});
 }
 
 TEST_F(SimRun, RunsTheReferenceExecutor) {
@@ -332,26 +589,34 @@ TEST_F(SimRun, ChecksAgainstTheReferenceExecutor) {
         "\ncheck: pass\n"})
     EXPECT_TRUE(contains(text, line)) << line << "\n" << text;
   EXPECT_TRUE(contains(readFile(out + "/X.check.npy"), "'shape': (100,)"));
-  std::string metrics = readFile(json);
-  for (const char *field :
-       {"\"check\": {\n    \"strategy\": \"hip\",\n    \"group_size\": "
-        "32,\n    \"steps\": 25,\n    \"pass\": true,",
-        "\"buffers\": {\"X\": {\"max_abs\": 0, \"max_reference\": "
-        "1.20089481, \"rms_rel\": 0, \"tolerance\": 1e-10, \"limit\": "
-        "1.20089481e-10, \"same_non_finite\": 0, \"pass\": true}, "
-        "\"V\": {",
-        "\"evaluations\": {\"backend\": {\"Decay\": 1500, \"Grow\": 1500}, "
-        "\"reference\": {\"Decay\": 1500, \"Grow\": 1500}, \"equal\": true}",
-        "\"big_steps\": {\"backend\": 15, \"reference\": 15, \"equal\": "
-        "true}",
-        "\"big_step_histogram\": {\"backend\": {\"1\": 9, \"2\": 3, \"3\": 2, "
-        "\"4\": 1}, \"reference\": {\"1\": 9, ",
-        "\"failures\": []"})
-    EXPECT_TRUE(contains(metrics, field)) << field << "\n" << metrics;
+  Json check = readJson(json)["check"];
+  EXPECT_EQ(check["strategy"], "hip");
+  EXPECT_EQ(check["group_size"], 32);
+  EXPECT_EQ(check["steps"], 25);
+  EXPECT_EQ(check["pass"], true);
+  const Json &x = check["buffers"]["X"];
+  EXPECT_EQ(x["max_abs"], 0.0);
+  EXPECT_NEAR(x["max_reference"].get<double>(), 1.20089481, 1e-8);
+  EXPECT_EQ(x["rms_rel"], 0.0);
+  EXPECT_EQ(x["tolerance"], 1e-10);
+  EXPECT_NEAR(x["limit"].get<double>(), 1.20089481e-10, 1e-18);
+  EXPECT_EQ(x["non_finite"], Json::parse(R"({"backend": 0, "reference": 0})"));
+  EXPECT_EQ(x["pass"], true);
+  EXPECT_EQ(check["buffers"]["V"]["tolerance"], 1e-4);
+  EXPECT_EQ(check["evaluations"],
+            Json::parse(R"({"backend": {"Decay": 1500, "Grow": 1500},
+                            "reference": {"Decay": 1500, "Grow": 1500},
+                            "equal": true})"));
+  EXPECT_EQ(check["big_steps"],
+            Json::parse(R"({"backend": 15, "reference": 15, "equal": true})"));
+  EXPECT_EQ(check["big_step_histogram"]["backend"],
+            Json::parse(R"({"1": 9, "2": 3, "3": 2, "4": 1})"));
+  EXPECT_EQ(check["big_step_histogram"]["equal"], true);
+  EXPECT_EQ(check["failures"], Json::array());
   // Without --check the JSON says so.
   ASSERT_EQ(simRun(bundle + " --backend cpu --steps 2 --json " + json).status,
             0);
-  EXPECT_TRUE(contains(readFile(json), "\"check\": null"));
+  EXPECT_TRUE(readJson(json)["check"].is_null());
 }
 
 TEST_F(SimRun, FailsTheCheckOnDifferentValues) {
@@ -373,11 +638,11 @@ TEST_F(SimRun, FailsTheCheckOnDifferentValues) {
                        "\ncheck: FAIL: buffer X exceeds the tolerance (max-abs "
                        "1.983e-05 > 1.201e-10)\n"))
       << result.output;
-  std::string metrics = readFile(json);
-  EXPECT_TRUE(contains(metrics, "\"pass\": false")) << metrics;
-  EXPECT_TRUE(contains(metrics, "\"failures\": [\"buffer X exceeds the "
-                                "tolerance (max-abs 1.983e-05 > 1.201e-10)\"]"))
-      << metrics;
+  Json check = readJson(json)["check"];
+  EXPECT_EQ(check["pass"], false);
+  EXPECT_EQ(check["failures"],
+            Json::array({"buffer X exceeds the tolerance (max-abs 1.983e-05 > "
+                         "1.201e-10)"}));
 
   // A looser tolerance lets it pass.
   result = simRun(wrong + " --backend cpu --strategy simple --steps 25 "
@@ -385,6 +650,35 @@ TEST_F(SimRun, FailsTheCheckOnDifferentValues) {
   EXPECT_EQ(result.status, 0) << result.output;
   EXPECT_TRUE(contains(result.output, "tolerance 1.0e-04  pass"))
       << result.output;
+}
+
+TEST_F(SimRun, FailsTheCheckOnNonFiniteValuesOnBothSides) {
+  // Item 7 of X turns NaN at base step 4 on the backend and on the
+  // reference executor alike: the run blew up, and the check says so.
+  std::string json = dir + "/nan.json";
+  Result result = simRun(bundle +
+                         " --backend cpu --strategy simple --steps 20 "
+                         "--set poison=4 --check --json " +
+                         json);
+  EXPECT_EQ(result.status, 1) << result.output;
+  EXPECT_TRUE(contains(result.output,
+                       "  buffer X  max-abs nan  max-ref 1.329e+00  rms-rel "
+                       "nan  tolerance 1.0e-10  FAIL  (non-finite: backend 1, "
+                       "reference 1)\n"))
+      << result.output;
+  EXPECT_TRUE(contains(result.output, "  buffer V  max-abs 0.000e+00"))
+      << result.output;
+  EXPECT_TRUE(contains(result.output,
+                       "\ncheck: FAIL: buffer X has 1 non-finite value on the "
+                       "backend and 1 on the reference executor\n"))
+      << result.output;
+  Json check = readJson(json)["check"];
+  EXPECT_EQ(check["pass"], false);
+  EXPECT_TRUE(check["buffers"]["X"]["max_abs"].is_null());
+  EXPECT_EQ(check["buffers"]["X"]["non_finite"],
+            Json::parse(R"({"backend": 1, "reference": 1})"));
+  EXPECT_EQ(check["buffers"]["X"]["pass"], false);
+  EXPECT_EQ(check["buffers"]["V"]["pass"], true);
 }
 
 TEST_F(SimRun, FailsTheCheckOnDifferentWork) {
@@ -409,6 +703,282 @@ TEST_F(SimRun, FailsTheCheckOnDifferentWork) {
         "steps of size 3 differ (2 vs 0); big steps of size 4 differ (1 vs "
         "6)\n"})
     EXPECT_TRUE(contains(result.output, line)) << line << "\n" << result.output;
+}
+
+TEST_F(SimRun, NeverWritesOntoAnInputOrTwoOutputsOntoOneFile) {
+  std::string before = readFile(bundle);
+  std::string sub = dir + "/onto";
+  ASSERT_EQ(mkdir(sub.c_str(), 0755), 0);
+  ASSERT_EQ(symlink(dir.c_str(), (sub + "/up").c_str()), 0);
+  for (std::string json :
+       {bundle, dir + "/./decay.simb", dir + "/not-yet/../decay.simb",
+        sub + "/up/decay.simb"}) {
+    Result result = simRun(bundle + " --backend cpu --steps 2 --json " + json);
+    EXPECT_EQ(result.status, 2) << json << ": " << result.output;
+    EXPECT_TRUE(contains(result.output, "--json: '" + json +
+                                            "' is the input '" + bundle + "'"))
+        << result.output;
+    EXPECT_FALSE(contains(result.output, "wall time")) << result.output;
+  }
+  EXPECT_EQ(readFile(bundle), before);
+  EXPECT_FALSE(exists(dir + "/not-yet"));
+
+  // A dump file onto the input: a bundle named X.npy in the dump folder.
+  std::string inside = sub + "/X.npy";
+  writeFile(inside, before);
+  Result result = simRun(inside + " --backend cpu --steps 2 --dump " + sub);
+  EXPECT_EQ(result.status, 2) << result.output;
+  EXPECT_TRUE(contains(result.output,
+                       "--dump (buffer 'X'): '" + sub + "/X.npy' is the input"))
+      << result.output;
+  EXPECT_EQ(readFile(inside), before);
+
+  // --json onto a dump file.
+  result = simRun(bundle + " --backend cpu --steps 2 --dump " + sub +
+                  "/d --json " + sub + "/d/V.npy");
+  EXPECT_EQ(result.status, 2) << result.output;
+  EXPECT_TRUE(contains(result.output, "is also the file of --json"))
+      << result.output;
+  EXPECT_FALSE(exists(sub + "/d"));
+
+  // --json onto a directory, --dump onto a file.
+  result = simRun(bundle + " --backend cpu --json " + sub);
+  EXPECT_EQ(result.status, 2) << result.output;
+  EXPECT_TRUE(contains(result.output,
+                       "--json: '" + sub + "' is a directory, not a file"))
+      << result.output;
+  result = simRun(bundle + " --backend cpu --dump " + inside);
+  EXPECT_EQ(result.status, 2) << result.output;
+  EXPECT_TRUE(
+      contains(result.output, "--dump: '" + inside + "' is not a directory"))
+      << result.output;
+}
+
+TEST_F(SimRun, ReplacesSymlinksAtOutputPathsInsteadOfFollowingThem) {
+  std::string sub = dir + "/links";
+  ASSERT_EQ(mkdir(sub.c_str(), 0755), 0);
+  std::string target = sub + "/precious";
+  writeFile(target, "precious");
+  std::string json = sub + "/run.json", dump = sub + "/dump";
+  ASSERT_EQ(mkdir(dump.c_str(), 0755), 0);
+  ASSERT_EQ(symlink(target.c_str(), json.c_str()), 0);
+  ASSERT_EQ(symlink(target.c_str(), (dump + "/X.npy").c_str()), 0);
+  Result result = simRun(bundle + " --backend cpu --steps 3 --json " + json +
+                         " --dump " + dump);
+  ASSERT_EQ(result.status, 0) << result.output;
+  EXPECT_EQ(readFile(target), "precious");
+  struct stat info;
+  for (std::string path : {json, dump + "/X.npy"}) {
+    ASSERT_EQ(lstat(path.c_str(), &info), 0);
+    EXPECT_TRUE(S_ISREG(info.st_mode)) << path;
+  }
+  EXPECT_EQ(readJson(json)["steps"], 3);
+  EXPECT_TRUE(contains(readFile(dump + "/X.npy"), "'shape': (100,)"));
+}
+
+TEST_F(SimRun, KeepsHostileBufferNamesInsideTheDumpFolder) {
+  struct Case {
+    std::string x, v;
+    /// The file-name stems of X and V.
+    std::string xStem, vStem;
+  } cases[] = {
+      {"../../x", "a/b", "%2E.%2F..%2Fx", "a%2Fb"},
+      {".hidden", "\x01\xff\xfe", "%2Ehidden", "%01%FF%FE"},
+      // X.reference's files would collide with X's reference file.
+      {"q", "q.reference", "q", "q.reference-2"},
+  };
+  int n = 0;
+  for (const Case &c : cases) {
+    std::string sub = dir + "/hostile" + std::to_string(n++);
+    ASSERT_EQ(mkdir(sub.c_str(), 0755), 0);
+    std::string named = sub + "/named.simb";
+    writeFile(named, decayBundleNamed(c.x, c.v));
+    std::string dump = sub + "/deep/dump", json = sub + "/run.json";
+    Result result = simRun("'" + named +
+                           "' --backend cpu --steps 9 --reference exact "
+                           "--check --dump " +
+                           dump + " --json " + json);
+    ASSERT_EQ(result.status, 0) << c.x << ": " << result.output;
+    // Only the expected files, in the folder, and nothing beside it.
+    std::vector<std::string> expected = {
+        c.xStem + ".check.npy", c.xStem + ".npy", c.xStem + ".reference.npy",
+        c.vStem + ".check.npy", c.vStem + ".npy"};
+    std::sort(expected.begin(), expected.end());
+    EXPECT_EQ(listDirectory(dump), expected) << c.x;
+    EXPECT_EQ(listDirectory(sub + "/deep"), std::vector<std::string>{"dump"});
+    EXPECT_EQ(listDirectory(sub),
+              (std::vector<std::string>{"deep", "named.simb", "run.json"}));
+    EXPECT_FALSE(exists(dir + "/x.npy"));
+    // The files hold the values: X after 9 base steps.
+    EXPECT_NEAR(f64At(npyData(readFile(dump + "/" + c.xStem + ".npy")), 5),
+                1.05 * std::pow(0.98, 9), 1e-12);
+    // Valid JSON (invalid UTF-8 replaced), and where each buffer went.
+    Json metrics = readJson(json);
+    const Json &files = metrics["dump"]["files"];
+    ASSERT_EQ(files.size(), 2u);
+    EXPECT_EQ(files[0]["state"], c.xStem + ".npy");
+    EXPECT_EQ(files[1]["state"], c.vStem + ".npy");
+    EXPECT_EQ(files[1]["reference"], nullptr);
+    EXPECT_EQ(metrics["check"]["pass"], true);
+  }
+  Json metrics = readJson(dir + "/hostile1/run.json");
+  EXPECT_EQ(metrics["dump"]["files"][1]["buffer"],
+            "\x01\xEF\xBF\xBD\xEF\xBF\xBD"); // U+FFFD twice
+}
+
+TEST_F(SimRun, StopsOnSigintAndWritesWhatIsComplete) {
+  std::string sub = dir + "/sigint";
+  std::string dump = sub + "/dump", json = sub + "/run.json";
+  ASSERT_EQ(mkdir(sub.c_str(), 0755), 0);
+  ASSERT_EQ(mkdir(dump.c_str(), 0755), 0);
+  // Stale files of an earlier run, that this one will not write again.
+  writeFile(dump + "/X.reference.npy", "stale");
+  writeFile(dump + "/X.check.npy", "stale");
+  writeFile(json, "stale");
+  // k = 1e-6: X decays by 1 - 1e-8 per base step, still readable after
+  // many.
+  pid_t pid = spawnSimRun(SIM_RUN_PATH,
+                          {bundle, "--backend", "cpu", "--strategy", "simple",
+                           "--steps", "1000000000", "--set", "k=0.000001",
+                           "--reference", "simple", "--check", "--dump", dump,
+                           "--json", json},
+                          sub + "/stdout", sub + "/stderr");
+  ASSERT_GT(pid, 0);
+  // The progress line (after 3 s): the run is under way.
+  ASSERT_TRUE(waitForText(sub + "/stderr", "base step"))
+      << readFile(sub + "/stderr");
+  ASSERT_EQ(kill(pid, SIGINT), 0);
+  int status = waitFor(pid);
+  ASSERT_TRUE(WIFEXITED(status));
+  EXPECT_EQ(WEXITSTATUS(status), 130);
+
+  std::string out = readFile(sub + "/stdout");
+  EXPECT_TRUE(contains(readFile(sub + "/stderr"),
+                       "sim-run: interrupted by SIGINT; wrote what was "
+                       "complete\n"));
+  Json metrics = readJson(json);
+  EXPECT_EQ(metrics["interrupted"], true);
+  const Json &interruption = metrics["interruption"];
+  EXPECT_EQ(interruption["signal"], "SIGINT");
+  EXPECT_EQ(interruption["during"], "run");
+  EXPECT_EQ(interruption["of"], 1000000000);
+  EXPECT_EQ(interruption["skipped"], Json::array({"reference", "check"}));
+  int64_t reached = interruption["base_step"];
+  EXPECT_GT(reached, 0);
+  EXPECT_LT(reached, 1 << 24);
+  EXPECT_EQ(metrics["steps"], 1000000000);
+  EXPECT_EQ(metrics["steps_done"], reached);
+  // The counters cover the base steps done (simple: one per big step).
+  EXPECT_EQ(metrics["big_steps"], reached);
+  EXPECT_EQ(metrics["evaluations"]["Decay"], 100 * reached);
+  EXPECT_TRUE(metrics["check"].is_null());
+  EXPECT_EQ(metrics["error"], Json::object());
+  EXPECT_TRUE(contains(out, "interrupted at base step " +
+                                std::to_string(reached) + " of 1000000000\n"))
+      << out;
+  EXPECT_TRUE(contains(out, "error vs simple  not run (interrupted)")) << out;
+  EXPECT_TRUE(contains(out, "check against the reference executor (strategy "
+                            "simple, group size 32, 1000000000 base steps): "
+                            "not run (interrupted)"))
+      << out;
+  EXPECT_FALSE(contains(out, "check: ")) << out;
+
+  // The dump is the state at the base step reached: V's lane 0 counts
+  // base steps.
+  std::string v = npyData(readFile(dump + "/V.npy"));
+  for (size_t item = 0; item < 100; ++item)
+    ASSERT_EQ(f32At(v, item * 3), float(reached)) << item;
+  double x5 = f64At(npyData(readFile(dump + "/X.npy")), 5);
+  EXPECT_NEAR(x5 / (1.05 * std::pow(1 - 1e-8, double(reached))), 1, 1e-9);
+  // No stale or temporary file.
+  EXPECT_EQ(listDirectory(dump), (std::vector<std::string>{"V.npy", "X.npy"}));
+  EXPECT_EQ(listDirectory(sub),
+            (std::vector<std::string>{"dump", "run.json", "stderr", "stdout"}));
+}
+
+TEST_F(SimRun, StopsOnSigterm) {
+  std::string sub = dir + "/sigterm", json = sub + "/run.json";
+  ASSERT_EQ(mkdir(sub.c_str(), 0755), 0);
+  pid_t pid = spawnSimRun(SIM_RUN_PATH,
+                          {bundle, "--backend", "cpu", "--steps", "1000000000",
+                           "--repeat", "2", "--json", json},
+                          sub + "/stdout", sub + "/stderr");
+  ASSERT_GT(pid, 0);
+  ASSERT_TRUE(waitForText(sub + "/stderr", "warm-up: base step"))
+      << readFile(sub + "/stderr");
+  ASSERT_EQ(kill(pid, SIGTERM), 0);
+  int status = waitFor(pid);
+  ASSERT_TRUE(WIFEXITED(status)) << status;
+  EXPECT_EQ(WEXITSTATUS(status), 143);
+  Json metrics = readJson(json);
+  EXPECT_EQ(metrics["interrupted"], true);
+  EXPECT_EQ(metrics["interruption"]["signal"], "SIGTERM");
+  EXPECT_EQ(metrics["interruption"]["during"], "warm-up");
+  EXPECT_EQ(metrics["interruption"]["run"], 0);
+  EXPECT_EQ(metrics["wall_seconds_runs"], Json::array());
+  EXPECT_TRUE(contains(readFile(sub + "/stdout"), "(in the warm-up)"));
+
+  // A bundle is a regular file: a FIFO (or a device) is refused before
+  // anything is read from it.
+  std::string fifo = sub + "/slow.simb";
+  ASSERT_EQ(mkfifo(fifo.c_str(), 0644), 0);
+  Result refused = simRun(fifo + " --json " + sub + "/early.json");
+  EXPECT_EQ(refused.status, 1) << refused.output;
+  EXPECT_TRUE(contains(refused.output, "it is not a regular file"))
+      << refused.output;
+  EXPECT_FALSE(exists(sub + "/early.json"));
+}
+
+TEST_F(SimRun, RemovesTheTemporaryBundleOnSignals) {
+  std::string sub = dir + "/translate-signal";
+  std::string tools = sub + "/tools", tmp = sub + "/tmp";
+  ASSERT_EQ(mkdir(sub.c_str(), 0755), 0);
+  ASSERT_EQ(mkdir(tools.c_str(), 0755), 0);
+  ASSERT_EQ(mkdir(tmp.c_str(), 0755), 0);
+  std::string simRun = tools + "/sim-run";
+  ASSERT_EQ(shell("cp " + std::string(SIM_RUN_PATH) + " " + simRun).status, 0);
+  std::string scene = sub + "/scene.mlir";
+  writeFile(scene, "// a scene\n");
+  std::string pidFile = sub + "/translate.pid";
+  std::string translate = tools + "/sim-translate";
+  std::vector<std::string> env = {"TMPDIR=" + tmp, "PATH=/nonexistent"};
+
+  // sim-translate takes long; the first SIGINT reaches it too.
+  writeFile(translate,
+            "#!/bin/sh\necho $$ > '" + pidFile + "'\nexec sleep 30\n");
+  chmod(translate.c_str(), 0755);
+  pid_t pid = spawnSimRun(simRun, {scene, "--json", sub + "/run.json"},
+                          sub + "/stdout", sub + "/stderr", env);
+  ASSERT_TRUE(waitForText(pidFile, "\n"));
+  EXPECT_EQ(listDirectory(tmp).size(), 1u);
+  std::this_thread::sleep_for(std::chrono::milliseconds(200));
+  ASSERT_EQ(kill(pid, SIGINT), 0);
+  int status = waitFor(pid, 20);
+  ASSERT_TRUE(WIFEXITED(status));
+  EXPECT_EQ(WEXITSTATUS(status), 130);
+  EXPECT_TRUE(contains(readFile(sub + "/stderr"),
+                       "sim-run: interrupted by SIGINT while translating '" +
+                           scene + "'; nothing was run"))
+      << readFile(sub + "/stderr");
+  EXPECT_EQ(listDirectory(tmp), std::vector<std::string>{});
+  EXPECT_FALSE(exists(sub + "/run.json"));
+
+  // One that ignores the signal: the second SIGINT kills sim-run, which
+  // removes the temporary bundle first.
+  unlink(pidFile.c_str());
+  writeFile(translate, "#!/bin/sh\ntrap '' INT TERM\necho $$ > '" + pidFile +
+                           "'\nexec sleep 30\n");
+  pid = spawnSimRun(simRun, {scene}, sub + "/stdout", sub + "/stderr", env);
+  ASSERT_TRUE(waitForText(pidFile, "\n"));
+  EXPECT_EQ(listDirectory(tmp).size(), 1u);
+  std::this_thread::sleep_for(std::chrono::milliseconds(200));
+  ASSERT_EQ(kill(pid, SIGINT), 0);
+  std::this_thread::sleep_for(std::chrono::milliseconds(200));
+  ASSERT_EQ(kill(pid, SIGINT), 0);
+  status = waitFor(pid, 20);
+  EXPECT_TRUE(WIFSIGNALED(status) && WTERMSIG(status) == SIGINT) << status;
+  EXPECT_EQ(listDirectory(tmp), std::vector<std::string>{});
+  kill(std::stoi(readFile(pidFile)), SIGKILL);
 }
 
 TEST(Dependencies, NoMlirLlvmOrCuda) {

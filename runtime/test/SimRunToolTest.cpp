@@ -1,0 +1,455 @@
+//===- SimRunToolTest.cpp - sim-run's parts, called directly --------------===//
+//
+// The pieces of sim-run that decide what a bad input does: the value
+// parsers of the options, the dump file names made from buffer names, the
+// output paths that are refused, the atomic write, and --check's verdict on
+// non-finite values. SimRunTest.cpp runs the binary end to end.
+//
+//===----------------------------------------------------------------------===//
+
+#include "TestBundle.h"
+#include "TestUtil.h"
+
+#include "simrun/Compare.h"
+#include "simrun/Options.h"
+#include "simrun/Output.h"
+
+#include <gtest/gtest.h>
+
+#include <cctype>
+#include <cmath>
+#include <cstdlib>
+#include <cstring>
+#include <limits>
+#include <set>
+#include <sys/stat.h>
+#include <unistd.h>
+
+using namespace sim::test;
+using namespace simrun;
+
+namespace {
+
+/// The message of the Exit that `body` throws, checking its status.
+template <typename Body> std::string exitOf(Body &&body, int status) {
+  try {
+    body();
+  } catch (const Exit &exit) {
+    EXPECT_EQ(exit.status, status) << exit.message;
+    return exit.message;
+  }
+  ADD_FAILURE() << "no Exit";
+  return "";
+}
+
+Options parse(std::vector<const char *> args) {
+  args.insert(args.begin(), "sim-run");
+  return parseOptions(int(args.size()), args.data());
+}
+
+} // namespace
+
+//===----------------------------------------------------------------------===//
+// Values
+//===----------------------------------------------------------------------===//
+
+TEST(SimRunValues, ParsesDecimalIntegersOnly) {
+  EXPECT_EQ(parseInteger("0", 0, 10), 0);
+  EXPECT_EQ(parseInteger("010", 0, 100), 10); // not octal
+  EXPECT_EQ(parseInteger("-5", -10, 10), -5);
+  EXPECT_EQ(parseInteger("9223372036854775807", 0,
+                         std::numeric_limits<int64_t>::max()),
+            std::numeric_limits<int64_t>::max());
+  EXPECT_EQ(parseInteger("-9223372036854775808",
+                         std::numeric_limits<int64_t>::min(), 0),
+            std::numeric_limits<int64_t>::min());
+  for (const char *bad : {"", "-", "+5", " 5", "5 ", "0x10", "1e3", "5.0",
+                          "9223372036854775808", "99999999999999999999"})
+    EXPECT_FALSE(parseInteger(bad, std::numeric_limits<int64_t>::min(),
+                              std::numeric_limits<int64_t>::max()))
+        << bad;
+  EXPECT_FALSE(parseInteger("11", 0, 10));
+  EXPECT_FALSE(parseInteger("-1", 0, 10));
+}
+
+TEST(SimRunValues, ParsesSizesInPowersOf1024) {
+  EXPECT_EQ(parseSize("0"), 0);
+  EXPECT_EQ(parseSize("4096"), 4096);
+  EXPECT_EQ(parseSize("2K"), 2048);
+  EXPECT_EQ(parseSize("2k"), 2048);
+  EXPECT_EQ(parseSize("3M"), 3 << 20);
+  EXPECT_EQ(parseSize("5G"), int64_t(5) << 30);
+  EXPECT_EQ(parseSize("7t"), int64_t(7) << 40);
+  EXPECT_EQ(parseSize("8388607T"), int64_t(8388607) << 40);
+  for (const char *bad : {"", "K", "-1", "-1G", "1.5G", "12X", "1KB", "1 G",
+                          "8388608T", "9223372036854775808", "0x10"})
+    EXPECT_FALSE(parseSize(bad)) << bad;
+}
+
+TEST(SimRunValues, ParsesPositiveFiniteNumbers) {
+  EXPECT_EQ(parsePositive("1e-3"), 1e-3);
+  EXPECT_EQ(parsePositive("2"), 2.0);
+  for (const char *bad :
+       {"", "0", "-0", "-1", "nan", "inf", "-inf", "1e999", "1e-3x", " 1"})
+    EXPECT_FALSE(parsePositive(bad)) << bad;
+}
+
+TEST(SimRunOptions, TakesEveryOption) {
+  Options options = parse({"scene.simb",
+                           "--backend=cpu",
+                           "--strategy",
+                           "simple",
+                           "--steps",
+                           "010",
+                           "--repeat",
+                           "3",
+                           "--report-every",
+                           "5",
+                           "--set",
+                           "k=1",
+                           "--set",
+                           "range=10",
+                           "--group-size",
+                           "64",
+                           "--reference",
+                           "exact",
+                           "--check",
+                           "--check-tolerance",
+                           "1e-6",
+                           "--dump",
+                           "out",
+                           "--json",
+                           "out.json",
+                           "--check-finite",
+                           "--threads",
+                           "2",
+                           "--device",
+                           "1",
+                           "--cuda-graph",
+                           "--max-memory",
+                           "2G"});
+  EXPECT_EQ(options.input, "scene.simb");
+  EXPECT_EQ(options.backend, SIM_BACKEND_CPU);
+  EXPECT_EQ(options.strategy, SIM_STRATEGY_SIMPLE);
+  EXPECT_EQ(options.steps, 10);
+  EXPECT_EQ(options.repeat, 3);
+  EXPECT_EQ(options.reportEvery, 5);
+  ASSERT_EQ(options.sets.size(), 2u);
+  EXPECT_EQ(options.sets[1],
+            std::make_pair(std::string("range"), std::string("10")));
+  EXPECT_EQ(options.groupSize, 64);
+  EXPECT_EQ(options.reference, "exact");
+  EXPECT_TRUE(options.check);
+  EXPECT_EQ(options.checkTolerance, 1e-6);
+  EXPECT_EQ(options.dump, "out");
+  EXPECT_EQ(options.json, "out.json");
+  EXPECT_TRUE(options.checkFinite);
+  EXPECT_EQ(options.threads, 2);
+  EXPECT_EQ(options.device, 1);
+  EXPECT_TRUE(options.cudaGraph);
+  EXPECT_EQ(options.maxMemory, int64_t(2) << 30);
+  // The last of a repeated option counts.
+  EXPECT_EQ(parse({"a.simb", "--steps", "1", "--steps", "2"}).steps, 2);
+}
+
+TEST(SimRunOptions, RejectsValuesOutsideTheirDomain) {
+  struct Case {
+    std::vector<const char *> args;
+    const char *message;
+  } cases[] = {
+      {{"a", "--steps", "-1"},
+       "--steps: '-1' is not an integer from 0 to 1000000000000"},
+      {{"a", "--steps", "1000000000001"}, "--steps: '1000000000001' is not"},
+      {{"a", "--repeat", "9223372036854775807"},
+       "--repeat: '9223372036854775807' is not an integer from 1 to 1000000"},
+      {{"a", "--group-size", "4097"}, "--group-size: '4097' is not"},
+      {{"a", "--threads", "0"}, "--threads: '0' is not"},
+      {{"a", "--device", "-1"}, "--device: '-1' is not a device ordinal"},
+      {{"a", "--report-every", "0"}, "--report-every: '0' is not"},
+      {{"a", "--check", "--check-tolerance", "inf"},
+       "--check-tolerance: 'inf' is not a positive finite number"},
+      {{"a", "--max-memory", "-1"}, "--max-memory: '-1' is not a size"},
+      {{"a", "--strategy", "best"}, "--strategy: unknown strategy 'best'"},
+      {{"a", "--backend", "tpu"}, "--backend: unknown backend 'tpu'"},
+      {{"a", "--reference", "cubic"},
+       "--reference: 'cubic' is not simple or exact"},
+      {{"a", "--set", "=1"}, "--set: '=1' is not NAME=VALUE"},
+      {{"a", "--json", ""}, "--json: expects a path"},
+      {{"a", "--steps"}, "--steps expects a value"},
+      {{"a", "--cuda-graph=yes"}, "--cuda-graph takes no value"},
+      {{"a", "--fast"}, "unknown option '--fast'"},
+      {{"a", "b"}, "more than one input: 'a' and 'b'"},
+      {{}, "no input scene"},
+  };
+  for (const Case &c : cases) {
+    std::string message = exitOf([&] { parse(c.args); }, kExitUsage);
+    EXPECT_TRUE(contains(message, c.message)) << message;
+    EXPECT_TRUE(contains(message, "(see sim-run --help)")) << message;
+  }
+}
+
+TEST(SimRunOptions, PrintsTheHelpOfEveryOption) {
+  std::string help = helpText();
+  for (const char *option :
+       {"--backend B ", "--strategy S ", "--steps N ", "--repeat K ",
+        "--report-every N ", "--set NAME=VALUE ", "--group-size G ",
+        "--reference simple|exact ", "--check ", "--check-tolerance X ",
+        "--dump DIR ", "--json FILE ", "--check-finite ", "--threads N ",
+        "--device N ", "--cuda-graph ", "--max-memory SIZE ", "-h, --help "})
+    EXPECT_TRUE(contains(help, "\n  " + std::string(option))) << option;
+  EXPECT_TRUE(contains(help, "130 or 143")) << help;
+}
+
+//===----------------------------------------------------------------------===//
+// Dump file names
+//===----------------------------------------------------------------------===//
+
+TEST(SimRunNames, KeepsPlainNamesAndEncodesTheRest) {
+  EXPECT_EQ(sanitiseName("X"), "X");
+  EXPECT_EQ(sanitiseName("pos_2.x-y"), "pos_2.x-y");
+  EXPECT_EQ(sanitiseName("../../x"), "%2E.%2F..%2Fx");
+  EXPECT_EQ(sanitiseName("a/b"), "a%2Fb");
+  EXPECT_EQ(sanitiseName(".hidden"), "%2Ehidden");
+  EXPECT_EQ(sanitiseName("."), "%2E");
+  EXPECT_EQ(sanitiseName(".."), "%2E.");
+  EXPECT_EQ(sanitiseName(""), "_");
+  EXPECT_EQ(sanitiseName("a b\tc\n"), "a%20b%09c%0A");
+  EXPECT_EQ(sanitiseName(std::string("nul\0x", 5)), "nul%00x");
+  EXPECT_EQ(sanitiseName("\xff\xfe"), "%FF%FE"); // invalid UTF-8
+  EXPECT_EQ(sanitiseName("\xce\xa9"), "%CE%A9"); // valid UTF-8 too
+  EXPECT_EQ(sanitiseName("100%"), "100%25");     // '%' itself
+  EXPECT_EQ(sanitiseName("C:\\x"), "C%3A%5Cx");
+}
+
+TEST(SimRunNames, NeverMakesAPathOrAnOddName) {
+  // Every byte value, alone and after a letter.
+  for (int c = 0; c < 256; ++c) {
+    for (std::string name :
+         {std::string(1, char(c)), "a" + std::string(1, char(c))}) {
+      std::string stem = sanitiseName(name);
+      ASSERT_FALSE(stem.empty());
+      EXPECT_NE(stem[0], '.') << c;
+      EXPECT_NE(stem, "..");
+      for (char s : stem)
+        EXPECT_TRUE(std::isalnum(static_cast<unsigned char>(s)) || s == '_' ||
+                    s == '.' || s == '-' || s == '%')
+            << c << ": " << stem;
+    }
+  }
+}
+
+TEST(SimRunNames, CutsLongNamesOutsideAnEscape) {
+  std::string stem = sanitiseName(std::string(300, '/'));
+  EXPECT_LE(stem.size(), kMaxStem);
+  EXPECT_EQ(stem.size() % 3, 0u); // whole %2F triples
+  EXPECT_EQ(sanitiseName(std::string(300, 'a')).size(), kMaxStem);
+  for (const char *suffix : kDumpSuffixes)
+    EXPECT_LE(kMaxStem + 8 + std::string(suffix).size(), 255u);
+}
+
+TEST(SimRunNames, MakesEveryDumpFileUnique) {
+  // "X.reference" would write X's reference file; the second "_" (an empty
+  // name) and the long names cut alike would overwrite the first.
+  std::string longA = std::string(250, 'a') + "1";
+  std::string longB = std::string(250, 'a') + "2";
+  std::vector<std::string> stems =
+      dumpStems({"X", "X.reference", "", "_", longA, longB, "_-2"});
+  EXPECT_EQ(stems[0], "X");
+  EXPECT_EQ(stems[1], "X.reference-2");
+  EXPECT_EQ(stems[2], "_");
+  EXPECT_EQ(stems[3], "_-2");
+  EXPECT_EQ(stems[4], std::string(kMaxStem, 'a'));
+  EXPECT_EQ(stems[5], std::string(kMaxStem, 'a') + "-2");
+  EXPECT_EQ(stems[6], "_-2-2");
+  std::set<std::string> files;
+  for (const std::string &stem : stems)
+    for (const char *suffix : kDumpSuffixes)
+      EXPECT_TRUE(files.insert(stem + suffix).second) << stem + suffix;
+}
+
+//===----------------------------------------------------------------------===//
+// Output paths
+//===----------------------------------------------------------------------===//
+
+class SimRunOutput : public ::testing::Test {
+protected:
+  void SetUp() override {
+    dir = makeTempDir();
+    input = dir + "/scene.simb";
+    writeFile(input, "bundle bytes");
+  }
+  void TearDown() override { std::system(("rm -rf '" + dir + "'").c_str()); }
+
+  std::string dir, input;
+};
+
+TEST_F(SimRunOutput, ResolvesPathsThatDoNotExistYet) {
+  std::string real = resolveDirectory(dir);
+  EXPECT_EQ(resolveOutputPath(dir + "/new/../scene.simb"),
+            real + "/scene.simb");
+  EXPECT_EQ(resolveOutputPath(dir + "/./a/b/../c.json"), real + "/a/c.json");
+  ASSERT_EQ(symlink(dir.c_str(), (dir + "/link").c_str()), 0);
+  EXPECT_EQ(resolveOutputPath(dir + "/link/x.json"), real + "/x.json");
+  // The last component is not followed: a rename replaces the link.
+  EXPECT_EQ(resolveOutputPath(dir + "/link"), real + "/link");
+}
+
+TEST_F(SimRunOutput, RefusesToWriteOntoTheInput) {
+  ASSERT_EQ(symlink(dir.c_str(), (dir + "/via").c_str()), 0);
+  ASSERT_EQ(link(input.c_str(), (dir + "/hard.simb").c_str()), 0);
+  ASSERT_EQ(symlink("scene.simb", (dir + "/soft.simb").c_str()), 0);
+  for (std::string path :
+       {input, dir + "/./scene.simb", dir + "/via/scene.simb",
+        dir + "/missing/../scene.simb", dir + "/hard.simb"}) {
+    OutputPlan plan;
+    plan.addInput(input);
+    std::string message =
+        exitOf([&] { plan.addFile("--json", path); }, kExitUsage);
+    EXPECT_TRUE(contains(message,
+                         "--json: '" + path + "' is the input '" + input + "'"))
+        << message;
+  }
+  // An input given through a symlink: neither the link nor its target.
+  for (std::string path : {dir + "/soft.simb", input}) {
+    OutputPlan plan;
+    plan.addInput(dir + "/soft.simb");
+    exitOf([&] { plan.addFile("--json", path); }, kExitUsage);
+  }
+  // A symlink to the input as the output is fine: it is replaced.
+  OutputPlan plan;
+  plan.addInput(input);
+  plan.addFile("--json", dir + "/soft.simb");
+}
+
+TEST_F(SimRunOutput, RefusesTwoOutputsOnOneFile) {
+  OutputPlan plan;
+  plan.addInput(input);
+  plan.addDirectory("--dump", dir + "/out");
+  plan.addFile("--json", dir + "/out/X.npy");
+  std::string message =
+      exitOf([&] { plan.addFile("--dump (buffer 'X')", dir + "/out/./X.npy"); },
+             kExitUsage);
+  EXPECT_TRUE(contains(message, "is also the file of --json")) << message;
+}
+
+TEST_F(SimRunOutput, RefusesFoldersThatCannotBeUsed) {
+  OutputPlan plan;
+  EXPECT_TRUE(
+      contains(exitOf([&] { plan.addDirectory("--dump", input); }, kExitUsage),
+               "--dump: '" + input + "' is not a directory"));
+  EXPECT_TRUE(contains(
+      exitOf([&] { plan.addDirectory("--dump", input + "/sub"); }, kExitUsage),
+      "is not a directory"));
+  EXPECT_TRUE(contains(exitOf([&] { plan.addFile("--json", dir); }, kExitUsage),
+                       "--json: '" + dir + "' is a directory, not a file"));
+  EXPECT_TRUE(
+      contains(exitOf([&] { plan.addFile("--json", dir + "/"); }, kExitUsage),
+               "is a directory, not a file"));
+  // Missing folders that can be created are fine.
+  plan.addDirectory("--dump", dir + "/a/b/c");
+  plan.addFile("--json", dir + "/x/y.json");
+  if (geteuid() != 0) {
+    // (root writes anywhere)
+    ASSERT_EQ(mkdir((dir + "/ro").c_str(), 0555), 0);
+    EXPECT_TRUE(
+        contains(exitOf([&] { plan.addDirectory("--dump", dir + "/ro/sub"); },
+                        kExitUsage),
+                 "--dump: cannot create directory"));
+    EXPECT_TRUE(contains(
+        exitOf([&] { plan.addFile("--json", dir + "/ro/x.json"); }, kExitUsage),
+        "--json: cannot write into directory"));
+  }
+}
+
+TEST_F(SimRunOutput, ReplacesASymlinkInsteadOfFollowingIt) {
+  std::string target = dir + "/target";
+  writeFile(target, "keep me");
+  std::string path = dir + "/out.json";
+  ASSERT_EQ(symlink(target.c_str(), path.c_str()), 0);
+  writeFileAtomically(path, "{}\n");
+  EXPECT_EQ(readFile(target), "keep me");
+  struct stat info;
+  ASSERT_EQ(lstat(path.c_str(), &info), 0);
+  EXPECT_TRUE(S_ISREG(info.st_mode));
+  EXPECT_EQ(readFile(path), "{}\n");
+  // No temporary file is left, and missing folders are made.
+  writeFileAtomically(dir + "/new/dir/x.npy", "x");
+  EXPECT_EQ(readFile(dir + "/new/dir/x.npy"), "x");
+  std::string listing = dir + "/listing";
+  std::system(("ls -A '" + dir + "' '" + dir + "/new/dir' > '" + listing + "'")
+                  .c_str());
+  EXPECT_FALSE(contains(readFile(listing), ".sim-run-")) << readFile(listing);
+}
+
+TEST_F(SimRunOutput, GivesFilesTheUsualPermissions) {
+  mode_t old = umask(027);
+  captureUmask();
+  writeFileAtomically(dir + "/perm", "x");
+  umask(old);
+  captureUmask();
+  struct stat info;
+  ASSERT_EQ(stat((dir + "/perm").c_str(), &info), 0);
+  EXPECT_EQ(info.st_mode & 0777, 0640u);
+}
+
+//===----------------------------------------------------------------------===//
+// --check and non-finite values
+//===----------------------------------------------------------------------===//
+
+namespace {
+
+Buffer doubles(const std::string &name, std::vector<double> values) {
+  Buffer buffer;
+  buffer.name = name;
+  buffer.scalarBytes = 8;
+  buffer.bytes.resize(values.size() * 8);
+  std::memcpy(buffer.bytes.data(), values.data(), buffer.bytes.size());
+  return buffer;
+}
+
+} // namespace
+
+TEST(SimRunCheck, FailsOnNonFiniteValuesEvenWhenBothSidesAgree) {
+  Buffer nan = doubles("X", {1, NAN, 2, NAN});
+  Check check = compareWithReference({nan}, {nan}, {}, {}, 0);
+  ASSERT_EQ(check.buffers.size(), 1u);
+  EXPECT_FALSE(check.buffers[0].pass);
+  EXPECT_EQ(check.buffers[0].nonFiniteBackend, 2u);
+  EXPECT_EQ(check.buffers[0].nonFiniteReference, 2u);
+  ASSERT_EQ(check.failures.size(), 1u);
+  EXPECT_EQ(check.failures[0], "buffer X has 2 non-finite values on the "
+                               "backend and 2 on the reference executor");
+
+  Buffer inf = doubles("V", {INFINITY, 0});
+  Buffer fine = doubles("V", {0, 0});
+  check = compareWithReference({inf}, {fine}, {}, {}, 0);
+  EXPECT_EQ(check.failures,
+            std::vector<std::string>{
+                "buffer V has 1 non-finite value on the backend"});
+  check = compareWithReference({fine}, {inf}, {}, {}, 0);
+  EXPECT_EQ(check.failures,
+            std::vector<std::string>{
+                "buffer V has 1 non-finite value on the reference executor"});
+  check = compareWithReference({fine}, {fine}, {}, {}, 0);
+  EXPECT_TRUE(check.pass());
+}
+
+TEST(SimRunCheck, FailsOnNonFiniteTotals) {
+  std::vector<Check::TotalRow> rows;
+  std::vector<std::string> failures;
+  compareTotals({"E", "P"}, 10, {NAN, INFINITY}, {NAN, INFINITY}, 1e-8, rows,
+                failures);
+  ASSERT_EQ(rows.size(), 2u);
+  EXPECT_FALSE(rows[0].pass);
+  EXPECT_FALSE(rows[1].pass);
+  ASSERT_EQ(failures.size(), 2u);
+  EXPECT_TRUE(contains(failures[0], "total E at base step 10 is not finite"))
+      << failures[0];
+  EXPECT_TRUE(contains(failures[1], "total P at base step 10 is not finite"))
+      << failures[1];
+}
+
+TEST(SimRunCheck, NamesControlCharactersVisibly) {
+  EXPECT_EQ(displayName("a\x01\nb\x7f"), "a\\x01\\x0Ab\\x7F");
+  EXPECT_EQ(displayName("X"), "X");
+}

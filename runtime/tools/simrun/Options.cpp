@@ -1,0 +1,441 @@
+//===- Options.cpp - sim-run's command line -------------------------------===//
+//
+// The options are declared once, with CLI11: name, value name, help text
+// and a transform that checks the value's domain and writes it back in
+// canonical decimal (so that CLI11's own conversion, which reads "010" as
+// octal, never sees anything but plain digits). A custom formatter prints
+// the help in the layout of LLVM's tools, which docs/Runtime.md shows.
+//
+//===----------------------------------------------------------------------===//
+
+#include "Options.h"
+
+#include <CLI/CLI.hpp>
+
+#include <cerrno>
+#include <cmath>
+#include <cstdlib>
+#include <limits>
+#include <sstream>
+
+namespace simrun {
+
+void usageError(const std::string &message) {
+  throw Exit{kExitUsage, message + " (see sim-run --help)"};
+}
+
+void runError(const std::string &message) { throw Exit{kExitFailure, message}; }
+
+//===----------------------------------------------------------------------===//
+// Value parsers
+//===----------------------------------------------------------------------===//
+
+std::optional<int64_t> parseInteger(std::string_view text, int64_t min,
+                                    int64_t max) {
+  bool negative = !text.empty() && text.front() == '-';
+  std::string_view digits = negative ? text.substr(1) : text;
+  if (digits.empty())
+    return std::nullopt;
+  // Accumulate the magnitude as unsigned, so that INT64_MIN parses too.
+  uint64_t magnitude = 0;
+  for (char c : digits) {
+    if (c < '0' || c > '9')
+      return std::nullopt;
+    uint64_t digit = uint64_t(c - '0');
+    if (magnitude > (std::numeric_limits<uint64_t>::max() - digit) / 10)
+      return std::nullopt;
+    magnitude = magnitude * 10 + digit;
+  }
+  uint64_t limit = negative ? uint64_t(std::numeric_limits<int64_t>::max()) + 1
+                            : uint64_t(std::numeric_limits<int64_t>::max());
+  if (magnitude > limit)
+    return std::nullopt;
+  int64_t value = negative ? int64_t(0 - magnitude) : int64_t(magnitude);
+  if (value < min || value > max)
+    return std::nullopt;
+  return value;
+}
+
+std::optional<int64_t> parseSize(std::string_view text) {
+  int shift = 0;
+  if (!text.empty()) {
+    switch (text.back()) {
+    case 'K':
+    case 'k':
+      shift = 10;
+      break;
+    case 'M':
+    case 'm':
+      shift = 20;
+      break;
+    case 'G':
+    case 'g':
+      shift = 30;
+      break;
+    case 'T':
+    case 't':
+      shift = 40;
+      break;
+    }
+  }
+  if (shift)
+    text.remove_suffix(1);
+  if (!text.empty() && text.front() == '-')
+    return std::nullopt;
+  std::optional<int64_t> count =
+      parseInteger(text, 0, std::numeric_limits<int64_t>::max());
+  if (!count || *count > (std::numeric_limits<int64_t>::max() >> shift))
+    return std::nullopt;
+  return *count << shift;
+}
+
+std::optional<double> parsePositive(std::string_view text) {
+  std::string copy(text);
+  if (copy.empty() || std::isspace(static_cast<unsigned char>(copy[0])))
+    return std::nullopt;
+  char *end = nullptr;
+  errno = 0;
+  double value = std::strtod(copy.c_str(), &end);
+  if (*end || !std::isfinite(value) || !(value > 0))
+    return std::nullopt;
+  return value;
+}
+
+namespace {
+
+//===----------------------------------------------------------------------===//
+// Validators: check a value's domain, rewrite it in canonical form
+//===----------------------------------------------------------------------===//
+
+/// "'<text>'": the value as the user wrote it, quoted.
+std::string inQuotes(const std::string &text) { return "'" + text + "'"; }
+
+/// An integer option in [min, max]; `domain` describes the range in words.
+CLI::Validator integerIn(int64_t min, int64_t max, const std::string &domain) {
+  return CLI::Validator(
+      [=](std::string &text) -> std::string {
+        std::optional<int64_t> value = parseInteger(text, min, max);
+        if (!value)
+          return inQuotes(text) + " is not " + domain;
+        text = std::to_string(*value);
+        return "";
+      },
+      "", "integer");
+}
+
+CLI::Validator size() {
+  return CLI::Validator(
+      [](std::string &text) -> std::string {
+        std::optional<int64_t> bytes = parseSize(text);
+        if (!bytes)
+          return inQuotes(text) +
+                 " is not a size in bytes (digits with an optional K, M, G "
+                 "or T, at most 8 EiB)";
+        text = std::to_string(*bytes);
+        return "";
+      },
+      "", "size");
+}
+
+CLI::Validator positiveNumber() {
+  return CLI::Validator(
+      [](std::string &text) -> std::string {
+        if (!parsePositive(text))
+          return inQuotes(text) + " is not a positive finite number";
+        return "";
+      },
+      "", "positive");
+}
+
+/// A name that `parse` (sim_strategy_parse, sim_backend_parse) knows.
+template <typename T>
+CLI::Validator knownName(sim_status (*parse)(const char *, T *)) {
+  return CLI::Validator(
+      [=](std::string &text) -> std::string {
+        T value;
+        if (parse(text.c_str(), &value) != SIM_OK)
+          return sim_last_error();
+        return "";
+      },
+      "", "name");
+}
+
+CLI::Validator oneOf(std::vector<std::string> names, const std::string &list) {
+  return CLI::Validator(
+      [=](std::string &text) -> std::string {
+        for (const std::string &name : names)
+          if (text == name)
+            return "";
+        return inQuotes(text) + " is not " + list;
+      },
+      "", "one of");
+}
+
+CLI::Validator assignment() {
+  return CLI::Validator(
+      [](std::string &text) -> std::string {
+        size_t equals = text.find('=');
+        if (equals == 0 || equals == std::string::npos)
+          return inQuotes(text) + " is not NAME=VALUE";
+        return "";
+      },
+      "", "assignment");
+}
+
+CLI::Validator path() {
+  return CLI::Validator(
+      [](std::string &text) -> std::string {
+        if (text.empty())
+          return "expects a path, not ''";
+        return "";
+      },
+      "", "path");
+}
+
+//===----------------------------------------------------------------------===//
+// Help
+//===----------------------------------------------------------------------===//
+
+constexpr const char *kOverview =
+    "run a sim scene bundle and report time, work and error";
+
+constexpr const char *kIntro =
+    R"(A .mlir scene is first translated with `sim-translate --sim-to-bundle`
+(looked up next to sim-run, then on PATH) into a temporary bundle.
+)";
+
+constexpr const char *kFooter =
+    R"(Every output is written to a temporary file in its folder and renamed
+into place, never onto an input. The first SIGINT or SIGTERM stops the run
+at its next host synchronisation: sim-run reports and writes what is
+complete and skips the rest; a second one kills it.
+
+ENVIRONMENT:
+  SIM_CUDA_DRIVER             the driver library to load instead of libcuda.so.1
+
+EXIT STATUS: 0 on success, 1 when the run fails or --check finds a
+difference, 2 on a usage error (before anything runs), 130 or 143 when
+SIGINT or SIGTERM stopped it.
+)";
+
+/// The layout of LLVM's tools: overview, usage, options with their value
+/// names ("--steps N"), -h last, then the footer.
+class HelpFormatter : public CLI::Formatter {
+public:
+  HelpFormatter() { column_width(30); }
+
+  std::string make_help(const CLI::App *app, std::string,
+                        CLI::AppFormatMode) const override {
+    std::ostringstream out;
+    out << "OVERVIEW: " << app->get_description() << "\n\n"
+        << "USAGE: sim-run <scene.simb | scene.mlir> [options]\n\n"
+        << kIntro << "\nOPTIONS:\n";
+    const CLI::Option *help = app->get_help_ptr();
+    for (const CLI::Option *option : app->get_options())
+      if (option->nonpositional() && option != help)
+        out << make_option(option, false);
+    out << make_option(help, false) << "\n" << app->get_footer();
+    return out.str();
+  }
+
+  std::string make_option_name(const CLI::Option *option, bool) const override {
+    std::string names;
+    for (const std::string &name : option->get_snames())
+      names += (names.empty() ? "-" : ", -") + name;
+    for (const std::string &name : option->get_lnames())
+      names += (names.empty() ? "--" : ", --") + name;
+    return names;
+  }
+};
+
+//===----------------------------------------------------------------------===//
+// The options
+//===----------------------------------------------------------------------===//
+
+/// sim-run's options on `app`, stored into `options`; --backend and
+/// --strategy, --set and --reference go through the strings given.
+void declareOptions(CLI::App &app, Options &options, std::string &backend,
+                    std::string &strategy, std::vector<std::string> &sets) {
+  app.formatter(std::make_shared<HelpFormatter>());
+  app.footer(kFooter);
+  app.set_help_flag("-h,--help", "print this help");
+  // A repeated option takes its last value, as in most tools; --set
+  // collects every one.
+  app.option_defaults()->multi_option_policy(CLI::MultiOptionPolicy::TakeLast);
+  // Unknown options and extra inputs are reported by parseOptions.
+  app.allow_extras();
+
+  app.add_option("scene", options.input);
+  app.add_option("--backend", backend,
+                 "auto, cpu, cuda or reference (default auto: CUDA\n"
+                 "when a driver, a device and the strategy's PTX\n"
+                 "are there; reference: the reference executor)")
+      ->option_text("B")
+      ->check(knownName(&sim_backend_parse));
+  app.add_option("--strategy", strategy,
+                 "simple, traditional, hip or hip-cache (default hip)")
+      ->option_text("S")
+      ->check(knownName(&sim_strategy_parse));
+  app.add_option("--steps", options.steps,
+                 "base steps to run, 0 to 10^12 (default 100)")
+      ->option_text("N")
+      ->transform(
+          integerIn(0, kMaxSteps, "an integer from 0 to 1000000000000"));
+  app.add_option("--repeat", options.repeat,
+                 "run K times from the initial state and report the\n"
+                 "median; with K > 1 one more warm-up run comes\n"
+                 "first and is not counted (1 to 10^6, default 1)")
+      ->option_text("K")
+      ->transform(integerIn(1, kMaxRepeat, "an integer from 1 to 1000000"));
+  app.add_option("--report-every", options.reportEvery,
+                 "run once more (a session of its own) from the\n"
+                 "initial state in chunks of N >= 1 base steps and\n"
+                 "print the scene's totals at every output time\n"
+                 "(0, N, 2N, ..., the end)")
+      ->option_text("N")
+      ->transform(
+          integerIn(1, kMaxSteps, "an integer from 1 to 1000000000000"));
+  app.add_option("--set", sets,
+                 "set range, dt or a scene parameter (repeatable)")
+      ->option_text("NAME=VALUE")
+      ->allow_extra_args(false)
+      ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll)
+      ->check(assignment());
+  app.add_option("--group-size", options.groupSize,
+                 "threads per group, 1 to 4096 (default: the plan's;\n"
+                 "on CUDA a multiple of 32 up to 1024)")
+      ->option_text("G")
+      ->transform(integerIn(1, kMaxGroupSize, "an integer from 1 to 4096"));
+  app.add_option("--reference", options.reference,
+                 "also run the simple strategy on the same backend,\n"
+                 "or evaluate the scene's exact solution at the\n"
+                 "final time, and report per observed buffer the\n"
+                 "max-abs and the RMS-relative error")
+      ->option_text("simple|exact")
+      ->check(oneOf({"simple", "exact"}, "simple or exact"));
+  CLI::Option *check =
+      app.add_flag("--check", options.check,
+                   "also run the reference executor with the same\n"
+                   "strategy, group size, --set values and steps,\n"
+                   "and compare per observed buffer, total,\n"
+                   "evaluations and big steps; exit status 1 if they\n"
+                   "disagree or a compared value is NaN or infinite");
+  check->disable_flag_override();
+  app.add_option("--check-tolerance", options.checkTolerance,
+                 "a buffer passes --check when max-abs <= X *\n"
+                 "max(1, max|reference|) (default 1e-4 for f32\n"
+                 "buffers, 1e-10 for f64; 1e-8 for totals)")
+      ->option_text("X")
+      ->check(positiveNumber())
+      ->needs(check);
+  app.add_option("--dump", options.dump,
+                 "write the observed buffers as DIR/<buffer>.npy\n"
+                 "(and the reference as <buffer>.reference.npy,\n"
+                 "--check's as <buffer>.check.npy; a name's bytes\n"
+                 "other than A-Z a-z 0-9 _ . -, and a leading '.',\n"
+                 "as %XX)")
+      ->option_text("DIR")
+      ->check(path());
+  app.add_option("--json", options.json, "write every metric as JSON")
+      ->option_text("FILE")
+      ->check(path());
+  app.add_flag("--check-finite", options.checkFinite,
+               "run launch by launch and stop at the first NaN\n"
+               "or infinity, naming base step, component and item")
+      ->disable_flag_override();
+  app.add_option("--threads", options.threads,
+                 "CPU backend threads, 1 to 1024 (default: all)")
+      ->option_text("N")
+      ->transform(integerIn(1, kMaxThreads, "an integer from 1 to 1024"));
+  app.add_option("--device", options.device, "CUDA device ordinal (default 0)")
+      ->option_text("N")
+      ->transform(integerIn(0, std::numeric_limits<int32_t>::max(),
+                            "a device ordinal (0 or more)"));
+  app.add_flag("--cuda-graph", options.cudaGraph,
+               "replay the step phase as a CUDA graph")
+      ->disable_flag_override();
+  app.add_option("--max-memory", options.maxMemory,
+                 "the most bytes the state may take on the device,\n"
+                 "with an optional K, M, G or T (powers of 1024)\n"
+                 "(default 0: three quarters of its memory)")
+      ->option_text("SIZE")
+      ->transform(size());
+}
+
+/// CLI11's message for a parse error, in sim-run's words where CLI11's are
+/// unclear.
+std::string describe(const CLI::ParseError &error) {
+  std::string message = error.what();
+  // "--steps: 1 required N missing"
+  const std::string missing = " missing";
+  size_t colon = message.find(": ");
+  if (error.get_name() == "ArgumentMismatch" && colon != std::string::npos &&
+      message.size() > missing.size() &&
+      message.compare(message.size() - missing.size(), missing.size(),
+                      missing) == 0)
+    return message.substr(0, colon) + " expects a value";
+  // "check-finite was given a disallowed flag override"
+  const std::string override = " was given a disallowed flag override";
+  size_t at = message.find(override);
+  if (at != std::string::npos && at + override.size() == message.size())
+    return "--" + message.substr(0, at) + " takes no value";
+  return message;
+}
+
+} // namespace
+
+std::string helpText() {
+  Options options;
+  std::string backend, strategy;
+  std::vector<std::string> sets;
+  CLI::App app(kOverview, "sim-run");
+  declareOptions(app, options, backend, strategy, sets);
+  return app.help();
+}
+
+Options parseOptions(int argc, const char *const *argv) {
+  Options options;
+  std::string backend, strategy;
+  std::vector<std::string> sets;
+  CLI::App app(kOverview, "sim-run");
+  declareOptions(app, options, backend, strategy, sets);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::CallForHelp &) {
+    std::fputs(app.help().c_str(), stdout);
+    throw Exit{kExitSuccess, ""};
+  } catch (const CLI::ParseError &error) {
+    usageError(describe(error));
+  }
+
+  // What CLI11 did not take: unknown options, or more than one input.
+  bool afterSeparator = false;
+  for (const std::string &arg : app.remaining()) {
+    if (arg == "--" && !afterSeparator) {
+      afterSeparator = true;
+      continue;
+    }
+    if (!afterSeparator && arg.size() > 1 && arg[0] == '-')
+      usageError("unknown option '" + arg + "'");
+    if (options.input.empty()) {
+      options.input = arg;
+      continue;
+    }
+    usageError("more than one input: '" + options.input + "' and '" + arg +
+               "'");
+  }
+  if (options.input.empty())
+    usageError("no input scene");
+
+  if (!backend.empty())
+    sim_backend_parse(backend.c_str(), &options.backend);
+  if (!strategy.empty())
+    sim_strategy_parse(strategy.c_str(), &options.strategy);
+  for (const std::string &set : sets) {
+    size_t equals = set.find('=');
+    options.sets.emplace_back(set.substr(0, equals), set.substr(equals + 1));
+  }
+  return options;
+}
+
+} // namespace simrun

@@ -1,0 +1,454 @@
+//===- Report.cpp - sim-run's table and JSON ------------------------------===//
+
+#include "Report.h"
+
+#include "Signals.h"
+
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+namespace simrun {
+
+using Json = nlohmann::ordered_json;
+
+bool Results::interrupted() const {
+  for (const PartState *part : {&main.state, &reference, &totals, &checkState})
+    if (part->stage == Stage::Cut || part->stage == Stage::Skipped)
+      return true;
+  return false;
+}
+
+std::string formatTime(double seconds) {
+  char text[32];
+  if (seconds < 1e-3)
+    std::snprintf(text, sizeof text, "%.1f us", seconds * 1e6);
+  else if (seconds < 1)
+    std::snprintf(text, sizeof text, "%.3f ms", seconds * 1e3);
+  else
+    std::snprintf(text, sizeof text, "%.3f s", seconds);
+  return text;
+}
+
+std::string formatBytes(int64_t bytes) {
+  if (bytes < 1024)
+    return std::to_string(bytes) + (bytes == 1 ? " byte" : " bytes");
+  const char *units[] = {"KiB", "MiB", "GiB", "TiB", "PiB", "EiB"};
+  double value = double(bytes);
+  int unit = -1;
+  while (value >= 1024 && unit < 5) {
+    value /= 1024;
+    ++unit;
+  }
+  char text[32];
+  std::snprintf(text, sizeof text, "%.2f %s", value, units[unit]);
+  return text;
+}
+
+double median(std::vector<double> values) {
+  if (values.empty())
+    return 0;
+  std::sort(values.begin(), values.end());
+  size_t n = values.size();
+  return n % 2 ? values[n / 2] : (values[n / 2 - 1] + values[n / 2]) / 2;
+}
+
+//===----------------------------------------------------------------------===//
+// The table
+//===----------------------------------------------------------------------===//
+
+namespace {
+
+void row(const std::string &name, const std::string &value) {
+  std::printf("  %-16s %s\n", name.c_str(), value.c_str());
+}
+
+std::string cutText(const PartState &state) {
+  return "interrupted at base step " + std::to_string(state.reached) + " of " +
+         std::to_string(state.of);
+}
+
+/// "; not compared" and the like for a part that a signal cut or skipped.
+std::string notDone(const PartState &state, const char *what) {
+  if (state.stage == Stage::Cut)
+    return cutText(state) + "; " + what;
+  return std::string("not run (interrupted)");
+}
+
+void printHeader(const MainRun &main) {
+  std::printf("scene %s, strategy %s, backend %s: %s\n",
+              displayName(main.scene).c_str(), main.strategy.c_str(),
+              main.backend.c_str(), main.device.c_str());
+  if (main.showNote && !main.backendNote.empty())
+    std::printf("  (not CUDA: %s)\n", main.backendNote.c_str());
+  std::printf("range %lld, dt %s, group size %lld, %lld base steps",
+              (long long)main.range, main.dtText.c_str(),
+              (long long)main.groupSize, (long long)main.steps);
+  if (main.repeat > 1)
+    std::printf(", median of %lld runs after a warm-up",
+                (long long)main.repeat);
+  std::printf("\n");
+  if (main.state.stage == Stage::Cut) {
+    std::string run = main.repeat == 1 ? ""
+                      : main.cutRun == 0
+                          ? " (in the warm-up)"
+                          : " (in run " + std::to_string(main.cutRun) + " of " +
+                                std::to_string(main.repeat) + ")";
+    std::printf("%s%s\n", cutText(main.state).c_str(), run.c_str());
+  }
+  std::printf("\n");
+}
+
+void printMetrics(const MainRun &main) {
+  row("wall time", formatTime(main.wall));
+  row("kernel time", formatTime(main.kernel));
+  const sim_metrics &metrics = main.metrics;
+  row("launches", std::to_string(metrics.launches) +
+                      (metrics.graph_launches
+                           ? " (" + std::to_string(metrics.graph_launches) +
+                                 " graph replays)"
+                           : ""));
+  row("host syncs", std::to_string(metrics.host_syncs));
+  row("memory", formatBytes(main.memoryBytes) + " (limit " +
+                    formatBytes(main.memoryLimit) + ")");
+  row("big steps", std::to_string(metrics.big_steps));
+  std::string sizes;
+  for (size_t m = 1; m < main.counts.histogram.size(); ++m)
+    if (int64_t count = main.counts.histogram[m])
+      sizes += (sizes.empty() ? "" : "  ") + std::to_string(m) + ": " +
+               std::to_string(count);
+  row("big-step sizes", sizes.empty() ? "-" : sizes);
+  std::string evaluations;
+  for (const auto &[component, count] : main.counts.evaluations)
+    evaluations += (evaluations.empty() ? "" : "  ") + displayName(component) +
+                   " " + std::to_string(count);
+  row("evaluations", evaluations.empty() ? "-" : evaluations);
+}
+
+void printReferenceErrors(const Results &results) {
+  if (results.referenceKind.empty())
+    return;
+  std::string label = "error vs " + results.referenceKind;
+  if (results.reference.stage != Stage::Done) {
+    row(label, notDone(results.reference, "not compared"));
+    return;
+  }
+  for (const ReferenceError &error : results.errors) {
+    std::string name = displayName(error.buffer);
+    if (error.available)
+      row(label, name + "  max-abs " + scientific(error.norms.maxAbs) +
+                     "  rms-rel " + scientific(error.norms.rmsRel));
+    else
+      row(label, name + "  (no exact solution)");
+  }
+}
+
+std::string formatTotals(const std::vector<std::string> &names,
+                         const std::vector<double> &values) {
+  std::string text;
+  for (size_t t = 0; t < names.size() && t < values.size(); ++t)
+    text += (t ? "  " : "") + displayName(names[t]) + " " +
+            scientific(values[t], 9);
+  return text;
+}
+
+void printTotals(const Results &results) {
+  const MainRun &main = results.main;
+  if (results.reportEvery > 0) {
+    std::printf("\ntotals every %lld base steps",
+                (long long)results.reportEvery);
+    if (results.totals.stage == Stage::Skipped)
+      std::printf(": not run (interrupted)\n");
+    else
+      std::printf("%s:\n", results.totals.stage == Stage::Cut
+                               ? (" (" + cutText(results.totals) + ")").c_str()
+                               : "");
+    for (const TotalsAt &at : results.totalsPerOutputTime)
+      std::printf("  T %lld  time %s  %s\n", (long long)at.time,
+                  scientific(double(at.time) * main.dt, 9).c_str(),
+                  formatTotals(main.totalNames, at.values).c_str());
+  }
+  if (!main.totalNames.empty())
+    std::printf("\ntotals  %s\n",
+                formatTotals(main.totalNames, main.totals).c_str());
+}
+
+void printCheck(const Results &results) {
+  if (results.checkState.stage == Stage::NotAsked)
+    return;
+  const MainRun &main = results.main;
+  std::printf("\ncheck against the reference executor (strategy %s, group "
+              "size %lld, %lld base steps)",
+              main.strategy.c_str(), (long long)main.groupSize,
+              (long long)main.steps);
+  if (!results.check) {
+    std::printf(": %s\n", notDone(results.checkState, "not compared").c_str());
+    return;
+  }
+  std::printf(":\n");
+  const Check &check = *results.check;
+  for (const Check::BufferRow &buffer : check.buffers) {
+    std::string nonFinite;
+    if (buffer.nonFiniteBackend || buffer.nonFiniteReference)
+      nonFinite = "  (non-finite: backend " +
+                  std::to_string(buffer.nonFiniteBackend) + ", reference " +
+                  std::to_string(buffer.nonFiniteReference) + ")";
+    std::printf("  buffer %s  max-abs %.3e  max-ref %.3e  rms-rel %.3e  "
+                "tolerance %.1e  %s%s\n",
+                displayName(buffer.buffer).c_str(), buffer.norms.maxAbs,
+                buffer.maxReference, buffer.norms.rmsRel, buffer.tolerance,
+                buffer.pass ? "pass" : "FAIL", nonFinite.c_str());
+  }
+  for (const Check::TotalRow &total : check.totals)
+    std::printf("  total %s  backend %.9e  reference %.9e  limit %.1e  %s\n",
+                displayName(total.total).c_str(), total.backend,
+                total.reference, total.limit, total.pass ? "pass" : "FAIL");
+  if (!check.totalsPerOutputTime.empty() && !main.totalNames.empty()) {
+    bool all = std::all_of(check.totalsPerOutputTime.begin(),
+                           check.totalsPerOutputTime.end(),
+                           [](const Check::TotalRow &row) { return row.pass; });
+    std::printf("  totals at %zu output times  %s\n",
+                check.totalsPerOutputTime.size() / main.totalNames.size(),
+                all ? "pass" : "FAIL");
+  }
+  auto text = [](int64_t count) {
+    return count < 0 ? std::string("-") : std::to_string(count);
+  };
+  auto same = [](bool equal) { return equal ? "equal" : "DIFFER"; };
+  for (const Check::CountRow &row : check.evaluations)
+    std::printf("  evaluations %s  backend %s  reference %s  %s\n",
+                displayName(row.component).c_str(), text(row.backend).c_str(),
+                text(row.reference).c_str(),
+                same(row.backend == row.reference));
+  std::printf("  big steps  backend %lld  reference %lld  %s\n",
+              (long long)check.backend.bigSteps,
+              (long long)check.reference.bigSteps,
+              same(check.backend.bigSteps == check.reference.bigSteps));
+  size_t sizes = std::max(check.backend.histogram.size(),
+                          check.reference.histogram.size());
+  for (size_t m = 1; m < sizes; ++m) {
+    int64_t mine =
+        m < check.backend.histogram.size() ? check.backend.histogram[m] : 0;
+    int64_t theirs =
+        m < check.reference.histogram.size() ? check.reference.histogram[m] : 0;
+    if (mine || theirs)
+      std::printf("  big-step size %zu  backend %lld  reference %lld  %s\n", m,
+                  (long long)mine, (long long)theirs, same(mine == theirs));
+  }
+  std::string verdict = "pass";
+  if (!check.pass()) {
+    verdict = "FAIL: ";
+    for (size_t i = 0; i < check.failures.size(); ++i)
+      verdict += (i ? "; " : "") + check.failures[i];
+  }
+  std::printf("check: %s\n", verdict.c_str());
+}
+
+} // namespace
+
+void printTable(const Results &results) {
+  printHeader(results.main);
+  printMetrics(results.main);
+  printReferenceErrors(results);
+  printTotals(results);
+  printCheck(results);
+  std::fflush(stdout);
+}
+
+//===----------------------------------------------------------------------===//
+// JSON
+//===----------------------------------------------------------------------===//
+
+namespace {
+
+/// JSON has no NaN or infinity: null.
+Json number(double value) {
+  return std::isfinite(value) ? Json(value) : Json(nullptr);
+}
+
+Json histogram(const std::vector<int64_t> &counts) {
+  Json sizes = Json::object();
+  for (size_t m = 1; m < counts.size(); ++m)
+    sizes[std::to_string(m)] = counts[m];
+  return sizes;
+}
+
+Json evaluations(const RunCounts &counts) {
+  Json components = Json::object();
+  for (const auto &[component, count] : counts.evaluations)
+    components[component] = count;
+  return components;
+}
+
+Json totals(const std::vector<std::string> &names,
+            const std::vector<double> &values) {
+  Json object = Json::object();
+  for (size_t t = 0; t < names.size() && t < values.size(); ++t)
+    object[names[t]] = number(values[t]);
+  return object;
+}
+
+Json interruption(const Results &results) {
+  if (!results.interrupted())
+    return nullptr;
+  Json during = nullptr, reached = nullptr, of = nullptr;
+  Json skipped = Json::array();
+  struct Part {
+    const char *name;
+    const PartState &state;
+  };
+  std::string mainName =
+      results.main.cutRun == 0 && results.main.repeat > 1 ? "warm-up" : "run";
+  // In the order they run.
+  Part parts[] = {{mainName.c_str(), results.main.state},
+                  {"reference", results.reference},
+                  {"totals_per_output_time", results.totals},
+                  {"check", results.checkState}};
+  for (const Part &part : parts) {
+    if (part.state.stage == Stage::Cut) {
+      during = part.name;
+      reached = part.state.reached;
+      of = part.state.of;
+    } else if (part.state.stage == Stage::Skipped) {
+      skipped.push_back(part.name);
+    }
+  }
+  Json object;
+  object["signal"] = signalName(results.signal);
+  object["during"] = during;
+  if (results.main.state.stage == Stage::Cut && results.main.repeat > 1)
+    object["run"] = results.main.cutRun;
+  object["base_step"] = reached;
+  object["of"] = of;
+  object["skipped"] = skipped;
+  return object;
+}
+
+Json checkJson(const Results &results) {
+  if (!results.check)
+    return nullptr;
+  const Check &check = *results.check;
+  const MainRun &main = results.main;
+  Json object;
+  object["strategy"] = main.strategy;
+  object["group_size"] = main.groupSize;
+  object["steps"] = main.steps;
+  object["pass"] = check.pass();
+  Json totalRows = Json::object();
+  for (const Check::TotalRow &row : check.totals)
+    totalRows[row.total] = {{"backend", number(row.backend)},
+                            {"reference", number(row.reference)},
+                            {"limit", number(row.limit)},
+                            {"pass", row.pass}};
+  object["totals"] = totalRows;
+  Json buffers = Json::object();
+  for (const Check::BufferRow &row : check.buffers)
+    buffers[row.buffer] = {{"max_abs", number(row.norms.maxAbs)},
+                           {"max_reference", number(row.maxReference)},
+                           {"rms_rel", number(row.norms.rmsRel)},
+                           {"tolerance", number(row.tolerance)},
+                           {"limit", number(row.limit)},
+                           {"non_finite",
+                            {{"backend", row.nonFiniteBackend},
+                             {"reference", row.nonFiniteReference}}},
+                           {"pass", row.pass}};
+  object["buffers"] = buffers;
+  object["evaluations"] = {{"backend", evaluations(check.backend)},
+                           {"reference", evaluations(check.reference)},
+                           {"equal", check.evaluationsEqual()}};
+  object["big_steps"] = {
+      {"backend", check.backend.bigSteps},
+      {"reference", check.reference.bigSteps},
+      {"equal", check.backend.bigSteps == check.reference.bigSteps}};
+  object["big_step_histogram"] = {
+      {"backend", histogram(check.backend.histogram)},
+      {"reference", histogram(check.reference.histogram)},
+      {"equal", check.backend.histogram == check.reference.histogram}};
+  object["failures"] = check.failures;
+  return object;
+}
+
+Json dumpJson(const Results &results) {
+  if (results.dumpDir.empty())
+    return nullptr;
+  Json files = Json::array();
+  auto name = [](const std::string &file) {
+    return file.empty() ? Json(nullptr) : Json(file);
+  };
+  for (const DumpFiles &dump : results.dumpFiles)
+    files.push_back({{"buffer", dump.buffer},
+                     {"state", name(dump.state)},
+                     {"reference", name(dump.reference)},
+                     {"check", name(dump.check)}});
+  return {{"directory", results.dumpDir}, {"files", files}};
+}
+
+} // namespace
+
+std::string toJson(const Results &results) {
+  const MainRun &main = results.main;
+  Json json;
+  json["scene"] = main.scene;
+  json["strategy"] = main.strategy;
+  json["backend"] = main.backend;
+  json["device"] = main.device;
+  json["backend_note"] = main.backendNote;
+  json["range"] = main.range;
+  json["dt"] = number(main.dt);
+  json["group_size"] = main.groupSize;
+  json["steps"] = main.steps;
+  json["steps_done"] =
+      main.state.stage == Stage::Cut ? main.state.reached : main.steps;
+  json["repeat"] = main.repeat;
+  json["interrupted"] = results.interrupted();
+  json["interruption"] = interruption(results);
+  json["max_memory"] = main.maxMemory;
+  json["memory_bytes"] = main.memoryBytes;
+  json["memory_limit"] = main.memoryLimit;
+  json["wall_seconds"] = number(main.wall);
+  json["kernel_seconds"] = number(main.kernel);
+  json["wall_seconds_runs"] = Json::array();
+  for (double wall : main.walls)
+    json["wall_seconds_runs"].push_back(number(wall));
+  json["kernel_seconds_runs"] = Json::array();
+  for (double kernel : main.kernels)
+    json["kernel_seconds_runs"].push_back(number(kernel));
+  json["launches"] = main.metrics.launches;
+  json["graph_launches"] = main.metrics.graph_launches;
+  json["host_syncs"] = main.metrics.host_syncs;
+  json["big_steps"] = main.metrics.big_steps;
+  json["big_step_histogram"] = histogram(main.counts.histogram);
+  json["evaluations"] = evaluations(main.counts);
+  json["totals"] = totals(main.totalNames, main.totals);
+  if (results.reportEvery > 0 && results.totals.stage != Stage::Skipped) {
+    Json series = Json::array();
+    for (const TotalsAt &at : results.totalsPerOutputTime) {
+      Json point;
+      point["T"] = at.time;
+      for (size_t t = 0; t < main.totalNames.size() && t < at.values.size();
+           ++t)
+        point[main.totalNames[t]] = number(at.values[t]);
+      series.push_back(point);
+    }
+    json["totals_per_output_time"] = series;
+  } else {
+    json["totals_per_output_time"] = nullptr;
+  }
+  json["reference"] = results.referenceKind.empty()
+                          ? Json(nullptr)
+                          : Json(results.referenceKind);
+  Json errors = Json::object();
+  if (results.reference.stage == Stage::Done)
+    for (const ReferenceError &error : results.errors)
+      if (error.available)
+        errors[error.buffer] = {{"max_abs", number(error.norms.maxAbs)},
+                                {"rms_rel", number(error.norms.rmsRel)}};
+  json["error"] = errors;
+  json["check"] = checkJson(results);
+  json["dump"] = dumpJson(results);
+  return json.dump(2, ' ', false, Json::error_handler_t::replace) + "\n";
+}
+
+} // namespace simrun

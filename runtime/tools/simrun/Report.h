@@ -1,0 +1,129 @@
+//===- Report.h - sim-run's table and JSON ----------------------*- C++ -*-===//
+//
+// The results of a sim-run, gathered from the sessions as plain values (so
+// that a session can be destroyed, and its state freed, as soon as its
+// part is done), and the two ways they are reported: the table on stdout
+// and the JSON of --json, written with nlohmann-json.
+//
+//===----------------------------------------------------------------------===//
+
+#ifndef SIM_RUN_REPORT_H
+#define SIM_RUN_REPORT_H
+
+#include "Compare.h"
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace simrun {
+
+/// A part of a sim-run after a signal: done, cut short by it, or not
+/// started.
+enum class Stage { NotAsked, Done, Cut, Skipped };
+
+struct PartState {
+  Stage stage = Stage::NotAsked;
+  /// For Cut: the base step its run reached, of how many.
+  int64_t reached = 0, of = 0;
+};
+
+/// The totals at one output time.
+struct TotalsAt {
+  int64_t time = 0;
+  std::vector<double> values;
+};
+
+/// The measured session and its runs.
+struct MainRun {
+  std::string scene, strategy, backend, device;
+  /// Why `auto` did not choose CUDA (shown with --backend auto).
+  std::string backendNote;
+  bool showNote = false;
+  int64_t range = 0;
+  std::string dtText;
+  double dt = 0;
+  int64_t groupSize = 0;
+  int64_t steps = 0, repeat = 1, maxSteps = 1;
+  /// --max-memory, and the state's bytes and limit.
+  int64_t maxMemory = 0, memoryBytes = 0, memoryLimit = 0;
+
+  /// The last run's metrics and counters (the interrupted one if cut).
+  sim_metrics metrics{};
+  RunCounts counts;
+  /// Wall and kernel time of every measured run that completed, and their
+  /// medians; those of the interrupted run when a signal cut one.
+  std::vector<double> walls, kernels;
+  double wall = 0, kernel = 0;
+  /// Done, or Cut: reached/of base steps. `cutRun` is 0 for the warm-up,
+  /// else the measured run (1-based) the signal stopped.
+  PartState state;
+  int64_t cutRun = 0;
+
+  std::vector<std::string> totalNames;
+  /// At the end of the run (the base step reached when cut).
+  std::vector<double> totals;
+  /// The observed buffers at the end of the run.
+  std::vector<Buffer> values;
+};
+
+/// One observed buffer against --reference.
+struct ReferenceError {
+  std::string buffer;
+  /// False: the scene has no exact solution of the buffer.
+  bool available = false;
+  ErrorNorms norms;
+};
+
+/// A dump file's name per kind, empty for one not written.
+struct DumpFiles {
+  std::string buffer, state, reference, check;
+};
+
+struct Results {
+  MainRun main;
+
+  /// --reference: "", "simple" or "exact".
+  std::string referenceKind;
+  PartState reference;
+  std::vector<ReferenceError> errors;
+  /// Per observed buffer: the reference's values, if any.
+  std::vector<std::optional<Buffer>> referenceValues;
+
+  /// --check.
+  PartState checkState;
+  std::optional<Check> check;
+  std::vector<Buffer> checkValues;
+
+  /// --report-every.
+  int64_t reportEvery = 0;
+  PartState totals;
+  std::vector<TotalsAt> totalsPerOutputTime;
+
+  /// --dump: the folder and its files.
+  std::string dumpDir;
+  std::vector<DumpFiles> dumpFiles;
+
+  /// The signal that stopped sim-run (0: none).
+  int signal = 0;
+
+  /// Whether a signal cut or skipped anything.
+  bool interrupted() const;
+};
+
+/// The table on stdout.
+void printTable(const Results &results);
+
+/// The JSON of --json: the keys of docs/Runtime.md, NaN and infinities as
+/// null, invalid UTF-8 in names replaced by U+FFFD.
+std::string toJson(const Results &results);
+
+/// "4.282 ms", "12.5 us", "3.100 s".
+std::string formatTime(double seconds);
+/// "37 bytes", "1.50 KiB", "11.25 GiB".
+std::string formatBytes(int64_t bytes);
+double median(std::vector<double> values);
+
+} // namespace simrun
+
+#endif // SIM_RUN_REPORT_H
