@@ -18,6 +18,7 @@
 //
 //===----------------------------------------------------------------------===//
 
+#include "sim/Conversion/SimCommon/KernelNames.h"
 #include "sim/Conversion/SimCommon/KernelTarget.h"
 #include "sim/Dialect/Sim/IR/SimOps.h"
 
@@ -631,7 +632,7 @@ void SimulationLowering::evaluateItems(Kernel &kernel, ComponentOp component,
 /// Puts the clock in its initial state: T = 0, parity 0, no pending
 /// estimate, all counters zero. The host sets the end of each run.
 LogicalResult SimulationLowering::emitResetClock(OpBuilder &launches) {
-  Kernel kernel = beginKernel("reset_clock");
+  Kernel kernel = beginKernel(getKernelName(kernels, "reset_clock"));
   Value zero = b.i64(0);
   auto loop =
       scf::ForOp::create(b, b.loc, b.index(0), b.index(clockSlots), b.index(1));
@@ -647,7 +648,8 @@ LogicalResult SimulationLowering::emitResetClock(OpBuilder &launches) {
 /// The initial state of one buffer, into half 0.
 LogicalResult SimulationLowering::emitInit(BufferOp buffer,
                                            OpBuilder &launches) {
-  Kernel kernel = beginKernel(("init_" + buffer.getSymName()).str());
+  Kernel kernel =
+      beginKernel(getKernelName(kernels, "init", buffer.getSymName()));
   Value memory = kernel.values.buffers.lookup(buffer.getSymNameAttr());
   forEachItem(kernel, [&](const Lane &lane) {
     b.ifThen(lane.active, [&] {
@@ -663,7 +665,8 @@ LogicalResult SimulationLowering::emitInit(BufferOp buffer,
 /// The exact solution of one buffer at the launch's time argument.
 LogicalResult SimulationLowering::emitExact(BufferOp buffer,
                                             OpBuilder &launches) {
-  Kernel kernel = beginKernel(("exact_" + buffer.getSymName()).str(), buffer);
+  Kernel kernel =
+      beginKernel(getKernelName(kernels, "exact", buffer.getSymName()), buffer);
   Value out = kernel.values.snapshots.lookup(buffer.getSymNameAttr());
   kernel.values.snapshots.erase(buffer.getSymNameAttr());
   forEachItem(kernel, [&](const Lane &lane) {
@@ -683,8 +686,9 @@ LogicalResult SimulationLowering::emitExact(BufferOp buffer,
 /// parity selects. The per-item values go out as f64; the runtime sums them.
 LogicalResult SimulationLowering::emitTotal(TotalOp total,
                                             OpBuilder &launches) {
-  Kernel kernel = beginKernel(("total_" + total.getSymName()).str(),
-                              /*exactOf=*/nullptr, total);
+  Kernel kernel =
+      beginKernel(getKernelName(kernels, "total", total.getSymName()),
+                  /*exactOf=*/nullptr, total);
   Value parity = b.load(kernel.clock, b.index(kSlotParity));
   kernel.values.sourceBase = b.mul(b.toIndex(parity), kernel.values.range);
   forEachItem(kernel, [&](const Lane &lane) {
@@ -706,7 +710,8 @@ LogicalResult SimulationLowering::emitTotal(TotalOp total,
 /// computes T' and the parity itself, and does nothing past the end.
 LogicalResult SimulationLowering::emitEstimate(ComponentOp component,
                                                OpBuilder &launches) {
-  Kernel kernel = beginKernel(("estimate_" + component.getSymName()).str());
+  Kernel kernel =
+      beginKernel(getKernelName(kernels, "estimate", component.getSymName()));
   LaneVar minimum =
       target.createLaneVar(b, kernel, b.getI32Type(), b.i32(kNoEstimate));
   Value begin, size, parity;
@@ -728,7 +733,7 @@ LogicalResult SimulationLowering::emitEstimate(ComponentOp component,
 /// clocks.
 LogicalResult SimulationLowering::emitAdvance(OpBuilder &launches,
                                               bool hasEstimates) {
-  Kernel kernel = beginKernel("advance");
+  Kernel kernel = beginKernel(getKernelName(kernels, "advance"));
   Value clock = kernel.clock;
   auto slot = [&](int64_t index) { return b.load(clock, b.index(index)); };
   auto setSlot = [&](int64_t index, Value value) {
@@ -774,7 +779,8 @@ LogicalResult SimulationLowering::emitAdvance(OpBuilder &launches,
 /// at T, writes the target once.
 LogicalResult SimulationLowering::emitEvaluate(ComponentOp component,
                                                OpBuilder &launches) {
-  Kernel kernel = beginKernel(("evaluate_" + component.getSymName()).str());
+  Kernel kernel =
+      beginKernel(getKernelName(kernels, "evaluate", component.getSymName()));
   LaneVar count = target.createLaneVar(b, kernel, b.getI32Type(), b.i32(0));
   Value begin, size, parity;
   readClock(kernel, begin, size, parity);
@@ -798,7 +804,8 @@ LogicalResult SimulationLowering::emitEvaluate(ComponentOp component,
 /// When m = 1 there is one sub-step of 1: no num_steps, no reduction.
 LogicalResult SimulationLowering::emitSubSteps(ComponentOp component,
                                                OpBuilder &launches) {
-  Kernel kernel = beginKernel(("substep_" + component.getSymName()).str());
+  Kernel kernel =
+      beginKernel(getKernelName(kernels, "substep", component.getSymName()));
   auto writes =
       llvm::to_vector(component.getWrites().getAsRange<FlatSymbolRefAttr>());
   LaneVar count = target.createLaneVar(b, kernel, b.getI32Type(), b.i32(0));
@@ -945,7 +952,8 @@ LogicalResult SimulationLowering::emitRounds(ComponentOp component,
     BufferOp buffer = simulation.lookupBuffer(write);
     if (!buffer.getSnapshot())
       continue;
-    Kernel kernel = beginKernel(("snapshot_" + buffer.getSymName()).str());
+    Kernel kernel =
+        beginKernel(getKernelName(kernels, "snapshot", buffer.getSymName()));
     Value begin, size, parity;
     readClock(kernel, begin, size, parity);
     setHalves(kernel, parity, parity);
@@ -970,7 +978,8 @@ LogicalResult SimulationLowering::emitRounds(ComponentOp component,
 
   // The sub-step's estimate at the local time the pending sub-step reaches.
   {
-    Kernel kernel = beginKernel(("substep_estimate_" + name).str());
+    Kernel kernel =
+        beginKernel(getKernelName(kernels, "substep_estimate", name));
     LaneVar minimum =
         target.createLaneVar(b, kernel, b.getI32Type(), b.i32(kNoEstimate));
     Value begin, size, parity;
@@ -991,7 +1000,8 @@ LogicalResult SimulationLowering::emitRounds(ComponentOp component,
 
   // Commit the previous sub-step, decide the next.
   {
-    Kernel kernel = beginKernel(("substep_advance_" + name).str());
+    Kernel kernel =
+        beginKernel(getKernelName(kernels, "substep_advance", name));
     Value clock = kernel.clock;
     auto slot = [&](int64_t index) { return b.load(clock, b.index(index)); };
     Value zero = b.i64(0);
@@ -1012,7 +1022,7 @@ LogicalResult SimulationLowering::emitRounds(ComponentOp component,
 
   // The sub-step: read one half, write the other.
   {
-    Kernel kernel = beginKernel(("substep_" + name).str());
+    Kernel kernel = beginKernel(getKernelName(kernels, "substep", name));
     LaneVar count = target.createLaneVar(b, kernel, b.getI32Type(), b.i32(0));
     Value begin, size, parity;
     readClock(kernel, begin, size, parity);
@@ -1042,7 +1052,7 @@ LogicalResult SimulationLowering::emitRounds(ComponentOp component,
     return success();
   // The parity copy: after an even number of sub-steps the result is in the
   // source half.
-  Kernel kernel = beginKernel(("parity_" + name).str());
+  Kernel kernel = beginKernel(getKernelName(kernels, "parity", name));
   Value begin, size, parity;
   readClock(kernel, begin, size, parity);
   setHalves(kernel, parity, parity);
