@@ -266,9 +266,12 @@ static void printBoundaryClause(OpAsmPrinter &printer, Operation *,
 /// is a constant. -1 is upstream's poison index (the vector dialect's
 /// kPoisonIndex, which folding turns into `ub.poison`), not the last
 /// element, and any index outside the dimension makes the result undefined.
+/// A scalable dimension has no size known here: only a negative index is an
+/// error there.
 static LogicalResult verifyVectorIndex(Operation *op, int64_t index,
-                                       int64_t size, StringRef what) {
-  if (index >= 0 && index < size)
+                                       int64_t size, bool scalable,
+                                       StringRef what) {
+  if (index >= 0 && (scalable || index < size))
     return success();
   InFlightDiagnostic diag = op->emitOpError();
   if (index == vector::ExtractOp::kPoisonIndex)
@@ -277,19 +280,23 @@ static LogicalResult verifyVectorIndex(Operation *op, int64_t index,
   else
     diag << "uses the " << what << " " << index
          << ", which is out of range, so its result is undefined";
-  diag << "; use " << (what == "index" ? "an " : "a ") << what << " from 0 to "
-       << size - 1;
+  diag << "; use " << (what == "index" ? "an " : "a ") << what;
+  if (scalable)
+    diag << " from 0 up";
+  else
+    diag << " from 0 to " << size - 1;
   return diag;
 }
 
 /// Checks the static and constant positions of a vector.extract or
-/// vector.insert into a vector of `shape`.
+/// vector.insert into a vector of `type`.
 static LogicalResult verifyVectorPosition(Operation *op,
                                           ArrayRef<int64_t> staticPosition,
                                           ValueRange dynamicPosition,
-                                          ArrayRef<int64_t> shape) {
+                                          VectorType type) {
   auto dynamic = dynamicPosition.begin();
-  for (auto [index, dimension] : llvm::zip(staticPosition, shape)) {
+  for (auto [index, dimension, scalable] :
+       llvm::zip(staticPosition, type.getShape(), type.getScalableDims())) {
     int64_t value = index;
     if (ShapedType::isDynamic(index)) {
       if (dynamic == dynamicPosition.end())
@@ -299,7 +306,7 @@ static LogicalResult verifyVectorPosition(Operation *op,
         continue;
       value = constant.getSExtValue();
     }
-    if (failed(verifyVectorIndex(op, value, dimension, "index")))
+    if (failed(verifyVectorIndex(op, value, dimension, scalable, "index")))
       return failure();
   }
   return success();
@@ -322,11 +329,11 @@ static LogicalResult verifyNoPoison(Region &body) {
     } else if (auto extract = dyn_cast<vector::ExtractOp>(op)) {
       verified = verifyVectorPosition(op, extract.getStaticPosition(),
                                       extract.getDynamicPosition(),
-                                      extract.getSourceVectorType().getShape());
+                                      extract.getSourceVectorType());
     } else if (auto insert = dyn_cast<vector::InsertOp>(op)) {
       verified = verifyVectorPosition(op, insert.getStaticPosition(),
                                       insert.getDynamicPosition(),
-                                      insert.getDestVectorType().getShape());
+                                      insert.getDestVectorType());
     } else if (auto shuffle = dyn_cast<vector::ShuffleOp>(op)) {
       auto leading = [](VectorType type) {
         return type.getRank() == 0 ? int64_t(1) : type.getDimSize(0);
@@ -334,7 +341,8 @@ static LogicalResult verifyNoPoison(Region &body) {
       int64_t size = leading(shuffle.getV1VectorType()) +
                      leading(shuffle.getV2VectorType());
       for (int64_t entry : shuffle.getMask())
-        if (failed(verified = verifyVectorIndex(op, entry, size, "mask entry")))
+        if (failed(verified = verifyVectorIndex(
+                       op, entry, size, /*scalable=*/false, "mask entry")))
           break;
     }
     return failed(verified) ? WalkResult::interrupt() : WalkResult::advance();
