@@ -485,4 +485,38 @@ TEST_F(CPUKernelsTest, HipInterpolatesWhenBigStepsAreLong) {
         << item;
 }
 
+TEST_F(CPUKernelsTest, SymbolsThatAreNotIdentifiersRunLikeOrdinaryOnes) {
+  // The kernels get escaped names (`init_x__201`, exported as
+  // `sim_cpu_init_x__201`); the plan and the results keep the symbols.
+  std::string quoted = kChain;
+  for (auto [from, to] : {std::pair<StringRef, StringRef>{"@X", "@\"x 1\""},
+                          {"@Y", "@\"y.2-$\""},
+                          {"@Lead", "@\"\xce\x94 lead\""},
+                          {"@Follow", "@follow_"}}) {
+    for (size_t at = quoted.find(from.str()); at != std::string::npos;
+         at = quoted.find(from.str(), at + to.size()))
+      quoted.replace(at, from.size(), to.str());
+  }
+  for (Strategy strategy : kStrategies) {
+    std::unique_ptr<CPURun> plain = lower(kChain, strategy);
+    std::unique_ptr<CPURun> run = lower(quoted, strategy);
+    ASSERT_TRUE(plain && run) << stringifyStrategy(strategy).str();
+    for (CPURun *each : {plain.get(), run.get()}) {
+      each->setParam("lead",
+                     IntegerAttr::get(IntegerType::get(&context, 32), 3));
+      each->setParam("mixed",
+                     IntegerAttr::get(IntegerType::get(&context, 32), 1));
+      each->phase(simplan::PhaseKind::init);
+      each->run(9);
+    }
+    EXPECT_EQ(run->clock, plain->clock) << stringifyStrategy(strategy).str();
+    for (int64_t item = 0; item < 10; ++item) {
+      EXPECT_EQ(run->value("x 1", item), plain->value("X", item))
+          << stringifyStrategy(strategy).str() << " item " << item;
+      EXPECT_EQ(run->value("y.2-$", item), plain->value("Y", item))
+          << stringifyStrategy(strategy).str() << " item " << item;
+    }
+  }
+}
+
 } // namespace

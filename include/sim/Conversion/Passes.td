@@ -43,6 +43,18 @@ def SimLowerToGPU : Pass<"sim-lower-to-gpu", "::mlir::ModuleOp"> {
     does nothing once the run has reached its end. `range`, `dt`,
     `max_steps` and every `sim.param` are kernel arguments.
 
+    Kernels are named `<kind>_<symbol>` (`init_B`, `evaluate_C`, ...; the
+    table in docs/Plan.md). A kernel name is a PTX `.entry` and, as
+    `sim_cpu_<kernel>`, a C function, so symbols that are not identifiers
+    are escaped: letters and digits stay, an `_` stays before a letter, a
+    digit or the end, and every other byte becomes `__` and two lowercase
+    hex digits (`@"B 4"` gives `init_B__204`, `@"a__b"` gives
+    `init_a__5f_b`). An escaped symbol longer than 128 characters is cut
+    and ends in `_` and a 64-bit hash of the symbol, and a name that another
+    kernel of the module already has gets the first free suffix `_1`,
+    `_2`, ... The plan names kernels by these names and everything else by
+    its symbol.
+
     ```
     sim-opt scene.mlir --sim-front-end=strategy=hip --sim-lower-to-gpu
     ```

@@ -8,6 +8,7 @@
 
 #include "mlir/Dialect/Arith/IR/Arith.h"
 #include "mlir/Dialect/SCF/IR/SCF.h"
+#include "sim/Conversion/SimCommon/KernelNames.h"
 #include "sim/Conversion/SimCommon/SimulationLowering.h"
 
 using namespace mlir;
@@ -16,7 +17,7 @@ using namespace mlir::sim;
 /// Puts the clock in its initial state: T = 0, parity 0, no pending
 /// estimate, all counters zero. The host sets the end of each run.
 LogicalResult SimulationLowering::emitResetClock(OpBuilder &launches) {
-  Kernel kernel = beginKernel("reset_clock");
+  Kernel kernel = beginKernel(getKernelName(kernels, "reset_clock"));
   Value zero = b.i64(0);
   auto loop =
       scf::ForOp::create(b, b.loc, b.index(0), b.index(clockSlots), b.index(1));
@@ -35,7 +36,8 @@ LogicalResult SimulationLowering::emitResetClock(OpBuilder &launches) {
 /// computes T' and the parity itself, and does nothing past the end.
 LogicalResult SimulationLowering::emitEstimate(ComponentOp component,
                                                OpBuilder &launches) {
-  Kernel kernel = beginKernel(("estimate_" + component.getSymName()).str());
+  Kernel kernel =
+      beginKernel(getKernelName(kernels, "estimate", component.getSymName()));
   LaneVar minimum =
       target.createLaneVar(b, kernel, b.getI32Type(), b.i32(kNoEstimate));
   Value begin, size, parity;
@@ -57,7 +59,7 @@ LogicalResult SimulationLowering::emitEstimate(ComponentOp component,
 /// clocks.
 LogicalResult SimulationLowering::emitAdvance(OpBuilder &launches,
                                               bool hasEstimates) {
-  Kernel kernel = beginKernel("advance");
+  Kernel kernel = beginKernel(getKernelName(kernels, "advance"));
   Value clock = kernel.clock;
   auto slot = [&](int64_t index) { return b.load(clock, b.index(index)); };
   auto setSlot = [&](int64_t index, Value value) {

@@ -7,6 +7,7 @@
 //===----------------------------------------------------------------------===//
 
 #include "mlir/Dialect/Arith/IR/Arith.h"
+#include "sim/Conversion/SimCommon/KernelNames.h"
 #include "sim/Conversion/SimCommon/SimulationLowering.h"
 
 using namespace mlir;
@@ -112,7 +113,8 @@ void SimulationLowering::evaluateItems(Kernel &kernel, ComponentOp component,
 /// at T, writes the target once.
 LogicalResult SimulationLowering::emitEvaluate(ComponentOp component,
                                                OpBuilder &launches) {
-  Kernel kernel = beginKernel(("evaluate_" + component.getSymName()).str());
+  Kernel kernel =
+      beginKernel(getKernelName(kernels, "evaluate", component.getSymName()));
   LaneVar count = target.createLaneVar(b, kernel, b.getI32Type(), b.i32(0));
   Value begin, size, parity;
   readClock(kernel, begin, size, parity);

@@ -9,6 +9,7 @@
 //===----------------------------------------------------------------------===//
 
 #include "mlir/Dialect/Arith/IR/Arith.h"
+#include "sim/Conversion/SimCommon/KernelNames.h"
 #include "sim/Conversion/SimCommon/SimulationLowering.h"
 
 using namespace mlir;
@@ -55,7 +56,8 @@ LogicalResult SimulationLowering::emitRounds(ComponentOp component,
     BufferOp buffer = simulation.lookupBuffer(write);
     if (!buffer.getSnapshot())
       continue;
-    Kernel kernel = beginKernel(("snapshot_" + buffer.getSymName()).str());
+    Kernel kernel =
+        beginKernel(getKernelName(kernels, "snapshot", buffer.getSymName()));
     Value begin, size, parity;
     readClock(kernel, begin, size, parity);
     setHalves(kernel, parity, parity);
@@ -80,7 +82,8 @@ LogicalResult SimulationLowering::emitRounds(ComponentOp component,
 
   // The sub-step's estimate at the local time the pending sub-step reaches.
   {
-    Kernel kernel = beginKernel(("substep_estimate_" + name).str());
+    Kernel kernel =
+        beginKernel(getKernelName(kernels, "substep_estimate", name));
     LaneVar minimum =
         target.createLaneVar(b, kernel, b.getI32Type(), b.i32(kNoEstimate));
     Value begin, size, parity;
@@ -101,7 +104,8 @@ LogicalResult SimulationLowering::emitRounds(ComponentOp component,
 
   // Commit the previous sub-step, decide the next.
   {
-    Kernel kernel = beginKernel(("substep_advance_" + name).str());
+    Kernel kernel =
+        beginKernel(getKernelName(kernels, "substep_advance", name));
     Value clock = kernel.clock;
     auto slot = [&](int64_t index) { return b.load(clock, b.index(index)); };
     Value zero = b.i64(0);
@@ -122,7 +126,7 @@ LogicalResult SimulationLowering::emitRounds(ComponentOp component,
 
   // The sub-step: read one half, write the other.
   {
-    Kernel kernel = beginKernel(("substep_" + name).str());
+    Kernel kernel = beginKernel(getKernelName(kernels, "substep", name));
     LaneVar count = target.createLaneVar(b, kernel, b.getI32Type(), b.i32(0));
     Value begin, size, parity;
     readClock(kernel, begin, size, parity);
@@ -152,7 +156,7 @@ LogicalResult SimulationLowering::emitRounds(ComponentOp component,
     return success();
   // The parity copy: after an even number of sub-steps the result is in the
   // source half.
-  Kernel kernel = beginKernel(("parity_" + name).str());
+  Kernel kernel = beginKernel(getKernelName(kernels, "parity", name));
   Value begin, size, parity;
   readClock(kernel, begin, size, parity);
   setHalves(kernel, parity, parity);

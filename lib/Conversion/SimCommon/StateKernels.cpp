@@ -7,6 +7,7 @@
 //===----------------------------------------------------------------------===//
 
 #include "mlir/Dialect/Arith/IR/Arith.h"
+#include "sim/Conversion/SimCommon/KernelNames.h"
 #include "sim/Conversion/SimCommon/SimulationLowering.h"
 
 using namespace mlir;
@@ -15,7 +16,8 @@ using namespace mlir::sim;
 /// The initial state of one buffer, into half 0.
 LogicalResult SimulationLowering::emitInit(BufferOp buffer,
                                            OpBuilder &launches) {
-  Kernel kernel = beginKernel(("init_" + buffer.getSymName()).str());
+  Kernel kernel =
+      beginKernel(getKernelName(kernels, "init", buffer.getSymName()));
   Value memory = kernel.values.buffers.lookup(buffer.getSymNameAttr());
   forEachItem(kernel, [&](const Lane &lane) {
     b.ifThen(lane.active, [&] {
@@ -31,7 +33,8 @@ LogicalResult SimulationLowering::emitInit(BufferOp buffer,
 /// The exact solution of one buffer at the launch's time argument.
 LogicalResult SimulationLowering::emitExact(BufferOp buffer,
                                             OpBuilder &launches) {
-  Kernel kernel = beginKernel(("exact_" + buffer.getSymName()).str(), buffer);
+  Kernel kernel =
+      beginKernel(getKernelName(kernels, "exact", buffer.getSymName()), buffer);
   Value out = kernel.values.snapshots.lookup(buffer.getSymNameAttr());
   kernel.values.snapshots.erase(buffer.getSymNameAttr());
   forEachItem(kernel, [&](const Lane &lane) {
@@ -51,8 +54,9 @@ LogicalResult SimulationLowering::emitExact(BufferOp buffer,
 /// parity selects. The per-item values go out as f64; the runtime sums them.
 LogicalResult SimulationLowering::emitTotal(TotalOp total,
                                             OpBuilder &launches) {
-  Kernel kernel = beginKernel(("total_" + total.getSymName()).str(),
-                              /*exactOf=*/nullptr, total);
+  Kernel kernel =
+      beginKernel(getKernelName(kernels, "total", total.getSymName()),
+                  /*exactOf=*/nullptr, total);
   Value parity = b.load(kernel.clock, b.index(kSlotParity));
   kernel.values.sourceBase = b.mul(b.toIndex(parity), kernel.values.range);
   forEachItem(kernel, [&](const Lane &lane) {

@@ -8,6 +8,7 @@
 
 #include "mlir/Dialect/Arith/IR/Arith.h"
 #include "mlir/Dialect/SCF/IR/SCF.h"
+#include "sim/Conversion/SimCommon/KernelNames.h"
 #include "sim/Conversion/SimCommon/SimulationLowering.h"
 
 using namespace mlir;
@@ -19,7 +20,8 @@ using namespace mlir::sim;
 /// When m = 1 there is one sub-step of 1: no num_steps, no reduction.
 LogicalResult SimulationLowering::emitSubSteps(ComponentOp component,
                                                OpBuilder &launches) {
-  Kernel kernel = beginKernel(("substep_" + component.getSymName()).str());
+  Kernel kernel =
+      beginKernel(getKernelName(kernels, "substep", component.getSymName()));
   auto writes =
       llvm::to_vector(component.getWrites().getAsRange<FlatSymbolRefAttr>());
   LaneVar count = target.createLaneVar(b, kernel, b.getI32Type(), b.i32(0));

@@ -90,6 +90,10 @@ compileSharedObject(OwningOpRef<ModuleOp> module, Location loc,
   pm.addPass(createConvertIndexToLLVMPass());
   pm.addPass(createConvertFuncToLLVMPass());
   pm.addPass(createConvertControlFlowToLLVMPass());
+  // The conversions above fold, and folding can make `ub.poison` (a vector
+  // index that only becomes the poison index -1 there): LLVM's poison, as
+  // on the GPU, rather than an op that LLVM IR has no translation for.
+  pm.addPass(createUBToLLVMConversionPass());
   pm.addPass(createReconcileUnrealizedCastsPass());
   if (failed(pm.run(*module)))
     return emitError(loc) << "could not lower the CPU kernels to LLVM";

@@ -511,3 +511,35 @@ sim.simulation @caches range(16) dt(1.0 : f32) max_steps(1) attributes {strategy
     sim.yield %x : f32
   }
 }
+
+// -----
+
+// Vector positions in range are valid in bodies: static, constant, or any
+// other value (the verifier rejects only the poison index -1 and constants
+// out of range; invalid-poison.mlir).
+// CHECK-LABEL: sim.simulation @vector_positions
+// CHECK:         vector.extract %{{.*}}[3] : f32 from vector<4xf32>
+// CHECK:         vector.extract %{{.*}}[%{{.*}}] : f32 from vector<4xf32>
+// CHECK:         vector.insert %{{.*}}, %{{.*}} [%{{.*}}] : f32 into vector<4xf32>
+// CHECK:         vector.shuffle %{{.*}}, %{{.*}} [7, 0, 5, 2] : vector<4xf32>, vector<4xf32>
+sim.simulation @vector_positions range(16) dt(1.0 : f32) max_steps(1) {
+  sim.buffer @B : vector<4xf32> init {
+  ^bb0(%i: index):
+    %c = arith.constant dense<0.0> : vector<4xf32>
+    sim.yield %c : vector<4xf32>
+  }
+  sim.component @C writes(@B) evaluate {
+  ^bb0(%i: index, %t: i64, %n: i32, %dt: f32):
+    %v = sim.read @B[%i] : vector<4xf32>
+    %last = vector.extract %v[3] : f32 from vector<4xf32>
+    %c1 = arith.constant 1 : index
+    %second = vector.extract %v[%c1] : f32 from vector<4xf32>
+    %c4 = arith.constant 4 : index
+    %lane = arith.remui %i, %c4 : index
+    %w = vector.insert %last, %v[%lane] : f32 into vector<4xf32>
+    %r = vector.shuffle %w, %v [7, 0, 5, 2] : vector<4xf32>, vector<4xf32>
+    %s = vector.broadcast %second : f32 to vector<4xf32>
+    %y = arith.addf %r, %s : vector<4xf32>
+    sim.yield %y : vector<4xf32>
+  }
+}

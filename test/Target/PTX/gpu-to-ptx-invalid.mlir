@@ -17,6 +17,7 @@
 // RUN:   --sim-chip=sm_75
 // RUN: sim-translate --gpu-to-ptx %t/opt-level.mlir --verify-diagnostics \
 // RUN:   --sim-opt-level=4
+// RUN: sim-translate --gpu-to-ptx %t/kernel-name.mlir --verify-diagnostics
 //
 // Diagnostics are one line and a caret; the failing op is printed only when
 // asked for.
@@ -123,6 +124,17 @@ module attributes {gpu.container_module} {
   // expected-error @+1 {{An error happened while serializing the module.}}
   gpu.module @kernels {
     gpu.func @empty() kernel {
+      gpu.return
+    }
+  }
+}
+
+//--- kernel-name.mlir
+// A kernel's name is its PTX .entry, which PTX must be able to spell.
+module attributes {gpu.container_module} {
+  gpu.module @"my kernels" {
+    // expected-error @+1 {{the symbol name "scale by 2" is not a PTX identifier (letters, digits, '_' and '$', not starting with a digit), so no PTX can name it; rename the symbol}}
+    gpu.func @"scale by 2"(%a: memref<?xf32>) kernel {
       gpu.return
     }
   }

@@ -56,7 +56,15 @@ def SimNVVMCheckTarget
       know (LLVM would only warn on stderr and emit PTX for another chip);
     - a call to a libdevice function (`__nv_expf` for `math.exp`, ...) when
       the libdevice file named by `libdevice` does not exist: upstream would
-      leave the call unresolved and the PTX would fail to load.
+      leave the call unresolved and the PTX would fail to load;
+    - a function or global whose name is not a PTX identifier (letters,
+      digits, `_` and `$`, not starting with a digit), such as a kernel
+      `@"scale by 2"`: LLVM's NVPTX printer would abort the process
+      ("Symbol name with unsupported characters") or print PTX that ptxas
+      rejects. LLVM renames private and internal symbols itself (other
+      characters become `_$_`), so only their leading digit is an error.
+      The kernels of a lowered scene always have such names
+      (`--sim-lower-to-gpu`).
 
     ```
     sim-opt k.mlir --pass-pipeline='builtin.module(gpu.module(sim-nvvm-check-target{libdevice=/usr/local/cuda/nvvm/libdevice/libdevice.10.bc}))'

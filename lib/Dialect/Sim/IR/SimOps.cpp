@@ -2,18 +2,22 @@
 //
 // Verifiers check everything a scene must satisfy before any analysis runs:
 // body signatures and yields, symbol references, element types, that every
-// buffer has exactly one writer, and that initial states do not depend on
-// each other in a cycle. Checks that need symbol lookups live in
-// verifySymbolUses so that the symbol table is built once per simulation.
+// buffer has exactly one writer, that initial states do not depend on each
+// other in a cycle, and that bodies make no poison values. Checks that need
+// symbol lookups live in verifySymbolUses so that the symbol table is built
+// once per simulation.
 //
 //===----------------------------------------------------------------------===//
 
 #include "sim/Dialect/Sim/IR/SimOps.h"
 #include "sim/Support/Cycles.h"
 
+#include "mlir/Dialect/UB/IR/UBOps.h"
+#include "mlir/Dialect/Vector/IR/VectorOps.h"
 #include "mlir/IR/Builders.h"
 #include "mlir/IR/BuiltinTypes.h"
 #include "mlir/IR/Diagnostics.h"
+#include "mlir/IR/Matchers.h"
 #include "mlir/IR/OpImplementation.h"
 #include "llvm/ADT/DenseMap.h"
 #include "llvm/ADT/STLExtras.h"
@@ -255,6 +259,98 @@ static void printBoundaryClause(OpAsmPrinter &printer, Operation *,
 #include "sim/Dialect/Sim/IR/SimOps.cpp.inc"
 
 //===----------------------------------------------------------------------===//
+// Poison in bodies
+//===----------------------------------------------------------------------===//
+
+/// Checks one index of a vector op: a static position, or a dynamic one that
+/// is a constant. -1 is upstream's poison index (the vector dialect's
+/// kPoisonIndex, which folding turns into `ub.poison`), not the last
+/// element, and any index outside the dimension makes the result undefined.
+/// A scalable dimension has no size known here: only a negative index is an
+/// error there.
+static LogicalResult verifyVectorIndex(Operation *op, int64_t index,
+                                       int64_t size, bool scalable,
+                                       StringRef what) {
+  if (index >= 0 && (scalable || index < size))
+    return success();
+  InFlightDiagnostic diag = op->emitOpError();
+  if (index == vector::ExtractOp::kPoisonIndex)
+    diag << "uses the poison " << what
+         << " -1, so its result is undefined (-1 is not the last element)";
+  else
+    diag << "uses the " << what << " " << index
+         << ", which is out of range, so its result is undefined";
+  diag << "; use " << (what == "index" ? "an " : "a ") << what;
+  if (scalable)
+    diag << " from 0 up";
+  else
+    diag << " from 0 to " << size - 1;
+  return diag;
+}
+
+/// Checks the static and constant positions of a vector.extract or
+/// vector.insert into a vector of `type`.
+static LogicalResult verifyVectorPosition(Operation *op,
+                                          ArrayRef<int64_t> staticPosition,
+                                          ValueRange dynamicPosition,
+                                          VectorType type) {
+  auto dynamic = dynamicPosition.begin();
+  for (auto [index, dimension, scalable] :
+       llvm::zip(staticPosition, type.getShape(), type.getScalableDims())) {
+    int64_t value = index;
+    if (ShapedType::isDynamic(index)) {
+      if (dynamic == dynamicPosition.end())
+        return success(); // Reported by the op's own verifier.
+      APInt constant;
+      if (!matchPattern(*dynamic++, m_ConstantInt(&constant)))
+        continue;
+      value = constant.getSExtValue();
+    }
+    if (failed(verifyVectorIndex(op, value, dimension, scalable, "index")))
+      return failure();
+  }
+  return success();
+}
+
+/// A body must compute defined values: what a poison value turns into is up
+/// to each backend, so strategies and backends could not be compared. The
+/// constructs that visibly make one are errors at their operation:
+/// `ub.poison`, the poison index -1 and constant out-of-range indices of
+/// vector.extract and vector.insert, and the poison entry -1 of a
+/// vector.shuffle mask. (An index that becomes -1 only by folding is lowered
+/// to LLVM's poison by both back ends.)
+static LogicalResult verifyNoPoison(Region &body) {
+  WalkResult result = body.walk([](Operation *op) {
+    LogicalResult verified = success();
+    if (isa<ub::PoisonOp>(op)) {
+      verified = op->emitOpError()
+                 << "makes a poison value, which would leave what the body "
+                    "computes undefined; compute a defined value instead";
+    } else if (auto extract = dyn_cast<vector::ExtractOp>(op)) {
+      verified = verifyVectorPosition(op, extract.getStaticPosition(),
+                                      extract.getDynamicPosition(),
+                                      extract.getSourceVectorType());
+    } else if (auto insert = dyn_cast<vector::InsertOp>(op)) {
+      verified = verifyVectorPosition(op, insert.getStaticPosition(),
+                                      insert.getDynamicPosition(),
+                                      insert.getDestVectorType());
+    } else if (auto shuffle = dyn_cast<vector::ShuffleOp>(op)) {
+      auto leading = [](VectorType type) {
+        return type.getRank() == 0 ? int64_t(1) : type.getDimSize(0);
+      };
+      int64_t size = leading(shuffle.getV1VectorType()) +
+                     leading(shuffle.getV2VectorType());
+      for (int64_t entry : shuffle.getMask())
+        if (failed(verified = verifyVectorIndex(
+                       op, entry, size, /*scalable=*/false, "mask entry")))
+          break;
+    }
+    return failed(verified) ? WalkResult::interrupt() : WalkResult::advance();
+  });
+  return failure(result.wasInterrupted());
+}
+
+//===----------------------------------------------------------------------===//
 // SimulationOp
 //===----------------------------------------------------------------------===//
 
@@ -433,6 +529,12 @@ LogicalResult SimulationOp::verifyRegions() {
     diag << " -> @" << cycle.front().getSymName();
     return diag;
   }
+
+  // Bodies compute defined values.
+  for (Operation &op : body)
+    for (Region &region : op.getRegions())
+      if (failed(verifyNoPoison(region)))
+        return failure();
   return success();
 }
 

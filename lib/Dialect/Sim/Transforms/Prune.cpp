@@ -9,7 +9,14 @@
 // auxiliary buffers of B's interpolation, and the buffers B's init and exact
 // bodies read. So a component kept for one buffer can still drop another
 // buffer it writes that nothing needs. The slice is conservative: any read
-// inside a region op (a loop, a conditional) on the slice counts.
+// inside a region op (a loop, a conditional) on the slice counts, and so
+// does the slice of every operation in evaluate that dead-code elimination
+// would keep (a store, an op of unknown effects).
+//
+// A read in the evaluate body of a kept component that is on no slice feeds
+// nothing that stays: it is dead code. When its buffer goes, the read goes
+// with it (and with the rest of the body's dead code), with a remark, so no
+// read is left naming a buffer that is gone.
 //
 //===----------------------------------------------------------------------===//
 
@@ -18,6 +25,7 @@
 #include "sim/Dialect/Sim/Transforms/Passes.h"
 
 #include "mlir/IR/PatternMatch.h"
+#include "mlir/Interfaces/SideEffectInterfaces.h"
 #include "mlir/Transforms/RegionUtils.h"
 #include "llvm/ADT/BitVector.h"
 #include "llvm/ADT/SetVector.h"
@@ -35,9 +43,11 @@ namespace {
 using SymbolSet = llvm::SetVector<StringAttr>;
 
 /// Adds to `buffers` every buffer read by an operation on the backward slice
-/// of `root` inside a component body.
-void collectSliceReads(Value root, SymbolSet &buffers) {
-  SmallVector<Value> worklist = {root};
+/// of `roots` (values, and operations that count whole) inside a component
+/// body.
+void collectSliceReads(ArrayRef<Value> rootValues,
+                       ArrayRef<Operation *> rootOps, SymbolSet &buffers) {
+  SmallVector<Value> worklist(rootValues);
   llvm::DenseSet<Value> seenValues;
   llvm::DenseSet<Operation *> seenOps;
   auto visitOp = [&](Operation *op) {
@@ -52,6 +62,8 @@ void collectSliceReads(Value root, SymbolSet &buffers) {
       llvm::append_range(worklist, nested->getOperands());
     });
   };
+  for (Operation *op : rootOps)
+    visitOp(op);
   while (!worklist.empty()) {
     Value value = worklist.pop_back_val();
     if (!seenValues.insert(value).second)
@@ -68,6 +80,18 @@ void collectSliceReads(Value root, SymbolSet &buffers) {
   }
 }
 
+/// The operations of `body` that stay whatever uses their results: those
+/// region dead-code elimination keeps (writes, unknown effects), apart from
+/// terminators, whose operands matter only through their parent.
+SmallVector<Operation *> collectEffectRoots(Region &body) {
+  SmallVector<Operation *> roots;
+  body.walk([&](Operation *op) {
+    if (!op->hasTrait<OpTrait::IsTerminator>() && !wouldOpBeTriviallyDead(op))
+      roots.push_back(op);
+  });
+  return roots;
+}
+
 /// Adds every buffer read anywhere in `region`.
 void collectRegionReads(Region &region, SymbolSet &buffers) {
   region.walk([&](Operation *op) {
@@ -79,7 +103,11 @@ void collectRegionReads(Region &region, SymbolSet &buffers) {
 }
 
 struct PrunePass : public sim::impl::SimPruneBase<PrunePass> {
+  /// Components whose effect roots are already in `needed`.
+  llvm::DenseSet<Operation *> rootsCollected;
+
   void runOnOperation() override {
+    rootsCollected.clear();
     SimulationOp simulation = getOperation();
     if (failed(checkBeforeInterpolation(simulation, getArgument(),
                                         "its components and buffers are")))
@@ -119,8 +147,11 @@ struct PrunePass : public sim::impl::SimPruneBase<PrunePass> {
         rewriter.eraseOp(component);
         continue;
       }
+      bool deadReads = remarkDeadReads(component, needed);
       if (dropped.any())
         dropWrites(rewriter, component, written, dropped);
+      if (deadReads && failed(eraseDeadReads(rewriter, component, needed)))
+        return signalPassFailure();
     }
     for (BufferOp buffer : analysis.getBuffers()) {
       if (needed.contains(buffer.getSymNameAttr()))
@@ -143,7 +174,9 @@ struct PrunePass : public sim::impl::SimPruneBase<PrunePass> {
     unsigned position = std::distance(
         writes.begin(),
         llvm::find(writes, FlatSymbolRefAttr::get(buffer.getSymNameAttr())));
-    collectSliceReads(yield.getValues()[position], needed);
+    collectSliceReads(yield.getValues()[position], {}, needed);
+    if (rootsCollected.insert(writer).second)
+      collectSliceReads({}, collectEffectRoots(writer.getEvaluate()), needed);
     for (FlatSymbolRefAttr aux :
          buffer.getInterpolation().getAuxiliaryBuffers())
       needed.insert(aux.getAttr());
@@ -170,6 +203,45 @@ struct PrunePass : public sim::impl::SimPruneBase<PrunePass> {
     auto yield = cast<YieldOp>(component.getEvaluate().front().getTerminator());
     yield->eraseOperands(dropped);
     (void)runRegionDCE(rewriter, component.getEvaluate());
+  }
+
+  /// Emits a remark at each read in the evaluate body of `component` (which
+  /// is kept) of a buffer that is not needed, and says whether there is one.
+  /// Such a read is on no slice of what stays, so nothing that stays uses
+  /// its value: it goes with the body's dead code (eraseDeadReads).
+  bool remarkDeadReads(ComponentOp component, const SymbolSet &needed) {
+    bool any = false;
+    component.getEvaluate().walk([&](ReadOp read) {
+      if (needed.contains(read.getBufferAttr().getAttr()))
+        return;
+      read.emitRemark() << "removed this read of " << read.getBufferAttr()
+                        << " from @" << component.getSymName()
+                        << ": no observed buffer depends on its value";
+      any = true;
+    });
+    return any;
+  }
+
+  /// Removes the dead code of `component`'s evaluate body, and with it the
+  /// reads of buffers that are not needed. Region DCE runs until it changes
+  /// nothing: in the round that erases a dead loop, the loop's terminator
+  /// still keeps what it yields alive.
+  LogicalResult eraseDeadReads(IRRewriter &rewriter, ComponentOp component,
+                               const SymbolSet &needed) {
+    Region &evaluate = component.getEvaluate();
+    while (succeeded(runRegionDCE(rewriter, evaluate)))
+      ;
+    // Cannot happen while the slices cover what DCE keeps; an error here
+    // beats a read of a buffer that is gone.
+    WalkResult left = evaluate.walk([&](ReadOp read) {
+      if (needed.contains(read.getBufferAttr().getAttr()))
+        return WalkResult::advance();
+      read.emitOpError() << "reads " << read.getBufferAttr()
+                         << ", which no observed buffer depends on, but "
+                            "--sim-prune cannot remove the read";
+      return WalkResult::interrupt();
+    });
+    return failure(left.wasInterrupted());
   }
 
   /// Drops removed components from the schedule (and the schedule when it

@@ -5,7 +5,8 @@
 // on the whole module) and others not at all: an unknown chip or feature is
 // a warning on stderr followed by PTX for another chip, and a libdevice call
 // without libdevice stays an unresolved `call.uni __nv_expf` that only fails
-// when the driver loads the PTX. This pass turns each into an error at the
+// when the driver loads the PTX, and a symbol name PTX cannot spell aborts
+// the process in LLVM's printer. This pass turns each into an error at the
 // construct. See the pass description in Passes.td.
 //
 //===----------------------------------------------------------------------===//
@@ -14,6 +15,7 @@
 
 #include "mlir/Dialect/LLVMIR/NVVMDialect.h"
 #include "llvm/ADT/MapVector.h"
+#include "llvm/ADT/StringExtras.h"
 #include "llvm/ADT/StringSet.h"
 #include "llvm/Config/Targets.h"
 #include "llvm/MC/MCSubtargetInfo.h"
@@ -50,6 +52,51 @@ LogicalResult checkLowered(gpu::GPUModuleOp module) {
       op->emitOpError("was not lowered to the LLVM and NVVM dialects; the "
                       "PTX pipeline has no lowering for it");
   });
+  return failure(failed);
+}
+
+/// Whether PTX and LLVM's NVPTX printer both take `name` as it is: a letter
+/// then letters, digits, `_` and `$`, or `_` or `$` then at least one of
+/// those (PTX also allows a leading `%`, the printer does not).
+bool isPTXIdentifier(StringRef name) {
+  auto follows = [](char c) {
+    return llvm::isAlnum(c) || c == '_' || c == '$';
+  };
+  if (name.empty() || !llvm::all_of(name, follows) || llvm::isDigit(name[0]))
+    return false;
+  return llvm::isAlpha(name[0]) || name.size() > 1;
+}
+
+/// Reports each function and global whose name PTX cannot spell. LLVM's
+/// NVPTX printer aborts the process on such a name ("Symbol name with
+/// unsupported characters") or prints one that ptxas rejects. It renames
+/// private and internal symbols itself (every other character becomes
+/// `_$_`), but keeps a leading digit, and cannot rename the others: their
+/// names are what a host looks kernels up by.
+LogicalResult checkSymbolNames(gpu::GPUModuleOp module) {
+  bool failed = false;
+  auto check = [&](Operation *op, StringRef name, LLVM::Linkage linkage) {
+    bool local =
+        linkage == LLVM::Linkage::Private || linkage == LLVM::Linkage::Internal;
+    std::string printed;
+    for (char c : name) {
+      if (local && !llvm::isAlnum(c) && c != '_' && c != '$')
+        printed += "_$_";
+      else
+        printed += c;
+    }
+    if (isPTXIdentifier(printed))
+      return;
+    failed = true;
+    op->emitError() << "the symbol name \"" << name
+                    << "\" is not a PTX identifier (letters, digits, '_' "
+                       "and '$', not starting with a digit), so no PTX can "
+                       "name it; rename the symbol";
+  };
+  for (auto func : module.getOps<LLVM::LLVMFuncOp>())
+    check(func, func.getName(), func.getLinkage());
+  for (auto global : module.getOps<LLVM::GlobalOp>())
+    check(global, global.getSymName(), global.getLinkage());
   return failure(failed);
 }
 
@@ -140,6 +187,7 @@ struct CheckTargetPass
   void runOnOperation() override {
     gpu::GPUModuleOp module = getOperation();
     bool ok = succeeded(checkLowered(module));
+    ok &= succeeded(checkSymbolNames(module));
     if (ArrayAttr targets = module.getTargetsAttr())
       for (Attribute target : targets)
         if (auto nvvm = dyn_cast<NVVM::NVVMTargetAttr>(target))

@@ -137,3 +137,153 @@ sim.simulation @keeps_aux range(16) dt(1.0e-2 : f64) max_steps(2) {
   }
   sim.observe [@X]
 }
+
+// -----
+
+// An unused read of a buffer nothing observed needs: @Aux and its writer
+// go, and the read goes with them (it would otherwise name a buffer that is
+// gone). So do reads whose values only feed dead code, and a loop whose
+// results nothing uses. Reads of needed buffers stay.
+
+// CHECK-LABEL: sim.simulation @unused_reads
+// CHECK-NOT:     @Aux
+// CHECK-NOT:     @WriteAux
+// CHECK:         sim.component @C writes(@X) evaluate {
+// CHECK-NEXT:    ^bb0(%[[I:.*]]: index, %{{.*}}: i64, %{{.*}}: i32, %{{.*}}: f32):
+// CHECK-NEXT:      %[[X:.*]] = sim.read @X[%[[I]]] : f32
+// CHECK-NEXT:      sim.yield %[[X]] : f32
+// CHECK-NEXT:    }
+// CHECK-NOT:     @Aux
+// CHECK:         sim.observe [@X]
+sim.simulation @unused_reads range(16) dt(1.0e-2 : f32) max_steps(2) {
+  sim.buffer @X : f32 init {
+  ^bb0(%i: index):
+    %c = arith.constant 0.0 : f32
+    sim.yield %c : f32
+  }
+  // expected-remark @+1 {{removed buffer @Aux: no observed buffer depends on it}}
+  sim.buffer @Aux : f32 init {
+  ^bb0(%i: index):
+    %c = arith.constant 0.0 : f32
+    sim.yield %c : f32
+  }
+  sim.component @C writes(@X) evaluate {
+  ^bb0(%i: index, %t: i64, %n: i32, %dt: f32):
+    %x = sim.read @X[%i] : f32
+    // expected-remark @+1 {{removed this read of @Aux from @C: no observed buffer depends on its value}}
+    %unused = sim.read @Aux[%i] : f32
+    // expected-remark @+1 {{removed this read of @Aux from @C: no observed buffer depends on its value}}
+    %a = sim.read @Aux[%i] : f32
+    %dead = arith.addf %a, %a : f32
+    %lo = arith.constant 0 : index
+    %hi = arith.constant 3 : index
+    %step = arith.constant 1 : index
+    %zero = arith.constant 0.0 : f32
+    // expected-remark @+1 {{removed this read of @Aux from @C: no observed buffer depends on its value}}
+    %outside = sim.read @Aux[%i] : f32
+    %sum = scf.for %k = %lo to %hi step %step iter_args(%acc = %zero) -> (f32) {
+      %j = arith.addi %i, %k : index
+      // expected-remark @+1 {{removed this read of @Aux from @C: no observed buffer depends on its value}}
+      %y = sim.read @Aux[%j] : f32
+      %next = arith.addf %acc, %y : f32
+      scf.yield %outside : f32
+    }
+    sim.yield %x : f32
+  }
+  // expected-remark @+1 {{removed component @WriteAux: no observed buffer depends on it}}
+  sim.component @WriteAux writes(@Aux) evaluate {
+  ^bb0(%i: index, %t: i64, %n: i32, %dt: f32):
+    %a = sim.read @Aux[%i] : f32
+    sim.yield %a : f32
+  }
+  sim.observe [@X]
+}
+
+// -----
+
+// The same when the component is kept for one buffer and drops another: the
+// read that fed only the dropped value and the unused one both go.
+
+// CHECK-LABEL: sim.simulation @unused_reads_and_dropped_write
+// CHECK-NOT:     @Aux
+// CHECK:         sim.component @C writes(@X) evaluate {
+// CHECK-NEXT:    ^bb0(%[[I:.*]]: index, %{{.*}}: i64, %{{.*}}: i32, %{{.*}}: f32):
+// CHECK-NEXT:      %[[X:.*]] = sim.read @X[%[[I]]] : f32
+// CHECK-NEXT:      sim.yield %[[X]] : f32
+// CHECK-NEXT:    }
+sim.simulation @unused_reads_and_dropped_write range(16) dt(1.0e-2 : f32) max_steps(2) {
+  sim.buffer @X : f32 init {
+  ^bb0(%i: index):
+    %c = arith.constant 0.0 : f32
+    sim.yield %c : f32
+  }
+  // expected-remark @+1 {{removed buffer @Debug: no observed buffer depends on it}}
+  sim.buffer @Debug : f32 init {
+  ^bb0(%i: index):
+    %c = arith.constant 0.0 : f32
+    sim.yield %c : f32
+  }
+  // expected-remark @+1 {{removed buffer @Aux: no observed buffer depends on it}}
+  sim.buffer @Aux : f32 init {
+  ^bb0(%i: index):
+    %c = arith.constant 0.0 : f32
+    sim.yield %c : f32
+  }
+  // expected-remark @+1 {{@C no longer writes @Debug: no observed buffer depends on it}}
+  sim.component @C writes(@X, @Debug) evaluate {
+  ^bb0(%i: index, %t: i64, %n: i32, %dt: f32):
+    %x = sim.read @X[%i] : f32
+    // expected-remark @+1 {{removed this read of @Aux from @C: no observed buffer depends on its value}}
+    %unused = sim.read @Aux[%i] : f32
+    // expected-remark @+1 {{removed this read of @Debug from @C: no observed buffer depends on its value}}
+    %d = sim.read @Debug[%i] : f32
+    sim.yield %x, %d : f32, f32
+  }
+  // expected-remark @+1 {{removed component @WriteAux: no observed buffer depends on it}}
+  sim.component @WriteAux writes(@Aux) evaluate {
+  ^bb0(%i: index, %t: i64, %n: i32, %dt: f32):
+    %x = sim.read @X[%i] : f32
+    sim.yield %x : f32
+  }
+  sim.observe [@X]
+}
+
+// -----
+
+// A read whose value an operation with an effect uses (a store into a
+// scratch array that the yielded value is loaded from) counts, although the
+// yielded value's slice does not reach it: @Aux and its writer stay.
+
+// CHECK-LABEL: sim.simulation @read_through_memory
+// CHECK:         sim.buffer @Aux
+// CHECK:         sim.component @C writes(@X) evaluate {
+// CHECK:           sim.read @Aux
+// CHECK:           memref.store
+// CHECK:         sim.component @WriteAux writes(@Aux)
+sim.simulation @read_through_memory range(16) dt(1.0e-2 : f32) max_steps(2) {
+  sim.buffer @X : f32 init {
+  ^bb0(%i: index):
+    %c = arith.constant 0.0 : f32
+    sim.yield %c : f32
+  }
+  sim.buffer @Aux : f32 init {
+  ^bb0(%i: index):
+    %c = arith.constant 0.0 : f32
+    sim.yield %c : f32
+  }
+  sim.component @C writes(@X) evaluate {
+  ^bb0(%i: index, %t: i64, %n: i32, %dt: f32):
+    %scratch = memref.alloc() : memref<1xf32>
+    %c0 = arith.constant 0 : index
+    %a = sim.read @Aux[%i] : f32
+    memref.store %a, %scratch[%c0] : memref<1xf32>
+    %x = memref.load %scratch[%c0] : memref<1xf32>
+    sim.yield %x : f32
+  }
+  sim.component @WriteAux writes(@Aux) evaluate {
+  ^bb0(%i: index, %t: i64, %n: i32, %dt: f32):
+    %a = sim.read @Aux[%i] : f32
+    sim.yield %a : f32
+  }
+  sim.observe [@X]
+}

@@ -50,3 +50,33 @@ gpu.module @not_lowered {
     llvm.return %1 : i32
   }
 }
+
+// -----
+
+// Names PTX cannot spell. LLVM's NVPTX printer would abort on a space and
+// print a leading digit or a lone `_` that ptxas rejects. Kernels and other
+// external symbols keep their names (a host looks kernels up by them), so
+// each is an error at the symbol; LLVM renames the other characters of
+// private and internal symbols itself, but not a leading digit.
+gpu.module @names {
+  // expected-error @+1 {{the symbol name "k 1" is not a PTX identifier (letters, digits, '_' and '$', not starting with a digit), so no PTX can name it; rename the symbol}}
+  llvm.func @"k 1"() attributes {gpu.kernel, nvvm.kernel} {
+    llvm.return
+  }
+  // expected-error @+1 {{the symbol name "1k" is not a PTX identifier}}
+  llvm.func @"1k"() attributes {gpu.kernel, nvvm.kernel} {
+    llvm.return
+  }
+  // expected-error @+1 {{the symbol name "_" is not a PTX identifier}}
+  llvm.mlir.global external @_(0 : i32) {addr_space = 1 : i32} : i32
+  // expected-error @+1 {{the symbol name "2.x" is not a PTX identifier}}
+  llvm.mlir.global private @"2.x"(0 : i32) {addr_space = 1 : i32} : i32
+  // Valid, or made valid by LLVM: no error.
+  llvm.func @k_$1() attributes {gpu.kernel, nvvm.kernel} {
+    llvm.return
+  }
+  llvm.mlir.global private @"a b.c"(0 : i32) {addr_space = 1 : i32} : i32
+  llvm.func internal @"helper.1"() {
+    llvm.return
+  }
+}

@@ -60,6 +60,11 @@ def Sim_SimulationOp : Sim_Op<"simulation", [
     `range`, `dt` and `max_steps` can be overridden without editing the file:
     `sim-opt --sim-set-params="values=range=16384,max_steps=2"`.
 
+    Bodies compute defined values, so the verifier rejects, at the operation,
+    what makes a poison value: `ub.poison`, the poison index `-1` (it is not
+    the last element) or a constant index out of range in `vector.extract`
+    and `vector.insert`, and `-1` in a `vector.shuffle` mask.
+
     `strategy` is recorded by `--sim-plan-memory`: the memory plan and the
     explicit reads that `--sim-insert-interpolation` produces are for that
     strategy. So is `step_cap`, the largest big step the strategy takes (1

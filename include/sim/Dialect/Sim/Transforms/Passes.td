@@ -124,6 +124,27 @@ def SimPrune : Pass<"sim-prune", "::mlir::sim::SimulationOp"> {
     written buffer (its `writes` entry and its yielded value, then the dead
     code) from a component that is kept for another buffer. Emits a remark
     per removal. A simulation without `sim.observe` is an error.
+
+    In `evaluate`, a read counts when a needed yielded value depends on it,
+    or an operation that stays whatever uses its results (a `memref.store`,
+    an op of unknown effects) does. Any other read is dead code: a read
+    whose value nothing uses, or uses only for something that is removed.
+    It does not keep its buffer, and when the buffer is removed the read is
+    removed too, with the body's other dead code and a remark at the read,
+    so no read is left naming a buffer that is gone. Reads in `num_steps`,
+    `init`, `exact` and `sim.total` bodies all count, used or not.
+
+    ```mlir
+    // @C's unused read of @Aux does not keep @Aux (or its writer, @W):
+    // both go, and so does the read.
+    sim.component @C writes(@X) evaluate {
+    ^bb0(%i: index, %t: i64, %n: i32, %dt: f32):
+      %x = sim.read @X[%i] : f32
+      %unused = sim.read @Aux[%i] : f32
+      sim.yield %x : f32
+    }
+    sim.observe [@X]
+    ```
   }];
   let dependentDialects = [];
 }
