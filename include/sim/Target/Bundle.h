@@ -11,6 +11,7 @@
 #define SIM_TARGET_BUNDLE_H
 
 #include "sim/Dialect/Sim/IR/SimAttrs.h"
+#include "sim/Pipelines/Pipelines.h"
 
 #include "mlir/IR/BuiltinOps.h"
 #include "llvm/ADT/SmallVector.h"
@@ -36,18 +37,11 @@ struct BundleOptions {
                                          Strategy::hip_cache};
   /// Threads per thread group the plans and kernels are made for.
   int64_t groupSize = 256;
-  /// The NVIDIA GPU of the PTX (sm_90, ...), and NVPTX features (empty: the
-  /// chip's oldest PTX ISA).
-  std::string chip = "sm_90";
-  std::string features;
-  /// LLVM optimization level of the GPU and the CPU kernels (0 to 3).
-  unsigned optLevel = 3;
-  /// Root of the CUDA toolkit whose libdevice implements math functions on
-  /// the GPU; empty: $CUDA_ROOT, $CUDA_HOME, $CUDA_PATH, then
-  /// /usr/local/cuda. Without libdevice, a strategy whose kernels call math
-  /// functions gets no PTX section (a warning says so): it still runs on the
-  /// CPU.
-  std::string cudaPath;
+  /// The GPU back end's target. Its optimization level applies to the CPU
+  /// kernels too. Without libdevice (see GPUTargetOptions::cudaPath), a
+  /// strategy whose kernels call math functions gets no PTX section (a
+  /// warning says so): it still runs on the CPU.
+  GPUTargetOptions target;
 };
 
 /// Compiles the one sim.simulation in `module` for every strategy of

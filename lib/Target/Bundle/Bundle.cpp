@@ -416,7 +416,7 @@ public:
              << "names the kernels " << cpuPlan->getKernelsAttr()
              << ", which are not a module of CPU kernels";
     CPUKernelOptions cpuOptions;
-    cpuOptions.optLevel = options.optLevel;
+    cpuOptions.optLevel = options.target.optLevel;
     FailureOr<std::string> library = compileCPUKernels(kernels, cpuOptions);
     if (failed(library))
       return failure();
@@ -449,7 +449,7 @@ public:
       return reference.emitError() << "has no reference model text";
     model = text.getValue().str();
     CPUKernelOptions cpuOptions;
-    cpuOptions.optLevel = options.optLevel;
+    cpuOptions.optLevel = options.target.optLevel;
     FailureOr<std::string> compiled =
         compileReferenceFunctions(reference, cpuOptions);
     if (failed(compiled))
@@ -488,12 +488,7 @@ private:
   LogicalResult compilePTX(ModuleOp gpu, simplan::PlanOp plan,
                            StrategyCode &code) {
     PassManager pm(context, ModuleOp::getOperationName());
-    GPUTargetOptions target;
-    target.chip = options.chip;
-    target.features = options.features;
-    target.optLevel = options.optLevel;
-    target.cudaPath = options.cudaPath;
-    buildSimGPUToPTXPipeline(pm, target);
+    buildSimGPUToPTXPipeline(pm, options.target);
 
     // Held back until it is known whether they are only libdevice's.
     SmallVector<Diagnostic> held;
@@ -662,7 +657,7 @@ LogicalResult mlir::sim::writeBundle(ModuleOp module,
             << (missingLibdevice.size() == 1 ? " " : "s ");
     llvm::interleaveComma(missingLibdevice, warning);
     warning << ", but there is no libdevice at '"
-            << getLibdevicePath(options.cudaPath)
+            << getLibdevicePath(options.target.cudaPath)
             << "'; they run on the CPU only (give the CUDA toolkit's root "
                "with --sim-cuda-path or $CUDA_HOME)";
   }
