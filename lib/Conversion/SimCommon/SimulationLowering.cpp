@@ -214,6 +214,14 @@ LogicalResult SimulationLowering::endKernel(Kernel &kernel,
     if (!unused.test(index))
       args.push_back(arg);
 
+  // What every launch of the kernel must agree with (the launch verifier and
+  // the runtime check it): its shared memory and the clock it addresses.
+  kernel.func->setAttr(
+      simplan::PlanDialect::getSharedAttrName(),
+      b.getDenseI64ArrayAttr({kernel.sharedPerThread, kernel.sharedFixed}));
+  kernel.func->setAttr(simplan::PlanDialect::getClockSlotsAttrName(),
+                       b.getI64IntegerAttr(clockSlots));
+
   auto kernelRef = SymbolRefAttr::get(
       SymbolTable::getSymbolName(kernels),
       {FlatSymbolRefAttr::get(SymbolTable::getSymbolName(kernel.func))});
@@ -312,8 +320,8 @@ LogicalResult SimulationLowering::run() {
       FlatSymbolRefAttr::get(SymbolTable::getSymbolName(kernels)),
       top.getI64IntegerAttr(simulation.getRange()),
       cast<TypedAttr>(simulation.getDt()), top.getI64IntegerAttr(maxSteps),
-      top.getI64IntegerAttr(groupSize), top.getI64IntegerAttr(clockSlots),
-      top.getI64IntegerAttr(histogramSlot));
+      top.getI64IntegerAttr(stepCap), top.getI64IntegerAttr(groupSize),
+      top.getI64IntegerAttr(clockSlots), top.getI64IntegerAttr(histogramSlot));
   Block *body = &plan.getBody().emplaceBlock();
   auto unitIf = [&](bool set) { return set ? top.getUnitAttr() : UnitAttr(); };
   OpBuilder planBuilder = OpBuilder::atBlockEnd(body);
@@ -336,11 +344,17 @@ LogicalResult SimulationLowering::run() {
         unitIf(observed.contains(buffer.getSymNameAttr())),
         unitIf(!buffer.getExact().empty()));
   }
-  for (ComponentOp component : order)
+  for (ComponentOp component : order) {
+    auto subClock = subClockSlots.find(component);
     simplan::ComponentOp::create(
         planBuilder, component.getLoc(), component.getSymNameAttr(),
         component.getWrites(),
-        planBuilder.getI64IntegerAttr(evaluationSlots.lookup(component)));
+        planBuilder.getI64IntegerAttr(evaluationSlots.lookup(component)),
+        component.getAdvanceAttr(), unitIf(component.getEstimates()),
+        subClock == subClockSlots.end()
+            ? IntegerAttr()
+            : planBuilder.getI64IntegerAttr(subClock->second));
+  }
 
   for (TotalOp total : simulation.getTotals())
     simplan::TotalOp::create(planBuilder, total.getLoc(),

@@ -237,13 +237,8 @@ LogicalResult writeArg(simplan::LaunchOp launch, simplan::ArgAttr arg,
     os << simplan::stringifyArgKind(arg.getKind()) << ":"
        << arg.getName().getValue();
     return success();
-  case simplan::ArgKind::max_steps:
-    break;
   }
-  return launch.emitOpError()
-         << "passes " << arg
-         << ", which the bundle format has no argument for (max_steps is "
-            "compiled into the kernels)";
+  llvm_unreachable("unknown launch argument kind");
 }
 
 /// The launches, repeats and ends of a phase or repeat body.
