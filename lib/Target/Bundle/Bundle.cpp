@@ -1014,6 +1014,13 @@ LogicalResult mlir::sim::writeBundle(ModuleOp module,
   flatbuffers::FlatBufferBuilder builder;
   fb::FinishBundleBuffer(builder, fb::Bundle::Pack(builder, &bundle));
   ArrayRef<uint8_t> payload(builder.GetBufferPointer(), builder.GetSize());
+  // What a runtime verifies first; a bundle that fails it is a writer bug
+  // (a required field left out), never a file to write.
+  flatbuffers::Verifier verifier(payload.data(), payload.size());
+  if (!fb::VerifyBundleBuffer(verifier))
+    return emitError(simulation.getLoc())
+           << "the bundle's FlatBuffer fails the schema's verifier; this is "
+              "a bug of the bundle writer";
   fb::Header header;
   header.checksum = llvm::crc32(payload);
   header.size = fb::kHeaderSize + payload.size();
