@@ -34,6 +34,11 @@ config.substitutions.append(("%sim_src_root", config.sim_src_root))
 config.substitutions.append(("%sim_obj_root", config.sim_obj_root))
 config.substitutions.append(("%examples", os.path.join(config.sim_src_root,
                                                         "examples")))
+# The FlatBuffers schema compiler the build generated the bundle schema's
+# C++ with, and the schema: tests decode bundles to JSON with them.
+config.substitutions.append(("%flatc", config.flatc))
+config.substitutions.append(("%bundle_schema", os.path.join(
+    config.sim_src_root, "runtime", "schema", "bundle.fbs")))
 
 # `dot` renders the dependency graph in tests when Graphviz is installed.
 if lit.util.which("dot"):

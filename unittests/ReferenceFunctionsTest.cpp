@@ -14,6 +14,7 @@
 #include "sim/Pipelines/Pipelines.h"
 #include "sim/Target/CPUKernels.h"
 
+#include "mlir/AsmParser/AsmParser.h"
 #include "mlir/Dialect/Arith/IR/Arith.h"
 #include "mlir/Dialect/Func/IR/FuncOps.h"
 #include "mlir/Dialect/LLVMIR/LLVMDialect.h"
@@ -22,6 +23,7 @@
 #include "mlir/Dialect/Vector/IR/VectorOps.h"
 #include "mlir/Parser/Parser.h"
 #include "mlir/Pass/PassManager.h"
+#include "mlir/Support/DebugStringHelper.h"
 
 #include "gtest/gtest.h"
 
@@ -130,16 +132,21 @@ protected:
     buildReferencePipeline(pm, ReferenceOptions());
     ASSERT_TRUE(succeeded(pm.run(*module)));
     ModuleOp reference = *module->getOps<ModuleOp>().begin();
-    auto model = reference->getAttrOfType<StringAttr>(kReferenceModelAttrName);
+    auto model =
+        reference->getAttrOfType<DictionaryAttr>(kReferenceModelAttrName);
     ASSERT_TRUE(model);
-    EXPECT_EQ(model.getValue().str(),
-              "reference abi\n"
-              "param 0 scale f32\n"
-              "buffer 0 S f32 interp linear boundary clamp observed\n"
-              "buffer 1 V vector<3xf32> interp linear boundary clamp\n"
-              "component 0 Step substep in_kernel num_steps writes S V "
-              "reads S V\n"
-              "schedule Step\n");
+    Attribute expected = parseAttribute(
+        "{params = [\"scale\"], buffers = [\"S\", \"V\"], components = "
+        "[{name = \"Step\", sub_stepping = #sim<sub_stepping in_kernel>, "
+        "num_steps = true, writes = array<i64: 0, 1>, reads = array<i64: 0, "
+        "1>, stepping = {simple = {advance = #sim<advance whole_step>, "
+        "estimates = false}, traditional = {advance = #sim<advance "
+        "whole_step>, estimates = true}, hip = {advance = #sim<advance "
+        "group_substeps>, estimates = false}, \"hip-cache\" = {advance = "
+        "#sim<advance group_substeps>, estimates = false}}}], totals = []}",
+        &context);
+    ASSERT_TRUE(expected);
+    EXPECT_EQ(model, expected) << "the model is " << debugString(model);
     FailureOr<std::string> library = compileReferenceFunctions(reference);
     ASSERT_TRUE(succeeded(library));
     char path[] = "/tmp/sim-reference-test-XXXXXX";

@@ -90,18 +90,18 @@ std::string mlir::sim::getLibdevicePath(StringRef cudaPath) {
 }
 
 void mlir::sim::buildSimGPUToPTXPipeline(OpPassManager &pm,
-                                         const GPUTargetOptions &options) {
-  GpuNVVMAttachTargetOptions target;
-  target.chip = options.chip;
-  target.features = options.features;
-  target.optLevel = options.optLevel;
-  pm.addPass(createGpuNVVMAttachTarget(target));
+                                         const GPUTargetOptions &target) {
+  GpuNVVMAttachTargetOptions attach;
+  attach.chip = target.chip;
+  attach.features = target.features;
+  attach.optLevel = target.optLevel;
+  pm.addPass(createGpuNVVMAttachTarget(attach));
 
   OpPassManager &kernels = pm.nest<gpu::GPUModuleOp>();
   kernels.addPass(createSCFToControlFlowPass());
   kernels.addPass(memref::createExpandStridedMetadataPass());
   ConvertGpuOpsToNVVMOpsOptions toNVVM;
-  toNVVM.hasRedux = hasRedux(options.chip);
+  toNVVM.hasRedux = hasRedux(target.chip);
   toNVVM.useBarePtrCallConv = false;
   kernels.addPass(createConvertGpuOpsToNVVMOps(toNVVM));
   kernels.addPass(createConvertMathToLLVMPass());
@@ -111,7 +111,7 @@ void mlir::sim::buildSimGPUToPTXPipeline(OpPassManager &pm,
   // gpu-module-to-binary links libdevice from the toolkit it is given; when
   // there is none it links nothing and says nothing, so the check pass
   // rejects libdevice calls instead.
-  std::string libdevice = getLibdevicePath(options.cudaPath);
+  std::string libdevice = getLibdevicePath(target.cudaPath);
   SimNVVMCheckTargetOptions check;
   check.libdevice = libdevice;
   kernels.addPass(createSimNVVMCheckTarget(check));
@@ -119,7 +119,7 @@ void mlir::sim::buildSimGPUToPTXPipeline(OpPassManager &pm,
   GpuModuleToBinaryPassOptions toBinary;
   toBinary.compilationTarget = "isa";
   if (llvm::sys::fs::is_regular_file(libdevice))
-    toBinary.toolkitPath = getCUDARoot(options.cudaPath);
+    toBinary.toolkitPath = getCUDARoot(target.cudaPath);
   pm.addPass(createGpuModuleToBinaryPass(toBinary));
 }
 

@@ -44,22 +44,18 @@ void mlir::sim::buildReferencePipeline(OpPassManager &pm,
   pm.addPass(createSimLowerToReference());
 }
 
-void mlir::sim::buildSimToGPUPipeline(OpPassManager &pm,
-                                      const SimToGPUOptions &options) {
+void mlir::sim::buildSimToGPUPipeline(OpPassManager &pm, Strategy strategy,
+                                      unsigned groupSize,
+                                      const GPUTargetOptions &target) {
   FrontEndOptions frontEnd;
-  frontEnd.strategy = options.strategy;
-  frontEnd.groupSize = options.groupSize;
+  frontEnd.strategy = strategy;
+  frontEnd.groupSize = groupSize;
   buildFrontEndPipeline(pm, frontEnd);
 
   SimLowerToGPUOptions lowering;
-  lowering.groupSize = options.groupSize;
+  lowering.groupSize = groupSize;
   pm.addPass(createSimLowerToGPU(lowering));
 
-  GPUTargetOptions target;
-  target.chip = options.chip;
-  target.features = options.features;
-  target.optLevel = options.optLevel;
-  target.cudaPath = options.cudaPath;
   buildSimGPUToPTXPipeline(pm, target);
 }
 
@@ -74,14 +70,19 @@ void mlir::sim::registerSimPipelines() {
       "Prune, schedule, check sub-stepping and lower every sim.simulation "
       "to the per-item body functions of the reference executor",
       buildReferencePipeline);
-  PassPipelineRegistration<GPUTargetOptions>(
+  PassPipelineRegistration<SimGPUToPTXOptions>(
       "sim-gpu-to-ptx",
       "Lower gpu.modules to NVVM and serialize each to a gpu.binary holding "
       "PTX text",
-      buildSimGPUToPTXPipeline);
+      [](OpPassManager &pm, const SimGPUToPTXOptions &options) {
+        buildSimGPUToPTXPipeline(pm, options.getTarget());
+      });
   PassPipelineRegistration<SimToGPUOptions>(
       "sim-to-gpu-pipeline",
       "Compile scenes to PTX: the front end, the lowering of every "
       "sim.simulation to GPU kernels and a host plan, and --sim-gpu-to-ptx",
-      buildSimToGPUPipeline);
+      [](OpPassManager &pm, const SimToGPUOptions &options) {
+        buildSimToGPUPipeline(pm, options.strategy, options.groupSize,
+                              options.getTarget());
+      });
 }

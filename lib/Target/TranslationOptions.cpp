@@ -19,6 +19,10 @@ const SimToGPUOptions &getDefaults() {
   static const SimToGPUOptions defaults;
   return defaults;
 }
+const GPUTargetOptions &getTargetDefaults() {
+  static const GPUTargetOptions defaults;
+  return defaults;
+}
 } // namespace
 
 TranslationOptions::TranslationOptions()
@@ -40,39 +44,31 @@ TranslationOptions::TranslationOptions()
                 llvm::cl::cat(category)),
       chip("sim-chip",
            llvm::cl::desc("The NVIDIA GPU to compile for (default sm_90)"),
-           llvm::cl::init(getDefaults().chip.getValue()),
-           llvm::cl::cat(category)),
+           llvm::cl::init(getTargetDefaults().chip), llvm::cl::cat(category)),
       features("sim-features",
                llvm::cl::desc("NVPTX features, e.g. +ptx80 (default: the "
                               "chip's oldest PTX ISA)"),
-               llvm::cl::init(getDefaults().features.getValue()),
+               llvm::cl::init(getTargetDefaults().features),
                llvm::cl::cat(category)),
       optLevel("sim-opt-level",
                llvm::cl::desc("LLVM optimization level of the kernels, 0 to 3 "
                               "(default 3)"),
-               llvm::cl::init(getDefaults().optLevel.getValue()),
+               llvm::cl::init(getTargetDefaults().optLevel),
                llvm::cl::cat(category)),
       cudaPath("sim-cuda-path",
                llvm::cl::desc("Root of the CUDA toolkit that provides "
                               "libdevice (default: $CUDA_ROOT, $CUDA_HOME, "
                               "$CUDA_PATH, then /usr/local/cuda)"),
-               llvm::cl::init(getDefaults().cudaPath.getValue()),
+               llvm::cl::init(getTargetDefaults().cudaPath),
                llvm::cl::cat(category)) {}
 
-void TranslationOptions::copyTo(GPUTargetOptions &options) const {
-  options.chip = chip.getValue();
-  options.features = features.getValue();
-  options.optLevel = optLevel.getValue();
-  options.cudaPath = cudaPath.getValue();
-}
-
-void TranslationOptions::copyTo(SimToGPUOptions &options) const {
-  options.strategy = strategy.getValue();
-  options.groupSize = groupSize.getValue();
-  options.chip = chip.getValue();
-  options.features = features.getValue();
-  options.optLevel = optLevel.getValue();
-  options.cudaPath = cudaPath.getValue();
+GPUTargetOptions TranslationOptions::getGPUTarget() const {
+  GPUTargetOptions target;
+  target.chip = chip.getValue();
+  target.features = features.getValue();
+  target.optLevel = optLevel.getValue();
+  target.cudaPath = cudaPath.getValue();
+  return target;
 }
 
 const TranslationOptions &mlir::sim::getTranslationOptions() {

@@ -21,7 +21,7 @@
 namespace mlir::sim {
 
 /// The attribute of a `--sim-lower-to-reference` module that holds the
-/// reference model text (docs/Reference.md).
+/// reference model, a dictionary (docs/Reference.md, "The reference model").
 constexpr llvm::StringLiteral kReferenceModelAttrName = "sim.reference_model";
 
 #define GEN_PASS_DECL

@@ -109,8 +109,12 @@ def SimLowerToReference : Pass<"sim-lower-to-reference", "::mlir::ModuleOp"> {
     before `--sim-plan-memory`) and replaces every `sim.simulation` with a
     `builtin.module @<name>_reference` that holds one `func.func` per body,
     `sim_ref_init_<b>`, `sim_ref_exact_<b>`, `sim_ref_num_steps_<c>` and
-    `sim_ref_evaluate_<c>`, and the reference model text as its
-    `sim.reference_model` attribute. A view read `sim.read @B[%j]` becomes
+    `sim_ref_evaluate_<c>`, and the reference model as its
+    `sim.reference_model` dictionary: the model's parameters and buffers by
+    scene name, its components in schedule order (sub-stepping verdict,
+    whether they have `num_steps`, the model buffers they write and read,
+    and how they take a big step under every strategy) and its totals with
+    the buffers they read. A view read `sim.read @B[%j]` becomes
     a call through the context's `read` callback and a `sim.get_param` a
     call through its `param` callback: which value a read sees (its local
     time, interpolation, boundary rule) is decided by the executor, not

@@ -51,59 +51,80 @@ struct ReferenceOptions : public PassPipelineOptions<ReferenceOptions> {
 /// reference executor's body functions (docs/Reference.md).
 void buildReferencePipeline(OpPassManager &pm, const ReferenceOptions &options);
 
-/// Options of the GPU back end: which GPU the PTX is for and how it is
-/// optimized. The fields are also the options of `--sim-gpu-to-ptx`.
-struct GPUTargetOptions : public PassPipelineOptions<GPUTargetOptions> {
-  PassOptions::Option<std::string> chip{
+/// The GPU back end's target: which GPU the PTX is for, how the kernels are
+/// optimized and where libdevice is. One struct that every user passes
+/// along: the pipelines below, sim-translate's flags
+/// (sim/Target/TranslationOptions.h) and the bundle writer
+/// (sim/Target/Bundle.h).
+struct GPUTargetOptions {
+  /// The NVIDIA GPU to compile for, as LLVM's NVPTX back end names it (sm_80,
+  /// sm_90, sm_90a, ...).
+  std::string chip = "sm_90";
+  /// NVPTX features, e.g. +ptx80 for PTX ISA 8.0; empty: the oldest PTX ISA
+  /// that supports the chip (7.8 for sm_90).
+  std::string features;
+  /// LLVM optimization level of the kernels (0 to 3).
+  unsigned optLevel = 3;
+  /// Root of the CUDA toolkit whose nvvm/libdevice/libdevice.10.bc
+  /// implements math functions; empty: $CUDA_ROOT, $CUDA_HOME, $CUDA_PATH,
+  /// then /usr/local/cuda.
+  std::string cudaPath;
+};
+
+/// The pipeline options that set a GPUTargetOptions (`chip`, `features`,
+/// `opt-level`, `cuda-path`), shared by the pipelines that end in PTX.
+template <typename Derived>
+struct GPUTargetPipelineOptions : public PassPipelineOptions<Derived> {
+  template <typename T> using Option = mlir::detail::PassOptions::Option<T>;
+
+  Option<std::string> chip{
       *this, "chip",
       llvm::cl::desc("The NVIDIA GPU to compile for, as LLVM's NVPTX back "
                      "end names it (sm_80, sm_90, sm_90a, ...)"),
-      llvm::cl::init("sm_90")};
-  PassOptions::Option<std::string> features{
+      llvm::cl::init(GPUTargetOptions().chip)};
+  Option<std::string> features{
       *this, "features",
       llvm::cl::desc("NVPTX features, e.g. +ptx80 for PTX ISA 8.0; empty: "
                      "the oldest PTX ISA that supports the chip (7.8 for "
                      "sm_90)"),
-      llvm::cl::init("")};
-  PassOptions::Option<unsigned> optLevel{
+      llvm::cl::init(GPUTargetOptions().features)};
+  Option<unsigned> optLevel{
       *this, "opt-level",
       llvm::cl::desc("LLVM optimization level of the kernels (0 to 3)"),
-      llvm::cl::init(3)};
-  PassOptions::Option<std::string> cudaPath{
+      llvm::cl::init(GPUTargetOptions().optLevel)};
+  Option<std::string> cudaPath{
       *this, "cuda-path",
       llvm::cl::desc("Root of the CUDA toolkit whose "
                      "nvvm/libdevice/libdevice.10.bc implements math "
                      "functions; empty: $CUDA_ROOT, $CUDA_HOME, $CUDA_PATH, "
                      "then /usr/local/cuda"),
-      llvm::cl::init("")};
+      llvm::cl::init(GPUTargetOptions().cudaPath)};
+
+  /// The target these options describe.
+  GPUTargetOptions getTarget() const {
+    GPUTargetOptions target;
+    target.chip = chip;
+    target.features = features;
+    target.optLevel = optLevel;
+    target.cudaPath = cudaPath;
+    return target;
+  }
 };
+
+/// Options of `--sim-gpu-to-ptx`: the GPU back end's target.
+struct SimGPUToPTXOptions
+    : public GPUTargetPipelineOptions<SimGPUToPTXOptions> {};
 
 /// Options of the whole way from a scene to PTX: the front end's strategy,
 /// the GPU lowering's thread-group size and the GPU back end's target.
-struct SimToGPUOptions : public PassPipelineOptions<SimToGPUOptions> {
-  PassOptions::Option<Strategy> strategy{
+struct SimToGPUOptions : public GPUTargetPipelineOptions<SimToGPUOptions> {
+  Option<Strategy> strategy{
       *this, "strategy", llvm::cl::desc("The strategy to compile for"),
       llvm::cl::init(Strategy::hip), getStrategyOptionValues()};
-  PassOptions::Option<unsigned> groupSize{
+  Option<unsigned> groupSize{
       *this, "group-size",
       llvm::cl::desc("Threads per thread group (block) of the kernels"),
       llvm::cl::init(256)};
-  PassOptions::Option<std::string> chip{
-      *this, "chip", llvm::cl::desc("The NVIDIA GPU to compile for"),
-      llvm::cl::init("sm_90")};
-  PassOptions::Option<std::string> features{
-      *this, "features",
-      llvm::cl::desc("NVPTX features (e.g. +ptx80); empty: the chip's oldest "
-                     "PTX ISA"),
-      llvm::cl::init("")};
-  PassOptions::Option<unsigned> optLevel{
-      *this, "opt-level",
-      llvm::cl::desc("LLVM optimization level of the kernels (0 to 3)"),
-      llvm::cl::init(3)};
-  PassOptions::Option<std::string> cudaPath{
-      *this, "cuda-path",
-      llvm::cl::desc("Root of the CUDA toolkit that provides libdevice"),
-      llvm::cl::init("")};
 };
 
 /// Adds the GPU back end to `pm` (which runs on the module): attaches an
@@ -114,12 +135,13 @@ struct SimToGPUOptions : public PassPipelineOptions<SimToGPUOptions> {
 /// dynamic shared memory declaration and check the result. Everything
 /// outside the gpu.modules is left alone.
 void buildSimGPUToPTXPipeline(OpPassManager &pm,
-                              const GPUTargetOptions &options);
+                              const GPUTargetOptions &target);
 
 /// Adds the whole way from a scene to PTX to `pm`: the front end, the
 /// lowering of every sim.simulation to gpu.modules and a host plan, and the
-/// GPU back end.
-void buildSimToGPUPipeline(OpPassManager &pm, const SimToGPUOptions &options);
+/// GPU back end for `target`.
+void buildSimToGPUPipeline(OpPassManager &pm, Strategy strategy,
+                           unsigned groupSize, const GPUTargetOptions &target);
 
 /// Returns where buildSimGPUToPTXPipeline looks for libdevice given
 /// `cudaPath`: `<root>/nvvm/libdevice/libdevice.10.bc`, the root chosen as

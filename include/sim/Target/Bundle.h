@@ -1,9 +1,11 @@
 //===- Bundle.h - scenes to .simb bundles -----------------------*- C++ -*-===//
 //
-// Writes the bundle of a scene (docs/Bundle.md): its metadata, and for each
-// strategy the host plan as text, the PTX of its GPU kernels and a CPU
-// shared object of the same kernels, in one file the runtime reads without
-// MLIR. `sim-translate scene.mlir --sim-to-bundle -o scene.simb`.
+// Writes the bundle of a scene (docs/Bundle.md): a 32-byte header and one
+// FlatBuffer of the schema runtime/schema/bundle.fbs holding the scene as
+// written, for each strategy its plan with the kernels' signatures, the PTX
+// and a CPU shared object of the same kernels, and the reference
+// executor's model and shared object. The runtime reads it without MLIR.
+// `sim-translate scene.mlir --sim-to-bundle -o scene.simb`.
 //
 //===----------------------------------------------------------------------===//
 
@@ -11,65 +13,39 @@
 #define SIM_TARGET_BUNDLE_H
 
 #include "sim/Dialect/Sim/IR/SimAttrs.h"
+#include "sim/Pipelines/Pipelines.h"
 
 #include "mlir/IR/BuiltinOps.h"
 #include "llvm/ADT/SmallVector.h"
 #include "llvm/Support/raw_ostream.h"
 
-#include <string>
-
-namespace mlir::simplan {
-class PlanOp;
-} // namespace mlir::simplan
-
 namespace mlir::sim {
-
-class SimulationOp;
 
 /// What a bundle holds and how its kernels are compiled. The defaults are
 /// those of the pipelines (lib/Pipelines) and of sim-translate's options.
 struct BundleOptions {
-  /// The strategies to compile for, in the order of their sections; each at
-  /// most once.
+  /// The strategies to compile for, in the order of the bundle's plans; each
+  /// at most once.
   SmallVector<Strategy, 4> strategies = {Strategy::simple,
                                          Strategy::traditional, Strategy::hip,
                                          Strategy::hip_cache};
   /// Threads per thread group the plans and kernels are made for.
   int64_t groupSize = 256;
-  /// The NVIDIA GPU of the PTX (sm_90, ...), and NVPTX features (empty: the
-  /// chip's oldest PTX ISA).
-  std::string chip = "sm_90";
-  std::string features;
-  /// LLVM optimization level of the GPU and the CPU kernels (0 to 3).
-  unsigned optLevel = 3;
-  /// Root of the CUDA toolkit whose libdevice implements math functions on
-  /// the GPU; empty: $CUDA_ROOT, $CUDA_HOME, $CUDA_PATH, then
-  /// /usr/local/cuda. Without libdevice, a strategy whose kernels call math
-  /// functions gets no PTX section (a warning says so): it still runs on the
-  /// CPU.
-  std::string cudaPath;
+  /// The GPU back end's target. Its optimization level applies to the CPU
+  /// kernels too. Without libdevice (see GPUTargetOptions::cudaPath), a
+  /// strategy whose kernels call math functions gets no PTX (a warning says
+  /// so): it still runs on the CPU.
+  GPUTargetOptions target;
 };
 
 /// Compiles the one sim.simulation in `module` for every strategy of
 /// `options` and writes the bundle to `os`. `module` is not changed: each
-/// strategy compiles a clone. Fails with an error at a location when the
-/// module does not hold exactly one simulation, when the scene cannot be
-/// written in the bundle format, or when a strategy fails to compile
-/// (diagnostics carry a note naming the strategy).
+/// strategy compiles a clone. Fails with an error at a location, and writes
+/// nothing, when the module does not hold exactly one simulation, when the
+/// scene cannot be written in the bundle format, or when a strategy fails to
+/// compile (diagnostics carry a note naming the strategy).
 LogicalResult writeBundle(ModuleOp module, const BundleOptions &options,
                           raw_ostream &os);
-
-/// Writes the scene section of `simulation` (docs/Bundle.md, "Scene"): its
-/// name, range, dt, max_steps, parameters and buffers, as written in the
-/// input (so before pruning), and the `strategies` record. Fails with an
-/// error at the offending op for what the format cannot express.
-LogicalResult writeSceneText(SimulationOp simulation,
-                             ArrayRef<Strategy> strategies, raw_ostream &os);
-
-/// Writes the plan section of `plan` (docs/Bundle.md, "Plan"): one line per
-/// op, launches naming their kernel by its leaf name. Fails with an error at
-/// the offending op for what the format cannot express.
-LogicalResult writePlanText(simplan::PlanOp plan, raw_ostream &os);
 
 /// Registers in `registry` the dialects a scene is written in and what both
 /// back ends need (writeBundle also appends them to its module's context).

@@ -21,7 +21,6 @@
 namespace mlir::sim {
 
 struct GPUTargetOptions;
-struct SimToGPUOptions;
 
 /// The options of sim-translate's translations. Their defaults are those of
 /// the pipelines' option structs (lib/Pipelines).
@@ -42,8 +41,8 @@ struct TranslationOptions {
   llvm::cl::opt<unsigned> optLevel;
   llvm::cl::opt<std::string> cudaPath;
 
-  void copyTo(GPUTargetOptions &options) const;
-  void copyTo(SimToGPUOptions &options) const;
+  /// The GPU back end's target the flags describe.
+  GPUTargetOptions getGPUTarget() const;
 };
 
 /// Returns the process's translation options, registering them on the first

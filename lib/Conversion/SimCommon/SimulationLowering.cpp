@@ -106,6 +106,21 @@ void SimulationLowering::planClock() {
   clockSlots = next + maxSteps + 1;
 }
 
+/// A kernel's name: `name` with every character other than a letter, a digit
+/// or '_' replaced by '_', since scene symbols may hold any character but
+/// PTX entries and the CPU objects' exported functions may not; then made
+/// unique among the kernels with a suffix `_<n>`. Both targets create the
+/// kernels in the same order, so they get the same names.
+std::string SimulationLowering::getKernelName(StringRef name) {
+  std::string base;
+  for (char c : name)
+    base.push_back(llvm::isAlnum(c) || c == '_' ? c : '_');
+  std::string unique = base;
+  for (int suffix = 1; SymbolTable::lookupSymbolIn(kernels, unique); ++suffix)
+    unique = base + "_" + std::to_string(suffix);
+  return unique;
+}
+
 /// Every kernel starts with every argument a body could read; endKernel drops
 /// the ones it does not use, so each launch passes only what its kernel
 /// needs.
@@ -160,7 +175,7 @@ Kernel SimulationLowering::beginKernel(StringRef name, BufferOp exactOf,
   }
 
   b.setInsertionPointToEnd(&kernels->getRegion(0).front());
-  Block *entry = target.createKernel(b, kernel, name, types);
+  Block *entry = target.createKernel(b, kernel, getKernelName(name), types);
   b.startKernel(entry);
 
   unsigned position = 0;
@@ -213,6 +228,14 @@ LogicalResult SimulationLowering::endKernel(Kernel &kernel,
   for (auto [index, arg] : llvm::enumerate(kernel.args))
     if (!unused.test(index))
       args.push_back(arg);
+
+  // What every launch of the kernel must agree with (the launch verifier and
+  // the runtime check it): its shared memory and the clock it addresses.
+  kernel.func->setAttr(
+      simplan::PlanDialect::getSharedAttrName(),
+      b.getDenseI64ArrayAttr({kernel.sharedPerThread, kernel.sharedFixed}));
+  kernel.func->setAttr(simplan::PlanDialect::getClockSlotsAttrName(),
+                       b.getI64IntegerAttr(clockSlots));
 
   auto kernelRef = SymbolRefAttr::get(
       SymbolTable::getSymbolName(kernels),
@@ -312,8 +335,8 @@ LogicalResult SimulationLowering::run() {
       FlatSymbolRefAttr::get(SymbolTable::getSymbolName(kernels)),
       top.getI64IntegerAttr(simulation.getRange()),
       cast<TypedAttr>(simulation.getDt()), top.getI64IntegerAttr(maxSteps),
-      top.getI64IntegerAttr(groupSize), top.getI64IntegerAttr(clockSlots),
-      top.getI64IntegerAttr(histogramSlot));
+      top.getI64IntegerAttr(stepCap), top.getI64IntegerAttr(groupSize),
+      top.getI64IntegerAttr(clockSlots), top.getI64IntegerAttr(histogramSlot));
   Block *body = &plan.getBody().emplaceBlock();
   auto unitIf = [&](bool set) { return set ? top.getUnitAttr() : UnitAttr(); };
   OpBuilder planBuilder = OpBuilder::atBlockEnd(body);
@@ -336,11 +359,17 @@ LogicalResult SimulationLowering::run() {
         unitIf(observed.contains(buffer.getSymNameAttr())),
         unitIf(!buffer.getExact().empty()));
   }
-  for (ComponentOp component : order)
+  for (ComponentOp component : order) {
+    auto subClock = subClockSlots.find(component);
     simplan::ComponentOp::create(
         planBuilder, component.getLoc(), component.getSymNameAttr(),
         component.getWrites(),
-        planBuilder.getI64IntegerAttr(evaluationSlots.lookup(component)));
+        planBuilder.getI64IntegerAttr(evaluationSlots.lookup(component)),
+        component.getAdvanceAttr(), unitIf(component.getEstimates()),
+        subClock == subClockSlots.end()
+            ? IntegerAttr()
+            : planBuilder.getI64IntegerAttr(subClock->second));
+  }
 
   for (TotalOp total : simulation.getTotals())
     simplan::TotalOp::create(planBuilder, total.getLoc(),

@@ -10,6 +10,7 @@
 //
 //===----------------------------------------------------------------------===//
 
+#include "sim/Analysis/Scheduling.h"
 #include "sim/Conversion/Passes.h"
 #include "sim/Dialect/Sim/IR/SimOps.h"
 
@@ -20,7 +21,6 @@
 #include "mlir/IR/IRMapping.h"
 
 #include "llvm/ADT/SetVector.h"
-#include "llvm/Support/raw_ostream.h"
 
 namespace mlir::sim {
 #define GEN_PASS_DEF_SIMLOWERTOREFERENCE
@@ -40,13 +40,6 @@ enum BuiltinParam { kRangeParam = -1, kDtParam = -2, kMaxStepsParam = -3 };
 /// (16 lanes of f64).
 constexpr int64_t kScratchBytes = 16 * 8;
 
-std::string typeString(Type type) {
-  std::string text;
-  llvm::raw_string_ostream os(text);
-  type.print(os);
-  return text;
-}
-
 /// Lowers one scheduled simulation.
 class ReferenceLowering {
 public:
@@ -60,7 +53,7 @@ public:
 
 private:
   LogicalResult check();
-  std::string model();
+  FailureOr<DictionaryAttr> model();
   LogicalResult lowerBody(
       Region &body, StringRef name, ArrayRef<Type> argumentTypes,
       TypeRange results,
@@ -110,70 +103,65 @@ LogicalResult ReferenceLowering::check() {
   return success();
 }
 
-/// The reference model text (docs/Reference.md, bundle section kind 5).
-std::string ReferenceLowering::model() {
-  std::string text;
-  llvm::raw_string_ostream os(text);
-  os << "reference " << simulation.getSymName() << "\n";
-  for (auto [index, param] : llvm::enumerate(simulation.getParams()))
-    os << "param " << index << " " << param.getSymName() << " "
-       << typeString(cast<TypedAttr>(param.getValue()).getType()) << "\n";
+/// The model indices of the buffers `op`'s bodies read, each once, in the
+/// order of their first read.
+DenseI64ArrayAttr getReads(Operation *op,
+                           const llvm::StringMap<int32_t> &index) {
+  llvm::SetVector<int64_t> reads;
+  op->walk([&](ReadOp read) { reads.insert(index.lookup(read.getBuffer())); });
+  return DenseI64ArrayAttr::get(op->getContext(), reads.getArrayRef());
+}
 
-  llvm::DenseSet<StringRef> observed;
-  if (ObserveOp observe = simulation.getObserveOp())
-    for (FlatSymbolRefAttr name :
-         observe.getBuffers().getAsRange<FlatSymbolRefAttr>())
-      observed.insert(name.getValue());
-  for (auto [index, buffer] : llvm::enumerate(simulation.getBuffers())) {
-    os << "buffer " << index << " " << buffer.getSymName() << " "
-       << typeString(buffer.getElementType()) << " interp ";
-    Attribute interp = buffer.getInterpolation();
-    if (isa<LinearInterpAttr>(interp))
-      os << "linear";
-    else if (isa<CubicInterpAttr>(interp))
-      os << "cubic";
-    else if (auto hermite = dyn_cast<HermiteInterpAttr>(interp))
-      os << "hermite:" << hermite.getDerivative().getValue();
-    else
-      os << "none";
-    os << " boundary " << stringifyBoundary(buffer.getBoundary());
-    if (observed.contains(buffer.getSymName()))
-      os << " observed";
-    if (!buffer.getExact().empty())
-      os << " exact";
-    os << "\n";
-  }
+/// The reference model (docs/Reference.md, "The reference model"): what the
+/// executor needs beyond the scene, which the bundle writer turns into the
+/// bundle's `Reference` table. Names are the scene's; model buffers and
+/// parameters are numbered in the order of `buffers` and `params`.
+FailureOr<DictionaryAttr> ReferenceLowering::model() {
+  Builder b(context);
+  auto named = [&](StringRef name, Attribute value) {
+    return b.getNamedAttr(name, value);
+  };
+  SmallVector<Attribute> params, buffers, components, totals;
+  for (ParamOp param : simulation.getParams())
+    params.push_back(param.getSymNameAttr());
+  for (BufferOp buffer : simulation.getBuffers())
+    buffers.push_back(buffer.getSymNameAttr());
 
-  for (auto [index, component] : llvm::enumerate(order)) {
-    os << "component " << index << " " << component.getSymName() << " substep "
-       << stringifySubStepping(*component.getSubStepping());
-    if (component.hasNumSteps())
-      os << " num_steps";
-    os << " writes";
+  for (ComponentOp component : order) {
+    SmallVector<int64_t> writes;
     for (FlatSymbolRefAttr name :
          component.getWrites().getAsRange<FlatSymbolRefAttr>())
-      os << " " << name.getValue();
-    llvm::SetVector<StringRef> reads;
-    component.walk([&](ReadOp read) { reads.insert(read.getBuffer()); });
-    os << " reads";
-    for (StringRef name : reads)
-      os << " " << name;
-    os << "\n";
+      writes.push_back(bufferIndex.lookup(name.getValue()));
+    // How the component takes a big step under every strategy, so that the
+    // executor runs any of them from one model.
+    SmallVector<NamedAttribute> stepping;
+    for (uint32_t value = 0; value <= getMaxEnumValForStrategy(); ++value) {
+      Strategy strategy = *symbolizeStrategy(value);
+      FailureOr<Stepping> decided = decideStepping(component, strategy);
+      if (failed(decided))
+        return failure();
+      stepping.push_back(named(
+          stringifyStrategy(strategy),
+          b.getDictionaryAttr(
+              {named("advance", AdvanceAttr::get(context, decided->advance)),
+               named("estimates", b.getBoolAttr(decided->estimates))})));
+    }
+    components.push_back(b.getDictionaryAttr(
+        {named("name", component.getSymNameAttr()),
+         named("sub_stepping", component.getSubSteppingAttr()),
+         named("num_steps", b.getBoolAttr(component.hasNumSteps())),
+         named("writes", b.getDenseI64ArrayAttr(writes)),
+         named("reads", getReads(component, bufferIndex)),
+         named("stepping", b.getDictionaryAttr(stepping))}));
   }
-  for (auto [index, total] : llvm::enumerate(simulation.getTotals())) {
-    os << "total " << index << " " << total.getSymName() << " "
-       << typeString(total.getValueType()) << " reads";
-    llvm::SetVector<StringRef> reads;
-    total.walk([&](ReadOp read) { reads.insert(read.getBuffer()); });
-    for (StringRef name : reads)
-      os << " " << name;
-    os << "\n";
-  }
-  os << "schedule";
-  for (ComponentOp component : order)
-    os << " " << component.getSymName();
-  os << "\n";
-  return text;
+  for (TotalOp total : simulation.getTotals())
+    totals.push_back(
+        b.getDictionaryAttr({named("name", total.getSymNameAttr()),
+                             named("reads", getReads(total, bufferIndex))}));
+  return b.getDictionaryAttr({named("params", b.getArrayAttr(params)),
+                              named("buffers", b.getArrayAttr(buffers)),
+                              named("components", b.getArrayAttr(components)),
+                              named("totals", b.getArrayAttr(totals))});
 }
 
 Value ReferenceLowering::loadField(OpBuilder &b, Location loc, Value ctx,
@@ -294,9 +282,12 @@ LogicalResult ReferenceLowering::run() {
     paramIndex[param.getSymName()] = index;
 
   OpBuilder top(simulation);
+  FailureOr<DictionaryAttr> referenceModel = model();
+  if (failed(referenceModel))
+    return failure();
   module = ModuleOp::create(top, simulation.getLoc(),
                             (simulation.getSymName() + "_reference").str());
-  module->setAttr(kReferenceModelAttrName, top.getStringAttr(model()));
+  module->setAttr(kReferenceModelAttrName, *referenceModel);
 
   Type i64 = top.getI64Type(), i32 = top.getI32Type(), f64 = top.getF64Type();
   Type index = top.getIndexType();

@@ -1,19 +1,25 @@
 //===- Bundle.cpp - scenes to .simb bundles -------------------------------===//
 //
-// The bundle writer (docs/Bundle.md). Per strategy it clones the scene, runs
-// the front end, and from that one result makes both kernel sets:
+// The bundle writer (docs/Bundle.md). A bundle is a 32-byte header
+// (runtime/include/sim/Runtime/BundleFormat.h) and one FlatBuffer of the
+// schema runtime/schema/bundle.fbs, built here with the schema's object API
+// from the IR. Per strategy the writer clones the scene, runs the front end,
+// and from that one result makes both kernel sets:
 //
-//   front end ─┬─ --sim-lower-to-gpu ── plan text
-//              │                    └─ buildSimGPUToPTXPipeline ── PTX
-//              └─ --sim-lower-to-cpu ── compileCPUKernels ── shared object
+//   front end ─┬─ --sim-lower-to-gpu ── Plan (from the simplan.plan and the
+//              │                    │   kernel functions' signatures)
+//              │                    └─ buildSimGPUToPTXPipeline ── ptx
+//              └─ --sim-lower-to-cpu ── the same Plan ── compileCPUKernels
+//                                                        ── cpu
 //
-// The two lowerings make the same simplan.plan; the writer checks that they
-// do, since the runtime runs the one plan with either kernel set. The scene
-// section comes from the simulation as written (before pruning), so it lists
-// every parameter and buffer a user can name.
-//
-// The text sections are written from the IR op by op; they are the contract
-// with the runtime (runtime/src/TextFormat.cpp), which holds no MLIR.
+// The two lowerings must make the same plan, since the runtime runs the one
+// plan with either kernel set; the writer builds the Plan of each and checks
+// that they are equal. The scene comes from the simulation as written
+// (before pruning), so it lists every parameter and buffer a user can name;
+// the reference model from the reference lowering's `sim.reference_model`.
+// Everything that refers to something else is an index: plan buffers name
+// scene buffers, launches kernels, arguments plan buffers, scene
+// parameters or plan totals.
 //
 //===----------------------------------------------------------------------===//
 
@@ -23,6 +29,8 @@
 #include "sim/Dialect/Sim/IR/SimDialect.h"
 #include "sim/Dialect/Sim/IR/SimOps.h"
 #include "sim/Pipelines/Pipelines.h"
+#include "sim/Runtime/BundleFormat.h"
+#include "sim/Runtime/bundle_generated.h"
 #include "sim/Target/CPUKernels.h"
 
 #include "mlir/Dialect/Arith/IR/Arith.h"
@@ -31,286 +39,629 @@
 #include "mlir/Dialect/SCF/IR/SCF.h"
 #include "mlir/Dialect/Vector/IR/VectorOps.h"
 #include "mlir/IR/Diagnostics.h"
+#include "mlir/Interfaces/FunctionInterfaces.h"
 #include "mlir/Pass/PassManager.h"
 #include "llvm/ADT/SetVector.h"
-#include "llvm/ADT/StringExtras.h"
+#include "llvm/ADT/StringMap.h"
 #include "llvm/ADT/StringSet.h"
-#include "llvm/Support/EndianStream.h"
-#include "llvm/Support/FileSystem.h"
-#include "llvm/Support/Format.h"
+#include "llvm/Config/llvm-config.h"
+#include "llvm/Support/CRC.h"
 #include "llvm/Support/MathExtras.h"
 
 using namespace mlir;
 using namespace mlir::sim;
 
+namespace fb = ::sim::bundle;
+
 namespace {
 
+/// The instruction-set level of the CPU shared objects (generic x86-64).
+constexpr StringLiteral kCpuIsa = "x86-64";
+/// What wrote the bundle.
+constexpr StringLiteral kProducer =
+    "sim-translate (LLVM " LLVM_VERSION_STRING ")";
+
 //===----------------------------------------------------------------------===//
-// The container
+// Enumerations, values and types
 //===----------------------------------------------------------------------===//
 
-/// Section kinds and the scene's strategy field (docs/Bundle.md, "Layout").
-enum class SectionKind : uint32_t {
-  scene = 1,
-  plan = 2,
-  ptx = 3,
-  cpu = 4,
-  referenceModel = 5,
-  referenceLibrary = 6,
-};
-constexpr uint32_t kNoStrategy = 0xffffffffu;
-constexpr uint32_t kVersion = 1;
-constexpr uint64_t kHeaderSize = 24;
-constexpr uint64_t kEntrySize = 32;
-
-/// The strategy field of a section: the order of docs/Bundle.md, which is
-/// also the order of the Strategy enum.
-uint32_t getStrategyNumber(Strategy strategy) {
+fb::Strategy getStrategy(Strategy strategy) {
   switch (strategy) {
   case Strategy::simple:
-    return 0;
+    return fb::Strategy::Simple;
   case Strategy::traditional:
-    return 1;
+    return fb::Strategy::Traditional;
   case Strategy::hip:
-    return 2;
+    return fb::Strategy::Hip;
   case Strategy::hip_cache:
-    return 3;
+    return fb::Strategy::HipCache;
   }
   llvm_unreachable("unknown strategy");
 }
 
-struct Section {
-  SectionKind kind;
-  uint32_t strategy;
-  std::string contents;
+fb::Advance getAdvance(Advance advance) {
+  switch (advance) {
+  case Advance::whole_step:
+    return fb::Advance::WholeStep;
+  case Advance::group_substeps:
+    return fb::Advance::GroupSubSteps;
+  case Advance::grid_substeps:
+    return fb::Advance::GridSubSteps;
+  }
+  llvm_unreachable("unknown advance");
+}
+
+fb::SubStepping getSubStepping(SubStepping subStepping) {
+  switch (subStepping) {
+  case SubStepping::in_kernel:
+    return fb::SubStepping::InKernel;
+  case SubStepping::grid_sync:
+    return fb::SubStepping::GridSync;
+  }
+  llvm_unreachable("unknown sub-stepping");
+}
+
+fb::Boundary getBoundary(Boundary boundary) {
+  switch (boundary) {
+  case Boundary::clamp:
+    return fb::Boundary::Clamp;
+  case Boundary::wrap:
+    return fb::Boundary::Wrap;
+  case Boundary::zero:
+    return fb::Boundary::Zero;
+  }
+  llvm_unreachable("unknown boundary");
+}
+
+fb::PhaseKind getPhaseKind(simplan::PhaseKind kind) {
+  switch (kind) {
+  case simplan::PhaseKind::init:
+    return fb::PhaseKind::Init;
+  case simplan::PhaseKind::step:
+    return fb::PhaseKind::Step;
+  case simplan::PhaseKind::finish:
+    return fb::PhaseKind::Finish;
+  case simplan::PhaseKind::exact:
+    return fb::PhaseKind::Exact;
+  case simplan::PhaseKind::total:
+    return fb::PhaseKind::Total;
+  }
+  llvm_unreachable("unknown phase");
+}
+
+fb::LaunchShape getLaunchShape(simplan::LaunchShape shape) {
+  switch (shape) {
+  case simplan::LaunchShape::items:
+    return fb::LaunchShape::Items;
+  case simplan::LaunchShape::single:
+    return fb::LaunchShape::Single;
+  }
+  llvm_unreachable("unknown launch shape");
+}
+
+fb::ArgKind getArgKind(simplan::ArgKind kind) {
+  switch (kind) {
+  case simplan::ArgKind::clock:
+    return fb::ArgKind::Clock;
+  case simplan::ArgKind::buffer:
+    return fb::ArgKind::Buffer;
+  case simplan::ArgKind::snapshot:
+    return fb::ArgKind::Snapshot;
+  case simplan::ArgKind::exact:
+    return fb::ArgKind::Exact;
+  case simplan::ArgKind::param:
+    return fb::ArgKind::Param;
+  case simplan::ArgKind::range:
+    return fb::ArgKind::Range;
+  case simplan::ArgKind::dt:
+    return fb::ArgKind::Dt;
+  case simplan::ArgKind::time:
+    return fb::ArgKind::Time;
+  case simplan::ArgKind::total:
+    return fb::ArgKind::Total;
+  }
+  llvm_unreachable("unknown launch argument kind");
+}
+
+/// The schema's scalar type of `type`: i32, i64, index, f32 or f64.
+std::optional<fb::ScalarType> getScalarType(Type type) {
+  if (type.isInteger(32))
+    return fb::ScalarType::I32;
+  if (type.isInteger(64))
+    return fb::ScalarType::I64;
+  if (type.isIndex())
+    return fb::ScalarType::Index;
+  if (type.isF32())
+    return fb::ScalarType::F32;
+  if (type.isF64())
+    return fb::ScalarType::F64;
+  return std::nullopt;
+}
+
+/// `attr` as a Value of its type, when the schema has the type.
+std::optional<fb::Value> getValue(TypedAttr attr) {
+  std::optional<fb::ScalarType> type = getScalarType(attr.getType());
+  if (!type)
+    return std::nullopt;
+  if (auto integer = dyn_cast<IntegerAttr>(attr))
+    return fb::Value(integer.getValue().getSExtValue(), 0.0, *type);
+  if (auto real = dyn_cast<FloatAttr>(attr))
+    return fb::Value(0, real.getValueAsDouble(), *type);
+  return std::nullopt;
+}
+
+/// `type` (a scalar the schema has, or a vector of one) as an Element.
+std::optional<fb::Element> getElement(Type type) {
+  int64_t lanes = 1;
+  if (auto vector = dyn_cast<VectorType>(type)) {
+    if (vector.getRank() != 1 || vector.isScalable() ||
+        vector.getNumElements() > std::numeric_limits<uint16_t>::max())
+      return std::nullopt;
+    lanes = vector.getNumElements();
+    type = vector.getElementType();
+  }
+  std::optional<fb::ScalarType> scalar = getScalarType(type);
+  if (!scalar)
+    return std::nullopt;
+  return fb::Element(*scalar, static_cast<uint16_t>(lanes));
+}
+
+/// The bytes one element of `type` takes as the kernels address it: LLVM's
+/// alloc size, vectors padded to a power of two (vector<3xf32>: 16).
+uint32_t getElementStride(Type type) {
+  Type scalar = getElementTypeOrSelf(type);
+  uint64_t bytes = scalar.isIndex() ? 8 : scalar.getIntOrFloatBitWidth() / 8;
+  if (auto vector = dyn_cast<VectorType>(type))
+    bytes = llvm::PowerOf2Ceil(bytes * vector.getNumElements());
+  return static_cast<uint32_t>(bytes);
+}
+
+/// Positions of the scene's parameters, buffers and totals by name.
+struct SceneIndex {
+  llvm::StringMap<uint32_t> params, buffers, totals;
 };
 
-/// Writes the header, the section table and the contents, each starting at
-/// a multiple of 8 (zero padding between them).
-void writeContainer(ArrayRef<Section> sections, raw_ostream &os) {
-  using llvm::support::endian::write;
-  constexpr auto little = llvm::endianness::little;
-  SmallVector<uint64_t> offsets;
-  uint64_t end = kHeaderSize + kEntrySize * sections.size();
-  for (const Section &section : sections) {
-    uint64_t offset = llvm::alignTo(end, 8);
-    offsets.push_back(offset);
-    end = offset + section.contents.size();
-  }
-
-  os << StringRef("SIMBNDL\0", 8);
-  write<uint32_t>(os, kVersion, little);
-  write<uint32_t>(os, sections.size(), little);
-  write<uint64_t>(os, end, little);
-  for (auto [section, offset] : llvm::zip_equal(sections, offsets)) {
-    write<uint32_t>(os, static_cast<uint32_t>(section.kind), little);
-    write<uint32_t>(os, section.strategy, little);
-    write<uint64_t>(os, offset, little);
-    write<uint64_t>(os, section.contents.size(), little);
-    write<uint64_t>(os, 0, little);
-  }
-  uint64_t position = kHeaderSize + kEntrySize * sections.size();
-  for (auto [section, offset] : llvm::zip_equal(sections, offsets)) {
-    os.write_zeros(offset - position);
-    os << section.contents;
-    position = offset + section.contents.size();
-  }
-}
-
 //===----------------------------------------------------------------------===//
-// Values and names
+// The scene
 //===----------------------------------------------------------------------===//
 
-/// A float that reads back exactly (as f64, or as f32 with strtof: the
-/// decimal is within a double's rounding of the float).
-void writeFloat(raw_ostream &os, double value) {
-  os << llvm::format("%.17g", value);
-}
-
-/// `f32`, `f64`, `vector<4xf32>`: as MLIR prints them, which is the format's
-/// spelling.
-std::string getTypeText(Type type) {
-  std::string text;
-  llvm::raw_string_ostream os(text);
-  type.print(os);
-  return text;
-}
-
-/// The format's name of an interpolation, or failure for one it has none
-/// for.
-FailureOr<std::string> getInterpolationText(InterpolationAttrInterface interp) {
-  if (isa<LinearInterpAttr>(interp))
-    return std::string("linear");
-  if (isa<CubicInterpAttr>(interp))
-    return std::string("cubic");
-  if (isa<NoneInterpAttr>(interp))
-    return std::string("none");
-  if (auto hermite = dyn_cast<HermiteInterpAttr>(interp))
-    return ("hermite:" + hermite.getDerivative().getValue()).str();
-  return failure();
-}
-
-} // namespace
-
-//===----------------------------------------------------------------------===//
-// The scene section
-//===----------------------------------------------------------------------===//
-
-LogicalResult mlir::sim::writeSceneText(SimulationOp simulation,
-                                        ArrayRef<Strategy> strategies,
-                                        raw_ostream &os) {
-  os << "scene " << simulation.getSymName() << " range "
-     << simulation.getRange() << " dt "
-     << getTypeText(simulation.getTimeStepType()) << " ";
-  writeFloat(os, simulation.getTimeStep());
-  os << " max_steps " << simulation.getMaxSteps() << "\n";
+/// The schema's Scene of `simulation` as written (before pruning), and the
+/// positions of its symbols. Fails with an error at the offending op for
+/// what the schema cannot hold.
+LogicalResult buildScene(SimulationOp simulation, fb::SceneT &scene,
+                         SceneIndex &index) {
+  scene.name = simulation.getSymName().str();
+  scene.range = simulation.getRange();
+  std::optional<fb::Value> dt = getValue(cast<TypedAttr>(simulation.getDt()));
+  if (!dt ||
+      (dt->type() != fb::ScalarType::F32 && dt->type() != fb::ScalarType::F64))
+    return simulation.emitOpError()
+           << "has a time step of type " << simulation.getTimeStepType()
+           << ", which a bundle cannot hold (f32 or f64)";
+  scene.dt = std::make_unique<fb::Value>(*dt);
+  scene.max_steps = simulation.getMaxSteps();
 
   for (ParamOp param : simulation.getParams()) {
     auto value = cast<TypedAttr>(param.getValue());
-    Type type = value.getType();
-    if (!type.isInteger(32) && !type.isInteger(64) && !type.isIndex() &&
-        !type.isF32() && !type.isF64())
+    std::optional<fb::Value> converted = getValue(value);
+    if (!converted)
       return param.emitOpError()
-             << "has type " << type
+             << "has type " << value.getType()
              << ", which a bundle cannot hold (parameters are i32, i64, "
                 "index, f32 or f64)";
-    os << "param " << param.getSymName() << " " << getTypeText(type) << " ";
-    if (auto integer = dyn_cast<IntegerAttr>(value))
-      os << integer.getValue().getSExtValue();
-    else
-      writeFloat(os, cast<FloatAttr>(value).getValueAsDouble());
-    os << "\n";
+    index.params[param.getSymName()] = scene.params.size();
+    auto record = std::make_unique<fb::ParamT>();
+    record->name = param.getSymName().str();
+    record->value = std::make_unique<fb::Value>(*converted);
+    scene.params.push_back(std::move(record));
   }
 
+  // Positions first: a Hermite derivative may come after its buffer.
+  for (auto [position, buffer] : llvm::enumerate(simulation.getBuffers()))
+    index.buffers[buffer.getSymName()] = position;
   llvm::SmallDenseSet<StringRef> observed;
   if (ObserveOp observe = simulation.getObserveOp())
     for (auto name : observe.getBuffers().getAsRange<FlatSymbolRefAttr>())
       observed.insert(name.getValue());
   for (BufferOp buffer : simulation.getBuffers()) {
-    FailureOr<std::string> interp =
-        getInterpolationText(buffer.getInterpolation());
-    if (failed(interp))
+    auto record = std::make_unique<fb::BufferT>();
+    record->name = buffer.getSymName().str();
+    std::optional<fb::Element> element = getElement(buffer.getElementType());
+    if (!element || (element->scalar() != fb::ScalarType::F32 &&
+                     element->scalar() != fb::ScalarType::F64))
       return buffer.emitOpError()
-             << "interpolates with " << buffer.getInterpolation()
-             << ", which the bundle format has no name for (linear, cubic, "
+             << "has elements of type " << buffer.getElementType()
+             << ", which a bundle cannot hold (f32, f64 or a vector of them)";
+    record->element = std::make_unique<fb::Element>(*element);
+    InterpolationAttrInterface interp = buffer.getInterpolation();
+    if (isa<LinearInterpAttr>(interp)) {
+      record->interp = fb::Interp::Linear;
+    } else if (isa<CubicInterpAttr>(interp)) {
+      record->interp = fb::Interp::Cubic;
+    } else if (isa<NoneInterpAttr>(interp)) {
+      record->interp = fb::Interp::None;
+    } else if (auto hermite = dyn_cast<HermiteInterpAttr>(interp)) {
+      auto derivative = index.buffers.find(hermite.getDerivative().getValue());
+      if (derivative == index.buffers.end())
+        return buffer.emitOpError()
+               << "interpolates with the derivative " << hermite.getDerivative()
+               << ", which is not a buffer of the scene";
+      record->interp = fb::Interp::Hermite;
+      record->derivative = derivative->second;
+    } else {
+      return buffer.emitOpError()
+             << "interpolates with " << interp
+             << ", which the bundle format has no value for (linear, cubic, "
                 "hermite or none)";
-    os << "buffer " << buffer.getSymName() << " "
-       << getTypeText(buffer.getElementType()) << " interp " << *interp
-       << " boundary " << stringifyBoundary(buffer.getBoundary());
-    if (observed.contains(buffer.getSymName()))
-      os << " observed";
-    if (!buffer.getExact().empty())
-      os << " exact";
-    os << "\n";
+    }
+    record->boundary = getBoundary(buffer.getBoundary());
+    record->observed = observed.contains(buffer.getSymName());
+    record->exact = !buffer.getExact().empty();
+    scene.buffers.push_back(std::move(record));
   }
 
-  os << "strategies";
-  for (Strategy strategy : strategies)
-    os << " " << stringifyStrategy(strategy);
-  os << "\n";
+  for (TotalOp total : simulation.getTotals()) {
+    std::optional<fb::ScalarType> type = getScalarType(total.getValueType());
+    if (!type || (*type != fb::ScalarType::F32 && *type != fb::ScalarType::F64))
+      return total.emitOpError()
+             << "has type " << total.getValueType()
+             << ", which a bundle cannot hold (totals are f32 or f64)";
+    index.totals[total.getSymName()] = scene.totals.size();
+    auto record = std::make_unique<fb::TotalT>();
+    record->name = total.getSymName().str();
+    record->type = *type;
+    scene.totals.push_back(std::move(record));
+  }
   return success();
 }
 
 //===----------------------------------------------------------------------===//
-// The plan section
+// Plans
 //===----------------------------------------------------------------------===//
 
-namespace {
+/// Builds the schema's Plan of one simplan.plan, without its code: the
+/// plan's symbols by position, every distinct kernel its launches call with
+/// the signature of the kernel function (in the module the lowering made)
+/// and its records, and the phases.
+class PlanReader {
+public:
+  PlanReader(const SceneIndex &scene, ModuleOp module)
+      : scene(scene), module(module) {}
 
-/// One `#simplan.arg` as the format spells it.
-LogicalResult writeArg(simplan::LaunchOp launch, simplan::ArgAttr arg,
-                       raw_ostream &os) {
-  switch (arg.getKind()) {
-  case simplan::ArgKind::clock:
-  case simplan::ArgKind::range:
-  case simplan::ArgKind::dt:
-  case simplan::ArgKind::time:
-    os << simplan::stringifyArgKind(arg.getKind());
-    return success();
-  case simplan::ArgKind::buffer:
-  case simplan::ArgKind::snapshot:
-  case simplan::ArgKind::exact:
-  case simplan::ArgKind::param:
-  case simplan::ArgKind::total:
-    if (!arg.getName())
-      return launch.emitOpError() << "passes " << arg << " without a name";
-    os << simplan::stringifyArgKind(arg.getKind()) << ":"
-       << arg.getName().getValue();
-    return success();
-  case simplan::ArgKind::max_steps:
-    break;
+  FailureOr<std::unique_ptr<fb::PlanT>> read(simplan::PlanOp op);
+
+private:
+  LogicalResult readSteps(Block &block,
+                          std::vector<std::unique_ptr<fb::StepT>> &steps);
+  FailureOr<std::unique_ptr<fb::LaunchT>> readLaunch(simplan::LaunchOp launch);
+  FailureOr<uint32_t> getKernel(simplan::LaunchOp launch);
+
+  const SceneIndex &scene;
+  ModuleOp module;
+  fb::PlanT *plan = nullptr;
+  llvm::StringMap<uint32_t> buffers, components, totals, kernels;
+};
+
+FailureOr<std::unique_ptr<fb::PlanT>> PlanReader::read(simplan::PlanOp op) {
+  auto result = std::make_unique<fb::PlanT>();
+  plan = result.get();
+  std::optional<Strategy> strategy = symbolizeStrategy(op.getStrategy());
+  if (!strategy)
+    return op.emitOpError() << "has the strategy '" << op.getStrategy()
+                            << "', which is not a strategy of the bundle";
+  plan->strategy = getStrategy(*strategy);
+  plan->group_size = op.getGroupSize();
+  plan->step_cap = op.getStepCap();
+  plan->clock_slots = op.getClockSlots();
+  plan->histogram = op.getHistogramSlot();
+
+  for (Operation &child : op.getBlock()) {
+    if (isa<simplan::ParamOp>(child))
+      continue; // The scene lists every parameter; arguments name them there.
+    if (auto buffer = dyn_cast<simplan::BufferOp>(child)) {
+      auto found = scene.buffers.find(buffer.getSymName());
+      if (found == scene.buffers.end())
+        return buffer.emitOpError() << "is not a buffer of the scene";
+      buffers[buffer.getSymName()] = plan->buffers.size();
+      auto record = std::make_unique<fb::PlanBufferT>();
+      record->buffer = found->second;
+      record->stride = buffer.getStride();
+      record->snapshot = buffer.getSnapshot();
+      plan->buffers.push_back(std::move(record));
+    } else if (auto component = dyn_cast<simplan::ComponentOp>(child)) {
+      components[component.getSymName()] = plan->components.size();
+      auto record = std::make_unique<fb::ComponentT>();
+      record->name = component.getSymName().str();
+      for (auto name : component.getWrites().getAsRange<FlatSymbolRefAttr>()) {
+        auto found = buffers.find(name.getValue());
+        if (found == buffers.end())
+          return component.emitOpError()
+                 << "writes " << name
+                 << ", which is not a buffer of the plan before it";
+        record->writes.push_back(found->second);
+      }
+      record->evaluations = component.getEvaluations();
+      record->advance = getAdvance(component.getAdvance());
+      record->estimates = component.getEstimates();
+      record->sub_clock = component.getSubClock().value_or(0);
+      plan->components.push_back(std::move(record));
+    } else if (auto total = dyn_cast<simplan::TotalOp>(child)) {
+      auto found = scene.totals.find(total.getSymName());
+      if (found == scene.totals.end())
+        return total.emitOpError() << "is not a total of the scene";
+      totals[total.getSymName()] = plan->totals.size();
+      plan->totals.push_back(found->second);
+    } else if (auto phase = dyn_cast<simplan::PhaseOp>(child)) {
+      auto record = std::make_unique<fb::PhaseT>();
+      record->kind = getPhaseKind(phase.getKind());
+      if (failed(readSteps(phase.getBody().front(), record->body)))
+        return failure();
+      plan->phases.push_back(std::move(record));
+    } else {
+      return child.emitOpError("cannot be written to a bundle's plan");
+    }
   }
-  return launch.emitOpError()
-         << "passes " << arg
-         << ", which the bundle format has no argument for (max_steps is "
-            "compiled into the kernels)";
+  return result;
 }
 
-/// The launches, repeats and ends of a phase or repeat body.
-LogicalResult writeLaunches(Block &block, raw_ostream &os) {
+LogicalResult
+PlanReader::readSteps(Block &block,
+                      std::vector<std::unique_ptr<fb::StepT>> &steps) {
   for (Operation &op : block) {
+    auto step = std::make_unique<fb::StepT>();
     if (auto repeat = dyn_cast<simplan::RepeatOp>(op)) {
-      os << "repeat " << repeat.getCount() << "\n";
-      if (failed(writeLaunches(repeat.getBody().front(), os)))
+      step->repeat = std::make_unique<fb::RepeatT>();
+      step->repeat->count = repeat.getCount();
+      if (failed(readSteps(repeat.getBody().front(), step->repeat->body)))
         return failure();
-      os << "end\n";
-      continue;
-    }
-    auto launch = dyn_cast<simplan::LaunchOp>(op);
-    if (!launch)
-      return op.emitOpError("cannot be written to a bundle's plan");
-    os << "launch " << launch.getKernel().getLeafReference().getValue() << " "
-       << simplan::stringifyLaunchShape(launch.getShape()) << " for "
-       << launch.getComponent().value_or("-") << " shared "
-       << launch.getSharedPerThread() << " " << launch.getSharedFixed()
-       << " args";
-    for (auto arg : launch.getArgs().getAsRange<simplan::ArgAttr>()) {
-      os << " ";
-      if (failed(writeArg(launch, arg, os)))
+    } else if (auto launch = dyn_cast<simplan::LaunchOp>(op)) {
+      FailureOr<std::unique_ptr<fb::LaunchT>> read = readLaunch(launch);
+      if (failed(read))
         return failure();
-    }
-    os << "\n";
-  }
-  return success();
-}
-
-} // namespace
-
-LogicalResult mlir::sim::writePlanText(simplan::PlanOp plan, raw_ostream &os) {
-  os << "plan " << plan.getStrategy() << " group_size " << plan.getGroupSize()
-     << " clock_slots " << plan.getClockSlots() << " histogram "
-     << plan.getHistogramSlot() << "\n";
-  for (Operation &op : plan.getBlock()) {
-    if (isa<simplan::ParamOp>(op))
-      continue; // The scene section lists every parameter with its type.
-    if (auto buffer = dyn_cast<simplan::BufferOp>(op)) {
-      os << "buffer " << buffer.getSymName() << " "
-         << getTypeText(buffer.getElementType()) << " stride "
-         << buffer.getStride();
-      if (buffer.getSnapshot())
-        os << " snapshot";
-      if (buffer.getObserved())
-        os << " observed";
-      if (buffer.getExact())
-        os << " exact";
-      os << "\n";
-    } else if (auto component = dyn_cast<simplan::ComponentOp>(op)) {
-      os << "component " << component.getSymName() << " evaluations "
-         << component.getEvaluations() << " writes";
-      for (auto name : component.getWrites().getAsRange<FlatSymbolRefAttr>())
-        os << " " << name.getValue();
-      os << "\n";
-    } else if (auto total = dyn_cast<simplan::TotalOp>(op)) {
-      os << "total " << total.getSymName() << " "
-         << getTypeText(total.getType()) << "\n";
-    } else if (auto phase = dyn_cast<simplan::PhaseOp>(op)) {
-      os << "phase " << simplan::stringifyPhaseKind(phase.getKind()) << "\n";
-      if (failed(writeLaunches(phase.getBody().front(), os)))
-        return failure();
-      os << "end\n";
+      step->launch = std::move(*read);
     } else {
       return op.emitOpError("cannot be written to a bundle's plan");
     }
+    steps.push_back(std::move(step));
+  }
+  return success();
+}
+
+FailureOr<std::unique_ptr<fb::LaunchT>>
+PlanReader::readLaunch(simplan::LaunchOp launch) {
+  auto record = std::make_unique<fb::LaunchT>();
+  FailureOr<uint32_t> kernel = getKernel(launch);
+  if (failed(kernel))
+    return failure();
+  record->kernel = *kernel;
+  record->shape = getLaunchShape(launch.getShape());
+  if (FlatSymbolRefAttr component = launch.getComponentAttr()) {
+    auto found = components.find(component.getValue());
+    if (found == components.end())
+      return launch.emitOpError()
+             << "is for " << component << ", which is not a component of "
+             << "the plan";
+    record->component = found->second;
+  }
+  record->shared_per_thread = launch.getSharedPerThread();
+  record->shared_fixed = launch.getSharedFixed();
+  for (auto arg : launch.getArgs().getAsRange<simplan::ArgAttr>()) {
+    uint32_t index = 0;
+    if (FlatSymbolRefAttr name = arg.getName()) {
+      const llvm::StringMap<uint32_t> &symbols =
+          arg.getKind() == simplan::ArgKind::param   ? scene.params
+          : arg.getKind() == simplan::ArgKind::total ? totals
+                                                     : buffers;
+      auto found = symbols.find(name.getValue());
+      if (found == symbols.end())
+        return launch.emitOpError()
+               << "passes " << arg << ", whose symbol the bundle cannot "
+               << "resolve";
+      index = found->second;
+    }
+    record->args.emplace_back(getArgKind(arg.getKind()), index);
+  }
+  return record;
+}
+
+/// The position of the launch's kernel in the plan's kernels, adding it
+/// with the signature and records of its function on its first launch.
+FailureOr<uint32_t> PlanReader::getKernel(simplan::LaunchOp launch) {
+  StringRef name = launch.getKernel().getLeafReference().getValue();
+  if (auto found = kernels.find(name); found != kernels.end())
+    return found->second;
+
+  auto function = dyn_cast_or_null<FunctionOpInterface>(
+      SymbolTable::lookupSymbolIn(module, launch.getKernel()));
+  if (!function)
+    return launch.emitOpError()
+           << "launches " << launch.getKernel()
+           << ", which is not a kernel function of the lowered module";
+  auto shared = function->getAttrOfType<DenseI64ArrayAttr>(
+      simplan::PlanDialect::getSharedAttrName());
+  auto clockSlots = function->getAttrOfType<IntegerAttr>(
+      simplan::PlanDialect::getClockSlotsAttrName());
+  if (!shared || shared.size() != 2 || !clockSlots)
+    return function->emitOpError()
+           << "has no record of its shared memory and clock ('"
+           << simplan::PlanDialect::getSharedAttrName() << "', '"
+           << simplan::PlanDialect::getClockSlotsAttrName()
+           << "'), which the bundle needs for every kernel";
+
+  auto kernel = std::make_unique<fb::KernelT>();
+  kernel->name = name.str();
+  kernel->shared_per_thread = shared[0];
+  kernel->shared_fixed = shared[1];
+  kernel->clock_slots = clockSlots.getInt();
+  ArrayRef<Type> inputs = function.getArgumentTypes();
+  if (auto extra = function->getAttrOfType<IntegerAttr>(
+          simplan::PlanDialect::getGroupArgumentsAttrName()))
+    inputs =
+        inputs.drop_back(std::min<uint64_t>(extra.getInt(), inputs.size()));
+  for (auto [position, type] : llvm::enumerate(inputs)) {
+    if (auto memref = dyn_cast<MemRefType>(type)) {
+      std::optional<fb::Element> element = getElement(memref.getElementType());
+      if (memref.getRank() == 1 && element) {
+        kernel->params.emplace_back(fb::ParamType::Memref, *element,
+                                    getElementStride(memref.getElementType()));
+        continue;
+      }
+    } else if (std::optional<fb::ScalarType> scalar = getScalarType(type)) {
+      fb::ParamType param = fb::ParamType::I64;
+      switch (*scalar) {
+      case fb::ScalarType::I32:
+        param = fb::ParamType::I32;
+        break;
+      case fb::ScalarType::I64:
+      case fb::ScalarType::Index:
+        param = fb::ParamType::I64;
+        break;
+      case fb::ScalarType::F32:
+        param = fb::ParamType::F32;
+        break;
+      case fb::ScalarType::F64:
+        param = fb::ParamType::F64;
+        break;
+      }
+      kernel->params.emplace_back(param, fb::Element(), 0);
+      continue;
+    }
+    return function->emitOpError()
+           << "takes argument " << position << " of type " << type
+           << ", which the bundle format has no kernel parameter for "
+              "(memref<?xT> of a scalar or vector, i32, i64, index, f32 or "
+              "f64)";
+  }
+  uint32_t position = plan->kernels.size();
+  kernels[name] = position;
+  plan->kernels.push_back(std::move(kernel));
+  return position;
+}
+
+/// The FlatBuffer of `plan` alone: plans with the same bytes are the same.
+std::string packPlan(const fb::PlanT &plan) {
+  flatbuffers::FlatBufferBuilder builder;
+  builder.Finish(fb::Plan::Pack(builder, &plan));
+  return std::string(reinterpret_cast<const char *>(builder.GetBufferPointer()),
+                     builder.GetSize());
+}
+
+//===----------------------------------------------------------------------===//
+// The reference model
+//===----------------------------------------------------------------------===//
+
+/// Reads the `sim.reference_model` dictionary of the reference module
+/// (lib/Conversion/SimToReference) into `reference`, naming the scene's
+/// parameters, buffers and totals by position.
+LogicalResult readReferenceModel(ModuleOp module, const SceneIndex &scene,
+                                 fb::ReferenceT &reference) {
+  auto model = module->getAttrOfType<DictionaryAttr>(kReferenceModelAttrName);
+  auto malformed = [&](StringRef what) {
+    return module.emitError() << "has a malformed reference model ('"
+                              << kReferenceModelAttrName << "'): " << what;
+  };
+  if (!model)
+    return malformed("it is not a dictionary");
+
+  // Model parameters and buffers by scene name.
+  auto readNames = [&](StringRef key, StringRef what,
+                       const llvm::StringMap<uint32_t> &index,
+                       std::vector<uint32_t> &positions) -> LogicalResult {
+    auto names = model.getAs<ArrayAttr>(key);
+    if (!names)
+      return malformed(("no '" + key + "' array of names").str());
+    for (Attribute attr : names) {
+      auto name = dyn_cast<StringAttr>(attr);
+      if (!name)
+        return malformed(
+            ("'" + key + "' holds something other than a name").str());
+      auto found = index.find(name.getValue());
+      if (found == index.end())
+        return module.emitError()
+               << "has a reference model that names the " << what << " '"
+               << name.getValue() << "', which the scene does not have";
+      positions.push_back(found->second);
+    }
+    return success();
+  };
+  if (failed(
+          readNames("params", "parameter", scene.params, reference.params)) ||
+      failed(readNames("buffers", "buffer", scene.buffers, reference.buffers)))
+    return failure();
+
+  // Model buffer indices.
+  auto readIndices = [&](DictionaryAttr entry, StringRef key,
+                         std::vector<uint32_t> &indices) -> LogicalResult {
+    auto array = entry.getAs<DenseI64ArrayAttr>(key);
+    if (!array)
+      return malformed(("an entry without a '" + key + "' array").str());
+    for (int64_t index : array.asArrayRef()) {
+      if (index < 0 || index >= int64_t(reference.buffers.size()))
+        return malformed(
+            ("'" + key + "' names a buffer outside the model").str());
+      indices.push_back(index);
+    }
+    return success();
+  };
+  auto components = model.getAs<ArrayAttr>("components");
+  if (!components)
+    return malformed("no 'components' array");
+  for (Attribute attr : components) {
+    auto entry = dyn_cast<DictionaryAttr>(attr);
+    if (!entry)
+      return malformed("a component that is not a dictionary");
+    auto name = entry.getAs<StringAttr>("name");
+    auto subStepping = entry.getAs<SubSteppingAttr>("sub_stepping");
+    auto numSteps = entry.getAs<BoolAttr>("num_steps");
+    auto stepping = entry.getAs<DictionaryAttr>("stepping");
+    if (!name || !subStepping || !numSteps || !stepping)
+      return malformed("a component without a name, sub_stepping, num_steps "
+                       "or stepping");
+    auto record = std::make_unique<fb::RefComponentT>();
+    record->name = name.getValue().str();
+    record->sub_stepping = getSubStepping(subStepping.getValue());
+    record->num_steps = numSteps.getValue();
+    if (failed(readIndices(entry, "writes", record->writes)) ||
+        failed(readIndices(entry, "reads", record->reads)))
+      return failure();
+    // Indexed by the schema's Strategy, which is the sim dialect's order.
+    for (uint32_t value = 0; value <= getMaxEnumValForStrategy(); ++value) {
+      Strategy strategy = *symbolizeStrategy(value);
+      auto decided =
+          stepping.getAs<DictionaryAttr>(stringifyStrategy(strategy));
+      auto advance = decided ? decided.getAs<AdvanceAttr>("advance") : nullptr;
+      auto estimates = decided ? decided.getAs<BoolAttr>("estimates") : nullptr;
+      if (!advance || !estimates)
+        return malformed(("component '" + name.getValue() +
+                          "' has no stepping for strategy '" +
+                          stringifyStrategy(strategy) + "'")
+                             .str());
+      if (uint32_t(getStrategy(strategy)) != record->stepping.size())
+        return malformed("the strategies are not in the schema's order");
+      record->stepping.emplace_back(getAdvance(advance.getValue()),
+                                    estimates.getValue());
+    }
+    reference.components.push_back(std::move(record));
+  }
+
+  auto totals = model.getAs<ArrayAttr>("totals");
+  if (!totals)
+    return malformed("no 'totals' array");
+  for (Attribute attr : totals) {
+    auto entry = dyn_cast<DictionaryAttr>(attr);
+    auto name = entry ? entry.getAs<StringAttr>("name") : nullptr;
+    if (!name)
+      return malformed("a total without a name");
+    auto found = scene.totals.find(name.getValue());
+    if (found == scene.totals.end())
+      return module.emitError()
+             << "has a reference model that names the total '"
+             << name.getValue() << "', which the scene does not have";
+    auto record = std::make_unique<fb::RefTotalT>();
+    record->total = found->second;
+    if (failed(readIndices(entry, "reads", record->reads)))
+      return failure();
+    reference.totals.push_back(std::move(record));
   }
   return success();
 }
@@ -319,17 +670,16 @@ LogicalResult mlir::sim::writePlanText(simplan::PlanOp plan, raw_ostream &os) {
 // Compiling one strategy
 //===----------------------------------------------------------------------===//
 
-namespace {
-
 /// What the check of the GPU back end says when a kernel calls a libdevice
 /// function and there is no libdevice (lib/Target/PTX/Transforms/
 /// CheckTarget.cpp).
 constexpr StringLiteral kNeedsLibdevice =
     "this operation needs the libdevice function '";
 
-/// The sections of one strategy, and why it has no PTX when it has none.
+/// The plan of one strategy with its code, and why it has no PTX when it
+/// has none.
 struct StrategyCode {
-  std::string plan, ptx, cpu;
+  std::unique_ptr<fb::PlanT> plan;
   /// The libdevice functions the kernels call when the PTX could not be
   /// made for want of libdevice, and where the first one is called.
   SmallVector<std::string> missingLibdevice;
@@ -339,8 +689,8 @@ struct StrategyCode {
 class BundleWriter {
 public:
   BundleWriter(ModuleOp module, SimulationOp simulation,
-               const BundleOptions &options)
-      : module(module), simulation(simulation), options(options),
+               const SceneIndex &scene, const BundleOptions &options)
+      : module(module), simulation(simulation), scene(scene), options(options),
         context(module.getContext()) {}
 
   /// Compiles `strategy` into `code`; any error carries a note that names
@@ -366,7 +716,8 @@ public:
         return failure();
     }
 
-    // GPU kernels and the plan, then the PTX.
+    // GPU kernels and the plan (read before the back end turns the kernel
+    // functions into a binary), then the PTX.
     OwningOpRef<ModuleOp> gpu(frontEnd->clone());
     simplan::PlanOp plan;
     {
@@ -380,10 +731,13 @@ public:
       if (failed(found))
         return failure();
       plan = *found;
-      llvm::raw_string_ostream os(code.plan);
-      if (failed(writePlanText(plan, os)))
+      FailureOr<std::unique_ptr<fb::PlanT>> read =
+          PlanReader(scene, *gpu).read(plan);
+      if (failed(read))
         return failure();
+      code.plan = std::move(*read);
     }
+    std::string gpuPlan = packPlan(*code.plan);
     if (failed(compilePTX(*gpu, plan, code)))
       return failure();
 
@@ -401,11 +755,11 @@ public:
     FailureOr<simplan::PlanOp> cpuPlan = getPlan(*cpu);
     if (failed(cpuPlan))
       return failure();
-    std::string cpuPlanText;
-    llvm::raw_string_ostream cpuPlanOS(cpuPlanText);
-    if (failed(writePlanText(*cpuPlan, cpuPlanOS)))
+    FailureOr<std::unique_ptr<fb::PlanT>> cpuRead =
+        PlanReader(scene, *cpu).read(*cpuPlan);
+    if (failed(cpuRead))
       return failure();
-    if (cpuPlanText != code.plan)
+    if (packPlan(**cpuRead) != gpuPlan)
       return emitError(simulation.getLoc())
              << "the GPU and the CPU lowerings made different plans; the "
                 "bundle needs one plan for both kernel sets";
@@ -416,18 +770,21 @@ public:
              << "names the kernels " << cpuPlan->getKernelsAttr()
              << ", which are not a module of CPU kernels";
     CPUKernelOptions cpuOptions;
-    cpuOptions.optLevel = options.optLevel;
+    cpuOptions.optLevel = options.target.optLevel;
     FailureOr<std::string> library = compileCPUKernels(kernels, cpuOptions);
     if (failed(library))
       return failure();
-    code.cpu = std::move(*library);
+    auto object = std::make_unique<fb::CpuCodeT>();
+    object->isa = kCpuIsa.str();
+    object->object.assign(library->begin(), library->end());
+    code.plan->cpu.push_back(std::move(object));
     return success();
   }
 
   /// Compiles the reference executor's part (docs/Reference.md): the model
-  /// text and the shared object of the body functions, from the scheduled
-  /// IR. It shares no lowering with the strategies' kernels.
-  LogicalResult compileReference(std::string &model, std::string &library) {
+  /// and the shared object of the body functions, from the scheduled IR. It
+  /// shares no lowering with the strategies' kernels.
+  LogicalResult compileReference(fb::ReferenceT &reference) {
     ScopedDiagnosticHandler note(context, [&](Diagnostic &diag) {
       if (diag.getSeverity() == DiagnosticSeverity::Error)
         diag.attachNote(simulation.getLoc())
@@ -443,18 +800,17 @@ public:
     if (modules.empty() || std::next(modules.begin()) != modules.end())
       return emitError(simulation.getLoc())
              << "the reference lowering made no single module of functions";
-    ModuleOp reference = *modules.begin();
-    auto text = reference->getAttrOfType<StringAttr>(kReferenceModelAttrName);
-    if (!text)
-      return reference.emitError() << "has no reference model text";
-    model = text.getValue().str();
+    ModuleOp functions = *modules.begin();
+    if (failed(readReferenceModel(functions, scene, reference)))
+      return failure();
     CPUKernelOptions cpuOptions;
-    cpuOptions.optLevel = options.optLevel;
+    cpuOptions.optLevel = options.target.optLevel;
     FailureOr<std::string> compiled =
-        compileReferenceFunctions(reference, cpuOptions);
+        compileReferenceFunctions(functions, cpuOptions);
     if (failed(compiled))
       return failure();
-    library = std::move(*compiled);
+    reference.isa = kCpuIsa.str();
+    reference.object.assign(compiled->begin(), compiled->end());
     return success();
   }
 
@@ -488,12 +844,7 @@ private:
   LogicalResult compilePTX(ModuleOp gpu, simplan::PlanOp plan,
                            StrategyCode &code) {
     PassManager pm(context, ModuleOp::getOperationName());
-    GPUTargetOptions target;
-    target.chip = options.chip;
-    target.features = options.features;
-    target.optLevel = options.optLevel;
-    target.cudaPath = options.cudaPath;
-    buildSimGPUToPTXPipeline(pm, target);
+    buildSimGPUToPTXPipeline(pm, options.target);
 
     // Held back until it is known whether they are only libdevice's.
     SmallVector<Diagnostic> held;
@@ -537,14 +888,14 @@ private:
       return binary.emitError()
              << "expected PTX (an object in assembly format), got "
              << binary.getObjectsAttr()[0];
-    code.ptx = object.getObject().getValue().str();
-    // docs/Bundle.md: the PTX is NUL-terminated.
-    code.ptx.push_back('\0');
+    code.plan->ptx = object.getObject().getValue().str();
+    code.plan->ptx_chip = options.target.chip;
     return success();
   }
 
   ModuleOp module;
   SimulationOp simulation;
+  const SceneIndex &scene;
   const BundleOptions &options;
   MLIRContext *context;
 };
@@ -595,14 +946,12 @@ LogicalResult mlir::sim::writeBundle(ModuleOp module,
     return emitError(simulation.getLoc())
            << "the group size must be positive, not " << options.groupSize;
 
-  SmallVector<Section> sections;
-  {
-    std::string scene;
-    llvm::raw_string_ostream sceneOS(scene);
-    if (failed(writeSceneText(simulation, options.strategies, sceneOS)))
-      return failure();
-    sections.push_back({SectionKind::scene, kNoStrategy, std::move(scene)});
-  }
+  fb::BundleT bundle;
+  bundle.producer = kProducer.str();
+  bundle.scene = std::make_unique<fb::SceneT>();
+  SceneIndex scene;
+  if (failed(buildScene(simulation, *bundle.scene, scene)))
+    return failure();
 
   // Every strategy runs the front end, and both lowerings run after it: a
   // remark or warning about the scene would come up to eight times. Each is
@@ -620,7 +969,7 @@ LogicalResult mlir::sim::writeBundle(ModuleOp module,
     return success(!reported.insert(key).second);
   });
 
-  BundleWriter writer(module, simulation, options);
+  BundleWriter writer(module, simulation, scene, options);
   SmallVector<Strategy> withoutPTX;
   llvm::SetVector<StringRef> missingLibdevice;
   std::optional<Location> firstLibdeviceCall;
@@ -628,27 +977,18 @@ LogicalResult mlir::sim::writeBundle(ModuleOp module,
   for (auto [strategy, code] : llvm::zip_equal(options.strategies, codes)) {
     if (failed(writer.compile(strategy, code)))
       return failure();
-    uint32_t number = getStrategyNumber(strategy);
-    sections.push_back({SectionKind::plan, number, std::move(code.plan)});
-    if (code.ptx.empty()) {
+    if (code.plan->ptx.empty()) {
       withoutPTX.push_back(strategy);
       missingLibdevice.insert(code.missingLibdevice.begin(),
                               code.missingLibdevice.end());
       if (!firstLibdeviceCall)
         firstLibdeviceCall = code.firstLibdeviceCall;
-    } else {
-      sections.push_back({SectionKind::ptx, number, std::move(code.ptx)});
     }
-    sections.push_back({SectionKind::cpu, number, std::move(code.cpu)});
   }
 
-  std::string model, library;
-  if (failed(writer.compileReference(model, library)))
+  bundle.reference = std::make_unique<fb::ReferenceT>();
+  if (failed(writer.compileReference(*bundle.reference)))
     return failure();
-  sections.push_back(
-      {SectionKind::referenceModel, kNoStrategy, std::move(model)});
-  sections.push_back(
-      {SectionKind::referenceLibrary, kNoStrategy, std::move(library)});
 
   if (!withoutPTX.empty()) {
     InFlightDiagnostic warning =
@@ -662,11 +1002,34 @@ LogicalResult mlir::sim::writeBundle(ModuleOp module,
             << (missingLibdevice.size() == 1 ? " " : "s ");
     llvm::interleaveComma(missingLibdevice, warning);
     warning << ", but there is no libdevice at '"
-            << getLibdevicePath(options.cudaPath)
+            << getLibdevicePath(options.target.cudaPath)
             << "'; they run on the CPU only (give the CUDA toolkit's root "
                "with --sim-cuda-path or $CUDA_HOME)";
   }
 
-  writeContainer(sections, os);
+  for (StrategyCode &code : codes)
+    bundle.plans.push_back(std::move(code.plan));
+
+  // The header's CRC covers every byte after it: the FlatBuffer.
+  flatbuffers::FlatBufferBuilder builder;
+  fb::FinishBundleBuffer(builder, fb::Bundle::Pack(builder, &bundle));
+  ArrayRef<uint8_t> payload(builder.GetBufferPointer(), builder.GetSize());
+  // What a runtime verifies first; a bundle that fails it is a writer bug
+  // (a required field left out), never a file to write.
+  flatbuffers::Verifier verifier(payload.data(), payload.size());
+  if (!fb::VerifyBundleBuffer(verifier))
+    return emitError(simulation.getLoc())
+           << "the bundle's FlatBuffer fails the schema's verifier; this is "
+              "a bug of the bundle writer";
+  fb::Header header;
+  header.checksum = llvm::crc32(payload);
+  header.size = fb::kHeaderSize + payload.size();
+  if (header.size > fb::kMaxBundleBytes)
+    return emitError(simulation.getLoc())
+           << "the bundle would take " << header.size
+           << " bytes, more than a runtime reads (" << fb::kMaxBundleBytes
+           << ")";
+  os << fb::encodeHeader(header);
+  os.write(reinterpret_cast<const char *>(payload.data()), payload.size());
   return success();
 }

@@ -43,10 +43,7 @@ void mlir::sim::registerToBundleTranslation() {
           options.strategies.assign(flags.strategies.begin(),
                                     flags.strategies.end());
         options.groupSize = flags.groupSize;
-        options.chip = flags.chip;
-        options.features = flags.features;
-        options.optLevel = flags.optLevel;
-        options.cudaPath = flags.cudaPath;
+        options.target = flags.getGPUTarget();
         return writeBundle(*module, options, os);
       });
 }

@@ -135,9 +135,9 @@ void mlir::sim::registerToPTXTranslations() {
             sourceMgr, os, context,
             [](DialectRegistry &registry) { registry.insert<SimDialect>(); },
             [](OpPassManager &pm) {
-              SimToGPUOptions pipeline;
-              getTranslationOptions().copyTo(pipeline);
-              buildSimToGPUPipeline(pm, pipeline);
+              const TranslationOptions &flags = getTranslationOptions();
+              buildSimToGPUPipeline(pm, flags.strategy, flags.groupSize,
+                                    flags.getGPUTarget());
             });
       });
 
@@ -150,9 +150,8 @@ void mlir::sim::registerToPTXTranslations() {
         return translateToPTX<gpu::GPUModuleOp>(
             sourceMgr, os, context, [](DialectRegistry &) {},
             [](OpPassManager &pm) {
-              GPUTargetOptions pipeline;
-              getTranslationOptions().copyTo(pipeline);
-              buildSimGPUToPTXPipeline(pm, pipeline);
+              buildSimGPUToPTXPipeline(pm,
+                                       getTranslationOptions().getGPUTarget());
             });
       });
 }

@@ -49,7 +49,7 @@ sim.simulation @pair range(100) dt(1.0e-2 : f32) max_steps(4) {
 
 // CHECK-LABEL: module @pair_kernels {
 // CHECK-LABEL: func.func @substep_Follow(
-// CHECK-SAME:      %[[CLOCK:[^:]*]]: memref<?xi64>, %[[X:[^:]*]]: memref<?xf32>, %[[Y:[^:]*]]: memref<?xf32>, %[[RANGE:[^:]*]]: i64, %[[FIRST:[^:]*]]: i64, %[[END:[^:]*]]: i64, %[[GROUP:[^:]*]]: i64) attributes {simplan.group_arguments = 3 : i64}
+// CHECK-SAME:      %[[CLOCK:[^:]*]]: memref<?xi64>, %[[X:[^:]*]]: memref<?xf32>, %[[Y:[^:]*]]: memref<?xf32>, %[[RANGE:[^:]*]]: i64, %[[FIRST:[^:]*]]: i64, %[[END:[^:]*]]: i64, %[[GROUP:[^:]*]]: i64) attributes {simplan.clock_slots = 15 : i64, simplan.group_arguments = 3 : i64, simplan.shared = array<i64: 0, 0>}
 // CHECK:         %[[G:.*]] = arith.index_cast %[[GROUP]] : i64 to index
 //                One register per lane of the group.
 // CHECK:         %[[OWN:.*]] = memref.alloca(%[[G]]) : memref<?xf32>

@@ -82,7 +82,8 @@ sim.simulation @diffuse range(100) dt(1.0e-2 : f32) max_steps(3) {
 // CHECK:         memref.load %[[SNAP]]
 // CHECK-LABEL: simplan.plan @diffuse strategy("hip")
 // CHECK:         simplan.buffer @U : f32 stride(4) snapshot
-// CHECK:         simplan.component @Diffuse writes [@U] evaluations(8)
+// CHECK:         simplan.component @Diffuse writes [@U] evaluations(8) advance grid_substeps sub_clock(10){{$}}
+// CHECK-NEXT:    simplan.component @Watch writes [@W] evaluations(9) advance whole_step{{$}}
 // CHECK:         simplan.phase step {
 // CHECK-NEXT:      simplan.launch @diffuse_kernels::@advance single [#simplan.arg<clock>]
 // CHECK-NEXT:      simplan.launch @diffuse_kernels::@snapshot_U items [#simplan.arg<clock>, #simplan.arg<buffer @U>, #simplan.arg<snapshot @U>, #simplan.arg<range>]

@@ -58,8 +58,10 @@ sim.simulation @smooth range(10) dt(1.0e-1 : f32) max_steps(4) {
   sim.observe [@S]
 }
 
+// The kernel records the shared memory its launches ask for.
 // CHECK-LABEL: gpu.func @substep_Smooth(
 // CHECK-SAME:      %{{[^:]*}}: memref<?xi64>, %[[U:[^:]*]]: memref<?xf32>
+// CHECK-SAME:      kernel attributes {simplan.clock_slots = 15 : i64, simplan.shared = array<i64: 4, 8>}
 // CHECK:         %[[SHARED:.*]] = gpu.dynamic_shared_memory : memref<?xi8, #gpu.address_space<workgroup>>
 // CHECK:         %[[CACHE:.*]] = memref.view %[[SHARED]][%c0][%{{.*}}] : memref<?xi8, #gpu.address_space<workgroup>> to memref<?xf32, #gpu.address_space<workgroup>>
 // CHECK:         scf.while
@@ -93,6 +95,7 @@ sim.simulation @smooth range(10) dt(1.0e-1 : f32) max_steps(4) {
 // The CPU keeps no cache: the same reads compute the interpolation. The
 // plan is the same (the CPU runtime ignores the shared bytes).
 // CPU-LABEL: func.func @substep_Smooth(
+// CPU-SAME:      attributes {simplan.clock_slots = 15 : i64, simplan.group_arguments = 3 : i64, simplan.shared = array<i64: 4, 8>}
 // CPU-NOT:     memref.view
 // CPU-LABEL: simplan.plan @smooth strategy("hip-cache")
 // CPU:         simplan.launch @smooth_kernels::@substep_Smooth items [{{.*}}] for @Smooth shared(4, 8)

@@ -69,6 +69,7 @@ sim.simulation @rod range(1024) dt(1.0e-3 : f32) max_steps(4) {
 // SIMPLE:         arith.minsi %c1_i64{{[_0-9]*}}, %{{.*}} : i64
 // SIMPLE-LABEL: gpu.func @evaluate_Rod(
 // SIMPLE-SAME:      %[[CLOCK:[^:]*]]: memref<?xi64>, %[[Q:[^:]*]]: memref<?xf32>, %[[T:[^:]*]]: memref<?xf32>, %[[K:[^:]*]]: f32, %[[RANGE:[^:]*]]: i64, %[[DT:[^:]*]]: f32) kernel
+// SIMPLE-SAME:      attributes {simplan.clock_slots = 15 : i64, simplan.shared = array<i64: 0, 0>}
 // SIMPLE:         %[[M:.*]] = memref.load %[[CLOCK]][%c1]
 // SIMPLE:         %[[P:.*]] = memref.load %[[CLOCK]][%c2]
 // SIMPLE:         scf.if
@@ -80,10 +81,14 @@ sim.simulation @rod range(1024) dt(1.0e-3 : f32) max_steps(4) {
 // SIMPLE-NOT:         gpu.barrier
 // SIMPLE:         gpu.subgroup_reduce add %{{.*}} uniform
 // SIMPLE:         memref.atomic_rmw addi %{{.*}}, %[[CLOCK]][%c9]
-// SIMPLE-LABEL: simplan.plan @rod strategy("simple") kernels(@rod_kernels)
+// simple: a step cap of 1; every component takes the whole step, none
+// estimates.
+// SIMPLE-LABEL: simplan.plan @rod strategy("simple") kernels(@rod_kernels) range(1024) dt(1.000000e-03 : f32) max_steps(4) step_cap(1) group_size(256) clock_slots(15) histogram(10) {
 // SIMPLE:         simplan.param @k = 2.000000e+00 : f32
 // SIMPLE:         simplan.buffer @Q : f32 stride(4)
 // SIMPLE:         simplan.buffer @T : f32 stride(4) observed
+// SIMPLE-NEXT:    simplan.component @Heater writes [@Q] evaluations(8) advance whole_step{{$}}
+// SIMPLE-NEXT:    simplan.component @Rod writes [@T] evaluations(9) advance whole_step{{$}}
 // SIMPLE:         simplan.phase init {
 // SIMPLE-NEXT:      simplan.launch @rod_kernels::@reset_clock single [#simplan.arg<clock>]
 // SIMPLE-NEXT:      simplan.launch @rod_kernels::@init_Q items [#simplan.arg<buffer @Q>, #simplan.arg<range>]
@@ -111,7 +116,9 @@ sim.simulation @rod range(1024) dt(1.0e-3 : f32) max_steps(4) {
 // TRAD-LABEL: gpu.func @estimate_Rod(
 // TRAD-LABEL: gpu.func @advance(
 // TRAD:         memref.load %{{.*}}[%c4]
-// TRAD-LABEL: simplan.plan @rod strategy("traditional")
+// TRAD-LABEL: simplan.plan @rod strategy("traditional") {{.*}} max_steps(4) step_cap(4)
+// TRAD:         simplan.component @Heater writes [@Q] evaluations(8) advance whole_step estimates{{$}}
+// TRAD-NEXT:    simplan.component @Rod writes [@T] evaluations(9) advance whole_step estimates{{$}}
 // TRAD:         simplan.phase step {
 // TRAD-NEXT:      simplan.launch @rod_kernels::@estimate_Heater items
 // TRAD-NEXT:      simplan.launch @rod_kernels::@estimate_Rod items
@@ -169,7 +176,9 @@ sim.simulation @rod range(1024) dt(1.0e-3 : f32) max_steps(4) {
 // HIP-NEXT:          arith.addi
 // HIP-NEXT:          memref.store %[[FINAL]], %[[T]]
 // HIP:           gpu.subgroup_reduce add
-// HIP-LABEL: simplan.plan @rod strategy("hip")
+// HIP-LABEL: simplan.plan @rod strategy("hip") {{.*}} max_steps(4) step_cap(4)
+// HIP:         simplan.component @Heater writes [@Q] evaluations(8) advance whole_step estimates{{$}}
+// HIP-NEXT:    simplan.component @Rod writes [@T] evaluations(9) advance group_substeps{{$}}
 // HIP:         simplan.phase step {
 // HIP-NEXT:      simplan.launch @rod_kernels::@estimate_Heater items
 // HIP-NEXT:      simplan.launch @rod_kernels::@advance single

@@ -30,7 +30,7 @@ sim.simulation @spin range(32) dt(1.0e-2 : f32) max_steps(2) {
 }
 
 // CHECK-LABEL: gpu.func @total_Energy(
-// CHECK-SAME:      %[[CLOCK:[^:]*]]: memref<?xi64>, %[[V:[^:]*]]: memref<?xf32>, %[[OUT:[^:]*]]: memref<?xf64>, %[[RANGE:[^:]*]]: i64) kernel {
+// CHECK-SAME:      %[[CLOCK:[^:]*]]: memref<?xi64>, %[[V:[^:]*]]: memref<?xf32>, %[[OUT:[^:]*]]: memref<?xf64>, %[[RANGE:[^:]*]]: i64) kernel attributes {simplan.clock_slots = 12 : i64, simplan.shared = array<i64: 0, 0>} {
 // CHECK:         %[[C2:.*]] = arith.constant 2 : index
 // CHECK:         %[[PARITY:.*]] = memref.load %[[CLOCK]][%[[C2]]] : memref<?xi64>
 // CHECK:         %[[HALF:.*]] = arith.index_cast %[[PARITY]] : i64 to index

@@ -1,6 +1,6 @@
 // Each body becomes a per-item function; view reads and parameters become
-// calls through the context's callbacks (docs/Reference.md), and the model
-// text records what the executor needs to know.
+// calls through the context's callbacks (docs/Reference.md), and the
+// sim.reference_model dictionary records what the executor needs to know.
 //
 // RUN: sim-opt %s --split-input-file --sim-reference-pipeline | FileCheck %s
 // RUN: sim-opt %s --split-input-file --sim-reference-pipeline | sim-opt --split-input-file | FileCheck %s
@@ -64,7 +64,18 @@ sim.simulation @rod range(16) dt(1.0e-3 : f32) max_steps(4) {
   sim.observe [@T]
 }
 
-// CHECK-LABEL: module @rod_reference attributes {sim.reference_model = "reference rod\0Aparam 0 k f32\0Aparam 1 unused i32\0Abuffer 0 Q f32 interp linear boundary clamp\0Abuffer 1 T vector<3xf64> interp linear boundary wrap observed exact\0Acomponent 0 Heater substep in_kernel num_steps writes Q reads T\0Acomponent 1 Rod substep in_kernel writes T reads Q\0Aschedule Heater Rod\0A"}
+// The model: parameters and buffers by scene name (the model's indices),
+// components in schedule order with model buffer indices and how each takes
+// a big step under every strategy (@Heater bounds the hip step).
+// CHECK-LABEL: module @rod_reference attributes {sim.reference_model = {
+// CHECK-SAME:    buffers = ["Q", "T"],
+// CHECK-SAME:    components = [{name = "Heater", num_steps = true, reads = array<i64: 1>,
+// CHECK-SAME:      stepping = {hip = {advance = #sim<advance whole_step>, estimates = true}, "hip-cache" = {advance = #sim<advance whole_step>, estimates = true}, simple = {advance = #sim<advance whole_step>, estimates = false}, traditional = {advance = #sim<advance whole_step>, estimates = true}},
+// CHECK-SAME:      sub_stepping = #sim<sub_stepping in_kernel>, writes = array<i64: 0>},
+// CHECK-SAME:    {name = "Rod", num_steps = false, reads = array<i64: 0>,
+// CHECK-SAME:      stepping = {hip = {advance = #sim<advance whole_step>, estimates = false}, "hip-cache" = {advance = #sim<advance whole_step>, estimates = false}, simple = {advance = #sim<advance whole_step>, estimates = false}, traditional = {advance = #sim<advance whole_step>, estimates = false}},
+// CHECK-SAME:      sub_stepping = #sim<sub_stepping in_kernel>, writes = array<i64: 1>}],
+// CHECK-SAME:    params = ["k", "unused"], totals = []}}
 // CHECK-NOT: sim.
 // CHECK: func.func @sim_ref_init_0(%{{.*}}: !llvm.ptr, %{{.*}}: i64, %{{.*}}: !llvm.ptr)
 // CHECK: func.func @sim_ref_init_1(%[[CTX:.*]]: !llvm.ptr, %[[ITEM:.*]]: i64, %[[OUT:.*]]: !llvm.ptr)
@@ -138,8 +149,13 @@ sim.simulation @diffuse range(16) dt(1.0e-3 : f64) max_steps(4) {
   sim.observe [@U]
 }
 
-// CHECK-LABEL: module @diffuse_reference
-// CHECK-SAME: buffer 0 U f64 interp hermite:V boundary zero observed\0Abuffer 1 V f64 interp none boundary clamp\0Acomponent 0 Spread substep grid_sync num_steps writes U V reads U V\0Aschedule Spread\0A
+// grid_sync: grid-wide sub-steps under hip and hip-cache.
+// CHECK-LABEL: module @diffuse_reference attributes {sim.reference_model = {
+// CHECK-SAME:    buffers = ["U", "V"],
+// CHECK-SAME:    components = [{name = "Spread", num_steps = true, reads = array<i64: 0, 1>,
+// CHECK-SAME:      stepping = {hip = {advance = #sim<advance grid_substeps>, estimates = false}, "hip-cache" = {advance = #sim<advance grid_substeps>, estimates = false}, simple = {advance = #sim<advance whole_step>, estimates = false}, traditional = {advance = #sim<advance whole_step>, estimates = true}},
+// CHECK-SAME:      sub_stepping = #sim<sub_stepping grid_sync>, writes = array<i64: 0, 1>}],
+// CHECK-SAME:    params = [], totals = []}}
 // CHECK: func.func @sim_ref_num_steps_0(
 // CHECK:   arith.constant -3 : i32
 // CHECK:   %[[MAX:.*]] = llvm.load %{{.*}} {alignment = 4 : i64} : !llvm.ptr -> i32
@@ -152,3 +168,64 @@ sim.simulation @diffuse range(16) dt(1.0e-3 : f64) max_steps(4) {
 // CHECK:   llvm.store %[[U]]
 // CHECK:   llvm.getelementptr %[[OUTS]][1]
 // CHECK:   llvm.store %[[V]]
+
+// -----
+
+// In-kernel sub-steps under hip (nothing reads through the back edge, so
+// nothing bounds the step), a total with the model buffers it reads, and
+// names that are no identifiers.
+sim.simulation @"two stage" range(16) dt(1.0e-3 : f32) max_steps(4) {
+  sim.param @"gain 1" = 2.0 : f32
+  sim.buffer @"X 0" : f32 init {
+  ^bb0(%i: index):
+    %zero = arith.constant 0.0 : f32
+    sim.yield %zero : f32
+  }
+  sim.buffer @Y : f32 init {
+  ^bb0(%i: index):
+    %zero = arith.constant 0.0 : f32
+    sim.yield %zero : f32
+  }
+  sim.component @A writes(@"X 0") num_steps {
+  ^bb0(%i: index, %t: i64):
+    %two = arith.constant 2 : i32
+    sim.yield %two : i32
+  } evaluate {
+  ^bb0(%i: index, %t: i64, %n: i32, %dt: f32):
+    %x = sim.read @"X 0"[%i] : f32
+    %g = sim.get_param @"gain 1" : f32
+    %y = arith.mulf %x, %g : f32
+    sim.yield %y : f32
+  }
+  sim.component @B writes(@Y) num_steps {
+  ^bb0(%i: index, %t: i64):
+    %one = arith.constant 1 : i32
+    sim.yield %one : i32
+  } evaluate {
+  ^bb0(%i: index, %t: i64, %n: i32, %dt: f32):
+    %x = sim.read @"X 0"[%i] : f32
+    sim.yield %x : f32
+  }
+  sim.total @"sum Y" : f64 {
+  ^bb0(%i: index):
+    %y = sim.read @Y[%i] : f32
+    %x = sim.read @"X 0"[%i] : f32
+    %s = arith.addf %y, %x : f32
+    %e = arith.extf %s : f32 to f64
+    sim.yield %e : f64
+  }
+  sim.schedule [@A, @B]
+  sim.observe [@Y]
+}
+
+// CHECK-LABEL: module @"two stage_reference" attributes {sim.reference_model = {
+// CHECK-SAME:    buffers = ["X 0", "Y"],
+// CHECK-SAME:    components = [{name = "A", num_steps = true, reads = array<i64: 0>,
+// CHECK-SAME:      stepping = {hip = {advance = #sim<advance group_substeps>, estimates = false}, "hip-cache" = {advance = #sim<advance group_substeps>, estimates = false}, simple = {advance = #sim<advance whole_step>, estimates = false}, traditional = {advance = #sim<advance whole_step>, estimates = true}},
+// CHECK-SAME:      sub_stepping = #sim<sub_stepping in_kernel>, writes = array<i64: 0>},
+// CHECK-SAME:    {name = "B", num_steps = true, reads = array<i64: 0>,
+// CHECK-SAME:      stepping = {hip = {advance = #sim<advance group_substeps>, estimates = false}, "hip-cache" = {advance = #sim<advance group_substeps>, estimates = false}, simple = {advance = #sim<advance whole_step>, estimates = false}, traditional = {advance = #sim<advance whole_step>, estimates = true}},
+// CHECK-SAME:      sub_stepping = #sim<sub_stepping in_kernel>, writes = array<i64: 1>}],
+// CHECK-SAME:    params = ["gain 1"],
+// CHECK-SAME:    totals = [{name = "sum Y", reads = array<i64: 1, 0>}]}}
+// CHECK: func.func @sim_ref_total_0(

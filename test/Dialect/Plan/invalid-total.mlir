@@ -8,7 +8,7 @@ module attributes {gpu.container_module} {
       gpu.return
     }
   }
-  simplan.plan @p strategy("simple") kernels(@k) range(4) dt(1.0e-2 : f32) max_steps(1) group_size(32) clock_slots(10) histogram(8) {
+  simplan.plan @p strategy("simple") kernels(@k) range(4) dt(1.0e-2 : f32) max_steps(1) step_cap(1) group_size(32) clock_slots(10) histogram(8) {
     simplan.buffer @E : f64 stride(8)
     simplan.phase total {
       // expected-error @+1 {{'simplan.launch' op passes #simplan.arg<total @E>, but the plan has no total @E}}
@@ -25,7 +25,7 @@ module attributes {gpu.container_module} {
       gpu.return
     }
   }
-  simplan.plan @p strategy("simple") kernels(@k) range(4) dt(1.0e-2 : f32) max_steps(1) group_size(32) clock_slots(10) histogram(8) {
+  simplan.plan @p strategy("simple") kernels(@k) range(4) dt(1.0e-2 : f32) max_steps(1) step_cap(1) group_size(32) clock_slots(10) histogram(8) {
     simplan.total @E : f64
     simplan.phase total {
       // expected-error @+1 {{'simplan.launch' op passes #simplan.arg<total @E> as argument 0 of type 'i64'}}

@@ -4,20 +4,24 @@
 //
 // RUN: sim-translate %s --sim-to-bundle --sim-strategies=simple,hip \
 // RUN:   --sim-cuda-path=/nonexistent/cuda --verify-diagnostics -o %t.simb
-// RUN: %python %S/Inputs/dump-bundle.py %t.simb | FileCheck %s --check-prefix=SECTIONS
-// RUN: sim-run %t.simb --steps 5 | FileCheck %s --check-prefix=REPORT
+// RUN: %python %S/Inputs/dump-bundle.py --flatc %flatc --schema %bundle_schema %t.simb \
+// RUN:   | FileCheck %s --check-prefix=PLANS
 //
 // RUN: sim-translate %S/Inputs/decay.mlir --sim-to-bundle --sim-strategies=hip \
 // RUN:   --sim-cuda-path=/nonexistent/cuda -o %t.decay.simb 2>&1 \
 // RUN:   | FileCheck %s --allow-empty --check-prefix=QUIET
-// RUN: %python %S/Inputs/dump-bundle.py %t.decay.simb | FileCheck %s --check-prefix=DECAY
+// RUN: %python %S/Inputs/dump-bundle.py --flatc %flatc --schema %bundle_schema %t.decay.simb \
+// RUN:   | FileCheck %s --check-prefix=DECAY
+//
+// RUN: sim-run %t.simb --steps 5 | FileCheck %s --check-prefix=REPORT
 
-// SECTIONS:      section 0: scene -
-// SECTIONS-NEXT: section 1: plan simple
-// SECTIONS-NEXT: section 2: cpu simple
-// SECTIONS-NEXT: section 3: plan hip
-// SECTIONS-NEXT: section 4: cpu hip
-// SECTIONS-NOT:  ptx
+// PLANS:      --- plan 0 Simple
+// PLANS:      ptx: none
+// PLANS-NEXT: cpu x86-64: shared object, 4 kernels, every one exported
+// PLANS-NEXT: --- plan 1 Hip
+// PLANS:      ptx: none
+// PLANS-NEXT: cpu x86-64: shared object, 4 kernels, every one exported
+// PLANS-NEXT: --- reference
 
 // REPORT:      scene cooling, strategy hip, backend cpu
 // REPORT-NEXT:   (not CUDA: the bundle has no PTX for strategy 'hip')
@@ -25,8 +29,9 @@
 
 // QUIET-NOT: warning
 
-// DECAY: section 2: ptx hip
-// DECAY: --- ptx hip: .target sm_90, {{[0-9]+}} kernels, every one an .entry
+// DECAY:      --- plan 0 Hip
+// DECAY:      ptx: .target sm_90, chip sm_90, 4 kernels, every one an .entry
+// DECAY-NEXT: cpu x86-64: shared object, 4 kernels, every one exported
 
 sim.simulation @cooling range(64) dt(1.0e-2 : f32) max_steps(2) {
   sim.param @rate = 2.0 : f32

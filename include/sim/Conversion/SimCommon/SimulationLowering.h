@@ -73,6 +73,7 @@ private:
   void planClock();
 
   // Kernels and launches.
+  std::string getKernelName(StringRef name);
   Kernel beginKernel(StringRef name, BufferOp exactOf = nullptr,
                      TotalOp totalOf = nullptr);
   LogicalResult endKernel(Kernel &kernel, simplan::LaunchShape shape,

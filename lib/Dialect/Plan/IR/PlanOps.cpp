@@ -1,15 +1,17 @@
-//===- PlanOps.cpp - simplan dialect
-//---------------------------------------===//
+//===- PlanOps.cpp - simplan dialect --------------------------------------===//
 //
 // The plan's verifiers make sure that a runtime can execute a plan without
 // guessing: every launch names a kernel that exists and takes exactly the
 // arguments listed (memrefs where the runtime passes memory, scalars
-// elsewhere), and every symbol an argument names is a buffer or parameter of
-// the plan.
+// elsewhere) with the shared memory and clock the kernel was made for, every
+// symbol an argument names is a buffer or parameter of the plan, and every
+// clock slot the plan names is inside the clock.
 //
 //===----------------------------------------------------------------------===//
 
 #include "sim/Dialect/Plan/IR/PlanOps.h"
+#include "sim/Dialect/Sim/IR/SimDialect.h"
+#include "sim/Runtime/bundle_generated.h"
 
 #include "mlir/IR/BuiltinTypes.h"
 #include "mlir/IR/DialectImplementation.h"
@@ -34,7 +36,13 @@ static ParseResult parseEnumKeyword(OpAsmParser &parser, EnumAttrTy &attr) {
   SMLoc loc = parser.getCurrentLocation();
   if (parser.parseKeyword(&keyword))
     return failure();
-  std::optional<Enum> value = symbolizeEnum<Enum>(keyword);
+  // The enum's own namespace declares its symbolizeEnum (advance is the sim
+  // dialect's).
+  std::optional<Enum> value;
+  if constexpr (std::is_same_v<Enum, mlir::sim::Advance>)
+    value = mlir::sim::symbolizeEnum<Enum>(keyword);
+  else
+    value = symbolizeEnum<Enum>(keyword);
   if (!value)
     return parser.emitError(loc) << "unknown keyword '" << keyword << "'";
   attr = EnumAttrTy::get(parser.getContext(), *value);
@@ -58,11 +66,69 @@ void PlanDialect::initialize() {
   registerAttributes();
 }
 
+// The launch arguments are the bundle schema's, number for number.
+static constexpr bool sameArgKind(ArgKind kind, ::sim::bundle::ArgKind other) {
+  return uint32_t(kind) == uint32_t(other);
+}
+static_assert(sameArgKind(ArgKind::clock, ::sim::bundle::ArgKind::Clock) &&
+                  sameArgKind(ArgKind::buffer,
+                              ::sim::bundle::ArgKind::Buffer) &&
+                  sameArgKind(ArgKind::snapshot,
+                              ::sim::bundle::ArgKind::Snapshot) &&
+                  sameArgKind(ArgKind::exact, ::sim::bundle::ArgKind::Exact) &&
+                  sameArgKind(ArgKind::param, ::sim::bundle::ArgKind::Param) &&
+                  sameArgKind(ArgKind::range, ::sim::bundle::ArgKind::Range) &&
+                  sameArgKind(ArgKind::dt, ::sim::bundle::ArgKind::Dt) &&
+                  sameArgKind(ArgKind::time, ::sim::bundle::ArgKind::Time) &&
+                  sameArgKind(ArgKind::total, ::sim::bundle::ArgKind::Total),
+              "simplan's ArgKind and the bundle schema's differ");
+
+/// Slots of a sub-step clock (docs/Plan.md, "The clock").
+constexpr int64_t kSubClockSlots = int64_t(::sim::bundle::SubClockSlot::Slots);
+
 void PlanDialect::registerAttributes() {
   addAttributes<
 #define GET_ATTRDEF_LIST
 #include "sim/Dialect/Plan/IR/PlanAttrs.cpp.inc"
       >();
+}
+
+/// The records a kernel function carries for its launches (`simplan.shared`,
+/// `simplan.clock_slots`, `simplan.group_arguments`); no other `simplan.`
+/// attribute may appear outside the dialect's own operations.
+LogicalResult PlanDialect::verifyOperationAttribute(Operation *op,
+                                                    NamedAttribute attribute) {
+  StringRef name = attribute.getName().getValue();
+  Attribute value = attribute.getValue();
+  if (name == getSharedAttrName()) {
+    auto shared = dyn_cast<DenseI64ArrayAttr>(value);
+    if (!shared || shared.size() != 2 || shared[0] < 0 || shared[1] < 0)
+      return op->emitError()
+             << "'" << name
+             << "' must be array<i64: per_thread, fixed> of two byte counts "
+                "of at least 0, not "
+             << value;
+  } else if (name == getClockSlotsAttrName()) {
+    auto slots = dyn_cast<IntegerAttr>(value);
+    if (!slots || !slots.getType().isInteger(64) || slots.getInt() < 1)
+      return op->emitError()
+             << "'" << name << "' must be a positive i64 slot count, not "
+             << value;
+  } else if (name == getGroupArgumentsAttrName()) {
+    auto count = dyn_cast<IntegerAttr>(value);
+    if (!count || !count.getType().isInteger(64) || count.getInt() < 0)
+      return op->emitError()
+             << "'" << name
+             << "' must be an i64 count of trailing arguments, not " << value;
+  } else {
+    return op->emitError() << "'" << name
+                           << "' is not an attribute of the simplan dialect";
+  }
+  if (!isa<FunctionOpInterface>(op))
+    return op->emitError() << "'" << name
+                           << "' is a record of a kernel function, but '"
+                           << op->getName() << "' is not a function";
+  return success();
 }
 
 /// Kinds that name a symbol of the plan.
@@ -140,6 +206,41 @@ LogicalResult PlanOp::verifyRegions() {
   if (getHistogramSlot() + getMaxSteps() + 1 > getClockSlots())
     return emitOpError() << "has a clock of " << getClockSlots()
                          << " slots, too small for its histogram";
+  if (getStepCap() < 1 || getStepCap() > getMaxSteps())
+    return emitOpError() << "has a step cap of " << getStepCap()
+                         << ", which is not between 1 and max_steps ("
+                         << getMaxSteps() << ")";
+  // The fixed slots come first; a component's counters sit between them and
+  // the histogram.
+  int64_t firstFree = int64_t(::sim::bundle::ClockSlot::FirstFree);
+  for (ComponentOp component : getBlock().getOps<ComponentOp>()) {
+    int64_t slot = component.getEvaluations();
+    int64_t histogram = getHistogramSlot();
+    if (slot < firstFree || slot >= histogram)
+      return component.emitOpError()
+             << "counts its evaluations in clock slot " << slot
+             << ", which is not between the fixed slots and the histogram ["
+             << firstFree << ", " << getHistogramSlot() << ")";
+    std::optional<int64_t> subClock = component.getSubClock();
+    if (subClock &&
+        (*subClock < firstFree || *subClock + kSubClockSlots > histogram))
+      return component.emitOpError()
+             << "has a sub-step clock at slots " << *subClock << " to "
+             << *subClock + kSubClockSlots - 1
+             << ", which are not between the fixed slots and the histogram ["
+             << firstFree << ", " << getHistogramSlot() << ")";
+  }
+  return success();
+}
+
+LogicalResult ComponentOp::verify() {
+  bool grid = getAdvance() == mlir::sim::Advance::grid_substeps;
+  if (grid && !getSubClock())
+    return emitOpError() << "advances in grid_substeps but has no sub_clock";
+  if (!grid && getSubClock())
+    return emitOpError() << "has a sub_clock but advances in "
+                         << mlir::sim::stringifyAdvance(getAdvance())
+                         << "; only grid_substeps components have one";
   return success();
 }
 
@@ -150,7 +251,8 @@ LogicalResult LaunchOp::verifySymbolUses(SymbolTableCollection &symbolTable) {
   if (!container)
     return emitOpError() << "launches " << getKernel()
                          << ", but there is no kernel container "
-                         << getKernel().getRootReference();
+                         << FlatSymbolRefAttr::get(
+                                getKernel().getRootReference());
   // Once the kernels are compiled (a gpu.binary), there is no function left
   // to compare the arguments with.
   if (!container->hasTrait<OpTrait::SymbolTable>())
@@ -175,6 +277,23 @@ LogicalResult LaunchOp::verifySymbolUses(SymbolTableCollection &symbolTable) {
             symbolTable.lookupSymbolIn(plan, component)))
       return emitOpError() << "is for " << component
                            << ", which is not a component of the plan";
+  // What the kernel was made for, where it says so.
+  if (auto shared = function->getAttrOfType<DenseI64ArrayAttr>(
+          PlanDialect::getSharedAttrName());
+      shared && shared.size() == 2 &&
+      (shared[0] != int64_t(getSharedPerThread()) ||
+       shared[1] != int64_t(getSharedFixed())))
+    return emitOpError() << "asks for shared(" << getSharedPerThread() << ", "
+                         << getSharedFixed() << "), but " << getKernel()
+                         << " records shared(" << shared[0] << ", " << shared[1]
+                         << ")";
+  if (auto slots = function->getAttrOfType<IntegerAttr>(
+          PlanDialect::getClockSlotsAttrName());
+      slots && slots.getInt() != int64_t(plan.getClockSlots()))
+    return emitOpError() << "launches " << getKernel()
+                         << ", which was made for a clock of " << slots.getInt()
+                         << " slots, in a plan whose clock has "
+                         << plan.getClockSlots();
   for (auto [index, attr, type] :
        llvm::enumerate(getArgs().getAsRange<ArgAttr>(), inputs)) {
     if (isMemory(attr.getKind()) != isa<MemRefType>(type))

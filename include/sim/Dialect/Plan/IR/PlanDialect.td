@@ -27,9 +27,18 @@ def Plan_Dialect : Dialect {
     the host never reads a value back between big steps and can launch many
     big steps ahead.
 
+    Every kernel the lowering makes records, as discardable attributes of
+    its function, what each launch of it must agree with:
+    `simplan.shared = array<i64: per_thread, fixed>` (its dynamic shared
+    memory) and `simplan.clock_slots = N : i64` (the clock it addresses); a
+    CPU kernel also has `simplan.group_arguments = 3 : i64` (its trailing
+    group arguments). The bundle writer copies them into the bundle, where
+    the runtime checks every launch against them.
+
     ```mlir
     simplan.plan @decay strategy("hip") kernels(@decay_kernels) range(1024)
-        dt(1.0e-2 : f32) max_steps(4) group_size(256) clock_slots(14) {
+        dt(1.0e-2 : f32) max_steps(4) step_cap(4) group_size(256)
+        clock_slots(14) histogram(9) {
       simplan.buffer @X : f32 stride(4) observed
       simplan.phase init {
         simplan.launch @decay_kernels::@init_X items
@@ -39,7 +48,9 @@ def Plan_Dialect : Dialect {
     }
     ```
   }];
+  let dependentDialects = ["::mlir::sim::SimDialect"];
   let useDefaultAttributePrinterParser = 1;
+  let hasOperationAttrVerify = 1;
   let extraClassDeclaration = [{
     void registerAttributes();
     /// On a kernel function: the number of trailing arguments that are not
@@ -47,6 +58,15 @@ def Plan_Dialect : Dialect {
     /// size).
     static ::llvm::StringRef getGroupArgumentsAttrName() {
       return "simplan.group_arguments";
+    }
+    /// On a kernel function: the dynamic shared memory every launch of it
+    /// needs, `array<i64: per_thread, fixed>` (bytes: `per_thread * group
+    /// size + fixed`), as the lowering planned its caches.
+    static ::llvm::StringRef getSharedAttrName() { return "simplan.shared"; }
+    /// On a kernel function: the number of clock slots (`i64`) it was
+    /// compiled for, the plan's `clock_slots`.
+    static ::llvm::StringRef getClockSlotsAttrName() {
+      return "simplan.clock_slots";
     }
   }];
 }

@@ -14,6 +14,7 @@
 #include "mlir/IR/OpImplementation.h"
 #include "mlir/IR/RegionKindInterface.h"
 #include "mlir/IR/SymbolTable.h"
+#include "sim/Dialect/Sim/IR/SimAttrs.h"
 
 #include "sim/Dialect/Plan/IR/PlanDialect.h.inc"
 #include "sim/Dialect/Plan/IR/PlanEnums.h.inc"

@@ -52,8 +52,7 @@ def Plan_ArgKind : I32Enum<"ArgKind", "what a launch argument is", [
     I32EnumCase<"clock", 0>, I32EnumCase<"buffer", 1>,
     I32EnumCase<"snapshot", 2>, I32EnumCase<"exact", 3>,
     I32EnumCase<"param", 4>, I32EnumCase<"range", 5>, I32EnumCase<"dt", 6>,
-    I32EnumCase<"max_steps", 7>, I32EnumCase<"time", 8>,
-    I32EnumCase<"total", 9>]> {
+    I32EnumCase<"time", 7>, I32EnumCase<"total", 8>]> {
   let cppNamespace = "::mlir::simplan";
   let description = [{
     `clock`: the clock (`memref<?xi64>`, `clock_slots` entries). `buffer @B`:
@@ -62,9 +61,11 @@ def Plan_ArgKind : I32Enum<"ArgKind", "what a launch argument is", [
     elements). `exact @B`: the output of B's exact solution (`range`
     elements). `param @P`: the run-time value of parameter P (its type).
     `range`: the item count (`i64`). `dt`: the base time step (the plan's dt
-    type). `max_steps`: the largest big step (`i64`). `time`: the time of an
-    exact solution, in time units (`f64`). `total @T`: the per-item values of
-    total T (`memref<?xf64>`, `range` elements).
+    type). `time`: the time of an exact solution, in time units (`f64`).
+    `total @T`: the per-item values of total T (`memref<?xf64>`, `range`
+    elements). `max_steps` is no argument: it is compiled into the kernels.
+    The cases and their numbers are the bundle schema's `ArgKind`
+    (runtime/schema/bundle.fbs).
   }];
 }
 
@@ -86,6 +87,19 @@ def Plan_ArgAttr : AttrDef<Plan_Dialect, "Arg"> {
   let genVerifyDecl = 1;
 }
 
+/// The sim dialect's `#sim<advance ...>` (docs/Dialects/Sim.md, `Advance`),
+/// which `--sim-plan-memory` records on a component. Wrapped here rather
+/// than included with SimAttrs.td, whose enums the simplan generators would
+/// emit again.
+def Plan_AdvanceAttr : Attr<CPred<"::llvm::isa<::mlir::sim::AdvanceAttr>($_self)">,
+    "how a component advances through a big step (`#sim<advance ...>`)"> {
+  let storageType = "::mlir::sim::AdvanceAttr";
+  let returnType = "::mlir::sim::Advance";
+  let convertFromStorage = "$_self.getValue()";
+  let constBuilderCall =
+      "::mlir::sim::AdvanceAttr::get($_builder.getContext(), $0)";
+}
+
 //===----------------------------------------------------------------------===//
 // Operations
 //===----------------------------------------------------------------------===//
@@ -104,18 +118,23 @@ def Plan_PlanOp : Plan_Op<"plan", [
     launch arguments, so a runtime may change them without recompiling.
     `max_steps` and `group_size` are the values the kernels were planned for
     (the clock holds a histogram of big-step sizes up to `max_steps`).
-    `clock_slots` is the number of `i64` entries of the clock; docs/Plan.md
-    gives its layout (`T`, `m`, the parity, the end of the run, the pending
-    estimate, the big steps taken, evaluation counters, sub-step clocks and
-    the histogram).
+    `step_cap` is the largest big step the strategy takes (1 under `simple`,
+    `max_steps` otherwise), as `--sim-plan-memory` recorded it; `advance`
+    caps every big step with it. `clock_slots` is the number of `i64`
+    entries of the clock; docs/Plan.md gives its layout (`T`, `m`, the
+    parity, the end of the run, the pending estimate, the big steps taken,
+    evaluation counters, sub-step clocks and the histogram, which starts at
+    slot `histogram`).
 
     ```mlir
     simplan.plan @rod strategy("hip") kernels(@rod_kernels) range(1024)
-        dt(1.0e-3 : f32) max_steps(4) group_size(256) clock_slots(20) {
+        dt(1.0e-3 : f32) max_steps(4) step_cap(4) group_size(256)
+        clock_slots(15) histogram(10) {
       simplan.param @k = 2.0 : f32
       simplan.buffer @Q : f32 stride(4)
       simplan.buffer @T : f32 stride(4) observed
-      simplan.component @Heater writes [@Q] evaluations(8)
+      simplan.component @Heater writes [@Q] evaluations(8) advance whole_step
+          estimates
       simplan.phase init { ... }
       simplan.phase step { ... }
       simplan.phase finish { ... }
@@ -125,13 +144,15 @@ def Plan_PlanOp : Plan_Op<"plan", [
   let arguments = (ins SymbolNameAttr:$sym_name, StrAttr:$strategy,
                        FlatSymbolRefAttr:$kernels, I64Attr:$range,
                        TypedAttrInterface:$dt, I64Attr:$max_steps,
-                       I64Attr:$group_size, I64Attr:$clock_slots,
+                       I64Attr:$step_cap, I64Attr:$group_size,
+                       I64Attr:$clock_slots,
                        I64Attr:$histogram_slot);
   let regions = (region SizedRegion<1>:$body);
   let assemblyFormat = [{
     $sym_name `strategy` `(` $strategy `)` `kernels` `(` $kernels `)`
     `range` `(` $range `)` `dt` `(` $dt `)` `max_steps` `(` $max_steps `)`
-    `group_size` `(` $group_size `)` `clock_slots` `(` $clock_slots `)`
+    `step_cap` `(` $step_cap `)` `group_size` `(` $group_size `)`
+    `clock_slots` `(` $clock_slots `)`
     `histogram` `(` $histogram_slot `)` attr-dict-with-keyword $body
   }];
   let hasRegionVerifier = 1;
@@ -179,21 +200,33 @@ def Plan_BufferOp : Plan_Op<"buffer", [Symbol, HasParent<"PlanOp">]> {
 }
 
 def Plan_ComponentOp : Plan_Op<"component", [Symbol, HasParent<"PlanOp">]> {
-  let summary = "a component, what it writes, and its evaluation counter";
+  let summary = "a component: what it writes, how it advances, its counters";
   let description = [{
     The buffers the component writes, and the clock slot to which each
     kernel that evaluates it adds the number of item evaluations it
-    performed.
+    performed. `advance` and `estimates` are what `--sim-plan-memory`
+    recorded on the component for the plan's strategy: how it advances
+    through a big step (`whole_step`, `group_substeps` or `grid_substeps`,
+    the sim dialect's `Advance`) and whether its `num_steps` decides the
+    size of the big step (an `estimate_C` launch before `advance`). A
+    `grid_substeps` component has a sub-step clock of four slots from
+    `sub_clock` (docs/Plan.md, "The clock"); no other component has one.
 
     ```mlir
-    simplan.component @C0 writes [@B0] evaluations(8)
+    simplan.component @C0 writes [@B0] evaluations(8) advance whole_step estimates
+    simplan.component @C1 writes [@B1] evaluations(9) advance grid_substeps sub_clock(10)
     ```
   }];
   let arguments = (ins SymbolNameAttr:$sym_name,
-                       FlatSymbolRefArrayAttr:$writes, I64Attr:$evaluations);
+                       FlatSymbolRefArrayAttr:$writes, I64Attr:$evaluations,
+                       Plan_AdvanceAttr:$advance, UnitAttr:$estimates,
+                       OptionalAttr<I64Attr>:$sub_clock);
   let assemblyFormat = [{
-    $sym_name `writes` $writes `evaluations` `(` $evaluations `)` attr-dict
+    $sym_name `writes` $writes `evaluations` `(` $evaluations `)`
+    `advance` custom<EnumKeyword>($advance) (`estimates` $estimates^)?
+    (`sub_clock` `(` $sub_clock^ `)`)? attr-dict
   }];
+  let hasVerifier = 1;
 }
 
 def Plan_TotalOp : Plan_Op<"total", [Symbol, HasParent<"PlanOp">]> {
@@ -265,7 +298,9 @@ def Plan_LaunchOp : Plan_Op<"launch", [
     launch writes, if any. `shared_per_thread` and `shared_fixed` give the dynamic
     shared memory in bytes: `shared_per_thread * group size + shared_fixed`
     (both 0 when the kernel needs none; static workgroup memory is part of
-    the kernel).
+    the kernel). Where the kernel function is present, its
+    `simplan.shared` record must say the same, and its `simplan.clock_slots`
+    record must be the plan's `clock_slots`.
 
     ```mlir
     simplan.launch @k::@substep_C1 items

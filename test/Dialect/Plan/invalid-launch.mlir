@@ -1,0 +1,249 @@
+// RUN: sim-opt %s --split-input-file --verify-diagnostics --allow-unregistered-dialect
+
+// Errors of launches (LaunchOp::verifySymbolUses and the ODS constraints):
+// the kernel, its arguments, the symbols they name, and the records of the
+// kernel function. invalid-total.mlir has the errors of total arguments.
+
+module attributes {gpu.container_module} {
+  simplan.plan @p strategy("simple") kernels(@k) range(4) dt(1.0e-2 : f32) max_steps(1) step_cap(1) group_size(32) clock_slots(10) histogram(8) {
+    simplan.phase init {
+      // expected-error @+1 {{'simplan.launch' op launches @k::@init, but there is no kernel container @k}}
+      simplan.launch @k::@init single [#simplan.arg<clock>]
+    }
+  }
+}
+
+// -----
+
+module attributes {gpu.container_module} {
+  gpu.module @k {
+  }
+  simplan.plan @p strategy("simple") kernels(@k) range(4) dt(1.0e-2 : f32) max_steps(1) step_cap(1) group_size(32) clock_slots(10) histogram(8) {
+    simplan.phase init {
+      // expected-error @+1 {{'simplan.launch' op launches @k::@init, which is not a kernel function}}
+      simplan.launch @k::@init single [#simplan.arg<clock>]
+    }
+  }
+}
+
+// -----
+
+module attributes {gpu.container_module} {
+  gpu.module @k {
+    gpu.func @init(%clock: memref<?xi64>, %range: i64) kernel {
+      gpu.return
+    }
+  }
+  simplan.plan @p strategy("simple") kernels(@k) range(4) dt(1.0e-2 : f32) max_steps(1) step_cap(1) group_size(32) clock_slots(10) histogram(8) {
+    simplan.phase init {
+      // expected-error @+1 {{'simplan.launch' op passes 1 arguments to @k::@init, which takes 2}}
+      simplan.launch @k::@init single [#simplan.arg<clock>]
+    }
+  }
+}
+
+// -----
+
+// A CPU kernel's trailing group arguments are not launch arguments.
+module {
+  module @k {
+    func.func @init(%clock: memref<?xi64>, %a: i64, %b: i64, %c: i64) attributes {simplan.group_arguments = 3 : i64} {
+      return
+    }
+  }
+  simplan.plan @p strategy("simple") kernels(@k) range(4) dt(1.0e-2 : f32) max_steps(1) step_cap(1) group_size(32) clock_slots(10) histogram(8) {
+    simplan.phase init {
+      // expected-error @+1 {{'simplan.launch' op passes 2 arguments to @k::@init, which takes 1}}
+      simplan.launch @k::@init single [#simplan.arg<clock>, #simplan.arg<range>]
+    }
+  }
+}
+
+// -----
+
+module attributes {gpu.container_module} {
+  gpu.module @k {
+    gpu.func @init(%clock: memref<?xi64>) kernel {
+      gpu.return
+    }
+  }
+  simplan.plan @p strategy("simple") kernels(@k) range(4) dt(1.0e-2 : f32) max_steps(1) step_cap(1) group_size(32) clock_slots(10) histogram(8) {
+    simplan.buffer @C : f32 stride(4)
+    simplan.phase init {
+      // expected-error @+1 {{'simplan.launch' op is for @C, which is not a component of the plan}}
+      simplan.launch @k::@init single [#simplan.arg<clock>] for @C
+    }
+  }
+}
+
+// -----
+
+module attributes {gpu.container_module} {
+  gpu.module @k {
+    gpu.func @init(%clock: memref<?xi64>) kernel attributes {simplan.shared = array<i64: 4, 8>} {
+      gpu.return
+    }
+  }
+  simplan.plan @p strategy("simple") kernels(@k) range(4) dt(1.0e-2 : f32) max_steps(1) step_cap(1) group_size(32) clock_slots(10) histogram(8) {
+    simplan.phase init {
+      // expected-error @+1 {{'simplan.launch' op asks for shared(4, 0), but @k::@init records shared(4, 8)}}
+      simplan.launch @k::@init items [#simplan.arg<clock>] shared(4, 0)
+    }
+  }
+}
+
+// -----
+
+// A launch without `shared` asks for none.
+module attributes {gpu.container_module} {
+  gpu.module @k {
+    gpu.func @init(%clock: memref<?xi64>) kernel attributes {simplan.shared = array<i64: 4, 8>} {
+      gpu.return
+    }
+  }
+  simplan.plan @p strategy("simple") kernels(@k) range(4) dt(1.0e-2 : f32) max_steps(1) step_cap(1) group_size(32) clock_slots(10) histogram(8) {
+    simplan.phase init {
+      // expected-error @+1 {{'simplan.launch' op asks for shared(0, 0), but @k::@init records shared(4, 8)}}
+      simplan.launch @k::@init items [#simplan.arg<clock>]
+    }
+  }
+}
+
+// -----
+
+module attributes {gpu.container_module} {
+  gpu.module @k {
+    gpu.func @init(%clock: memref<?xi64>) kernel attributes {simplan.clock_slots = 12 : i64} {
+      gpu.return
+    }
+  }
+  simplan.plan @p strategy("simple") kernels(@k) range(4) dt(1.0e-2 : f32) max_steps(1) step_cap(1) group_size(32) clock_slots(10) histogram(8) {
+    simplan.phase init {
+      // expected-error @+1 {{'simplan.launch' op launches @k::@init, which was made for a clock of 12 slots, in a plan whose clock has 10}}
+      simplan.launch @k::@init single [#simplan.arg<clock>]
+    }
+  }
+}
+
+// -----
+
+module attributes {gpu.container_module} {
+  gpu.module @k {
+    gpu.func @init(%clock: i64) kernel {
+      gpu.return
+    }
+  }
+  simplan.plan @p strategy("simple") kernels(@k) range(4) dt(1.0e-2 : f32) max_steps(1) step_cap(1) group_size(32) clock_slots(10) histogram(8) {
+    simplan.phase init {
+      // expected-error @+1 {{'simplan.launch' op passes #simplan.arg<clock> as argument 0 of type 'i64'}}
+      simplan.launch @k::@init single [#simplan.arg<clock>]
+    }
+  }
+}
+
+// -----
+
+module attributes {gpu.container_module} {
+  gpu.module @k {
+    gpu.func @init(%range: memref<?xi64>) kernel {
+      gpu.return
+    }
+  }
+  simplan.plan @p strategy("simple") kernels(@k) range(4) dt(1.0e-2 : f32) max_steps(1) step_cap(1) group_size(32) clock_slots(10) histogram(8) {
+    simplan.phase init {
+      // expected-error @+1 {{'simplan.launch' op passes #simplan.arg<range> as argument 0 of type 'memref<?xi64>'}}
+      simplan.launch @k::@init single [#simplan.arg<range>]
+    }
+  }
+}
+
+// -----
+
+module attributes {gpu.container_module} {
+  gpu.module @k {
+    gpu.func @init(%x: memref<?xf32>) kernel {
+      gpu.return
+    }
+  }
+  simplan.plan @p strategy("simple") kernels(@k) range(4) dt(1.0e-2 : f32) max_steps(1) step_cap(1) group_size(32) clock_slots(10) histogram(8) {
+    simplan.param @X = 1 : i32
+    simplan.phase init {
+      // expected-error @+1 {{'simplan.launch' op passes #simplan.arg<buffer @X>, but the plan has no buffer @X}}
+      simplan.launch @k::@init items [#simplan.arg<buffer @X>]
+    }
+  }
+}
+
+// -----
+
+module attributes {gpu.container_module} {
+  gpu.module @k {
+    gpu.func @init(%l: i32) kernel {
+      gpu.return
+    }
+  }
+  simplan.plan @p strategy("simple") kernels(@k) range(4) dt(1.0e-2 : f32) max_steps(1) step_cap(1) group_size(32) clock_slots(10) histogram(8) {
+    simplan.buffer @L : f32 stride(4)
+    simplan.phase init {
+      // expected-error @+1 {{'simplan.launch' op passes #simplan.arg<param @L>, but the plan has no parameter @L}}
+      simplan.launch @k::@init items [#simplan.arg<param @L>]
+    }
+  }
+}
+
+// -----
+
+module attributes {gpu.container_module} {
+  gpu.module @k {
+    gpu.func @init(%x: memref<?xf32>) kernel {
+      gpu.return
+    }
+  }
+  simplan.plan @p strategy("simple") kernels(@k) range(4) dt(1.0e-2 : f32) max_steps(1) step_cap(1) group_size(32) clock_slots(10) histogram(8) {
+    simplan.buffer @X : f32 stride(4)
+    simplan.phase init {
+      // expected-error @+1 {{'simplan.launch' op passes #simplan.arg<snapshot @X>, but buffer @X has no snapshot}}
+      simplan.launch @k::@init items [#simplan.arg<snapshot @X>]
+    }
+  }
+}
+
+// -----
+
+module attributes {gpu.container_module} {
+  gpu.module @k {
+    gpu.func @init(%x: memref<?xf32>) kernel {
+      gpu.return
+    }
+  }
+  simplan.plan @p strategy("simple") kernels(@k) range(4) dt(1.0e-2 : f32) max_steps(1) step_cap(1) group_size(32) clock_slots(10) histogram(8) {
+    simplan.buffer @X : f32 stride(4) snapshot
+    simplan.phase exact {
+      // expected-error @+1 {{'simplan.launch' op passes #simplan.arg<exact @X>, but buffer @X has no exact solution}}
+      simplan.launch @k::@init items [#simplan.arg<exact @X>]
+    }
+  }
+}
+
+// -----
+
+// expected-error @+1 {{'simplan.launch' op expects parent op to be one of 'simplan.phase, simplan.repeat'}}
+simplan.launch @k::@init single [#simplan.arg<clock>]
+
+// -----
+
+simplan.plan @p strategy("simple") kernels(@k) range(4) dt(1.0e-2 : f32) max_steps(1) step_cap(1) group_size(32) clock_slots(10) histogram(8) {
+  simplan.phase init {
+    // expected-error @+1 {{'simplan.launch' op attribute 'args' failed to satisfy constraint: launch arguments}}
+    "simplan.launch"() <{kernel = @k::@init, shape = #simplan<shape single>, args = [1 : i32]}> : () -> ()
+  }
+}
+
+// -----
+
+simplan.plan @p strategy("simple") kernels(@k) range(4) dt(1.0e-2 : f32) max_steps(1) step_cap(1) group_size(32) clock_slots(10) histogram(8) {
+  simplan.phase init {
+    // expected-error @+1 {{custom op 'simplan.launch' unknown keyword 'everywhere'}}
+    simplan.launch @k::@init everywhere [#simplan.arg<clock>]
+  }
+}
