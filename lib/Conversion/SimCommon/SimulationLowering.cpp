@@ -106,21 +106,6 @@ void SimulationLowering::planClock() {
   clockSlots = next + maxSteps + 1;
 }
 
-/// A kernel's name: `name` with every character other than a letter, a digit
-/// or '_' replaced by '_', since scene symbols may hold any character but
-/// PTX entries and the CPU objects' exported functions may not; then made
-/// unique among the kernels with a suffix `_<n>`. Both targets create the
-/// kernels in the same order, so they get the same names.
-std::string SimulationLowering::getKernelName(StringRef name) {
-  std::string base;
-  for (char c : name)
-    base.push_back(llvm::isAlnum(c) || c == '_' ? c : '_');
-  std::string unique = base;
-  for (int suffix = 1; SymbolTable::lookupSymbolIn(kernels, unique); ++suffix)
-    unique = base + "_" + std::to_string(suffix);
-  return unique;
-}
-
 /// Every kernel starts with every argument a body could read; endKernel drops
 /// the ones it does not use, so each launch passes only what its kernel
 /// needs.
@@ -175,7 +160,7 @@ Kernel SimulationLowering::beginKernel(StringRef name, BufferOp exactOf,
   }
 
   b.setInsertionPointToEnd(&kernels->getRegion(0).front());
-  Block *entry = target.createKernel(b, kernel, getKernelName(name), types);
+  Block *entry = target.createKernel(b, kernel, name, types);
   b.startKernel(entry);
 
   unsigned position = 0;

@@ -158,10 +158,20 @@ FailureOr<DictionaryAttr> ReferenceLowering::model() {
     totals.push_back(
         b.getDictionaryAttr({named("name", total.getSymNameAttr()),
                              named("reads", getReads(total, bufferIndex))}));
-  return b.getDictionaryAttr({named("params", b.getArrayAttr(params)),
-                              named("buffers", b.getArrayAttr(buffers)),
-                              named("components", b.getArrayAttr(components)),
-                              named("totals", b.getArrayAttr(totals))});
+  // The largest big step of every strategy.
+  SmallVector<NamedAttribute> stepCaps;
+  for (uint32_t value = 0; value <= getMaxEnumValForStrategy(); ++value) {
+    Strategy strategy = *symbolizeStrategy(value);
+    stepCaps.push_back(
+        named(stringifyStrategy(strategy),
+              b.getI64IntegerAttr(getStepCap(simulation, strategy))));
+  }
+  return b.getDictionaryAttr(
+      {named("params", b.getArrayAttr(params)),
+       named("buffers", b.getArrayAttr(buffers)),
+       named("components", b.getArrayAttr(components)),
+       named("totals", b.getArrayAttr(totals)),
+       named("step_caps", b.getDictionaryAttr(stepCaps))});
 }
 
 Value ReferenceLowering::loadField(OpBuilder &b, Location loc, Value ctx,

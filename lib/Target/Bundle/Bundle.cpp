@@ -644,6 +644,19 @@ LogicalResult readReferenceModel(ModuleOp module, const SceneIndex &scene,
     reference.components.push_back(std::move(record));
   }
 
+  auto stepCaps = model.getAs<DictionaryAttr>("step_caps");
+  if (!stepCaps)
+    return malformed("no 'step_caps' dictionary");
+  for (uint32_t value = 0; value <= getMaxEnumValForStrategy(); ++value) {
+    Strategy strategy = *symbolizeStrategy(value);
+    auto cap = stepCaps.getAs<IntegerAttr>(stringifyStrategy(strategy));
+    if (!cap)
+      return malformed(
+          ("no step cap for strategy '" + stringifyStrategy(strategy) + "'")
+              .str());
+    reference.step_caps.push_back(uint32_t(cap.getInt()));
+  }
+
   auto totals = model.getAs<ArrayAttr>("totals");
   if (!totals)
     return malformed("no 'totals' array");

@@ -75,7 +75,8 @@ sim.simulation @rod range(16) dt(1.0e-3 : f32) max_steps(4) {
 // CHECK-SAME:    {name = "Rod", num_steps = false, reads = array<i64: 0>,
 // CHECK-SAME:      stepping = {hip = {advance = #sim<advance whole_step>, estimates = false}, "hip-cache" = {advance = #sim<advance whole_step>, estimates = false}, simple = {advance = #sim<advance whole_step>, estimates = false}, traditional = {advance = #sim<advance whole_step>, estimates = false}},
 // CHECK-SAME:      sub_stepping = #sim<sub_stepping in_kernel>, writes = array<i64: 1>}],
-// CHECK-SAME:    params = ["k", "unused"], totals = []}}
+// CHECK-SAME:    params = ["k", "unused"],
+// CHECK-SAME:    step_caps = {hip = 4 : i64, "hip-cache" = 4 : i64, simple = 1 : i64, traditional = 4 : i64}, totals = []}}
 // CHECK-NOT: sim.
 // CHECK: func.func @sim_ref_init_0(%{{.*}}: !llvm.ptr, %{{.*}}: i64, %{{.*}}: !llvm.ptr)
 // CHECK: func.func @sim_ref_init_1(%[[CTX:.*]]: !llvm.ptr, %[[ITEM:.*]]: i64, %[[OUT:.*]]: !llvm.ptr)
@@ -155,7 +156,8 @@ sim.simulation @diffuse range(16) dt(1.0e-3 : f64) max_steps(4) {
 // CHECK-SAME:    components = [{name = "Spread", num_steps = true, reads = array<i64: 0, 1>,
 // CHECK-SAME:      stepping = {hip = {advance = #sim<advance grid_substeps>, estimates = false}, "hip-cache" = {advance = #sim<advance grid_substeps>, estimates = false}, simple = {advance = #sim<advance whole_step>, estimates = false}, traditional = {advance = #sim<advance whole_step>, estimates = true}},
 // CHECK-SAME:      sub_stepping = #sim<sub_stepping grid_sync>, writes = array<i64: 0, 1>}],
-// CHECK-SAME:    params = [], totals = []}}
+// CHECK-SAME:    params = [],
+// CHECK-SAME:    step_caps = {hip = 4 : i64, "hip-cache" = 4 : i64, simple = 1 : i64, traditional = 4 : i64}, totals = []}}
 // CHECK: func.func @sim_ref_num_steps_0(
 // CHECK:   arith.constant -3 : i32
 // CHECK:   %[[MAX:.*]] = llvm.load %{{.*}} {alignment = 4 : i64} : !llvm.ptr -> i32

@@ -5,10 +5,10 @@
 // end does, instead of failing to translate an op without a location.
 //
 // RUN: sim-translate %s --sim-to-bundle --sim-strategies=simple -o %t.simb
-// RUN: %python %S/../Bundle/Inputs/dump-bundle.py %t.simb | FileCheck %s
+// RUN: %python %S/../Bundle/Inputs/dump-bundle.py --flatc %flatc --schema %bundle_schema %t.simb | FileCheck %s
 
-// CHECK: --- ptx simple: .target sm_90, {{[0-9]+}} kernels, every one an .entry
-// CHECK: --- cpu simple: shared object, {{[0-9]+}} kernels, every one exported
+// CHECK: ptx: .target sm_90, chip sm_90, {{[0-9]+}} kernels, every one an .entry
+// CHECK: cpu x86-64: shared object, {{[0-9]+}} kernels, every one exported
 
 sim.simulation @fold range(64) dt(1.0e-3 : f32) max_steps(4) {
   sim.buffer @B : vector<4xf32> init {

@@ -1,5 +1,4 @@
-//===- SimulationLowering.h - kernels and plan of one simulation -*- C++
-//-*-===//
+//===- SimulationLowering.h - kernels and plan of a simulation --*- C++ -*-===//
 //
 // The lowering of one simulation that went through the front end into
 // kernels (through a KernelTarget: GPU or CPU) and a simplan.plan. Its
@@ -73,7 +72,6 @@ private:
   void planClock();
 
   // Kernels and launches.
-  std::string getKernelName(StringRef name);
   Kernel beginKernel(StringRef name, BufferOp exactOf = nullptr,
                      TotalOp totalOf = nullptr);
   LogicalResult endKernel(Kernel &kernel, simplan::LaunchShape shape,
