@@ -15,7 +15,7 @@ config.test_format = lit.formats.ShTest(not llvm_config.use_lit_shell)
 config.suffixes = [".mlir", ".test"]
 config.test_source_root = os.path.dirname(__file__)
 config.test_exec_root = os.path.join(config.sim_obj_root, "test")
-config.excludes = ["Inputs", "CMakeLists.txt", "README.txt", "lit.cfg.py",
+config.excludes = ["Inputs", "corpus-compile", "CMakeLists.txt", "README.txt", "lit.cfg.py",
                    "lit.site.cfg.py", "Unit", "Runtime"]
 
 llvm_config.use_default_substitutions()
@@ -26,6 +26,8 @@ tools = [
     "sim-opt",
     "sim-translate",
     "sim-run",
+    "sim-bundle-fuzz-replay",
+    "sim-compile-fuzz-replay",
     ToolSubst("%python", config.python_executable, unresolved="fatal"),
 ]
 llvm_config.add_tool_substitutions(tools, tool_dirs)
@@ -37,6 +39,16 @@ config.substitutions.append(("%examples", os.path.join(config.sim_src_root,
 # The FlatBuffers schema compiler the build generated the bundle schema's
 # C++ with, and the schema: tests decode bundles to JSON with them.
 config.substitutions.append(("%flatc", config.flatc))
+
+# Python loads the runtime with ctypes (python/simrt.py): in a sanitizer
+# build (utils/sanitize.sh) the ASan runtime must come first, and the
+# interpreter's own allocations are not ours to report.
+ctypes_env = ""
+if config.sim_asan_runtime:
+    config.available_features.add("asan")
+    ctypes_env = "LD_PRELOAD=%s ASAN_OPTIONS=detect_leaks=0" % (
+        config.sim_asan_runtime)
+config.substitutions.append(("%ctypes_env", ctypes_env))
 config.substitutions.append(("%bundle_schema", os.path.join(
     config.sim_src_root, "runtime", "schema", "bundle.fbs")))
 

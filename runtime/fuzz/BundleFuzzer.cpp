@@ -33,8 +33,8 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
     const uint8_t *payload = data + 1;
     size_t payloadSize = size - 1;
     sim::bundle::Header header;
-    header.checksum = uint32_t(crc32(crc32(0L, Z_NULL, 0), payload,
-                                     uInt(payloadSize)));
+    header.checksum =
+        uint32_t(crc32(crc32(0L, Z_NULL, 0), payload, uInt(payloadSize)));
     header.size = sim::bundle::kHeaderSize + payloadSize;
     file = sim::bundle::encodeHeader(header) +
            std::string(reinterpret_cast<const char *>(payload), payloadSize);

@@ -41,12 +41,21 @@ int main(int argc, char **argv) {
   }
   size_t count = 0;
   for (int i = 1; i < argc; ++i) {
+    // The error_code overloads: the compiler's tools build without
+    // exceptions.
     std::filesystem::path path(argv[i]);
     std::vector<std::filesystem::path> files;
-    if (std::filesystem::is_directory(path)) {
-      for (const auto &entry : std::filesystem::directory_iterator(path))
-        if (entry.is_regular_file())
-          files.push_back(entry.path());
+    std::error_code error;
+    if (std::filesystem::is_directory(path, error)) {
+      for (std::filesystem::directory_iterator it(path, error), end;
+           !error && it != end; it.increment(error))
+        if (it->is_regular_file(error))
+          files.push_back(it->path());
+      if (error) {
+        std::fprintf(stderr, "replay: cannot list %s: %s\n", path.c_str(),
+                     error.message().c_str());
+        return 1;
+      }
       std::sort(files.begin(), files.end());
     } else {
       files.push_back(path);

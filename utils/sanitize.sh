@@ -1,0 +1,117 @@
+#!/usr/bin/env bash
+# Builds sim with AddressSanitizer and UndefinedBehaviorSanitizer (and
+# libFuzzer's coverage instrumentation) in build-sanitize/, then:
+#
+#   utils/sanitize.sh check [LIT ARGS]   runs the whole test suite there
+#                                        (check-sim: lit, the compiler's and
+#                                        the runtime's gtests); any report
+#                                        fails the test it happens in
+#   utils/sanitize.sh fuzz [SECONDS]     runs each fuzzer (the bundle reader
+#                                        and the compiler's front end and
+#                                        lowering) for SECONDS (default 600),
+#                                        seeded with the examples and the
+#                                        kept corpora; crashes land in
+#                                        build-sanitize/fuzz/<target>/
+#   utils/sanitize.sh build              only builds
+#
+# The first build takes about 20 minutes on two cores. Run `check` before
+# each release, and `fuzz` after changing the bundle reader, the verifier,
+# the parser or the front end; docs/Testing.md says what to do with what
+# they find. Set SIM_SANITIZE_BUILD_DIR to build elsewhere.
+set -euo pipefail
+
+if [[ "${1:-}" == "--help" || "${1:-}" == "-h" || $# -eq 0 ]]; then
+  sed -n '2,21p' "$0" | sed 's/^# \{0,1\}//'
+  exit 0
+fi
+
+cd "$(dirname "$0")/.."
+root=$PWD
+build="${SIM_SANITIZE_BUILD_DIR:-build-sanitize}"
+command=$1
+shift
+
+flags="-fsanitize=address,undefined -fsanitize=fuzzer-no-link"
+flags+=" -fno-sanitize-recover=undefined -fno-omit-frame-pointer -g1"
+
+configure() {
+  cmake -G Ninja -S . -B "$build" \
+    -DCMAKE_BUILD_TYPE=Release \
+    -DCMAKE_C_COMPILER=clang-22 -DCMAKE_CXX_COMPILER=clang++-22 \
+    -DLLVM_USE_LINKER=lld \
+    -DMLIR_DIR=/usr/lib/llvm-22/lib/cmake/mlir \
+    -DCMAKE_C_FLAGS="$flags" -DCMAKE_CXX_FLAGS="$flags" \
+    -DCMAKE_EXE_LINKER_FLAGS="-fsanitize=address,undefined" \
+    -DCMAKE_SHARED_LINKER_FLAGS="-fsanitize=address,undefined" \
+    -DCMAKE_MODULE_LINKER_FLAGS="-fsanitize=address,undefined" \
+    -DSIM_ENABLE_FUZZERS=ON -DSIM_SANITIZE=ON >/dev/null
+}
+
+# Sanitizer reports end the process with a non-zero status; leaks too (the
+# tools free what they allocate). The UBSan checks print a stack.
+export ASAN_OPTIONS="detect_leaks=1:abort_on_error=0:strict_string_checks=1"
+export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
+
+case "$command" in
+build)
+  configure
+  cmake --build "$build"
+  ;;
+check)
+  configure
+  cmake --build "$build"
+  cmake --build "$build" --target check-sim -- "$@"
+  ;;
+fuzz)
+  seconds=${1:-600}
+  configure
+  cmake --build "$build" --target sim-bundle-fuzzer sim-compile-fuzzer \
+    sim-translate
+  out="$build/fuzz"
+  rm -rf "$out"
+  mkdir -p "$out/bundle/seeds" "$out/bundle/new" "$out/compile/seeds" \
+    "$out/compile/new"
+  # Seeds: the kept corpora, and every example scene as a compiler input
+  # under each strategy and path, and as bundles (the payload mode: the
+  # fuzzer writes the header and CRC itself).
+  cp runtime/fuzz/corpus/bundle/* "$out/bundle/seeds/" 2>/dev/null || true
+  cp test/Fuzz/corpus-compile/* "$out/compile/seeds/" 2>/dev/null || true
+  for scene in examples/paper/*.mlir examples/physics/*.mlir \
+    test/Integration/Inputs/*.mlir; do
+    name=$(basename "$scene" .mlir)
+    for mode in 0 5 10 131; do
+      { printf "\\$(printf '%03o' "$mode")"; cat "$scene"; } \
+        >"$out/compile/seeds/$name-$mode"
+    done
+    if "$build/bin/sim-translate" "$scene" --sim-to-bundle \
+      --sim-strategies=simple,hip -o "$out/$name.simb" 2>/dev/null; then
+      { printf '\001'; tail -c +33 "$out/$name.simb"; } \
+        >"$out/bundle/seeds/$name-payload"
+      { printf '\000'; cat "$out/$name.simb"; } \
+        >"$out/bundle/seeds/$name-file"
+    fi
+  done
+  status=0
+  for target in bundle compile; do
+    echo "fuzz: sim-$target-fuzzer for $seconds s"
+    (cd "$out/$target" &&
+      "$root/$build/bin/sim-$target-fuzzer" new seeds \
+        -max_total_time="$seconds" -timeout=30 -rss_limit_mb=4096 \
+        -max_len=400000 -print_final_stats=1 \
+        -artifact_prefix="$root/$out/$target/" 2>&1 |
+      tee "$root/$out/$target.log" | grep -E "^#[0-9]+.*(NEW|REDUCE|DONE)|ERROR|SUMMARY|stat::" |
+      tail -20) || status=1
+    if ls "$out/$target"/crash-* "$out/$target"/timeout-* \
+      "$out/$target"/oom-* >/dev/null 2>&1; then
+      echo "fuzz: sim-$target-fuzzer found inputs that fail:" \
+        "$out/$target/{crash,timeout,oom}-*"
+      status=1
+    fi
+  done
+  exit $status
+  ;;
+*)
+  echo "sanitize.sh: unknown command '$command' (see --help)" >&2
+  exit 2
+  ;;
+esac
