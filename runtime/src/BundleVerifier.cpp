@@ -93,6 +93,21 @@ void checkIndex(Index index, size_t size, const std::string &what) {
         std::to_string(size));
 }
 
+/// Checks that every index of `indices` names one of `entries`, each at
+/// most once; `where` names the list, `kind` its entries.
+template <typename Entries>
+void checkUniqueIndices(const std::vector<uint32_t> &indices,
+                        const Entries &entries, const std::string &where,
+                        const std::string &kind) {
+  std::set<uint32_t> seen;
+  for (uint32_t index : indices) {
+    checkIndex(index, entries.size(), where + ": a " + kind);
+    if (!seen.insert(index).second)
+      bad(where + " lists " + kind + " " + quoted(entries[index]->name) +
+          " twice");
+  }
+}
+
 //===----------------------------------------------------------------------===//
 // Scene
 //===----------------------------------------------------------------------===//
@@ -265,13 +280,7 @@ private:
   }
 
   void verifyTotals() {
-    std::set<uint32_t> seen;
-    for (uint32_t total : plan.totals) {
-      checkIndex(total, scene.totals.size(), what + ": a total's scene total");
-      if (!seen.insert(total).second)
-        bad(what + ": total " + quoted(scene.totals[total]->name) +
-            " is listed twice");
-    }
+    checkUniqueIndices(plan.totals, scene.totals, what, "total");
   }
 
   void verifyKernels() {
@@ -487,23 +496,12 @@ private:
 void verifyReference(const schema::SceneT &scene,
                      const schema::ReferenceT &reference) {
   const std::string what = "the reference model";
-  std::set<uint32_t> seen;
-  for (uint32_t param : reference.params) {
-    checkIndex(param, scene.params.size(), what + ": a parameter");
-    if (!seen.insert(param).second)
-      bad(what + " lists parameter " + quoted(scene.params[param]->name) +
-          " twice");
-  }
+  checkUniqueIndices(reference.params, scene.params, what, "parameter");
+  checkUniqueIndices(reference.buffers, scene.buffers, what, "buffer");
   // Scene buffer -> model buffer, to resolve Hermite derivatives.
   std::vector<int> modelBuffer(scene.buffers.size(), -1);
-  for (size_t b = 0; b < reference.buffers.size(); ++b) {
-    uint32_t buffer = reference.buffers[b];
-    checkIndex(buffer, scene.buffers.size(), what + ": a buffer");
-    if (modelBuffer[buffer] >= 0)
-      bad(what + " lists buffer " + quoted(scene.buffers[buffer]->name) +
-          " twice");
-    modelBuffer[buffer] = int(b);
-  }
+  for (size_t b = 0; b < reference.buffers.size(); ++b)
+    modelBuffer[reference.buffers[b]] = int(b);
   for (uint32_t buffer : reference.buffers) {
     const schema::BufferT &info = *scene.buffers[buffer];
     if (info.interp == Interp::Hermite &&

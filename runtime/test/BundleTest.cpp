@@ -332,7 +332,7 @@ TEST(BundleVerifier, ChecksPlansAndTheirClocks) {
        "buffer 'V' has a stride of 8 bytes, which cannot hold its elements "
        "(vector<3xf32>)"},
       {[](auto &c) { hipPlan(c).totals = {0}; },
-       "a total's scene total is 0, but there are only 0"},
+       "the plan of strategy 'hip': a total is 0, but there are only 0"},
   };
   for (const Case &c : cases)
     EXPECT_TRUE(contains(errorAfter(c.edit), c.message)) << c.message;

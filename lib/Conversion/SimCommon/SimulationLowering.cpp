@@ -42,15 +42,13 @@ LogicalResult SimulationLowering::checkFrontEnd() {
   maxSteps = simulation.getMaxSteps();
   stepCap = simulation.getStepCapAttr().getInt();
 
-  ScheduleOp schedule = simulation.getScheduleOp();
-  size_t numComponents = llvm::range_size(simulation.getComponents());
-  if (!schedule || schedule.getOrder().size() != numComponents)
+  std::optional<SmallVector<ComponentOp>> scheduled =
+      simulation.getScheduledOrder();
+  if (!scheduled)
     return simulation.emitOpError()
            << "has no complete schedule; run the front end (--sim-front-end) "
               "before lowering it";
-  for (FlatSymbolRefAttr name :
-       schedule.getOrder().getAsRange<FlatSymbolRefAttr>())
-    order.push_back(simulation.lookupComponent(name));
+  order = std::move(*scheduled);
 
   for (ComponentOp component : order) {
     if (!component.getSubSteppingAttr() || !component.getAdvanceAttr() ||

@@ -77,15 +77,13 @@ LogicalResult ReferenceLowering::check() {
            << "is past --sim-plan-memory; the reference lowering starts from "
               "the scheduled IR (run --sim-prune, --sim-schedule and "
               "--sim-substep-legality, or --sim-reference-pipeline)";
-  ScheduleOp schedule = simulation.getScheduleOp();
-  size_t numComponents = llvm::range_size(simulation.getComponents());
-  if (!schedule || schedule.getOrder().size() != numComponents)
+  std::optional<SmallVector<ComponentOp>> scheduled =
+      simulation.getScheduledOrder();
+  if (!scheduled)
     return simulation.emitOpError()
            << "has no complete schedule; run --sim-schedule before "
               "--sim-lower-to-reference";
-  for (FlatSymbolRefAttr name :
-       schedule.getOrder().getAsRange<FlatSymbolRefAttr>())
-    order.push_back(simulation.lookupComponent(name));
+  order = std::move(*scheduled);
   for (ComponentOp component : order)
     if (!component.getSubSteppingAttr())
       return component.emitOpError()

@@ -388,6 +388,18 @@ SimulationOp::getSchedulePosition(ComponentOp component) {
   return std::distance(order.begin(), it);
 }
 
+std::optional<SmallVector<ComponentOp>> SimulationOp::getScheduledOrder() {
+  ScheduleOp schedule = getScheduleOp();
+  if (!schedule ||
+      schedule.getOrder().size() != llvm::range_size(getComponents()))
+    return std::nullopt;
+  SmallVector<ComponentOp> order;
+  for (FlatSymbolRefAttr name :
+       schedule.getOrder().getAsRange<FlatSymbolRefAttr>())
+    order.push_back(lookupComponent(name));
+  return order;
+}
+
 Operation *SimulationOp::findExplicitAccess() {
   Operation *found = nullptr;
   for (ComponentOp component : getComponents()) {

@@ -125,6 +125,10 @@ def Sim_SimulationOp : Sim_Op<"simulation", [
     /// std::nullopt when there is no schedule or it does not list the
     /// component (a prefix given by the user).
     std::optional<unsigned> getSchedulePosition(ComponentOp component);
+    /// Every component in the order a complete `sim.schedule` gives (what
+    /// --sim-schedule records), or std::nullopt without one (no schedule,
+    /// or only a prefix given by the user).
+    std::optional<::llvm::SmallVector<ComponentOp>> getScheduledOrder();
     /// The first `sim.load` or `sim.big_step` in a component body, or null.
     /// A simulation that has one is past `--sim-insert-interpolation`: its
     /// schedule, verdicts and memory plan are fixed.
