@@ -46,8 +46,8 @@ config.substitutions.append(("%flatc", config.flatc))
 ctypes_env = ""
 if config.sim_asan_runtime:
     config.available_features.add("asan")
-    ctypes_env = "LD_PRELOAD=%s ASAN_OPTIONS=detect_leaks=0" % (
-        config.sim_asan_runtime)
+    ctypes_env = ("LD_PRELOAD=%s ASAN_OPTIONS=allow_user_poisoning=0:"
+                  "detect_leaks=0" % config.sim_asan_runtime)
 config.substitutions.append(("%ctypes_env", ctypes_env))
 config.substitutions.append(("%bundle_schema", os.path.join(
     config.sim_src_root, "runtime", "schema", "bundle.fbs")))

@@ -16,19 +16,13 @@
 #include "Bundle.h"
 #include "Executor.h"
 #include "SharedObject.h"
+#include "sim/Runtime/sim_reference.h"
 
 #include <memory>
 #include <string>
 #include <vector>
 
 namespace sim::rt {
-
-/// The first argument of every reference function (C ABI).
-struct sim_ref_context {
-  void *executor;
-  void (*read)(void *executor, int32_t buffer, int64_t item, void *out);
-  void (*param)(void *executor, int32_t param, void *out);
-};
 
 class ReferenceSession final : public Executor {
 public:
@@ -74,14 +68,11 @@ public:
   }
 
 private:
-  using InitFn = void (*)(const sim_ref_context *, int64_t item, void *out);
-  using ExactFn = void (*)(const sim_ref_context *, int64_t item, double t,
-                           void *out);
-  using TotalFn = void (*)(const sim_ref_context *, int64_t item, void *out);
-  using NumStepsFn = int32_t (*)(const sim_ref_context *, int64_t item,
-                                 int64_t t);
-  using EvaluateFn = void (*)(const sim_ref_context *, int64_t item, int64_t t,
-                              int32_t n, double dt, void *const *outs);
+  using InitFn = sim_ref_init_fn;
+  using ExactFn = sim_ref_exact_fn;
+  using TotalFn = sim_ref_total_fn;
+  using NumStepsFn = sim_ref_num_steps_fn;
+  using EvaluateFn = sim_ref_evaluate_fn;
 
   /// A buffer's values, `range` items of packed lanes each: the initial
   /// state, at the start T of the big step, at its end T + m (once the

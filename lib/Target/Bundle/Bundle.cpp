@@ -876,8 +876,10 @@ private:
         onlyLibdevice = false;
     if (onlyLibdevice) {
       for (Diagnostic &diag : held) {
+        // diag.str() is a temporary: keep the message while it is read.
+        std::string message = diag.str();
         StringRef function =
-            StringRef(diag.str()).drop_front(kNeedsLibdevice.size());
+            StringRef(message).drop_front(kNeedsLibdevice.size());
         code.missingLibdevice.push_back(
             function.take_until([](char c) { return c == '\''; }).str());
         if (!code.firstLibdeviceCall)

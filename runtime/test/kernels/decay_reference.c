@@ -21,11 +21,7 @@
 #include <math.h>
 #include <stdint.h>
 
-typedef struct sim_ref_context {
-  void *executor;
-  void (*read)(void *executor, int32_t buffer, int64_t item, void *out);
-  void (*param)(void *executor, int32_t param, void *out);
-} sim_ref_context;
+#include "sim/Runtime/sim_reference.h"
 
 enum { kX = 0, kV = 1, kParamK = 0, kParamPoison = 1, kPoisonItem = 7 };
 

@@ -23,11 +23,7 @@
 
 #include <stdint.h>
 
-typedef struct sim_ref_context {
-  void *executor;
-  void (*read)(void *executor, int32_t buffer, int64_t item, void *out);
-  void (*param)(void *executor, int32_t param, void *out);
-} sim_ref_context;
+#include "sim/Runtime/sim_reference.h"
 
 enum { kD, kA, kC, kH, kN, kL, kRA, kRC, kRH, kE };
 enum { kParamCycle = 0, kParamReadNone = 1 };
