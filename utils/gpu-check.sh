@@ -87,7 +87,7 @@ sanitize() {
   local status=0 tool scene strategy
   for tool in racecheck memcheck; do
     for scene in gravity_like pbd_like; do
-      for strategy in simple traditional hip hip-cache; do
+      for strategy in $(python3 python/simlists.py strategies); do
         local settings=(--strategy "$strategy" --steps 6 --set range=1000
                         --set L=8 --set dist=2 --group-size 256)
         echo "-- $tool $scene $strategy (sim)"
