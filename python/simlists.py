@@ -13,6 +13,10 @@ instead of writing the names again:
     names separated by spaces, for shell loops;
   - shell scripts: `python3 python/simlists.py strategies`.
 
+The cross-check matrix (which scenes, variants, ranges and tolerances) is
+the data file test/Integration/crosscheck-matrix.json, which
+test/Integration/Inputs/crosscheck.py reads.
+
 Standard library only; it loads nothing (no runtime library).
 """
 
