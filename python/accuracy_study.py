@@ -2,7 +2,7 @@
 """Speed against error on the physics scenes of examples/physics.
 
 For every scene, interpolation variant, setting variant and strategy
-(simple, traditional, hip, hip-cache) it runs
+(python/simlists.py) it runs
 
     sim-run BUNDLE --backend B --strategy S --steps N --group-size G
             --json FILE --dump DIR [--reference exact] [--set ...]
@@ -47,6 +47,7 @@ plot).
 """
 
 import argparse
+import itertools
 import json
 import math
 import os
@@ -58,11 +59,11 @@ import time
 
 sys.dont_write_bytecode = True
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from simlists import STRATEGIES  # noqa: E402
 from simnpy import compare, read_npy  # noqa: E402
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(HERE)
-STRATEGIES = ["simple", "traditional", "hip", "hip-cache"]
 INTERPS = {
     "linear": "#sim.linear",
     "cubic": "#sim.cubic",
@@ -393,8 +394,7 @@ def plot(results, path):
     nrows = (len(scenes) + cols - 1) // cols
     fig, axes = plt.subplots(nrows, cols, figsize=(5 * cols, 4 * nrows),
                              squeeze=False)
-    markers = {"simple": "o", "traditional": "s", "hip": "^",
-               "hip-cache": "v"}
+    markers = dict(zip(STRATEGIES, itertools.cycle("os^vDp")))
     for k, scene in enumerate(scenes):
         ax = axes[k // cols][k % cols]
         for r in (r for r in results if r["scene"] == scene):

@@ -17,6 +17,10 @@ import json
 import os
 import sys
 
+sys.dont_write_bytecode = True
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from simlists import STRATEGIES  # noqa: E402
+
 
 def main():
     parser = argparse.ArgumentParser(
@@ -39,8 +43,8 @@ def main():
     runs = [r for r in runs if r["load"] == load]
     scenarios = sorted({r["scenario"] for r in runs})
     dists = sorted({r["dist"] for r in runs})
-    algorithms = [a for a in ["traditional", "hip", "hip-cache"]
-                  if any(r["algorithm"] == a for r in runs)]
+    algorithms = [a for a in STRATEGIES if a != "simple" and
+                  any(r["algorithm"] == a for r in runs)]
     names = {0: "per component", 1: "per group", 2: "per item"}
     fig, axes = plt.subplots(len(scenarios), len(dists), squeeze=False,
                              figsize=(4 * len(dists), 3.2 * len(scenarios)))

@@ -21,10 +21,7 @@ import array
 import ctypes
 import os
 
-__all__ = ["Error", "Bundle", "Session", "load_library"]
-
-_STRATEGIES = {"simple": 0, "traditional": 1, "hip": 2, "hip-cache": 3}
-_BACKENDS = {"auto": 0, "cpu": 1, "cuda": 2, "reference": 3}
+__all__ = ["Error", "Bundle", "Session", "load_library", "strategies"]
 
 
 class Error(RuntimeError):
@@ -83,6 +80,9 @@ def _declare(lib):
     p = c.c_void_p
     sigs = {
         "sim_last_error": (c.c_char_p, []),
+        "sim_strategy_name": (c.c_char_p, [c.c_int]),
+        "sim_strategy_parse": (c.c_int, [c.c_char_p, c.POINTER(c.c_int)]),
+        "sim_backend_parse": (c.c_int, [c.c_char_p, c.POINTER(c.c_int)]),
         "sim_bundle_open": (c.c_int, [c.c_char_p, c.POINTER(p)]),
         "sim_bundle_close": (None, [p]),
         "sim_bundle_scene_name": (c.c_char_p, [p]),
@@ -123,6 +123,27 @@ def _check(status):
         raise Error(status, load_library().sim_last_error().decode())
 
 
+def _parse(parse, name):
+    """A strategy's or backend's value, as the runtime names them (its
+    message for an unknown name)."""
+    value = ctypes.c_int()
+    _check(parse(name.encode(), ctypes.byref(value)))
+    return value.value
+
+
+def strategies():
+    """The strategies the runtime knows, in the order of their values
+    (python/simlists.py holds the same list for scripts that do not load
+    the library; test/Python/strategies.test compares them)."""
+    lib = load_library()
+    names = []
+    while True:
+        name = lib.sim_strategy_name(len(names)).decode()
+        if name == "unknown":
+            return names
+        names.append(name)
+
+
 class Bundle:
     """An opened scene bundle."""
 
@@ -148,8 +169,9 @@ class Bundle:
         return load_library().sim_bundle_max_steps(self._handle)
 
     def has_strategy(self, strategy):
-        return bool(load_library().sim_bundle_has_strategy(
-            self._handle, _STRATEGIES[strategy]))
+        lib = load_library()
+        return bool(lib.sim_bundle_has_strategy(
+            self._handle, _parse(lib.sim_strategy_parse, strategy)))
 
     def close(self):
         if self._handle:
@@ -171,8 +193,8 @@ class Session:
         lib = load_library()
         options = _Options()
         lib.sim_session_options_init(ctypes.byref(options))
-        options.strategy = _STRATEGIES[strategy]
-        options.backend = _BACKENDS[backend]
+        options.strategy = _parse(lib.sim_strategy_parse, strategy)
+        options.backend = _parse(lib.sim_backend_parse, backend)
         options.group_size = group_size
         options.check_finite = int(check_finite)
         self._bundle = bundle  # keeps the bundle open as long as the session

@@ -5,6 +5,7 @@
 
 import os
 import subprocess
+import sys
 
 import lit.formats
 from lit.llvm import llvm_config
@@ -36,6 +37,13 @@ config.substitutions.append(("%sim_src_root", config.sim_src_root))
 config.substitutions.append(("%sim_obj_root", config.sim_obj_root))
 config.substitutions.append(("%examples", os.path.join(config.sim_src_root,
                                                         "examples")))
+# The strategies, separated by spaces, for shell loops: python/simlists.py
+# holds the one list the tests and scripts read.
+sys.dont_write_bytecode = True
+sys.path.insert(0, os.path.join(config.sim_src_root, "python"))
+from simlists import STRATEGIES  # noqa: E402
+sys.path.pop(0)
+config.substitutions.append(("%sim_strategies", " ".join(STRATEGIES)))
 # The FlatBuffers schema compiler the build generated the bundle schema's
 # C++ with, and the schema: tests decode bundles to JSON with them.
 config.substitutions.append(("%flatc", config.flatc))

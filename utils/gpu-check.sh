@@ -6,8 +6,9 @@
 #
 # Usage: utils/gpu-check.sh PACK [STAGE...]
 #   device      nvidia-smi and the CUDA driver sim-run finds
-#   crosscheck  sim-run --check on CUDA over the cross-check matrix and the
-#               physics scenes (test/Integration/crosscheck-*.test)
+#   crosscheck  sim-run --check on CUDA over every suite of the cross-check
+#               matrix that runs there (the pack's copy of
+#               test/Integration/crosscheck-matrix.json)
 #   sanitize    compute-sanitizer racecheck and memcheck of every strategy of
 #               both paper scenes, sim's kernels and the hand-written ones
 #   targets     bench/run at the setting: |R| 65536, L 1024, dist
@@ -19,7 +20,7 @@
 set -uo pipefail
 
 if [[ $# -lt 1 || "$1" == "--help" || "$1" == "-h" ]]; then
-  sed -n '2,20p' "$0" | sed 's/^# \{0,1\}//'
+  sed -n '2,19p' "$0" | sed 's/^# \{0,1\}//'
   exit $([[ $# -lt 1 ]] && echo 2 || echo 0)
 fi
 
@@ -52,42 +53,20 @@ stage() {
 
 device() {
   nvidia-smi || true
-  "$run" "$pack/crosscheck/gravity.simb" --backend cuda --steps 1
+  "$run" "$pack/crosscheck/gravity_like.simb" --backend cuda --steps 1
 }
 
 crosscheck() {
-  local cc="python3 test/Integration/Inputs/crosscheck.py $run $out/crosscheck --backend cuda"
-  local b="$pack/crosscheck" p="$pack/physics" d="dist=0;dist=1;dist=2;dist=3;dist=4"
-  mkdir -p "$out/crosscheck"
-  $cc --steps 24 \
-    --scene gravity_like "$b/gravity.simb" "$d" \
-    --scene pbd_like "$b/pbd.simb" "$d" \
-    --scene boundary_window "$b/boundary-window.simb" "force=0;force=1" \
-    --scene grid_sync "$b/grid-sync.simb" "force=0;force=1;ns=3" \
-    --scene wide_window_chain "$b/wide-window-chain.simb" "force=0;force=1" \
-    --scene hermite "$b/hermite.simb" "force=0;force=1" \
-    --scene backedge_and_interp "$b/backedge-and-interp.simb" "force=0;force=1" \
-    --scene f64_vec3 "$b/f64-vec3.simb" "force=0;force=1" \
-    --scene num_steps_clamp "$b/num-steps-clamp.simb" "mode=0;mode=1;force=1" \
-    --scene none_backedge "$b/none-backedge.simb" "force=0;force=1" \
-    --scene mixed "$b/mixed.simb" "as-is;steps=1" || return 1
-  $cc --steps 24 \
-    --scene harmonic "$p/harmonic.simb" "as-is" \
-    --scene kpr "$p/kpr.simb" "as-is;omega=10;omega=1000" \
-    --scene kepler "$p/kepler.simb" "as-is" \
-    --scene nbody "$p/nbody.simb" "as-is" \
-    --scene pbd "$p/pbd.simb" "as-is" \
-    --scene interp_probe "$p/interp_probe.simb" "as-is" || return 1
-  # springs divides by range - 1: NaN at one item, which --check fails.
-  $cc --steps 24 --ranges 2,20,101 \
-    --scene springs "$p/springs.simb" "as-is"
+  python3 test/Integration/Inputs/crosscheck.py run --backend cuda \
+    --matrix "$pack/crosscheck/matrix.json" --bundles "$pack/crosscheck" \
+    --out "$out/crosscheck" --sim-run "$run"
 }
 
 sanitize() {
   local status=0 tool scene strategy
   for tool in racecheck memcheck; do
     for scene in gravity_like pbd_like; do
-      for strategy in simple traditional hip hip-cache; do
+      for strategy in $(python3 python/simlists.py strategies); do
         local settings=(--strategy "$strategy" --steps 6 --set range=1000
                         --set L=8 --set dist=2 --group-size 256)
         echo "-- $tool $scene $strategy (sim)"

@@ -1,26 +1,28 @@
 #!/usr/bin/env bash
 # Packs what a GPU machine without MLIR needs to check and benchmark sim: the
 # runtime's sim-run, the hand-written baseline sim-baseline-cuda, and the
-# bundles of the cross-check matrix, the physics scenes and the benchmark
-# study, compiled here. The folder is listed in .git/info/exclude, so the
-# `device` tool carries it when asked (carry: ["gpu-pack"]); there,
-# utils/gpu-check.sh runs the checks and the study.
+# bundles of the cross-check matrix (every scene of
+# test/Integration/crosscheck-matrix.json that runs on CUDA, beside a copy of
+# the matrix they were compiled from) and of the benchmark study, compiled
+# here. The folder is listed in .git/info/exclude, so the `device` tool
+# carries it when asked (carry: ["gpu-pack"]); there, utils/gpu-check.sh runs
+# the checks and the study.
 #
 # Usage: utils/gpu-pack.sh [--help]
-#   SIM_BUILD_DIR  build directory with sim-translate, sim-run and
+#   SIM_BUILD_DIR  build directory with sim-translate, sim-opt, sim-run and
 #                  sim-baseline-cuda (default: build)
 #   SIM_GPU_PACK   the folder to fill (default: gpu-pack)
 set -euo pipefail
 
 if [[ "${1:-}" == "--help" || "${1:-}" == "-h" ]]; then
-  sed -n '2,13p' "$0" | sed 's/^# \{0,1\}//'
+  sed -n '2,14p' "$0" | sed 's/^# \{0,1\}//'
   exit 0
 fi
 
 cd "$(dirname "$0")/.."
 build="${SIM_BUILD_DIR:-build}"
 pack="${SIM_GPU_PACK:-gpu-pack}"
-for tool in sim-translate sim-run sim-baseline-cuda; do
+for tool in sim-translate sim-opt sim-run sim-baseline-cuda; do
   [[ -x "$build/bin/$tool" ]] || {
     echo "gpu-pack: $build/bin/$tool is missing (build it first; sim-baseline-cuda needs nvcc)" >&2
     exit 1
@@ -32,24 +34,14 @@ for ignored in "/$pack/" /gpu-results/; do
   grep -qx "$ignored" .git/info/exclude 2>/dev/null || echo "$ignored" >> .git/info/exclude
 done
 rm -rf "$pack"
-mkdir -p "$pack/bin" "$pack/crosscheck" "$pack/physics" "$pack/bench"
+mkdir -p "$pack/bin" "$pack/crosscheck" "$pack/bench"
 cp "$build/bin/sim-run" "$build/bin/sim-baseline-cuda" "$pack/bin/"
 
-translate() { "$build/bin/sim-translate" "$1" --sim-to-bundle --sim-group-size=32 -o "$2" 2>/dev/null; }
-
-# The matrix of test/Integration/crosscheck-cuda.test.
-translate examples/paper/gravity_like.mlir "$pack/crosscheck/gravity.simb"
-translate examples/paper/pbd_like.mlir "$pack/crosscheck/pbd.simb"
-for scene in boundary-window grid-sync wide-window-chain hermite \
-             backedge-and-interp f64-vec3 num-steps-clamp none-backedge; do
-  translate "test/Integration/Inputs/$scene.mlir" "$pack/crosscheck/$scene.simb"
-done
-translate test/Target/Bundle/Inputs/mixed.mlir "$pack/crosscheck/mixed.simb"
-
-# The physics scenes.
-for scene in examples/physics/*.mlir; do
-  translate "$scene" "$pack/physics/$(basename "$scene" .mlir).simb"
-done
+# The cross-check matrix, with the copy of it that gpu-check.sh runs.
+cp test/Integration/crosscheck-matrix.json "$pack/crosscheck/matrix.json"
+python3 test/Integration/Inputs/crosscheck.py compile --backend cuda \
+  --matrix "$pack/crosscheck/matrix.json" --bundles "$pack/crosscheck" \
+  --sim-translate "$build/bin/sim-translate" --sim-opt "$build/bin/sim-opt"
 
 # The benchmark study (group size 256, both interpolations).
 python3 bench/run --make-bundles --bundles "$pack/bench" \

@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Runs one bundle with every strategy on the CPU backend and checks the runs.
 
-For each strategy (simple, traditional, hip, hip-cache) it runs
+For each strategy (python/simlists.py) it runs
 `sim-run BUNDLE --backend cpu --strategy S --steps N --json --dump` and checks
 that the histogram of big steps adds up to N base steps and that every dumped
 buffer is finite. Then:
@@ -36,9 +36,8 @@ import sys
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.dont_write_bytecode = True
 sys.path.insert(0, os.path.join(HERE, "..", "..", "..", "python"))
+from simlists import STRATEGIES  # noqa: E402
 from simnpy import read_npy  # noqa: E402
-
-STRATEGIES = ["simple", "traditional", "hip", "hip-cache"]
 
 
 def fail(message):

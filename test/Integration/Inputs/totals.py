@@ -15,6 +15,11 @@ import os
 import subprocess
 import sys
 
+sys.dont_write_bytecode = True
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)),
+                                "..", "..", "..", "python"))
+from simlists import STRATEGIES  # noqa: E402
+
 
 def main():
     parser = argparse.ArgumentParser()
@@ -27,7 +32,7 @@ def main():
     args = parser.parse_args()
     os.makedirs(args.out, exist_ok=True)
     failed = False
-    for strategy in ["simple", "traditional", "hip", "hip-cache"]:
+    for strategy in STRATEGIES:
         path = os.path.join(args.out, strategy + ".json")
         run = subprocess.run(
             [args.sim_run, args.bundle, "--backend", "cpu", "--strategy",

@@ -29,6 +29,11 @@ import sys
 import tempfile
 import zlib
 
+sys.dont_write_bytecode = True
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)),
+                                "..", "..", "..", "..", "python"))
+from simlists import STRATEGIES, schema_name  # noqa: E402
+
 HEADER_SIZE = 32
 MAGIC = b"SIMBNDL\0"
 MEMORY_ARGS = {"Clock", "Buffer", "Snapshot", "Exact", "Total"}
@@ -319,7 +324,7 @@ def dump_reference(reference, scene):
                 fail("a model buffer index %d of %d" % (b, len(buffers)))
         return " ".join(buffers[b] for b in indices) or "-"
 
-    strategies = ["Simple", "Traditional", "Hip", "HipCache"]
+    strategies = [schema_name(s) for s in STRATEGIES]
     for i, c in enumerate(reference.get("components", [])):
         if len(c["stepping"]) != len(strategies):
             fail("component %d has %d steppings" % (i, len(c["stepping"])))
