@@ -354,6 +354,12 @@ std::shared_ptr<const Bundle> Bundle::parse(const uint8_t *data, size_t size,
           std::to_string(crc) + ", the header says " +
           std::to_string(header.checksum) + "): the file is damaged");
 
+  // A root offset and the file identifier, at least, before the identifier
+  // is looked at.
+  if (payloadSize <
+      sizeof(flatbuffers::uoffset_t) + flatbuffers::kFileIdentifierLength)
+    error("the contents have " + std::to_string(payloadSize) +
+          " bytes, too few for a bundle FlatBuffer");
   // FlatBuffers reads scalars in place: the buffer must be aligned as the
   // writer aligned it (8), which `data` need not be.
   std::vector<uint8_t> aligned(payload, payload + payloadSize);

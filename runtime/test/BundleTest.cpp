@@ -183,6 +183,12 @@ TEST(Bundle, RejectsEveryFlippedBit) {
 }
 
 TEST(Bundle, RejectsABufferThatIsNotABundleFlatBuffer) {
+  // Found by the fuzzer: a payload too short for the file identifier was
+  // read past its end.
+  for (size_t size : {0, 1, 4, 7})
+    EXPECT_TRUE(contains(errorOf(withHeader(std::string(size, 'S'))),
+                         "too few for a bundle FlatBuffer"))
+        << size;
   // A right CRC over bytes that are no FlatBuffer of the schema.
   EXPECT_TRUE(contains(errorOf(withHeader(std::string(64, '\x01'))),
                        "the contents are not a bundle FlatBuffer"));
