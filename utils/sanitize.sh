@@ -6,9 +6,11 @@
 #                                        (check-sim: lit, the compiler's and
 #                                        the runtime's gtests); any report
 #                                        fails the test it happens in
-#   utils/sanitize.sh fuzz [SECONDS]     runs each fuzzer (the bundle reader
-#                                        and the compiler's front end and
-#                                        lowering) for SECONDS (default 600),
+#   utils/sanitize.sh fuzz [SECONDS] [TARGET...]
+#                                        runs each fuzzer (bundle: the bundle
+#                                        reader; compile: the compiler's front
+#                                        end and lowering; default both) for
+#                                        SECONDS (default 600),
 #                                        seeded with the examples and the
 #                                        kept corpora; crashes land in
 #                                        build-sanitize/fuzz/<target>/
@@ -21,7 +23,7 @@
 set -euo pipefail
 
 if [[ "${1:-}" == "--help" || "${1:-}" == "-h" || $# -eq 0 ]]; then
-  sed -n '2,21p' "$0" | sed 's/^# \{0,1\}//'
+  awk 'NR > 1 && /^#/ { sub(/^# ?/, ""); print; next } NR > 1 { exit }' "$0"
   exit 0
 fi
 
@@ -69,16 +71,21 @@ check)
   ;;
 fuzz)
   seconds=${1:-600}
+  shift || true
+  targets=("$@")
+  ((${#targets[@]})) || targets=(bundle compile)
   configure
   cmake --build "$build" --target sim-bundle-fuzzer sim-compile-fuzzer \
     sim-translate
   out="$build/fuzz"
-  rm -rf "$out"
-  mkdir -p "$out/bundle/seeds" "$out/bundle/new" "$out/compile/seeds" \
-    "$out/compile/new"
+  for target in "${targets[@]}"; do
+    rm -rf "${out:?}/$target"
+    mkdir -p "$out/$target/seeds" "$out/$target/new"
+  done
   # Seeds: the kept corpora, and every example scene as a compiler input
   # under each strategy and path, and as bundles (the payload mode: the
   # fuzzer writes the header and CRC itself).
+  mkdir -p "$out/bundle/seeds" "$out/compile/seeds"
   cp runtime/fuzz/corpus/bundle/* "$out/bundle/seeds/" 2>/dev/null || true
   cp test/Fuzz/corpus-compile/* "$out/compile/seeds/" 2>/dev/null || true
   for scene in examples/paper/*.mlir examples/physics/*.mlir \
@@ -97,7 +104,7 @@ fuzz)
     fi
   done
   status=0
-  for target in bundle compile; do
+  for target in "${targets[@]}"; do
     echo "fuzz: sim-$target-fuzzer for $seconds s"
     (cd "$out/$target" &&
       "$root/$build/bin/sim-$target-fuzzer" new seeds \
