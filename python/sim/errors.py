@@ -49,7 +49,7 @@ class SimError(Exception):
             if source.strip():
                 text += "\n    " + source.strip()
         for note in self.notes:
-            text += "\n  note: " + note
+            text += "\n  " + note
         return text
 
 

@@ -714,6 +714,10 @@ def loop(lo, hi=None, step=1, *, carry, body: Callable | None = None):
         lo, hi = 0, lo
     single = not isinstance(carry, (tuple, list))
     carried = [carry] if single else list(carry)
+    if not carried:
+        raise trace_error("sim.loop needs at least one carried value: a "
+                          "loop body has no effect but the values it "
+                          "returns", loc)
 
     def run(fn: Callable):
         block = current_block("sim.loop")

@@ -63,12 +63,14 @@ def plot(source, out_dir: str | None = None, *, times=None, buffers=None,
     if isinstance(source, Output):
         out = source
         stem = prefix or out.meta.get("scene", "output")
-        out_dir = out_dir or "."
+        out_dir = out_dir or ""
     else:
         out = Output.load(source)
         stem = prefix or os.path.splitext(os.path.basename(str(source)))[0]
-        out_dir = out_dir or os.path.dirname(os.path.abspath(str(source)))
-    os.makedirs(out_dir, exist_ok=True)
+        if out_dir is None:
+            out_dir = os.path.dirname(str(source))  # '' for the current one
+    if out_dir:
+        os.makedirs(out_dir, exist_ok=True)
     title = " ".join(v for v in (out.meta.get("scene"),
                                  out.meta.get("strategy"),
                                  out.meta.get("backend")) if v)

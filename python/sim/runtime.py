@@ -122,6 +122,12 @@ class Bundle:
     def __exit__(self, *exc):
         self.close()
 
+    def __del__(self):
+        try:
+            self.close()
+        except Exception:  # at interpreter exit the library may be gone
+            pass
+
     def __repr__(self):
         return (f"<sim.Bundle {self.name} ({', '.join(self.strategies)}) "
                 f"{self.path}>")
@@ -193,7 +199,11 @@ class Session:
 
     @property
     def dt(self) -> float:
-        return float(self.get("dt"))
+        """The current dt, exactly (an f32 dt as the double of its f32)."""
+        value = float(self.get("dt"))
+        if self.bundle.dt_type == "f32":
+            value = float(np.float32(value))
+        return value
 
     @property
     def time(self) -> int:
@@ -238,8 +248,14 @@ class Session:
         broadcasts to [range] or [range, lanes]; converted to the buffer's
         scalar type)."""
         info = self.info(name)
-        data = np.ascontiguousarray(np.broadcast_to(
-            np.asarray(values, dtype=info.dtype), info.shape(self.range)))
+        shape = info.shape(self.range)
+        array = np.asarray(values, dtype=info.dtype)
+        try:
+            data = np.ascontiguousarray(np.broadcast_to(array, shape))
+        except ValueError:
+            raise ValueError(f"buffer {name} ({info.element_type}) holds an "
+                             f"array of shape {shape}; an array of shape "
+                             f"{array.shape} does not broadcast to it") from None
         _put(self._rt, name, data)
         if not self._ran and self.time == 0:
             self._initial[name] = data
@@ -416,6 +432,12 @@ class Session:
 
     def __exit__(self, *exc):
         self.close()
+
+    def __del__(self):
+        try:
+            self.close()
+        except Exception:  # at interpreter exit the library may be gone
+            pass
 
     def __repr__(self):
         return (f"<sim.Session {self.bundle.name} {self.strategy} on "

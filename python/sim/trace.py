@@ -463,7 +463,9 @@ def call_body(fn: Callable, args: dict[str, Value], order: Sequence[str],
 
     Parameters named like the body's arguments (`i`, `t`, `n`, `dt`) get
     them by name, so a body may take only those it uses (`def f(i, dt)`);
-    otherwise they are passed by position in the order `order`.
+    parameters with defaults keep them unless they are named so. Otherwise
+    (other names) the body's required parameters get the arguments by
+    position, in the order `order`.
     """
     import inspect
     try:
@@ -478,17 +480,19 @@ def call_body(fn: Callable, args: dict[str, Value], order: Sequence[str],
                                 p.KEYWORD_ONLY)]
         variadic = any(p.kind == p.VAR_POSITIONAL
                        for p in signature.parameters.values())
-        names = [p.name for p in params]
-        if not variadic and names and all(n in args for n in names) and \
-                all(p.kind != p.POSITIONAL_ONLY for p in params):
-            call_kwargs = {n: args[n] for n in names}
+        required = [p for p in params if p.default is p.empty]
+        by_name = all(p.name in args and p.kind != p.POSITIONAL_ONLY
+                      for p in required) and (required or not variadic)
+        if by_name:
+            call_kwargs = {p.name: args[p.name] for p in params
+                           if p.name in args and p.kind != p.POSITIONAL_ONLY}
         else:
-            required = [p for p in params if p.default is p.empty]
-            if not variadic and len(required) > len(order):
+            if len(required) > len(order) or any(
+                    p.kind == p.KEYWORD_ONLY for p in required):
                 raise trace_error(
                     f"{what} takes {len(required)} arguments; it gets "
                     f"({', '.join(order)})", function_location(fn))
-            count = len(order) if variadic else min(len(params), len(order))
+            count = len(order) if variadic and not required else len(required)
             call_args = [args[n] for n in order[:count]]
     else:
         call_args = [args[n] for n in order]
