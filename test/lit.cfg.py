@@ -64,6 +64,9 @@ config.substitutions.append(("%bundle_schema", os.path.join(
 # matplotlib (utils/setup.sh installs Debian's python3-numpy and
 # python3-matplotlib and configures the tests with /usr/bin/python3): tests
 # that need them say `REQUIRES: numpy` or `REQUIRES: matplotlib`.
+# Tests import python/sim and python/examples; keep the source tree free of
+# __pycache__ folders.
+config.environment["PYTHONDONTWRITEBYTECODE"] = "1"
 for module in ("numpy", "matplotlib"):
     if subprocess.run([config.python_executable, "-c", "import " + module],
                       stdout=subprocess.DEVNULL,
