@@ -56,10 +56,6 @@ def plot(source, out_dir: str | None = None, *, times=None, buffers=None,
     which vector lanes (default all); `prefix`: the start of the file names
     (default: the input's stem, or the scene's name).
     """
-    import matplotlib
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-
     if isinstance(source, Output):
         out = source
         stem = prefix or out.meta.get("scene", "output")
@@ -75,12 +71,17 @@ def plot(source, out_dir: str | None = None, *, times=None, buffers=None,
                                  out.meta.get("strategy"),
                                  out.meta.get("backend")) if v)
     chosen = choose_times(len(out), times)
-    written = []
-
-    for name in buffers or list(out.buffers):
+    names = list(buffers or out.buffers)
+    for name in names:
         if name not in out.buffers:
             raise KeyError(f"the output has no buffer {name!r} (it has "
                            f"{', '.join(out.buffers) or 'none'})")
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    written = []
+
+    for name in names:
         values = out.buffers[name]
         exact = out.exact.get(name)
         lane_list = list(lanes) if lanes is not None else \
