@@ -68,5 +68,11 @@ __all__ = [
     "Output", "error_norms", "RunError", "SimError", "TraceError",
     "CompileError", "select", "where", "min", "max", "clamp", "fma", "abs",
     "sum", "dot", "reduce", "broadcast", "bitcast", "div", "rem", "fmod",
-    "range", "loop", "atan2", "pow", "copysign", *ops.UNARY_MATH,
+    "range", "loop", "atan2", "pow", "copysign",
+    # The math functions of ops.UNARY_MATH:
+    "exp", "exp2", "expm1", "log", "log2", "log10", "log1p", "sqrt", "rsqrt",
+    "cbrt", "sin", "cos", "tan", "asin", "acos", "atan", "sinh", "cosh",
+    "tanh", "asinh", "acosh", "atanh", "erf", "floor", "ceil", "round",
+    "roundeven", "trunc",
 ]
+assert sorted(__all__[-len(ops.UNARY_MATH):]) == sorted(ops.UNARY_MATH)

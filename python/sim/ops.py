@@ -25,7 +25,7 @@ from typing import Callable, Sequence
 from . import trace
 from .trace import (Block, Value, constant, current_block, emit, entered,
                     trace_error, user_location)
-from .types import DType, boolean, f32, i32, i64, index, vector
+from .types import DType, boolean, i32, i64, index, vector
 
 __all__ = [
     "Traceable", "value_of", "convert", "select", "where", "min", "max",
@@ -575,7 +575,7 @@ def _convert_scalar(elem: DType, x, loc) -> Value:
         return value_of(x, elem, f"sim.{elem.name}(...)")
     v = value_of(x)
     if v.dtype.is_vector:
-        raise trace_error(f"a vector as a lane of a vector", loc)
+        raise trace_error("a vector as a lane of a vector", loc)
     return _cast(v, elem, loc)
 
 
@@ -585,7 +585,6 @@ def _cast(v: Value, target: DType, loc) -> Value:
     s, t = source.elem, target.elem
     if s.mlir == t.mlir and s.kind == t.kind:
         return v
-    st, tt = source.mlir, target.mlir
 
     def op(name, value=v, to=target):
         return emit(f"arith.{name} {value.name} : {value.dtype.mlir} to "

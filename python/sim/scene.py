@@ -24,7 +24,7 @@ among those, else passed by position; see sim.trace.call_body.
 from __future__ import annotations
 
 import re
-from typing import Callable, Iterable, Sequence
+from typing import Callable, Sequence
 
 from . import ops, trace
 from .trace import Body, LocationTable, Value, entered, trace_error, user_location

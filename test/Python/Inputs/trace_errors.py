@@ -6,7 +6,6 @@ number ([[@LINE+1]]).
 """
 import math
 import os
-import sys
 
 import sim
 from sim import f32, f64, i32
