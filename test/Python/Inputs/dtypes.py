@@ -6,6 +6,7 @@ and vector<2xf64> buffers: the arrays a session returns have the buffer's
 scalar type and the shape [range] or [range, lanes]; arrays set before a
 run are what the components start from (each doubles its buffer, exactly);
 simrt.get() reads the type from the bundle (the format-letter trap).
+Integer `//` and `%` of traced values give Python's results (totals).
 """
 import numpy as np
 
@@ -76,3 +77,22 @@ try:
     session["B0"] = np.zeros((3, 3))
 except ValueError as error:
     print("shape error:", str(error).split("\n")[0])
+
+# Integer semantics are Python's: `//` floors, `%` takes the divisor's sign.
+ints = sim.Scene("ints", range=11, dt=1.0, precision=f64)
+Z = ints.buffer(f64, name="Z")(lambda i: 0.0)
+ints.component(writes=Z, name="Keep")(lambda i: Z[i])
+ints.total(f64, name="Mod")(lambda i: f64((sim.i32(i) - 5) % 3))
+ints.total(f64, name="NegMod")(lambda i: f64((sim.i32(i) - 5) % -3))
+ints.total(f64, name="Floor")(lambda i: f64((sim.i64(i) - 5) // 2))
+ints.total(f64, name="Trunc")(lambda i: f64(sim.div(sim.i64(i) - 5, 2)))
+ints.observe(Z)
+totals = sim.compile(ints, strategies=["simple"]).session(
+    "simple", "cpu").totals()
+python = {"Mod": sum((i - 5) % 3 for i in range(11)),
+          "NegMod": sum((i - 5) % -3 for i in range(11)),
+          "Floor": sum((i - 5) // 2 for i in range(11)),
+          "Trunc": sum(int((i - 5) / 2) for i in range(11))}
+print("integer division and modulo as in Python:",
+      {k: (totals[k], float(v)) for k, v in python.items()
+       if totals[k] != v} or "yes")
