@@ -8,7 +8,7 @@ with the standard library only:
         with simrt.Session(bundle, strategy="hip", backend="cpu") as session:
             session.set("range", 4096)
             session.run(100)
-            b2 = session.get("B2")          # array('f'), item-major, lanes packed
+            b2 = session.get("B2")          # array('f') or ('d') by the buffer's type
             print(session.metrics()["big_steps"], session.evaluations())
 
 The library is found through $SIM_RUNTIME_LIB, next to this file's checkout
@@ -21,7 +21,8 @@ import array
 import ctypes
 import os
 
-__all__ = ["Error", "Bundle", "Session", "load_library", "strategies"]
+__all__ = ["Error", "Bundle", "Session", "load_library", "strategies",
+           "ProgressFunction"]
 
 
 class Error(RuntimeError):
@@ -46,6 +47,23 @@ class _Metrics(ctypes.Structure):
                 ("launches", ctypes.c_int64), ("graph_launches", ctypes.c_int64),
                 ("host_syncs", ctypes.c_int64), ("big_steps", ctypes.c_int64)]
 
+
+class _BufferInfo(ctypes.Structure):
+    _fields_ = [("name", ctypes.c_char_p), ("element_type", ctypes.c_char_p),
+                ("scalar_type", ctypes.c_char_p),
+                ("scalar_bytes", ctypes.c_int32), ("lanes", ctypes.c_int32),
+                ("interp", ctypes.c_char_p), ("boundary", ctypes.c_char_p),
+                ("observed", ctypes.c_int32), ("exact", ctypes.c_int32)]
+
+
+class _ParamInfo(ctypes.Structure):
+    _fields_ = [("name", ctypes.c_char_p), ("type", ctypes.c_char_p),
+                ("default_value", ctypes.c_char_p)]
+
+
+# void (*)(void *user, int64_t done, int64_t total)
+ProgressFunction = ctypes.CFUNCTYPE(None, ctypes.c_void_p, ctypes.c_int64,
+                                    ctypes.c_int64)
 
 _lib = None
 
@@ -89,12 +107,29 @@ def _declare(lib):
         "sim_bundle_range": (c.c_int64, [p]),
         "sim_bundle_dt": (c.c_double, [p]),
         "sim_bundle_max_steps": (c.c_int64, [p]),
+        "sim_bundle_dt_type": (c.c_char_p, [p]),
         "sim_bundle_has_strategy": (c.c_int, [p, c.c_int]),
+        "sim_bundle_num_buffers": (c.c_int32, [p]),
+        "sim_bundle_buffer": (c.c_int, [p, c.c_int32,
+                                        c.POINTER(_BufferInfo)]),
+        "sim_bundle_num_params": (c.c_int32, [p]),
+        "sim_bundle_param": (c.c_int, [p, c.c_int32, c.POINTER(_ParamInfo)]),
+        "sim_backend_name": (c.c_char_p, [c.c_int]),
         "sim_session_options_init": (None, [c.POINTER(_Options)]),
         "sim_session_create": (c.c_int, [p, c.POINTER(_Options), c.POINTER(p)]),
         "sim_session_destroy": (None, [p]),
         "sim_session_device": (c.c_char_p, [p]),
+        "sim_session_backend": (c.c_int, [p]),
+        "sim_session_backend_note": (c.c_char_p, [p]),
+        "sim_session_group_size": (c.c_int64, [p]),
         "sim_session_set": (c.c_int, [p, c.c_char_p, c.c_char_p]),
+        "sim_session_get": (c.c_int, [p, c.c_char_p, c.c_char_p, c.c_size_t]),
+        "sim_session_range": (c.c_int64, [p]),
+        "sim_session_has_exact": (c.c_int, [p, c.c_char_p]),
+        "sim_session_exact": (c.c_int, [p, c.c_char_p, p, c.c_size_t]),
+        "sim_session_set_progress": (None, [p, ProgressFunction, p]),
+        "sim_session_interrupt": (None, [p]),
+        "sim_session_resume": (None, [p]),
         "sim_session_init": (c.c_int, [p]),
         "sim_session_time": (c.c_int64, [p]),
         "sim_session_buffer_bytes": (c.c_int, [p, c.c_char_p,
@@ -168,6 +203,51 @@ class Bundle:
     def max_steps(self):
         return load_library().sim_bundle_max_steps(self._handle)
 
+    @property
+    def dt_type(self):
+        """"f32" or "f64": the type of dt and the scene's precision."""
+        return load_library().sim_bundle_dt_type(self._handle).decode()
+
+    def buffers(self):
+        """Every buffer of the scene, in declaration order: a dict per
+        buffer with name, element_type, scalar_type ("f32"/"f64"),
+        scalar_bytes, lanes, interp, boundary, observed and exact."""
+        lib = load_library()
+        result = []
+        for index in range(lib.sim_bundle_num_buffers(self._handle)):
+            info = _BufferInfo()
+            _check(lib.sim_bundle_buffer(self._handle, index,
+                                         ctypes.byref(info)))
+            result.append({name: (value.decode() if isinstance(value, bytes)
+                                  else value)
+                           for name, value in ((n, getattr(info, n))
+                                               for n, _ in info._fields_)})
+        for buffer in result:
+            buffer["observed"] = bool(buffer["observed"])
+            buffer["exact"] = bool(buffer["exact"])
+        return result
+
+    def buffer(self, name):
+        """The info of buffer `name` (see buffers()); KeyError if none."""
+        for buffer in self.buffers():
+            if buffer["name"] == name:
+                return buffer
+        raise KeyError("scene %s has no buffer %r" % (self.name, name))
+
+    def params(self):
+        """The scene's parameters: a dict per parameter with name, type and
+        default_value (text)."""
+        lib = load_library()
+        result = []
+        for index in range(lib.sim_bundle_num_params(self._handle)):
+            info = _ParamInfo()
+            _check(lib.sim_bundle_param(self._handle, index,
+                                        ctypes.byref(info)))
+            result.append({"name": info.name.decode(),
+                           "type": info.type.decode(),
+                           "default_value": info.default_value.decode()})
+        return result
+
     def has_strategy(self, strategy):
         lib = load_library()
         return bool(lib.sim_bundle_has_strategy(
@@ -189,7 +269,7 @@ class Session:
     """One strategy of a bundle on one backend, with its state."""
 
     def __init__(self, bundle, strategy="hip", backend="auto", group_size=0,
-                 check_finite=False):
+                 check_finite=False, cpu_threads=0):
         lib = load_library()
         options = _Options()
         lib.sim_session_options_init(ctypes.byref(options))
@@ -197,7 +277,9 @@ class Session:
         options.backend = _parse(lib.sim_backend_parse, backend)
         options.group_size = group_size
         options.check_finite = int(check_finite)
+        options.cpu_threads = cpu_threads
         self._bundle = bundle  # keeps the bundle open as long as the session
+        self._buffers = {b["name"]: b for b in bundle.buffers()}
         self._handle = ctypes.c_void_p()
         _check(lib.sim_session_create(bundle._handle, ctypes.byref(options),
                                       ctypes.byref(self._handle)))
@@ -229,9 +311,27 @@ class Session:
             self._handle, buffer.encode(), ctypes.byref(size)))
         return size.value
 
-    def get(self, buffer, typecode="f"):
-        """The buffer's current state as array.array (`typecode` 'f' for
-        f32 scenes, 'd' for f64), item-major with vector lanes packed."""
+    def _typecode(self, buffer, typecode):
+        """The array typecode of a buffer's scalars, from the bundle's buffer
+        info; a `typecode` that does not match them is an error (it would
+        reinterpret the bytes)."""
+        info = self._buffers.get(buffer)
+        if info is None:
+            raise Error(1, "unknown buffer '%s'" % buffer)
+        expected = {4: "f", 8: "d"}[info["scalar_bytes"]]
+        if typecode is not None and \
+                array.array(typecode).itemsize != info["scalar_bytes"]:
+            raise ValueError("buffer %s holds %s scalars; typecode %r does "
+                             "not match (use %r or leave it out)"
+                             % (buffer, info["scalar_type"], typecode,
+                                expected))
+        return typecode or expected
+
+    def get(self, buffer, typecode=None):
+        """The buffer's current state as array.array, item-major with vector
+        lanes packed: 'f' for f32 buffers, 'd' for f64 ones (from the
+        bundle's buffer info; a `typecode` given must match it)."""
+        typecode = self._typecode(buffer, typecode)
         data = array.array(typecode, bytes(self._bytes(buffer)))
         address, _ = data.buffer_info()
         _check(load_library().sim_session_get_buffer(
@@ -240,7 +340,9 @@ class Session:
         return data
 
     def put(self, buffer, data):
-        """Replaces the buffer's current state with an array.array."""
+        """Replaces the buffer's current state with an array.array of the
+        buffer's scalar type."""
+        self._typecode(buffer, data.typecode)
         address, _ = data.buffer_info()
         _check(load_library().sim_session_set_buffer(
             self._handle, buffer.encode(), address,

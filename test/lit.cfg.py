@@ -60,6 +60,19 @@ config.substitutions.append(("%ctypes_env", ctypes_env))
 config.substitutions.append(("%bundle_schema", os.path.join(
     config.sim_src_root, "runtime", "schema", "bundle.fbs")))
 
+# The Python package python/sim runs bundles with numpy and plots with
+# matplotlib (utils/setup.sh installs Debian's python3-numpy and
+# python3-matplotlib and configures the tests with /usr/bin/python3): tests
+# that need them say `REQUIRES: numpy` or `REQUIRES: matplotlib`.
+# Tests import python/sim and python/examples; keep the source tree free of
+# __pycache__ folders.
+config.environment["PYTHONDONTWRITEBYTECODE"] = "1"
+for module in ("numpy", "matplotlib"):
+    if subprocess.run([config.python_executable, "-c", "import " + module],
+                      stdout=subprocess.DEVNULL,
+                      stderr=subprocess.DEVNULL).returncode == 0:
+        config.available_features.add(module)
+
 # `dot` renders the dependency graph in tests when Graphviz is installed.
 if lit.util.which("dot"):
     config.available_features.add("dot")

@@ -21,12 +21,14 @@ build_type="${SIM_BUILD_TYPE:-Release}"
 # compiler and linker, the build tools, GoogleTest, sim-run's header-only
 # libraries (CLI11 for its command line, nlohmann-json for its JSON), what
 # the bundle format needs (FlatBuffers' schema compiler and headers, zlib for
-# its CRC-32), Python for lit and the scene generator, and Graphviz to render
-# dependency graphs in tests.
+# its CRC-32), Python for lit and the scene generator with numpy and
+# matplotlib for the Python package python/sim (numpy arrays in and out of
+# runs, plots), and Graphviz to render dependency graphs in tests.
 packages=(
   libmlir-22-dev mlir-22-tools llvm-22-dev llvm-22-tools clang-22 lld-22
   cmake ninja-build libgtest-dev libcli11-dev nlohmann-json3-dev
-  libflatbuffers-dev flatbuffers-compiler zlib1g-dev python3 graphviz
+  libflatbuffers-dev flatbuffers-compiler zlib1g-dev python3 python3-numpy
+  python3-matplotlib graphviz
 )
 missing=()
 for package in "${packages[@]}"; do
@@ -40,8 +42,12 @@ if ((${#missing[@]})); then
   apt-get install -y -q --no-install-recommends "${missing[@]}"
 fi
 
+# The tests run Debian's Python (/usr/bin/python3), the one the packages
+# above install numpy and matplotlib for, whatever python3 comes first on
+# PATH.
 cmake -G Ninja -S . -B "$build_dir" \
   -DCMAKE_BUILD_TYPE="$build_type" \
+  -DPython3_EXECUTABLE=/usr/bin/python3 \
   -DCMAKE_C_COMPILER=clang-22 -DCMAKE_CXX_COMPILER=clang++-22 \
   -DLLVM_USE_LINKER=lld \
   -DMLIR_DIR=/usr/lib/llvm-22/lib/cmake/mlir

@@ -5,6 +5,10 @@
   doc_blocks.py PAGE N --checks prints block N as FileCheck CHECK lines, one
                                 per line, skipping lines that are just "..."
                                 (elisions on the page)
+  doc_blocks.py PAGE --containing TEXT
+                                prints the first block that contains TEXT
+                                (for pages whose blocks others add to, such
+                                as the README)
 """
 import argparse
 import re
@@ -30,11 +34,21 @@ def main():
     parser = argparse.ArgumentParser(description=__doc__,
                                      formatter_class=argparse.RawTextHelpFormatter)
     parser.add_argument("page")
-    parser.add_argument("index", type=int)
+    parser.add_argument("index", type=int, nargs="?")
     parser.add_argument("--checks", action="store_true")
+    parser.add_argument("--containing", metavar="TEXT")
     args = parser.parse_args()
     with open(args.page, encoding="utf-8") as f:
         found = blocks(f.read())
+    if args.containing is not None:
+        matches = [n for n, block in enumerate(found)
+                   if args.containing in "\n".join(block)]
+        if not matches:
+            sys.exit(f"{args.page} has no code block containing "
+                     f"{args.containing!r}")
+        args.index = matches[0]
+    elif args.index is None:
+        parser.error("give a block index or --containing TEXT")
     if args.index >= len(found):
         sys.exit(f"{args.page} has {len(found)} code blocks, not {args.index + 1}")
     for line in found[args.index]:

@@ -1,0 +1,188 @@
+"""Running the sim tools on traced scenes, and their diagnostics.
+
+`compile(scene)` writes the scene's text to a temporary file and runs
+`sim-translate --sim-to-bundle` on it; `run_sim_opt(text, args)` runs
+`sim-opt`. The tools are found, in this order, through $SIM_TRANSLATE /
+$SIM_OPT, next to the runtime library ($SIM_RUNTIME_LIB's `../bin`), in
+this checkout's `build/bin`, and on PATH.
+
+Every operation of a traced scene carries the Python line that made it
+(`loc("scene.py":12:9)`), so a tool's diagnostic names that line; the first
+error becomes a `CompileError` with its message, location and notes.
+"""
+
+from __future__ import annotations
+
+import os
+import re
+import shutil
+import subprocess
+import tempfile
+import time
+from typing import Iterable, Sequence
+
+from .errors import CompileError
+
+__all__ = ["find_tool", "run_sim_opt", "compile", "Diagnostic",
+           "parse_diagnostics"]
+
+_REPO = os.path.dirname(os.path.dirname(os.path.dirname(
+    os.path.abspath(__file__))))
+
+
+def find_tool(name: str) -> str:
+    """The path of a sim tool (`sim-translate`, `sim-opt`, `sim-run`)."""
+    env = os.environ.get(name.upper().replace("-", "_"))
+    candidates = [env] if env else []
+    lib = os.environ.get("SIM_RUNTIME_LIB")
+    if lib:
+        candidates.append(os.path.join(os.path.dirname(os.path.abspath(lib)),
+                                       "..", "bin", name))
+    candidates.append(os.path.join(_REPO, "build", "bin", name))
+    on_path = shutil.which(name)
+    if on_path:
+        candidates.append(on_path)
+    for candidate in candidates:
+        if candidate and os.path.isfile(candidate) and \
+                os.access(candidate, os.X_OK):
+            return os.path.normpath(candidate)
+    raise FileNotFoundError(
+        f"cannot find {name} (set ${name.upper().replace('-', '_')}, build "
+        f"it into {os.path.join(_REPO, 'build', 'bin')}, or put it on PATH)")
+
+
+class Diagnostic:
+    """One diagnostic of a tool: severity, message and location."""
+
+    def __init__(self, severity, message, filename=None, line=None,
+                 column=None):
+        self.severity = severity
+        self.message = message
+        self.filename = filename
+        self.line = line
+        self.column = column
+        self.notes: list["Diagnostic"] = []
+
+    def __str__(self):
+        where = (f"{self.filename}:{self.line}:{self.column}: "
+                 if self.filename else "")
+        return f"{where}{self.severity}: {self.message}"
+
+    def __repr__(self):
+        return f"<Diagnostic {self}>"
+
+
+_DIAGNOSTIC = re.compile(
+    r"^(?:(?P<file>.+?):(?P<line>\d+):(?P<col>\d+): )?"
+    r"(?P<severity>error|warning|note|remark): (?P<message>.*)$")
+
+
+def parse_diagnostics(text: str) -> list[Diagnostic]:
+    """The diagnostics in a tool's stderr; notes attach to the diagnostic
+    before them."""
+    found: list[Diagnostic] = []
+    for line in text.splitlines():
+        m = _DIAGNOSTIC.match(line)
+        if not m:
+            continue
+        d = Diagnostic(m["severity"], m["message"], m["file"],
+                       int(m["line"]) if m["line"] else None,
+                       int(m["col"]) if m["col"] else None)
+        if d.severity == "note" and found:
+            found[-1].notes.append(d)
+        else:
+            found.append(d)
+    return found
+
+
+def _raise_for(tool: str, command: Sequence[str], stderr: str, status: int):
+    diagnostics = parse_diagnostics(stderr)
+    errors = [d for d in diagnostics if d.severity == "error"]
+    if errors:
+        first = errors[0]
+        notes = [str(n) for n in first.notes]
+        notes += [str(d) for d in errors[1:]]
+        raise CompileError(first.message, first.filename, first.line,
+                           first.column, notes, diagnostics=stderr,
+                           tool=" ".join(command))
+    raise CompileError(f"{tool} failed (exit status {status}): "
+                       + (stderr.strip() or "no message"),
+                       diagnostics=stderr, tool=" ".join(command))
+
+
+def _scene_text(scene) -> tuple[str, str]:
+    if isinstance(scene, str):
+        match = re.search(r"sim\.simulation @([A-Za-z_][\w$.]*)", scene)
+        return scene, match.group(1) if match else "scene"
+    return scene.mlir(), scene.name
+
+
+def run_sim_opt(scene, args: Iterable[str] = ()) -> str:
+    """Runs `sim-opt` on a scene (a Scene or its text) with `args`; returns
+    stdout (and stderr appended when the tool prints remarks there).
+    Raises CompileError on failure."""
+    text, name = _scene_text(scene)
+    tool = find_tool("sim-opt")
+    with tempfile.TemporaryDirectory(prefix="sim-") as tmp:
+        path = os.path.join(tmp, f"{name}.mlir")
+        with open(path, "w", encoding="utf-8") as f:
+            f.write(text)
+        command = [tool, path, *args]
+        done = subprocess.run(command, stdout=subprocess.PIPE,
+                              stderr=subprocess.PIPE, text=True)
+    if done.returncode != 0:
+        _raise_for("sim-opt", command, done.stderr, done.returncode)
+    return done.stdout
+
+
+def compile(scene, strategies: Sequence[str] | str | None = None,
+            group_size: int | None = None, output: str | None = None,
+            args: Sequence[str] = (), verbose: bool = False):
+    """Compiles a scene (a Scene, or scene text) into a bundle.
+
+    `strategies`: the strategies to compile (default all four); a name or a
+    list. `group_size`: the group size the plans are made for (default
+    256). `output`: where the bundle goes (default: a temporary file that
+    lives as long as the Bundle). `args`: more sim-translate options.
+    Returns a `sim.Bundle` with `compile_seconds`, the scene's `mlir` text
+    and the tool's warnings and remarks (`messages`); raises CompileError
+    at the Python line of an error.
+    """
+    from .runtime import Bundle
+    text, name = _scene_text(scene)
+    tool = find_tool("sim-translate")
+    tmp = tempfile.TemporaryDirectory(prefix="sim-")
+    try:
+        source = os.path.join(tmp.name, f"{name}.mlir")
+        with open(source, "w", encoding="utf-8") as f:
+            f.write(text)
+        target = output or os.path.join(tmp.name, f"{name}.simb")
+        command = [tool, source, "--sim-to-bundle", "-o", target]
+        if strategies:
+            if isinstance(strategies, str):
+                strategies = [strategies]
+            command.append("--sim-strategies=" + ",".join(strategies))
+        if group_size:
+            command.append(f"--sim-group-size={int(group_size)}")
+        command += list(args)
+        start = time.perf_counter()
+        done = subprocess.run(command, stdout=subprocess.PIPE,
+                              stderr=subprocess.PIPE, text=True)
+        seconds = time.perf_counter() - start
+        if done.returncode != 0:
+            _raise_for("sim-translate", command, done.stderr, done.returncode)
+        if verbose and done.stderr.strip():
+            print(done.stderr.rstrip())
+        bundle = Bundle(target)
+    except BaseException:
+        tmp.cleanup()
+        raise
+    bundle.compile_seconds = seconds
+    bundle.mlir = text
+    bundle.messages = parse_diagnostics(done.stderr)
+    bundle.command = command
+    if output is None:
+        bundle._tmp = tmp  # removed when the bundle is closed
+    else:
+        tmp.cleanup()
+    return bundle

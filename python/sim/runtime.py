@@ -1,0 +1,449 @@
+"""Running bundles from Python with numpy: bundles, sessions, outputs.
+
+    bundle = sim.compile(scene)                  # or sim.Bundle("scene.simb")
+    session = bundle.session(strategy="hip", backend="cpu")
+    session.set(range=4096, k=0.5)               # range, dt, parameters
+    session["T"] = np.linspace(0, 1, 4096)       # the initial state
+    out = session.run(1000, output_every=100, errors=True)
+    out.save("rod.npz")                          # t, time, buffer/T, total/...
+    T = session["T"]                             # float32 [4096], a copy
+    print(session.metrics()["big_steps"])
+
+Buffers come back as numpy arrays of the buffer's scalar type (float32 or
+float64, from the bundle's buffer info), shaped [range] or [range, lanes].
+The runtime is libsim_runtime.so through python/simrt.py (ctypes); a failed
+call raises simrt.Error (also `sim.RunError`) with the runtime's message.
+"""
+
+from __future__ import annotations
+
+import ctypes
+import os
+import sys
+from typing import Callable, NamedTuple
+
+import numpy as np
+
+from .output import Output, error_norms
+
+try:
+    import simrt
+except ImportError:  # the sim package without python/ on sys.path
+    sys.path.insert(0, os.path.dirname(os.path.dirname(os.path.abspath(
+        __file__))))
+    import simrt
+
+__all__ = ["Bundle", "Session", "BufferInfo", "RunError"]
+
+RunError = simrt.Error
+
+
+class BufferInfo(NamedTuple):
+    """What the bundle says about a buffer."""
+
+    name: str
+    element_type: str      # "f32", "vector<2xf64>", ...
+    dtype: np.dtype        # float32 or float64
+    lanes: int | None      # None for a scalar element
+    interp: str
+    boundary: str
+    observed: bool
+    exact: bool
+
+    def shape(self, range_: int) -> tuple:
+        """The shape of the buffer's host array at `range_` items."""
+        return (range_,) if self.lanes is None else (range_, self.lanes)
+
+
+class Bundle:
+    """A scene bundle (`.simb`): what it holds, and sessions that run it."""
+
+    def __init__(self, path, library: str | None = None):
+        self.path = os.fspath(path)
+        self._rt = simrt.Bundle(self.path, library)
+        self.compile_seconds: float | None = None
+        self.mlir: str | None = None
+        self.messages: list = []
+        self.command: list | None = None
+        self._tmp = None
+        self.buffers: dict[str, BufferInfo] = {}
+        for b in self._rt.buffers():
+            lanes = b["lanes"] if b["element_type"].startswith("vector") \
+                else None
+            self.buffers[b["name"]] = BufferInfo(
+                b["name"], b["element_type"],
+                np.dtype(np.float32 if b["scalar_bytes"] == 4 else np.float64),
+                lanes, b["interp"], b["boundary"], b["observed"], b["exact"])
+        self.params = {p["name"]: p for p in self._rt.params()}
+
+    @property
+    def name(self) -> str:
+        return self._rt.name
+
+    @property
+    def range(self) -> int:
+        return self._rt.range
+
+    @property
+    def dt(self) -> float:
+        return self._rt.dt
+
+    @property
+    def dt_type(self) -> str:
+        return self._rt.dt_type
+
+    @property
+    def max_steps(self) -> int:
+        return self._rt.max_steps
+
+    @property
+    def strategies(self) -> list[str]:
+        """The strategies the bundle holds plans for."""
+        return [s for s in simrt.strategies() if self._rt.has_strategy(s)]
+
+    @property
+    def observed(self) -> list[str]:
+        return [b.name for b in self.buffers.values() if b.observed]
+
+    def session(self, strategy: str = "hip", backend: str = "auto",
+                **options) -> "Session":
+        """A new Session of this bundle (see Session for the options)."""
+        return Session(self, strategy, backend, **options)
+
+    def close(self):
+        self._rt.close()
+        if self._tmp is not None:
+            self._tmp.cleanup()
+            self._tmp = None
+
+    def __enter__(self):
+        return self
+
+    def __exit__(self, *exc):
+        self.close()
+
+    def __del__(self):
+        try:
+            self.close()
+        except Exception:  # at interpreter exit the library may be gone
+            pass
+
+    def __repr__(self):
+        return (f"<sim.Bundle {self.name} ({', '.join(self.strategies)}) "
+                f"{self.path}>")
+
+
+class Session:
+    """A bundle's state, run with one strategy on one backend.
+
+    `group_size` (0: the plan's), `threads` (CPU threads, 0: all),
+    `check_finite` and scene values (`range=`, `dt=`, parameters) as keyword
+    arguments. The strategy and backend can still be changed by `run` until
+    the first run; after it a session's state belongs to them.
+    """
+
+    def __init__(self, bundle: Bundle, strategy: str = "hip",
+                 backend: str = "auto", *, group_size: int = 0,
+                 threads: int = 0, check_finite: bool = False, **values):
+        self.bundle = bundle
+        self.strategy = strategy
+        self._backend_request = backend
+        self._options = dict(group_size=group_size, cpu_threads=threads,
+                             check_finite=check_finite)
+        self._values: dict[str, str] = {}
+        self._initial: dict[str, np.ndarray] = {}
+        self._ran = False
+        self._metrics = None
+        self._rt = self._create(strategy, backend)
+        if values:
+            self.set(**values)
+
+    # -- Setup ------------------------------------------------------------------
+
+    def _create(self, strategy, backend):
+        rt = simrt.Session(self.bundle._rt, strategy, backend, **self._options)
+        for name, value in self._values.items():
+            rt.set(name, value)
+        for name, data in self._initial.items():
+            _put(rt, name, data)
+        return rt
+
+    def set(self, **values):
+        """Sets `range`, `dt` or parameters (like `sim-run --set`). A new
+        range discards the state (and buffers set before)."""
+        for name, value in values.items():
+            text = repr(value) if isinstance(value, float) else str(value)
+            self._rt.set(name, text)
+            self._values[name] = text
+            if name == "range":
+                self._initial.clear()
+
+    def get(self, name: str) -> str:
+        """The current value of `range`, `dt` or a parameter, as text."""
+        buffer = ctypes.create_string_buffer(256)
+        simrt._check(simrt.load_library().sim_session_get(
+            self._rt._handle, name.encode(), buffer, len(buffer)))
+        return buffer.value.decode()
+
+    def init(self, **buffers):
+        """Starts over from the initial state (time 0), then replaces the
+        state of the buffers given (arrays, see `__setitem__`)."""
+        self._rt.init()
+        self._initial.clear()
+        for name, data in buffers.items():
+            self[name] = data
+
+    @property
+    def range(self) -> int:
+        return simrt.load_library().sim_session_range(self._rt._handle)
+
+    @property
+    def dt(self) -> float:
+        """The current dt, exactly (an f32 dt as the double of its f32)."""
+        value = float(self.get("dt"))
+        if self.bundle.dt_type == "f32":
+            value = float(np.float32(value))
+        return value
+
+    @property
+    def time(self) -> int:
+        """The current base step T."""
+        return self._rt.time
+
+    @property
+    def device(self) -> str:
+        return self._rt.device
+
+    @property
+    def backend(self) -> str:
+        """The backend that runs the session (cpu, cuda or reference)."""
+        lib = simrt.load_library()
+        return lib.sim_backend_name(
+            lib.sim_session_backend(self._rt._handle)).decode()
+
+    @property
+    def group_size(self) -> int:
+        return simrt.load_library().sim_session_group_size(self._rt._handle)
+
+    # -- State ---------------------------------------------------------------------
+
+    def info(self, name: str) -> BufferInfo:
+        try:
+            return self.bundle.buffers[name]
+        except KeyError:
+            raise KeyError(f"scene {self.bundle.name} has no buffer "
+                           f"{name!r}") from None
+
+    def __getitem__(self, name: str) -> np.ndarray:
+        """The buffer's current state: a new array of its scalar type,
+        [range] or [range, lanes]."""
+        info = self.info(name)
+        data = np.empty(info.shape(self.range), dtype=info.dtype)
+        simrt._check(simrt.load_library().sim_session_get_buffer(
+            self._rt._handle, name.encode(), data.ctypes.data, data.nbytes))
+        return data
+
+    def __setitem__(self, name: str, values):
+        """Replaces the buffer's current state with `values` (anything numpy
+        broadcasts to [range] or [range, lanes]; converted to the buffer's
+        scalar type)."""
+        info = self.info(name)
+        shape = info.shape(self.range)
+        array = np.asarray(values, dtype=info.dtype)
+        try:
+            data = np.ascontiguousarray(np.broadcast_to(array, shape))
+        except ValueError:
+            raise ValueError(f"buffer {name} ({info.element_type}) holds an "
+                             f"array of shape {shape}; an array of shape "
+                             f"{array.shape} does not broadcast to it") from None
+        _put(self._rt, name, data)
+        if not self._ran and self.time == 0:
+            self._initial[name] = data
+
+    def buffers(self, names=None) -> dict[str, np.ndarray]:
+        """The state of the observed buffers (or of `names`)."""
+        return {n: self[n] for n in (names or self.bundle.observed)}
+
+    def exact(self, name: str) -> np.ndarray:
+        """The scene's exact solution of the buffer at the current time."""
+        info = self.info(name)
+        lib = simrt.load_library()
+        if not lib.sim_session_has_exact(self._rt._handle, name.encode()):
+            raise KeyError(f"buffer {name} has no exact solution")
+        data = np.empty(info.shape(self.range), dtype=info.dtype)
+        simrt._check(lib.sim_session_exact(self._rt._handle, name.encode(),
+                                           data.ctypes.data, data.nbytes))
+        return data
+
+    def totals(self) -> dict[str, float]:
+        """The scene's totals at the current time."""
+        return self._rt.totals()
+
+    # -- Running -------------------------------------------------------------------
+
+    def _switch(self, strategy, backend):
+        strategy = strategy or self.strategy
+        backend = backend or self._backend_request
+        if strategy == self.strategy and backend == self._backend_request:
+            return
+        if self._ran or self.time != 0:
+            raise ValueError(
+                f"this session ran with {self.strategy} on "
+                f"{self._backend_request}; its state belongs to them (make "
+                f"a new session for {strategy} on {backend})")
+        old = self._rt
+        self._rt = self._create(strategy, backend)
+        old.close()
+        self.strategy = strategy
+        self._backend_request = backend
+
+    def run(self, steps: int, *, strategy: str | None = None,
+            backend: str | None = None,
+            progress: Callable[[int, int], None] | None = None,
+            output_every: int | None = None, errors: bool = False,
+            record: list[str] | None = None) -> Output | None:
+        """Runs `steps` base steps from the current state; the run ends
+        exactly at T + steps.
+
+        `progress(done, total)` is called after each host synchronisation
+        with the base steps done; an exception it raises stops the run at
+        the next one and is raised here. With `output_every=N` the run goes
+        in chunks of N base steps and returns an `Output` with the observed
+        buffers (or `record`) and the totals at T, T+N, ..., and the end;
+        with `errors=True` also the exact solutions of the buffers that
+        have one and the errors against them. Without it, returns None.
+        """
+        if not isinstance(steps, int) or steps < 0:
+            raise ValueError(f"steps must be an int >= 0, not {steps!r}")
+        self._switch(strategy, backend)
+        if output_every is None:
+            self._metrics = None
+            self._chunk(steps, progress, 0, steps)
+            self._ran = True
+            return None
+        if not isinstance(output_every, int) or output_every < 1:
+            raise ValueError(f"output_every must be an int >= 1, not "
+                             f"{output_every!r}")
+        names = list(record or self.bundle.observed)
+        exact = [n for n in names if errors and self.info(n).exact]
+        frames = []
+
+        def snapshot():
+            frame = {"t": self.time, "buffers": self.buffers(names),
+                     "totals": self.totals(), "exact": {}}
+            for n in exact:
+                frame["exact"][n] = self.exact(n)
+            frames.append(frame)
+
+        snapshot()
+        self._metrics = None
+        done = 0
+        while done < steps:
+            chunk = min(output_every, steps - done)
+            self._chunk(chunk, progress, done, steps)
+            self._ran = True
+            done += chunk
+            snapshot()
+        return self._output(frames, names, exact)
+
+    def _chunk(self, steps, progress, offset, total):
+        lib = simrt.load_library()
+        failure = []
+        handle = self._rt._handle
+        if progress is not None:
+            def call(user, done, _):
+                try:
+                    progress(offset + done, total)
+                except BaseException as error:  # also KeyboardInterrupt
+                    failure.append(error)
+                    lib.sim_session_interrupt(handle)
+            callback = simrt.ProgressFunction(call)
+            lib.sim_session_set_progress(handle, callback, None)
+        try:
+            self._rt.run(steps)
+        except simrt.Error:
+            if failure:
+                lib.sim_session_resume(handle)
+                raise failure[0] from None
+            raise
+        finally:
+            if progress is not None:
+                lib.sim_session_set_progress(handle,
+                                             simrt.ProgressFunction(), None)
+        if failure:
+            lib.sim_session_resume(handle)
+            raise failure[0]
+        if progress is not None:
+            progress(offset + steps, total)
+        self._accumulate()
+
+    def _accumulate(self):
+        m = self._rt.metrics()
+        m["evaluations"] = self._rt.evaluations()
+        m["histogram"] = self._rt.histogram(self.bundle.max_steps)
+        if self._metrics is None:
+            self._metrics = m
+            return
+        total = self._metrics
+        for key in ("steps", "wall_seconds", "kernel_seconds", "launches",
+                    "graph_launches", "host_syncs", "big_steps"):
+            total[key] += m[key]
+        total["end"] = m["end"]
+        for key in ("evaluations", "histogram"):
+            for name, count in m[key].items():
+                total[key][name] = total[key].get(name, 0) + count
+
+    def metrics(self) -> dict:
+        """What the last run measured (all chunks of an output run
+        together): steps, begin, end, wall_seconds, kernel_seconds,
+        launches, graph_launches, host_syncs, big_steps, evaluations (per
+        component), histogram (big steps per size), and the strategy,
+        backend, device and group size."""
+        base = dict(self._metrics or {})
+        base.update(strategy=self.strategy, backend=self.backend,
+                    device=self.device, group_size=self.group_size)
+        return base
+
+    def _output(self, frames, names, exact) -> Output:
+        t = np.array([f["t"] for f in frames], dtype=np.int64)
+        buffers = {n: np.stack([f["buffers"][n] for f in frames])
+                   for n in names}
+        total_names = list(frames[0]["totals"])
+        totals = {n: np.array([f["totals"][n] for f in frames],
+                              dtype=np.float64) for n in total_names}
+        exact_arrays = {n: np.stack([f["exact"][n] for f in frames])
+                        for n in exact}
+        errors = {}
+        for n in exact:
+            norms = [error_norms(f["buffers"][n], f["exact"][n])
+                     for f in frames]
+            errors[n] = {"max_abs": np.array([a for a, _ in norms]),
+                         "rms_rel": np.array([r for _, r in norms])}
+        meta = {"scene": self.bundle.name, "strategy": self.strategy,
+                "backend": self.backend}
+        return Output(t, t.astype(np.float64) * self.dt, buffers, totals,
+                      errors, exact_arrays, meta)
+
+    def close(self):
+        self._rt.close()
+
+    def __enter__(self):
+        return self
+
+    def __exit__(self, *exc):
+        self.close()
+
+    def __del__(self):
+        try:
+            self.close()
+        except Exception:  # at interpreter exit the library may be gone
+            pass
+
+    def __repr__(self):
+        return (f"<sim.Session {self.bundle.name} {self.strategy} on "
+                f"{self.backend}, T={self.time}>")
+
+
+def _put(rt, name, data: np.ndarray):
+    simrt._check(simrt.load_library().sim_session_set_buffer(
+        rt._handle, name.encode(), data.ctypes.data, data.nbytes))
