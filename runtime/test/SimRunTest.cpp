@@ -20,6 +20,7 @@
 #include <cmath>
 #include <csignal>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <dirent.h>
 #include <fcntl.h>
@@ -841,10 +842,11 @@ TEST_F(SimRun, StopsOnSigintAndWritesWhatIsComplete) {
                           {bundle, "--backend", "cpu", "--strategy", "simple",
                            "--steps", "1000000000", "--set", "k=0.000001",
                            "--reference", "simple", "--check", "--dump", dump,
-                           "--json", json},
+                           "--json", json, "--progress"},
                           sub + "/stdout", sub + "/stderr");
   ASSERT_GT(pid, 0);
-  // The progress line (after 3 s): the run is under way.
+  // The progress line (after 1 s; --progress, since stderr is a file): the
+  // run is under way.
   ASSERT_TRUE(waitForText(sub + "/stderr", "base step"))
       << readFile(sub + "/stderr");
   ASSERT_EQ(kill(pid, SIGINT), 0);
@@ -901,7 +903,7 @@ TEST_F(SimRun, StopsOnSigterm) {
   ASSERT_EQ(mkdir(sub.c_str(), 0755), 0);
   pid_t pid = spawnSimRun(SIM_RUN_PATH,
                           {bundle, "--backend", "cpu", "--steps", "1000000000",
-                           "--repeat", "2", "--json", json},
+                           "--repeat", "2", "--json", json, "--progress"},
                           sub + "/stdout", sub + "/stderr");
   ASSERT_GT(pid, 0);
   ASSERT_TRUE(waitForText(sub + "/stderr", "warm-up: base step"))
@@ -979,6 +981,80 @@ TEST_F(SimRun, RemovesTheTemporaryBundleOnSignals) {
   EXPECT_TRUE(WIFSIGNALED(status) && WTERMSIG(status) == SIGINT) << status;
   EXPECT_EQ(listDirectory(tmp), std::vector<std::string>{});
   kill(std::stoi(readFile(pidFile)), SIGKILL);
+}
+
+//===----------------------------------------------------------------------===//
+// Progress
+//===----------------------------------------------------------------------===//
+
+namespace {
+
+/// A long run of the decay scene (k = 1e-6 keeps X readable).
+std::vector<std::string> longRun(const std::string &bundle) {
+  return {bundle,    "--backend",  "cpu",   "--strategy", "simple",
+          "--steps", "1000000000", "--set", "k=0.000001"};
+}
+
+} // namespace
+
+TEST_F(SimRun, ShowsProgressOnATerminalWithinASecond) {
+  std::string sub = dir + "/pty";
+  ASSERT_EQ(mkdir(sub.c_str(), 0755), 0);
+  int master = posix_openpt(O_RDWR | O_NOCTTY);
+  ASSERT_GE(master, 0);
+  ASSERT_EQ(grantpt(master), 0);
+  ASSERT_EQ(unlockpt(master), 0);
+  std::string terminal = ptsname(master);
+  // stderr on the pseudo-terminal, stdout in a file.
+  auto start = std::chrono::steady_clock::now();
+  pid_t pid =
+      spawnSimRun(SIM_RUN_PATH, longRun(bundle), sub + "/stdout", terminal);
+  ASSERT_GT(pid, 0);
+  fcntl(master, F_SETFL, fcntl(master, F_GETFL) | O_NONBLOCK);
+  // Read until the line has appeared and been rewritten for a while (or
+  // 20 s have passed).
+  std::string seen;
+  double appeared = -1, now = 0;
+  while (now < 20 && (appeared < 0 || now < appeared + 0.7)) {
+    char chunk[4096];
+    ssize_t n = read(master, chunk, sizeof chunk);
+    if (n > 0)
+      seen.append(chunk, size_t(n));
+    now =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start)
+            .count();
+    if (appeared < 0 && contains(seen, "base steps/s, ETA "))
+      appeared = now;
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  }
+  ASSERT_EQ(kill(pid, SIGINT), 0);
+  int status = waitFor(pid);
+  EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 130) << status;
+  close(master);
+  ASSERT_GE(appeared, 0) << seen;
+  // After the first second of the run, with the sessions made and the
+  // init check done before it: well within three.
+  EXPECT_GE(appeared, 1.0) << seen;
+  EXPECT_LT(appeared, 3.0) << seen;
+  EXPECT_TRUE(contains(seen, "\rsim-run: base step ")) << seen;
+  EXPECT_TRUE(contains(seen, " of 1000000000 (0%), ")) << seen;
+  EXPECT_TRUE(contains(seen, "\033[K")) << seen;
+}
+
+TEST_F(SimRun, PrintsNoProgressWhenStderrIsAFile) {
+  std::string sub = dir + "/quiet";
+  ASSERT_EQ(mkdir(sub.c_str(), 0755), 0);
+  pid_t pid = spawnSimRun(SIM_RUN_PATH, longRun(bundle), sub + "/stdout",
+                          sub + "/stderr");
+  ASSERT_GT(pid, 0);
+  std::this_thread::sleep_for(std::chrono::milliseconds(2500));
+  ASSERT_EQ(kill(pid, SIGINT), 0);
+  int status = waitFor(pid);
+  EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 130) << status;
+  std::string err = readFile(sub + "/stderr");
+  EXPECT_FALSE(contains(err, "base step")) << err;
+  EXPECT_FALSE(contains(err, "\r")) << err;
+  EXPECT_TRUE(contains(err, "sim-run: interrupted by SIGINT")) << err;
 }
 
 TEST(Dependencies, NoMlirLlvmOrCuda) {

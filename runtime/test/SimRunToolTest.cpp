@@ -13,6 +13,7 @@
 #include "simrun/Compare.h"
 #include "simrun/Options.h"
 #include "simrun/Output.h"
+#include "simrun/Progress.h"
 
 #include <gtest/gtest.h>
 
@@ -127,7 +128,8 @@ TEST(SimRunOptions, TakesEveryOption) {
                            "1",
                            "--cuda-graph",
                            "--max-memory",
-                           "2G"});
+                           "2G",
+                           "--progress"});
   EXPECT_EQ(options.input, "scene.simb");
   EXPECT_EQ(options.backend, SIM_BACKEND_CPU);
   EXPECT_EQ(options.strategy, SIM_STRATEGY_SIMPLE);
@@ -148,6 +150,8 @@ TEST(SimRunOptions, TakesEveryOption) {
   EXPECT_EQ(options.device, 1);
   EXPECT_TRUE(options.cudaGraph);
   EXPECT_EQ(options.maxMemory, int64_t(2) << 30);
+  EXPECT_TRUE(options.progress);
+  EXPECT_FALSE(parse({"a.simb"}).progress);
   // The last of a repeated option counts.
   EXPECT_EQ(parse({"a.simb", "--steps", "1", "--steps", "2"}).steps, 2);
 }
@@ -174,6 +178,7 @@ TEST(SimRunOptions, RejectsValuesOutsideTheirDomain) {
       {{"a", "--reference", "cubic"},
        "--reference: 'cubic' is not simple or exact"},
       {{"a", "--set", "=1"}, "--set: '=1' is not NAME=VALUE"},
+      {{"a", "--progress=1"}, "--progress takes no value"},
       {{"a", "--json", ""}, "--json: expects a path"},
       {{"a", "--steps"}, "--steps expects a value"},
       {{"a", "--cuda-graph=yes"}, "--cuda-graph takes no value"},
@@ -195,7 +200,8 @@ TEST(SimRunOptions, PrintsTheHelpOfEveryOption) {
         "--report-every N ", "--set NAME=VALUE ", "--group-size G ",
         "--reference simple|exact ", "--check ", "--check-tolerance X ",
         "--dump DIR ", "--json FILE ", "--check-finite ", "--threads N ",
-        "--device N ", "--cuda-graph ", "--max-memory SIZE ", "-h, --help "})
+        "--device N ", "--cuda-graph ", "--max-memory SIZE ", "--progress ",
+        "-h, --help "})
     EXPECT_TRUE(contains(help, "\n  " + std::string(option))) << option;
   EXPECT_TRUE(contains(help, "130 or 143")) << help;
 }
@@ -452,4 +458,71 @@ TEST(SimRunCheck, FailsOnNonFiniteTotals) {
 TEST(SimRunCheck, NamesControlCharactersVisibly) {
   EXPECT_EQ(displayName("a\x01\nb\x7f"), "a\\x01\\x0Ab\\x7F");
   EXPECT_EQ(displayName("X"), "X");
+}
+
+//===----------------------------------------------------------------------===//
+// Progress
+//===----------------------------------------------------------------------===//
+
+TEST(SimRunProgress, FormatsRatesAndTimesLeft) {
+  EXPECT_EQ(formatRate(0), "0");
+  EXPECT_EQ(formatRate(812.4), "812");
+  EXPECT_EQ(formatRate(999.6), "1.00k");
+  EXPECT_EQ(formatRate(45321), "45.3k");
+  EXPECT_EQ(formatRate(1.2e6), "1.20M");
+  EXPECT_EQ(formatRate(3.5e15), "3500T");
+  EXPECT_EQ(formatEta(0), "ETA 0 s");
+  EXPECT_EQ(formatEta(18.2), "ETA 19 s");
+  EXPECT_EQ(formatEta(125), "ETA 2 min 05 s");
+  EXPECT_EQ(formatEta(3 * 3600 + 7 * 60 + 30), "ETA 3 h 07 min");
+  EXPECT_EQ(formatEta(NAN), "ETA -");
+  EXPECT_EQ(progressLine("check: ", 250000, 1000000, 2),
+            "sim-run: check: base step 250000 of 1000000 (25%), 125k base "
+            "steps/s, ETA 6 s");
+  EXPECT_EQ(progressLine("", 0, 10, 1.5),
+            "sim-run: base step 0 of 10 (0%), 0 base steps/s, ETA -");
+}
+
+namespace {
+
+/// What a Progress writes to a temporary file for the reports `calls`
+/// (done, seconds) of a run of 1000 base steps.
+std::string progressOutput(bool terminal, bool forced,
+                           std::vector<std::pair<int64_t, double>> calls) {
+  std::FILE *file = std::tmpfile();
+  Progress progress(terminal, forced, file);
+  for (auto [done, seconds] : calls)
+    progress.report(done, 1000, seconds);
+  progress.end();
+  std::string text(size_t(std::ftell(file)), '\0');
+  std::rewind(file);
+  size_t read = std::fread(text.data(), 1, text.size(), file);
+  text.resize(read);
+  std::fclose(file);
+  return text;
+}
+
+} // namespace
+
+TEST(SimRunProgress, ShowsALineOnATerminalFromTheFirstSecond) {
+  // Nothing before the first second, then the line rewritten in place at
+  // most every quarter of a second, and cleared at the end.
+  std::string out =
+      progressOutput(true, false, {{10, 0.5}, {20, 1.0}, {25, 1.1}, {50, 2}});
+  EXPECT_EQ(out, "\rsim-run: base step 20 of 1000 (2%), 20 base steps/s, "
+                 "ETA 49 s\033[K"
+                 "\rsim-run: base step 50 of 1000 (5%), 25 base steps/s, "
+                 "ETA 38 s\033[K"
+                 "\r\033[K");
+}
+
+TEST(SimRunProgress, IsQuietInLogsUnlessForced) {
+  EXPECT_EQ(progressOutput(false, false, {{20, 1.0}, {500, 30}, {900, 60}}),
+            "");
+  // --progress: whole lines, one per ten seconds.
+  EXPECT_EQ(progressOutput(false, true, {{20, 1.0}, {30, 5}, {500, 25}}),
+            "sim-run: base step 20 of 1000 (2%), 20 base steps/s, ETA 49 "
+            "s\n"
+            "sim-run: base step 500 of 1000 (50%), 20 base steps/s, ETA "
+            "25 s\n");
 }

@@ -22,6 +22,7 @@
 #include "simrun/Compare.h"
 #include "simrun/Options.h"
 #include "simrun/Output.h"
+#include "simrun/Progress.h"
 #include "simrun/Report.h"
 #include "simrun/Signals.h"
 
@@ -392,43 +393,6 @@ std::vector<double> totalsOf(sim_session *session) {
 // Runs
 //===----------------------------------------------------------------------===//
 
-/// A progress line on stderr once a run has taken a few seconds.
-struct Progress {
-  std::chrono::steady_clock::time_point start, last;
-  std::string label;
-  bool tty = isatty(STDERR_FILENO);
-  bool shown = false;
-
-  void begin(sim_session *session, std::string runLabel) {
-    label = std::move(runLabel);
-    start = last = std::chrono::steady_clock::now();
-    sim_session_set_progress(session, &Progress::report, this);
-  }
-  static void report(void *user, int64_t done, int64_t total) {
-    auto *self = static_cast<Progress *>(user);
-    auto now = std::chrono::steady_clock::now();
-    double elapsed = std::chrono::duration<double>(now - self->start).count();
-    double since = std::chrono::duration<double>(now - self->last).count();
-    // First at 3 s, then on a terminal every half second, in a log every
-    // 10 s.
-    if (elapsed < 3 || (self->shown && since < (self->tty ? 0.5 : 10)))
-      return;
-    self->last = now;
-    self->shown = true;
-    std::fprintf(
-        stderr, "%ssim-run: %sbase step %lld of %lld (%.0f%%, %.0f s)%s",
-        self->tty ? "\r" : "", self->label.c_str(), (long long)done,
-        (long long)total, total ? 100.0 * double(done) / double(total) : 100.0,
-        elapsed, self->tty ? "\033[K" : "\n");
-    std::fflush(stderr);
-  }
-  void end() {
-    if (shown && tty)
-      std::fputs("\r\033[K", stderr);
-    shown = false;
-  }
-};
-
 /// Runs `steps` base steps from the initial state. Done, or Cut by a signal
 /// (at the base step reached); a signal received before it began leaves
 /// the session as it was and says Cut at its time.
@@ -734,7 +698,7 @@ void requireExactSolution(const sim_bundle *bundle, sim_session *session,
 Results runAll(Sessions &sessions, const sim_bundle *bundle,
                const Options &options,
                const std::vector<sim_buffer_info> &observed) {
-  Progress progress;
+  Progress progress(isatty(STDERR_FILENO), options.progress);
   Results results;
   results.main =
       runMain(sessions.main->get(), bundle, options, observed, progress);

@@ -343,6 +343,11 @@ void declareOptions(CLI::App &app, Options &options, std::string &backend,
                "run launch by launch and stop at the first NaN\n"
                "or infinity, naming base step, component and item")
       ->disable_flag_override();
+  app.add_flag("--progress", options.progress,
+               "show the progress line also when stderr is not a\n"
+               "terminal (one line per 10 s; on a terminal it is\n"
+               "always shown, rewritten in place)")
+      ->disable_flag_override();
   app.add_option("--threads", options.threads,
                  "CPU backend threads, 1 to 1024 (default: all)")
       ->option_text("N")

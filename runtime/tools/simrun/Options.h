@@ -76,6 +76,8 @@ struct Options {
   std::string dump;
   std::string json;
   bool checkFinite = false;
+  /// --progress: the progress line also where stderr is not a terminal.
+  bool progress = false;
   /// 0: one per hardware thread.
   int32_t threads = 0;
   int32_t device = 0;
