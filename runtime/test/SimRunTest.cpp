@@ -1057,6 +1057,49 @@ TEST_F(SimRun, PrintsNoProgressWhenStderrIsAFile) {
   EXPECT_TRUE(contains(err, "sim-run: interrupted by SIGINT")) << err;
 }
 
+TEST_F(SimRun, TakesMaxStepsOnlyWhereItCanBeCompiledIn) {
+  // A bundle has max_steps compiled in: only its own value goes.
+  Result result = simRun(bundle + " --backend cpu --set max_steps=6");
+  EXPECT_EQ(result.status, 2) << result.output;
+  EXPECT_TRUE(contains(result.output,
+                       "sim-run: error: --set max_steps=6: max_steps is fixed "
+                       "when a scene is compiled (bundle '" +
+                           bundle +
+                           "' has 4): compile the scene with sim-translate "
+                           "--sim-to-bundle --sim-set-params=max_steps=6, or "
+                           "give sim-run the .mlir scene (see sim-run "
+                           "--help)"))
+      << result.output;
+  result = simRun(bundle + " --backend cpu --steps 3 --set max_steps=4");
+  EXPECT_EQ(result.status, 0) << result.output;
+
+  // A .mlir scene is compiled with it: a stand-in sim-translate records
+  // its arguments (the bundle it copies has max_steps 4, which a session
+  // given max_steps=6 would refuse).
+  std::string tools = dir + "/compile-time";
+  ASSERT_EQ(mkdir(tools.c_str(), 0755), 0);
+  std::string simRun = tools + "/sim-run";
+  ASSERT_EQ(shell("cp " + std::string(SIM_RUN_PATH) + " " + simRun).status, 0);
+  std::string scene = tools + "/decay.mlir", args = tools + "/args";
+  writeFile(scene, "// not read by the stand-in sim-translate\n");
+  std::string translate = tools + "/sim-translate";
+  writeFile(translate, "#!/bin/sh\necho \"$@\" > '" + args + "'\n/bin/cp '" +
+                           bundle + "' \"$4\"\n");
+  chmod(translate.c_str(), 0755);
+  result = shell("PATH=/nonexistent " + simRun + " " + scene +
+                 " --backend cpu --steps 4 --set max_steps=6 --set k=1");
+  EXPECT_EQ(result.status, 0) << result.output;
+  std::string given = readFile(args);
+  EXPECT_TRUE(contains(given, " --sim-to-bundle -o ")) << given;
+  EXPECT_TRUE(contains(given, " --sim-set-params=max_steps=6\n")) << given;
+  EXPECT_FALSE(contains(given, "k=1")) << given;
+  // Without one, the translation is as before.
+  result = shell("PATH=/nonexistent " + simRun + " " + scene +
+                 " --backend cpu --steps 4");
+  EXPECT_EQ(result.status, 0) << result.output;
+  EXPECT_FALSE(contains(readFile(args), "--sim-set-params")) << readFile(args);
+}
+
 TEST(Dependencies, NoMlirLlvmOrCuda) {
   // The runtime must run where only libc and libstdc++ are installed.
   for (const char *binary : {SIM_RUN_PATH, SIM_RUNTIME_LIBRARY}) {

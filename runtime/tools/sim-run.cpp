@@ -133,8 +133,11 @@ void stopIfInterrupted(const std::string &what) {
                                              "; nothing was run"};
 }
 
-/// Translates a .mlir scene into the temporary bundle `bundle`.
-void translate(const std::string &scene, TemporaryFile &bundle) {
+/// Translates a .mlir scene into the temporary bundle `bundle`, with the
+/// compile-time settings `compiled` (NAME=VALUE) applied by
+/// --sim-set-params.
+void translate(const std::string &scene, TemporaryFile &bundle,
+               const std::vector<std::string> &compiled) {
   std::string searched;
   std::optional<std::string> tool = findTranslate(searched);
   if (!tool)
@@ -148,6 +151,12 @@ void translate(const std::string &scene, TemporaryFile &bundle) {
       std::string(tmp && *tmp ? tmp : "/tmp") + "/sim-run-XXXXXX.simb", 5);
   std::vector<std::string> args = {*tool, scene, "--sim-to-bundle", "-o",
                                    bundle.path()};
+  if (!compiled.empty()) {
+    std::string values;
+    for (const std::string &value : compiled)
+      values += (values.empty() ? "" : ",") + value;
+    args.push_back("--sim-set-params=" + values);
+  }
   std::vector<char *> argv;
   for (std::string &arg : args)
     argv.push_back(arg.data());
@@ -182,12 +191,18 @@ bool endsWith(const std::string &text, const std::string &suffix) {
          text.compare(text.size() - suffix.size(), suffix.size(), suffix) == 0;
 }
 
-/// The bundle that runs: the input itself, or its translation.
+/// Whether the input is a scene to translate rather than a bundle.
+bool isScene(const std::string &path) {
+  return endsWith(path, ".mlir") && !isBundle(path);
+}
+
+/// The bundle that runs: the input itself, or its translation with the
+/// compile-time settings `compiled`.
 class Input {
 public:
-  explicit Input(const std::string &path) {
-    if (endsWith(path, ".mlir") && !isBundle(path)) {
-      translate(path, translated);
+  Input(const std::string &path, const std::vector<std::string> &compiled) {
+    if (isScene(path)) {
+      translate(path, translated, compiled);
       check(sim_bundle_open(translated.path().c_str(), &handle));
     } else {
       check(sim_bundle_open(path.c_str(), &handle));
@@ -721,11 +736,30 @@ Results runAll(Sessions &sessions, const sim_bundle *bundle,
   return results;
 }
 
-int run(const Options &options) {
+/// For a .mlir input, moves the compile-time settings (max_steps) out of
+/// `options.sets`: they go to the translation. A bundle has them compiled
+/// in, and the sessions refuse them.
+std::vector<std::string> takeCompileTimeSettings(Options &options) {
+  std::vector<std::string> compiled;
+  if (!isScene(options.input))
+    return compiled;
+  std::vector<std::pair<std::string, std::string>> runTime;
+  for (auto &[name, value] : options.sets) {
+    if (isCompileTimeSetting(name))
+      compiled.push_back(name + "=" + value);
+    else
+      runTime.emplace_back(name, value);
+  }
+  options.sets = std::move(runTime);
+  return compiled;
+}
+
+int run(Options options) {
   // Before anything runs: the paths, the bundle, every session and every
   // --set, the dump files.
   OutputPlan outputs = planOutputs(options);
-  Input input(options.input);
+  std::vector<std::string> compiled = takeCompileTimeSettings(options);
+  Input input(options.input, compiled);
   const sim_bundle *bundle = input.bundle();
   Sessions sessions = createSessions(bundle, options);
   std::vector<sim_buffer_info> observed = observedBuffers(bundle);

@@ -26,6 +26,10 @@ void usageError(const std::string &message) {
 
 void runError(const std::string &message) { throw Exit{kExitFailure, message}; }
 
+bool isCompileTimeSetting(const std::string &name) {
+  return name == "max_steps";
+}
+
 //===----------------------------------------------------------------------===//
 // Value parsers
 //===----------------------------------------------------------------------===//
@@ -296,7 +300,9 @@ void declareOptions(CLI::App &app, Options &options, std::string &backend,
       ->transform(
           integerIn(1, kMaxSteps, "an integer from 1 to 1000000000000"));
   app.add_option("--set", sets,
-                 "set range, dt or a scene parameter (repeatable)")
+                 "set range, dt or a scene parameter (repeatable);\n"
+                 "for a .mlir scene also max_steps, which is\n"
+                 "compiled in (sim-translate --sim-set-params)")
       ->option_text("NAME=VALUE")
       ->allow_extra_args(false)
       ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll)
@@ -438,7 +444,14 @@ Options parseOptions(int argc, const char *const *argv) {
     sim_strategy_parse(strategy.c_str(), &options.strategy);
   for (const std::string &set : sets) {
     size_t equals = set.find('=');
-    options.sets.emplace_back(set.substr(0, equals), set.substr(equals + 1));
+    std::string name = set.substr(0, equals), value = set.substr(equals + 1);
+    // A compile-time value is checked here: for a .mlir scene it goes to
+    // the translation, which should never be what finds it wrong.
+    if (name == "max_steps" && !parseInteger(value, 1, kMaxMaxSteps))
+      usageError("--set: max_steps " + inQuotes(value) +
+                 " is not an integer from 1 to " +
+                 std::to_string(kMaxMaxSteps));
+    options.sets.emplace_back(name, value);
   }
   return options;
 }

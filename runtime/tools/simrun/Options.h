@@ -54,6 +54,13 @@ constexpr int64_t kMaxRepeat = 1'000'000;
 constexpr int64_t kMaxGroupSize = 4096;
 /// The CPU backend's most worker threads.
 constexpr int64_t kMaxThreads = 1024;
+/// The largest max_steps a scene may have (the compiler's and the bundle
+/// verifier's limit).
+constexpr int64_t kMaxMaxSteps = int64_t(1) << 20;
+
+/// Whether `--set NAME=...` is a compile-time setting (max_steps): for a
+/// .mlir input sim-run compiles the scene with it; a bundle has it fixed.
+bool isCompileTimeSetting(const std::string &name);
 
 struct Options {
   std::string input;
