@@ -14,6 +14,7 @@
 #include "simrun/Options.h"
 #include "simrun/Output.h"
 #include "simrun/Progress.h"
+#include "simrun/Report.h"
 
 #include <gtest/gtest.h>
 
@@ -528,4 +529,14 @@ TEST(SimRunProgress, IsQuietInLogsUnlessForced) {
             "s\n"
             "sim-run: base step 500 of 1000 (50%), 20 base steps/s, ETA "
             "25 s\n");
+}
+
+TEST(SimRunReport, ComparesTotalsWithTheirReference) {
+  TotalError error = compareTotal("E", 1.5, 2);
+  EXPECT_TRUE(error.available);
+  EXPECT_EQ(error.absolute, 0.5);
+  EXPECT_EQ(error.relative, 0.25);
+  EXPECT_EQ(compareTotal("E", 1, 0).relative, INFINITY);
+  EXPECT_EQ(compareTotal("E", 0, 0).relative, 0);
+  EXPECT_TRUE(std::isnan(compareTotal("E", NAN, 1).absolute));
 }

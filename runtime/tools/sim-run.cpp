@@ -491,8 +491,39 @@ MainRun runMain(sim_session *session, const sim_bundle *bundle,
   return main;
 }
 
+/// --reference's error of every total: against the simple strategy's
+/// totals, or their values on the exact solution at the time the measured
+/// run reached.
+void compareTotalsWithReference(Results &results, sim_session *measured,
+                                sim_session *simple) {
+  const MainRun &main = results.main;
+  std::vector<double> theirs;
+  if (simple)
+    theirs = totalsOf(simple);
+  for (size_t t = 0; t < main.totalNames.size(); ++t) {
+    const std::string &name = main.totalNames[t];
+    if (simple) {
+      results.totalErrors.push_back(
+          compareTotal(name, main.totals[t], theirs[t]));
+      continue;
+    }
+    double exact = 0;
+    sim_status status = sim_session_exact_total(measured, name.c_str(), &exact);
+    if (status == SIM_ERROR_INVALID_ARGUMENT || status == SIM_ERROR_BUNDLE) {
+      TotalError unavailable;
+      unavailable.total = name;
+      unavailable.why = sim_last_error();
+      results.totalErrors.push_back(unavailable);
+      continue;
+    }
+    check(status);
+    results.totalErrors.push_back(compareTotal(name, main.totals[t], exact));
+  }
+}
+
 /// --reference: the simple strategy's run, or the exact solution at the
-/// time the measured run reached; then the error of every observed buffer.
+/// time the measured run reached; then the error of every observed buffer
+/// and total.
 void runReference(Results &results, sim_session *measured, Session *simple,
                   const std::vector<sim_buffer_info> &observed,
                   const Options &options, Progress &progress) {
@@ -518,6 +549,9 @@ void runReference(Results &results, sim_session *measured, Session *simple,
   }
   if (results.reference.stage != Stage::Done)
     return;
+  compareTotalsWithReference(results, measured,
+                             options.reference == "simple" ? simple->get()
+                                                           : nullptr);
   for (size_t i = 0; i < observed.size(); ++i) {
     const std::optional<Buffer> &reference = results.referenceValues[i];
     results.errors.push_back({observed[i].name, reference.has_value(),

@@ -21,6 +21,21 @@ bool Results::interrupted() const {
   return false;
 }
 
+TotalError compareTotal(const std::string &name, double value,
+                        double reference) {
+  TotalError error;
+  error.total = name;
+  error.available = true;
+  error.value = value;
+  error.reference = reference;
+  error.absolute = std::fabs(value - reference);
+  error.relative = reference != 0       ? error.absolute / std::fabs(reference)
+                   : error.absolute > 0 ? INFINITY
+                   : std::isnan(error.absolute) ? NAN
+                                                : 0;
+  return error;
+}
+
 std::string formatTime(double seconds) {
   char text[32];
   if (seconds < 1e-3)
@@ -142,6 +157,16 @@ void printReferenceErrors(const Results &results) {
                      "  rms-rel " + scientific(error.norms.rmsRel));
     else
       row(label, name + "  (no exact solution)");
+  }
+  for (const TotalError &error : results.totalErrors) {
+    std::string name = "total " + displayName(error.total);
+    if (error.available)
+      row(label, name + "  abs " + scientific(error.absolute) + "  rel " +
+                     scientific(error.relative) + "  (" +
+                     scientific(error.value, 9) + " vs " +
+                     scientific(error.reference, 9) + ")");
+    else
+      row(label, name + "  (" + error.why + ")");
   }
 }
 
@@ -370,6 +395,20 @@ Json checkJson(const Results &results) {
   return object;
 }
 
+Json totalErrorsJson(const Results &results) {
+  if (results.referenceKind.empty())
+    return nullptr;
+  Json object = Json::object();
+  if (results.reference.stage == Stage::Done)
+    for (const TotalError &error : results.totalErrors)
+      if (error.available)
+        object[error.total] = {{"value", number(error.value)},
+                               {"reference", number(error.reference)},
+                               {"abs", number(error.absolute)},
+                               {"rel", number(error.relative)}};
+  return object;
+}
+
 Json dumpJson(const Results &results) {
   if (results.dumpDir.empty())
     return nullptr;
@@ -446,6 +485,7 @@ std::string toJson(const Results &results) {
         errors[error.buffer] = {{"max_abs", number(error.norms.maxAbs)},
                                 {"rms_rel", number(error.norms.rmsRel)}};
   json["error"] = errors;
+  json["error_totals"] = totalErrorsJson(results);
   json["check"] = checkJson(results);
   json["dump"] = dumpJson(results);
   return json.dump(2, ' ', false, Json::error_handler_t::replace) + "\n";
