@@ -984,7 +984,7 @@ TEST_F(SimRun, RemovesTheTemporaryBundleOnSignals) {
 }
 
 //===----------------------------------------------------------------------===//
-// Progress
+// Progress, warnings and compile-time settings
 //===----------------------------------------------------------------------===//
 
 namespace {
@@ -1054,7 +1054,103 @@ TEST_F(SimRun, PrintsNoProgressWhenStderrIsAFile) {
   std::string err = readFile(sub + "/stderr");
   EXPECT_FALSE(contains(err, "base step")) << err;
   EXPECT_FALSE(contains(err, "\r")) << err;
+  // What it does say: the init check's warning and the interruption.
+  EXPECT_TRUE(contains(err, "sim-run: warning: the init of buffer 'V'")) << err;
   EXPECT_TRUE(contains(err, "sim-run: interrupted by SIGINT")) << err;
+}
+
+TEST_F(SimRun, WarnsAboutNonFiniteResultsAndExitsWithStatus3) {
+  std::string json = dir + "/nonfinite.json", dump = dir + "/nonfinite";
+  Result result = simRun(bundle +
+                         " --backend cpu --strategy simple --steps 20 "
+                         "--set poison=4 --json " +
+                         json + " --dump " + dump);
+  EXPECT_EQ(result.status, 3) << result.output;
+  EXPECT_TRUE(contains(result.output,
+                       "sim-run: warning: buffer 'X' holds 1 NaN or infinite "
+                       "value at the end of the run (the first: nan at item "
+                       "7)\n"))
+      << result.output;
+  EXPECT_TRUE(contains(result.output,
+                       "sim-run: error: the run ended with NaN or infinite "
+                       "values (--check-finite stops at the first and says "
+                       "where it appeared)"))
+      << result.output;
+  // The report and the files are there all the same.
+  EXPECT_TRUE(contains(result.output, "big steps        20")) << result.output;
+  EXPECT_TRUE(exists(dump + "/X.npy"));
+  Json metrics = readJson(json);
+  EXPECT_EQ(metrics["non_finite"]["buffers"],
+            Json::parse(R"({"X": {"count": 1, "item": 7, "lane": 0}})"));
+  EXPECT_EQ(metrics["non_finite"]["totals"], Json::array());
+
+  // Without NaN: an empty list, and status 0.
+  result = simRun(bundle + " --backend cpu --steps 20 --json " + json);
+  EXPECT_EQ(result.status, 0) << result.output;
+  EXPECT_EQ(readJson(json)["non_finite"],
+            Json::parse(R"({"buffers": {}, "totals": []})"));
+  // --check fails first: status 1.
+  result = simRun(bundle + " --backend cpu --strategy simple --steps 20 "
+                           "--set poison=4 --check");
+  EXPECT_EQ(result.status, 1) << result.output;
+}
+
+TEST_F(SimRun, WarnsAboutAnInitThatDisagreesWithItsWriter) {
+  std::string json = dir + "/init.json";
+  Result result = simRun(bundle + " --backend cpu --steps 3 --json " + json);
+  ASSERT_EQ(result.status, 0) << result.output;
+  // V's lane 2 counts evaluations, also one with n = 0.
+  EXPECT_TRUE(contains(result.output,
+                       "sim-run: warning: the init of buffer 'V' disagrees "
+                       "with its writer 'Grow' evaluated with n = 0 at t = 0\n"
+                       "  largest difference 1.000e+00 at item 0, lane 2 "
+                       "(init 0.000000000e+00, evaluate 1.000000000e+00); 100 "
+                       "of 300 values differ by more than 1.0e-05 of the "
+                       "largest, 9.900e+01\n"))
+      << result.output;
+  EXPECT_FALSE(contains(result.output, "init of buffer 'X'")) << result.output;
+  Json check = readJson(json)["init_check"];
+  EXPECT_EQ(check["ran"], true);
+  EXPECT_EQ(check["items"], 100);
+  EXPECT_EQ(check["buffers"]["X"]["consistent"], true);
+  EXPECT_EQ(check["buffers"]["X"]["component"], "Decay");
+  EXPECT_EQ(check["buffers"]["V"]["consistent"], false);
+  EXPECT_EQ(check["buffers"]["V"]["count"], 100);
+  EXPECT_EQ(check["buffers"]["V"]["item"], 0);
+  EXPECT_EQ(check["buffers"]["V"]["lane"], 2);
+
+  // One item of X off by 1e-6.
+  std::string wrong = dir + "/wrong-init.simb";
+  writeFile(wrong, serialize(decayContents(false, true,
+                                           SIM_TEST_DECAY_REFERENCE_WRONG_SO)));
+  result = simRun(wrong + " --backend cpu --steps 3");
+  ASSERT_EQ(result.status, 0) << result.output;
+  EXPECT_TRUE(contains(result.output,
+                       "sim-run: warning: the init of buffer 'X' disagrees "
+                       "with its writer 'Decay' evaluated with n = 0 at t = 0\n"
+                       "  largest difference 1.000e-06 at item 3 (init "
+                       "1.030000000e+00, evaluate 1.030001000e+00); 1 of 100 "
+                       "values differ by more than 1.0e-12 of the largest, "
+                       "1.990e+00\n"))
+      << result.output;
+
+  // A large range: part of it, and it says so.
+  result = simRun(bundle + " --backend cpu --steps 1 --set range=100000");
+  ASSERT_EQ(result.status, 0) << result.output;
+  EXPECT_TRUE(contains(result.output,
+                       "sim-run: note: the init check evaluated 65536 of the "
+                       "100000 items (the first 32768 and the last 32768)\n"))
+      << result.output;
+
+  // Without reference functions there is nothing to check with.
+  std::string bare = dir + "/bare.simb";
+  writeFile(bare, decayBundle(false, false));
+  result = simRun(bare + " --backend cpu --steps 3 --json " + json);
+  ASSERT_EQ(result.status, 0) << result.output;
+  EXPECT_FALSE(contains(result.output, "init")) << result.output;
+  EXPECT_EQ(readJson(json)["init_check"],
+            Json::parse(R"({"ran": false, "skipped":
+                            "the bundle has no reference functions"})"));
 }
 
 TEST_F(SimRun, TakesMaxStepsOnlyWhereItCanBeCompiledIn) {

@@ -15,6 +15,7 @@
 #include "simrun/Output.h"
 #include "simrun/Progress.h"
 #include "simrun/Report.h"
+#include "simrun/Safety.h"
 
 #include <gtest/gtest.h>
 
@@ -208,6 +209,7 @@ TEST(SimRunOptions, PrintsTheHelpOfEveryOption) {
         "-h, --help "})
     EXPECT_TRUE(contains(help, "\n  " + std::string(option))) << option;
   EXPECT_TRUE(contains(help, "130 or 143")) << help;
+  EXPECT_TRUE(contains(help, "3 when the run\nended with NaN")) << help;
 }
 
 //===----------------------------------------------------------------------===//
@@ -529,6 +531,94 @@ TEST(SimRunProgress, IsQuietInLogsUnlessForced) {
             "s\n"
             "sim-run: base step 500 of 1000 (50%), 20 base steps/s, ETA "
             "25 s\n");
+}
+
+//===----------------------------------------------------------------------===//
+// Warnings: the init check and non-finite results
+//===----------------------------------------------------------------------===//
+
+TEST(SimRunWarnings, NamesTheFirstNonFiniteValueAndHowMany) {
+  Buffer x = doubles("X", {1, 2, NAN, 4, INFINITY, 6});
+  x.lanes = 2;
+  std::optional<NonFiniteValues> found = findNonFinite(x);
+  ASSERT_TRUE(found);
+  EXPECT_EQ(found->count, 2);
+  EXPECT_EQ(found->item, 1);
+  EXPECT_EQ(found->lane, 0);
+  EXPECT_EQ(nonFiniteWarning(*found),
+            "sim-run: warning: buffer 'X' holds 2 NaN or infinite values at "
+            "the end of the run (the first: nan at item 1, lane 0)");
+  EXPECT_FALSE(findNonFinite(doubles("V", {0, 1, -1e308})));
+  Buffer one = doubles("V", {0, -INFINITY});
+  EXPECT_EQ(nonFiniteWarning(*findNonFinite(one)),
+            "sim-run: warning: buffer 'V' holds 1 NaN or infinite value at "
+            "the end of the run (the first: -inf at item 1)");
+
+  std::vector<NonFiniteValues> totals =
+      findNonFiniteTotals({"E", "P", "Q"}, {1, NAN, INFINITY});
+  ASSERT_EQ(totals.size(), 2u);
+  EXPECT_EQ(nonFiniteWarning(totals[0]),
+            "sim-run: warning: total 'P' is not finite at the end of the run "
+            "(nan)");
+  EXPECT_EQ(nonFiniteWarning(totals[1]),
+            "sim-run: warning: total 'Q' is not finite at the end of the run "
+            "(inf)");
+}
+
+TEST(SimRunWarnings, SaysWhichInitDisagreesWithItsWriter) {
+  InitCheckReport report;
+  report.ran = true;
+  report.items = 64;
+  report.range = 64;
+  InitCheckReport::Row y;
+  y.buffer = "Y";
+  y.component = "Fall";
+  y.maxAbs = 0.25;
+  y.item = 3;
+  y.initial = -0.25;
+  y.evaluated = 0;
+  y.scale = 0.63;
+  y.tolerance = 1e-5;
+  y.count = 1;
+  y.interpolated = true;
+  InitCheckReport::Row s = y;
+  s.buffer = "S";
+  s.component = "Shadow";
+  s.count = 0;
+  s.nonFinite = 2;
+  s.nonFiniteItem = 5;
+  s.lanes = 3;
+  report.rows = {y, s};
+  std::vector<std::string> messages = initCheckMessages(report);
+  ASSERT_EQ(messages.size(), 2u);
+  EXPECT_EQ(messages[0],
+            "sim-run: warning: the init of buffer 'Y' disagrees with its "
+            "writer 'Fall' evaluated with n = 0 at t = 0\n"
+            "  largest difference 2.500e-01 at item 3 (init "
+            "-2.500000000e-01, evaluate 0.000000000e+00); 1 of 64 values "
+            "differ by more than 1.0e-05 of the largest, 6.300e-01\n"
+            "  hip and hip-cache interpolate from the init in the first big "
+            "step: make the init what 'Fall' computes");
+  EXPECT_EQ(messages[1],
+            "sim-run: note: the init check skips 2 values of buffer 'S': "
+            "its init or 'Shadow' evaluated with n = 0 at t = 0 is NaN or "
+            "infinite there (the first at item 5), as when a body divides "
+            "by n");
+
+  // Part of a large range; a check that could not run.
+  report.range = 1000000;
+  report.rows.clear();
+  EXPECT_EQ(initCheckMessages(report),
+            std::vector<std::string>{
+                "sim-run: note: the init check evaluated 64 of the 1000000 "
+                "items (the first 32 and the last 32)"});
+  InitCheckReport failed;
+  failed.skipped = "a reference body read buffer 9";
+  EXPECT_EQ(initCheckMessages(failed),
+            std::vector<std::string>{"sim-run: note: the init check did not "
+                                     "run: a reference body read buffer 9"});
+  failed.skipped = "the bundle has no reference functions";
+  EXPECT_TRUE(initCheckMessages(failed).empty());
 }
 
 TEST(SimRunReport, ComparesTotalsWithTheirReference) {

@@ -24,6 +24,7 @@
 #include "simrun/Output.h"
 #include "simrun/Progress.h"
 #include "simrun/Report.h"
+#include "simrun/Safety.h"
 #include "simrun/Signals.h"
 
 #include "sim/Runtime/sim_runtime.h"
@@ -491,6 +492,36 @@ MainRun runMain(sim_session *session, const sim_bundle *bundle,
   return main;
 }
 
+/// NaNs and infinities at the end of the measured run: in the observed
+/// buffers, the session's other buffers (read one at a time) and the
+/// totals.
+std::vector<NonFiniteValues> findNonFiniteState(sim_session *session,
+                                                const sim_bundle *bundle,
+                                                const MainRun &main) {
+  std::vector<NonFiniteValues> found;
+  for (int32_t b = 0; b < sim_bundle_num_buffers(bundle); ++b) {
+    sim_buffer_info info;
+    check(sim_bundle_buffer(bundle, b, &info));
+    size_t bytes = 0;
+    // The observed buffers are read already; a buffer the strategy's
+    // plan pruned is not in the session.
+    std::optional<NonFiniteValues> values;
+    if (info.observed) {
+      for (const Buffer &buffer : main.values)
+        if (buffer.name == info.name)
+          values = findNonFinite(buffer);
+    } else if (sim_session_buffer_bytes(session, info.name, &bytes) == SIM_OK) {
+      values = findNonFinite(readBuffer(session, info, false));
+    }
+    if (values)
+      found.push_back(*values);
+  }
+  for (NonFiniteValues &total :
+       findNonFiniteTotals(main.totalNames, main.totals))
+    found.push_back(total);
+  return found;
+}
+
 /// --reference's error of every total: against the simple strategy's
 /// totals, or their values on the exact solution at the time the measured
 /// run reached.
@@ -749,8 +780,15 @@ Results runAll(Sessions &sessions, const sim_bundle *bundle,
                const std::vector<sim_buffer_info> &observed) {
   Progress progress(isatty(STDERR_FILENO), options.progress);
   Results results;
+  // The init check first: what it finds matters before a long run.
+  results.initCheck = checkInit(sessions.main->get(), bundle);
+  for (const std::string &message : initCheckMessages(results.initCheck))
+    std::fprintf(stderr, "%s\n", message.c_str());
+  std::fflush(stderr);
   results.main =
       runMain(sessions.main->get(), bundle, options, observed, progress);
+  results.nonFinite =
+      findNonFiniteState(sessions.main->get(), bundle, results.main);
   runReference(results, sessions.main->get(), sessions.simple.get(), observed,
                options, progress);
   sessions.simple.reset();
@@ -812,12 +850,23 @@ int run(Options options) {
   if (!options.json.empty())
     writeFileAtomically(options.json, toJson(results));
 
+  for (const NonFiniteValues &found : results.nonFinite)
+    std::fprintf(stderr, "%s\n", nonFiniteWarning(found).c_str());
   if (int signal = receivedSignal()) {
     std::fprintf(stderr, "sim-run: interrupted by %s%s\n", signalName(signal),
                  results.interrupted() ? "; wrote what was complete" : "");
     return kExitSignalBase + signal;
   }
-  return results.check && !results.check->pass() ? kExitFailure : kExitSuccess;
+  if (results.check && !results.check->pass())
+    return kExitFailure;
+  if (!results.nonFinite.empty()) {
+    std::fprintf(stderr,
+                 "sim-run: error: the run ended with NaN or infinite values "
+                 "(--check-finite stops at the first and says where it "
+                 "appeared)\n");
+    return kExitNonFinite;
+  }
+  return kExitSuccess;
 }
 
 } // namespace

@@ -217,9 +217,14 @@ complete and skips the rest; a second one kills it.
 ENVIRONMENT:
   SIM_CUDA_DRIVER             the driver library to load instead of libcuda.so.1
 
+WARNINGS: before the runs, a buffer whose init disagrees with its writer
+evaluated with n = 0 at t = 0 (hip interpolates from the init); after the
+run, NaN or infinity in the final state or the totals (exit status 3).
+
 EXIT STATUS: 0 on success, 1 when the run fails or --check finds a
-difference, 2 on a usage error (before anything runs), 130 or 143 when
-SIGINT or SIGTERM stopped it.
+difference, 2 on a usage error (before anything runs), 3 when the run
+ended with NaN or infinite values, 130 or 143 when SIGINT or SIGTERM
+stopped it.
 )";
 
 /// The layout of LLVM's tools: overview, usage, options with their value

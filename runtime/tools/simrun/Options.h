@@ -29,6 +29,9 @@ enum ExitStatus : int {
   /// A value outside its domain, an unknown option, an output path that
   /// cannot be written or would overwrite an input.
   kExitUsage = 2,
+  /// The run completed (and --check, if asked for, passed), but its final
+  /// state or totals hold NaN or infinity.
+  kExitNonFinite = 3,
   /// 128 + the signal: SIGINT gives 130, SIGTERM 143.
   kExitSignalBase = 128,
 };

@@ -409,6 +409,41 @@ Json totalErrorsJson(const Results &results) {
   return object;
 }
 
+Json initCheckJson(const InitCheckReport &report) {
+  if (!report.ran)
+    return {{"ran", false}, {"skipped", report.skipped}};
+  Json buffers = Json::object();
+  for (const InitCheckReport::Row &row : report.rows)
+    buffers[row.buffer] = {{"component", row.component},
+                           {"consistent", row.consistent()},
+                           {"max_abs", number(row.maxAbs)},
+                           {"item", row.item},
+                           {"lane", row.lane},
+                           {"initial", number(row.initial)},
+                           {"evaluated", number(row.evaluated)},
+                           {"scale", number(row.scale)},
+                           {"tolerance", number(row.tolerance)},
+                           {"count", row.count},
+                           {"non_finite", row.nonFinite},
+                           {"interpolated", row.interpolated}};
+  return {{"ran", true},
+          {"items", report.items},
+          {"range", report.range},
+          {"buffers", buffers}};
+}
+
+Json nonFiniteJson(const Results &results) {
+  Json buffers = Json::object(), totals = Json::array();
+  for (const NonFiniteValues &found : results.nonFinite) {
+    if (found.total)
+      totals.push_back(found.name);
+    else
+      buffers[found.name] = {
+          {"count", found.count}, {"item", found.item}, {"lane", found.lane}};
+  }
+  return {{"buffers", buffers}, {"totals", totals}};
+}
+
 Json dumpJson(const Results &results) {
   if (results.dumpDir.empty())
     return nullptr;
@@ -487,6 +522,8 @@ std::string toJson(const Results &results) {
   json["error"] = errors;
   json["error_totals"] = totalErrorsJson(results);
   json["check"] = checkJson(results);
+  json["init_check"] = initCheckJson(results.initCheck);
+  json["non_finite"] = nonFiniteJson(results);
   json["dump"] = dumpJson(results);
   return json.dump(2, ' ', false, Json::error_handler_t::replace) + "\n";
 }

@@ -11,6 +11,7 @@
 #define SIM_RUN_REPORT_H
 
 #include "Compare.h"
+#include "Safety.h"
 
 #include <optional>
 #include <string>
@@ -121,6 +122,12 @@ struct Results {
   /// --dump: the folder and its files.
   std::string dumpDir;
   std::vector<DumpFiles> dumpFiles;
+
+  /// The init check before the runs (not run: no reference functions, or
+  /// it failed).
+  InitCheckReport initCheck;
+  /// NaNs and infinities in the measured run's final state and totals.
+  std::vector<NonFiniteValues> nonFinite;
 
   /// The signal that stopped sim-run (0: none).
   int signal = 0;
