@@ -198,7 +198,9 @@ def sim_run(args, simb, strategy, steps, sets, dump, reference=None):
     os.makedirs(os.path.dirname(dump), exist_ok=True)
     proc = subprocess.run(command, stdout=subprocess.PIPE,
                           stderr=subprocess.PIPE, universal_newlines=True)
-    if proc.returncode != 0:
+    # Status 3: the run ended with NaN or infinity; the row says so
+    # ("finite").
+    if proc.returncode not in (0, 3):
         sys.exit("error: %s failed:\n%s%s" % (" ".join(command), proc.stdout,
                                              proc.stderr))
     with open(json_path) as f:

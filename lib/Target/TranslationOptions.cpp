@@ -7,8 +7,11 @@
 //===----------------------------------------------------------------------===//
 
 #include "sim/Target/TranslationOptions.h"
+#include "sim/Dialect/Sim/IR/SimOps.h"
 #include "sim/Dialect/Sim/Transforms/Passes.h"
 #include "sim/Pipelines/Pipelines.h"
+
+#include "mlir/Pass/PassManager.h"
 
 using namespace mlir;
 using namespace mlir::sim;
@@ -60,7 +63,13 @@ TranslationOptions::TranslationOptions()
                               "libdevice (default: $CUDA_ROOT, $CUDA_HOME, "
                               "$CUDA_PATH, then /usr/local/cuda)"),
                llvm::cl::init(getTargetDefaults().cudaPath),
-               llvm::cl::cat(category)) {}
+               llvm::cl::cat(category)),
+      setParams("sim-set-params",
+                llvm::cl::desc("--sim-to-bundle, --sim-to-ptx: name=value "
+                               "pairs, comma-separated, set on the scene "
+                               "before it is compiled, as --sim-set-params "
+                               "does (max_steps, range, dt, parameters)"),
+                llvm::cl::CommaSeparated, llvm::cl::cat(category)) {}
 
 GPUTargetOptions TranslationOptions::getGPUTarget() const {
   GPUTargetOptions target;
@@ -69,6 +78,14 @@ GPUTargetOptions TranslationOptions::getGPUTarget() const {
   target.optLevel = optLevel.getValue();
   target.cudaPath = cudaPath.getValue();
   return target;
+}
+
+void TranslationOptions::addSetParams(OpPassManager &pm) const {
+  if (setParams.empty())
+    return;
+  SimSetParamsOptions options;
+  options.values.assign(setParams.begin(), setParams.end());
+  pm.addNestedPass<SimulationOp>(createSimSetParams(options));
 }
 
 const TranslationOptions &mlir::sim::getTranslationOptions() {

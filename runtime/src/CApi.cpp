@@ -15,6 +15,7 @@
 #include "Reference.h"
 #include "Session.h"
 
+#include <cmath>
 #include <cstring>
 #include <new>
 
@@ -26,11 +27,27 @@ struct sim_bundle {
 
 struct sim_session {
   std::unique_ptr<Executor> session;
+  /// The last sim_session_check_init's results.
+  std::vector<InitCheck> initChecks;
 };
 
 namespace {
 
 thread_local std::string lastError;
+
+/// A reference executor of the session's bundle with its range, dt and
+/// parameters, for what only the reference functions can compute.
+std::unique_ptr<ReferenceSession> probeOf(const Executor &session) {
+  sim_session_options options;
+  options = {};
+  options.strategy = SIM_STRATEGY_SIMPLE;
+  options.backend = SIM_BACKEND_REFERENCE;
+  options.group_size = 1;
+  auto probe =
+      std::make_unique<ReferenceSession>(session.sharedBundle(), options);
+  probe->adopt(session.currentSettings());
+  return probe;
+}
 
 sim_status failWith(sim_status status, const std::string &message) {
   lastError = message;
@@ -285,7 +302,7 @@ sim_status sim_session_create(const sim_bundle *bundle,
       session = std::make_unique<ReferenceSession>(bundle->bundle, chosen);
     else
       session = std::make_unique<Session>(bundle->bundle, chosen);
-    *out = new sim_session{std::move(session)};
+    *out = new sim_session{std::move(session), {}};
   });
 }
 
@@ -414,6 +431,76 @@ sim_status sim_session_total(sim_session *session, const char *name,
          "'" + std::string(name) + "' is not a total of scene '" +
              executor.scene().name + "' (totals: " + listNames(names) + ")");
   });
+}
+
+int sim_session_has_exact_total(const sim_session *session, const char *name) {
+  return session && name &&
+         hasExactTotal(*session->session->sharedBundle(), name);
+}
+
+sim_status sim_session_exact_total(sim_session *session, const char *name,
+                                   double *out) {
+  SIM_REQUIRE(session);
+  SIM_REQUIRE(name);
+  SIM_REQUIRE(out);
+  return guard([&] {
+    std::string why;
+    if (!hasExactTotal(*session->session->sharedBundle(), name, &why))
+      fail(SIM_ERROR_INVALID_ARGUMENT, why);
+    *out =
+        probeOf(*session->session)->exactTotal(name, session->session->time());
+  });
+}
+
+sim_status sim_session_check_init(sim_session *session, double tolerance,
+                                  int64_t max_items, int32_t *count) {
+  SIM_REQUIRE(session);
+  SIM_REQUIRE(count);
+  *count = 0;
+  if (!(tolerance >= 0) || !std::isfinite(tolerance))
+    return failWith(SIM_ERROR_INVALID_ARGUMENT,
+                    "the init check's tolerance must be 0 (the default) or "
+                    "positive and finite, not " +
+                        std::to_string(tolerance));
+  if (max_items < 0)
+    return failWith(SIM_ERROR_INVALID_ARGUMENT,
+                    "the init check's max_items must be 0 (the default) or "
+                    "positive, not " +
+                        std::to_string(max_items));
+  session->initChecks.clear();
+  return guard([&] {
+    session->initChecks =
+        probeOf(*session->session)->checkInit(tolerance, max_items);
+    *count = int32_t(session->initChecks.size());
+  });
+}
+
+sim_status sim_session_init_check(const sim_session *session, int32_t index,
+                                  sim_init_check *out) {
+  SIM_REQUIRE(session);
+  SIM_REQUIRE(out);
+  if (index < 0 || size_t(index) >= session->initChecks.size())
+    return failWith(
+        SIM_ERROR_INVALID_ARGUMENT,
+        "init check result " + std::to_string(index) + " is out of range (" +
+            std::to_string(session->initChecks.size()) + " results)");
+  const InitCheck &row = session->initChecks[size_t(index)];
+  out->buffer = row.buffer.c_str();
+  out->component = row.component.c_str();
+  out->items = row.items;
+  out->max_abs = row.maxAbs;
+  out->item = row.item;
+  out->lane = row.lane;
+  out->initial = row.initial;
+  out->evaluated = row.evaluated;
+  out->scale = row.scale;
+  out->tolerance = row.tolerance;
+  out->count = row.count;
+  out->non_finite = row.nonFinite;
+  out->non_finite_item = row.nonFiniteItem;
+  out->interpolated = row.interpolated;
+  lastError.clear();
+  return SIM_OK;
 }
 
 void sim_session_set_progress(sim_session *session, sim_progress_fn progress,

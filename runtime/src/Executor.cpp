@@ -123,8 +123,21 @@ bool Settings::set(const std::string &name, const std::string &text,
     dt = value;
     return false;
   }
-  int index = bundle->findParam(name);
   const schema::SceneT &scene = bundle->scene();
+  if (name == "max_steps") {
+    // Compiled into the plans (their step caps, clocks and histograms):
+    // only the value the bundle has is accepted.
+    Value value = parseValue(ScalarType::I32, text, "max_steps");
+    if (value.i == scene.max_steps)
+      return false;
+    fail(SIM_ERROR_INVALID_ARGUMENT,
+         "max_steps is fixed when a scene is compiled (bundle '" +
+             bundle->name + "' has " + std::to_string(scene.max_steps) +
+             "): compile the scene with sim-translate --sim-to-bundle "
+             "--sim-set-params=max_steps=" +
+             text + ", or give sim-run the .mlir scene");
+  }
+  int index = bundle->findParam(name);
   if (index < 0) {
     std::vector<std::string> names;
     for (const auto &param : scene.params)
@@ -143,6 +156,8 @@ std::string Settings::get(const std::string &name) const {
     return std::to_string(range);
   if (name == "dt")
     return dt.text();
+  if (name == "max_steps")
+    return std::to_string(bundle->scene().max_steps);
   int index = bundle->findParam(name);
   if (index < 0)
     fail(SIM_ERROR_INVALID_ARGUMENT, "'" + name +

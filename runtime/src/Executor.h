@@ -18,6 +18,7 @@
 
 #include <atomic>
 #include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -76,6 +77,11 @@ public:
   virtual ~Executor() = default;
 
   virtual const schema::SceneT &scene() const = 0;
+  /// The bundle the session runs, and its current range, dt and
+  /// parameters: what a reference executor needs to probe the same scene
+  /// (sim_session_check_init, sim_session_exact_total).
+  virtual const std::shared_ptr<const Bundle> &sharedBundle() const = 0;
+  virtual const Settings &currentSettings() const = 0;
   virtual sim_backend backendKind() const = 0;
   virtual const std::string &device() const = 0;
   /// Why `auto` did not choose CUDA (empty otherwise).

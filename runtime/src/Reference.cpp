@@ -258,30 +258,34 @@ std::vector<double> ReferenceSession::totals() {
   if (sums.empty())
     return sums;
   ensureInitialized();
-  running = {Body::Total, -1, now};
   for (size_t t = 0; t < sums.size(); ++t) {
-    bool isF32 =
-        scene().totals[model_->totals[t]->total]->type == ScalarType::F32;
-    double sum = 0.0;
-    for (int64_t i = 0; i < settings.range; ++i) {
-      // Room for either type; an f32 widens to double as the kernels do.
-      alignas(8) uint8_t out[8] = {};
-      totalFns[t](&context, i, out);
-      rethrowCallbackError();
-      if (isF32) {
-        float value;
-        std::memcpy(&value, out, sizeof value);
-        sum += double(value);
-      } else {
-        double value;
-        std::memcpy(&value, out, sizeof value);
-        sum += value;
-      }
-    }
-    sums[t] = sum;
+    running = {Body::Total, -1, now};
+    sums[t] = sumTotal(t);
   }
   running = {};
   return sums;
+}
+
+double ReferenceSession::sumTotal(size_t index) {
+  bool isF32 =
+      scene().totals[model_->totals[index]->total]->type == ScalarType::F32;
+  double sum = 0.0;
+  for (int64_t i = 0; i < settings.range; ++i) {
+    // Room for either type; an f32 widens to double as the kernels do.
+    alignas(8) uint8_t out[8] = {};
+    totalFns[index](&context, i, out);
+    rethrowCallbackError();
+    if (isF32) {
+      float value;
+      std::memcpy(&value, out, sizeof value);
+      sum += double(value);
+    } else {
+      double value;
+      std::memcpy(&value, out, sizeof value);
+      sum += value;
+    }
+  }
+  return sum;
 }
 
 //===----------------------------------------------------------------------===//
@@ -354,6 +358,15 @@ void ReferenceSession::read(int32_t buffer, int64_t item, void *out) {
                   states[buffer].begin.data() + size_t(index) * packed(buffer),
                   packed(buffer));
       return;
+    case Body::InitCheck:
+      // At t = 0 with n = 0 every role (own, back edge, interpolated at
+      // the start of the big step, no writer) is the initial state.
+      requireListedRead(buffer, index);
+      std::memcpy(bytes, initialItem(buffer, index), packed(buffer));
+      return;
+    case Body::ExactTotal:
+      exactItem(buffer, index, bytes);
+      return;
     case Body::None:
       fail(SIM_ERROR_BACKEND, "a read of buffer '" + info.name +
                                   "' while no reference body is running");
@@ -415,19 +428,15 @@ void ReferenceSession::init() {
   int64_t range = settings.range;
   checkMemory(range, "range " + std::to_string(range));
   states.assign(buffers_.size(), State{});
-  initStatus.assign(buffers_.size(), {});
-  for (size_t b = 0; b < states.size(); ++b) {
-    size_t bytes = size_t(range) * packed(int32_t(b));
-    states[b].initial.assign(bytes, 0);
-    initStatus[b].assign(size_t(range), kNotComputed);
-  }
+  initialStates.reset(buffers_.size(), false);
   initChain.clear();
   callbackFailed = false;
   for (size_t b = 0; b < states.size(); ++b)
     for (int64_t i = 0; i < range; ++i)
       initialItem(int32_t(b), i);
-  for (State &state : states)
-    state.begin = state.end = state.current = state.initial;
+  for (size_t b = 0; b < states.size(); ++b)
+    states[b].begin = states[b].end = states[b].current =
+        initialStates.elements[b];
   now = stepSize = 0;
   initialized = true;
 }
@@ -437,10 +446,38 @@ void ReferenceSession::ensureInitialized() {
     init();
 }
 
+void ReferenceSession::InitialStates::reset(size_t buffers, bool sparseItems) {
+  sparse = sparseItems;
+  elements.assign(buffers, {});
+  status.assign(buffers, {});
+  items.assign(sparse ? buffers : 0, {});
+}
+
+uint8_t *ReferenceSession::initialSlot(int32_t buffer, int64_t item,
+                                       uint8_t *&status) {
+  InitialStates &store = *initial;
+  size_t bytes = packed(buffer);
+  if (store.sparse) {
+    // Elements of an unordered_map stay where they are when it grows.
+    InitialStates::Item &entry = store.items[size_t(buffer)][item];
+    if (entry.element.empty())
+      entry.element.assign(bytes, 0);
+    status = &entry.status;
+    return entry.element.data();
+  }
+  std::vector<uint8_t> &elements = store.elements[size_t(buffer)];
+  if (elements.empty()) {
+    elements.assign(size_t(settings.range) * bytes, 0);
+    store.status[size_t(buffer)].assign(size_t(settings.range), kNotComputed);
+  }
+  status = &store.status[size_t(buffer)][size_t(item)];
+  return elements.data() + size_t(item) * bytes;
+}
+
 const uint8_t *ReferenceSession::initialItem(int32_t buffer, int64_t item) {
-  uint8_t *element =
-      states[buffer].initial.data() + size_t(item) * packed(buffer);
-  uint8_t &status = initStatus[buffer][size_t(item)];
+  uint8_t *statusSlot;
+  uint8_t *element = initialSlot(buffer, item, statusSlot);
+  uint8_t &status = *statusSlot;
   if (status == kComputed)
     return element;
   if (status == kComputing) {
@@ -486,7 +523,7 @@ std::string ReferenceSession::describeRead(int32_t buffer, int64_t item) const {
          std::to_string(running.readTime);
 }
 
-void ReferenceSession::readInStep(int32_t buffer, int64_t item, uint8_t *out) {
+void ReferenceSession::requireListedRead(int32_t buffer, int64_t item) const {
   const schema::RefComponentT &component =
       *model_->components[size_t(running.component)];
   if (std::find(component.reads.begin(), component.reads.end(), buffer) ==
@@ -494,6 +531,10 @@ void ReferenceSession::readInStep(int32_t buffer, int64_t item, uint8_t *out) {
     fail(SIM_ERROR_BACKEND,
          describeRead(buffer, item) +
              ", which the model's 'reads' of the component does not list");
+}
+
+void ReferenceSession::readInStep(int32_t buffer, int64_t item, uint8_t *out) {
+  requireListedRead(buffer, item);
   const State &state = states[buffer];
   size_t at = size_t(item) * packed(buffer);
   int32_t writer = buffers_[size_t(buffer)].writer;
@@ -731,6 +772,193 @@ void ReferenceSession::run(int64_t steps) {
   metrics.end = now;
   if (interrupted)
     failInterrupted(begin, now, end);
+}
+
+//===----------------------------------------------------------------------===//
+// Probes: the init check and totals of the exact solution
+//===----------------------------------------------------------------------===//
+
+template <typename Body> void ReferenceSession::probe(Body &&body) {
+  auto restore = [&] {
+    initial = &initialStates;
+    probeStates = {};
+    initChain.clear();
+    running = {};
+  };
+  probeStates.reset(buffers_.size(), settings.range > kDenseProbeItems);
+  initial = &probeStates;
+  initChain.clear();
+  callbackFailed = false;
+  try {
+    body();
+  } catch (...) {
+    restore();
+    throw;
+  }
+  restore();
+}
+
+namespace {
+
+/// The largest difference of one buffer so far, over the values of the
+/// items evaluated.
+struct Differences {
+  InitCheck row;
+  std::vector<double> values;
+  bool f64 = false;
+};
+
+void compareElement(Differences &found, int64_t item, int32_t lanes,
+                    const uint8_t *initial, const uint8_t *evaluated) {
+  InitCheck &row = found.row;
+  for (int32_t l = 0; l < lanes; ++l) {
+    double a =
+        found.f64 ? lane<double>(initial, l) : double(lane<float>(initial, l));
+    double b = found.f64 ? lane<double>(evaluated, l)
+                         : double(lane<float>(evaluated, l));
+    if (!std::isfinite(a) || !std::isfinite(b)) {
+      // Equal infinities agree; a NaN agrees with nothing.
+      if (!(a == b)) {
+        if (row.nonFinite++ == 0)
+          row.nonFiniteItem = item;
+      }
+      continue;
+    }
+    row.scale = std::max({row.scale, std::fabs(a), std::fabs(b)});
+    double difference = std::fabs(b - a);
+    found.values.push_back(difference);
+    if (row.item < 0 || difference > row.maxAbs) {
+      row.maxAbs = difference;
+      row.item = item;
+      row.lane = l;
+      row.initial = a;
+      row.evaluated = b;
+    }
+  }
+}
+
+} // namespace
+
+std::vector<InitCheck> ReferenceSession::checkInit(double tolerance,
+                                                   int64_t maxItems) {
+  if (maxItems <= 0)
+    maxItems = kInitCheckItems;
+  const int64_t range = settings.range;
+  // The items evaluated: all of them, or the first and the last of the
+  // range, where boundary rules and off-by-one inits show.
+  std::vector<std::pair<int64_t, int64_t>> spans;
+  if (range <= maxItems) {
+    spans = {{0, range}};
+  } else {
+    int64_t tail = maxItems / 2;
+    spans = {{0, maxItems - tail}, {range - tail, range}};
+  }
+  std::vector<InitCheck> rows;
+  probe([&] {
+    double dt = settings.dtValue();
+    for (size_t c = 0; c < model_->components.size(); ++c) {
+      const schema::RefComponentT &component = *model_->components[c];
+      std::vector<Differences> found(component.writes.size());
+      std::vector<std::vector<uint8_t>> outs;
+      std::vector<void *> pointers;
+      for (size_t k = 0; k < component.writes.size(); ++k) {
+        uint32_t buffer = component.writes[k];
+        InitCheck &row = found[k].row;
+        row.buffer = buffers_[buffer].info->name;
+        row.component = component.name;
+        row.items = std::min(range, maxItems);
+        found[k].f64 = isF64(*buffers_[buffer].info->element);
+        row.tolerance = tolerance > 0  ? tolerance
+                        : found[k].f64 ? kInitToleranceF64
+                                       : kInitToleranceF32;
+        // A later component reads it: interpolated under hip.
+        for (size_t r = c + 1; r < model_->components.size(); ++r) {
+          const auto &reads = model_->components[r]->reads;
+          row.interpolated |=
+              std::find(reads.begin(), reads.end(), buffer) != reads.end();
+        }
+        outs.emplace_back(packed(int32_t(buffer)));
+      }
+      for (std::vector<uint8_t> &out : outs)
+        pointers.push_back(out.data());
+      for (auto [first, last] : spans)
+        for (int64_t i = first; i < last; ++i) {
+          running = {Body::InitCheck, int32_t(c), 0};
+          evaluateFns[c](&context, i, 0, 0, dt, pointers.data());
+          rethrowCallbackError();
+          running = {};
+          for (size_t k = 0; k < component.writes.size(); ++k) {
+            int32_t buffer = int32_t(component.writes[k]);
+            compareElement(found[k], i,
+                           buffers_[size_t(buffer)].info->element->lanes(),
+                           initialItem(buffer, i), outs[k].data());
+          }
+        }
+      for (Differences &buffer : found) {
+        InitCheck &row = buffer.row;
+        double limit = row.tolerance * row.scale;
+        row.count = std::count_if(buffer.values.begin(), buffer.values.end(),
+                                  [&](double d) { return d > limit; });
+        rows.push_back(std::move(row));
+      }
+    }
+  });
+  return rows;
+}
+
+void ReferenceSession::exactItem(int32_t buffer, int64_t item, uint8_t *out) {
+  const schema::BufferT &info = *buffers_[size_t(buffer)].info;
+  if (!info.exact)
+    fail(SIM_ERROR_INVALID_ARGUMENT,
+         "total '" + totalName(size_t(running.component)) + "' reads buffer '" +
+             info.name + "', which has no exact solution");
+  Running saved = running;
+  running = {Body::Exact, -1, saved.readTime};
+  exactFns[size_t(buffer)](&context, item, exactTime, out);
+  running = saved;
+}
+
+double ReferenceSession::exactTotal(const std::string &name, int64_t time) {
+  std::string why;
+  if (!hasExactTotal(*bundle, name, &why))
+    fail(SIM_ERROR_INVALID_ARGUMENT, why);
+  size_t index = 0;
+  while (totalName(index) != name)
+    ++index;
+  double sum = 0;
+  probe([&] {
+    exactTime = double(time) * settings.dtValue();
+    running = {Body::ExactTotal, int32_t(index), time};
+    sum = sumTotal(index);
+  });
+  return sum;
+}
+
+bool hasExactTotal(const Bundle &bundle, const std::string &name,
+                   std::string *why) {
+  auto no = [&](const std::string &reason) {
+    if (why)
+      *why = reason;
+    return false;
+  };
+  const schema::SceneT &scene = bundle.scene();
+  const schema::ReferenceT *model = bundle.reference();
+  if (!model)
+    return no("bundle '" + bundle.name +
+              "' has no reference model to tell which buffers total '" + name +
+              "' reads");
+  for (const auto &total : model->totals) {
+    if (scene.totals[total->total]->name != name)
+      continue;
+    for (uint32_t read : total->reads) {
+      const schema::BufferT &buffer = *scene.buffers[model->buffers[read]];
+      if (!buffer.exact)
+        return no("total '" + name + "' reads buffer '" + buffer.name +
+                  "', which has no exact solution");
+    }
+    return true;
+  }
+  return no("'" + name + "' is not a total of scene '" + scene.name + "'");
 }
 
 } // namespace sim::rt

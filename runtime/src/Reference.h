@@ -20,9 +20,51 @@
 
 #include <memory>
 #include <string>
+#include <unordered_map>
 #include <vector>
 
 namespace sim::rt {
+
+/// What sim_session_check_init found for one buffer: its init against what
+/// its writer's evaluate body gives with n = 0 at t = 0 on the initial
+/// state (docs/Runtime.md, "Warnings").
+struct InitCheck {
+  std::string buffer, component;
+  /// Items evaluated: the whole range, or the first and the last of it.
+  int64_t items = 0;
+  /// The largest |evaluate - init| over the finite values, where it is and
+  /// the two values there (item -1: no finite value).
+  double maxAbs = 0;
+  int64_t item = -1;
+  int32_t lane = 0;
+  double initial = 0, evaluated = 0;
+  /// The largest |value| of the buffer over the items (init and evaluate),
+  /// the relative tolerance, and how many values differ by more than
+  /// tolerance * scale.
+  double scale = 0, tolerance = 0;
+  int64_t count = 0;
+  /// Values where one side is NaN or infinite and the other is not the
+  /// same: evaluate cannot run with n = 0 (it divides by n, say) or the
+  /// init is not finite; the first such item.
+  int64_t nonFinite = 0, nonFiniteItem = -1;
+  /// A component later in the schedule reads the buffer: hip and
+  /// hip-cache interpolate it from its init in the first big step.
+  bool interpolated = false;
+
+  bool mismatch() const { return count > 0; }
+};
+
+/// The items sim_session_check_init evaluates at most by default, and the
+/// relative tolerances of f32 and f64 buffers.
+constexpr int64_t kInitCheckItems = int64_t(1) << 16;
+constexpr double kInitToleranceF32 = 1e-5;
+constexpr double kInitToleranceF64 = 1e-12;
+
+/// Whether total `name` of the bundle's reference model reads only buffers
+/// with an exact solution, so that its value on the exact solution exists;
+/// if not, `why` says why not.
+bool hasExactTotal(const Bundle &bundle, const std::string &name,
+                   std::string *why = nullptr);
 
 class ReferenceSession final : public Executor {
 public:
@@ -31,6 +73,10 @@ public:
   ~ReferenceSession() override;
 
   const schema::SceneT &scene() const override { return bundle->scene(); }
+  const std::shared_ptr<const Bundle> &sharedBundle() const override {
+    return bundle;
+  }
+  const Settings &currentSettings() const override { return settings; }
   const schema::ReferenceT &model() const { return *model_; }
   sim_backend backendKind() const override { return SIM_BACKEND_REFERENCE; }
   const std::string &device() const override { return deviceName; }
@@ -67,6 +113,21 @@ public:
     return model_->components[index]->name;
   }
 
+  /// Takes range, dt and the parameters of another session of the bundle.
+  void adopt(const Settings &values) { settings = values; }
+
+  /// Evaluates every component's evaluate body at t = 0 with n = 0 on the
+  /// initial state, for every item (for at most `maxItems`, 0:
+  /// kInitCheckItems; above, the first and the last half of that many),
+  /// and compares what it yields with the initial state of each buffer it
+  /// writes. A relative `tolerance` of 0 takes kInitToleranceF32 or F64 by
+  /// the buffer's type. Leaves the session's state as it was.
+  std::vector<InitCheck> checkInit(double tolerance, int64_t maxItems);
+
+  /// The value of total `name` on the exact solution at base step `time`:
+  /// its body's reads see the exact solutions of the buffers it reads.
+  double exactTotal(const std::string &name, int64_t time);
+
 private:
   using InitFn = sim_ref_init_fn;
   using ExactFn = sim_ref_exact_fn;
@@ -74,17 +135,49 @@ private:
   using NumStepsFn = sim_ref_num_steps_fn;
   using EvaluateFn = sim_ref_evaluate_fn;
 
-  /// A buffer's values, `range` items of packed lanes each: the initial
-  /// state, at the start T of the big step, at its end T + m (once the
-  /// writer ran), and as the writer advances through the step.
+  /// A buffer's values, `range` items of packed lanes each: at the start
+  /// T of the big step, at its end T + m (once the writer ran), and as the
+  /// writer advances through the step.
   struct State {
-    std::vector<uint8_t> initial, begin, end, current;
+    std::vector<uint8_t> begin, end, current;
   };
 
+  /// Initial states, computed on demand item by item: after init() every
+  /// item of every buffer; in a probe (checkInit, exactTotal), which needs
+  /// no state, only the items the bodies read, in `range` elements per
+  /// buffer allocated on first use, or above kDenseProbeItems in a map per
+  /// buffer.
+  struct InitialStates {
+    struct Item {
+      uint8_t status = 0;
+      std::vector<uint8_t> element;
+    };
+    bool sparse = false;
+    /// Dense: per buffer the elements and a status byte per item (0 not
+    /// computed, 1 being computed, 2 done).
+    std::vector<std::vector<uint8_t>> elements, status;
+    std::vector<std::unordered_map<int64_t, Item>> items;
+
+    void reset(size_t buffers, bool sparseItems);
+  };
+  static constexpr int64_t kDenseProbeItems = int64_t(1) << 20;
+
   /// The body running now: what its reads mean.
-  enum class Body { None, Init, Exact, NumSteps, Evaluate, Total };
+  enum class Body {
+    None,
+    Init,
+    Exact,
+    NumSteps,
+    Evaluate,
+    Total,
+    /// checkInit's evaluate with n = 0: every read sees the initial state.
+    InitCheck,
+    /// exactTotal's total body: every read sees the exact solution.
+    ExactTotal,
+  };
   struct Running {
     Body body = Body::None;
+    /// The component (the total for ExactTotal).
     int32_t component = -1;
     /// The local time reads of earlier components' buffers are at.
     int64_t readTime = 0;
@@ -106,6 +199,19 @@ private:
   void ensureInitialized();
   /// The initial element of `buffer` at `item`, computed on demand.
   const uint8_t *initialItem(int32_t buffer, int64_t item);
+  /// Where that element and its status live in the current store.
+  uint8_t *initialSlot(int32_t buffer, int64_t item, uint8_t *&status);
+  /// Runs `body` on initial states of its own, then restores the session's.
+  template <typename Body> void probe(Body &&body);
+  /// Fails unless the running component's model lists `buffer` in its
+  /// `reads`.
+  void requireListedRead(int32_t buffer, int64_t item) const;
+  /// The exact solution of `buffer` at `item` at exactTime, for a read of
+  /// the running exactTotal.
+  void exactItem(int32_t buffer, int64_t item, uint8_t *out);
+  /// The sum over the items of total `index`'s body, in item order in
+  /// double, with `running` set by the caller.
+  double sumTotal(size_t index);
   /// What the running num_steps or evaluate body sees of `buffer` at
   /// `item` (inside the range).
   void readInStep(int32_t buffer, int64_t item, uint8_t *out);
@@ -148,8 +254,12 @@ private:
   sim_ref_context context;
 
   std::vector<State> states;
-  /// Per buffer and item: 0 not computed, 1 being computed, 2 done.
-  std::vector<std::vector<uint8_t>> initStatus;
+  /// The initial states of init(), those of a probe, and the store
+  /// initialItem uses now.
+  InitialStates initialStates, probeStates;
+  InitialStates *initial = &initialStates;
+  /// The time exactTotal evaluates exact solutions at (time units).
+  double exactTime = 0;
   /// The init bodies running, outermost first (for cycle messages).
   std::vector<std::pair<int32_t, int64_t>> initChain;
   bool initialized = false;

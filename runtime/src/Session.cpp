@@ -27,6 +27,11 @@ namespace {
 /// hide the host round trip, few enough to keep progress reports and the
 /// driver's launch queue reasonable.
 constexpr int64_t kMaxBatch = 256;
+/// With a progress callback, a batch takes about this long at most (the
+/// first, whose time is not known yet, this many step phases), so that the
+/// callback comes that often however long a big step takes.
+constexpr double kProgressBatchSeconds = 0.25;
+constexpr int64_t kFirstProgressBatch = 8;
 
 } // namespace
 
@@ -449,6 +454,7 @@ void Session::run(int64_t steps) {
   // a host round trip per few of them. A step phase launched past the end
   // only costs its (empty) launches.
   double meanStep = double(cap);
+  int64_t batchCap = progress ? kFirstProgressBatch : kMaxBatch;
   while (now < end) {
     if (interruptPending()) {
       // Stop on the big-step boundary reached: end the run there, so that
@@ -462,11 +468,23 @@ void Session::run(int64_t steps) {
                         ? 1
                         : std::clamp<int64_t>(
                               int64_t(std::ceil(double(end - now) / meanStep)),
-                              1, kMaxBatch);
+                              1, batchCap);
+    auto batchStart = std::chrono::steady_clock::now();
     for (int64_t i = 0; i < batch; ++i)
       runStepPhase();
     readClock(2);
     ++metrics.host_syncs;
+    if (progress) {
+      double perPhase = std::chrono::duration<double>(
+                            std::chrono::steady_clock::now() - batchStart)
+                            .count() /
+                        double(batch);
+      batchCap =
+          perPhase > 0
+              ? std::clamp<int64_t>(int64_t(kProgressBatchSeconds / perPhase),
+                                    1, kMaxBatch)
+              : kMaxBatch;
+    }
     int64_t reached = clock[kSlotBegin] + clock[kSlotSize];
     if (reached <= now)
       fail(SIM_ERROR_CLOCK,

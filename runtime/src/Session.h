@@ -32,6 +32,10 @@ public:
   Session &operator=(const Session &) = delete;
 
   const schema::SceneT &scene() const override { return bundle->scene(); }
+  const std::shared_ptr<const Bundle> &sharedBundle() const override {
+    return bundle;
+  }
+  const Settings &currentSettings() const override { return settings; }
   const schema::PlanT &plan() const { return *plan_; }
   sim_backend backendKind() const override { return backend->kind(); }
   const std::string &device() const override { return deviceName; }

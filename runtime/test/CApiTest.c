@@ -160,6 +160,18 @@ int sim_c_api_test(const char *path, char *message, size_t capacity) {
   sim_nonfinite where;
   CHECK(sim_session_nonfinite(session, &where) == SIM_ERROR_INVALID_ARGUMENT);
 
+  /* The init check, from C: V's lane 2 counts an evaluation with n = 0. */
+  int32_t checked = 0;
+  CHECK(sim_session_check_init(session, 0, 0, &checked) == SIM_OK);
+  CHECK(checked == 2);
+  sim_init_check init;
+  CHECK(sim_session_init_check(session, 1, &init) == SIM_OK);
+  CHECK(strcmp(init.buffer, "V") == 0 && strcmp(init.component, "Grow") == 0);
+  CHECK(init.count == 100 && init.item == 0 && init.lane == 2);
+  CHECK(sim_session_init_check(session, 0, &init) == SIM_OK);
+  CHECK(strcmp(init.buffer, "X") == 0 && init.count == 0);
+  CHECK(sim_session_time(session) == 30);
+
   /* The reference executor behind the same calls, with the same settings:
      the same work and the same values. */
   CHECK(sim_bundle_open(path, &bundle) == SIM_OK);

@@ -304,6 +304,29 @@ TEST(Executor, CheckFiniteStopsAtTheFirstNaN) {
   EXPECT_FALSE(session.nonFinite.found);
 }
 
+TEST(Executor, ReportsProgressEarlyInARun) {
+  // With a progress callback the first batch is 8 step phases, and later
+  // ones take about a quarter of a second at most (here, with fast step
+  // phases, up to 256): the first report comes early however long a big
+  // step takes.
+  Session session(decay(), cpuOptions(SIM_STRATEGY_SIMPLE));
+  std::vector<int64_t> done;
+  session.setProgress(
+      [](void *user, int64_t steps, int64_t) {
+        auto *calls = static_cast<std::vector<int64_t> *>(user);
+        calls->push_back(steps);
+      },
+      &done);
+  session.run(1000);
+  ASSERT_GE(done.size(), 2u);
+  EXPECT_EQ(done[0], 8);
+  EXPECT_EQ(done.back(), 1000);
+  // Without one, a batch is up to 256 step phases.
+  session.setProgress(nullptr, nullptr);
+  session.run(1000);
+  EXPECT_EQ(session.metrics.host_syncs, 4 + 1);
+}
+
 TEST(Executor, ReportsProgressAfterEachSynchronisation) {
   Session session(decay(), cpuOptions(SIM_STRATEGY_HIP));
   std::vector<std::pair<int64_t, int64_t>> calls;
@@ -464,17 +487,18 @@ TEST(Executor, StopsAnInterruptedRunOnABigStepBoundary) {
   EXPECT_EQ(session.time(), 0);
   EXPECT_EQ(session.metrics.steps, 0);
   session.resume();
-  // Asked during the run (from the progress callback): the state is the
-  // one at the boundary reached, and a later run continues from there.
+  // Asked during the run (from the progress callback, after the first
+  // batch, which with a callback is 8 step phases): the state is the one at
+  // the boundary reached, and a later run continues from there.
   session.setProgress(
       [](void *user, int64_t done, int64_t) {
-        if (done >= 20)
+        if (done >= 5)
           static_cast<Session *>(user)->interrupt();
       },
       &session);
   errorOf([&] { session.run(200); }, SIM_ERROR_INTERRUPTED);
   int64_t reached = session.time();
-  EXPECT_GE(reached, 20);
+  EXPECT_GE(reached, 5);
   EXPECT_LT(reached, 200);
   EXPECT_EQ(session.metrics.steps, reached);
   EXPECT_EQ(session.metrics.end, reached);

@@ -378,3 +378,291 @@ TEST(ReferenceExecutor, SubStepsGridSyncComponentsOverTheWholeRange) {
             (std::vector<double>{6.25, 9, 11.75, 13}));
   EXPECT_EQ(session->evaluations, (std::vector<int64_t>{4, 16, 4}));
 }
+
+//===----------------------------------------------------------------------===//
+// Probes: the init check and totals of the exact solution
+//===----------------------------------------------------------------------===//
+
+namespace {
+
+/// One result of sim_session_check_init, with its names copied.
+struct InitRow {
+  std::string buffer, component;
+  sim_init_check found;
+};
+
+/// The init check of a session of `bytes` on `backend` through the C API,
+/// after the settings `sets`.
+std::vector<InitRow>
+checkInitOf(const std::string &bytes, sim_backend backend,
+            const std::vector<std::pair<std::string, std::string>> &sets = {},
+            double tolerance = 0, int64_t maxItems = 0) {
+  std::vector<InitRow> rows;
+  sim_bundle *bundle = nullptr;
+  if (sim_bundle_open_memory(bytes.data(), bytes.size(), &bundle) != SIM_OK) {
+    ADD_FAILURE() << sim_last_error();
+    return rows;
+  }
+  sim_session_options chosen = options(SIM_STRATEGY_HIP, backend);
+  sim_session *session = nullptr;
+  EXPECT_EQ(sim_session_create(bundle, &chosen, &session), SIM_OK)
+      << sim_last_error();
+  sim_bundle_close(bundle);
+  if (!session)
+    return rows;
+  for (const auto &[name, value] : sets)
+    EXPECT_EQ(sim_session_set(session, name.c_str(), value.c_str()), SIM_OK);
+  int32_t count = -1;
+  EXPECT_EQ(sim_session_check_init(session, tolerance, maxItems, &count),
+            SIM_OK)
+      << sim_last_error();
+  for (int32_t i = 0; i < count; ++i) {
+    InitRow row;
+    EXPECT_EQ(sim_session_init_check(session, i, &row.found), SIM_OK);
+    row.buffer = row.found.buffer;
+    row.component = row.found.component;
+    row.found.buffer = row.found.component = nullptr;
+    rows.push_back(row);
+  }
+  sim_session_destroy(session);
+  return rows;
+}
+
+std::string wrongDecayBundle() {
+  return serialize(
+      decayContents(false, true, SIM_TEST_DECAY_REFERENCE_WRONG_SO));
+}
+
+} // namespace
+
+TEST(InitCheck, FindsTheBufferWhoseInitDisagreesWithItsWriter) {
+  for (sim_backend backend : {SIM_BACKEND_CPU, SIM_BACKEND_REFERENCE}) {
+    SCOPED_TRACE(sim_backend_name(backend));
+    std::vector<InitRow> rows = checkInitOf(decayBundle(), backend);
+    ASSERT_EQ(rows.size(), 2u);
+    // X: Decay multiplies by (1 - k dt) zero times, exactly.
+    EXPECT_EQ(rows[0].buffer, "X");
+    EXPECT_EQ(rows[0].component, "Decay");
+    const sim_init_check &x = rows[0].found;
+    EXPECT_EQ(x.items, 100);
+    EXPECT_EQ(x.count, 0);
+    EXPECT_EQ(x.max_abs, 0);
+    EXPECT_DOUBLE_EQ(x.scale, 1.99);
+    EXPECT_EQ(x.tolerance, 1e-12);
+    EXPECT_EQ(x.non_finite, 0);
+    EXPECT_EQ(x.non_finite_item, -1);
+    EXPECT_FALSE(x.interpolated);
+    // V: Grow counts its evaluation in lane 2, also with n = 0.
+    EXPECT_EQ(rows[1].buffer, "V");
+    EXPECT_EQ(rows[1].component, "Grow");
+    const sim_init_check &v = rows[1].found;
+    EXPECT_EQ(v.count, 100);
+    EXPECT_EQ(v.max_abs, 1);
+    EXPECT_EQ(v.item, 0);
+    EXPECT_EQ(v.lane, 2);
+    EXPECT_EQ(v.initial, 0);
+    EXPECT_EQ(v.evaluated, 1);
+    EXPECT_EQ(v.scale, 99);
+    EXPECT_EQ(v.tolerance, 1e-5);
+  }
+}
+
+TEST(InitCheck, FindsOneItemOffByTheTolerance) {
+  // The wrong reference adds 1e-6 to item 3 of X in every evaluation.
+  std::vector<InitRow> rows = checkInitOf(wrongDecayBundle(), SIM_BACKEND_CPU);
+  ASSERT_EQ(rows.size(), 2u);
+  const sim_init_check &x = rows[0].found;
+  EXPECT_EQ(x.count, 1);
+  EXPECT_EQ(x.item, 3);
+  EXPECT_EQ(x.lane, 0);
+  EXPECT_NEAR(x.max_abs, 1e-6, 1e-15);
+  EXPECT_EQ(x.initial, 1.03);
+  EXPECT_NEAR(x.evaluated, 1.03 + 1e-6, 1e-15);
+
+  // A tolerance relative to the buffer's largest value: V's difference of
+  // 1 is 1/99 of it.
+  rows = checkInitOf(decayBundle(), SIM_BACKEND_CPU, {}, 0.02);
+  EXPECT_EQ(rows[1].found.count, 0);
+  EXPECT_EQ(rows[1].found.tolerance, 0.02);
+  rows = checkInitOf(decayBundle(), SIM_BACKEND_CPU, {}, 0.01);
+  EXPECT_EQ(rows[1].found.count, 100);
+}
+
+TEST(InitCheck, EvaluatesTheFirstAndLastItemsOfALargeRange) {
+  // 10 of 100 items: 0-4 and 95-99, so item 3 is among them.
+  std::vector<InitRow> rows =
+      checkInitOf(wrongDecayBundle(), SIM_BACKEND_CPU, {}, 0, 10);
+  ASSERT_EQ(rows.size(), 2u);
+  EXPECT_EQ(rows[0].found.items, 10);
+  EXPECT_EQ(rows[0].found.item, 3);
+  EXPECT_EQ(rows[1].found.count, 10);
+  // 4 items: 0, 1, 98 and 99.
+  rows = checkInitOf(wrongDecayBundle(), SIM_BACKEND_CPU, {}, 0, 4);
+  EXPECT_EQ(rows[0].found.count, 0);
+  EXPECT_DOUBLE_EQ(rows[0].found.scale, 1.99);
+  EXPECT_EQ(rows[1].found.count, 4);
+  // Above 2^20 items the initial states it reads are kept item by item:
+  // 3 million items cost only those it evaluates.
+  rows = checkInitOf(wrongDecayBundle(), SIM_BACKEND_CPU,
+                     {{"range", "3000000"}}, 0, 8);
+  ASSERT_EQ(rows.size(), 2u);
+  EXPECT_EQ(rows[0].found.items, 8);
+  EXPECT_EQ(rows[0].found.count, 1);
+  EXPECT_EQ(rows[0].found.item, 3);
+  EXPECT_DOUBLE_EQ(rows[0].found.scale, 1.0 + 0.01 * 2999999);
+}
+
+TEST(InitCheck, UsesTheSessionsSettingsAndReportsNonFiniteValues) {
+  // poison = 0: Decay yields NaN at item 7 from t = 0 on, also with n = 0.
+  std::vector<InitRow> rows = checkInitOf(decayBundle(), SIM_BACKEND_REFERENCE,
+                                          {{"poison", "0"}, {"range", "20"}});
+  ASSERT_EQ(rows.size(), 2u);
+  const sim_init_check &x = rows[0].found;
+  EXPECT_EQ(x.items, 20);
+  EXPECT_EQ(x.non_finite, 1);
+  EXPECT_EQ(x.non_finite_item, 7);
+  EXPECT_EQ(x.count, 0);
+}
+
+TEST(InitCheck, LeavesTheSessionsStateAsItWas) {
+  auto bundle = parseBytes(decayBundle());
+  ReferenceSession session(bundle,
+                           options(SIM_STRATEGY_HIP, SIM_BACKEND_REFERENCE));
+  session.run(10);
+  std::vector<double> before = values<double>(session, "X");
+  std::vector<InitCheck> rows = session.checkInit(0, 0);
+  ASSERT_EQ(rows.size(), 2u);
+  EXPECT_EQ(rows[1].count, 100);
+  EXPECT_EQ(session.time(), 10);
+  EXPECT_EQ(values<double>(session, "X"), before);
+  session.run(5);
+  EXPECT_EQ(session.time(), 15);
+}
+
+TEST(InitCheck, RefusesBadArgumentsAndBundlesWithoutAReference) {
+  std::string bytes = decayBundle(false, false);
+  sim_bundle *bundle = nullptr;
+  ASSERT_EQ(sim_bundle_open_memory(bytes.data(), bytes.size(), &bundle),
+            SIM_OK);
+  sim_session_options chosen = options(SIM_STRATEGY_HIP, SIM_BACKEND_CPU);
+  sim_session *session = nullptr;
+  ASSERT_EQ(sim_session_create(bundle, &chosen, &session), SIM_OK);
+  int32_t count = -1;
+  EXPECT_EQ(sim_session_check_init(session, 0, 0, &count), SIM_ERROR_BUNDLE);
+  EXPECT_EQ(count, 0);
+  EXPECT_EQ(std::string(sim_last_error()),
+            "bundle '<memory>' has no reference model and functions");
+  EXPECT_EQ(sim_session_check_init(session, -1, 0, &count),
+            SIM_ERROR_INVALID_ARGUMENT);
+  EXPECT_EQ(sim_session_check_init(session, NAN, 0, &count),
+            SIM_ERROR_INVALID_ARGUMENT);
+  EXPECT_EQ(sim_session_check_init(session, 0, -1, &count),
+            SIM_ERROR_INVALID_ARGUMENT);
+  sim_init_check found;
+  EXPECT_EQ(sim_session_init_check(session, 0, &found),
+            SIM_ERROR_INVALID_ARGUMENT);
+  EXPECT_EQ(std::string(sim_last_error()),
+            "init check result 0 is out of range (0 results)");
+  sim_session_destroy(session);
+  sim_bundle_close(bundle);
+}
+
+namespace {
+
+/// The decay scene with two totals in its reference model: Mass, the sum
+/// of X (which has an exact solution), and Steps, the sum of V's lane 0
+/// (which has none).
+std::string decayWithTotals() {
+  schema::BundleT contents = decayContents();
+  for (const char *name : {"Mass", "Steps"}) {
+    auto total = std::make_unique<schema::TotalT>();
+    total->name = name;
+    total->type = schema::ScalarType::F64;
+    contents.scene->totals.push_back(std::move(total));
+  }
+  for (uint32_t t = 0; t < 2; ++t) {
+    auto total = std::make_unique<schema::RefTotalT>();
+    total->total = t;
+    total->reads = {t};
+    contents.reference->totals.push_back(std::move(total));
+  }
+  return serialize(contents);
+}
+
+} // namespace
+
+TEST(ExactTotals, SumTheBodyOverTheExactSolution) {
+  std::string bytes = decayWithTotals();
+  sim_bundle *bundle = nullptr;
+  ASSERT_EQ(sim_bundle_open_memory(bytes.data(), bytes.size(), &bundle), SIM_OK)
+      << sim_last_error();
+  double expected = 0;
+  for (int i = 0; i < 100; ++i)
+    expected += (1.0 + 0.01 * i) * std::exp(-1.5 * 0.01 * 10);
+  for (sim_backend backend : {SIM_BACKEND_CPU, SIM_BACKEND_REFERENCE}) {
+    SCOPED_TRACE(sim_backend_name(backend));
+    sim_session_options chosen = options(SIM_STRATEGY_HIP, backend);
+    sim_session *session = nullptr;
+    ASSERT_EQ(sim_session_create(bundle, &chosen, &session), SIM_OK)
+        << sim_last_error();
+    ASSERT_EQ(sim_session_set(session, "k", "1.5"), SIM_OK);
+    ASSERT_EQ(sim_session_run(session, 10), SIM_OK);
+    EXPECT_TRUE(sim_session_has_exact_total(session, "Mass"));
+    EXPECT_FALSE(sim_session_has_exact_total(session, "Steps"));
+    EXPECT_FALSE(sim_session_has_exact_total(session, "Q"));
+    double value = 0;
+    ASSERT_EQ(sim_session_exact_total(session, "Mass", &value), SIM_OK)
+        << sim_last_error();
+    EXPECT_NEAR(value, expected, 1e-12);
+    EXPECT_EQ(sim_session_exact_total(session, "Steps", &value),
+              SIM_ERROR_INVALID_ARGUMENT);
+    EXPECT_EQ(std::string(sim_last_error()),
+              "total 'Steps' reads buffer 'V', which has no exact solution");
+    EXPECT_EQ(sim_session_exact_total(session, "Q", &value),
+              SIM_ERROR_INVALID_ARGUMENT);
+    EXPECT_EQ(std::string(sim_last_error()),
+              "'Q' is not a total of scene 'decay'");
+    // The state is untouched.
+    EXPECT_EQ(sim_session_time(session), 10);
+    if (backend == SIM_BACKEND_REFERENCE) {
+      // The reference executor computes the totals of its state as well.
+      EXPECT_EQ(sim_session_num_totals(session), 2);
+      double steps = 0;
+      ASSERT_EQ(sim_session_total(session, "Steps", &steps), SIM_OK);
+      EXPECT_EQ(steps, 100 * 10);
+    }
+    sim_session_destroy(session);
+  }
+  sim_bundle_close(bundle);
+
+  bytes = decayBundle(false, false);
+  ASSERT_EQ(sim_bundle_open_memory(bytes.data(), bytes.size(), &bundle),
+            SIM_OK);
+  sim_session_options chosen = options(SIM_STRATEGY_HIP, SIM_BACKEND_CPU);
+  sim_session *session = nullptr;
+  ASSERT_EQ(sim_session_create(bundle, &chosen, &session), SIM_OK);
+  double value = 0;
+  EXPECT_EQ(sim_session_exact_total(session, "Mass", &value),
+            SIM_ERROR_INVALID_ARGUMENT);
+  EXPECT_EQ(std::string(sim_last_error()),
+            "bundle '<memory>' has no reference model to tell which buffers "
+            "total 'Mass' reads");
+  sim_session_destroy(session);
+  sim_bundle_close(bundle);
+}
+
+TEST(Settings, MaxStepsIsFixedInTheBundle) {
+  auto bundle = parseBytes(decayBundle(), "decay.simb");
+  Session session(bundle, options(SIM_STRATEGY_HIP, SIM_BACKEND_CPU));
+  EXPECT_EQ(session.get("max_steps"), "4");
+  session.set("max_steps", "4");
+  EXPECT_EQ(errorOf([&] { session.set("max_steps", "6"); },
+                    SIM_ERROR_INVALID_ARGUMENT),
+            "max_steps is fixed when a scene is compiled (bundle "
+            "'decay.simb' has 4): compile the scene with sim-translate "
+            "--sim-to-bundle --sim-set-params=max_steps=6, or give sim-run "
+            "the .mlir scene");
+  EXPECT_TRUE(contains(errorOf([&] { session.set("max_steps", "x"); },
+                               SIM_ERROR_INVALID_ARGUMENT),
+                       "max_steps"));
+}

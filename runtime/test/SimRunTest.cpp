@@ -20,6 +20,7 @@
 #include <cmath>
 #include <csignal>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <dirent.h>
 #include <fcntl.h>
@@ -841,10 +842,11 @@ TEST_F(SimRun, StopsOnSigintAndWritesWhatIsComplete) {
                           {bundle, "--backend", "cpu", "--strategy", "simple",
                            "--steps", "1000000000", "--set", "k=0.000001",
                            "--reference", "simple", "--check", "--dump", dump,
-                           "--json", json},
+                           "--json", json, "--progress"},
                           sub + "/stdout", sub + "/stderr");
   ASSERT_GT(pid, 0);
-  // The progress line (after 3 s): the run is under way.
+  // The progress line (after 1 s; --progress, since stderr is a file): the
+  // run is under way.
   ASSERT_TRUE(waitForText(sub + "/stderr", "base step"))
       << readFile(sub + "/stderr");
   ASSERT_EQ(kill(pid, SIGINT), 0);
@@ -901,7 +903,7 @@ TEST_F(SimRun, StopsOnSigterm) {
   ASSERT_EQ(mkdir(sub.c_str(), 0755), 0);
   pid_t pid = spawnSimRun(SIM_RUN_PATH,
                           {bundle, "--backend", "cpu", "--steps", "1000000000",
-                           "--repeat", "2", "--json", json},
+                           "--repeat", "2", "--json", json, "--progress"},
                           sub + "/stdout", sub + "/stderr");
   ASSERT_GT(pid, 0);
   ASSERT_TRUE(waitForText(sub + "/stderr", "warm-up: base step"))
@@ -979,6 +981,219 @@ TEST_F(SimRun, RemovesTheTemporaryBundleOnSignals) {
   EXPECT_TRUE(WIFSIGNALED(status) && WTERMSIG(status) == SIGINT) << status;
   EXPECT_EQ(listDirectory(tmp), std::vector<std::string>{});
   kill(std::stoi(readFile(pidFile)), SIGKILL);
+}
+
+//===----------------------------------------------------------------------===//
+// Progress, warnings and compile-time settings
+//===----------------------------------------------------------------------===//
+
+namespace {
+
+/// A long run of the decay scene (k = 1e-6 keeps X readable).
+std::vector<std::string> longRun(const std::string &bundle) {
+  return {bundle,    "--backend",  "cpu",   "--strategy", "simple",
+          "--steps", "1000000000", "--set", "k=0.000001"};
+}
+
+} // namespace
+
+TEST_F(SimRun, ShowsProgressOnATerminalWithinASecond) {
+  std::string sub = dir + "/pty";
+  ASSERT_EQ(mkdir(sub.c_str(), 0755), 0);
+  int master = posix_openpt(O_RDWR | O_NOCTTY);
+  ASSERT_GE(master, 0);
+  ASSERT_EQ(grantpt(master), 0);
+  ASSERT_EQ(unlockpt(master), 0);
+  std::string terminal = ptsname(master);
+  // stderr on the pseudo-terminal, stdout in a file.
+  auto start = std::chrono::steady_clock::now();
+  pid_t pid =
+      spawnSimRun(SIM_RUN_PATH, longRun(bundle), sub + "/stdout", terminal);
+  ASSERT_GT(pid, 0);
+  fcntl(master, F_SETFL, fcntl(master, F_GETFL) | O_NONBLOCK);
+  // Read until the line has appeared and been rewritten for a while (or
+  // 20 s have passed).
+  std::string seen;
+  double appeared = -1, now = 0;
+  while (now < 20 && (appeared < 0 || now < appeared + 0.7)) {
+    char chunk[4096];
+    ssize_t n = read(master, chunk, sizeof chunk);
+    if (n > 0)
+      seen.append(chunk, size_t(n));
+    now =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start)
+            .count();
+    if (appeared < 0 && contains(seen, "base steps/s, ETA "))
+      appeared = now;
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  }
+  ASSERT_EQ(kill(pid, SIGINT), 0);
+  int status = waitFor(pid);
+  EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 130) << status;
+  close(master);
+  ASSERT_GE(appeared, 0) << seen;
+  // After the first second of the run, with the sessions made and the
+  // init check done before it: well within three.
+  EXPECT_GE(appeared, 1.0) << seen;
+  EXPECT_LT(appeared, 3.0) << seen;
+  EXPECT_TRUE(contains(seen, "\rsim-run: base step ")) << seen;
+  EXPECT_TRUE(contains(seen, " of 1000000000 (0%), ")) << seen;
+  EXPECT_TRUE(contains(seen, "\033[K")) << seen;
+}
+
+TEST_F(SimRun, PrintsNoProgressWhenStderrIsAFile) {
+  std::string sub = dir + "/quiet";
+  ASSERT_EQ(mkdir(sub.c_str(), 0755), 0);
+  pid_t pid = spawnSimRun(SIM_RUN_PATH, longRun(bundle), sub + "/stdout",
+                          sub + "/stderr");
+  ASSERT_GT(pid, 0);
+  std::this_thread::sleep_for(std::chrono::milliseconds(2500));
+  ASSERT_EQ(kill(pid, SIGINT), 0);
+  int status = waitFor(pid);
+  EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 130) << status;
+  std::string err = readFile(sub + "/stderr");
+  EXPECT_FALSE(contains(err, "base step")) << err;
+  EXPECT_FALSE(contains(err, "\r")) << err;
+  // What it does say: the init check's warning and the interruption.
+  EXPECT_TRUE(contains(err, "sim-run: warning: the init of buffer 'V'")) << err;
+  EXPECT_TRUE(contains(err, "sim-run: interrupted by SIGINT")) << err;
+}
+
+TEST_F(SimRun, WarnsAboutNonFiniteResultsAndExitsWithStatus3) {
+  std::string json = dir + "/nonfinite.json", dump = dir + "/nonfinite";
+  Result result = simRun(bundle +
+                         " --backend cpu --strategy simple --steps 20 "
+                         "--set poison=4 --json " +
+                         json + " --dump " + dump);
+  EXPECT_EQ(result.status, 3) << result.output;
+  EXPECT_TRUE(contains(result.output,
+                       "sim-run: warning: buffer 'X' holds 1 NaN or infinite "
+                       "value at the end of the run (the first: nan at item "
+                       "7)\n"))
+      << result.output;
+  EXPECT_TRUE(contains(result.output,
+                       "sim-run: error: the run ended with NaN or infinite "
+                       "values (--check-finite stops at the first and says "
+                       "where it appeared)"))
+      << result.output;
+  // The report and the files are there all the same.
+  EXPECT_TRUE(contains(result.output, "big steps        20")) << result.output;
+  EXPECT_TRUE(exists(dump + "/X.npy"));
+  Json metrics = readJson(json);
+  EXPECT_EQ(metrics["non_finite"]["buffers"],
+            Json::parse(R"({"X": {"count": 1, "item": 7, "lane": 0}})"));
+  EXPECT_EQ(metrics["non_finite"]["totals"], Json::array());
+
+  // Without NaN: an empty list, and status 0.
+  result = simRun(bundle + " --backend cpu --steps 20 --json " + json);
+  EXPECT_EQ(result.status, 0) << result.output;
+  EXPECT_EQ(readJson(json)["non_finite"],
+            Json::parse(R"({"buffers": {}, "totals": []})"));
+  // --check fails first: status 1.
+  result = simRun(bundle + " --backend cpu --strategy simple --steps 20 "
+                           "--set poison=4 --check");
+  EXPECT_EQ(result.status, 1) << result.output;
+}
+
+TEST_F(SimRun, WarnsAboutAnInitThatDisagreesWithItsWriter) {
+  std::string json = dir + "/init.json";
+  Result result = simRun(bundle + " --backend cpu --steps 3 --json " + json);
+  ASSERT_EQ(result.status, 0) << result.output;
+  // V's lane 2 counts evaluations, also one with n = 0.
+  EXPECT_TRUE(contains(result.output,
+                       "sim-run: warning: the init of buffer 'V' disagrees "
+                       "with its writer 'Grow' evaluated with n = 0 at t = 0\n"
+                       "  largest difference 1.000e+00 at item 0, lane 2 "
+                       "(init 0.000000000e+00, evaluate 1.000000000e+00); 100 "
+                       "of 300 values differ by more than 1.0e-05 of the "
+                       "largest, 9.900e+01\n"))
+      << result.output;
+  EXPECT_FALSE(contains(result.output, "init of buffer 'X'")) << result.output;
+  Json check = readJson(json)["init_check"];
+  EXPECT_EQ(check["ran"], true);
+  EXPECT_EQ(check["items"], 100);
+  EXPECT_EQ(check["buffers"]["X"]["consistent"], true);
+  EXPECT_EQ(check["buffers"]["X"]["component"], "Decay");
+  EXPECT_EQ(check["buffers"]["V"]["consistent"], false);
+  EXPECT_EQ(check["buffers"]["V"]["count"], 100);
+  EXPECT_EQ(check["buffers"]["V"]["item"], 0);
+  EXPECT_EQ(check["buffers"]["V"]["lane"], 2);
+
+  // One item of X off by 1e-6.
+  std::string wrong = dir + "/wrong-init.simb";
+  writeFile(wrong, serialize(decayContents(false, true,
+                                           SIM_TEST_DECAY_REFERENCE_WRONG_SO)));
+  result = simRun(wrong + " --backend cpu --steps 3");
+  ASSERT_EQ(result.status, 0) << result.output;
+  EXPECT_TRUE(contains(result.output,
+                       "sim-run: warning: the init of buffer 'X' disagrees "
+                       "with its writer 'Decay' evaluated with n = 0 at t = 0\n"
+                       "  largest difference 1.000e-06 at item 3 (init "
+                       "1.030000000e+00, evaluate 1.030001000e+00); 1 of 100 "
+                       "values differ by more than 1.0e-12 of the largest, "
+                       "1.990e+00\n"))
+      << result.output;
+
+  // A large range: part of it, and it says so.
+  result = simRun(bundle + " --backend cpu --steps 1 --set range=100000");
+  ASSERT_EQ(result.status, 0) << result.output;
+  EXPECT_TRUE(contains(result.output,
+                       "sim-run: note: the init check evaluated 65536 of the "
+                       "100000 items (the first 32768 and the last 32768)\n"))
+      << result.output;
+
+  // Without reference functions there is nothing to check with.
+  std::string bare = dir + "/bare.simb";
+  writeFile(bare, decayBundle(false, false));
+  result = simRun(bare + " --backend cpu --steps 3 --json " + json);
+  ASSERT_EQ(result.status, 0) << result.output;
+  EXPECT_FALSE(contains(result.output, "init")) << result.output;
+  EXPECT_EQ(readJson(json)["init_check"],
+            Json::parse(R"({"ran": false, "skipped":
+                            "the bundle has no reference functions"})"));
+}
+
+TEST_F(SimRun, TakesMaxStepsOnlyWhereItCanBeCompiledIn) {
+  // A bundle has max_steps compiled in: only its own value goes.
+  Result result = simRun(bundle + " --backend cpu --set max_steps=6");
+  EXPECT_EQ(result.status, 2) << result.output;
+  EXPECT_TRUE(contains(result.output,
+                       "sim-run: error: --set max_steps=6: max_steps is fixed "
+                       "when a scene is compiled (bundle '" +
+                           bundle +
+                           "' has 4): compile the scene with sim-translate "
+                           "--sim-to-bundle --sim-set-params=max_steps=6, or "
+                           "give sim-run the .mlir scene (see sim-run "
+                           "--help)"))
+      << result.output;
+  result = simRun(bundle + " --backend cpu --steps 3 --set max_steps=4");
+  EXPECT_EQ(result.status, 0) << result.output;
+
+  // A .mlir scene is compiled with it: a stand-in sim-translate records
+  // its arguments (the bundle it copies has max_steps 4, which a session
+  // given max_steps=6 would refuse).
+  std::string tools = dir + "/compile-time";
+  ASSERT_EQ(mkdir(tools.c_str(), 0755), 0);
+  std::string simRun = tools + "/sim-run";
+  ASSERT_EQ(shell("cp " + std::string(SIM_RUN_PATH) + " " + simRun).status, 0);
+  std::string scene = tools + "/decay.mlir", args = tools + "/args";
+  writeFile(scene, "// not read by the stand-in sim-translate\n");
+  std::string translate = tools + "/sim-translate";
+  writeFile(translate, "#!/bin/sh\necho \"$@\" > '" + args + "'\n/bin/cp '" +
+                           bundle + "' \"$4\"\n");
+  chmod(translate.c_str(), 0755);
+  result = shell("PATH=/nonexistent " + simRun + " " + scene +
+                 " --backend cpu --steps 4 --set max_steps=6 --set k=1");
+  EXPECT_EQ(result.status, 0) << result.output;
+  std::string given = readFile(args);
+  EXPECT_TRUE(contains(given, " --sim-to-bundle -o ")) << given;
+  EXPECT_TRUE(contains(given, " --sim-set-params=max_steps=6\n")) << given;
+  EXPECT_FALSE(contains(given, "k=1")) << given;
+  // Without one, the translation is as before.
+  result = shell("PATH=/nonexistent " + simRun + " " + scene +
+                 " --backend cpu --steps 4");
+  EXPECT_EQ(result.status, 0) << result.output;
+  EXPECT_FALSE(contains(readFile(args), "--sim-set-params")) << readFile(args);
 }
 
 TEST(Dependencies, NoMlirLlvmOrCuda) {

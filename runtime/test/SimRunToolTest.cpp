@@ -13,6 +13,9 @@
 #include "simrun/Compare.h"
 #include "simrun/Options.h"
 #include "simrun/Output.h"
+#include "simrun/Progress.h"
+#include "simrun/Report.h"
+#include "simrun/Safety.h"
 
 #include <gtest/gtest.h>
 
@@ -127,7 +130,8 @@ TEST(SimRunOptions, TakesEveryOption) {
                            "1",
                            "--cuda-graph",
                            "--max-memory",
-                           "2G"});
+                           "2G",
+                           "--progress"});
   EXPECT_EQ(options.input, "scene.simb");
   EXPECT_EQ(options.backend, SIM_BACKEND_CPU);
   EXPECT_EQ(options.strategy, SIM_STRATEGY_SIMPLE);
@@ -148,6 +152,8 @@ TEST(SimRunOptions, TakesEveryOption) {
   EXPECT_EQ(options.device, 1);
   EXPECT_TRUE(options.cudaGraph);
   EXPECT_EQ(options.maxMemory, int64_t(2) << 30);
+  EXPECT_TRUE(options.progress);
+  EXPECT_FALSE(parse({"a.simb"}).progress);
   // The last of a repeated option counts.
   EXPECT_EQ(parse({"a.simb", "--steps", "1", "--steps", "2"}).steps, 2);
 }
@@ -174,6 +180,10 @@ TEST(SimRunOptions, RejectsValuesOutsideTheirDomain) {
       {{"a", "--reference", "cubic"},
        "--reference: 'cubic' is not simple or exact"},
       {{"a", "--set", "=1"}, "--set: '=1' is not NAME=VALUE"},
+      {{"a", "--set", "max_steps=0"},
+       "--set: max_steps '0' is not an integer from 1 to 1048576"},
+      {{"a", "--set", "max_steps=4x"}, "--set: max_steps '4x' is not"},
+      {{"a", "--progress=1"}, "--progress takes no value"},
       {{"a", "--json", ""}, "--json: expects a path"},
       {{"a", "--steps"}, "--steps expects a value"},
       {{"a", "--cuda-graph=yes"}, "--cuda-graph takes no value"},
@@ -195,9 +205,11 @@ TEST(SimRunOptions, PrintsTheHelpOfEveryOption) {
         "--report-every N ", "--set NAME=VALUE ", "--group-size G ",
         "--reference simple|exact ", "--check ", "--check-tolerance X ",
         "--dump DIR ", "--json FILE ", "--check-finite ", "--threads N ",
-        "--device N ", "--cuda-graph ", "--max-memory SIZE ", "-h, --help "})
+        "--device N ", "--cuda-graph ", "--max-memory SIZE ", "--progress ",
+        "-h, --help "})
     EXPECT_TRUE(contains(help, "\n  " + std::string(option))) << option;
   EXPECT_TRUE(contains(help, "130 or 143")) << help;
+  EXPECT_TRUE(contains(help, "3 when the run\nended with NaN")) << help;
 }
 
 //===----------------------------------------------------------------------===//
@@ -452,4 +464,169 @@ TEST(SimRunCheck, FailsOnNonFiniteTotals) {
 TEST(SimRunCheck, NamesControlCharactersVisibly) {
   EXPECT_EQ(displayName("a\x01\nb\x7f"), "a\\x01\\x0Ab\\x7F");
   EXPECT_EQ(displayName("X"), "X");
+}
+
+//===----------------------------------------------------------------------===//
+// Progress
+//===----------------------------------------------------------------------===//
+
+TEST(SimRunProgress, FormatsRatesAndTimesLeft) {
+  EXPECT_EQ(formatRate(0), "0");
+  EXPECT_EQ(formatRate(812.4), "812");
+  EXPECT_EQ(formatRate(999.6), "1.00k");
+  EXPECT_EQ(formatRate(45321), "45.3k");
+  EXPECT_EQ(formatRate(1.2e6), "1.20M");
+  EXPECT_EQ(formatRate(3.5e15), "3500T");
+  EXPECT_EQ(formatEta(0), "ETA 0 s");
+  EXPECT_EQ(formatEta(18.2), "ETA 19 s");
+  EXPECT_EQ(formatEta(125), "ETA 2 min 05 s");
+  EXPECT_EQ(formatEta(3 * 3600 + 7 * 60 + 30), "ETA 3 h 07 min");
+  EXPECT_EQ(formatEta(NAN), "ETA -");
+  EXPECT_EQ(progressLine("check: ", 250000, 1000000, 2),
+            "sim-run: check: base step 250000 of 1000000 (25%), 125k base "
+            "steps/s, ETA 6 s");
+  EXPECT_EQ(progressLine("", 0, 10, 1.5),
+            "sim-run: base step 0 of 10 (0%), 0 base steps/s, ETA -");
+}
+
+namespace {
+
+/// What a Progress writes to a temporary file for the reports `calls`
+/// (done, seconds) of a run of 1000 base steps.
+std::string progressOutput(bool terminal, bool forced,
+                           std::vector<std::pair<int64_t, double>> calls) {
+  std::FILE *file = std::tmpfile();
+  Progress progress(terminal, forced, file);
+  for (auto [done, seconds] : calls)
+    progress.report(done, 1000, seconds);
+  progress.end();
+  std::string text(size_t(std::ftell(file)), '\0');
+  std::rewind(file);
+  size_t read = std::fread(text.data(), 1, text.size(), file);
+  text.resize(read);
+  std::fclose(file);
+  return text;
+}
+
+} // namespace
+
+TEST(SimRunProgress, ShowsALineOnATerminalFromTheFirstSecond) {
+  // Nothing before the first second, then the line rewritten in place at
+  // most every quarter of a second, and cleared at the end.
+  std::string out =
+      progressOutput(true, false, {{10, 0.5}, {20, 1.0}, {25, 1.1}, {50, 2}});
+  EXPECT_EQ(out, "\rsim-run: base step 20 of 1000 (2%), 20 base steps/s, "
+                 "ETA 49 s\033[K"
+                 "\rsim-run: base step 50 of 1000 (5%), 25 base steps/s, "
+                 "ETA 38 s\033[K"
+                 "\r\033[K");
+}
+
+TEST(SimRunProgress, IsQuietInLogsUnlessForced) {
+  EXPECT_EQ(progressOutput(false, false, {{20, 1.0}, {500, 30}, {900, 60}}),
+            "");
+  // --progress: whole lines, one per ten seconds.
+  EXPECT_EQ(progressOutput(false, true, {{20, 1.0}, {30, 5}, {500, 25}}),
+            "sim-run: base step 20 of 1000 (2%), 20 base steps/s, ETA 49 "
+            "s\n"
+            "sim-run: base step 500 of 1000 (50%), 20 base steps/s, ETA "
+            "25 s\n");
+}
+
+//===----------------------------------------------------------------------===//
+// Warnings: the init check and non-finite results
+//===----------------------------------------------------------------------===//
+
+TEST(SimRunWarnings, NamesTheFirstNonFiniteValueAndHowMany) {
+  Buffer x = doubles("X", {1, 2, NAN, 4, INFINITY, 6});
+  x.lanes = 2;
+  std::optional<NonFiniteValues> found = findNonFinite(x);
+  ASSERT_TRUE(found);
+  EXPECT_EQ(found->count, 2);
+  EXPECT_EQ(found->item, 1);
+  EXPECT_EQ(found->lane, 0);
+  EXPECT_EQ(nonFiniteWarning(*found),
+            "sim-run: warning: buffer 'X' holds 2 NaN or infinite values at "
+            "the end of the run (the first: nan at item 1, lane 0)");
+  EXPECT_FALSE(findNonFinite(doubles("V", {0, 1, -1e308})));
+  Buffer one = doubles("V", {0, -INFINITY});
+  EXPECT_EQ(nonFiniteWarning(*findNonFinite(one)),
+            "sim-run: warning: buffer 'V' holds 1 NaN or infinite value at "
+            "the end of the run (the first: -inf at item 1)");
+
+  std::vector<NonFiniteValues> totals =
+      findNonFiniteTotals({"E", "P", "Q"}, {1, NAN, INFINITY});
+  ASSERT_EQ(totals.size(), 2u);
+  EXPECT_EQ(nonFiniteWarning(totals[0]),
+            "sim-run: warning: total 'P' is not finite at the end of the run "
+            "(nan)");
+  EXPECT_EQ(nonFiniteWarning(totals[1]),
+            "sim-run: warning: total 'Q' is not finite at the end of the run "
+            "(inf)");
+}
+
+TEST(SimRunWarnings, SaysWhichInitDisagreesWithItsWriter) {
+  InitCheckReport report;
+  report.ran = true;
+  report.items = 64;
+  report.range = 64;
+  InitCheckReport::Row y;
+  y.buffer = "Y";
+  y.component = "Fall";
+  y.maxAbs = 0.25;
+  y.item = 3;
+  y.initial = -0.25;
+  y.evaluated = 0;
+  y.scale = 0.63;
+  y.tolerance = 1e-5;
+  y.count = 1;
+  y.interpolated = true;
+  InitCheckReport::Row s = y;
+  s.buffer = "S";
+  s.component = "Shadow";
+  s.count = 0;
+  s.nonFinite = 2;
+  s.nonFiniteItem = 5;
+  s.lanes = 3;
+  report.rows = {y, s};
+  std::vector<std::string> messages = initCheckMessages(report);
+  ASSERT_EQ(messages.size(), 2u);
+  EXPECT_EQ(messages[0],
+            "sim-run: warning: the init of buffer 'Y' disagrees with its "
+            "writer 'Fall' evaluated with n = 0 at t = 0\n"
+            "  largest difference 2.500e-01 at item 3 (init "
+            "-2.500000000e-01, evaluate 0.000000000e+00); 1 of 64 values "
+            "differ by more than 1.0e-05 of the largest, 6.300e-01\n"
+            "  hip and hip-cache interpolate from the init in the first big "
+            "step: make the init what 'Fall' computes");
+  EXPECT_EQ(messages[1],
+            "sim-run: note: the init check skips 2 values of buffer 'S': "
+            "its init or 'Shadow' evaluated with n = 0 at t = 0 is NaN or "
+            "infinite there (the first at item 5), as when a body divides "
+            "by n");
+
+  // Part of a large range; a check that could not run.
+  report.range = 1000000;
+  report.rows.clear();
+  EXPECT_EQ(initCheckMessages(report),
+            std::vector<std::string>{
+                "sim-run: note: the init check evaluated 64 of the 1000000 "
+                "items (the first 32 and the last 32)"});
+  InitCheckReport failed;
+  failed.skipped = "a reference body read buffer 9";
+  EXPECT_EQ(initCheckMessages(failed),
+            std::vector<std::string>{"sim-run: note: the init check did not "
+                                     "run: a reference body read buffer 9"});
+  failed.skipped = "the bundle has no reference functions";
+  EXPECT_TRUE(initCheckMessages(failed).empty());
+}
+
+TEST(SimRunReport, ComparesTotalsWithTheirReference) {
+  TotalError error = compareTotal("E", 1.5, 2);
+  EXPECT_TRUE(error.available);
+  EXPECT_EQ(error.absolute, 0.5);
+  EXPECT_EQ(error.relative, 0.25);
+  EXPECT_EQ(compareTotal("E", 1, 0).relative, INFINITY);
+  EXPECT_EQ(compareTotal("E", 0, 0).relative, 0);
+  EXPECT_TRUE(std::isnan(compareTotal("E", NAN, 1).absolute));
 }

@@ -22,7 +22,9 @@
 #include "simrun/Compare.h"
 #include "simrun/Options.h"
 #include "simrun/Output.h"
+#include "simrun/Progress.h"
 #include "simrun/Report.h"
+#include "simrun/Safety.h"
 #include "simrun/Signals.h"
 
 #include "sim/Runtime/sim_runtime.h"
@@ -132,8 +134,11 @@ void stopIfInterrupted(const std::string &what) {
                                              "; nothing was run"};
 }
 
-/// Translates a .mlir scene into the temporary bundle `bundle`.
-void translate(const std::string &scene, TemporaryFile &bundle) {
+/// Translates a .mlir scene into the temporary bundle `bundle`, with the
+/// compile-time settings `compiled` (NAME=VALUE) applied by
+/// --sim-set-params.
+void translate(const std::string &scene, TemporaryFile &bundle,
+               const std::vector<std::string> &compiled) {
   std::string searched;
   std::optional<std::string> tool = findTranslate(searched);
   if (!tool)
@@ -147,6 +152,12 @@ void translate(const std::string &scene, TemporaryFile &bundle) {
       std::string(tmp && *tmp ? tmp : "/tmp") + "/sim-run-XXXXXX.simb", 5);
   std::vector<std::string> args = {*tool, scene, "--sim-to-bundle", "-o",
                                    bundle.path()};
+  if (!compiled.empty()) {
+    std::string values;
+    for (const std::string &value : compiled)
+      values += (values.empty() ? "" : ",") + value;
+    args.push_back("--sim-set-params=" + values);
+  }
   std::vector<char *> argv;
   for (std::string &arg : args)
     argv.push_back(arg.data());
@@ -181,12 +192,18 @@ bool endsWith(const std::string &text, const std::string &suffix) {
          text.compare(text.size() - suffix.size(), suffix.size(), suffix) == 0;
 }
 
-/// The bundle that runs: the input itself, or its translation.
+/// Whether the input is a scene to translate rather than a bundle.
+bool isScene(const std::string &path) {
+  return endsWith(path, ".mlir") && !isBundle(path);
+}
+
+/// The bundle that runs: the input itself, or its translation with the
+/// compile-time settings `compiled`.
 class Input {
 public:
-  explicit Input(const std::string &path) {
-    if (endsWith(path, ".mlir") && !isBundle(path)) {
-      translate(path, translated);
+  Input(const std::string &path, const std::vector<std::string> &compiled) {
+    if (isScene(path)) {
+      translate(path, translated, compiled);
       check(sim_bundle_open(translated.path().c_str(), &handle));
     } else {
       check(sim_bundle_open(path.c_str(), &handle));
@@ -392,43 +409,6 @@ std::vector<double> totalsOf(sim_session *session) {
 // Runs
 //===----------------------------------------------------------------------===//
 
-/// A progress line on stderr once a run has taken a few seconds.
-struct Progress {
-  std::chrono::steady_clock::time_point start, last;
-  std::string label;
-  bool tty = isatty(STDERR_FILENO);
-  bool shown = false;
-
-  void begin(sim_session *session, std::string runLabel) {
-    label = std::move(runLabel);
-    start = last = std::chrono::steady_clock::now();
-    sim_session_set_progress(session, &Progress::report, this);
-  }
-  static void report(void *user, int64_t done, int64_t total) {
-    auto *self = static_cast<Progress *>(user);
-    auto now = std::chrono::steady_clock::now();
-    double elapsed = std::chrono::duration<double>(now - self->start).count();
-    double since = std::chrono::duration<double>(now - self->last).count();
-    // First at 3 s, then on a terminal every half second, in a log every
-    // 10 s.
-    if (elapsed < 3 || (self->shown && since < (self->tty ? 0.5 : 10)))
-      return;
-    self->last = now;
-    self->shown = true;
-    std::fprintf(
-        stderr, "%ssim-run: %sbase step %lld of %lld (%.0f%%, %.0f s)%s",
-        self->tty ? "\r" : "", self->label.c_str(), (long long)done,
-        (long long)total, total ? 100.0 * double(done) / double(total) : 100.0,
-        elapsed, self->tty ? "\033[K" : "\n");
-    std::fflush(stderr);
-  }
-  void end() {
-    if (shown && tty)
-      std::fputs("\r\033[K", stderr);
-    shown = false;
-  }
-};
-
 /// Runs `steps` base steps from the initial state. Done, or Cut by a signal
 /// (at the base step reached); a signal received before it began leaves
 /// the session as it was and says Cut at its time.
@@ -512,8 +492,69 @@ MainRun runMain(sim_session *session, const sim_bundle *bundle,
   return main;
 }
 
+/// NaNs and infinities at the end of the measured run: in the observed
+/// buffers, the session's other buffers (read one at a time) and the
+/// totals.
+std::vector<NonFiniteValues> findNonFiniteState(sim_session *session,
+                                                const sim_bundle *bundle,
+                                                const MainRun &main) {
+  std::vector<NonFiniteValues> found;
+  for (int32_t b = 0; b < sim_bundle_num_buffers(bundle); ++b) {
+    sim_buffer_info info;
+    check(sim_bundle_buffer(bundle, b, &info));
+    size_t bytes = 0;
+    // The observed buffers are read already; a buffer the strategy's
+    // plan pruned is not in the session.
+    std::optional<NonFiniteValues> values;
+    if (info.observed) {
+      for (const Buffer &buffer : main.values)
+        if (buffer.name == info.name)
+          values = findNonFinite(buffer);
+    } else if (sim_session_buffer_bytes(session, info.name, &bytes) == SIM_OK) {
+      values = findNonFinite(readBuffer(session, info, false));
+    }
+    if (values)
+      found.push_back(*values);
+  }
+  for (NonFiniteValues &total :
+       findNonFiniteTotals(main.totalNames, main.totals))
+    found.push_back(total);
+  return found;
+}
+
+/// --reference's error of every total: against the simple strategy's
+/// totals, or their values on the exact solution at the time the measured
+/// run reached.
+void compareTotalsWithReference(Results &results, sim_session *measured,
+                                sim_session *simple) {
+  const MainRun &main = results.main;
+  std::vector<double> theirs;
+  if (simple)
+    theirs = totalsOf(simple);
+  for (size_t t = 0; t < main.totalNames.size(); ++t) {
+    const std::string &name = main.totalNames[t];
+    if (simple) {
+      results.totalErrors.push_back(
+          compareTotal(name, main.totals[t], theirs[t]));
+      continue;
+    }
+    double exact = 0;
+    sim_status status = sim_session_exact_total(measured, name.c_str(), &exact);
+    if (status == SIM_ERROR_INVALID_ARGUMENT || status == SIM_ERROR_BUNDLE) {
+      TotalError unavailable;
+      unavailable.total = name;
+      unavailable.why = sim_last_error();
+      results.totalErrors.push_back(unavailable);
+      continue;
+    }
+    check(status);
+    results.totalErrors.push_back(compareTotal(name, main.totals[t], exact));
+  }
+}
+
 /// --reference: the simple strategy's run, or the exact solution at the
-/// time the measured run reached; then the error of every observed buffer.
+/// time the measured run reached; then the error of every observed buffer
+/// and total.
 void runReference(Results &results, sim_session *measured, Session *simple,
                   const std::vector<sim_buffer_info> &observed,
                   const Options &options, Progress &progress) {
@@ -539,6 +580,9 @@ void runReference(Results &results, sim_session *measured, Session *simple,
   }
   if (results.reference.stage != Stage::Done)
     return;
+  compareTotalsWithReference(results, measured,
+                             options.reference == "simple" ? simple->get()
+                                                           : nullptr);
   for (size_t i = 0; i < observed.size(); ++i) {
     const std::optional<Buffer> &reference = results.referenceValues[i];
     results.errors.push_back({observed[i].name, reference.has_value(),
@@ -734,10 +778,17 @@ void requireExactSolution(const sim_bundle *bundle, sim_session *session,
 Results runAll(Sessions &sessions, const sim_bundle *bundle,
                const Options &options,
                const std::vector<sim_buffer_info> &observed) {
-  Progress progress;
+  Progress progress(isatty(STDERR_FILENO), options.progress);
   Results results;
+  // The init check first: what it finds matters before a long run.
+  results.initCheck = checkInit(sessions.main->get(), bundle);
+  for (const std::string &message : initCheckMessages(results.initCheck))
+    std::fprintf(stderr, "%s\n", message.c_str());
+  std::fflush(stderr);
   results.main =
       runMain(sessions.main->get(), bundle, options, observed, progress);
+  results.nonFinite =
+      findNonFiniteState(sessions.main->get(), bundle, results.main);
   runReference(results, sessions.main->get(), sessions.simple.get(), observed,
                options, progress);
   sessions.simple.reset();
@@ -757,11 +808,30 @@ Results runAll(Sessions &sessions, const sim_bundle *bundle,
   return results;
 }
 
-int run(const Options &options) {
+/// For a .mlir input, moves the compile-time settings (max_steps) out of
+/// `options.sets`: they go to the translation. A bundle has them compiled
+/// in, and the sessions refuse them.
+std::vector<std::string> takeCompileTimeSettings(Options &options) {
+  std::vector<std::string> compiled;
+  if (!isScene(options.input))
+    return compiled;
+  std::vector<std::pair<std::string, std::string>> runTime;
+  for (auto &[name, value] : options.sets) {
+    if (isCompileTimeSetting(name))
+      compiled.push_back(name + "=" + value);
+    else
+      runTime.emplace_back(name, value);
+  }
+  options.sets = std::move(runTime);
+  return compiled;
+}
+
+int run(Options options) {
   // Before anything runs: the paths, the bundle, every session and every
   // --set, the dump files.
   OutputPlan outputs = planOutputs(options);
-  Input input(options.input);
+  std::vector<std::string> compiled = takeCompileTimeSettings(options);
+  Input input(options.input, compiled);
   const sim_bundle *bundle = input.bundle();
   Sessions sessions = createSessions(bundle, options);
   std::vector<sim_buffer_info> observed = observedBuffers(bundle);
@@ -780,12 +850,23 @@ int run(const Options &options) {
   if (!options.json.empty())
     writeFileAtomically(options.json, toJson(results));
 
+  for (const NonFiniteValues &found : results.nonFinite)
+    std::fprintf(stderr, "%s\n", nonFiniteWarning(found).c_str());
   if (int signal = receivedSignal()) {
     std::fprintf(stderr, "sim-run: interrupted by %s%s\n", signalName(signal),
                  results.interrupted() ? "; wrote what was complete" : "");
     return kExitSignalBase + signal;
   }
-  return results.check && !results.check->pass() ? kExitFailure : kExitSuccess;
+  if (results.check && !results.check->pass())
+    return kExitFailure;
+  if (!results.nonFinite.empty()) {
+    std::fprintf(stderr,
+                 "sim-run: error: the run ended with NaN or infinite values "
+                 "(--check-finite stops at the first and says where it "
+                 "appeared)\n");
+    return kExitNonFinite;
+  }
+  return kExitSuccess;
 }
 
 } // namespace

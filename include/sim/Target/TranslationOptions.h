@@ -18,6 +18,10 @@
 
 #include <string>
 
+namespace mlir {
+class OpPassManager;
+} // namespace mlir
+
 namespace mlir::sim {
 
 struct GPUTargetOptions;
@@ -40,9 +44,15 @@ struct TranslationOptions {
   llvm::cl::opt<std::string> features;
   llvm::cl::opt<unsigned> optLevel;
   llvm::cl::opt<std::string> cudaPath;
+  /// --sim-set-params: name=value pairs that --sim-set-params applies to
+  /// the scene before it is compiled (max_steps, range, dt, parameters).
+  llvm::cl::list<std::string> setParams;
 
   /// The GPU back end's target the flags describe.
   GPUTargetOptions getGPUTarget() const;
+  /// Adds --sim-set-params with the values of --sim-set-params=... to `pm`
+  /// (nested on every sim.simulation of a module), if any were given.
+  void addSetParams(OpPassManager &pm) const;
 };
 
 /// Returns the process's translation options, registering them on the first

@@ -1,8 +1,8 @@
 //===- TranslateToBundle.cpp - sim-translate --sim-to-bundle --------------===//
 //
 // The translation that writes a scene's bundle (Bundle.cpp) with the options
-// every sim translation shares (--sim-group-size, --sim-chip, ...) and its
-// own --sim-strategies.
+// every sim translation shares (--sim-group-size, --sim-chip,
+// --sim-set-params, ...) and its own --sim-strategies.
 //
 //===----------------------------------------------------------------------===//
 
@@ -12,6 +12,7 @@
 
 #include "mlir/IR/BuiltinOps.h"
 #include "mlir/Parser/Parser.h"
+#include "mlir/Pass/PassManager.h"
 #include "mlir/Tools/mlir-translate/Translation.h"
 #include "llvm/Support/SourceMgr.h"
 
@@ -38,6 +39,14 @@ void mlir::sim::registerToBundleTranslation() {
           return failure();
 
         const TranslationOptions &flags = getTranslationOptions();
+        // --sim-set-params=...: the scene as if it said so (max_steps is
+        // compiled into the plans); errors are at the scene.
+        if (!flags.setParams.empty()) {
+          PassManager pm(context, ModuleOp::getOperationName());
+          flags.addSetParams(pm);
+          if (failed(pm.run(*module)))
+            return failure();
+        }
         BundleOptions options;
         if (!flags.strategies.empty())
           options.strategies.assign(flags.strategies.begin(),

@@ -136,6 +136,7 @@ void mlir::sim::registerToPTXTranslations() {
             [](DialectRegistry &registry) { registry.insert<SimDialect>(); },
             [](OpPassManager &pm) {
               const TranslationOptions &flags = getTranslationOptions();
+              flags.addSetParams(pm);
               buildSimToGPUPipeline(pm, flags.strategy, flags.groupSize,
                                     flags.getGPUTarget());
             });

@@ -14,7 +14,15 @@
  *
  * With SIM_REFERENCE_WRONG defined, Decay adds 1e-6 to item 3 in every
  * evaluation: a reference that disagrees with the plan kernels, for the
- * failing case of `sim-run --check`.
+ * failing case of `sim-run --check`, and an init of X that disagrees with
+ * Decay evaluated with n = 0 (the init check).
+ *
+ * Grow's lane 2 counts evaluations, also one with n = 0: the init check
+ * finds V's init inconsistent with Grow (at every item, lane 2).
+ *
+ * The model has no totals; tests that add "Mass" (the sum of X, total 0)
+ * and "Steps" (the sum of V's lane 0, total 1) to it find their bodies
+ * here.
  *
  *===----------------------------------------------------------------------===*/
 
@@ -88,4 +96,18 @@ EXPORT void sim_ref_evaluate_1(const sim_ref_context *ctx, int64_t item,
   to[0] = from[0] + (float)n;
   to[1] = (float)item;
   to[2] = from[2] + 1;
+}
+
+EXPORT void sim_ref_total_0(const sim_ref_context *ctx, int64_t item,
+                            void *out) {
+  double x;
+  ctx->read(ctx->executor, kX, item, &x);
+  *(double *)out = x;
+}
+
+EXPORT void sim_ref_total_1(const sim_ref_context *ctx, int64_t item,
+                            void *out) {
+  float v[3];
+  ctx->read(ctx->executor, kV, item, v);
+  *(double *)out = (double)v[0];
 }

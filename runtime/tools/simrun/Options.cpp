@@ -26,6 +26,10 @@ void usageError(const std::string &message) {
 
 void runError(const std::string &message) { throw Exit{kExitFailure, message}; }
 
+bool isCompileTimeSetting(const std::string &name) {
+  return name == "max_steps";
+}
+
 //===----------------------------------------------------------------------===//
 // Value parsers
 //===----------------------------------------------------------------------===//
@@ -213,9 +217,14 @@ complete and skips the rest; a second one kills it.
 ENVIRONMENT:
   SIM_CUDA_DRIVER             the driver library to load instead of libcuda.so.1
 
+WARNINGS: before the runs, a buffer whose init disagrees with its writer
+evaluated with n = 0 at t = 0 (hip interpolates from the init); after the
+run, NaN or infinity in the final state or the totals (exit status 3).
+
 EXIT STATUS: 0 on success, 1 when the run fails or --check finds a
-difference, 2 on a usage error (before anything runs), 130 or 143 when
-SIGINT or SIGTERM stopped it.
+difference, 2 on a usage error (before anything runs), 3 when the run
+ended with NaN or infinite values, 130 or 143 when SIGINT or SIGTERM
+stopped it.
 )";
 
 /// The layout of LLVM's tools: overview, usage, options with their value
@@ -296,7 +305,9 @@ void declareOptions(CLI::App &app, Options &options, std::string &backend,
       ->transform(
           integerIn(1, kMaxSteps, "an integer from 1 to 1000000000000"));
   app.add_option("--set", sets,
-                 "set range, dt or a scene parameter (repeatable)")
+                 "set range, dt or a scene parameter (repeatable);\n"
+                 "for a .mlir scene also max_steps, which is\n"
+                 "compiled in (sim-translate --sim-set-params)")
       ->option_text("NAME=VALUE")
       ->allow_extra_args(false)
       ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll)
@@ -342,6 +353,11 @@ void declareOptions(CLI::App &app, Options &options, std::string &backend,
   app.add_flag("--check-finite", options.checkFinite,
                "run launch by launch and stop at the first NaN\n"
                "or infinity, naming base step, component and item")
+      ->disable_flag_override();
+  app.add_flag("--progress", options.progress,
+               "show the progress line also when stderr is not a\n"
+               "terminal (one line per 10 s; on a terminal it is\n"
+               "always shown, rewritten in place)")
       ->disable_flag_override();
   app.add_option("--threads", options.threads,
                  "CPU backend threads, 1 to 1024 (default: all)")
@@ -433,7 +449,14 @@ Options parseOptions(int argc, const char *const *argv) {
     sim_strategy_parse(strategy.c_str(), &options.strategy);
   for (const std::string &set : sets) {
     size_t equals = set.find('=');
-    options.sets.emplace_back(set.substr(0, equals), set.substr(equals + 1));
+    std::string name = set.substr(0, equals), value = set.substr(equals + 1);
+    // A compile-time value is checked here: for a .mlir scene it goes to
+    // the translation, which should never be what finds it wrong.
+    if (name == "max_steps" && !parseInteger(value, 1, kMaxMaxSteps))
+      usageError("--set: max_steps " + inQuotes(value) +
+                 " is not an integer from 1 to " +
+                 std::to_string(kMaxMaxSteps));
+    options.sets.emplace_back(name, value);
   }
   return options;
 }

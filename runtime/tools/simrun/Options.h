@@ -29,6 +29,9 @@ enum ExitStatus : int {
   /// A value outside its domain, an unknown option, an output path that
   /// cannot be written or would overwrite an input.
   kExitUsage = 2,
+  /// The run completed (and --check, if asked for, passed), but its final
+  /// state or totals hold NaN or infinity.
+  kExitNonFinite = 3,
   /// 128 + the signal: SIGINT gives 130, SIGTERM 143.
   kExitSignalBase = 128,
 };
@@ -54,6 +57,13 @@ constexpr int64_t kMaxRepeat = 1'000'000;
 constexpr int64_t kMaxGroupSize = 4096;
 /// The CPU backend's most worker threads.
 constexpr int64_t kMaxThreads = 1024;
+/// The largest max_steps a scene may have (the compiler's and the bundle
+/// verifier's limit).
+constexpr int64_t kMaxMaxSteps = int64_t(1) << 20;
+
+/// Whether `--set NAME=...` is a compile-time setting (max_steps): for a
+/// .mlir input sim-run compiles the scene with it; a bundle has it fixed.
+bool isCompileTimeSetting(const std::string &name);
 
 struct Options {
   std::string input;
@@ -76,6 +86,8 @@ struct Options {
   std::string dump;
   std::string json;
   bool checkFinite = false;
+  /// --progress: the progress line also where stderr is not a terminal.
+  bool progress = false;
   /// 0: one per hardware thread.
   int32_t threads = 0;
   int32_t device = 0;

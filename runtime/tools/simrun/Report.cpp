@@ -21,6 +21,21 @@ bool Results::interrupted() const {
   return false;
 }
 
+TotalError compareTotal(const std::string &name, double value,
+                        double reference) {
+  TotalError error;
+  error.total = name;
+  error.available = true;
+  error.value = value;
+  error.reference = reference;
+  error.absolute = std::fabs(value - reference);
+  error.relative = reference != 0       ? error.absolute / std::fabs(reference)
+                   : error.absolute > 0 ? INFINITY
+                   : std::isnan(error.absolute) ? NAN
+                                                : 0;
+  return error;
+}
+
 std::string formatTime(double seconds) {
   char text[32];
   if (seconds < 1e-3)
@@ -142,6 +157,16 @@ void printReferenceErrors(const Results &results) {
                      "  rms-rel " + scientific(error.norms.rmsRel));
     else
       row(label, name + "  (no exact solution)");
+  }
+  for (const TotalError &error : results.totalErrors) {
+    std::string name = "total " + displayName(error.total);
+    if (error.available)
+      row(label, name + "  abs " + scientific(error.absolute) + "  rel " +
+                     scientific(error.relative) + "  (" +
+                     scientific(error.value, 9) + " vs " +
+                     scientific(error.reference, 9) + ")");
+    else
+      row(label, name + "  (" + error.why + ")");
   }
 }
 
@@ -370,6 +395,55 @@ Json checkJson(const Results &results) {
   return object;
 }
 
+Json totalErrorsJson(const Results &results) {
+  if (results.referenceKind.empty())
+    return nullptr;
+  Json object = Json::object();
+  if (results.reference.stage == Stage::Done)
+    for (const TotalError &error : results.totalErrors)
+      if (error.available)
+        object[error.total] = {{"value", number(error.value)},
+                               {"reference", number(error.reference)},
+                               {"abs", number(error.absolute)},
+                               {"rel", number(error.relative)}};
+  return object;
+}
+
+Json initCheckJson(const InitCheckReport &report) {
+  if (!report.ran)
+    return {{"ran", false}, {"skipped", report.skipped}};
+  Json buffers = Json::object();
+  for (const InitCheckReport::Row &row : report.rows)
+    buffers[row.buffer] = {{"component", row.component},
+                           {"consistent", row.consistent()},
+                           {"max_abs", number(row.maxAbs)},
+                           {"item", row.item},
+                           {"lane", row.lane},
+                           {"initial", number(row.initial)},
+                           {"evaluated", number(row.evaluated)},
+                           {"scale", number(row.scale)},
+                           {"tolerance", number(row.tolerance)},
+                           {"count", row.count},
+                           {"non_finite", row.nonFinite},
+                           {"interpolated", row.interpolated}};
+  return {{"ran", true},
+          {"items", report.items},
+          {"range", report.range},
+          {"buffers", buffers}};
+}
+
+Json nonFiniteJson(const Results &results) {
+  Json buffers = Json::object(), totals = Json::array();
+  for (const NonFiniteValues &found : results.nonFinite) {
+    if (found.total)
+      totals.push_back(found.name);
+    else
+      buffers[found.name] = {
+          {"count", found.count}, {"item", found.item}, {"lane", found.lane}};
+  }
+  return {{"buffers", buffers}, {"totals", totals}};
+}
+
 Json dumpJson(const Results &results) {
   if (results.dumpDir.empty())
     return nullptr;
@@ -446,7 +520,10 @@ std::string toJson(const Results &results) {
         errors[error.buffer] = {{"max_abs", number(error.norms.maxAbs)},
                                 {"rms_rel", number(error.norms.rmsRel)}};
   json["error"] = errors;
+  json["error_totals"] = totalErrorsJson(results);
   json["check"] = checkJson(results);
+  json["init_check"] = initCheckJson(results.initCheck);
+  json["non_finite"] = nonFiniteJson(results);
   json["dump"] = dumpJson(results);
   return json.dump(2, ' ', false, Json::error_handler_t::replace) + "\n";
 }

@@ -11,6 +11,7 @@
 #define SIM_RUN_REPORT_H
 
 #include "Compare.h"
+#include "Safety.h"
 
 #include <optional>
 #include <string>
@@ -75,6 +76,23 @@ struct ReferenceError {
   ErrorNorms norms;
 };
 
+/// One total against --reference: the simple strategy's value, or its
+/// value on the exact solution (sim_session_exact_total).
+struct TotalError {
+  std::string total;
+  /// False: no reference value (`why` says why not).
+  bool available = false;
+  std::string why;
+  double value = 0, reference = 0;
+  /// |value - reference|, and that over |reference| (0 when both are 0,
+  /// inf when only the reference is).
+  double absolute = 0, relative = 0;
+};
+
+/// `value` against `reference`.
+TotalError compareTotal(const std::string &name, double value,
+                        double reference);
+
 /// A dump file's name per kind, empty for one not written.
 struct DumpFiles {
   std::string buffer, state, reference, check;
@@ -87,6 +105,7 @@ struct Results {
   std::string referenceKind;
   PartState reference;
   std::vector<ReferenceError> errors;
+  std::vector<TotalError> totalErrors;
   /// Per observed buffer: the reference's values, if any.
   std::vector<std::optional<Buffer>> referenceValues;
 
@@ -103,6 +122,12 @@ struct Results {
   /// --dump: the folder and its files.
   std::string dumpDir;
   std::vector<DumpFiles> dumpFiles;
+
+  /// The init check before the runs (not run: no reference functions, or
+  /// it failed).
+  InitCheckReport initCheck;
+  /// NaNs and infinities in the measured run's final state and totals.
+  std::vector<NonFiniteValues> nonFinite;
 
   /// The signal that stopped sim-run (0: none).
   int signal = 0;

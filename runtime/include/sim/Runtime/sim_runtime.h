@@ -210,6 +210,8 @@ SIM_API int64_t sim_session_group_size(const sim_session *session);
 
 /// Sets `range`, `dt` or a parameter from its text, like `--set`. A new
 /// range discards the state (the next call that needs it runs init).
+/// `max_steps` is fixed when the scene is compiled: any value but the
+/// bundle's is SIM_ERROR_INVALID_ARGUMENT.
 SIM_API sim_status sim_session_set(sim_session *session, const char *name,
                                    const char *value);
 /// The bytes the session's state takes on its device at the current range
@@ -217,7 +219,7 @@ SIM_API sim_status sim_session_set(sim_session *session, const char *name,
 /// default limit).
 SIM_API int64_t sim_session_memory_bytes(const sim_session *session);
 SIM_API int64_t sim_session_memory_limit(const sim_session *session);
-/// The current value of `range`, `dt` or a parameter as text.
+/// The current value of `range`, `dt`, `max_steps` or a parameter as text.
 SIM_API sim_status sim_session_get(const sim_session *session, const char *name,
                                    char *value, size_t capacity);
 SIM_API int64_t sim_session_range(const sim_session *session);
@@ -258,6 +260,74 @@ SIM_API const char *sim_session_total_name(const sim_session *session,
 /// value of every item, the host adds them in item order in double.
 SIM_API sim_status sim_session_total(sim_session *session, const char *name,
                                      double *out);
+
+/// Whether the value of total `name` on the exact solution exists: every
+/// buffer its body reads has an exact solution (the bundle's reference
+/// model says which it reads).
+SIM_API int sim_session_has_exact_total(const sim_session *session,
+                                        const char *name);
+/// The value of total `name` on the exact solution at the current time
+/// (T * dt): its body (the bundle's reference function) summed over the
+/// items as sim_session_total does, each read seeing the exact solution of
+/// the buffer. The session's state is not touched.
+SIM_API sim_status sim_session_exact_total(sim_session *session,
+                                           const char *name, double *out);
+
+//===----------------------------------------------------------------------===//
+// The init check: initial states against their writers
+//===----------------------------------------------------------------------===//
+
+/// What sim_session_check_init found for one buffer.
+typedef struct sim_init_check {
+  /// The buffer and the component that writes it.
+  const char *buffer;
+  const char *component;
+  /// Items evaluated (all of the range, or max_items of it).
+  int64_t items;
+  /// The largest |evaluate - init| over the finite values of those items,
+  /// its item (-1: none) and lane, and the init and evaluate values there.
+  double max_abs;
+  int64_t item;
+  int32_t lane;
+  double initial;
+  double evaluated;
+  /// The largest |value| of the buffer (init and evaluate) over the items,
+  /// the relative tolerance, and how many values differ by more than
+  /// tolerance * scale: the buffer's init disagrees with its writer when
+  /// this is not 0.
+  double scale;
+  double tolerance;
+  int64_t count;
+  /// Values where init or evaluate is NaN or infinite (and they are not the
+  /// same infinity): evaluate cannot run with n = 0, or the init is not
+  /// finite; the first such item (-1: none).
+  int64_t non_finite;
+  int64_t non_finite_item;
+  /// A component later in the schedule reads the buffer, so hip and
+  /// hip-cache interpolate its readers' values from the init in the first
+  /// big step.
+  int32_t interpolated;
+} sim_init_check;
+
+/// Checks the scene's init bodies against its components with the
+/// bundle's reference functions (docs/Runtime.md, "Warnings"): for
+/// every item, every component's evaluate body at t = 0 with n = 0, every
+/// read seeing the initial state, against the initial state of each buffer
+/// it writes. A model whose init is consistent gets its state back
+/// unchanged (n base steps of nothing). `tolerance` is relative to the
+/// buffer's largest value (0: 1e-5 for f32 buffers, 1e-12 for f64);
+/// `max_items` bounds the items evaluated (0: 65536; above it, the first
+/// and the last half of them). The session's range, dt and parameters
+/// apply; its state is not touched. `*count` gets the number of buffers
+/// checked, whose results sim_session_init_check returns until the next
+/// check. SIM_ERROR_BUNDLE when the bundle has no reference functions.
+SIM_API sim_status sim_session_check_init(sim_session *session,
+                                          double tolerance, int64_t max_items,
+                                          int32_t *count);
+/// Result `index` of the last sim_session_check_init; the strings live
+/// until the next check or the session's end.
+SIM_API sim_status sim_session_init_check(const sim_session *session,
+                                          int32_t index, sim_init_check *out);
 
 /// Called after each host synchronisation of a run with the base steps done
 /// so far and the run's total.
