@@ -1119,6 +1119,14 @@ TEST_F(SimRun, WarnsAboutAnInitThatDisagreesWithItsWriter) {
   EXPECT_EQ(check["buffers"]["V"]["item"], 0);
   EXPECT_EQ(check["buffers"]["V"]["lane"], 2);
 
+  // --no-init-check: no check, no warning, and the JSON says why.
+  result = simRun(bundle + " --backend cpu --steps 3 --no-init-check --json " +
+                  json);
+  ASSERT_EQ(result.status, 0) << result.output;
+  EXPECT_FALSE(contains(result.output, "init of buffer")) << result.output;
+  EXPECT_FALSE(contains(result.output, "init check")) << result.output;
+  EXPECT_EQ(readJson(json)["init_check"]["skipped"], "--no-init-check");
+
   // One item of X off by 1e-6.
   std::string wrong = dir + "/wrong-init.simb";
   writeFile(wrong, serialize(decayContents(false, true,

@@ -781,7 +781,10 @@ Results runAll(Sessions &sessions, const sim_bundle *bundle,
   Progress progress(isatty(STDERR_FILENO), options.progress);
   Results results;
   // The init check first: what it finds matters before a long run.
-  results.initCheck = checkInit(sessions.main->get(), bundle);
+  if (options.noInitCheck)
+    results.initCheck.skipped = "--no-init-check";
+  else
+    results.initCheck = checkInit(sessions.main->get(), bundle);
   for (const std::string &message : initCheckMessages(results.initCheck))
     std::fprintf(stderr, "%s\n", message.c_str());
   std::fflush(stderr);

@@ -354,6 +354,11 @@ void declareOptions(CLI::App &app, Options &options, std::string &backend,
                "run launch by launch and stop at the first NaN\n"
                "or infinity, naming base step, component and item")
       ->disable_flag_override();
+  app.add_flag("--no-init-check", options.noInitCheck,
+               "skip the check that every buffer's init is what\n"
+               "its writer computes with n = 0 at t = 0 (for scenes\n"
+               "whose inits are inconsistent on purpose)")
+      ->disable_flag_override();
   app.add_flag("--progress", options.progress,
                "show the progress line also when stderr is not a\n"
                "terminal (one line per 10 s; on a terminal it is\n"

@@ -88,6 +88,8 @@ struct Options {
   bool checkFinite = false;
   /// --progress: the progress line also where stderr is not a terminal.
   bool progress = false;
+  /// --no-init-check: skip the check of inits against their writers.
+  bool noInitCheck = false;
   /// 0: one per hardware thread.
   int32_t threads = 0;
   int32_t device = 0;

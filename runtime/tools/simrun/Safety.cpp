@@ -78,7 +78,8 @@ InitCheckReport checkInit(sim_session *session, const sim_bundle *bundle) {
 std::vector<std::string> initCheckMessages(const InitCheckReport &report) {
   std::vector<std::string> messages;
   if (!report.ran) {
-    if (report.skipped != "the bundle has no reference functions")
+    if (report.skipped != "the bundle has no reference functions" &&
+        report.skipped != "--no-init-check")
       messages.push_back("sim-run: note: the init check did not run: " +
                          report.skipped);
     return messages;
