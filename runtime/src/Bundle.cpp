@@ -354,6 +354,8 @@ std::shared_ptr<const Bundle> Bundle::parse(const uint8_t *data, size_t size,
           std::to_string(crc) + ", the header says " +
           std::to_string(header.checksum) + "): the file is damaged");
 
+  result->checksum = crc;
+
   // FlatBuffers reads scalars in place: the buffer must be aligned as the
   // writer aligned it (8), which `data` need not be.
   std::vector<uint8_t> aligned(payload, payload + payloadSize);
