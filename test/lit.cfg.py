@@ -112,3 +112,13 @@ smi = lit.util.which("nvidia-smi")
 if smi and "GPU " in (runs([smi, "-L"]) or ""):
     config.available_features.add("cuda")
 
+
+# `numpy`: a Python that imports NumPy, to read sim-run's .npy and .npz
+# files as users do (%numpy_python). The build's Python first, then Debian's
+# (python3-numpy, which utils/setup.sh installs).
+for python in [config.python_executable, "/usr/bin/python3",
+               lit.util.which("python3")]:
+    if python and runs([python, "-c", "import numpy"]) is not None:
+        config.available_features.add("numpy")
+        config.substitutions.append(("%numpy_python", python))
+        break

@@ -21,14 +21,16 @@ build_type="${SIM_BUILD_TYPE:-Release}"
 # compiler and linker, the build tools, GoogleTest, sim-run's header-only
 # libraries (CLI11 for its command line, nlohmann-json for its JSON), what
 # the bundle format needs (FlatBuffers' schema compiler and headers, zlib for
-# its CRC-32), Python for lit and the scene generator with numpy and
-# matplotlib for the Python package python/sim (numpy arrays in and out of
-# runs, plots), and Graphviz to render dependency graphs in tests.
+# its CRC-32), zlib's minizip for sim-run's .npz files (linked statically),
+# Python for lit and the scene generator with numpy and matplotlib for the
+# Python package python/sim (numpy arrays in and out of runs, plots) and
+# the tests that read sim-run's .npy and .npz files, and Graphviz to render
+# dependency graphs in tests.
 packages=(
   libmlir-22-dev mlir-22-tools llvm-22-dev llvm-22-tools clang-22 lld-22
   cmake ninja-build libgtest-dev libcli11-dev nlohmann-json3-dev
-  libflatbuffers-dev flatbuffers-compiler zlib1g-dev python3 python3-numpy
-  python3-matplotlib graphviz
+  libflatbuffers-dev flatbuffers-compiler zlib1g-dev libminizip-dev python3
+  python3-numpy python3-matplotlib graphviz
 )
 missing=()
 for package in "${packages[@]}"; do

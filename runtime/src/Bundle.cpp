@@ -354,6 +354,8 @@ std::shared_ptr<const Bundle> Bundle::parse(const uint8_t *data, size_t size,
           std::to_string(crc) + ", the header says " +
           std::to_string(header.checksum) + "): the file is damaged");
 
+  result->checksum = crc;
+
   // A root offset and the file identifier, at least, before the identifier
   // is looked at.
   if (payloadSize <

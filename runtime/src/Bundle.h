@@ -52,6 +52,7 @@ constexpr int64_t kSlotSize = int64_t(schema::ClockSlot::Size);
 constexpr int64_t kSlotParity = int64_t(schema::ClockSlot::Parity);
 constexpr int64_t kSlotEnd = int64_t(schema::ClockSlot::End);
 constexpr int64_t kSlotBigSteps = int64_t(schema::ClockSlot::BigSteps);
+constexpr int64_t kSlotCuts = int64_t(schema::ClockSlot::Cuts);
 constexpr int64_t kFirstFreeSlot = int64_t(schema::ClockSlot::FirstFree);
 
 /// The most launches one phase may unroll to (repeats multiplied out).
@@ -127,6 +128,8 @@ Value parseValue(ScalarType type, std::string_view text,
 struct Bundle {
   /// The file, for messages ("bundle 'x.simb': ...").
   std::string name;
+  /// The CRC-32 of its header (which identifies it in checkpoints).
+  uint32_t checksum = 0;
   schema::BundleT contents;
 
   const schema::SceneT &scene() const { return *contents.scene; }

@@ -11,6 +11,7 @@
 #include "sim/Runtime/sim_runtime.h"
 
 #include "Bundle.h"
+#include "Checkpoint.h"
 #include "Error.h"
 #include "Reference.h"
 #include "Session.h"
@@ -108,6 +109,8 @@ const char *sim_status_name(sim_status status) {
     return "interrupted";
   case SIM_ERROR_MEMORY_LIMIT:
     return "memory limit";
+  case SIM_ERROR_CHECKPOINT:
+    return "bad checkpoint";
   }
   return "unknown status";
 }
@@ -514,6 +517,12 @@ sim_status sim_session_run(sim_session *session, int64_t steps) {
   return guard([&] { session->session->run(steps); });
 }
 
+sim_status sim_session_run_pausing(sim_session *session, int64_t steps,
+                                   int64_t pause) {
+  SIM_REQUIRE(session);
+  return guard([&] { session->session->run(steps, pause); });
+}
+
 void sim_session_interrupt(sim_session *session) {
   if (session)
     session->session->interrupt();
@@ -555,6 +564,31 @@ int64_t sim_session_histogram(const sim_session *session, int64_t size) {
       size >= int64_t(session->session->histogram.size()))
     return 0;
   return session->session->histogram[size];
+}
+
+int64_t sim_session_cut_big_steps(const sim_session *session) {
+  return session ? session->session->cutBigSteps : 0;
+}
+
+sim_status sim_session_checkpoint(sim_session *session, const char *path) {
+  SIM_REQUIRE(session);
+  SIM_REQUIRE(path);
+  return guard([&] { writeCheckpointFile(*session->session, path); });
+}
+
+sim_status sim_session_checkpoint_fd(sim_session *session, int fd) {
+  SIM_REQUIRE(session);
+  return guard([&] {
+    writeCheckpoint(*session->session, fd,
+                    "file descriptor " + std::to_string(fd));
+  });
+}
+
+sim_status sim_session_restart(sim_session *session, const char *path) {
+  SIM_REQUIRE(session);
+  SIM_REQUIRE(path);
+  return guard(
+      [&] { restartFromCheckpoint(*session->session, readCheckpoint(path)); });
 }
 
 sim_status sim_session_nonfinite(const sim_session *session,

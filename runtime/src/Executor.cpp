@@ -28,6 +28,16 @@ int64_t runEnd(int64_t begin, int64_t steps) {
   return begin + steps;
 }
 
+int64_t runPause(int64_t begin, int64_t steps, int64_t pause) {
+  if (pause >= steps)
+    return begin + steps;
+  if (pause < 1)
+    fail(SIM_ERROR_INVALID_ARGUMENT, "cannot pause a run after " +
+                                         std::to_string(pause) +
+                                         " base steps (at least 1)");
+  return begin + pause;
+}
+
 int64_t saturatingMul(int64_t a, int64_t b) {
   int64_t product;
   if (a < 0 || b < 0 || __builtin_mul_overflow(a, b, &product))

@@ -72,6 +72,10 @@ std::string listNames(const std::vector<std::string> &names);
 /// negative and the end fits in the clock.
 int64_t runEnd(int64_t begin, int64_t steps);
 
+/// Where a run of `steps` from `begin` may pause: `begin + pause`, or its
+/// end when `pause >= steps`; a pause below 1 is an invalid argument.
+int64_t runPause(int64_t begin, int64_t steps, int64_t pause);
+
 class Executor {
 public:
   virtual ~Executor() = default;
@@ -81,6 +85,10 @@ public:
   /// parameters: what a reference executor needs to probe the same scene
   /// (sim_session_check_init, sim_session_exact_total).
   virtual const std::shared_ptr<const Bundle> &sharedBundle() const = 0;
+  /// The bundle and strategy the session runs (a checkpoint must match
+  /// them).
+  const Bundle &sourceBundle() const { return *sharedBundle(); }
+  virtual Strategy strategy() const = 0;
   virtual const Settings &currentSettings() const = 0;
   virtual sim_backend backendKind() const = 0;
   virtual const std::string &device() const = 0;
@@ -108,7 +116,12 @@ public:
   virtual void exact(const std::string &buffer, void *data, size_t bytes) = 0;
 
   /// Runs `steps` base steps; the run ends exactly at T + steps or throws.
-  virtual void run(int64_t steps) = 0;
+  void run(int64_t steps) { run(steps, steps); }
+  /// Runs towards T + steps, but stops at the first big-step boundary at or
+  /// after T + pause that the host sees (no big step is cut there, so a
+  /// later run towards the same end takes the big steps one run would
+  /// have); `pause >= steps` is run(steps).
+  virtual void run(int64_t steps, int64_t pause) = 0;
 
   /// The totals the scene declares (sums over items it observes).
   virtual size_t numTotals() const = 0;
@@ -116,6 +129,22 @@ public:
   /// Every total at the current T, in declaration order: the per-item
   /// values summed in item order in double precision.
   virtual std::vector<double> totals() = 0;
+
+  /// Checkpoints (Checkpoint.cpp): the buffers whose state a checkpoint
+  /// holds, in order (the plan's; the reference model's).
+  virtual std::vector<std::string> stateBuffers() const = 0;
+  /// The slots of the device clock (0 for the reference executor).
+  virtual size_t clockSlots() const = 0;
+  /// The clock a checkpoint holds, after initialising a session without a
+  /// state: every slot of the device clock, on a big-step boundary (a
+  /// session whose last run failed inside a big step is refused); empty for
+  /// the reference executor, whose clock is T alone.
+  virtual std::vector<int64_t> checkpointClock() = 0;
+  /// Starts over from a checkpoint's clock: the state at base step `time`
+  /// with `clock` in the device clock (the plan executor; the reference
+  /// executor takes `time` alone). The buffers follow with setBuffer.
+  virtual void restoreClock(int64_t time,
+                            const std::vector<int64_t> &clock) = 0;
 
   /// The components the evaluation counters are for.
   virtual size_t numComponents() const = 0;
@@ -140,6 +169,9 @@ public:
 
   /// The last run's measurements.
   sim_metrics metrics{};
+  /// Big steps of the last run that its end cut short (clock slot Cuts):
+  /// at most one per run, its last.
+  int64_t cutBigSteps = 0;
   std::vector<int64_t> evaluations; // per component
   std::vector<int64_t> histogram;   // index m in 0 .. max_steps
 

@@ -74,7 +74,7 @@ ReferenceSession::ReferenceSession(std::shared_ptr<const Bundle> bundleIn,
   if (uint32_t(options.strategy) >= kNumStrategies)
     fail(SIM_ERROR_INVALID_ARGUMENT,
          "unknown strategy " + std::to_string(int(options.strategy)));
-  strategy = Strategy(options.strategy);
+  strategy_ = Strategy(options.strategy);
   checkFinite_ = options.check_finite;
   setMemoryLimit(options.max_memory, physicalMemoryBytes());
 
@@ -85,11 +85,11 @@ ReferenceSession::ReferenceSession(std::shared_ptr<const Bundle> bundleIn,
     fail(SIM_ERROR_INVALID_ARGUMENT,
          "group size " + std::to_string(groupSize_) + " is not positive");
   if (groupSize_ == 0) {
-    const schema::PlanT *plan = bundle->plan(strategy);
+    const schema::PlanT *plan = bundle->plan(strategy_);
     if (!plan)
       fail(SIM_ERROR_INVALID_ARGUMENT,
            "bundle '" + bundle->name + "' has no plan for strategy '" +
-               strategyName(strategy) +
+               strategyName(strategy_) +
                "' to take the group size from; give a group size");
     groupSize_ = plan->group_size;
   }
@@ -106,9 +106,9 @@ ReferenceSession::ReferenceSession(std::shared_ptr<const Bundle> bundleIn,
   for (size_t c = 0; c < model_->components.size(); ++c) {
     for (uint32_t write : model_->components[c]->writes)
       buffers_[write].writer = int32_t(c);
-    stepping.push_back(model_->components[c]->stepping[size_t(strategy)]);
+    stepping.push_back(model_->components[c]->stepping[size_t(strategy_)]);
   }
-  stepCap = model_->step_caps[size_t(strategy)];
+  stepCap = model_->step_caps[size_t(strategy_)];
 
   object =
       std::make_unique<SharedObject>(model_->object, "the reference functions");
@@ -420,6 +420,32 @@ void ReferenceSession::param(int32_t index, void *out) {
 }
 
 //===----------------------------------------------------------------------===//
+// Checkpoints
+//===----------------------------------------------------------------------===//
+
+std::vector<std::string> ReferenceSession::stateBuffers() const {
+  std::vector<std::string> names;
+  for (const ModelBuffer &buffer : buffers_)
+    names.push_back(buffer.info->name);
+  return names;
+}
+
+std::vector<int64_t> ReferenceSession::checkpointClock() {
+  // Between runs the executor is always on a big-step boundary: a big step
+  // changes the state at T only once every component has run.
+  ensureInitialized();
+  return {};
+}
+
+void ReferenceSession::restoreClock(int64_t time,
+                                    const std::vector<int64_t> &) {
+  // The initial state too: exact bodies read it.
+  init();
+  now = time;
+  stepSize = 0;
+}
+
+//===----------------------------------------------------------------------===//
 // Initial states
 //===----------------------------------------------------------------------===//
 
@@ -705,7 +731,11 @@ void ReferenceSession::bigStep(int64_t end) {
     for (int64_t i = 0; i < range; ++i)
       m = std::min(m, numSteps(c, i, now));
   }
-  m = std::min(m, end - now);
+  // The end of the run cuts the big step short (the device clock's Cuts).
+  if (end - now < m) {
+    m = end - now;
+    ++cutBigSteps;
+  }
   stepSize = m;
   ++histogram[size_t(m)];
   ++metrics.big_steps;
@@ -742,18 +772,22 @@ void ReferenceSession::bigStep(int64_t end) {
   stepSize = 0;
 }
 
-void ReferenceSession::run(int64_t steps) {
+void ReferenceSession::run(int64_t steps, int64_t pause) {
   runEnd(now, steps); // Checks the steps before initialising.
+  runPause(now, steps, pause);
   ensureInitialized();
   metrics = {};
+  cutBigSteps = 0;
   nonFinite = {};
   std::fill(evaluations.begin(), evaluations.end(), 0);
   std::fill(histogram.begin(), histogram.end(), 0);
   int64_t begin = now;
   int64_t end = runEnd(begin, steps);
+  // Every big step ends on a boundary the host sees: pause at the first.
+  int64_t pauseAt = runPause(begin, steps, pause);
   auto start = std::chrono::steady_clock::now();
   bool interrupted = false;
-  while (now < end) {
+  while (now < end && now < pauseAt) {
     if (interruptPending()) {
       interrupted = true;
       break;

@@ -76,6 +76,7 @@ public:
   const std::shared_ptr<const Bundle> &sharedBundle() const override {
     return bundle;
   }
+  Strategy strategy() const override { return strategy_; }
   const Settings &currentSettings() const override { return settings; }
   const schema::ReferenceT &model() const { return *model_; }
   sim_backend backendKind() const override { return SIM_BACKEND_REFERENCE; }
@@ -100,13 +101,19 @@ public:
   bool hasExact(const std::string &buffer) const override;
   void exact(const std::string &buffer, void *data, size_t bytes) override;
 
-  void run(int64_t steps) override;
+  using Executor::run;
+  void run(int64_t steps, int64_t pause) override;
 
   size_t numTotals() const override { return model_->totals.size(); }
   const std::string &totalName(size_t index) const override {
     return scene().totals[model_->totals[index]->total]->name;
   }
   std::vector<double> totals() override;
+
+  std::vector<std::string> stateBuffers() const override;
+  size_t clockSlots() const override { return 0; }
+  std::vector<int64_t> checkpointClock() override;
+  void restoreClock(int64_t time, const std::vector<int64_t> &clock) override;
 
   size_t numComponents() const override { return model_->components.size(); }
   const std::string &componentName(size_t index) const override {
@@ -239,7 +246,7 @@ private:
   /// and the largest big step: the front end's records.
   std::vector<schema::Stepping> stepping;
   int64_t stepCap = 1;
-  Strategy strategy;
+  Strategy strategy_;
   int64_t groupSize_ = 0;
   bool checkFinite_ = false;
   std::string deviceName = "reference executor (CPU, 1 thread)", note;

@@ -422,6 +422,7 @@ void Session::init() {
   runUncounted(PhaseKind::Init);
   readClock(clock.size());
   initialized = true;
+  onBoundary = true;
 }
 
 void Session::ensureInitialized() {
@@ -429,21 +430,26 @@ void Session::ensureInitialized() {
     init();
 }
 
-void Session::run(int64_t steps) {
+void Session::run(int64_t steps, int64_t pause) {
   runEnd(0, steps); // Checks the steps before touching the device.
+  runPause(0, steps, pause);
   backend->activate();
   ensureInitialized();
   prepare();
   metrics = {};
+  cutBigSteps = 0;
   nonFinite = {};
   std::vector<int64_t> before = clock;
   // After init and after finish m is 0, so this is T.
   int64_t begin = clock[kSlotBegin] + clock[kSlotSize];
   int64_t end = runEnd(begin, steps);
+  int64_t pauseAt = runPause(begin, steps, pause);
   // The largest big step, as the front end recorded it.
   int64_t cap = plan_->step_cap;
 
   auto wallStart = std::chrono::steady_clock::now();
+  // Until finish commits the last big step and the clock checks out.
+  onBoundary = false;
   backend->write(clockMemory.pointer + kSlotEnd * sizeof(int64_t), &end,
                  sizeof end);
   backend->startTimer();
@@ -455,20 +461,29 @@ void Session::run(int64_t steps) {
   // only costs its (empty) launches.
   double meanStep = double(cap);
   int64_t batchCap = progress ? kFirstProgressBatch : kMaxBatch;
+  bool interrupted = false;
+  // Ends the run on the big-step boundary reached: finish commits the last
+  // big step and decides none, so no big step is cut.
+  auto stopHere = [&] {
+    end = now;
+    backend->write(clockMemory.pointer + kSlotEnd * sizeof(int64_t), &end,
+                   sizeof end);
+  };
   while (now < end) {
     if (interruptPending()) {
-      // Stop on the big-step boundary reached: end the run there, so that
-      // finish commits the last big step and decides none.
-      end = now;
-      backend->write(clockMemory.pointer + kSlotEnd * sizeof(int64_t), &end,
-                     sizeof end);
+      interrupted = true;
+      stopHere();
       break;
     }
-    int64_t batch = options.check_finite
-                        ? 1
-                        : std::clamp<int64_t>(
-                              int64_t(std::ceil(double(end - now) / meanStep)),
-                              1, batchCap);
+    // Towards the pause, if there is one: batches sized for it stop near
+    // it.
+    int64_t target = std::min(end, pauseAt);
+    int64_t batch =
+        options.check_finite
+            ? 1
+            : std::clamp<int64_t>(
+                  int64_t(std::ceil(double(target - now) / meanStep)), 1,
+                  batchCap);
     auto batchStart = std::chrono::steady_clock::now();
     for (int64_t i = 0; i < batch; ++i)
       runStepPhase();
@@ -501,6 +516,10 @@ void Session::run(int64_t steps) {
     now = reached;
     if (progress)
       progress(progressUser, now - begin, steps);
+    if (now >= pauseAt && now < end) {
+      stopHere();
+      break;
+    }
   }
   runPhase(PhaseKind::Finish);
   metrics.kernel_seconds = backend->stopTimer();
@@ -518,10 +537,12 @@ void Session::run(int64_t steps) {
                               std::to_string(clock[kSlotBegin]) +
                               " (m = " + std::to_string(clock[kSlotSize]) +
                               "), not at " + std::to_string(end));
+  onBoundary = true;
   metrics.steps = end - begin;
   metrics.begin = begin;
   metrics.end = end;
   metrics.big_steps = clock[kSlotBigSteps] - before[kSlotBigSteps];
+  cutBigSteps = clock[kSlotCuts] - before[kSlotCuts];
   for (size_t i = 0; i < plan_->components.size(); ++i) {
     size_t slot = size_t(plan_->components[i]->evaluations);
     evaluations[i] = clock[slot] - before[slot];
@@ -530,8 +551,45 @@ void Session::run(int64_t steps) {
     size_t slot = size_t(plan_->histogram + m);
     histogram[m] = clock[slot] - before[slot];
   }
-  if (end < begin + steps)
+  if (interrupted)
     failInterrupted(begin, end, begin + steps);
+}
+
+//===----------------------------------------------------------------------===//
+// Checkpoints
+//===----------------------------------------------------------------------===//
+
+std::vector<std::string> Session::stateBuffers() const {
+  std::vector<std::string> names;
+  for (size_t i = 0; i < plan_->buffers.size(); ++i)
+    names.push_back(sceneBuffer(i).name);
+  return names;
+}
+
+std::vector<int64_t> Session::checkpointClock() {
+  backend->activate();
+  ensureInitialized();
+  if (!onBoundary)
+    fail(SIM_ERROR_CHECKPOINT,
+         "the state is inside a big step (the last run failed at base step " +
+             std::to_string(clock[kSlotBegin]) +
+             "): a checkpoint needs a big-step boundary; init or restart "
+             "first");
+  // The host's copy is the device's after init, a run's finish or a
+  // restart; read it again all the same.
+  readClock(clock.size());
+  return clock;
+}
+
+void Session::restoreClock(int64_t, const std::vector<int64_t> &saved) {
+  backend->activate();
+  // The memory of this range, zeroed, and the init phase: what no
+  // checkpoint holds (the other halves, snapshots) is as after init.
+  init();
+  backend->write(clockMemory.pointer, saved.data(),
+                 saved.size() * sizeof(int64_t));
+  clock = saved;
+  onBoundary = true;
 }
 
 //===----------------------------------------------------------------------===//

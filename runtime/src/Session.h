@@ -35,6 +35,7 @@ public:
   const std::shared_ptr<const Bundle> &sharedBundle() const override {
     return bundle;
   }
+  Strategy strategy() const override { return plan_->strategy; }
   const Settings &currentSettings() const override { return settings; }
   const schema::PlanT &plan() const { return *plan_; }
   sim_backend backendKind() const override { return backend->kind(); }
@@ -63,13 +64,19 @@ public:
   bool hasExact(const std::string &buffer) const override;
   void exact(const std::string &buffer, void *data, size_t bytes) override;
 
-  void run(int64_t steps) override;
+  using Executor::run;
+  void run(int64_t steps, int64_t pause) override;
 
   size_t numTotals() const override { return plan_->totals.size(); }
   const std::string &totalName(size_t index) const override {
     return scene().totals[plan_->totals[index]]->name;
   }
   std::vector<double> totals() override;
+
+  std::vector<std::string> stateBuffers() const override;
+  size_t clockSlots() const override { return plan_->clock_slots; }
+  std::vector<int64_t> checkpointClock() override;
+  void restoreClock(int64_t time, const std::vector<int64_t> &clock) override;
 
   size_t numComponents() const override { return plan_->components.size(); }
   const std::string &componentName(size_t index) const override {
@@ -136,6 +143,9 @@ private:
   /// The host's copy of the clock as last read (valid after init).
   std::vector<int64_t> clock;
   bool allocated = false, initialized = false, prepared = false;
+  /// The state is on a big-step boundary (after init, a run that ended or
+  /// was interrupted, a restart), not inside a big step a failed run left.
+  bool onBoundary = false;
   bool graphReady = false;
   /// Every launch of the plan once, and per phase the order they run in
   /// (repeats unrolled into indices).

@@ -111,6 +111,7 @@ TEST(Executor, HipRunEndsExactlyAtNWithTheDevicesBigSteps) {
     EXPECT_EQ(session.histogram, histogram) << steps << " steps";
     int64_t bigSteps = int64_t(sizes.size());
     EXPECT_EQ(session.metrics.big_steps, bigSteps);
+    EXPECT_EQ(session.cutBigSteps, decayCuts(0, steps, 4)) << steps;
     EXPECT_EQ(session.evaluations[0], bigSteps * 100);
     EXPECT_EQ(session.evaluations[1], bigSteps * 100);
     std::vector<float> v = getV(session);
@@ -143,6 +144,35 @@ TEST(Executor, RunsContinueFromTheirEnd) {
   session.init();
   EXPECT_EQ(session.time(), 0);
   expectX(session, 0);
+}
+
+TEST(Executor, CountsTheBigStepsTheEndOfARunCuts) {
+  // num_steps at T is 1 + (T / 5) % 4: from 0 the big steps are 1 1 1 1 1
+  // (to 5), 2 2 2 (to 11), 3 3 (to 17), 4 ...; a run to 6 cuts the 2 at 5
+  // to 1, a run to 7 ends on a boundary.
+  ASSERT_EQ(decayCuts(0, 6, 4), 1);
+  ASSERT_EQ(decayCuts(0, 7, 4), 0);
+  Session session(decay(), cpuOptions(SIM_STRATEGY_HIP));
+  session.run(6);
+  EXPECT_EQ(session.cutBigSteps, 1);
+  EXPECT_EQ(session.histogram[1], 6);
+  session.init();
+  session.run(7);
+  EXPECT_EQ(session.cutBigSteps, 0);
+  EXPECT_EQ(session.histogram[2], 1);
+  // Every run of a chunked timeline that ends inside a big step counts one.
+  session.init();
+  int64_t cuts = 0;
+  for (int64_t chunk = 0; chunk < 20; ++chunk) {
+    session.run(3);
+    cuts += session.cutBigSteps;
+    EXPECT_EQ(session.cutBigSteps, decayCuts(chunk * 3, 3, 4)) << chunk;
+  }
+  EXPECT_GT(cuts, 5);
+  // simple never cuts: every big step is one base step.
+  Session simple(decay(), cpuOptions(SIM_STRATEGY_SIMPLE));
+  simple.run(7);
+  EXPECT_EQ(simple.cutBigSteps, 0);
 }
 
 TEST(Executor, ResultsDoNotDependOnThreadsOrGroupSize) {

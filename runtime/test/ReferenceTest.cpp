@@ -97,6 +97,7 @@ void expectSameRun(Executor &reference, Executor &backend) {
   }
   EXPECT_EQ(reference.metrics.big_steps, backend.metrics.big_steps);
   EXPECT_EQ(reference.histogram, backend.histogram);
+  EXPECT_EQ(reference.cutBigSteps, backend.cutBigSteps);
 }
 
 } // namespace
@@ -120,6 +121,22 @@ TEST(ReferenceExecutor, AgreesWithThePlanKernelsOnDecay) {
   }
   // The second run, from 10 to 25: sizes 3 3 4 1 1 1 1 1.
   EXPECT_EQ(hip->metrics.big_steps, 8);
+  EXPECT_EQ(hip->cutBigSteps, 0);
+  // Runs that end inside a big step cut it, on both executors alike.
+  for (sim_backend backend : {SIM_BACKEND_CPU, SIM_BACKEND_REFERENCE}) {
+    auto bundle = parseBytes(decayBundle());
+    std::unique_ptr<Executor> session;
+    if (backend == SIM_BACKEND_REFERENCE)
+      session = std::make_unique<ReferenceSession>(
+          bundle, options(SIM_STRATEGY_HIP, backend, 0));
+    else
+      session = std::make_unique<Session>(
+          bundle, options(SIM_STRATEGY_HIP, backend, 0));
+    session->run(16); // the 3 at 14 cut to 2
+    EXPECT_EQ(session->cutBigSteps, 1) << sim_backend_name(backend);
+    session->run(2); // the 4 at 16 cut to 2
+    EXPECT_EQ(session->cutBigSteps, 1) << sim_backend_name(backend);
+  }
 }
 
 TEST(ReferenceExecutor, StopsWhenInterruptedAndKeepsItsMemoryLimit) {

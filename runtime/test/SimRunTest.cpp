@@ -13,6 +13,7 @@
 #include "TestUtil.h"
 
 #include <gtest/gtest.h>
+#include <minizip/unzip.h>
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
@@ -24,6 +25,7 @@
 #include <cstring>
 #include <dirent.h>
 #include <fcntl.h>
+#include <map>
 #include <spawn.h>
 #include <sys/stat.h>
 #include <sys/wait.h>
@@ -99,6 +101,40 @@ float f32At(const std::string &data, size_t i) {
   float value;
   std::memcpy(&value, data.data() + i * 4, 4);
   return value;
+}
+
+/// The entries of an .npz file (zip) by name, each a whole .npy file; read
+/// with minizip's unzip (the Python tests read them with NumPy).
+std::map<std::string, std::string> readNpz(const std::string &path) {
+  std::map<std::string, std::string> entries;
+  unzFile zip = unzOpen64(path.c_str());
+  if (!zip)
+    return entries;
+  for (int at = unzGoToFirstFile(zip); at == UNZ_OK;
+       at = unzGoToNextFile(zip)) {
+    char name[512];
+    unz_file_info64 info;
+    if (unzGetCurrentFileInfo64(zip, &info, name, sizeof name, nullptr, 0,
+                                nullptr, 0) != UNZ_OK ||
+        unzOpenCurrentFile(zip) != UNZ_OK)
+      break;
+    std::string data(size_t(info.uncompressed_size), '\0');
+    int read = unzReadCurrentFile(zip, data.data(), unsigned(data.size()));
+    unzCloseCurrentFile(zip);
+    if (read != int(data.size()))
+      break;
+    entries[name] = data;
+  }
+  unzClose(zip);
+  return entries;
+}
+
+/// The shape in a .npy header: "(3, 100)" for {3, 100}.
+std::string npyShape(const std::string &file) {
+  size_t at = file.find("'shape': ");
+  return at == std::string::npos
+             ? ""
+             : file.substr(at + 9, file.find(')', at) - at - 8);
 }
 
 /// sim-run started in the background with stdout and stderr in files and
@@ -896,6 +932,140 @@ TEST_F(SimRun, StopsOnSigintAndWritesWhatIsComplete) {
   EXPECT_EQ(listDirectory(dump), (std::vector<std::string>{"V.npy", "X.npy"}));
   EXPECT_EQ(listDirectory(sub),
             (std::vector<std::string>{"dump", "run.json", "stderr", "stdout"}));
+}
+
+TEST_F(SimRun, KeepsTheOutputTimesAndACheckpointOnSigint) {
+  std::string sub = dir + "/sigint-output";
+  std::string npz = sub + "/series.npz", json = sub + "/run.json",
+              checkpoint = sub + "/run.simc";
+  ASSERT_EQ(mkdir(sub.c_str(), 0755), 0);
+  pid_t pid = spawnSimRun(
+      SIM_RUN_PATH,
+      {bundle, "--backend", "cpu", "--strategy", "hip", "--steps", "1000000000",
+       "--set", "k=0.000001", "--output-every", "1000", "--output", npz,
+       "--checkpoint", checkpoint, "--json", json, "--progress"},
+      sub + "/stdout", sub + "/stderr");
+  ASSERT_GT(pid, 0);
+  ASSERT_TRUE(waitForText(sub + "/stderr", "base step"))
+      << readFile(sub + "/stderr");
+  ASSERT_EQ(kill(pid, SIGINT), 0);
+  int status = waitFor(pid);
+  ASSERT_TRUE(WIFEXITED(status));
+  EXPECT_EQ(WEXITSTATUS(status), 130);
+
+  Json metrics = readJson(json);
+  EXPECT_EQ(metrics["interruption"]["during"], "run");
+  int64_t reached = metrics["steps_done"];
+  std::vector<int64_t> times = metrics["output"]["times"];
+  ASSERT_GE(times.size(), 2u);
+  for (size_t k = 0; k < times.size(); ++k)
+    ASSERT_EQ(times[k], int64_t(k) * 1000);
+  EXPECT_LE(times.back(), reached);
+  EXPECT_GT(times.back() + 1000, reached);
+  EXPECT_EQ(metrics["totals_per_output_time"].size(), times.size());
+  // The checkpoint holds where the run stopped.
+  EXPECT_EQ(metrics["checkpoint"]["base_step"], reached);
+
+  // The .npz holds the output times completed: t, and V, whose lane 0
+  // counts base steps, at each.
+  std::map<std::string, std::string> entries = readNpz(npz);
+  ASSERT_EQ(entries.count("t.npy"), 1u) << entries.size();
+  std::string t = npyData(entries["t.npy"]);
+  ASSERT_EQ(t.size(), times.size() * 8);
+  for (size_t k = 0; k < times.size(); ++k) {
+    int64_t at;
+    std::memcpy(&at, t.data() + 8 * k, 8);
+    EXPECT_EQ(at, times[k]);
+  }
+  std::string v = entries["buffer/V.npy"];
+  EXPECT_EQ(npyShape(v), "(" + std::to_string(times.size()) + ", 100, 3)");
+  EXPECT_TRUE(contains(v, "'descr': '<f4'"));
+  std::string values = npyData(v);
+  for (size_t k = 0; k < times.size(); ++k)
+    ASSERT_EQ(f32At(values, k * 300 + 3 * 99), float(times[k])) << k;
+  EXPECT_EQ(npyShape(entries["buffer/X.npy"]),
+            "(" + std::to_string(times.size()) + ", 100)");
+  for (const char *key :
+       {"time.npy", "meta/scene.npy", "meta/strategy.npy", "meta/backend.npy"})
+    EXPECT_EQ(entries.count(key), 1u) << key;
+  EXPECT_EQ(entries.size(), 7u);
+  // No temporary file.
+  EXPECT_EQ(listDirectory(sub),
+            (std::vector<std::string>{"run.json", "run.simc", "series.npz",
+                                      "stderr", "stdout"}));
+
+  // The checkpoint continues the run: V counts every base step.
+  std::string restarted = sub + "/restarted";
+  Result more = simRun(bundle + " --backend cpu --strategy hip --set " +
+                       "k=0.000001 --restart " + checkpoint + " --steps " +
+                       std::to_string(reached + 10) + " --dump " + restarted +
+                       " --checkpoint " + checkpoint);
+  ASSERT_EQ(more.status, 0) << more.output;
+  EXPECT_TRUE(contains(more.output, "restarted from checkpoint '" + checkpoint +
+                                        "' at base step " +
+                                        std::to_string(reached)))
+      << more.output;
+  std::string after = npyData(readFile(restarted + "/V.npy"));
+  EXPECT_EQ(f32At(after, 0), float(reached + 10));
+}
+
+TEST_F(SimRun, ChecksCheckpointsAndOutputsBeforeRunning) {
+  std::string sub = dir + "/checkpoint-usage";
+  ASSERT_EQ(mkdir(sub.c_str(), 0755), 0);
+  std::string checkpoint = sub + "/a.simc", json = sub + "/run.json";
+  Result made = simRun(bundle + " --backend cpu --steps 20 --set k=1.5 " +
+                       "--checkpoint " + checkpoint);
+  ASSERT_EQ(made.status, 0) << made.output;
+  EXPECT_TRUE(contains(made.output, "checkpoint       " + checkpoint +
+                                        " at base step 20 (1 written)"))
+      << made.output;
+
+  struct Case {
+    std::string args;
+    int status;
+    std::string message;
+  } cases[] = {
+      // A checkpoint of other settings, strategy or time, refused before
+      // anything runs.
+      {"--set k=1.5 --restart " + checkpoint + " --strategy simple", 1,
+       "sim-run: error: --restart: checkpoint '" + checkpoint +
+           "' was written under strategy 'hip', this session runs "
+           "'simple'"},
+      {"--restart " + checkpoint, 1,
+       "was written with k = 1.5, this session has k = 2"},
+      {"--set k=1.5 --restart " + checkpoint + " --steps 10", 2,
+       "--restart: checkpoint '" + checkpoint +
+           "' is at base step 20, past --steps 10"},
+      {"--set k=1.5 --restart " + bundle, 1,
+       "it is a bundle, not a "
+       "checkpoint"},
+      {"--restart " + sub + "/missing.simc", 2, "cannot read the input"},
+      // Outputs never land on an input, the restart file included (but the
+      // checkpoint may replace it: that is what it is for).
+      {"--output-every 5 --output " + bundle, 2,
+       "--output: '" + bundle + "' is the input"},
+      {"--set k=1.5 --restart " + checkpoint + " --output-every 5 --output " +
+           checkpoint,
+       2, "--output: '" + checkpoint + "' is the input"},
+      {"--output-every 5 --output " + sub + "/o --checkpoint " + sub + "/o", 2,
+       "--checkpoint: '" + sub + "/o' is also the file of --output"},
+      {"--checkpoint " + sub, 2, "is a directory, not a file"},
+  };
+  for (const Case &c : cases) {
+    Result result =
+        simRun(bundle + " --backend cpu " + c.args + " --json " + json);
+    EXPECT_EQ(result.status, c.status) << c.args << "\n" << result.output;
+    EXPECT_TRUE(contains(result.output, c.message)) << c.args << "\n"
+                                                    << result.output;
+    EXPECT_FALSE(exists(json)) << c.args;
+  }
+  // The checkpoint replaces the one the run restarted from.
+  Result again =
+      simRun(bundle + " --backend cpu --set k=1.5 --steps 30 " + "--restart " +
+             checkpoint + " --checkpoint " + checkpoint + " --json " + json);
+  ASSERT_EQ(again.status, 0) << again.output;
+  EXPECT_EQ(readJson(json)["checkpoint"]["base_step"], 30);
+  EXPECT_EQ(readJson(json)["restart"]["base_step"], 20);
 }
 
 TEST_F(SimRun, StopsOnSigterm) {

@@ -106,8 +106,16 @@ TEST(SimRunOptions, TakesEveryOption) {
                            "010",
                            "--repeat",
                            "3",
-                           "--report-every",
+                           "--output-every",
                            "5",
+                           "--output",
+                           "out.npz",
+                           "--checkpoint",
+                           "out.simc",
+                           "--checkpoint-every",
+                           "7",
+                           "--restart",
+                           "in.simc",
                            "--set",
                            "k=1",
                            "--set",
@@ -137,7 +145,11 @@ TEST(SimRunOptions, TakesEveryOption) {
   EXPECT_EQ(options.strategy, SIM_STRATEGY_SIMPLE);
   EXPECT_EQ(options.steps, 10);
   EXPECT_EQ(options.repeat, 3);
-  EXPECT_EQ(options.reportEvery, 5);
+  EXPECT_EQ(options.outputEvery, 5);
+  EXPECT_EQ(options.output, "out.npz");
+  EXPECT_EQ(options.checkpoint, "out.simc");
+  EXPECT_EQ(options.checkpointEvery, 7);
+  EXPECT_EQ(options.restart, "in.simc");
   ASSERT_EQ(options.sets.size(), 2u);
   EXPECT_EQ(options.sets[1],
             std::make_pair(std::string("range"), std::string("10")));
@@ -156,6 +168,11 @@ TEST(SimRunOptions, TakesEveryOption) {
   EXPECT_FALSE(parse({"a.simb"}).progress);
   // The last of a repeated option counts.
   EXPECT_EQ(parse({"a.simb", "--steps", "1", "--steps", "2"}).steps, 2);
+  // --report-every is the old name of --output-every.
+  EXPECT_EQ(parse({"a.simb", "--report-every", "4"}).outputEvery, 4);
+  EXPECT_EQ(parse({"a.simb", "--report-every", "4", "--output-every", "4"})
+                .outputEvery,
+            4);
 }
 
 TEST(SimRunOptions, RejectsValuesOutsideTheirDomain) {
@@ -172,6 +189,15 @@ TEST(SimRunOptions, RejectsValuesOutsideTheirDomain) {
       {{"a", "--threads", "0"}, "--threads: '0' is not"},
       {{"a", "--device", "-1"}, "--device: '-1' is not a device ordinal"},
       {{"a", "--report-every", "0"}, "--report-every: '0' is not"},
+      {{"a", "--output-every", "0"}, "--output-every: '0' is not"},
+      {{"a", "--checkpoint", "c", "--checkpoint-every", "x"},
+       "--checkpoint-every: 'x' is not an integer from 1 to"},
+      {{"a", "--checkpoint-every", "5"},
+       "--checkpoint-every requires --checkpoint"},
+      {{"a", "--output", "o.npz"}, "--output needs --output-every"},
+      {{"a", "--output-every", "3", "--report-every", "4"},
+       "--report-every 4 and --output-every 3 disagree"},
+      {{"a", "--restart", ""}, "--restart: expects a path"},
       {{"a", "--check", "--check-tolerance", "inf"},
        "--check-tolerance: 'inf' is not a positive finite number"},
       {{"a", "--max-memory", "-1"}, "--max-memory: '-1' is not a size"},
@@ -200,13 +226,31 @@ TEST(SimRunOptions, RejectsValuesOutsideTheirDomain) {
 
 TEST(SimRunOptions, PrintsTheHelpOfEveryOption) {
   std::string help = helpText();
-  for (const char *option :
-       {"--backend B ", "--strategy S ", "--steps N ", "--repeat K ",
-        "--report-every N ", "--set NAME=VALUE ", "--group-size G ",
-        "--reference simple|exact ", "--check ", "--check-tolerance X ",
-        "--dump DIR ", "--json FILE ", "--check-finite ", "--threads N ",
-        "--device N ", "--cuda-graph ", "--max-memory SIZE ", "--progress ",
-        "-h, --help "})
+  for (const char *option : {"--backend B ",
+                             "--strategy S ",
+                             "--steps N ",
+                             "--repeat K ",
+                             "--output-every N ",
+                             "--report-every N ",
+                             "--output FILE ",
+                             "--checkpoint FILE ",
+                             "--checkpoint-every N ",
+                             "--restart FILE ",
+                             "--set NAME=VALUE ",
+                             "--group-size G ",
+                             "--reference simple|exact ",
+                             "--check ",
+                             "--check-tolerance X ",
+                             "--dump DIR ",
+                             "--json FILE ",
+                             "--check-finite ",
+                             "--threads N ",
+                             "--device N ",
+                             "--cuda-graph ",
+                             "--max-memory SIZE ",
+                             "--no-init-check ",
+                             "--progress ",
+                             "-h, --help "})
     EXPECT_TRUE(contains(help, "\n  " + std::string(option))) << option;
   EXPECT_TRUE(contains(help, "130 or 143")) << help;
   EXPECT_TRUE(contains(help, "3 when the run\nended with NaN")) << help;

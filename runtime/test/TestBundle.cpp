@@ -379,6 +379,16 @@ std::vector<int64_t> decayBigSteps(int64_t begin, int64_t steps, int64_t cap) {
   return sizes;
 }
 
+int64_t decayCuts(int64_t begin, int64_t steps, int64_t cap) {
+  int64_t t = begin;
+  std::vector<int64_t> sizes = decayBigSteps(begin, steps, cap);
+  if (sizes.empty())
+    return 0;
+  for (size_t i = 0; i + 1 < sizes.size(); ++i)
+    t += sizes[i];
+  return sizes.back() < std::min(1 + (t / 5) % 4, cap) ? 1 : 0;
+}
+
 std::string makeTempDir() {
   const char *tmp = std::getenv("TMPDIR");
   std::string path =

@@ -54,6 +54,9 @@ schema::PlanT &planOf(schema::BundleT &contents, schema::Strategy strategy);
 /// The reference of the decay scene: the big-step sizes the hip plan takes
 /// from T to T + steps (num_steps(T) = 1 + (T / 5) % 4, capped at 4).
 std::vector<int64_t> decayBigSteps(int64_t begin, int64_t steps, int64_t cap);
+/// Whether the last of those big steps is cut short by the end of the run
+/// (smaller than num_steps and the cap would make it): 0 or 1.
+int64_t decayCuts(int64_t begin, int64_t steps, int64_t cap);
 
 /// A fresh directory under $TMPDIR, removed by the caller if it wants.
 std::string makeTempDir();

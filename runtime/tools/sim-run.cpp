@@ -20,12 +20,15 @@
 //===----------------------------------------------------------------------===//
 
 #include "simrun/Compare.h"
+#include "simrun/Npz.h"
 #include "simrun/Options.h"
 #include "simrun/Output.h"
 #include "simrun/Progress.h"
 #include "simrun/Report.h"
 #include "simrun/Safety.h"
+#include "simrun/Series.h"
 #include "simrun/Signals.h"
+#include "simrun/Timeline.h"
 
 #include "sim/Runtime/sim_runtime.h"
 
@@ -286,7 +289,10 @@ private:
 /// Every session sim-run needs, created (and every --set checked) before
 /// anything runs; each is reset when its part is done, freeing its state.
 struct Sessions {
-  std::unique_ptr<Session> main, simple, check, totals;
+  std::unique_ptr<Session> main, simple, check;
+  /// The measured session already stands at its start (--restart, read
+  /// and checked before anything runs).
+  bool mainStarted = false;
 };
 
 sim_session_options mainOptions(const Options &options) {
@@ -324,10 +330,22 @@ Sessions createSessions(const sim_bundle *bundle, const Options &options) {
     reference.cuda_graph = 0;
     sessions.check = std::make_unique<Session>(bundle, reference, options);
   }
-  // --report-every runs on a session of its own, so that the measured
-  // run's counters stay what the table and --check report.
-  if (options.reportEvery > 0)
-    sessions.totals = std::make_unique<Session>(bundle, main, options);
+  // A checkpoint that does not belong to the sessions (another bundle,
+  // strategy, group size or --set values, or a damaged file) is refused
+  // here, before anything runs. --check's reference executor restarts from
+  // the same checkpoint.
+  if (!options.restart.empty()) {
+    startAt(measured, options.restart);
+    sessions.mainStarted = true;
+    int64_t at = sim_session_time(measured);
+    if (at > options.steps)
+      usageError("--restart: checkpoint '" + options.restart +
+                 "' is at base step " + std::to_string(at) + ", past --steps " +
+                 std::to_string(options.steps) +
+                 " (the end of the run, counted from base step 0)");
+    if (sessions.check)
+      startAt(sessions.check->get(), options.restart);
+  }
   return sessions;
 }
 
@@ -370,20 +388,6 @@ std::vector<Buffer> readBuffers(sim_session *session,
   for (const sim_buffer_info &info : observed)
     buffers.push_back(readBuffer(session, info, false));
   return buffers;
-}
-
-RunCounts countsOf(sim_session *session, int64_t maxSteps) {
-  RunCounts counts;
-  for (int32_t c = 0; c < sim_session_num_components(session); ++c)
-    counts.evaluations.emplace_back(sim_session_component(session, c),
-                                    sim_session_evaluations(session, c));
-  sim_metrics metrics;
-  check(sim_session_metrics(session, &metrics));
-  counts.bigSteps = metrics.big_steps;
-  counts.histogram.assign(size_t(maxSteps) + 1, 0);
-  for (int64_t m = 1; m <= maxSteps; ++m)
-    counts.histogram[size_t(m)] = sim_session_histogram(session, m);
-  return counts;
 }
 
 std::vector<std::string> totalNamesOf(sim_session *session) {
@@ -434,13 +438,122 @@ PartState runFromStart(sim_session *session, int64_t steps, Progress &progress,
   return {Stage::Done, steps, steps};
 }
 
-/// The measured runs: a warm-up first when several are measured, then the
-/// state, counters, totals and observed buffers at the end.
-MainRun runMain(sim_session *session, const sim_bundle *bundle,
-                const Options &options,
-                const std::vector<sim_buffer_info> &observed,
-                Progress &progress) {
-  MainRun main;
+Stops stopsOf(const Options &options) {
+  return {options.steps, options.outputEvery, options.checkpointEvery};
+}
+
+/// Progress of a run through its stops: one line for the whole run.
+TimelineHooks progressHooks(Progress &progress, const std::string &label,
+                            int64_t end) {
+  TimelineHooks hooks;
+  bool first = true;
+  hooks.beforeRun = [&progress, label, end, first](sim_session *session,
+                                                   int64_t from) mutable {
+    if (first)
+      progress.begin(session, label);
+    first = false;
+    progress.resume(session, from, end);
+  };
+  hooks.afterRun = [&progress] { progress.pause(); };
+  return hooks;
+}
+
+/// Writes --checkpoint's file with the session's state (atomically, like
+/// every output; the checkpoint may replace the --restart file).
+void writeCheckpoint(sim_session *session, MainRun &main) {
+  writeFileAtomically(main.checkpointFile, [&](int fd) {
+    if (sim_session_checkpoint_fd(session, fd) != SIM_OK)
+      runError("--checkpoint: " + std::string(sim_last_error()));
+  });
+  ++main.checkpointsWritten;
+  main.checkpointTime = sim_session_time(session);
+}
+
+/// What the measured run records at an output time: the totals, the error
+/// of every observed buffer against --reference (the simple strategy's
+/// session advanced to the same base step, or the exact solution), and
+/// with --output the buffers. Prints the row. False when a signal stopped
+/// the simple strategy's run (the row is incomplete and dropped).
+bool recordOutput(Results &results, sim_session *session, Session *simple,
+                  const std::vector<sim_buffer_info> &observed, int64_t time) {
+  auto start = std::chrono::steady_clock::now();
+  Series &series = results.series;
+  std::vector<std::optional<Buffer>> references(observed.size());
+  if (simple) {
+    // The simple strategy takes every base step: nothing is cut.
+    sim_session *reference = simple->get();
+    int64_t at = sim_session_time(reference);
+    if (at < time) {
+      Progress lockstep(false);
+      lockstep.begin(reference, "reference: ");
+      lockstep.resume(reference, at, time);
+      sim_status status = sim_session_run(reference, time - at);
+      lockstep.end();
+      if (status == SIM_ERROR_INTERRUPTED) {
+        results.reference = {Stage::Cut, sim_session_time(reference),
+                             results.main.steps};
+        return false;
+      }
+      check(status);
+    }
+    for (size_t i = 0; i < observed.size(); ++i)
+      references[i] = readBuffer(reference, observed[i], false);
+  } else if (results.referenceKind == "exact") {
+    for (size_t i = 0; i < observed.size(); ++i)
+      if (series.buffers[i].hasReference)
+        references[i] = readBuffer(session, observed[i], true);
+  }
+  std::vector<Buffer> values;
+  if (series.keepValues || !results.referenceKind.empty())
+    values = readBuffers(session, observed);
+  series.add(time, totalsOf(session), values, references);
+  if (simple && time == results.main.steps)
+    for (size_t i = 0; i < observed.size(); ++i)
+      results.referenceValues[i] = references[i];
+  results.main.outputSeconds +=
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start)
+          .count();
+  if (series.size() == 1)
+    printSeriesHeader(series);
+  printSeriesRow(series, series.size() - 1);
+  return true;
+}
+
+/// What the output times record: every total, per observed buffer its
+/// error where --reference has a value of it, and with --output its values
+/// (and the exact solution).
+void setUpSeries(Results &results, const Options &options, sim_session *session,
+                 const std::vector<sim_buffer_info> &observed) {
+  Series &series = results.series;
+  series.every = options.outputEvery;
+  series.dt = results.main.dt;
+  series.range = results.main.range;
+  series.referenceKind = options.reference;
+  series.keepValues = !options.output.empty();
+  series.totalNames = totalNamesOf(session);
+  for (const sim_buffer_info &info : observed) {
+    Series::Column column;
+    column.name = info.name;
+    column.scalarBytes = info.scalar_bytes;
+    column.lanes = info.lanes;
+    bool exact = options.reference == "exact" &&
+                 sim_session_has_exact(session, info.name);
+    column.hasReference = options.reference == "simple" || exact;
+    column.hasExact = exact;
+    series.buffers.push_back(column);
+  }
+}
+
+/// The measured runs: a warm-up first when several are measured, each from
+/// the initial state (or the --restart checkpoint) through the same stops;
+/// the last records the output times (with --reference simple the simple
+/// strategy in step with it) and writes the checkpoints. Then the state,
+/// counters, totals and observed buffers at the end.
+void runMain(Results &results, Sessions &sessions, const sim_bundle *bundle,
+             const Options &options,
+             const std::vector<sim_buffer_info> &observed, Progress &progress) {
+  MainRun &main = results.main;
+  sim_session *session = sessions.main->get();
   main.scene = sim_bundle_scene_name(bundle);
   main.strategy = sim_strategy_name(options.strategy);
   main.backend = sim_backend_name(sim_session_backend(session));
@@ -459,20 +572,54 @@ MainRun runMain(sim_session *session, const sim_bundle *bundle,
   main.maxMemory = options.maxMemory;
   main.memoryBytes = sim_session_memory_bytes(session);
   main.memoryLimit = sim_session_memory_limit(session);
+  main.restartFile = options.restart;
+  main.checkpointFile = options.checkpoint;
+  main.checkpointEvery = options.checkpointEvery;
+  if (sessions.mainStarted)
+    main.restartTime = sim_session_time(session);
 
+  setUpSeries(results, options, session, observed);
+  Stops stops = stopsOf(options);
   int64_t runs = options.repeat > 1 ? options.repeat + 1 : 1;
   main.state = {Stage::Done, options.steps, options.steps};
   for (int64_t r = 0; r < runs && main.state.stage == Stage::Done; ++r) {
-    bool warmUp = runs > 1 && r == 0;
+    bool warmUp = runs > 1 && r == 0, last = r == runs - 1;
     std::string label;
     if (warmUp)
       label = "warm-up: ";
     else if (runs > 1)
       label = "run " + std::to_string(r) + " of " +
               std::to_string(options.repeat) + ": ";
-    main.state = runFromStart(session, options.steps, progress, label);
     main.cutRun = runs > 1 ? r : 1;
-    check(sim_session_metrics(session, &main.metrics));
+    if (interrupted()) {
+      main.state = {Stage::Cut, sim_session_time(session), options.steps};
+      break;
+    }
+    if (!sessions.mainStarted)
+      startAt(session, options.restart);
+    sessions.mainStarted = false;
+
+    TimelineHooks hooks = progressHooks(progress, label, options.steps);
+    if (last) {
+      results.series.clear();
+      if (options.outputEvery > 0) {
+        if (sessions.simple)
+          check(sim_session_init(sessions.simple->get()));
+        hooks.output = [&](int64_t time) {
+          return recordOutput(results, session, sessions.simple.get(), observed,
+                              time);
+        };
+      }
+      if (options.checkpointEvery > 0)
+        hooks.checkpoint = [&](int64_t) { writeCheckpoint(session, main); };
+    }
+    RunTotals totals;
+    main.state = runThrough(session, stops, main.maxSteps, totals, hooks);
+    progress.end();
+    main.metrics = totals.metrics;
+    main.counts = totals.counts;
+    main.cuts = totals.cuts;
+    main.cutsAtOutputs = totals.cutsAtOutputs;
     if (!warmUp && main.state.stage == Stage::Done) {
       main.walls.push_back(main.metrics.wall_seconds);
       main.kernels.push_back(main.metrics.kernel_seconds);
@@ -485,11 +632,13 @@ MainRun runMain(sim_session *session, const sim_bundle *bundle,
     main.wall = main.metrics.wall_seconds;
     main.kernel = main.metrics.kernel_seconds;
   }
-  main.counts = countsOf(session, main.maxSteps);
+  // The checkpoint of where the run stands: its end, or where a signal
+  // stopped it (a big-step boundary, so it restarts bit for bit).
+  if (!main.checkpointFile.empty())
+    writeCheckpoint(session, main);
   main.totalNames = totalNamesOf(session);
   main.totals = totalsOf(session);
   main.values = readBuffers(session, observed);
-  return main;
 }
 
 /// NaNs and infinities at the end of the measured run: in the observed
@@ -554,20 +703,24 @@ void compareTotalsWithReference(Results &results, sim_session *measured,
 
 /// --reference: the simple strategy's run, or the exact solution at the
 /// time the measured run reached; then the error of every observed buffer
-/// and total.
+/// and total. With --output-every the simple strategy ran in step with the
+/// measured run and its values at the end are there already.
 void runReference(Results &results, sim_session *measured, Session *simple,
                   const std::vector<sim_buffer_info> &observed,
                   const Options &options, Progress &progress) {
-  results.referenceKind = options.reference;
   if (options.reference.empty())
     return;
-  results.referenceValues.assign(observed.size(), std::nullopt);
   if (options.reference == "exact") {
     // Also after a signal: the solution at the base step reached.
     for (size_t i = 0; i < observed.size(); ++i)
       if (sim_session_has_exact(measured, observed[i].name))
         results.referenceValues[i] = readBuffer(measured, observed[i], true);
     results.reference = {Stage::Done, 0, 0};
+  } else if (options.outputEvery > 0) {
+    if (results.reference.stage == Stage::NotAsked)
+      results.reference = results.main.state.stage == Stage::Done
+                              ? PartState{Stage::Done, 0, 0}
+                              : PartState{Stage::Skipped, 0, 0};
   } else if (interrupted()) {
     results.reference = {Stage::Skipped, 0, 0};
   } else {
@@ -592,33 +745,10 @@ void runReference(Results &results, sim_session *measured, Session *simple,
   }
 }
 
-/// --report-every: runs `steps` from the initial state in chunks of
-/// `every` base steps and takes the totals at the start and after each.
-/// A signal cuts it at the last output time reached.
-PartState totalsPerOutputTime(sim_session *session, int64_t steps,
-                              int64_t every, Progress &progress,
-                              const std::string &label,
-                              std::vector<TotalsAt> &series) {
-  if (interrupted())
-    return {Stage::Skipped, 0, 0};
-  check(sim_session_init(session));
-  series.push_back({0, totalsOf(session)});
-  while (sim_session_time(session) < steps) {
-    int64_t chunk = std::min(every, steps - sim_session_time(session));
-    progress.begin(session, label);
-    sim_status status = sim_session_run(session, chunk);
-    progress.end();
-    if (status == SIM_ERROR_INTERRUPTED)
-      return {Stage::Cut, sim_session_time(session), steps};
-    check(status);
-    series.push_back({sim_session_time(session), totalsOf(session)});
-  }
-  return {Stage::Done, steps, steps};
-}
-
-/// --check: the same run on the reference executor, compared with the
-/// measured one (values, totals, counters) and, with --report-every, its
-/// totals at every output time with ours.
+/// --check: the same run on the reference executor, from the same start
+/// and through the same output times (so it cuts the same big steps),
+/// compared with the measured one: values, totals (at every output time
+/// too) and counters.
 void runCheck(Results &results, Session &session,
               const std::vector<sim_buffer_info> &observed,
               const Options &options, Progress &progress) {
@@ -628,34 +758,40 @@ void runCheck(Results &results, Session &session,
   }
   const MainRun &main = results.main;
   sim_session *reference = session.get();
-  PartState state = runFromStart(reference, options.steps, progress, "check: ");
+  // No --checkpoint-every pauses: they change nothing.
+  Stops stops = stopsOf(options);
+  stops.checkpointEvery = 0;
+  TimelineHooks hooks = progressHooks(progress, "check: ", options.steps);
+  std::vector<TotalsAt> theirs;
+  if (options.outputEvery > 0 && !main.totalNames.empty())
+    hooks.output = [&](int64_t time) {
+      theirs.push_back({time, totalsOf(reference)});
+      return true;
+    };
+  // The restart checkpoint was applied when the sessions were made.
+  if (options.restart.empty())
+    check(sim_session_init(reference));
+  RunTotals totals;
+  PartState state = runThrough(reference, stops, main.maxSteps, totals, hooks);
+  progress.end();
   if (state.stage != Stage::Done) {
     results.checkState = state;
     return;
   }
   results.checkValues = readBuffers(reference, observed);
-  Check check = compareWithReference(
-      main.values, results.checkValues, main.counts,
-      countsOf(reference, main.maxSteps), options.checkTolerance);
+  Check check =
+      compareWithReference(main.values, results.checkValues, main.counts,
+                           totals.counts, options.checkTolerance);
   double totalTolerance =
       options.checkTolerance > 0 ? options.checkTolerance : kTotalTolerance;
   compareTotals(main.totalNames, options.steps, main.totals,
                 totalsOf(reference), totalTolerance, check.totals,
                 check.failures);
-  if (options.reportEvery > 0 && !main.totalNames.empty()) {
-    std::vector<TotalsAt> theirs;
-    state = totalsPerOutputTime(reference, options.steps, options.reportEvery,
-                                progress, "check totals: ", theirs);
-    if (state.stage != Stage::Done) {
-      results.checkState = state;
-      return;
-    }
-    const std::vector<TotalsAt> &ours = results.totalsPerOutputTime;
-    for (size_t k = 0; k < ours.size() && k < theirs.size(); ++k)
-      compareTotals(main.totalNames, ours[k].time, ours[k].values,
-                    theirs[k].values, totalTolerance, check.totalsPerOutputTime,
-                    check.failures);
-  }
+  const Series &ours = results.series;
+  for (size_t k = 0; k < ours.size() && k < theirs.size(); ++k)
+    compareTotals(main.totalNames, ours.times[k], ours.totals[k],
+                  theirs[k].values, totalTolerance, check.totalsPerOutputTime,
+                  check.failures);
   results.checkState = {Stage::Done, options.steps, options.steps};
   results.check = std::move(check);
 }
@@ -666,23 +802,13 @@ void runCheck(Results &results, Session &session,
 
 /// A .npy file (format 1.0): shape (range,) or (range, lanes).
 std::string npy(const Buffer &buffer, int64_t range) {
-  std::string shape =
-      std::to_string(range) +
-      (buffer.lanes > 1 ? ", " + std::to_string(buffer.lanes) + ")" : ",)");
-  std::string header = std::string("{'descr': '<f") +
-                       std::to_string(buffer.scalarBytes) +
-                       "', 'fortran_order': False, 'shape': (" + shape + ", }";
-  // Magic, version, length and header end on a multiple of 64 bytes.
-  size_t total = 10 + header.size() + 1;
-  header.append((64 - total % 64) % 64, ' ');
-  header += '\n';
-  std::string file("\x93NUMPY\x01\x00", 8);
-  file += char(header.size() & 0xff);
-  file += char(header.size() >> 8);
-  file += header;
-  file.append(reinterpret_cast<const char *>(buffer.bytes.data()),
-              buffer.bytes.size());
-  return file;
+  std::vector<int64_t> shape = {range};
+  if (buffer.lanes > 1)
+    shape.push_back(buffer.lanes);
+  return npyFile(
+      floatDescr(buffer.scalarBytes), shape,
+      std::string_view(reinterpret_cast<const char *>(buffer.bytes.data()),
+                       buffer.bytes.size()));
 }
 
 /// Plans and checks the dump files of the observed buffers (before the
@@ -756,11 +882,65 @@ OutputPlan planOutputs(const Options &options) {
   checkInput(options.input);
   OutputPlan outputs;
   outputs.addInput(options.input);
+  // The checkpoint may replace the one the run restarts from (read whole
+  // before anything runs): the latest state is what it is for.
+  if (!options.restart.empty()) {
+    checkInput(options.restart);
+    if (options.checkpoint.empty() ||
+        !sameFile(options.restart, options.checkpoint))
+      outputs.addInput(options.restart);
+  }
   if (!options.dump.empty())
     outputs.addDirectory("--dump", options.dump);
   if (!options.json.empty())
     outputs.addFile("--json", options.json);
+  if (!options.output.empty())
+    outputs.addFile("--output", options.output);
+  if (!options.checkpoint.empty())
+    outputs.addFile("--checkpoint", options.checkpoint);
   return outputs;
+}
+
+/// --output keeps every output time's buffers until the end: refuse, before
+/// anything runs, a series that would take more than half of the memory.
+void checkSeriesMemory(const Options &options, sim_session *session,
+                       const std::vector<sim_buffer_info> &observed) {
+  if (options.output.empty())
+    return;
+  int64_t row = 0;
+  for (const sim_buffer_info &info : observed) {
+    size_t bytes = 0;
+    check(sim_session_buffer_bytes(session, info.name, &bytes));
+    bool exact = options.reference == "exact" &&
+                 sim_session_has_exact(session, info.name);
+    row += int64_t(bytes) * (exact ? 2 : 1);
+  }
+  Stops stops = stopsOf(options);
+  int64_t times = stops.outputTimes(sim_session_time(session));
+  long pages = sysconf(_SC_PHYS_PAGES), pageSize = sysconf(_SC_PAGESIZE);
+  if (pages <= 0 || pageSize <= 0 || row == 0)
+    return;
+  double memory = double(pages) * double(pageSize);
+  double needed = double(row) * double(times);
+  if (needed > memory / 2)
+    usageError("--output: " + std::to_string(times) + " output times of " +
+               formatBytes(row) + " each take " +
+               formatBytes(int64_t(std::min(needed, 9e18))) +
+               ", more than half of this machine's memory (" +
+               formatBytes(int64_t(memory)) +
+               "); choose a larger --output-every");
+}
+
+/// --output: the series as one .npz file.
+void writeSeries(const Results &results, const Options &options) {
+  if (options.output.empty())
+    return;
+  std::vector<std::string> storage;
+  std::vector<NpzArray> arrays =
+      seriesArrays(results.series, results.main.scene, results.main.strategy,
+                   results.main.backend, storage);
+  writeFileAtomically(options.output,
+                      [&](int fd) { writeNpz(fd, arrays, options.output); });
 }
 
 /// --reference exact needs an exact solution of an observed buffer.
@@ -788,21 +968,17 @@ Results runAll(Sessions &sessions, const sim_bundle *bundle,
   for (const std::string &message : initCheckMessages(results.initCheck))
     std::fprintf(stderr, "%s\n", message.c_str());
   std::fflush(stderr);
-  results.main =
-      runMain(sessions.main->get(), bundle, options, observed, progress);
+  results.referenceKind = options.reference;
+  results.referenceValues.assign(observed.size(), std::nullopt);
+  results.outputEvery = options.outputEvery;
+  results.outputFile = options.output;
+  runMain(results, sessions, bundle, options, observed, progress);
   results.nonFinite =
       findNonFiniteState(sessions.main->get(), bundle, results.main);
   runReference(results, sessions.main->get(), sessions.simple.get(), observed,
                options, progress);
   sessions.simple.reset();
   sessions.main.reset();
-  results.reportEvery = options.reportEvery;
-  if (sessions.totals) {
-    results.totals = totalsPerOutputTime(
-        sessions.totals->get(), options.steps, options.reportEvery, progress,
-        "totals: ", results.totalsPerOutputTime);
-    sessions.totals.reset();
-  }
   if (sessions.check) {
     runCheck(results, *sessions.check, observed, options, progress);
     sessions.check.reset();
@@ -841,6 +1017,7 @@ int run(Options options) {
   std::vector<std::string> stems = planDumps(outputs, options, observed);
   if (options.reference == "exact")
     requireExactSolution(bundle, sessions.main->get(), observed);
+  checkSeriesMemory(options, sessions.main->get(), observed);
   // A signal that came before the first run leaves nothing to report.
   stopIfInterrupted("before the run");
 
@@ -850,6 +1027,7 @@ int run(Options options) {
   // the dumps are complete.
   printTable(results);
   writeDumps(results, options, stems);
+  writeSeries(results, options);
   if (!options.json.empty())
     writeFileAtomically(options.json, toJson(results));
 

@@ -55,8 +55,8 @@ LogicalResult SimulationLowering::emitEstimate(ComponentOp component,
 
 /// Commits the big step that just ended (T += m, flip the parity when it
 /// advanced) and decides the next one: m = min(estimate, cap, end - T), 0
-/// past the end. Also counts big steps by size and restarts the sub-step
-/// clocks.
+/// past the end. Also counts big steps by size and the ones the end cut
+/// short (clock slot Cuts), and restarts the sub-step clocks.
 LogicalResult SimulationLowering::emitAdvance(OpBuilder &launches,
                                               bool hasEstimates) {
   Kernel kernel = beginKernel(getKernelName(kernels, "advance"));
@@ -78,11 +78,17 @@ LogicalResult SimulationLowering::emitAdvance(OpBuilder &launches,
   Value bound = hasEstimates ? b.min(slot(kSlotEstimate), cap) : cap;
   Value positive = b.cmp(arith::CmpIPredicate::sgt, remaining, zero);
   Value next = b.select(positive, b.min(bound, remaining), zero);
+  // A cut: the end of the run, not the estimate or the cap, sizes the big
+  // step (a run that ends between two natural big-step boundaries).
+  Value cut = b.select(
+      positive, b.cmp(arith::CmpIPredicate::slt, remaining, bound), positive);
+  Value cuts = b.add(slot(kSlotCuts), b.extend(cut, b.getI64Type()));
 
   setSlot(kSlotBegin, now);
   setSlot(kSlotSize, next);
   setSlot(kSlotParity, nowParity);
   setSlot(kSlotBigSteps, bigSteps);
+  setSlot(kSlotCuts, cuts);
   setSlot(kSlotEstimate, b.i64(kNoEstimate64));
   b.ifThen(b.cmp(arith::CmpIPredicate::sgt, next, zero), [&] {
     Value at = b.add(b.index(histogramSlot), b.toIndex(next));

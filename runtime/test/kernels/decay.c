@@ -31,6 +31,7 @@ enum {
   kEnd = 3,
   kEstimate = 4,
   kBigSteps = 5,
+  kCuts = 6,
   kDecayEvaluations = 8,
   kGrowEvaluations = 9,
   kHistogram = 10,
@@ -126,6 +127,7 @@ EXPORT void sim_cpu_advance(void **params, int64_t first, int64_t end,
     bound = clock[kEstimate];
   int64_t next = remaining > 0 ? (bound < remaining ? bound : remaining) : 0;
   clock[kBigSteps] += size > 0;
+  clock[kCuts] += remaining > 0 && remaining < bound;
   clock[kBegin] = now;
   clock[kSize] = next;
   clock[kParity] = parity;

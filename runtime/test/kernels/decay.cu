@@ -37,6 +37,7 @@ enum {
   kEnd = 3,
   kEstimate = 4,
   kBigSteps = 5,
+  kCuts = 6,
   kDecayEvaluations = 8,
   kGrowEvaluations = 9,
   kHistogram = 10,
@@ -90,6 +91,7 @@ KERNEL advance(MEMREF(i64, clock)) {
     bound = clock[kEstimate];
   i64 next = remaining > 0 ? (bound < remaining ? bound : remaining) : 0;
   clock[kBigSteps] += size > 0;
+  clock[kCuts] += remaining > 0 && remaining < bound;
   clock[kBegin] = now;
   clock[kSize] = next;
   clock[kParity] = parity;

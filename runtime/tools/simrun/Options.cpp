@@ -210,9 +210,11 @@ constexpr const char *kIntro =
 
 constexpr const char *kFooter =
     R"(Every output is written to a temporary file in its folder and renamed
-into place, never onto an input. The first SIGINT or SIGTERM stops the run
-at its next host synchronisation: sim-run reports and writes what is
-complete and skips the rest; a second one kills it.
+into place, never onto an input (but --checkpoint may replace the --restart
+file). The first SIGINT or SIGTERM stops the run at its next host
+synchronisation, on a big-step boundary: sim-run reports and writes what is
+complete (the output times reached, a checkpoint where it stopped) and
+skips the rest; a second one kills it.
 
 ENVIRONMENT:
   SIM_CUDA_DRIVER             the driver library to load instead of libcuda.so.1
@@ -264,7 +266,8 @@ public:
 /// sim-run's options on `app`, stored into `options`; --backend and
 /// --strategy, --set and --reference go through the strings given.
 void declareOptions(CLI::App &app, Options &options, std::string &backend,
-                    std::string &strategy, std::vector<std::string> &sets) {
+                    std::string &strategy, std::vector<std::string> &sets,
+                    int64_t &reportEvery) {
   app.formatter(std::make_shared<HelpFormatter>());
   app.footer(kFooter);
   app.set_help_flag("-h,--help", "print this help");
@@ -296,14 +299,45 @@ void declareOptions(CLI::App &app, Options &options, std::string &backend,
                  "first and is not counted (1 to 10^6, default 1)")
       ->option_text("K")
       ->transform(integerIn(1, kMaxRepeat, "an integer from 1 to 1000000"));
-  app.add_option("--report-every", options.reportEvery,
-                 "run once more (a session of its own) from the\n"
-                 "initial state in chunks of N >= 1 base steps and\n"
-                 "print the scene's totals at every output time\n"
-                 "(0, N, 2N, ..., the end)")
+  app.add_option("--output-every", options.outputEvery,
+                 "stop the run exactly at every multiple of N >= 1\n"
+                 "base steps and at the end (the big step there is\n"
+                 "cut), and print t, time, the totals and\n"
+                 "--reference's errors at each as the run goes")
       ->option_text("N")
       ->transform(
           integerIn(1, kMaxSteps, "an integer from 1 to 1000000000000"));
+  app.add_option("--report-every", reportEvery,
+                 "the old name of --output-every")
+      ->option_text("N")
+      ->transform(
+          integerIn(1, kMaxSteps, "an integer from 1 to 1000000000000"));
+  app.add_option("--output", options.output,
+                 "with --output-every: write the observed buffers,\n"
+                 "totals and errors at every output time into one\n"
+                 ".npz file (numpy.load; layout in docs/Runtime.md)")
+      ->option_text("FILE")
+      ->check(path());
+  CLI::Option *checkpoint =
+      app.add_option("--checkpoint", options.checkpoint,
+                     "keep a checkpoint of the run (clock and state) in\n"
+                     "FILE: at the end, where a signal stops it, and\n"
+                     "with --checkpoint-every; each replaces the last")
+          ->option_text("FILE")
+          ->check(path());
+  app.add_option("--checkpoint-every", options.checkpointEvery,
+                 "also write it on the first big-step boundary at\n"
+                 "or after every multiple of N >= 1 base steps (no\n"
+                 "big step is cut for it)")
+      ->option_text("N")
+      ->transform(integerIn(1, kMaxSteps, "an integer from 1 to 1000000000000"))
+      ->needs(checkpoint);
+  app.add_option("--restart", options.restart,
+                 "continue from a checkpoint of the same bundle,\n"
+                 "strategy, group size and --set values; --steps\n"
+                 "stays the end, counted from base step 0")
+      ->option_text("FILE")
+      ->check(path());
   app.add_option("--set", sets,
                  "set range, dt or a scene parameter (repeatable);\n"
                  "for a .mlir scene also max_steps, which is\n"
@@ -409,8 +443,9 @@ std::string helpText() {
   Options options;
   std::string backend, strategy;
   std::vector<std::string> sets;
+  int64_t reportEvery = 0;
   CLI::App app(kOverview, "sim-run");
-  declareOptions(app, options, backend, strategy, sets);
+  declareOptions(app, options, backend, strategy, sets, reportEvery);
   return app.help();
 }
 
@@ -418,8 +453,9 @@ Options parseOptions(int argc, const char *const *argv) {
   Options options;
   std::string backend, strategy;
   std::vector<std::string> sets;
+  int64_t reportEvery = 0;
   CLI::App app(kOverview, "sim-run");
-  declareOptions(app, options, backend, strategy, sets);
+  declareOptions(app, options, backend, strategy, sets, reportEvery);
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp &) {
@@ -447,6 +483,16 @@ Options parseOptions(int argc, const char *const *argv) {
   }
   if (options.input.empty())
     usageError("no input scene");
+  if (reportEvery > 0) {
+    if (options.outputEvery > 0 && options.outputEvery != reportEvery)
+      usageError("--report-every " + std::to_string(reportEvery) +
+                 " and --output-every " + std::to_string(options.outputEvery) +
+                 " disagree (--report-every is the old name of "
+                 "--output-every)");
+    options.outputEvery = reportEvery;
+  }
+  if (!options.output.empty() && options.outputEvery == 0)
+    usageError("--output needs --output-every (the output times)");
 
   if (!backend.empty())
     sim_backend_parse(backend.c_str(), &options.backend);

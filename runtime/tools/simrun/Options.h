@@ -71,8 +71,16 @@ struct Options {
   sim_strategy strategy = SIM_STRATEGY_HIP;
   int64_t steps = 100;
   int64_t repeat = 1;
-  /// --report-every; 0: no totals per output time.
-  int64_t reportEvery = 0;
+  /// --output-every (or its old name --report-every): the run stops at
+  /// every multiple of it; 0: no output times.
+  int64_t outputEvery = 0;
+  /// --output FILE: the .npz of the output times; empty: none.
+  std::string output;
+  /// --checkpoint FILE (empty: none), written at the end, on a signal and
+  /// with --checkpoint-every (0: not periodically); --restart FILE.
+  std::string checkpoint;
+  int64_t checkpointEvery = 0;
+  std::string restart;
   /// --set NAME=VALUE, in the order given.
   std::vector<std::pair<std::string, std::string>> sets;
   /// 0: the plan's.

@@ -263,6 +263,13 @@ void OutputPlan::addFile(const std::string &option, const std::string &path) {
   files.push_back(file);
 }
 
+bool sameFile(const std::string &a, const std::string &b) {
+  struct stat first, second;
+  if (stat(a.c_str(), &first) == 0 && stat(b.c_str(), &second) == 0)
+    return first.st_dev == second.st_dev && first.st_ino == second.st_ino;
+  return resolveOutputPath(a) == resolveOutputPath(b);
+}
+
 //===----------------------------------------------------------------------===//
 // Writing
 //===----------------------------------------------------------------------===//
@@ -311,6 +318,23 @@ void makeDirectories(const std::string &dir) {
 }
 
 void writeFileAtomically(const std::string &path, std::string_view contents) {
+  writeFileAtomically(path, [&](int fd) {
+    const char *data = contents.data();
+    size_t left = contents.size();
+    while (left > 0) {
+      ssize_t written = write(fd, data, left);
+      if (written < 0 && errno == EINTR)
+        continue;
+      if (written <= 0)
+        runError("cannot write '" + path + "': " + errorText(errno));
+      data += written;
+      left -= size_t(written);
+    }
+  });
+}
+
+void writeFileAtomically(const std::string &path,
+                         const std::function<void(int fd)> &write) {
   std::string dir = folderOf(path);
   makeDirectories(dir);
   std::string name = dir + "/.sim-run-XXXXXX";
@@ -334,16 +358,11 @@ void writeFileAtomically(const std::string &path, std::string_view contents) {
   };
   if (fchmod(fd, 0666 & ~processUmask) != 0)
     fail("fchmod");
-  const char *data = contents.data();
-  size_t left = contents.size();
-  while (left > 0) {
-    ssize_t written = write(fd, data, left);
-    if (written < 0 && errno == EINTR)
-      continue;
-    if (written <= 0)
-      fail("write");
-    data += written;
-    left -= size_t(written);
+  try {
+    write(fd);
+  } catch (...) {
+    close(fd);
+    throw;
   }
   if (fsync(fd) != 0)
     fail("fsync");

@@ -16,6 +16,7 @@
 #ifndef SIM_RUN_OUTPUT_H
 #define SIM_RUN_OUTPUT_H
 
+#include <functional>
 #include <string>
 #include <string_view>
 #include <sys/types.h>
@@ -97,6 +98,18 @@ void makeDirectories(const std::string &dir);
 /// handler if a second signal kills the process meanwhile. A failure is
 /// Exit{1} naming the path.
 void writeFileAtomically(const std::string &path, std::string_view contents);
+
+/// The same with the contents written by `write` into the temporary file's
+/// descriptor (open for reading and writing at offset 0, seekable), for
+/// files made piece by piece (the .npz of --output, a checkpoint). `write`
+/// reports its own failures (Exit{1}); the temporary file is removed then.
+void writeFileAtomically(const std::string &path,
+                         const std::function<void(int fd)> &write);
+
+/// Whether two paths name the same file: the same device and inode (a hard
+/// link, a symlink to it) or, for files that do not exist yet, the same
+/// resolved path.
+bool sameFile(const std::string &a, const std::string &b);
 
 /// Removes `path` if it is there (a stale output of an earlier run that
 /// this run did not produce again); a failure is Exit{1}.

@@ -56,8 +56,23 @@ void Progress::begin(sim_session *session, std::string runLabel) {
   start = std::chrono::steady_clock::now();
   last = 0;
   shown = false;
+  offset = whole = 0;
   sim_session_set_progress(session, enabled ? &Progress::callback : nullptr,
                            this);
+}
+
+void Progress::resume(sim_session *session, int64_t from, int64_t end) {
+  offset = from;
+  whole = end;
+  sim_session_set_progress(session, enabled ? &Progress::callback : nullptr,
+                           this);
+}
+
+void Progress::pause() {
+  if (shown && terminal) {
+    std::fputs("\r\033[K", out);
+    std::fflush(out);
+  }
 }
 
 void Progress::callback(void *user, int64_t done, int64_t total) {
@@ -75,6 +90,10 @@ void Progress::report(int64_t done, int64_t total, double seconds) {
     return;
   last = seconds;
   shown = true;
+  if (whole > 0) {
+    done += offset;
+    total = whole;
+  }
   std::string line = progressLine(label, done, total, seconds);
   if (terminal)
     std::fprintf(out, "\r%s\033[K", line.c_str());

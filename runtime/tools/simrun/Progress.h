@@ -51,6 +51,13 @@ public:
 
   /// Shows the progress of `session`'s next runs, with `label` ("check: ").
   void begin(sim_session *session, std::string label);
+  /// The next session run of one run to `end` made of several session runs
+  /// (output times, checkpoints), from base step `from`: one line for the
+  /// whole run.
+  void resume(sim_session *session, int64_t from, int64_t end);
+  /// Between two session runs: clears the line on a terminal (output rows
+  /// follow).
+  void pause();
   /// Clears the line on a terminal.
   void end();
 
@@ -67,6 +74,9 @@ private:
   double last = 0;
   std::string label;
   bool shown = false;
+  /// Of a run made of several session runs: where the current one started,
+  /// and the whole run's end (0: the session run's own).
+  int64_t offset = 0, whole = 0;
 };
 
 } // namespace simrun

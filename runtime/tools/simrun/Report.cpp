@@ -15,7 +15,7 @@ namespace simrun {
 using Json = nlohmann::ordered_json;
 
 bool Results::interrupted() const {
-  for (const PartState *part : {&main.state, &reference, &totals, &checkState})
+  for (const PartState *part : {&main.state, &reference, &checkState})
     if (part->stage == Stage::Cut || part->stage == Stage::Skipped)
       return true;
   return false;
@@ -92,6 +92,18 @@ std::string notDone(const PartState &state, const char *what) {
   return std::string("not run (interrupted)");
 }
 
+} // namespace
+
+std::vector<std::pair<std::string, int64_t>>
+extraEvaluations(const MainRun &main) {
+  std::vector<std::pair<std::string, int64_t>> extra;
+  for (const auto &[component, count] : main.counts.evaluations)
+    extra.emplace_back(component, main.cutsAtOutputs * main.range);
+  return extra;
+}
+
+namespace {
+
 void printHeader(const MainRun &main) {
   std::printf("scene %s, strategy %s, backend %s: %s\n",
               displayName(main.scene).c_str(), main.strategy.c_str(),
@@ -105,6 +117,9 @@ void printHeader(const MainRun &main) {
     std::printf(", median of %lld runs after a warm-up",
                 (long long)main.repeat);
   std::printf("\n");
+  if (main.restartTime >= 0)
+    std::printf("restarted from checkpoint '%s' at base step %lld\n",
+                main.restartFile.c_str(), (long long)main.restartTime);
   if (main.state.stage == Stage::Cut) {
     std::string run = main.repeat == 1 ? ""
                       : main.cutRun == 0
@@ -140,6 +155,43 @@ void printMetrics(const MainRun &main) {
     evaluations += (evaluations.empty() ? "" : "  ") + displayName(component) +
                    " " + std::to_string(count);
   row("evaluations", evaluations.empty() ? "-" : evaluations);
+}
+
+/// The cost of the output times, the checkpoints.
+void printTimeline(const Results &results) {
+  const MainRun &main = results.main;
+  if (results.outputEvery > 0 || main.cuts > 0) {
+    std::string text = std::to_string(main.cuts);
+    if (results.outputEvery > 0) {
+      int64_t extra = 0, all = 0;
+      for (const auto &[component, count] : extraEvaluations(main))
+        extra += count;
+      for (const auto &[component, count] : main.counts.evaluations)
+        all += count;
+      char share[32] = "";
+      if (all > 0)
+        std::snprintf(share, sizeof share, ", %.2g%%",
+                      100.0 * double(extra) / double(all));
+      text += " (" + std::to_string(main.cutsAtOutputs) +
+              " at output times: about " + std::to_string(extra) +
+              " more evaluations" + share + ")";
+    }
+    row("cut big steps", text);
+  }
+  if (results.outputEvery > 0)
+    row("output times",
+        std::to_string(results.series.size()) + " every " +
+            std::to_string(results.outputEvery) + " base steps, " +
+            formatTime(main.outputSeconds) +
+            (results.outputFile.empty() ? ""
+                                        : " (" + results.outputFile + ")"));
+  if (!main.checkpointFile.empty())
+    row("checkpoint", main.checkpointTime >= 0
+                          ? main.checkpointFile + " at base step " +
+                                std::to_string(main.checkpointTime) + " (" +
+                                std::to_string(main.checkpointsWritten) +
+                                " written)"
+                          : main.checkpointFile + " (not written)");
 }
 
 void printReferenceErrors(const Results &results) {
@@ -181,20 +233,7 @@ std::string formatTotals(const std::vector<std::string> &names,
 
 void printTotals(const Results &results) {
   const MainRun &main = results.main;
-  if (results.reportEvery > 0) {
-    std::printf("\ntotals every %lld base steps",
-                (long long)results.reportEvery);
-    if (results.totals.stage == Stage::Skipped)
-      std::printf(": not run (interrupted)\n");
-    else
-      std::printf("%s:\n", results.totals.stage == Stage::Cut
-                               ? (" (" + cutText(results.totals) + ")").c_str()
-                               : "");
-    for (const TotalsAt &at : results.totalsPerOutputTime)
-      std::printf("  T %lld  time %s  %s\n", (long long)at.time,
-                  scientific(double(at.time) * main.dt, 9).c_str(),
-                  formatTotals(main.totalNames, at.values).c_str());
-  }
+  // The totals at the output times were printed as the run reached them.
   if (!main.totalNames.empty())
     std::printf("\ntotals  %s\n",
                 formatTotals(main.totalNames, main.totals).c_str());
@@ -274,8 +313,11 @@ void printCheck(const Results &results) {
 } // namespace
 
 void printTable(const Results &results) {
+  if (results.outputEvery > 0)
+    std::printf("\n");
   printHeader(results.main);
   printMetrics(results.main);
+  printTimeline(results);
   printReferenceErrors(results);
   printTotals(results);
   printCheck(results);
@@ -329,7 +371,6 @@ Json interruption(const Results &results) {
   // In the order they run.
   Part parts[] = {{mainName.c_str(), results.main.state},
                   {"reference", results.reference},
-                  {"totals_per_output_time", results.totals},
                   {"check", results.checkState}};
   for (const Part &part : parts) {
     if (part.state.stage == Stage::Cut) {
@@ -496,20 +537,48 @@ std::string toJson(const Results &results) {
   json["big_step_histogram"] = histogram(main.counts.histogram);
   json["evaluations"] = evaluations(main.counts);
   json["totals"] = totals(main.totalNames, main.totals);
-  if (results.reportEvery > 0 && results.totals.stage != Stage::Skipped) {
+  json["cut_big_steps"] = main.cuts;
+  if (results.outputEvery > 0) {
+    const Series &outputs = results.series;
     Json series = Json::array();
-    for (const TotalsAt &at : results.totalsPerOutputTime) {
+    for (size_t k = 0; k < outputs.size(); ++k) {
       Json point;
-      point["T"] = at.time;
-      for (size_t t = 0; t < main.totalNames.size() && t < at.values.size();
-           ++t)
-        point[main.totalNames[t]] = number(at.values[t]);
+      point["T"] = outputs.times[k];
+      for (size_t t = 0;
+           t < main.totalNames.size() && t < outputs.totals[k].size(); ++t)
+        point[main.totalNames[t]] = number(outputs.totals[k][t]);
       series.push_back(point);
     }
     json["totals_per_output_time"] = series;
+    Json extra = Json::object();
+    for (const auto &[component, count] : extraEvaluations(main))
+      extra[component] = count;
+    json["output"] = {{"every", results.outputEvery},
+                      {"file", results.outputFile.empty()
+                                   ? Json(nullptr)
+                                   : Json(results.outputFile)},
+                      {"times", outputs.times},
+                      {"cut_big_steps", main.cutsAtOutputs},
+                      {"extra_evaluations_estimate", extra},
+                      {"seconds", number(main.outputSeconds)}};
   } else {
     json["totals_per_output_time"] = nullptr;
+    json["output"] = nullptr;
   }
+  json["checkpoint"] =
+      main.checkpointFile.empty()
+          ? Json(nullptr)
+          : Json{{"file", main.checkpointFile},
+                 {"every", main.checkpointEvery ? Json(main.checkpointEvery)
+                                                : Json(nullptr)},
+                 {"written", main.checkpointsWritten},
+                 {"base_step", main.checkpointTime >= 0
+                                   ? Json(main.checkpointTime)
+                                   : Json(nullptr)}};
+  json["restart"] =
+      main.restartTime >= 0
+          ? Json{{"file", main.restartFile}, {"base_step", main.restartTime}}
+          : Json(nullptr);
   json["reference"] = results.referenceKind.empty()
                           ? Json(nullptr)
                           : Json(results.referenceKind);

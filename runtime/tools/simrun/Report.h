@@ -12,6 +12,7 @@
 
 #include "Compare.h"
 #include "Safety.h"
+#include "Series.h"
 
 #include <optional>
 #include <string>
@@ -49,9 +50,22 @@ struct MainRun {
   /// --max-memory, and the state's bytes and limit.
   int64_t maxMemory = 0, memoryBytes = 0, memoryLimit = 0;
 
-  /// The last run's metrics and counters (the interrupted one if cut).
+  /// The last run's metrics and counters (the interrupted one if cut),
+  /// added up over its session runs.
   sim_metrics metrics{};
   RunCounts counts;
+  /// Big steps the run cut short: all of them, and those at output times
+  /// before the end.
+  int64_t cuts = 0, cutsAtOutputs = 0;
+  /// Seconds spent at the output times (totals, buffers, errors).
+  double outputSeconds = 0;
+  /// --restart: the file and the base step it started at (-1: none).
+  std::string restartFile;
+  int64_t restartTime = -1;
+  /// --checkpoint: the file, --checkpoint-every, how many were written and
+  /// the base step of the last (-1: none).
+  std::string checkpointFile;
+  int64_t checkpointEvery = 0, checkpointsWritten = 0, checkpointTime = -1;
   /// Wall and kernel time of every measured run that completed, and their
   /// medians; those of the interrupted run when a signal cut one.
   std::vector<double> walls, kernels;
@@ -114,10 +128,11 @@ struct Results {
   std::optional<Check> check;
   std::vector<Buffer> checkValues;
 
-  /// --report-every.
-  int64_t reportEvery = 0;
-  PartState totals;
-  std::vector<TotalsAt> totalsPerOutputTime;
+  /// --output-every: the output times of the last measured run, and the
+  /// file of --output ("" without).
+  int64_t outputEvery = 0;
+  std::string outputFile;
+  Series series;
 
   /// --dump: the folder and its files.
   std::string dumpDir;
@@ -138,6 +153,13 @@ struct Results {
 
 /// The table on stdout.
 void printTable(const Results &results);
+
+/// --output-every's estimate of the evaluations its cuts cost, per
+/// component: one evaluation per item for every cut at an output time
+/// (a cut splits one big step in two; each big step evaluates every item of
+/// a component at least once, a whole-step component exactly once).
+std::vector<std::pair<std::string, int64_t>>
+extraEvaluations(const MainRun &main);
 
 /// The JSON of --json: the keys of docs/Runtime.md, NaN and infinities as
 /// null, invalid UTF-8 in names replaced by U+FFFD.

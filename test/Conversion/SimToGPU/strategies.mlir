@@ -114,8 +114,20 @@ sim.simulation @rod range(1024) dt(1.0e-3 : f32) max_steps(4) {
 // TRAD:         gpu.barrier
 // TRAD:         memref.atomic_rmw mins %{{.*}}, %{{.*}}[%c4] : (i64, memref<?xi64>) -> i64
 // TRAD-LABEL: gpu.func @estimate_Rod(
+// advance decides m = min(estimate, cap, end - T) and counts a big step the
+// end cut short (end - T positive and below the other two) in slot 6.
 // TRAD-LABEL: gpu.func @advance(
-// TRAD:         memref.load %{{.*}}[%c4]
+// TRAD:         %[[END:.*]] = memref.load %{{.*}}[%c3]
+// TRAD:         %[[LEFT:.*]] = arith.subi %[[END]], %{{.*}} : i64
+// TRAD:         %[[ESTIMATE:.*]] = memref.load %{{.*}}[%c4]
+// TRAD:         %[[BOUND:.*]] = arith.minsi %[[ESTIMATE]], %c4_i64 : i64
+// TRAD:         %[[POSITIVE:.*]] = arith.cmpi sgt, %[[LEFT]], %c0_i64 : i64
+// TRAD:         %[[SHORTER:.*]] = arith.cmpi slt, %[[LEFT]], %[[BOUND]] : i64
+// TRAD:         %[[CUT:.*]] = arith.select %[[POSITIVE]], %[[SHORTER]], %[[POSITIVE]] : i1
+// TRAD:         %[[CUTS:.*]] = memref.load %{{.*}}[%c6]
+// TRAD:         %[[ONE:.*]] = arith.extui %[[CUT]] : i1 to i64
+// TRAD:         %[[COUNT:.*]] = arith.addi %[[CUTS]], %[[ONE]] : i64
+// TRAD:         memref.store %[[COUNT]], %{{.*}}[%c6]
 // TRAD-LABEL: simplan.plan @rod strategy("traditional") {{.*}} max_steps(4) step_cap(4)
 // TRAD:         simplan.component @Heater writes [@Q] evaluations(8) advance whole_step estimates{{$}}
 // TRAD-NEXT:    simplan.component @Rod writes [@T] evaluations(9) advance whole_step estimates{{$}}

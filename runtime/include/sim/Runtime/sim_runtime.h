@@ -53,6 +53,11 @@ typedef enum sim_status {
   /// The session would need more memory than its limit allows
   /// (sim_session_options.max_memory).
   SIM_ERROR_MEMORY_LIMIT = 10,
+  /// A checkpoint that is damaged, truncated or not a checkpoint, or that
+  /// belongs to another bundle, scene, strategy, group size, range, dt or
+  /// parameter value than the session's; or a session whose state is not on
+  /// a big-step boundary (its last run failed inside one).
+  SIM_ERROR_CHECKPOINT = 11,
 } sim_status;
 
 /// The message of the last failed call on this thread (never null; empty
@@ -359,6 +364,15 @@ typedef struct sim_metrics {
 /// returns SIM_ERROR_INTERRUPTED with the state at the big-step boundary it
 /// reached (sim_session_time) and metrics of the base steps it did.
 SIM_API sim_status sim_session_run(sim_session *session, int64_t steps);
+/// Runs towards T + steps like sim_session_run, but returns early, with
+/// SIM_OK, at the first big-step boundary at or after T + pause that a host
+/// synchronisation sees (the reference executor sees every one). No big
+/// step is cut there: a later run towards the same end (steps less the base
+/// steps done, sim_session_time) takes the big steps, and gives the values,
+/// of one run. For checkpoints that must not change a run. `pause >= steps`
+/// is sim_session_run; a pause below 1 is SIM_ERROR_INVALID_ARGUMENT.
+SIM_API sim_status sim_session_run_pausing(sim_session *session, int64_t steps,
+                                           int64_t pause);
 /// Asks the session's current and later runs to stop at their next host
 /// synchronisation (SIM_ERROR_INTERRUPTED). Safe to call from another thread
 /// or a signal handler; the request stays until sim_session_resume().
@@ -377,6 +391,32 @@ SIM_API int64_t sim_session_evaluations(const sim_session *session,
                                         int32_t component);
 /// Big steps of `size` base steps (1 .. max_steps) during the last run.
 SIM_API int64_t sim_session_histogram(const sim_session *session, int64_t size);
+/// Big steps of the last run that its end cut short: the end, not the
+/// estimates or the strategy's cap, decided their size (clock slot Cuts,
+/// docs/Plan.md). At most one per run, its last; 0 under simple.
+SIM_API int64_t sim_session_cut_big_steps(const sim_session *session);
+
+/// Checkpoints (docs/Runtime.md, "Checkpoints"): the session's state on
+/// the big-step boundary it stands on, with the whole clock (T, parity, big
+/// steps, cuts, evaluation counters, histogram, ...) and what identifies
+/// the run (the bundle's CRC-32, scene, strategy, group size, range, dt and
+/// every parameter). A restarted session continues bit for bit as the
+/// session that wrote it would have. Initialises a session without a state.
+///
+/// Writes the checkpoint to `path`: a new file in its folder, fsync'ed and
+/// renamed over `path`, so a reader finds the old checkpoint or the whole
+/// new one.
+SIM_API sim_status sim_session_checkpoint(sim_session *session,
+                                          const char *path);
+/// The same into an open, seekable file descriptor from its current offset
+/// (the caller syncs, closes and names the file).
+SIM_API sim_status sim_session_checkpoint_fd(sim_session *session, int fd);
+/// Continues from the checkpoint at `path`: its T, clock and buffers become
+/// the session's. Refused (SIM_ERROR_CHECKPOINT, the session unchanged)
+/// when the file is damaged or belongs to another bundle, strategy, group
+/// size or settings; a checkpoint of the plan executor also restarts the
+/// reference executor (T and the buffers), not the reverse.
+SIM_API sim_status sim_session_restart(sim_session *session, const char *path);
 
 /// Where the last run found a non-finite value (SIM_ERROR_NONFINITE).
 typedef struct sim_nonfinite {

@@ -1,0 +1,466 @@
+//===- Checkpoint.cpp - writing, verifying and restoring checkpoints ------===//
+//
+// The layout (docs/Runtime.md, "Checkpoints"):
+//
+//   offset 0      the 32-byte header of BundleFormat.h with the magic
+//                 "SIMCKPT\0", version 1, the CRC-32 of every byte after
+//                 the header, and the file size
+//   offset 32     the manifest: a size-prefixed FlatBuffer of
+//                 runtime/schema/checkpoint.fbs
+//   data start    the first multiple of 64 after the manifest: each
+//                 buffer's host array at its State's offset from here,
+//                 each on a multiple of 64, zeros between them
+//
+// Reading checks the file as a bundle is checked (magic, version, size,
+// CRC, the FlatBuffers verifier, then every extent), and restarting checks
+// that the checkpoint belongs to the session before it changes anything.
+//
+//===----------------------------------------------------------------------===//
+
+#include "Checkpoint.h"
+
+#include "Error.h"
+#include "Executor.h"
+
+#include <algorithm>
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <fcntl.h>
+#include <random>
+#include <sys/stat.h>
+#include <unistd.h>
+#include <zlib.h>
+
+namespace sim::rt {
+
+namespace {
+
+uint64_t alignUp(uint64_t value) {
+  return (value + kCheckpointAlignment - 1) / kCheckpointAlignment *
+         kCheckpointAlignment;
+}
+
+/// zlib's crc32 over any number of bytes (it takes at most UINT_MAX at a
+/// time).
+uint32_t crcUpdate(uint32_t crc, const uint8_t *data, size_t size) {
+  while (size > 0) {
+    size_t chunk = std::min<size_t>(size, size_t(1) << 30);
+    crc = uint32_t(crc32(crc, data, uInt(chunk)));
+    data += chunk;
+    size -= chunk;
+  }
+  return crc;
+}
+
+std::string hex32(uint32_t value) {
+  char text[16];
+  std::snprintf(text, sizeof text, "0x%08x", value);
+  return text;
+}
+
+schema::Value toSchema(const Value &value) {
+  return schema::Value(value.i, value.f, value.type);
+}
+
+bool sameValue(const Value &a, const Value &b) {
+  return a.type == b.type && a.bits() == b.bits();
+}
+
+/// The scene buffer called `name` (the state buffers are scene buffers).
+const schema::BufferT &sceneBuffer(const Executor &executor,
+                                   const std::string &name) {
+  for (const auto &buffer : executor.scene().buffers)
+    if (buffer->name == name)
+      return *buffer;
+  fail(SIM_ERROR_BACKEND, "'" + name + "' is not a buffer of the scene");
+}
+
+/// Writes all of `data` at the fd's offset.
+void writeAll(int fd, const uint8_t *data, size_t size,
+              const std::string &name) {
+  while (size > 0) {
+    ssize_t written = ::write(fd, data, size);
+    if (written < 0 && errno == EINTR)
+      continue;
+    if (written <= 0)
+      fail(SIM_ERROR_IO,
+           "cannot write checkpoint '" + name + "': " + std::strerror(errno));
+    data += written;
+    size -= size_t(written);
+  }
+}
+
+} // namespace
+
+//===----------------------------------------------------------------------===//
+// Writing
+//===----------------------------------------------------------------------===//
+
+void writeCheckpoint(Executor &executor, int fd, const std::string &name) {
+  off_t start = lseek(fd, 0, SEEK_CUR);
+  if (start < 0)
+    fail(SIM_ERROR_IO, "cannot write checkpoint '" + name +
+                           "': the file is not seekable (" +
+                           std::strerror(errno) + ")");
+  // The clock first: it initialises a session without a state and refuses
+  // one that is not on a big-step boundary.
+  std::vector<int64_t> clock = executor.checkpointClock();
+  const Bundle &bundle = executor.sourceBundle();
+  const Settings &settings = executor.currentSettings();
+  bool reference = executor.backendKind() == SIM_BACKEND_REFERENCE;
+
+  ckpt::CheckpointT manifest;
+  manifest.bundle_crc = bundle.checksum;
+  manifest.scene = executor.scene().name;
+  manifest.strategy = executor.strategy();
+  manifest.executor =
+      reference ? ckpt::Executor::Reference : ckpt::Executor::Plan;
+  manifest.group_size = executor.groupSize();
+  manifest.range = settings.range;
+  manifest.dt = std::make_unique<schema::Value>(toSchema(settings.dt));
+  for (size_t p = 0; p < executor.scene().params.size(); ++p) {
+    auto setting = std::make_unique<ckpt::SettingT>();
+    setting->name = executor.scene().params[p]->name;
+    setting->value =
+        std::make_unique<schema::Value>(toSchema(settings.params[p]));
+    manifest.params.push_back(std::move(setting));
+  }
+  manifest.time = executor.time();
+  manifest.clock = clock;
+  uint64_t offset = 0;
+  std::vector<std::string> names = executor.stateBuffers();
+  for (const std::string &buffer : names) {
+    auto state = std::make_unique<ckpt::StateT>();
+    state->name = buffer;
+    state->element = std::make_unique<schema::Element>(
+        *sceneBuffer(executor, buffer).element);
+    state->offset = offset;
+    state->bytes = executor.hostBytes(buffer);
+    offset += alignUp(state->bytes);
+    manifest.buffers.push_back(std::move(state));
+  }
+  manifest.producer =
+      std::string("sim runtime, ") +
+      (reference ? "reference executor"
+                 : std::string("plan executor on ") +
+                       sim_backend_name(executor.backendKind()));
+
+  flatbuffers::FlatBufferBuilder builder;
+  ckpt::FinishSizePrefixedCheckpointBuffer(
+      builder, ckpt::Checkpoint::Pack(builder, &manifest));
+
+  // The header last, once the CRC is known: zeros in its place until then.
+  std::vector<uint8_t> placeholder(schema::kHeaderSize, 0);
+  writeAll(fd, placeholder.data(), placeholder.size(), name);
+  uint32_t crc = uint32_t(crc32(0L, Z_NULL, 0));
+  uint64_t size = schema::kHeaderSize;
+  auto emit = [&](const uint8_t *data, size_t bytes) {
+    writeAll(fd, data, bytes, name);
+    crc = crcUpdate(crc, data, bytes);
+    size += bytes;
+  };
+  std::vector<uint8_t> zeros(kCheckpointAlignment, 0);
+  auto pad = [&] { emit(zeros.data(), size_t(alignUp(size) - size)); };
+  emit(builder.GetBufferPointer(), builder.GetSize());
+  pad();
+  std::vector<uint8_t> data;
+  for (const std::string &buffer : names) {
+    data.resize(executor.hostBytes(buffer));
+    executor.getBuffer(buffer, data.data(), data.size());
+    emit(data.data(), data.size());
+    pad();
+  }
+
+  schema::Header header;
+  header.version = kCheckpointVersion;
+  header.checksum = crc;
+  header.size = size;
+  std::string encoded = schema::encodeHeader(header);
+  std::memcpy(encoded.data(), kCheckpointMagic, sizeof kCheckpointMagic);
+  if (pwrite(fd, encoded.data(), encoded.size(), start) !=
+      ssize_t(encoded.size()))
+    fail(SIM_ERROR_IO,
+         "cannot write checkpoint '" + name + "': " + std::strerror(errno));
+}
+
+void writeCheckpointFile(Executor &executor, const std::string &path) {
+  size_t slash = path.rfind('/');
+  std::string dir = slash == std::string::npos ? "."
+                    : slash == 0               ? "/"
+                                               : path.substr(0, slash);
+  std::string base = slash == std::string::npos ? path : path.substr(slash + 1);
+  if (base.empty())
+    fail(SIM_ERROR_INVALID_ARGUMENT,
+         "checkpoint path '" + path + "' names a folder, not a file");
+  // A new file beside the destination (O_EXCL, so never through a symlink
+  // or onto another file), with 0666 less the umask like any new file.
+  std::random_device random;
+  std::string temporary;
+  int fd = -1;
+  for (int attempt = 0; attempt < 100 && fd < 0; ++attempt) {
+    char suffix[16];
+    std::snprintf(suffix, sizeof suffix, "%08x", unsigned(random()));
+    temporary = dir + "/." + base + "." + suffix + ".tmp";
+    fd = open(temporary.c_str(),
+              O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC | O_NOFOLLOW, 0666);
+    if (fd < 0 && errno != EEXIST)
+      break;
+  }
+  if (fd < 0)
+    fail(SIM_ERROR_IO, "cannot create a temporary file in '" + dir +
+                           "' for checkpoint '" + path +
+                           "': " + std::strerror(errno));
+  try {
+    writeCheckpoint(executor, fd, path);
+    if (fsync(fd) != 0)
+      fail(SIM_ERROR_IO, "cannot write checkpoint '" + path +
+                             "' (fsync): " + std::strerror(errno));
+    if (close(fd) != 0) {
+      fd = -1;
+      fail(SIM_ERROR_IO, "cannot write checkpoint '" + path +
+                             "' (close): " + std::strerror(errno));
+    }
+    fd = -1;
+    if (rename(temporary.c_str(), path.c_str()) != 0)
+      fail(SIM_ERROR_IO, "cannot rename '" + temporary + "' to '" + path +
+                             "': " + std::strerror(errno));
+  } catch (...) {
+    if (fd >= 0)
+      close(fd);
+    unlink(temporary.c_str());
+    throw;
+  }
+  // The rename itself, on disk.
+  int dirFd = open(dir.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+  if (dirFd >= 0) {
+    fsync(dirFd);
+    close(dirFd);
+  }
+}
+
+//===----------------------------------------------------------------------===//
+// Reading
+//===----------------------------------------------------------------------===//
+
+CheckpointFile parseCheckpoint(std::vector<uint8_t> bytes,
+                               const std::string &name) {
+  const std::string where = "checkpoint '" + name + "': ";
+  auto error = [&](const std::string &message) {
+    fail(SIM_ERROR_CHECKPOINT, where + message);
+  };
+  size_t size = bytes.size();
+  const uint8_t *file = bytes.data();
+  if (size < sizeof kCheckpointMagic)
+    error("the file has " + std::to_string(size) +
+          " bytes, too few for a checkpoint (truncated?)");
+  if (std::memcmp(file, kCheckpointMagic, sizeof kCheckpointMagic) != 0)
+    error(schema::hasMagic(file, size)
+              ? "it is a bundle, not a checkpoint"
+              : "not a sim checkpoint (wrong magic; expected "
+                "\"SIMCKPT\\0\")");
+  if (size < schema::kHeaderSize)
+    error("the file has " + std::to_string(size) + " bytes, fewer than the " +
+          std::to_string(schema::kHeaderSize) + "-byte header (truncated?)");
+  schema::Header header = schema::decodeHeader(file);
+  if (header.version != kCheckpointVersion)
+    error("format version " + std::to_string(header.version) +
+          " is not supported (this runtime reads version " +
+          std::to_string(kCheckpointVersion) + ")");
+  if (header.size != size)
+    error("the header gives a file size of " + std::to_string(header.size) +
+          " bytes but the file has " + std::to_string(size) +
+          (header.size > size ? " (truncated?)" : ""));
+  if (header.reserved != 0)
+    error("the reserved header field is not zero (damaged?)");
+  uint32_t crc =
+      crcUpdate(uint32_t(crc32(0L, Z_NULL, 0)), file + schema::kHeaderSize,
+                size - schema::kHeaderSize);
+  if (crc != header.checksum)
+    error("the checksum does not match its contents (CRC-32 " + hex32(crc) +
+          ", the header says " + hex32(header.checksum) +
+          "): the file is damaged");
+
+  // The manifest: a 4-byte size, then the FlatBuffer.
+  uint64_t left = size - schema::kHeaderSize;
+  if (left < 4)
+    error("the file ends before its manifest");
+  uint64_t manifestBytes = 4 + uint64_t(file[32]) + (uint64_t(file[33]) << 8) +
+                           (uint64_t(file[34]) << 16) +
+                           (uint64_t(file[35]) << 24);
+  if (manifestBytes > left)
+    error("the manifest's size (" + std::to_string(manifestBytes) +
+          " bytes) runs past the end of the file");
+  // FlatBuffers reads scalars in place: an aligned copy.
+  std::vector<uint8_t> aligned(file + schema::kHeaderSize,
+                               file + schema::kHeaderSize + manifestBytes);
+  flatbuffers::Verifier::Options options;
+  options.max_depth = 16;
+  options.max_tables = 1000000;
+  flatbuffers::Verifier verifier(aligned.data(), aligned.size(), options);
+  if (!ckpt::SizePrefixedCheckpointBufferHasIdentifier(aligned.data()))
+    error("the manifest is not a checkpoint FlatBuffer (wrong identifier)");
+  if (!ckpt::VerifySizePrefixedCheckpointBuffer(verifier))
+    error("the manifest does not verify as a checkpoint FlatBuffer (an "
+          "offset, length or nesting outside it)");
+  CheckpointFile result;
+  result.name = name;
+  ckpt::GetSizePrefixedCheckpoint(aligned.data())->UnPackTo(&result.manifest);
+  result.dataStart = alignUp(schema::kHeaderSize + manifestBytes);
+  if (result.dataStart > size)
+    error("the file ends before its data");
+  uint64_t dataBytes = size - result.dataStart;
+  for (const auto &state : result.manifest.buffers)
+    if (state->offset > dataBytes || state->bytes > dataBytes - state->offset)
+      error("the state of buffer '" + state->name + "' (" +
+            std::to_string(state->bytes) + " bytes at " +
+            std::to_string(state->offset) + ") runs past the end of the file");
+  result.bytes = std::move(bytes);
+  return result;
+}
+
+CheckpointFile readCheckpoint(const std::string &path) {
+  int fd = open(path.c_str(), O_RDONLY | O_CLOEXEC);
+  if (fd < 0)
+    fail(SIM_ERROR_IO,
+         "cannot open checkpoint '" + path + "': " + std::strerror(errno));
+  struct stat info;
+  if (fstat(fd, &info) != 0 || !S_ISREG(info.st_mode)) {
+    close(fd);
+    fail(SIM_ERROR_IO,
+         "cannot read checkpoint '" + path + "': it is not a regular file");
+  }
+  std::vector<uint8_t> bytes(size_t(info.st_size));
+  size_t done = 0;
+  while (done < bytes.size()) {
+    ssize_t n = ::read(fd, bytes.data() + done, bytes.size() - done);
+    if (n < 0 && errno == EINTR)
+      continue;
+    if (n < 0) {
+      int error = errno;
+      close(fd);
+      fail(SIM_ERROR_IO,
+           "cannot read checkpoint '" + path + "': " + std::strerror(error));
+    }
+    if (n == 0)
+      break; // Shrunk while reading: the header check reports it.
+    done += size_t(n);
+  }
+  close(fd);
+  bytes.resize(done);
+  return parseCheckpoint(std::move(bytes), path);
+}
+
+//===----------------------------------------------------------------------===//
+// Restarting
+//===----------------------------------------------------------------------===//
+
+void restartFromCheckpoint(Executor &executor, const CheckpointFile &file) {
+  const ckpt::CheckpointT &m = file.manifest;
+  const Bundle &bundle = executor.sourceBundle();
+  const schema::SceneT &scene = executor.scene();
+  const Settings &settings = executor.currentSettings();
+  bool planSession = executor.backendKind() != SIM_BACKEND_REFERENCE;
+  const std::string where = "checkpoint '" + file.name + "' ";
+  auto refuse = [&](const std::string &message) {
+    fail(SIM_ERROR_CHECKPOINT, where + message);
+  };
+  auto here = [&](const std::string &what) { return ", this session " + what; };
+
+  // What the run belongs to.
+  if (m.scene != scene.name)
+    refuse("is of scene '" + m.scene + "'" + here("runs scene '") + scene.name +
+           "'");
+  if (m.bundle_crc != bundle.checksum)
+    refuse("belongs to another bundle of scene '" + scene.name +
+           "' (its bundle's CRC-32 is " + hex32(m.bundle_crc) + ", that of '" +
+           bundle.name + "' is " + hex32(bundle.checksum) +
+           "): the scene was compiled again or differently");
+  if (planSession && m.executor == ckpt::Executor::Reference)
+    refuse("was written by the reference executor, which keeps no device "
+           "clock; restart it on the reference executor");
+  if (m.strategy != executor.strategy())
+    refuse(std::string("was written under strategy '") +
+           strategyName(m.strategy) + "'" + here("runs '") +
+           strategyName(executor.strategy()) + "'");
+  if (m.group_size != executor.groupSize())
+    refuse("was written with group size " + std::to_string(m.group_size) +
+           here("has ") + std::to_string(executor.groupSize()) +
+           " (the group size decides the sub-steps)");
+  if (m.range != settings.range)
+    refuse("was written at range " + std::to_string(m.range) +
+           here("has range ") + std::to_string(settings.range));
+  Value dt = Value::of(*m.dt);
+  if (!sameValue(dt, settings.dt))
+    refuse("was written with dt " + dt.text() + here("has dt ") +
+           settings.dt.text());
+  for (const auto &setting : m.params)
+    if (bundle.findParam(setting->name) < 0)
+      refuse("sets parameter '" + setting->name + "', which scene '" +
+             scene.name + "' does not declare");
+  for (size_t p = 0; p < scene.params.size(); ++p) {
+    const std::string &param = scene.params[p]->name;
+    auto it = std::find_if(m.params.begin(), m.params.end(),
+                           [&](const auto &s) { return s->name == param; });
+    if (it == m.params.end())
+      refuse("has no value of parameter '" + param + "'");
+    Value value = Value::of(*(*it)->value);
+    if (!sameValue(value, settings.params[p]))
+      refuse("was written with " + param + " = " + value.text() +
+             here("has " + param + " = ") + settings.params[p].text());
+  }
+
+  // The clock: on a big-step boundary, and the plan's.
+  if (m.time < 0)
+    refuse("is at base step " + std::to_string(m.time) + " (damaged?)");
+  std::vector<int64_t> clock = m.clock;
+  if (m.executor == ckpt::Executor::Plan) {
+    if (clock.size() <= size_t(kSlotParity) || clock[kSlotBegin] != m.time)
+      refuse("has a clock that does not hold its time (damaged?)");
+    if (clock[kSlotSize] != 0 || (clock[kSlotParity] & ~int64_t(1)) != 0)
+      refuse("is not on a big-step boundary (m = " +
+             std::to_string(clock[kSlotSize]) +
+             ", parity = " + std::to_string(clock[kSlotParity]) + ")");
+  }
+  size_t slots = executor.clockSlots();
+  if (planSession && clock.size() != slots)
+    refuse("has a clock of " + std::to_string(clock.size()) +
+           " slots, the plan's has " + std::to_string(slots));
+  if (!planSession)
+    clock.clear();
+
+  // Every buffer of the state, and nothing else when the executor is the
+  // same kind.
+  std::vector<std::string> names = executor.stateBuffers();
+  std::vector<const ckpt::StateT *> states;
+  for (const std::string &name : names) {
+    auto it = std::find_if(m.buffers.begin(), m.buffers.end(),
+                           [&](const auto &s) { return s->name == name; });
+    if (it == m.buffers.end())
+      refuse("has no state of buffer '" + name + "'");
+    const ckpt::StateT &state = **it;
+    const schema::Element &element = *sceneBuffer(executor, name).element;
+    if (*state.element != element)
+      refuse("holds buffer '" + name + "' as " + elementText(*state.element) +
+             ", the scene declares " + elementText(element));
+    if (state.bytes != executor.hostBytes(name))
+      refuse("holds " + std::to_string(state.bytes) + " bytes of buffer '" +
+             name + "', a state of range " + std::to_string(settings.range) +
+             " takes " + std::to_string(executor.hostBytes(name)));
+    states.push_back(&state);
+  }
+  bool sameKind = planSession == (m.executor == ckpt::Executor::Plan);
+  if (sameKind)
+    for (const auto &state : m.buffers)
+      if (std::find(names.begin(), names.end(), state->name) == names.end())
+        refuse("holds buffer '" + state->name + "', which this session's " +
+               (planSession ? "plan" : "reference model") + " does not have");
+
+  // Only now: the state.
+  executor.restoreClock(m.time, clock);
+  for (size_t b = 0; b < names.size(); ++b)
+    executor.setBuffer(names[b], file.data(*states[b]),
+                       size_t(states[b]->bytes));
+}
+
+} // namespace sim::rt
