@@ -145,15 +145,14 @@ __host__ __device__ __forceinline__ uint64_t splitmix64(uint64_t z) {
   return z ^ (z >> 31);
 }
 
-/// The scenes' vector.fma as sim compiles it: MLIR lowers it to
-/// llvm.fmuladd, which the NVPTX backend fuses into fma.rn and generic
-/// x86-64 (sim's CPU kernels) computes as a multiply and an add. The host
-/// build is compiled with -ffp-contract=off, so it does the same.
+/// The scenes' vector.fma: one rounding on every backend of sim
+/// (--sim-fused-multiply-add lowers it to llvm.intr.fma), so fma.rn here
+/// and libm's correctly rounded fmaf in the host build.
 __device__ __forceinline__ float fmaLikeSim(float a, float b, float c) {
 #ifdef __CUDACC__
   return __fmaf_rn(a, b, c);
 #else
-  return a * b + c;
+  return std::fma(a, b, c);
 #endif
 }
 /// The init body of buffer `seed` at item i: four floats in [-1, 1).

@@ -6,6 +6,8 @@
 //
 //   nvvm-attach-target{chip features O}     #nvvm.target on every gpu.module
 //   gpu.module(
+//     sim-fused-multiply-add                vector.fma to llvm.intr.fma (one
+//                                           rounding on every backend)
 //     convert-scf-to-cf                     loops and ifs to blocks
 //     expand-strided-metadata               subviews to reinterpret_casts
 //     convert-gpu-to-nvvm{has-redux}        gpu, arith, cf, memref, vector,
@@ -23,6 +25,7 @@
 //
 //===----------------------------------------------------------------------===//
 
+#include "sim/Conversion/Passes.h"
 #include "sim/Pipelines/Pipelines.h"
 #include "sim/Target/PTX/Passes.h"
 
@@ -98,6 +101,7 @@ void mlir::sim::buildSimGPUToPTXPipeline(OpPassManager &pm,
   pm.addPass(createGpuNVVMAttachTarget(attach));
 
   OpPassManager &kernels = pm.nest<gpu::GPUModuleOp>();
+  kernels.addPass(createSimFusedMultiplyAdd());
   kernels.addPass(createSCFToControlFlowPass());
   kernels.addPass(memref::createExpandStridedMetadataPass());
   ConvertGpuOpsToNVVMOpsOptions toNVVM;

@@ -69,7 +69,14 @@ TranslationOptions::TranslationOptions()
                                "pairs, comma-separated, set on the scene "
                                "before it is compiled, as --sim-set-params "
                                "does (max_steps, range, dt, parameters)"),
-                llvm::cl::CommaSeparated, llvm::cl::cat(category)) {}
+                llvm::cl::CommaSeparated, llvm::cl::cat(category)),
+      cpuIsas("sim-cpu-isas",
+              llvm::cl::desc("--sim-to-bundle: the x86-64 levels to compile "
+                             "the CPU kernels for, comma-separated, each a "
+                             "shared object; the runtime runs the highest "
+                             "the CPU has (x86-64, x86-64-v2, x86-64-v3, "
+                             "x86-64-v4; default x86-64,x86-64-v3)"),
+              llvm::cl::CommaSeparated, llvm::cl::cat(category)) {}
 
 GPUTargetOptions TranslationOptions::getGPUTarget() const {
   GPUTargetOptions target;

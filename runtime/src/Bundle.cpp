@@ -14,6 +14,7 @@
 
 #include "sim/Runtime/BundleFormat.h"
 
+#include <algorithm>
 #include <cerrno>
 #include <cmath>
 #include <cstdio>
@@ -132,6 +133,98 @@ const char *hostIsa() {
 #endif
 }
 
+const std::vector<std::string> &knownIsas() {
+#if defined(__x86_64__)
+  // The x86-64 microarchitecture levels of the psABI, as the compiler
+  // names them (getCPUIsaLevels()), most portable first.
+  static const std::vector<std::string> levels = {"x86-64", "x86-64-v2",
+                                                  "x86-64-v3", "x86-64-v4"};
+#else
+  static const std::vector<std::string> levels = {hostIsa()};
+#endif
+  return levels;
+}
+
+namespace {
+
+/// Whether this CPU (and its operating system, which must save the wider
+/// registers) runs code of `level`.
+bool cpuSupports(const std::string &level) {
+#if defined(__x86_64__)
+  __builtin_cpu_init();
+  if (level == "x86-64")
+    return true;
+  if (level == "x86-64-v2")
+    return __builtin_cpu_supports("x86-64-v2");
+  if (level == "x86-64-v3")
+    return __builtin_cpu_supports("x86-64-v3");
+  if (level == "x86-64-v4")
+    return __builtin_cpu_supports("x86-64-v4");
+  return false;
+#else
+  return level == hostIsa();
+#endif
+}
+
+std::string joinNames(const std::vector<std::string> &names) {
+  std::string text;
+  for (const std::string &name : names)
+    text += (text.empty() ? "" : ", ") + name;
+  return text;
+}
+
+/// What a level adds that code of it may use, for messages.
+const char *isaFeatures(const std::string &level) {
+  if (level == "x86-64-v2")
+    return "SSE4.2, POPCNT";
+  if (level == "x86-64-v3")
+    return "AVX2, FMA, BMI2";
+  if (level == "x86-64-v4")
+    return "AVX-512 F/BW/CD/DQ/VL";
+  return "";
+}
+
+} // namespace
+
+std::vector<std::string> hostIsas() {
+  const std::vector<std::string> &known = knownIsas();
+  size_t cap = known.size();
+  if (const char *limit = std::getenv("SIM_CPU_ISA"); limit && *limit) {
+    auto found = std::find(known.begin(), known.end(), limit);
+    if (found == known.end())
+      fail(SIM_ERROR_INVALID_ARGUMENT,
+           std::string("SIM_CPU_ISA=") + limit +
+               " is not an instruction-set level of this machine (" +
+               joinNames(known) + ")");
+    cap = size_t(found - known.begin()) + 1;
+  }
+  std::vector<std::string> levels;
+  for (size_t i = cap; i-- > 0;)
+    if (cpuSupports(known[i]))
+      levels.push_back(known[i]);
+  return levels;
+}
+
+std::string missingIsaMessage(const schema::PlanT &plan) {
+  std::vector<std::string> present;
+  for (const auto &code : plan.cpu)
+    present.push_back(code->isa);
+  if (present.empty())
+    return "it has no CPU kernels";
+  const char *limit = std::getenv("SIM_CPU_ISA");
+  std::string message = "it has CPU kernels for " + joinNames(present) +
+                        " only, and this CPU runs none of them";
+  if (limit && *limit)
+    message += std::string(" at SIM_CPU_ISA=") + limit + " or below";
+  for (const std::string &isa : present)
+    if (std::find(knownIsas().begin(), knownIsas().end(), isa) !=
+            knownIsas().end() &&
+        !cpuSupports(isa) && *isaFeatures(isa))
+      message += " (" + isa + " needs " + isaFeatures(isa) + ")";
+  return message +
+         "; recompile with sim-translate --sim-cpu-isas=" + knownIsas().front();
+}
+
 //===----------------------------------------------------------------------===//
 // Elements and values
 //===----------------------------------------------------------------------===//
@@ -228,9 +321,12 @@ std::vector<Strategy> Bundle::strategies() const {
 }
 
 const schema::CpuCodeT *Bundle::cpuCode(const schema::PlanT &plan) const {
-  for (const auto &code : plan.cpu)
-    if (code->isa == hostIsa())
-      return code.get();
+  // The highest level the CPU runs: every level computes the same bits
+  // (docs/Bundle.md), the higher ones faster.
+  for (const std::string &isa : hostIsas())
+    for (const auto &code : plan.cpu)
+      if (code->isa == isa)
+        return code.get();
   return nullptr;
 }
 

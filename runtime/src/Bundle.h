@@ -141,7 +141,8 @@ struct Bundle {
   const schema::ReferenceT *reference() const {
     return contents.reference.get();
   }
-  /// The CPU code of `plan` for this machine, or null.
+  /// The CPU code of `plan` for the highest instruction-set level this
+  /// machine runs (hostIsas()), or null.
   const schema::CpuCodeT *cpuCode(const schema::PlanT &plan) const;
 
   /// What the C API hands out as strings: per scene buffer its element and
@@ -169,8 +170,17 @@ const schema::PhaseT *findPhase(const schema::PlanT &plan, PhaseKind kind);
 /// the offending table.
 void verifyBundle(const schema::BundleT &bundle);
 
-/// The ISA name of this machine's CPU code ("x86-64", "aarch64").
+/// The portable instruction-set level of this machine's architecture
+/// ("x86-64", "aarch64"): what the reference functions are compiled for.
 const char *hostIsa();
+/// Every instruction-set level of this architecture the compiler knows
+/// (sim-translate --sim-cpu-isas), most portable first.
+const std::vector<std::string> &knownIsas();
+/// The levels this CPU runs, best first, capped by $SIM_CPU_ISA when it is
+/// set (throws SIM_ERROR_INVALID_ARGUMENT for a level it does not know).
+std::vector<std::string> hostIsas();
+/// Why no CPU code of `plan` runs here, and what to do, for messages.
+std::string missingIsaMessage(const schema::PlanT &plan);
 
 } // namespace sim::rt
 

@@ -145,7 +145,8 @@ public:
 
   std::string device() const override {
     return "CPU (" + std::to_string(pool.size()) +
-           (pool.size() == 1 ? " thread)" : " threads)");
+           (pool.size() == 1 ? " thread" : " threads") +
+           (isa.empty() ? "" : ", " + isa) + ")";
   }
 
   int64_t memoryBytes() const override { return physicalMemoryBytes(); }
@@ -164,8 +165,9 @@ public:
                        strategyName(plan.strategy) + "'";
     const schema::CpuCodeT *code = bundle.cpuCode(plan);
     if (!code)
-      fail(SIM_ERROR_BUNDLE,
-           "bundle '" + bundle.name + "' has no " + what + " for " + hostIsa());
+      fail(SIM_ERROR_BUNDLE, "cannot load " + what + " of bundle '" +
+                                 bundle.name + "': " + missingIsaMessage(plan));
+    isa = code->isa;
     library = std::make_unique<SharedObject>(code->object, what);
     for (const auto &kernel : plan.kernels) {
       std::string symbol = "sim_cpu_" + kernel->name;
@@ -221,6 +223,8 @@ public:
 private:
   ThreadPool pool;
   std::unique_ptr<SharedObject> library;
+  /// The instruction-set level of the loaded kernels ("x86-64-v3", ...).
+  std::string isa;
   std::vector<KernelFn> kernels;
   std::chrono::steady_clock::duration kernelTime{};
 };

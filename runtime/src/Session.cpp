@@ -81,26 +81,28 @@ Session::Session(std::shared_ptr<const Bundle> bundleIn,
     }
     if (!backend && !cpu)
       fail(SIM_ERROR_BUNDLE, "cannot run strategy '" + name + "' of bundle '" +
-                                 bundle->name + "': " + note +
-                                 ", and it has no CPU code for it either");
+                                 bundle->name + "': " + note + ", and " +
+                                 missingIsaMessage(*plan_));
     if (!backend)
       backend = createCpuBackend(options.cpu_threads);
     break;
   case SIM_BACKEND_CPU:
     if (!cpu)
-      noCode((std::string("CPU code for ") + hostIsa()).c_str(), "CPU");
+      fail(SIM_ERROR_BUNDLE, "cannot run strategy '" + name + "' of bundle '" +
+                                 bundle->name +
+                                 "' on the CPU: " + missingIsaMessage(*plan_));
     backend = createCpuBackend(options.cpu_threads);
     break;
   default:
     fail(SIM_ERROR_INVALID_ARGUMENT,
          "unknown backend " + std::to_string(int(options.backend)));
   }
-  deviceName = backend->device();
-
   setMemoryLimit(options.max_memory, backend->memoryBytes());
   groupSize_ = options.group_size ? options.group_size : plan_->group_size;
   backend->checkGroupSize(groupSize_);
   backend->load(*bundle, *plan_);
+  // After load: the CPU backend names the instruction-set level it loaded.
+  deviceName = backend->device();
   for (const auto &phase : plan_->phases)
     hasPhase[int(phase->kind)] = true;
 

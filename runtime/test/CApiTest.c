@@ -93,7 +93,8 @@ int sim_c_api_test(const char *path, char *message, size_t capacity) {
   sim_bundle_close(bundle);
   bundle = NULL;
   CHECK(sim_session_backend(session) == SIM_BACKEND_CPU);
-  CHECK(strcmp(sim_session_device(session), "CPU (2 threads)") == 0);
+  CHECK(strncmp(sim_session_device(session), "CPU (2 threads, x86-64", 22) ==
+        0);
   CHECK(sim_session_group_size(session) == 32);
   CHECK(sim_session_set(session, "k", "1") == SIM_OK);
   CHECK(sim_session_set(session, "q", "1") == SIM_ERROR_INVALID_ARGUMENT);

@@ -70,7 +70,8 @@ void expectX(Session &session, int64_t steps, double k = 2, double dt = 0.01) {
 TEST(Executor, SimpleRunMatchesTheClosedForm) {
   Session session(decay(), cpuOptions(SIM_STRATEGY_SIMPLE));
   EXPECT_EQ(session.backendKind(), SIM_BACKEND_CPU);
-  EXPECT_EQ(session.device(), "CPU (3 threads)");
+  // The test bundle carries generic x86-64 code only.
+  EXPECT_EQ(session.device(), "CPU (3 threads, x86-64)");
   EXPECT_EQ(session.groupSize(), 32);
   session.run(37);
   EXPECT_EQ(session.time(), 37);
@@ -397,8 +398,8 @@ TEST(Executor, NamesTheCodeABackendLacks) {
   auto noCpu = parseBytes(serialize(contents), "decay.simb");
   EXPECT_NE(errorOf([&] { Session s(noCpu, cpuOptions(SIM_STRATEGY_HIP)); },
                     SIM_ERROR_BUNDLE)
-                .find("has no CPU code for x86-64 for strategy 'hip'; the CPU "
-                      "backend needs it"),
+                .find("cannot run strategy 'hip' of bundle 'decay.simb' on the "
+                      "CPU: it has no CPU kernels"),
             std::string::npos);
   // CPU code for another machine only is no CPU code for this one.
   planOf(contents, Strategy::Hip).cpu =
@@ -407,13 +408,15 @@ TEST(Executor, NamesTheCodeABackendLacks) {
   auto otherIsa = parseBytes(serialize(contents), "decay.simb");
   EXPECT_NE(errorOf([&] { Session s(otherIsa, cpuOptions(SIM_STRATEGY_HIP)); },
                     SIM_ERROR_BUNDLE)
-                .find("has no CPU code for x86-64 for strategy 'hip'"),
+                .find("it has CPU kernels for riscv64 only, and this CPU runs "
+                      "none of them; recompile with sim-translate "
+                      "--sim-cpu-isas=x86-64"),
             std::string::npos);
   sim_session_options automatic = cpuOptions(SIM_STRATEGY_HIP);
   automatic.backend = SIM_BACKEND_AUTO;
   EXPECT_NE(errorOf([&] { Session s(noCpu, automatic); }, SIM_ERROR_BUNDLE)
                 .find("the bundle has no PTX for strategy 'hip', and it has no "
-                      "CPU code for it either"),
+                      "CPU kernels"),
             std::string::npos);
 }
 

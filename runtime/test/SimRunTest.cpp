@@ -378,7 +378,8 @@ TEST_F(SimRun, RunsAndPrintsTheTable) {
   ASSERT_EQ(result.status, 0) << result.output;
   const std::string &out = result.output;
   EXPECT_TRUE(
-      contains(out, "scene decay, strategy hip, backend cpu: CPU (2 threads)"))
+      contains(out, "scene decay, strategy hip, backend cpu: CPU (2 threads, "
+                    "x86-64"))
       << out;
   EXPECT_TRUE(contains(out, "range 100, dt 0.01, group size 32, 25 base steps"))
       << out;

@@ -130,4 +130,29 @@ def SimLowerToReference : Pass<"sim-lower-to-reference", "::mlir::ModuleOp"> {
   ];
 }
 
+def SimFusedMultiplyAdd : Pass<"sim-fused-multiply-add"> {
+  let summary = "Lower vector.fma to llvm.intr.fma, fused on every target";
+  let description = [{
+    `vector.fma` is a fused multiply-add: one rounding. Upstream's
+    `convert-vector-to-llvm` lowers it to `llvm.intr.fmuladd`, which LLVM may
+    fuse or not as the target finds faster: NVPTX fuses it (`fma.rn`), but
+    generic x86-64 has no FMA instruction and computes a multiply and an add,
+    so the CPU backend and the reference functions rounded twice where the
+    GPU rounded once. This pass rewrites every `vector.fma` (any rank) to
+    `llvm.intr.fma`, whose result is the correctly rounded `a * b + c` on
+    every target (one instruction where the CPU has FMA, libm's `fma` where
+    it does not). `math.fma` needs no pass: `convert-math-to-llvm` already
+    lowers it to `llvm.intr.fma`, and the GPU's libdevice `__nv_fmaf` is
+    `fma.rn`. Every backend runs this pass before its conversion to LLVM
+    (lib/Target/CPU/CPUKernels.cpp, lib/Pipelines/GPUToPTX.cpp), so the
+    backends agree bit for bit on scenes that use `vector.fma`
+    (docs/Reference.md).
+
+    ```
+    sim-opt kernels.mlir --sim-fused-multiply-add
+    ```
+  }];
+  let dependentDialects = ["::mlir::LLVM::LLVMDialect"];
+}
+
 #endif // SIM_CONVERSION_PASSES_TD

@@ -14,6 +14,7 @@
 
 #include "sim/Dialect/Sim/IR/SimAttrs.h"
 #include "sim/Pipelines/Pipelines.h"
+#include "sim/Target/CPUKernels.h"
 
 #include "mlir/IR/BuiltinOps.h"
 #include "llvm/ADT/SmallVector.h"
@@ -36,6 +37,10 @@ struct BundleOptions {
   /// strategy whose kernels call math functions gets no PTX (a warning says
   /// so): it still runs on the CPU.
   GPUTargetOptions target;
+  /// The instruction-set levels to compile the CPU kernels for, each into
+  /// its own shared object (getCPUIsaLevels()); the runtime runs the highest
+  /// one the CPU supports.
+  SmallVector<std::string, 2> cpuIsas = getDefaultCPUIsas();
 };
 
 /// Compiles the one sim.simulation in `module` for every strategy of

@@ -19,6 +19,10 @@ namespace mlir::sim {
 struct CPUKernelOptions {
   /// LLVM optimisation level (0 to 3).
   unsigned optLevel = 3;
+  /// The instruction-set level the code is for: an LLVM CPU name of the
+  /// host's architecture (`x86-64`, `x86-64-v2`, `x86-64-v3`, `x86-64-v4`).
+  /// The code runs on every CPU of that level, not only on this one.
+  std::string isa = "x86-64";
   /// The linker; found next to the LLVM tools when empty.
   std::string linker;
 };
@@ -31,12 +35,30 @@ struct CPUKernelOptions {
 FailureOr<std::string> compileCPUKernels(ModuleOp kernels,
                                          const CPUKernelOptions &options = {});
 
+/// As above, once per instruction-set level of `isas` (options.isa is not
+/// used): the kernels are lowered to LLVM IR once, then optimised and
+/// compiled for each level. Returns the objects in the order of `isas`.
+FailureOr<SmallVector<std::string>>
+compileCPUKernels(ModuleOp kernels, ArrayRef<std::string> isas,
+                  const CPUKernelOptions &options = {});
+
 /// Compiles the body functions of a reference module (what
 /// --sim-lower-to-reference makes of a simulation) into the bytes of a shared
 /// object that exports them with the C signatures of docs/Reference.md.
 FailureOr<std::string>
 compileReferenceFunctions(ModuleOp reference,
                           const CPUKernelOptions &options = {});
+
+/// The instruction-set levels the CPU kernels can be compiled for on this
+/// host's architecture, most portable first (`x86-64` ... `x86-64-v4`).
+ArrayRef<StringRef> getCPUIsaLevels();
+
+/// The levels a bundle's CPU kernels are compiled for by default: the
+/// portable `x86-64` (libm's fmaf where the scene fuses) and `x86-64-v3`
+/// (FMA and AVX2, which nearly every x86-64 CPU in use has). Not the
+/// compiling CPU's own level: a bundle is the same wherever it is compiled,
+/// and each level costs a compilation (x86-64-v4 is --sim-cpu-isas' to ask).
+SmallVector<std::string, 2> getDefaultCPUIsas();
 
 /// Registers the dialect translations the CPU compilation needs.
 void registerCPUKernelDialects(DialectRegistry &registry);

@@ -47,6 +47,9 @@ struct TranslationOptions {
   /// --sim-set-params: name=value pairs that --sim-set-params applies to
   /// the scene before it is compiled (max_steps, range, dt, parameters).
   llvm::cl::list<std::string> setParams;
+  /// --sim-cpu-isas: the instruction-set levels of --sim-to-bundle's CPU
+  /// kernels (empty: BundleOptions' default).
+  llvm::cl::list<std::string> cpuIsas;
 
   /// The GPU back end's target the flags describe.
   GPUTargetOptions getGPUTarget() const;

@@ -55,8 +55,9 @@ namespace fb = ::sim::bundle;
 
 namespace {
 
-/// The instruction-set level of the CPU shared objects (generic x86-64).
-constexpr StringLiteral kCpuIsa = "x86-64";
+/// The instruction-set level of the reference functions: the portable one
+/// (they are the oracle, not the fast path).
+constexpr StringLiteral kReferenceIsa = "x86-64";
 /// What wrote the bundle.
 constexpr StringLiteral kProducer =
     "sim-translate (LLVM " LLVM_VERSION_STRING ")";
@@ -782,15 +783,20 @@ public:
       return cpuPlan->emitOpError()
              << "names the kernels " << cpuPlan->getKernelsAttr()
              << ", which are not a module of CPU kernels";
+    // One shared object per instruction-set level: the same kernels, the
+    // same bits (docs/Bundle.md), faster code where the CPU has more.
     CPUKernelOptions cpuOptions;
     cpuOptions.optLevel = options.target.optLevel;
-    FailureOr<std::string> library = compileCPUKernels(kernels, cpuOptions);
-    if (failed(library))
+    FailureOr<SmallVector<std::string>> libraries =
+        compileCPUKernels(kernels, options.cpuIsas, cpuOptions);
+    if (failed(libraries))
       return failure();
-    auto object = std::make_unique<fb::CpuCodeT>();
-    object->isa = kCpuIsa.str();
-    object->object.assign(library->begin(), library->end());
-    code.plan->cpu.push_back(std::move(object));
+    for (auto [isa, library] : llvm::zip_equal(options.cpuIsas, *libraries)) {
+      auto object = std::make_unique<fb::CpuCodeT>();
+      object->isa = isa;
+      object->object.assign(library.begin(), library.end());
+      code.plan->cpu.push_back(std::move(object));
+    }
     return success();
   }
 
@@ -822,7 +828,7 @@ public:
         compileReferenceFunctions(functions, cpuOptions);
     if (failed(compiled))
       return failure();
-    reference.isa = kCpuIsa.str();
+    reference.isa = kReferenceIsa.str();
     reference.object.assign(compiled->begin(), compiled->end());
     return success();
   }
@@ -960,6 +966,19 @@ LogicalResult mlir::sim::writeBundle(ModuleOp module,
   if (options.groupSize <= 0)
     return emitError(simulation.getLoc())
            << "the group size must be positive, not " << options.groupSize;
+  if (options.cpuIsas.empty())
+    return emitError(simulation.getLoc())
+           << "a bundle needs CPU kernels for at least one instruction-set "
+              "level";
+  for (auto [index, isa] : llvm::enumerate(options.cpuIsas)) {
+    if (!llvm::is_contained(getCPUIsaLevels(), isa))
+      return emitError(simulation.getLoc())
+             << "unknown CPU instruction-set level '" << isa
+             << "' (known: " << llvm::join(getCPUIsaLevels(), ", ") << ")";
+    if (llvm::is_contained(ArrayRef(options.cpuIsas).take_front(index), isa))
+      return emitError(simulation.getLoc())
+             << "CPU instruction-set level '" << isa << "' is asked for twice";
+  }
 
   fb::BundleT bundle;
   bundle.producer = kProducer.str();

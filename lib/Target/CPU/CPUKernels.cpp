@@ -11,6 +11,7 @@
 //===----------------------------------------------------------------------===//
 
 #include "sim/Target/CPUKernels.h"
+#include "sim/Conversion/Passes.h"
 #include "sim/Dialect/Plan/IR/PlanOps.h"
 
 #include "mlir/Conversion/Passes.h"
@@ -22,6 +23,7 @@
 #include "mlir/Target/LLVMIR/Dialect/LLVMIR/LLVMToLLVMIRTranslation.h"
 #include "mlir/Target/LLVMIR/Export.h"
 
+#include "llvm/ADT/StringExtras.h"
 #include "llvm/IR/IRBuilder.h"
 #include "llvm/IR/LegacyPassManager.h"
 #include "llvm/IR/Module.h"
@@ -34,6 +36,7 @@
 #include "llvm/Support/TargetSelect.h"
 #include "llvm/Target/TargetMachine.h"
 #include "llvm/TargetParser/Host.h"
+#include "llvm/Transforms/Utils/Cloning.h"
 
 using namespace mlir;
 using namespace mlir::sim;
@@ -70,16 +73,31 @@ static void addEntryPoint(llvm::Module &module, llvm::Function &kernel) {
   kernel.setLinkage(llvm::Function::InternalLinkage);
 }
 
-/// Lowers `module` (func.funcs of upstream dialects, consumed) to LLVM IR,
-/// lets `finish` add to it, and compiles and links it into the bytes of a
-/// shared object whose external functions are those of the module.
-static FailureOr<std::string>
-compileSharedObject(OwningOpRef<ModuleOp> module, Location loc,
-                    const CPUKernelOptions &options,
-                    function_ref<LogicalResult(llvm::Module &)> finish) {
+/// Optimises `module` for instruction-set level `isa` and compiles and links
+/// it into the bytes of a shared object.
+static FailureOr<std::string> compileForIsa(llvm::Module &module, Location loc,
+                                            StringRef isa, unsigned optLevel,
+                                            StringRef linkerPath);
+
+/// Lowers `module` (func.funcs of upstream dialects, consumed) to LLVM IR
+/// once, lets `finish` add to it, and compiles and links it into the bytes
+/// of a shared object per level of `isas`, whose external functions are
+/// those of the module.
+static FailureOr<SmallVector<std::string>>
+compileSharedObjects(OwningOpRef<ModuleOp> module, Location loc,
+                     ArrayRef<std::string> isas, unsigned optLevel,
+                     StringRef linker,
+                     function_ref<LogicalResult(llvm::Module &)> finish) {
+  for (const std::string &isa : isas)
+    if (!llvm::is_contained(getCPUIsaLevels(), isa))
+      return emitError(loc)
+             << "unknown CPU instruction-set level '" << isa
+             << "' (known: " << llvm::join(getCPUIsaLevels(), ", ") << ")";
   (*module)->removeAttr(SymbolTable::getSymbolAttrName());
   // To the LLVM dialect with upstream conversions.
   PassManager pm(module->getContext());
+  // vector.fma rounds once here as on the GPU (not llvm.intr.fmuladd).
+  pm.addPass(createSimFusedMultiplyAdd());
   pm.addPass(createSCFToControlFlowPass());
   pm.addPass(createConvertVectorToLLVMPass());
   pm.addPass(createConvertMathToLLVMPass());
@@ -109,8 +127,26 @@ compileSharedObject(OwningOpRef<ModuleOp> module, Location loc,
   if (failed(finish(*llvmModule)))
     return failure();
 
-  // An object for the host (generic x86-64, so that it runs on another
-  // machine than the one that compiled it), position independent.
+  // One object per level, each from its own copy of the module (the
+  // optimisation pipeline depends on the target).
+  SmallVector<std::string> objects;
+  for (const std::string &isa : isas) {
+    std::unique_ptr<llvm::Module> copy = llvm::CloneModule(*llvmModule);
+    FailureOr<std::string> object =
+        compileForIsa(*copy, loc, isa, optLevel, linker);
+    if (failed(object))
+      return failure();
+    objects.push_back(std::move(*object));
+  }
+  return objects;
+}
+
+static FailureOr<std::string> compileForIsa(llvm::Module &module, Location loc,
+                                            StringRef isa, unsigned optLevel,
+                                            StringRef linkerPath) {
+  // An object for the requested instruction-set level (not for this very
+  // CPU, so that it runs on every machine of that level), position
+  // independent.
   llvm::Triple triple(llvm::sys::getDefaultTargetTriple());
   std::string error;
   const llvm::Target *target =
@@ -118,14 +154,17 @@ compileSharedObject(OwningOpRef<ModuleOp> module, Location loc,
   if (!target)
     return emitError(loc) << "no LLVM target for " << triple.str() << ": "
                           << error;
+  // FP contraction stays at its default (only llvm.fmuladd may fuse, and the
+  // kernels have none): at every level a multiply and an add round twice,
+  // an fma once, so every level computes the same bits.
   llvm::TargetOptions targetOptions;
   std::unique_ptr<llvm::TargetMachine> machine(target->createTargetMachine(
-      triple, "generic", "", targetOptions, llvm::Reloc::PIC_));
-  llvmModule->setDataLayout(machine->createDataLayout());
-  llvmModule->setTargetTriple(triple);
-  auto optimize = makeOptimizingTransformer(options.optLevel,
+      triple, isa, "", targetOptions, llvm::Reloc::PIC_));
+  module.setDataLayout(machine->createDataLayout());
+  module.setTargetTriple(triple);
+  auto optimize = makeOptimizingTransformer(optLevel,
                                             /*sizeLevel=*/0, machine.get());
-  if (llvm::Error failure = optimize(llvmModule.get()))
+  if (llvm::Error failure = optimize(&module))
     return emitError(loc) << "LLVM optimisation failed: "
                           << llvm::toString(std::move(failure));
 
@@ -142,11 +181,11 @@ compileSharedObject(OwningOpRef<ModuleOp> module, Location loc,
     if (machine->addPassesToEmitFile(codegen, object, nullptr,
                                      llvm::CodeGenFileType::ObjectFile))
       return emitError(loc) << "the host target cannot emit objects";
-    codegen.run(*llvmModule);
+    codegen.run(module);
   }
 
   // A shared object that needs libm (math bodies call it) and nothing else.
-  std::string linker = options.linker;
+  std::string linker = linkerPath.str();
   if (linker.empty()) {
     for (StringRef candidate :
          {"/usr/lib/llvm-22/bin/ld.lld", "ld.lld-22", "ld.lld"}) {
@@ -182,8 +221,30 @@ compileSharedObject(OwningOpRef<ModuleOp> module, Location loc,
   return (*library)->getBuffer().str();
 }
 
+ArrayRef<StringRef> mlir::sim::getCPUIsaLevels() {
+  // The x86-64 microarchitecture levels of the psABI; LLVM knows each as a
+  // CPU name, and the runtime tests each with __builtin_cpu_supports.
+  static const StringRef levels[] = {"x86-64", "x86-64-v2", "x86-64-v3",
+                                     "x86-64-v4"};
+  return levels;
+}
+
+SmallVector<std::string, 2> mlir::sim::getDefaultCPUIsas() {
+  return {"x86-64", "x86-64-v3"};
+}
+
 FailureOr<std::string>
 mlir::sim::compileCPUKernels(ModuleOp kernels,
+                             const CPUKernelOptions &options) {
+  FailureOr<SmallVector<std::string>> objects =
+      compileCPUKernels(kernels, {options.isa}, options);
+  if (failed(objects))
+    return failure();
+  return std::move(objects->front());
+}
+
+FailureOr<SmallVector<std::string>>
+mlir::sim::compileCPUKernels(ModuleOp kernels, ArrayRef<std::string> isas,
                              const CPUKernelOptions &options) {
   Location loc = kernels.getLoc();
   SmallVector<std::string> names;
@@ -193,8 +254,9 @@ mlir::sim::compileCPUKernels(ModuleOp kernels,
              << "is not a CPU kernel (run --sim-lower-to-cpu)";
     names.push_back(func.getSymName().str());
   }
-  return compileSharedObject(
-      OwningOpRef<ModuleOp>(cast<ModuleOp>(kernels->clone())), loc, options,
+  return compileSharedObjects(
+      OwningOpRef<ModuleOp>(cast<ModuleOp>(kernels->clone())), loc, isas,
+      options.optLevel, options.linker,
       [&](llvm::Module &llvmModule) -> LogicalResult {
         for (const std::string &name : names) {
           llvm::Function *kernel = llvmModule.getFunction(name);
@@ -211,7 +273,11 @@ FailureOr<std::string>
 mlir::sim::compileReferenceFunctions(ModuleOp reference,
                                      const CPUKernelOptions &options) {
   // The functions already have the C signatures of docs/Reference.md.
-  return compileSharedObject(
+  FailureOr<SmallVector<std::string>> objects = compileSharedObjects(
       OwningOpRef<ModuleOp>(cast<ModuleOp>(reference->clone())),
-      reference.getLoc(), options, [](llvm::Module &) { return success(); });
+      reference.getLoc(), {options.isa}, options.optLevel, options.linker,
+      [](llvm::Module &) { return success(); });
+  if (failed(objects))
+    return failure();
+  return std::move(objects->front());
 }

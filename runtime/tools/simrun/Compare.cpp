@@ -74,6 +74,10 @@ std::string displayName(const std::string &name) {
 }
 
 std::string scientific(double value, int digits) {
+  // A NaN's sign bit depends on the operations that made it (an fma or a
+  // multiply and an add, x86 or PTX): "nan" whatever it is.
+  if (std::isnan(value))
+    return "nan";
   char text[48];
   std::snprintf(text, sizeof text, "%.*e", digits, value);
   return text;

@@ -218,6 +218,9 @@ skips the rest; a second one kills it.
 
 ENVIRONMENT:
   SIM_CUDA_DRIVER             the driver library to load instead of libcuda.so.1
+  SIM_CPU_ISA                 the highest CPU instruction-set level to run
+                              (x86-64, x86-64-v2, x86-64-v3, x86-64-v4; default:
+                              the highest the CPU has and the bundle carries)
 
 WARNINGS: before the runs, a buffer whose init disagrees with its writer
 evaluated with n = 0 at t = 0 (hip interpolates from the init); after the

@@ -259,10 +259,12 @@ void printCheck(const Results &results) {
       nonFinite = "  (non-finite: backend " +
                   std::to_string(buffer.nonFiniteBackend) + ", reference " +
                   std::to_string(buffer.nonFiniteReference) + ")";
-    std::printf("  buffer %s  max-abs %.3e  max-ref %.3e  rms-rel %.3e  "
+    std::printf("  buffer %s  max-abs %s  max-ref %s  rms-rel %s  "
                 "tolerance %.1e  %s%s\n",
-                displayName(buffer.buffer).c_str(), buffer.norms.maxAbs,
-                buffer.maxReference, buffer.norms.rmsRel, buffer.tolerance,
+                displayName(buffer.buffer).c_str(),
+                scientific(buffer.norms.maxAbs).c_str(),
+                scientific(buffer.maxReference).c_str(),
+                scientific(buffer.norms.rmsRel).c_str(), buffer.tolerance,
                 buffer.pass ? "pass" : "FAIL", nonFinite.c_str());
   }
   for (const Check::TotalRow &total : check.totals)
