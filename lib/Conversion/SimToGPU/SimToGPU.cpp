@@ -15,6 +15,7 @@
 #include "sim/Dialect/Sim/IR/SimOps.h"
 
 #include "mlir/Dialect/GPU/IR/GPUDialect.h"
+#include "mlir/Dialect/LLVMIR/NVVMDialect.h"
 
 namespace mlir::sim {
 #define GEN_PASS_DEF_SIMLOWERTOGPU
@@ -202,6 +203,18 @@ public:
   }
 
   void barrier(KernelBuilder &b) override { gpu::BarrierOp::create(b, b.loc); }
+
+  /// A `mov` in inline PTX. LLVM sees inline assembly with side effects,
+  /// which it neither hoists out of a loop nor merges with another; ptxas
+  /// sees a copy, which costs nothing.
+  Value opaque(KernelBuilder &b, Value value) override {
+    Value wide = arith::IndexCastUIOp::create(b, b.loc, b.getI64Type(), value);
+    auto copy = NVVM::InlinePtxOp::create(
+        b, b.loc, TypeRange{b.getI64Type()}, ValueRange{wide}, ValueRange{},
+        "mov.b64 $0, $1;", /*predicate=*/Value());
+    return arith::IndexCastUIOp::create(b, b.loc, b.getIndexType(),
+                                        copy.getResult(0));
+  }
 
 private:
   static Value threadId(KernelBuilder &b) {
