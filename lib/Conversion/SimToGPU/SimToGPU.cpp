@@ -60,14 +60,16 @@ public:
 
   void forEachGroup(KernelBuilder &b, Kernel &kernel,
                     function_ref<void(Value base)> body) override {
-    Value range = kernel.values.range;
     Value group = gpu::BlockIdOp::create(b, b.loc, gpu::Dimension::x);
     Value groupSize = gpu::BlockDimOp::create(b, b.loc, gpu::Dimension::x);
     Value groups = gpu::GridDimOp::create(b, b.loc, gpu::Dimension::x);
-    Value padded = b.mul(arith::CeilDivUIOp::create(b, b.loc, range, groupSize),
-                         groupSize);
-    auto loop = scf::ForOp::create(b, b.loc, b.mul(group, groupSize), padded,
-                                   b.mul(groups, groupSize));
+    // Every base is a multiple of the group size, so `base < range` is
+    // `base < the padded range` without the 64-bit division that rounds the
+    // range up (a subroutine call in SASS, whose registers count against
+    // the whole kernel).
+    auto loop =
+        scf::ForOp::create(b, b.loc, b.mul(group, groupSize),
+                           kernel.values.range, b.mul(groups, groupSize));
     OpBuilder::InsertionGuard guard(b);
     b.setInsertionPoint(loop.getBody()->getTerminator());
     body(loop.getInductionVar());
