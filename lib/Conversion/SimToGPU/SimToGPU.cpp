@@ -109,23 +109,26 @@ public:
     auto func = cast<gpu::GPUFuncOp>(kernel.func);
     Value slots = func.addWorkgroupAttribution(
         workgroupMemory(b.getContext(), 3, b.getI32Type()), b.loc);
-    LaneVar counter = createLaneVar(b, kernel, b.getIndexType(), b.index(0));
-    kernel.targetState = {slots, counter.memory};
+    // k % 3, as an i32 that cycles through 0, 1, 2: neither a 64-bit
+    // remainder nor a counter that could wrap.
+    LaneVar slot = createLaneVar(b, kernel, b.getI32Type(), b.i32(0));
+    kernel.targetState = {slots, slot.memory};
     b.ifThen(isFirstThread(b),
              [&] { b.store(b.i32(kNoValue), slots, b.index(0)); });
     gpu::BarrierOp::create(b, b.loc);
   }
 
   Value groupMin(KernelBuilder &b, Kernel &kernel, LaneVar value) override {
-    Value slots = kernel.targetState[0], counter = kernel.targetState[1];
+    Value slots = kernel.targetState[0], slot = kernel.targetState[1];
     Value mine = b.load(value.memory, b.index(0));
     Value warpMin = reduce(b, mine, gpu::AllReduceOperation::MINSI);
-    Value three = b.index(3);
-    Value k = b.load(counter, b.index(0));
-    Value current = arith::RemUIOp::create(b, b.loc, k, three);
-    Value next = b.add(k, b.index(1));
-    b.store(next, counter, b.index(0));
-    Value upcoming = arith::RemUIOp::create(b, b.loc, next, three);
+    Value k = b.load(slot, b.index(0));
+    Value next = b.select(b.cmp(arith::CmpIPredicate::eq, k, b.i32(2)),
+                          b.i32(0), b.add(k, b.i32(1)));
+    b.store(next, slot, b.index(0));
+    Value current = arith::IndexCastUIOp::create(b, b.loc, b.getIndexType(), k);
+    Value upcoming =
+        arith::IndexCastUIOp::create(b, b.loc, b.getIndexType(), next);
     b.ifThen(isFirstThread(b),
              [&] { b.store(b.i32(kNoValue), slots, upcoming); });
     b.ifThen(isFirstLane(b), [&] {
