@@ -107,6 +107,15 @@ for ptxas in [os.path.join(cuda_root, "bin", "ptxas"),
         config.substitutions.append(("%ptxas", ptxas))
         break
 
+# `nvcc` compiles the hand-written CUDA baseline of bench/cuda (a test
+# checks that the register counts test/Target/PTX compares with are
+# current).
+for nvcc in [os.path.join(cuda_root, "bin", "nvcc"), lit.util.which("nvcc")]:
+    if nvcc and os.path.isfile(nvcc) and runs([nvcc, "--version"]):
+        config.available_features.add("nvcc")
+        config.substitutions.append(("%nvcc", nvcc))
+        break
+
 # `cuda`: a CUDA driver and at least one GPU, for execution tests.
 smi = lit.util.which("nvidia-smi")
 if smi and "GPU " in (runs([smi, "-L"]) or ""):

@@ -13,6 +13,9 @@
 //     convert-gpu-to-nvvm{has-redux}        gpu, arith, cf, memref, vector,
 //                                           index, ub and the math functions
 //                                           of libdevice to LLVM/NVVM
+//     convert-nvvm-to-llvm                  NVVM ops that are inline PTX
+//                                           (nvvm.inline_ptx) to
+//                                           llvm.inline_asm
 //     convert-math-to-llvm                  the other math ops (ctlz, ...),
 //                                           which convert-gpu-to-nvvm skips
 //     reconcile-unrealized-casts
@@ -108,6 +111,7 @@ void mlir::sim::buildSimGPUToPTXPipeline(OpPassManager &pm,
   toNVVM.hasRedux = hasRedux(target.chip);
   toNVVM.useBarePtrCallConv = false;
   kernels.addPass(createConvertGpuOpsToNVVMOps(toNVVM));
+  kernels.addPass(createConvertNVVMToLLVMPass());
   kernels.addPass(createConvertMathToLLVMPass());
   kernels.addPass(createReconcileUnrealizedCastsPass());
   kernels.addPass(createSimNVVMExternDynamicSharedMemory());
@@ -159,6 +163,7 @@ void mlir::sim::registerGPUToPTXPasses() {
   // mlir/Conversion/Passes.h, which includes every conversion there is.
   registerPass([] { return createSCFToControlFlowPass(); });
   registerPass([] { return createConvertGpuOpsToNVVMOps(); });
+  registerPass([] { return createConvertNVVMToLLVMPass(); });
   registerPass([] { return createConvertMathToLLVMPass(); });
   registerPass([] { return createReconcileUnrealizedCastsPass(); });
   registerSimPTXPasses();

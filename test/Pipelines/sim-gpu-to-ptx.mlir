@@ -28,6 +28,7 @@
 // PIPELINE-NEXT:     convert-scf-to-cf
 // PIPELINE-NEXT:     expand-strided-metadata
 // PIPELINE-NEXT:     convert-gpu-to-nvvm{{{.*}} has-redux=true {{.*}}use-bare-ptr-memref-call-conv=false}
+// PIPELINE-NEXT:     convert-nvvm-to-llvm
 // PIPELINE-NEXT:     convert-math-to-llvm
 // PIPELINE-NEXT:     reconcile-unrealized-casts
 // PIPELINE-NEXT:     sim-nvvm-extern-dynamic-shared-memory

@@ -9,6 +9,7 @@
 #include "mlir/Dialect/Arith/IR/Arith.h"
 #include "sim/Conversion/SimCommon/KernelNames.h"
 #include "sim/Conversion/SimCommon/SimulationLowering.h"
+#include "llvm/ADT/MapVector.h"
 
 using namespace mlir;
 using namespace mlir::sim;
@@ -56,26 +57,37 @@ void SimulationLowering::fillCaches(Kernel &kernel, ComponentOp component,
   kernel.values.caches.clear();
   if (caches.empty())
     return;
-  for (Cache cache : caches) {
-    int64_t low = cache.fill.getMinOffsetAttr().getInt();
-    int64_t halo = cache.fill.getMaxOffsetAttr().getInt() - low;
-    Value count = b.add(target.groupSize(b, kernel), b.index(halo));
+  // Caches of the same window share one loop over the slots (and so the
+  // item's boundary rule and the interpolation weights).
+  llvm::MapVector<std::pair<int64_t, int64_t>, SmallVector<Cache>> windows;
+  for (Cache cache : caches)
+    windows[{cache.fill.getMinOffsetAttr().getInt(),
+             cache.fill.getMaxOffsetAttr().getInt()}]
+        .push_back(cache);
+  for (auto &entry : windows) {
+    int64_t low = entry.first.first, high = entry.first.second;
+    ArrayRef<Cache> sharing = entry.second;
+    Value count = b.add(target.groupSize(b, kernel), b.index(high - low));
     Value first = b.add(base, b.index(low));
+    // The fills read other items than the lane's: boundary rules.
+    KernelValues values = kernel.values;
+    values.item = nullptr;
     target.forEachSlot(b, kernel, count, [&](Value slot) {
       Value item = b.add(first, slot);
-      KernelValues values = kernel.values;
-      values.item = nullptr; // the fill reads other items: boundary rules
-      FailureOr<Value> value = inlineCacheFill(
-          b, simulation, component.getEvaluate(), {item, time, steps, dt},
-          cache.fill.getBufferAttr(), item, values);
-      if (failed(value)) {
-        bodyFailed = true;
-        return;
+      for (Cache cache : sharing) {
+        FailureOr<Value> value = inlineCacheFill(
+            b, simulation, component.getEvaluate(), {item, time, steps, dt},
+            cache.fill.getBufferAttr(), item, values);
+        if (failed(value)) {
+          bodyFailed = true;
+          return;
+        }
+        b.store(*value, cache.memory, slot);
       }
-      b.store(*value, cache.memory, slot);
     });
-    kernel.values.caches[cache.fill.getBufferAttr().getAttr()] = {cache.memory,
-                                                                  first, count};
+    for (Cache cache : sharing)
+      kernel.values.caches[cache.fill.getBufferAttr().getAttr()] = {
+          cache.memory, first, count};
   }
   target.barrier(b);
 }

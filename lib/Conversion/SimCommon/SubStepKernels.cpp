@@ -73,10 +73,15 @@ LogicalResult SimulationLowering::emitSubSteps(ComponentOp component,
           before->getArguments());
       Block *after = b.createBlock(&loop.getAfter(), {}, b.getI64Type(), b.loc);
       Value time = after->getArgument(0);
+      // The group's items, computed again in every sub-step: everything the
+      // bodies derive from them (the clamped address of every window read)
+      // would otherwise be hoisted out of the loop and held in registers
+      // across it, several times the registers of the sub-step itself.
+      Value stepBase = target.opaque(b, base);
       auto decided = b.ifThenElse(
           b.getI64Type(), single, [&] { return SmallVector<Value>{b.i64(1)}; },
           [&] {
-            target.forEachLane(b, kernel, base, [&](const Lane &lane) {
+            target.forEachLane(b, kernel, stepBase, [&](const Lane &lane) {
               auto estimated = b.ifThenElse(
                   b.getI32Type(), lane.active,
                   [&] {
@@ -97,9 +102,9 @@ LogicalResult SimulationLowering::emitSubSteps(ComponentOp component,
         // passed the barrier of this sub-step's minimum; when m = 1 there
         // was none.
         b.ifThen(single, [&] { target.barrier(b); });
-        fillCaches(kernel, component, caches, base, time, subStep32, dt);
+        fillCaches(kernel, component, caches, stepBase, time, subStep32, dt);
       }
-      target.forEachLane(b, kernel, base, [&](const Lane &lane) {
+      target.forEachLane(b, kernel, stepBase, [&](const Lane &lane) {
         b.ifThen(lane.active, [&] {
           SmallVector<Value> results =
               inline_(component.getEvaluate(), {lane.item, time, subStep32, dt},

@@ -15,6 +15,7 @@
 #include "sim/Dialect/Sim/IR/SimOps.h"
 
 #include "mlir/Dialect/GPU/IR/GPUDialect.h"
+#include "mlir/Dialect/LLVMIR/NVVMDialect.h"
 
 namespace mlir::sim {
 #define GEN_PASS_DEF_SIMLOWERTOGPU
@@ -59,14 +60,16 @@ public:
 
   void forEachGroup(KernelBuilder &b, Kernel &kernel,
                     function_ref<void(Value base)> body) override {
-    Value range = kernel.values.range;
     Value group = gpu::BlockIdOp::create(b, b.loc, gpu::Dimension::x);
     Value groupSize = gpu::BlockDimOp::create(b, b.loc, gpu::Dimension::x);
     Value groups = gpu::GridDimOp::create(b, b.loc, gpu::Dimension::x);
-    Value padded = b.mul(arith::CeilDivUIOp::create(b, b.loc, range, groupSize),
-                         groupSize);
-    auto loop = scf::ForOp::create(b, b.loc, b.mul(group, groupSize), padded,
-                                   b.mul(groups, groupSize));
+    // Every base is a multiple of the group size, so `base < range` is
+    // `base < the padded range` without the 64-bit division that rounds the
+    // range up (a subroutine call in SASS, whose registers count against
+    // the whole kernel).
+    auto loop =
+        scf::ForOp::create(b, b.loc, b.mul(group, groupSize),
+                           kernel.values.range, b.mul(groups, groupSize));
     OpBuilder::InsertionGuard guard(b);
     b.setInsertionPoint(loop.getBody()->getTerminator());
     body(loop.getInductionVar());
@@ -106,23 +109,26 @@ public:
     auto func = cast<gpu::GPUFuncOp>(kernel.func);
     Value slots = func.addWorkgroupAttribution(
         workgroupMemory(b.getContext(), 3, b.getI32Type()), b.loc);
-    LaneVar counter = createLaneVar(b, kernel, b.getIndexType(), b.index(0));
-    kernel.targetState = {slots, counter.memory};
+    // k % 3, as an i32 that cycles through 0, 1, 2: neither a 64-bit
+    // remainder nor a counter that could wrap.
+    LaneVar slot = createLaneVar(b, kernel, b.getI32Type(), b.i32(0));
+    kernel.targetState = {slots, slot.memory};
     b.ifThen(isFirstThread(b),
              [&] { b.store(b.i32(kNoValue), slots, b.index(0)); });
     gpu::BarrierOp::create(b, b.loc);
   }
 
   Value groupMin(KernelBuilder &b, Kernel &kernel, LaneVar value) override {
-    Value slots = kernel.targetState[0], counter = kernel.targetState[1];
+    Value slots = kernel.targetState[0], slot = kernel.targetState[1];
     Value mine = b.load(value.memory, b.index(0));
     Value warpMin = reduce(b, mine, gpu::AllReduceOperation::MINSI);
-    Value three = b.index(3);
-    Value k = b.load(counter, b.index(0));
-    Value current = arith::RemUIOp::create(b, b.loc, k, three);
-    Value next = b.add(k, b.index(1));
-    b.store(next, counter, b.index(0));
-    Value upcoming = arith::RemUIOp::create(b, b.loc, next, three);
+    Value k = b.load(slot, b.index(0));
+    Value next = b.select(b.cmp(arith::CmpIPredicate::eq, k, b.i32(2)),
+                          b.i32(0), b.add(k, b.i32(1)));
+    b.store(next, slot, b.index(0));
+    Value current = arith::IndexCastUIOp::create(b, b.loc, b.getIndexType(), k);
+    Value upcoming =
+        arith::IndexCastUIOp::create(b, b.loc, b.getIndexType(), next);
     b.ifThen(isFirstThread(b),
              [&] { b.store(b.i32(kNoValue), slots, upcoming); });
     b.ifThen(isFirstLane(b), [&] {
@@ -202,6 +208,18 @@ public:
   }
 
   void barrier(KernelBuilder &b) override { gpu::BarrierOp::create(b, b.loc); }
+
+  /// A `mov` in inline PTX. LLVM sees inline assembly with side effects,
+  /// which it neither hoists out of a loop nor merges with another; ptxas
+  /// sees a copy, which costs nothing.
+  Value opaque(KernelBuilder &b, Value value) override {
+    Value wide = arith::IndexCastUIOp::create(b, b.loc, b.getI64Type(), value);
+    auto copy = NVVM::InlinePtxOp::create(
+        b, b.loc, TypeRange{b.getI64Type()}, ValueRange{wide}, ValueRange{},
+        "mov.b64 $0, $1;", /*predicate=*/Value());
+    return arith::IndexCastUIOp::create(b, b.loc, b.getIndexType(),
+                                        copy.getResult(0));
+  }
 
 private:
   static Value threadId(KernelBuilder &b) {

@@ -1,8 +1,9 @@
 // hip-cache on the GPU: the group fills a shared-memory cache of the window
 // once per sub-step (every lane takes slots, the block size apart), waits,
-// and reads inside the window from it, with a fallback to the interpolation
-// from global memory outside it. The launch asks for the dynamic shared
-// memory: 4 bytes per thread plus the halo of 2 items.
+// and reads the window from it. A read whose index the lowering cannot
+// place inside the window (here a gather) checks, with a fallback to the
+// interpolation from global memory outside it. The launch asks for the
+// dynamic shared memory: 4 bytes per thread plus the halo of 2 items.
 //
 // RUN: sim-opt %s --sim-front-end=strategy=hip-cache --sim-lower-to-gpu | FileCheck %s
 // RUN: sim-opt %s --sim-front-end=strategy=hip-cache --sim-lower-to-cpu | FileCheck %s --check-prefix=CPU
@@ -51,7 +52,12 @@ sim.simulation @smooth range(10) dt(1.0e-1 : f32) max_steps(4) {
       scf.yield %next : f32
     }
     %s = sim.read @S[%i] : f32
-    %avg = arith.addf %sum, %s : f32
+    %lead = sim.get_param @lead : i32
+    %lead_index = arith.index_cast %lead : i32 to index
+    %far = arith.addi %i, %lead_index : index
+    %u_far = sim.read @U[%far] : f32
+    %sum_far = arith.addf %sum, %u_far : f32
+    %avg = arith.addf %sum_far, %s : f32
     sim.yield %avg : f32
   }
   sim.schedule [@Drive]
@@ -79,16 +85,23 @@ sim.simulation @smooth range(10) dt(1.0e-1 : f32) max_steps(4) {
 // CHECK:             memref.store %{{.*}}, %[[CACHE]][%[[SLOT]]]
 // CHECK:           }
 // CHECK-NEXT:      gpu.barrier
-//                  Reads inside the window hit the cache.
+//                  Reads of the item plus an offset in the window always hit
+//                  the cache: no check, no fallback.
 // CHECK:           scf.for
-// CHECK:             %[[OFFSET:.*]] = arith.subi
-// CHECK:             %[[INSIDE:.*]] = arith.cmpi ult, %[[OFFSET]]
-// CHECK:             scf.if %[[INSIDE]] -> (f32) {
-// CHECK-NEXT:          %[[HIT:.*]] = memref.load %[[CACHE]][%[[OFFSET]]]
-// CHECK-NEXT:          scf.yield %[[HIT]]
-// CHECK-NEXT:        } else {
-// CHECK:               memref.load %[[U]]
-// CHECK:               memref.load %[[U]]
+// CHECK:             %[[J:.*]] = arith.addi %{{.*}}, %{{.*}} : index
+// CHECK-NEXT:        %[[OFFSET:.*]] = arith.subi %[[J]], %{{.*}} : index
+// CHECK-NEXT:        memref.load %[[CACHE]][%[[OFFSET]]]
+// CHECK-NOT:         scf.if
+// CHECK:           }
+//                  The gather checks.
+// CHECK:           %[[FAR_OFFSET:.*]] = arith.subi
+// CHECK-NEXT:      %[[INSIDE:.*]] = arith.cmpi ult, %[[FAR_OFFSET]]
+// CHECK-NEXT:      scf.if %[[INSIDE]] -> (f32) {
+// CHECK-NEXT:        %[[HIT:.*]] = memref.load %[[CACHE]][%[[FAR_OFFSET]]]
+// CHECK-NEXT:        scf.yield %[[HIT]]
+// CHECK-NEXT:      } else {
+// CHECK:             memref.load %[[U]]
+// CHECK:             memref.load %[[U]]
 // CHECK-LABEL: simplan.plan @smooth strategy("hip-cache")
 // CHECK:         simplan.launch @smooth_kernels::@substep_Smooth items [{{.*}}] for @Smooth shared(4, 8)
 

@@ -52,7 +52,9 @@ struct KernelValues {
   Value bigStepBegin, bigStepSize;
   /// Per buffer name: the group's cache that `sim.load cache` reads inside
   /// its items. Without one (a CPU, or outside the items) a cache load
-  /// computes the body's `sim.fill_cache` region at the read item.
+  /// computes the body's `sim.fill_cache` region at the read item. A load
+  /// at `item` plus offsets bounded inside the fill's window needs no
+  /// check: `item` is one of the group's items.
   llvm::DenseMap<StringAttr, CacheView> caches;
 };
 

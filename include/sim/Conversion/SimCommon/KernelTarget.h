@@ -174,6 +174,13 @@ public:
   /// Waits for every lane of the group (nothing on a target whose phases
   /// run one after another).
   virtual void barrier(KernelBuilder &b) {}
+  /// `value` (index), through an operation the optimiser cannot see
+  /// through or move, at the builder's position. Inside a loop, what is
+  /// computed from the result is computed again in every iteration instead
+  /// of being hoisted out of the loop and kept in registers across it: on
+  /// a GPU, where registers limit occupancy, the addresses of a body's
+  /// reads are cheaper to recompute than to keep. The default is `value`.
+  virtual Value opaque(KernelBuilder &b, Value value) { return value; }
 
   Value laneLoad(KernelBuilder &b, LaneVar var, const Lane &lane) {
     return b.load(var.memory, lane.slot);
