@@ -4,7 +4,7 @@
 // half (which calls the mgpu* wrappers of libmlir_cuda_runtime; our runtime
 // launches the PTX itself). Every lowering is an upstream pass; the order:
 //
-//   nvvm-attach-target{chip features O}     #nvvm.target on every gpu.module
+//   nvvm-attach-target{chip features O ftz} #nvvm.target on every gpu.module
 //   gpu.module(
 //     sim-fused-multiply-add                vector.fma to llvm.intr.fma (one
 //                                           rounding on every backend)
@@ -19,6 +19,8 @@
 //     convert-math-to-llvm                  the other math ops (ctlz, ...),
 //                                           which convert-gpu-to-nvvm skips
 //     reconcile-unrealized-casts
+//     sim-flush-subnormals                  only with ftz (--sim-ftz): .ftz
+//                                           f32 instructions
 //     sim-nvvm-extern-dynamic-shared-memory
 //     sim-nvvm-check-target{libdevice})
 //   gpu-module-to-binary{format=isa toolkit}  PTX text in a gpu.binary
@@ -101,6 +103,8 @@ void mlir::sim::buildSimGPUToPTXPipeline(OpPassManager &pm,
   attach.chip = target.chip;
   attach.features = target.features;
   attach.optLevel = target.optLevel;
+  // libdevice's FTZ variants (__nvvm_reflect("__CUDA_FTZ")).
+  attach.ftzFlag = target.flushSubnormals;
   pm.addPass(createGpuNVVMAttachTarget(attach));
 
   OpPassManager &kernels = pm.nest<gpu::GPUModuleOp>();
@@ -114,6 +118,8 @@ void mlir::sim::buildSimGPUToPTXPipeline(OpPassManager &pm,
   kernels.addPass(createConvertNVVMToLLVMPass());
   kernels.addPass(createConvertMathToLLVMPass());
   kernels.addPass(createReconcileUnrealizedCastsPass());
+  if (target.flushSubnormals)
+    kernels.addPass(createSimFlushSubnormals());
   kernels.addPass(createSimNVVMExternDynamicSharedMemory());
 
   // gpu-module-to-binary links libdevice from the toolkit it is given; when

@@ -76,7 +76,13 @@ TranslationOptions::TranslationOptions()
                              "shared object; the runtime runs the highest "
                              "the CPU has (x86-64, x86-64-v2, x86-64-v3, "
                              "x86-64-v4; default x86-64,x86-64-v3)"),
-              llvm::cl::CommaSeparated, llvm::cl::cat(category)) {}
+              llvm::cl::CommaSeparated, llvm::cl::cat(category)),
+      ftz("sim-ftz",
+          llvm::cl::desc("Flush subnormal values to zero on every backend "
+                         "(PTX .ftz f32 forms and libdevice's FTZ variants; "
+                         "FTZ and DAZ on the CPU threads; recorded in the "
+                         "bundle). Default: IEEE subnormals"),
+          llvm::cl::init(false), llvm::cl::cat(category)) {}
 
 GPUTargetOptions TranslationOptions::getGPUTarget() const {
   GPUTargetOptions target;
@@ -84,6 +90,7 @@ GPUTargetOptions TranslationOptions::getGPUTarget() const {
   target.features = features.getValue();
   target.optLevel = optLevel.getValue();
   target.cudaPath = cudaPath.getValue();
+  target.flushSubnormals = ftz.getValue();
   return target;
 }
 

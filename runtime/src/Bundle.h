@@ -133,6 +133,11 @@ struct Bundle {
   schema::BundleT contents;
 
   const schema::SceneT &scene() const { return *contents.scene; }
+  /// Whether the bundle's code runs with subnormals flushed to zero
+  /// (sim-translate --sim-ftz).
+  bool flushesSubnormals() const {
+    return contents.subnormals == schema::Subnormals::FlushToZero;
+  }
   /// The plan of `strategy`, or null when the bundle has none.
   const schema::PlanT *plan(Strategy strategy) const;
   /// The strategies the bundle has plans for, in its order.

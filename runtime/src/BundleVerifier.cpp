@@ -580,6 +580,10 @@ void verifyBundle(const schema::BundleT &contents) {
     bad("there is no scene");
   const schema::SceneT &scene = *contents.scene;
   verifyScene(scene);
+  if (contents.subnormals != schema::Subnormals::Keep &&
+      contents.subnormals != schema::Subnormals::FlushToZero)
+    bad("the bundle has unknown floating-point mode " +
+        std::to_string(int(contents.subnormals)));
   std::set<Strategy> strategies;
   for (const auto &plan : contents.plans) {
     if (!valid(plan->strategy))

@@ -222,6 +222,9 @@ int sim_bundle_has_cpu(const sim_bundle *bundle, sim_strategy strategy) {
   const schema::PlanT *plan = planOf(bundle, strategy);
   return plan && bundle->bundle->cpuCode(*plan) != nullptr;
 }
+int sim_bundle_flushes_subnormals(const sim_bundle *bundle) {
+  return bundle && bundle->bundle->flushesSubnormals();
+}
 int sim_bundle_has_reference(const sim_bundle *bundle) {
   return bundle && bundle->bundle->reference() != nullptr;
 }

@@ -13,6 +13,7 @@
 #include "Backend.h"
 #include "Error.h"
 #include "Executor.h"
+#include "FloatMode.h"
 #include "SharedObject.h"
 
 #include <algorithm>
@@ -63,15 +64,19 @@ public:
 
   /// Calls `fn(params, first, end, groupSize)` on disjoint ranges covering
   /// [0, groups) and returns when all are done.
-  void run(KernelFn fn, void **params, int64_t groups, int64_t groupSize) {
+  /// With `flushSubnormals`, every part runs with subnormals flushed to
+  /// zero (SubnormalScope).
+  void run(KernelFn fn, void **params, int64_t groups, int64_t groupSize,
+           bool flushSubnormals) {
     int64_t parts = std::min<int64_t>(size(), groups);
     if (parts <= 1) {
+      SubnormalScope mode(flushSubnormals);
       fn(params, 0, groups, groupSize);
       return;
     }
     {
       std::lock_guard<std::mutex> lock(mutex);
-      job = {fn, params, groups, groupSize, parts};
+      job = {fn, params, groups, groupSize, parts, flushSubnormals};
       pending = int(parts) - 1;
       ++generation;
     }
@@ -97,11 +102,13 @@ private:
     KernelFn fn;
     void **params;
     int64_t groups, groupSize, parts;
+    bool flushSubnormals;
   };
 
   void runPart(int64_t part) {
     int64_t first = job.groups * part / job.parts;
     int64_t end = job.groups * (part + 1) / job.parts;
+    SubnormalScope mode(job.flushSubnormals);
     job.fn(job.params, first, end, job.groupSize);
   }
 
@@ -168,6 +175,7 @@ public:
       fail(SIM_ERROR_BUNDLE, "cannot load " + what + " of bundle '" +
                                  bundle.name + "': " + missingIsaMessage(plan));
     isa = code->isa;
+    flushSubnormals = bundle.flushesSubnormals();
     library = std::make_unique<SharedObject>(code->object, what);
     for (const auto &kernel : plan.kernels) {
       std::string symbol = "sim_cpu_" + kernel->name;
@@ -208,10 +216,12 @@ public:
     // Workgroup memory is the object's business on the CPU: the ABI passes
     // no shared-memory size.
     auto start = std::chrono::steady_clock::now();
-    if (groups == 1)
+    if (groups == 1) {
+      SubnormalScope mode(flushSubnormals);
       kernels[kernel](params, 0, 1, groupSize);
-    else
-      pool.run(kernels[kernel], params, groups, groupSize);
+    } else {
+      pool.run(kernels[kernel], params, groups, groupSize, flushSubnormals);
+    }
     kernelTime += std::chrono::steady_clock::now() - start;
   }
 
@@ -225,6 +235,8 @@ private:
   std::unique_ptr<SharedObject> library;
   /// The instruction-set level of the loaded kernels ("x86-64-v3", ...).
   std::string isa;
+  /// The bundle's floating-point mode (sim-translate --sim-ftz).
+  bool flushSubnormals = false;
   std::vector<KernelFn> kernels;
   std::chrono::steady_clock::duration kernelTime{};
 };

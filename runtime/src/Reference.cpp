@@ -9,6 +9,7 @@
 
 #include "Reference.h"
 #include "Error.h"
+#include "FloatMode.h"
 
 #include <algorithm>
 #include <chrono>
@@ -235,6 +236,7 @@ bool ReferenceSession::hasExact(const std::string &name) const {
 
 void ReferenceSession::exact(const std::string &name, void *data,
                              size_t bytes) {
+  SubnormalScope mode(bundle->flushesSubnormals());
   int index = bufferIndex(name);
   if (!buffers_[size_t(index)].info->exact)
     fail(SIM_ERROR_INVALID_ARGUMENT, "scene '" + scene().name +
@@ -254,6 +256,7 @@ void ReferenceSession::exact(const std::string &name, void *data,
 }
 
 std::vector<double> ReferenceSession::totals() {
+  SubnormalScope mode(bundle->flushesSubnormals());
   std::vector<double> sums(model_->totals.size(), 0.0);
   if (sums.empty())
     return sums;
@@ -450,6 +453,7 @@ void ReferenceSession::restoreClock(int64_t time,
 //===----------------------------------------------------------------------===//
 
 void ReferenceSession::init() {
+  SubnormalScope mode(bundle->flushesSubnormals());
   initialized = false;
   int64_t range = settings.range;
   checkMemory(range, "range " + std::to_string(range));
@@ -773,6 +777,7 @@ void ReferenceSession::bigStep(int64_t end) {
 }
 
 void ReferenceSession::run(int64_t steps, int64_t pause) {
+  SubnormalScope mode(bundle->flushesSubnormals());
   runEnd(now, steps); // Checks the steps before initialising.
   runPause(now, steps, pause);
   ensureInitialized();
@@ -875,6 +880,7 @@ void compareElement(Differences &found, int64_t item, int32_t lanes,
 
 std::vector<InitCheck> ReferenceSession::checkInit(double tolerance,
                                                    int64_t maxItems) {
+  SubnormalScope mode(bundle->flushesSubnormals());
   if (maxItems <= 0)
     maxItems = kInitCheckItems;
   const int64_t range = settings.range;
@@ -953,6 +959,7 @@ void ReferenceSession::exactItem(int32_t buffer, int64_t item, uint8_t *out) {
 }
 
 double ReferenceSession::exactTotal(const std::string &name, int64_t time) {
+  SubnormalScope mode(bundle->flushesSubnormals());
   std::string why;
   if (!hasExactTotal(*bundle, name, &why))
     fail(SIM_ERROR_INVALID_ARGUMENT, why);

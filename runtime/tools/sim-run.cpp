@@ -569,6 +569,7 @@ void runMain(Results &results, Sessions &sessions, const sim_bundle *bundle,
   main.steps = options.steps;
   main.repeat = options.repeat;
   main.maxSteps = sim_bundle_max_steps(bundle);
+  main.flushSubnormals = sim_bundle_flushes_subnormals(bundle) != 0;
   main.maxMemory = options.maxMemory;
   main.memoryBytes = sim_session_memory_bytes(session);
   main.memoryLimit = sim_session_memory_limit(session);

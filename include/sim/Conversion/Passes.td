@@ -155,4 +155,24 @@ def SimFusedMultiplyAdd : Pass<"sim-fused-multiply-add"> {
   let dependentDialects = ["::mlir::LLVM::LLVMDialect"];
 }
 
+def SimFlushSubnormals : Pass<"sim-flush-subnormals"> {
+  let summary = "Mark every LLVM function as flushing subnormals to zero";
+  let description = [{
+    The code generation half of `sim-translate --sim-ftz`: sets
+    `denormal_fp_math` and `denormal_fp_math_f32` to `"preserve-sign"` on
+    every `llvm.func` with a body, so that LLVM folds and simplifies as if
+    subnormal inputs and results were zero (of the same sign). On NVPTX the
+    f32 operations then become their `.ftz` forms (`add.rn.ftz.f32`, ...);
+    PTX has no such form for f64. On the CPU no instruction encodes it: the
+    runtime sets the FTZ and DAZ bits of MXCSR on every thread that runs the
+    kernels or the reference functions (docs/Runtime.md), which flushes f32
+    and f64 alike.
+
+    ```
+    sim-opt kernels-in-llvm.mlir --sim-flush-subnormals
+    ```
+  }];
+  let dependentDialects = ["::mlir::LLVM::LLVMDialect"];
+}
+
 #endif // SIM_CONVERSION_PASSES_TD

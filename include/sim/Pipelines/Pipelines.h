@@ -69,6 +69,9 @@ struct GPUTargetOptions {
   /// implements math functions; empty: $CUDA_ROOT, $CUDA_HOME, $CUDA_PATH,
   /// then /usr/local/cuda.
   std::string cudaPath;
+  /// Flush subnormal f32 values to zero (`.ftz` instructions, libdevice's
+  /// FTZ variants): sim-translate --sim-ftz. PTX has no f64 `.ftz`.
+  bool flushSubnormals = false;
 };
 
 /// The pipeline options that set a GPUTargetOptions (`chip`, `features`,
@@ -99,6 +102,10 @@ struct GPUTargetPipelineOptions : public PassPipelineOptions<Derived> {
                      "functions; empty: $CUDA_ROOT, $CUDA_HOME, $CUDA_PATH, "
                      "then /usr/local/cuda"),
       llvm::cl::init(GPUTargetOptions().cudaPath)};
+  Option<bool> ftz{*this, "ftz",
+                   llvm::cl::desc("Flush subnormal f32 values to zero (.ftz "
+                                  "instructions, libdevice's FTZ variants)"),
+                   llvm::cl::init(GPUTargetOptions().flushSubnormals)};
 
   /// The target these options describe.
   GPUTargetOptions getTarget() const {
@@ -107,6 +114,7 @@ struct GPUTargetPipelineOptions : public PassPipelineOptions<Derived> {
     target.features = features;
     target.optLevel = optLevel;
     target.cudaPath = cudaPath;
+    target.flushSubnormals = ftz;
     return target;
   }
 };

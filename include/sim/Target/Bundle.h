@@ -41,6 +41,10 @@ struct BundleOptions {
   /// its own shared object (getCPUIsaLevels()); the runtime runs the highest
   /// one the CPU supports.
   SmallVector<std::string, 2> cpuIsas = getDefaultCPUIsas();
+  /// Flush subnormals to zero on every backend (--sim-ftz): recorded in the
+  /// bundle, compiled into the PTX and the CPU code, and set by the runtime
+  /// on the CPU threads. target.flushSubnormals is set from it.
+  bool flushSubnormals = false;
 };
 
 /// Compiles the one sim.simulation in `module` for every strategy of

@@ -23,6 +23,10 @@ struct CPUKernelOptions {
   /// host's architecture (`x86-64`, `x86-64-v2`, `x86-64-v3`, `x86-64-v4`).
   /// The code runs on every CPU of that level, not only on this one.
   std::string isa = "x86-64";
+  /// Compile for a runtime that flushes subnormals to zero (--sim-ftz): the
+  /// functions' denormal modes say so, so that LLVM folds as the CPU will
+  /// compute with MXCSR's FTZ and DAZ set.
+  bool flushSubnormals = false;
   /// The linker; found next to the LLVM tools when empty.
   std::string linker;
 };

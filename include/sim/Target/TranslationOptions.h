@@ -50,6 +50,8 @@ struct TranslationOptions {
   /// --sim-cpu-isas: the instruction-set levels of --sim-to-bundle's CPU
   /// kernels (empty: BundleOptions' default).
   llvm::cl::list<std::string> cpuIsas;
+  /// --sim-ftz: flush subnormals to zero on every backend.
+  llvm::cl::opt<bool> ftz;
 
   /// The GPU back end's target the flags describe.
   GPUTargetOptions getGPUTarget() const;

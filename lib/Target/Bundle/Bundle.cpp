@@ -787,6 +787,7 @@ public:
     // same bits (docs/Bundle.md), faster code where the CPU has more.
     CPUKernelOptions cpuOptions;
     cpuOptions.optLevel = options.target.optLevel;
+    cpuOptions.flushSubnormals = options.flushSubnormals;
     FailureOr<SmallVector<std::string>> libraries =
         compileCPUKernels(kernels, options.cpuIsas, cpuOptions);
     if (failed(libraries))
@@ -824,6 +825,7 @@ public:
       return failure();
     CPUKernelOptions cpuOptions;
     cpuOptions.optLevel = options.target.optLevel;
+    cpuOptions.flushSubnormals = options.flushSubnormals;
     FailureOr<std::string> compiled =
         compileReferenceFunctions(functions, cpuOptions);
     if (failed(compiled))
@@ -863,7 +865,9 @@ private:
   LogicalResult compilePTX(ModuleOp gpu, simplan::PlanOp plan,
                            StrategyCode &code) {
     PassManager pm(context, ModuleOp::getOperationName());
-    buildSimGPUToPTXPipeline(pm, options.target);
+    GPUTargetOptions target = options.target;
+    target.flushSubnormals = options.flushSubnormals;
+    buildSimGPUToPTXPipeline(pm, target);
 
     // Held back until it is known whether they are only libdevice's.
     SmallVector<Diagnostic> held;
@@ -982,6 +986,8 @@ LogicalResult mlir::sim::writeBundle(ModuleOp module,
 
   fb::BundleT bundle;
   bundle.producer = kProducer.str();
+  bundle.subnormals = options.flushSubnormals ? fb::Subnormals::FlushToZero
+                                              : fb::Subnormals::Keep;
   bundle.scene = std::make_unique<fb::SceneT>();
   SceneIndex scene;
   if (failed(buildScene(simulation, *bundle.scene, scene)))

@@ -53,6 +53,7 @@ void mlir::sim::registerToBundleTranslation() {
                                     flags.strategies.end());
         options.groupSize = flags.groupSize;
         options.target = flags.getGPUTarget();
+        options.flushSubnormals = flags.ftz;
         if (!flags.cpuIsas.empty())
           options.cpuIsas.assign(flags.cpuIsas.begin(), flags.cpuIsas.end());
         return writeBundle(*module, options, os);

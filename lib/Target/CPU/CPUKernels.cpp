@@ -86,7 +86,7 @@ static FailureOr<std::string> compileForIsa(llvm::Module &module, Location loc,
 static FailureOr<SmallVector<std::string>>
 compileSharedObjects(OwningOpRef<ModuleOp> module, Location loc,
                      ArrayRef<std::string> isas, unsigned optLevel,
-                     StringRef linker,
+                     bool flushSubnormals, StringRef linker,
                      function_ref<LogicalResult(llvm::Module &)> finish) {
   for (const std::string &isa : isas)
     if (!llvm::is_contained(getCPUIsaLevels(), isa))
@@ -113,6 +113,8 @@ compileSharedObjects(OwningOpRef<ModuleOp> module, Location loc,
   // on the GPU, rather than an op that LLVM IR has no translation for.
   pm.addPass(createUBToLLVMConversionPass());
   pm.addPass(createReconcileUnrealizedCastsPass());
+  if (flushSubnormals)
+    pm.addPass(createSimFlushSubnormals());
   if (failed(pm.run(*module)))
     return emitError(loc) << "could not lower the CPU kernels to LLVM";
 
@@ -256,7 +258,7 @@ mlir::sim::compileCPUKernels(ModuleOp kernels, ArrayRef<std::string> isas,
   }
   return compileSharedObjects(
       OwningOpRef<ModuleOp>(cast<ModuleOp>(kernels->clone())), loc, isas,
-      options.optLevel, options.linker,
+      options.optLevel, options.flushSubnormals, options.linker,
       [&](llvm::Module &llvmModule) -> LogicalResult {
         for (const std::string &name : names) {
           llvm::Function *kernel = llvmModule.getFunction(name);
@@ -275,7 +277,8 @@ mlir::sim::compileReferenceFunctions(ModuleOp reference,
   // The functions already have the C signatures of docs/Reference.md.
   FailureOr<SmallVector<std::string>> objects = compileSharedObjects(
       OwningOpRef<ModuleOp>(cast<ModuleOp>(reference->clone())),
-      reference.getLoc(), {options.isa}, options.optLevel, options.linker,
+      reference.getLoc(), {options.isa}, options.optLevel,
+      options.flushSubnormals, options.linker,
       [](llvm::Module &) { return success(); });
   if (failed(objects))
     return failure();

@@ -110,9 +110,11 @@ void printHeader(const MainRun &main) {
               main.backend.c_str(), main.device.c_str());
   if (main.showNote && !main.backendNote.empty())
     std::printf("  (not CUDA: %s)\n", main.backendNote.c_str());
-  std::printf("range %lld, dt %s, group size %lld, %lld base steps",
+  std::printf("range %lld, dt %s, group size %lld, %lld base steps, %s",
               (long long)main.range, main.dtText.c_str(),
-              (long long)main.groupSize, (long long)main.steps);
+              (long long)main.groupSize, (long long)main.steps,
+              main.flushSubnormals ? "subnormals flushed to zero"
+                                   : "IEEE subnormals");
   if (main.repeat > 1)
     std::printf(", median of %lld runs after a warm-up",
                 (long long)main.repeat);
@@ -515,6 +517,7 @@ std::string toJson(const Results &results) {
   json["range"] = main.range;
   json["dt"] = number(main.dt);
   json["group_size"] = main.groupSize;
+  json["subnormals"] = main.flushSubnormals ? "flush-to-zero" : "ieee";
   json["steps"] = main.steps;
   json["steps_done"] =
       main.state.stage == Stage::Cut ? main.state.reached : main.steps;

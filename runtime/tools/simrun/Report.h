@@ -47,6 +47,8 @@ struct MainRun {
   double dt = 0;
   int64_t groupSize = 0;
   int64_t steps = 0, repeat = 1, maxSteps = 1;
+  /// The bundle's floating-point mode (sim-translate --sim-ftz).
+  bool flushSubnormals = false;
   /// --max-memory, and the state's bytes and limit.
   int64_t maxMemory = 0, memoryBytes = 0, memoryLimit = 0;
 

@@ -129,6 +129,9 @@ SIM_API int sim_bundle_has_cpu(const sim_bundle *bundle, sim_strategy strategy);
 /// Whether the bundle holds the reference model and functions (sections 5
 /// and 6) that SIM_BACKEND_REFERENCE runs.
 SIM_API int sim_bundle_has_reference(const sim_bundle *bundle);
+/// Whether the bundle's code runs with subnormal values flushed to zero on
+/// every backend (compiled with sim-translate --sim-ftz); 0: IEEE.
+SIM_API int sim_bundle_flushes_subnormals(const sim_bundle *bundle);
 
 typedef struct sim_buffer_info {
   const char *name;
