@@ -107,6 +107,7 @@ def _declare(lib):
         "sim_bundle_range": (c.c_int64, [p]),
         "sim_bundle_dt": (c.c_double, [p]),
         "sim_bundle_max_steps": (c.c_int64, [p]),
+        "sim_bundle_flushes_subnormals": (c.c_int, [p]),
         "sim_bundle_dt_type": (c.c_char_p, [p]),
         "sim_bundle_has_strategy": (c.c_int, [p, c.c_int]),
         "sim_bundle_num_buffers": (c.c_int32, [p]),
@@ -202,6 +203,13 @@ class Bundle:
     @property
     def max_steps(self):
         return load_library().sim_bundle_max_steps(self._handle)
+
+    @property
+    def flushes_subnormals(self):
+        """Whether the bundle runs with subnormals flushed to zero
+        (sim-translate --sim-ftz)."""
+        return bool(load_library().sim_bundle_flushes_subnormals(
+            self._handle))
 
     @property
     def dt_type(self):

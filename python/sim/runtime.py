@@ -97,6 +97,12 @@ class Bundle:
         return self._rt.max_steps
 
     @property
+    def flushes_subnormals(self) -> bool:
+        """Whether the bundle runs with subnormals flushed to zero on every
+        backend (compiled with `ftz=True`); False: IEEE."""
+        return self._rt.flushes_subnormals
+
+    @property
     def strategies(self) -> list[str]:
         """The strategies the bundle holds plans for."""
         return [s for s in simrt.strategies() if self._rt.has_strategy(s)]
