@@ -205,6 +205,17 @@ public:
       fail(SIM_ERROR_INVALID_ARGUMENT,
            "group size " + std::to_string(groupSize) +
                " is not a multiple of 32 between 32 and 1024, as CUDA needs");
+    // Once loaded: a kernel whose registers do not fit the group size on
+    // this device would fail every launch (too many resources requested).
+    for (const Kernel &kernel : kernels)
+      if (kernel.maxThreads > 0 && groupSize > kernel.maxThreads)
+        fail(SIM_ERROR_INVALID_ARGUMENT,
+             "group size " + std::to_string(groupSize) + " is more than the " +
+                 std::to_string(kernel.maxThreads) + " threads kernel '" +
+                 kernel.name + "' can run in a group on " + description +
+                 " (it needs " + std::to_string(kernel.registers) +
+                 " registers per thread); use --group-size " +
+                 std::to_string(kernel.maxThreads / 32 * 32) + " or less");
   }
 
   void activate() override {
@@ -241,7 +252,18 @@ public:
              what + " has no kernel '" + kernel->name + "' (" +
                  cu.message(result, "cuModuleGetFunction") + ")");
       checkParams(function, *kernel, what);
-      kernels.push_back({function, 48 * 1024});
+      int maxThreads = 0, registers = 0;
+      if (cu.cuFuncGetAttribute) {
+        cu.check(cu.cuFuncGetAttribute(&maxThreads,
+                                       CU_FUNC_ATTRIBUTE_MAX_THREADS_PER_BLOCK,
+                                       function),
+                 "cuFuncGetAttribute");
+        cu.check(cu.cuFuncGetAttribute(&registers, CU_FUNC_ATTRIBUTE_NUM_REGS,
+                                       function),
+                 "cuFuncGetAttribute");
+      }
+      kernels.push_back(
+          {function, 48 * 1024, kernel->name, maxThreads, registers});
     }
   }
 
@@ -372,6 +394,10 @@ private:
   struct Kernel {
     CUfunction function;
     int64_t sharedLimit;
+    std::string name;
+    /// The most threads a group of this kernel may have on the device, as
+    /// its registers allow (0: unknown), and its registers per thread.
+    int maxThreads, registers;
   };
 
   const Driver &cu;

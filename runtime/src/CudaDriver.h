@@ -44,6 +44,8 @@ constexpr CUjit_option CU_JIT_ERROR_LOG_BUFFER = 5;
 constexpr CUjit_option CU_JIT_ERROR_LOG_BUFFER_SIZE_BYTES = 6;
 constexpr CUdevice_attribute CU_DEVICE_ATTRIBUTE_COMPUTE_CAPABILITY_MAJOR = 75;
 constexpr CUdevice_attribute CU_DEVICE_ATTRIBUTE_COMPUTE_CAPABILITY_MINOR = 76;
+constexpr CUfunction_attribute CU_FUNC_ATTRIBUTE_MAX_THREADS_PER_BLOCK = 0;
+constexpr CUfunction_attribute CU_FUNC_ATTRIBUTE_NUM_REGS = 4;
 constexpr CUfunction_attribute CU_FUNC_ATTRIBUTE_MAX_DYNAMIC_SHARED_SIZE_BYTES =
     8;
 constexpr unsigned CU_STREAM_NON_BLOCKING = 1;
@@ -97,6 +99,8 @@ constexpr CUstreamCaptureMode CU_STREAM_CAPTURE_MODE_THREAD_LOCAL = 1;
 #define SIM_CUDA_OPTIONAL_SYMBOLS(X)                                           \
   X(cuFuncGetParamInfo, "cuFuncGetParamInfo",                                  \
     (CUfunction, size_t, size_t *, size_t *))                                  \
+  X(cuFuncGetAttribute, "cuFuncGetAttribute",                                  \
+    (int *, CUfunction_attribute, CUfunction))                                 \
   X(cuStreamBeginCapture, "cuStreamBeginCapture_v2",                           \
     (CUstream, CUstreamCaptureMode))                                           \
   X(cuStreamEndCapture, "cuStreamEndCapture", (CUstream, CUgraph *))           \

@@ -101,6 +101,8 @@ Session::Session(std::shared_ptr<const Bundle> bundleIn,
   groupSize_ = options.group_size ? options.group_size : plan_->group_size;
   backend->checkGroupSize(groupSize_);
   backend->load(*bundle, *plan_);
+  // Again with the kernels loaded: CUDA knows each kernel's thread limit.
+  backend->checkGroupSize(groupSize_);
   // After load: the CPU backend names the instruction-set level it loaded.
   deviceName = backend->device();
   for (const auto &phase : plan_->phases)

@@ -220,6 +220,36 @@ TEST(Cuda, RejectsGroupSizesThatAreNotWarpMultiples) {
   }
 }
 
+TEST(Cuda, RejectsAGroupSizeAboveAKernelsThreadLimit) {
+  // Every entry of the real PTX limited to 64 threads, as a kernel with
+  // many registers is: the driver says so, and a group of 128 is refused
+  // before any launch fails.
+  std::string ptx =
+      readFile(std::string(SIM_TEST_KERNELS_DIR) + "/decay-hip.ptx");
+  for (size_t entry = ptx.find(".entry"); entry != std::string::npos;
+       entry = ptx.find(".entry", entry + 1)) {
+    size_t body = ptx.find("\n{", entry);
+    ASSERT_NE(body, std::string::npos);
+    ptx.insert(body + 1, ".maxntid 64, 1, 1\n");
+  }
+  sim_session_options options{};
+  options.group_size = 128;
+  try {
+    if (!cudaSession(decayWithRealPtx(ptx), SIM_STRATEGY_HIP, options))
+      GTEST_SKIP() << "no CUDA driver or device";
+    FAIL() << "group size 128 accepted for kernels of at most 64 threads";
+  } catch (const Error &error) {
+    EXPECT_EQ(error.status, SIM_ERROR_INVALID_ARGUMENT);
+    EXPECT_NE(std::string(error.what())
+                  .find("group size 128 is more than the 64 threads kernel"),
+              std::string::npos)
+        << error.what();
+  }
+  options.group_size = 64;
+  EXPECT_NO_THROW(
+      cudaSession(decayWithRealPtx(ptx), SIM_STRATEGY_HIP, options));
+}
+
 TEST(Cuda, ReportsAJitFailureWithTheDriversLog) {
   try {
     if (!cudaSession(decayWithRealPtx(".version 9.0\n.target sm_90\n"
