@@ -282,6 +282,11 @@ FailureOr<Stepping> mlir::sim::decideStepping(ComponentOp component,
            << "is not in a complete schedule; run --sim-schedule before "
               "deciding how it takes a big step";
   bool hasNumSteps = component.hasNumSteps();
+  // With max_steps 1 every big step is one base step whatever num_steps
+  // says: an estimate cannot lengthen it and a sub-step is the whole step,
+  // so every strategy takes it as simple does and pays for neither.
+  if (simulation.getMaxSteps() <= 1)
+    return Stepping{Advance::whole_step, false};
   switch (strategy) {
   case Strategy::simple:
     return Stepping{Advance::whole_step, false};

@@ -91,3 +91,79 @@ sim.simulation @stepping range(64) dt(1.0e-2 : f32) max_steps(3) {
   sim.schedule [@Lead]
   sim.observe [@P]
 }
+
+// -----
+
+// With max_steps 1 every big step is one base step: no strategy estimates
+// (nothing can lengthen the step) and nobody sub-steps (a sub-step would be
+// the whole step), so hip and traditional take it as simple does.
+// CHECK-LABEL: sim.simulation @one_step
+// SIMPLE-SAME: attributes {step_cap = 1 : i32, strategy = #sim<strategy simple>}
+// TRAD-SAME: attributes {step_cap = 1 : i32, strategy = #sim<strategy traditional>}
+// HIP-SAME: attributes {step_cap = 1 : i32, strategy = #sim<strategy hip>}
+// CHECK: sim.component @Lead writes(@L) attributes {advance = #sim<advance whole_step>, parity
+// CHECK: sim.component @Middle writes(@M) attributes {advance = #sim<advance whole_step>, parity
+// CHECK: sim.component @Tail writes(@T) attributes {advance = #sim<advance whole_step>, parity = #sim<parity none>
+// CHECK: sim.component @Plain writes(@P) attributes {advance = #sim<advance whole_step>, parity = #sim<parity none>
+sim.simulation @one_step range(64) dt(1.0e-2 : f32) max_steps(1) {
+  sim.buffer @L : f32 init {
+  ^bb0(%i: index):
+    %c = arith.constant 0.0 : f32
+    sim.yield %c : f32
+  }
+  sim.buffer @M : f32 init {
+  ^bb0(%i: index):
+    %c = arith.constant 0.0 : f32
+    sim.yield %c : f32
+  }
+  sim.buffer @T : f32 init {
+  ^bb0(%i: index):
+    %c = arith.constant 0.0 : f32
+    sim.yield %c : f32
+  }
+  sim.buffer @P : f32 init {
+  ^bb0(%i: index):
+    %c = arith.constant 0.0 : f32
+    sim.yield %c : f32
+  }
+  sim.component @Lead writes(@L) num_steps {
+  ^bb0(%i: index, %t: i64):
+    %n = arith.constant 2 : i32
+    sim.yield %n : i32
+  } evaluate {
+  ^bb0(%i: index, %t: i64, %n: i32, %dt: f32):
+    %t0 = sim.read @T[%i] : f32
+    sim.yield %t0 : f32
+  }
+  sim.component @Middle writes(@M) num_steps {
+  ^bb0(%i: index, %t: i64):
+    %n = arith.constant 1 : i32
+    sim.yield %n : i32
+  } evaluate {
+  ^bb0(%i: index, %t: i64, %n: i32, %dt: f32):
+    %m = sim.read @M[%i] : f32
+    %l = sim.read @L[%i] : f32
+    %s = arith.addf %m, %l : f32
+    sim.yield %s : f32
+  }
+  sim.component @Tail writes(@T) num_steps {
+  ^bb0(%i: index, %t: i64):
+    %n = arith.constant 1 : i32
+    sim.yield %n : i32
+  } evaluate {
+  ^bb0(%i: index, %t: i64, %n: i32, %dt: f32):
+    %c1 = arith.constant 1 : index
+    %j = arith.addi %i, %c1 : index
+    %t1 = sim.read @T[%j] : f32
+    %m = sim.read @M[%i] : f32
+    %s = arith.addf %t1, %m : f32
+    sim.yield %s : f32
+  }
+  sim.component @Plain writes(@P) evaluate {
+  ^bb0(%i: index, %t: i64, %n: i32, %dt: f32):
+    %t0 = sim.read @T[%i] : f32
+    sim.yield %t0 : f32
+  }
+  sim.schedule [@Lead]
+  sim.observe [@P]
+}
