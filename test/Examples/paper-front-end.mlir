@@ -27,6 +27,10 @@
 // FIG5-NEXT: ^bb0(%i: index, %t: i64, %n: i32, %dt: f32):
 // FIG5-NEXT: %begin, %size = sim.big_step : i64, i64
 // FIG5: %[[F:.*]] = arith.divf
+// FIG5: sim.load target @B0[%i] : f32
+// FIG5: } else {
+// FIG5: sim.load source @B0[%i] : f32
+// FIG5: } else {
 // FIG5-NEXT: %[[A:.*]] = sim.load source @B0[%i] : f32
 // FIG5-NEXT: %[[B:.*]] = sim.load target @B0[%i] : f32
 // FIG5: arith.mulf %{{.*}}, %[[A]] : f32
@@ -45,7 +49,10 @@
 // GRAVITY: sim.load source @B2[%i] : vector<4xf32>
 // GRAVITY-LABEL: sim.component @C1
 // GRAVITY: scf.for
-// GRAVITY: %[[A:.*]] = sim.load source @B0[%[[J:.*]]] : vector<4xf32>
+// GRAVITY: sim.load target @B0[%[[J:.*]]] : vector<4xf32>
+// GRAVITY: sim.load source @B0[%[[J]]] : vector<4xf32>
+// GRAVITY: } else {
+// GRAVITY-NEXT: %[[A:.*]] = sim.load source @B0[%[[J]]] : vector<4xf32>
 // GRAVITY-NEXT: %[[B:.*]] = sim.load target @B0[%[[J]]] : vector<4xf32>
 // GRAVITY: vector.broadcast
 // GRAVITY-LABEL: sim.component @C2

@@ -9,9 +9,11 @@
 // time arguments.
 //
 // The fraction is (t_end - T) / m with integer times, so it is exactly 0 at
-// the start and exactly 1 at the end of the big step; with interpolation
-// functions that are exact at both ends, every strategy then agrees with
-// `simple` whenever a big step is one base step.
+// the start and exactly 1 at the end of the big step, and there a read loads
+// the one copy it means (an scf.if on the local time) without the
+// interpolation's arithmetic: every strategy then agrees with `simple`
+// whenever a big step is one base step (signed zeros and all, as the
+// reference executor), and a big step of 1 costs no interpolation.
 //
 //===----------------------------------------------------------------------===//
 
@@ -19,6 +21,7 @@
 #include "sim/Dialect/Sim/Transforms/Passes.h"
 
 #include "mlir/Dialect/Arith/IR/Arith.h"
+#include "mlir/Dialect/SCF/IR/SCF.h"
 #include "mlir/IR/PatternMatch.h"
 
 namespace mlir::sim {
@@ -44,23 +47,33 @@ public:
     auto it = fractions.find(type);
     if (it != fractions.end())
       return it->second;
+    Value offset = getOffset();
     OpBuilder builder = atBodyStart();
     Location loc = body.getLoc();
-    auto [begin, size] = getBigStep();
-    // Local time at which the body reads: the end of the sub-step in
-    // evaluate, its start in num_steps.
-    Value end = time;
-    if (steps) {
-      Value steps64 =
-          arith::ExtSIOp::create(builder, loc, builder.getI64Type(), steps);
-      end = arith::AddIOp::create(builder, loc, end, steps64);
-    }
-    Value offset = arith::SubIOp::create(builder, loc, end, begin);
     Value offsetF = arith::SIToFPOp::create(builder, loc, type, offset);
-    Value sizeF = arith::SIToFPOp::create(builder, loc, type, size);
+    Value sizeF =
+        arith::SIToFPOp::create(builder, loc, type, getBigStep().second);
     Value fraction = arith::DivFOp::create(builder, loc, offsetF, sizeF);
-    track({offset, offsetF, sizeF, fraction});
+    track({offsetF, sizeF, fraction});
     return fractions[type] = fraction;
+  }
+
+  /// Whether the body reads at the start (`offset == 0`) and at the end
+  /// (`offset == m`) of the big step: there every read is one copy, loaded
+  /// as it is, without the interpolation's arithmetic.
+  std::pair<Value, Value> getEnds() {
+    if (!atStart) {
+      Value offset = getOffset();
+      OpBuilder builder = atBodyStart();
+      Location loc = body.getLoc();
+      Value zero = arith::ConstantIntOp::create(builder, loc, 0, 64);
+      atStart = arith::CmpIOp::create(builder, loc, arith::CmpIPredicate::eq,
+                                      offset, zero);
+      atEnd = arith::CmpIOp::create(builder, loc, arith::CmpIPredicate::eq,
+                                    offset, getBigStep().second);
+      track({zero, atStart, atEnd});
+    }
+    return {atStart, atEnd};
   }
 
   Value getSpan(FloatType type) {
@@ -97,6 +110,27 @@ public:
   }
 
 private:
+  /// The local time at which the body reads, from the start of the big
+  /// step: the end of the sub-step in evaluate, its start in num_steps.
+  Value getOffset() {
+    if (offset)
+      return offset;
+    auto [begin, size] = getBigStep();
+    OpBuilder builder = atBodyStart();
+    Location loc = body.getLoc();
+    Value end = time;
+    if (steps) {
+      Value steps64 =
+          arith::ExtSIOp::create(builder, loc, builder.getI64Type(), steps);
+      track({steps64});
+      end = arith::AddIOp::create(builder, loc, end, steps64);
+      track({end});
+    }
+    offset = arith::SubIOp::create(builder, loc, end, begin);
+    track({offset});
+    return offset;
+  }
+
   std::pair<Value, Value> getBigStep() {
     if (!bigStep) {
       OpBuilder builder(&body.front(), body.front().begin());
@@ -129,6 +163,7 @@ private:
   Operation *insertionPoint = nullptr;
   SmallVector<Operation *> created;
   llvm::DenseMap<Type, Value> fractions, spans;
+  Value offset, atStart, atEnd;
 };
 
 struct InsertInterpolationPass
@@ -264,7 +299,29 @@ struct InsertInterpolationPass
     FloatType scalarType = buffer.getScalarType();
     Value fraction = time.getFraction(scalarType);
     Value span = time.getSpan(scalarType);
+    Version beginVersion =
+        buffer.getSnapshot() ? Version::snapshot : Version::source;
+    auto [startsStep, endsStep] = time.getEnds();
+    // At the ends of the big step the value is the copy itself, exactly
+    // (the reference executor returns it so too, whatever the function);
+    // between them, the interpolation. The branches are uniform over a
+    // group's sub-step, and the end is every read of a big step of 1.
     auto interpolateAt = [&](OpBuilder &builder, Value index) {
+      Type type = read.getType();
+      auto atEndIf = scf::IfOp::create(builder, loc, type, endsStep,
+                                       /*withElseRegion=*/true);
+      OpBuilder::InsertionGuard guard(builder);
+      builder.setInsertionPointToStart(atEndIf.thenBlock());
+      scf::YieldOp::create(builder, loc,
+                           loadAt(builder, buffer, Version::target, index));
+      builder.setInsertionPointToStart(atEndIf.elseBlock());
+      auto atStartIf = scf::IfOp::create(builder, loc, type, startsStep,
+                                         /*withElseRegion=*/true);
+      scf::YieldOp::create(builder, loc, atStartIf.getResult(0));
+      builder.setInsertionPointToStart(atStartIf.thenBlock());
+      scf::YieldOp::create(builder, loc,
+                           loadAt(builder, buffer, beginVersion, index));
+      builder.setInsertionPointToStart(atStartIf.elseBlock());
       SmallVector<Value> atBegin, atEnd;
       for (BufferOp input : inputs) {
         atBegin.push_back(loadAt(
@@ -272,8 +329,10 @@ struct InsertInterpolationPass
             input.getSnapshot() ? Version::snapshot : Version::source, index));
         atEnd.push_back(loadAt(builder, input, Version::target, index));
       }
-      return interp.buildInterpolation(builder, loc, atBegin, atEnd, fraction,
-                                       span);
+      scf::YieldOp::create(builder, loc,
+                           interp.buildInterpolation(builder, loc, atBegin,
+                                                     atEnd, fraction, span));
+      return atEndIf.getResult(0);
     };
 
     // hip-cache: a recorded cache of this buffer is filled once per sub-step

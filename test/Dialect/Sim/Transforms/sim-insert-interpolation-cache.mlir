@@ -66,6 +66,10 @@ sim.simulation @smooth range(10) dt(1.0e-1 : f32) max_steps(4) {
 // CHECK:           %[[F:.*]] = arith.divf
 // CHECK:           sim.fill_cache @U window(-1, 1) {
 // CHECK-NEXT:      ^bb0(%[[K:.*]]: index):
+// CHECK-NEXT:        scf.if
+// CHECK-NEXT:          sim.load target @U[%[[K]]] : f32
+// CHECK:             } else {
+// CHECK:             } else {
 // CHECK-NEXT:        %[[A:.*]] = sim.load source @U[%[[K]]] : f32
 // CHECK-NEXT:        %[[B:.*]] = sim.load target @U[%[[K]]] : f32
 // CHECK:             arith.subf %{{.*}}, %[[F]]

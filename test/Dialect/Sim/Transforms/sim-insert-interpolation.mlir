@@ -5,8 +5,9 @@
 // Roles become loads of named copies: own -> local, back_edge -> source.
 // Under hip an interpolated read (here in a neighbour loop) becomes the value
 // at T (source: the writer keeps its state in registers), the value at T + m
-// (target), and linear interpolation at (t + n - T) / m. Under simple and
-// traditional it reads the target: the fraction is always 1.
+// (target), and linear interpolation at (t + n - T) / m, except at the ends
+// of the big step (t + n - T is 0 or m), where it is the copy itself. Under
+// simple and traditional it reads the target: the fraction is always 1.
 
 // CHECK-LABEL: sim.simulation @linear_f32
 // CHECK: sim.component @First
@@ -25,8 +26,19 @@
 // HIP-NEXT:  %[[OFFF:.*]] = arith.sitofp %[[OFF]] : i64 to f32
 // HIP-NEXT:  %[[SIZEF:.*]] = arith.sitofp %[[SIZE]] : i64 to f32
 // HIP-NEXT:  %[[F:.*]] = arith.divf %[[OFFF]], %[[SIZEF]] : f32
+// HIP-NEXT:  %[[ZERO:.*]] = arith.constant 0 : i64
+// HIP-NEXT:  %[[START:.*]] = arith.cmpi eq, %[[OFF]], %[[ZERO]] : i64
+// HIP-NEXT:  %[[ATEND:.*]] = arith.cmpi eq, %[[OFF]], %[[SIZE]] : i64
 // CHECK:     scf.for %[[K:[^ ]+]] =
 // CHECK-NEXT:  %[[J:.*]] = arith.addi %[[I]], %[[K]] : index
+// HIP-NEXT:    scf.if %[[ATEND]] -> (f32) {
+// HIP-NEXT:      %[[AT:.*]] = sim.load target @A[%[[J]]] : f32
+// HIP-NEXT:      scf.yield %[[AT]] : f32
+// HIP-NEXT:    } else {
+// HIP-NEXT:      scf.if %[[START]] -> (f32) {
+// HIP-NEXT:        %[[AS:.*]] = sim.load source @A[%[[J]]] : f32
+// HIP-NEXT:        scf.yield %[[AS]] : f32
+// HIP-NEXT:      } else {
 // HIP-NEXT:    %[[A0:.*]] = sim.load source @A[%[[J]]] : f32
 // HIP-NEXT:    %[[A1:.*]] = sim.load target @A[%[[J]]] : f32
 // HIP-NEXT:    %[[C1:.*]] = arith.constant 1.000000e+00 : f32
@@ -100,6 +112,8 @@ sim.simulation @linear_f32 range(64) dt(1.0e-2 : f32) max_steps(3) {
 // CHECK-NEXT: ^bb0(%{{.*}}: index, %[[T:.*]]: i64):
 // HIP-NEXT:  %[[BEGIN:.*]], %[[SIZE:.*]] = sim.big_step : i64, i64
 // HIP-NEXT:  %[[OFF:.*]] = arith.subi %[[T]], %[[BEGIN]] : i64
+// HIP:       sim.load target @E[
+// HIP:       sim.load source @E[
 // HIP:       sim.load source @E[
 // HIP-NEXT:  sim.load target @E[
 // ONE-NEXT:  sim.load source @E[
@@ -153,6 +167,10 @@ sim.simulation @num_steps_fraction range(64) dt(1.0e-2 : f32) max_steps(3) {
 // HIP-NEXT:  %[[DT32:.*]] = sim.get_param @dt : f32
 // HIP-NEXT:  %[[DT:.*]] = arith.extf %[[DT32]] : f32 to f64
 // HIP-NEXT:  %[[SPAN:.*]] = arith.mulf %[[SIZEF]], %[[DT]] : f64
+// At the start of the big step the snapshot, at its end the target.
+// HIP:       sim.load target @X[%[[I]]] : f64
+// HIP:       sim.load snapshot @X[%[[I]]] : f64
+// HIP:       } else {
 // HIP-NEXT:  %[[X0:.*]] = sim.load snapshot @X[%[[I]]] : f64
 // HIP-NEXT:  %[[X1:.*]] = sim.load target @X[%[[I]]] : f64
 // HIP-NEXT:  %[[V0:.*]] = sim.load snapshot @V[%[[I]]] : f64
@@ -223,7 +241,7 @@ sim.simulation @hermite_f64 range(64) dt(2.5e-1 : f32) max_steps(3) {
 // HIP:   %[[SV:.*]] = vector.broadcast %[[S]] : f32 to vector<2xf32>
 // HIP:   %[[B:.*]] = arith.mulf %[[SV]], %[[Q]] : vector<2xf32>
 // HIP:   %[[R:.*]] = arith.addf %[[A]], %[[B]] : vector<2xf32>
-// HIP:   sim.yield %[[R]] : vector<2xf32>
+// HIP:   scf.yield %[[R]] : vector<2xf32>
 // ONE:   %[[Q:.*]] = sim.load target @P[
 // ONE-NEXT: sim.yield %[[Q]] : vector<2xf32>
 sim.simulation @cubic_vector range(64) dt(1.0e-2 : f32) max_steps(3) {

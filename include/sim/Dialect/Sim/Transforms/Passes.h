@@ -8,6 +8,7 @@
 #define SIM_DIALECT_SIM_TRANSFORMS_PASSES_H
 
 #include "mlir/Dialect/Arith/IR/Arith.h"
+#include "mlir/Dialect/SCF/IR/SCF.h"
 #include "mlir/Dialect/Vector/IR/VectorOps.h"
 #include "mlir/Pass/Pass.h"
 #include "sim/Dialect/Sim/IR/SimOps.h"

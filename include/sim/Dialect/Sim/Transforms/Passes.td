@@ -211,7 +211,11 @@ def SimInsertInterpolation
       (`target`), plus the auxiliary buffers the interpolation needs, and
       interpolate at the reader's local time: fraction `(t + n - T) / m` in
       `evaluate`, `(t - T) / m` in `num_steps`, with `T` and `m` from
-      `sim.big_step`. The length of the big step in time units (`m * dt`,
+      `sim.big_step`. At the ends of the big step (fraction 0 or 1, as at
+      every read of a big step of one base step) the read is the copy
+      itself (`scf.if` on the local time), exactly, as the reference
+      executor returns it; the arithmetic runs only in between. The length
+      of the big step in time units (`m * dt`,
       for derivatives) reads `dt` with `sim.get_param @dt`: it is a
       run-time value, not a constant of the scene. Under `simple` and `traditional` they load `target` in
       `evaluate` (the fraction is always 1) and `source` in `num_steps`
@@ -225,6 +229,7 @@ def SimInsertInterpolation
     after a run), under every strategy.
   }];
   let dependentDialects = ["::mlir::arith::ArithDialect",
+                           "::mlir::scf::SCFDialect",
                            "::mlir::vector::VectorDialect"];
 }
 
