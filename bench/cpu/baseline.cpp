@@ -830,7 +830,8 @@ OPTIONS:
   --help               this text
 
 Kernel and wall time are the same here: the run's parallel region. Launches
-counts the work-shared loops (sim's kernels); there are no host syncs.
+counts the phases sim launches a kernel for (the step decision, the
+estimate, one per component); there are no host syncs.
 )";
 
 [[noreturn]] void usageError(const std::string &message) {
