@@ -73,6 +73,11 @@ for module in ("numpy", "matplotlib"):
                       stderr=subprocess.DEVNULL).returncode == 0:
         config.available_features.add(module)
 
+# `cpu-baseline`: the hand-written CPU baseline of the benchmarks
+# (bench/cpu) was built, which needs OpenMP (libomp-22-dev).
+if config.sim_cpu_baseline:
+    config.available_features.add("cpu-baseline")
+
 # `dot` renders the dependency graph in tests when Graphviz is installed.
 if lit.util.which("dot"):
     config.available_features.add("dot")

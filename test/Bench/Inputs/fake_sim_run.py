@@ -1,0 +1,48 @@
+#!/usr/bin/env python3
+"""A stand-in for sim-run --json and for sim-baseline-cpu in bench/run's
+tests: it runs nothing and writes the times and counters of a made-up scene,
+per strategy, so that the tables bench/run prints from them are known in
+advance (test/Bench/noise.test). As sim-run:
+
+  simple       1.00 s, every run; 100 evaluations
+  traditional  0.90-1.20 s (spread 30%); 50 evaluations
+  hip          0.40 s, every run: 2.5x simple, above its ceiling of 2x
+  hip-cache    0.60 s, every run: 1.67x simple, below its ceiling
+
+As the baseline (--scene given): 0.50 s every run, except hip-cache at
+0.50-0.60 s (spread 20%). Both dump the same observed state (--dump).
+"""
+
+import json
+import os
+import struct
+import sys
+
+TIMES = {"simple": [1.0, 1.0, 1.0], "traditional": [0.9, 1.0, 1.2],
+         "hip": [0.4, 0.4, 0.4], "hip-cache": [0.6, 0.6, 0.6]}
+BASELINE_TIMES = {"hip-cache": [0.5, 0.55, 0.6]}
+
+args = sys.argv[1:]
+if "--help" in args:
+    print("OVERVIEW: hand-written CPU code (a stand-in for bench/run's tests)")
+    sys.exit(0)
+baseline = "--scene" in args
+strategy = args[args.index("--strategy") + 1]
+out = args[args.index("--json") + 1]
+times = (BASELINE_TIMES.get(strategy, [0.5] * 3) if baseline
+         else TIMES[strategy])
+evaluations = 100 if strategy == "simple" else 50
+with open(out, "w") as f:
+    json.dump({"device": "fake", "backend": "cpu",
+               "kernel_seconds_runs": times, "wall_seconds_runs": times,
+               "evaluations": {"C0": evaluations}, "big_steps": 10,
+               "big_step_histogram": {"1": 10}, "launches": 20,
+               "host_syncs": 2}, f)
+if "--dump" in args:
+    folder = args[args.index("--dump") + 1]
+    os.makedirs(folder, exist_ok=True)
+    header = "{'descr': '<f4', 'fortran_order': False, 'shape': (1, 4), }"
+    header += " " * (63 - (10 + len(header)) % 64) + "\n"
+    with open(os.path.join(folder, "B2.npy"), "wb") as f:
+        f.write(b"\x93NUMPY\x01\x00" + struct.pack("<H", len(header)) +
+                header.encode() + struct.pack("<4f", 0.5, -0.5, 0.25, 0.0))
