@@ -111,6 +111,8 @@ const char *sim_status_name(sim_status status) {
     return "memory limit";
   case SIM_ERROR_CHECKPOINT:
     return "bad checkpoint";
+  case SIM_ERROR_DISTRIBUTED:
+    return "distributed run failed";
   }
   return "unknown status";
 }

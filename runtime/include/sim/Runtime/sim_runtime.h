@@ -58,6 +58,9 @@ typedef enum sim_status {
   /// parameter value than the session's; or a session whose state is not on
   /// a big-step boundary (its last run failed inside one).
   SIM_ERROR_CHECKPOINT = 11,
+  /// A distributed session's communication failed, or its ranks disagree
+  /// (another bundle, strategy, range, ...) or are too many for the range.
+  SIM_ERROR_DISTRIBUTED = 12,
 } sim_status;
 
 /// The message of the last failed call on this thread (never null; empty
@@ -175,6 +178,33 @@ SIM_API sim_status sim_bundle_param(const sim_bundle *bundle, int32_t index,
 
 typedef struct sim_session sim_session;
 
+/// The processes of a distributed session (docs/Distributed.md): the
+/// runtime splits the range into one block of whole groups per rank and
+/// calls these functions, collectively, in the same order on every rank;
+/// it never calls MPI itself (runtime/mpi/ implements them with MPI for
+/// sim-run --distributed). Every function returns 0 on success and
+/// non-zero on failure (then the session fails with
+/// SIM_ERROR_DISTRIBUTED).
+typedef struct sim_communicator {
+  void *user;
+  /// This process's rank and the number of ranks.
+  int32_t rank, size;
+  /// Replaces each of `count` values by its minimum (`sum`: its sum) over
+  /// all ranks.
+  int (*allreduce_min_i64)(void *user, int64_t *values, int32_t count);
+  int (*allreduce_sum_i64)(void *user, int64_t *values, int32_t count);
+  /// Point to point: sends `send_bytes[r]` bytes from `send[r]` to every
+  /// rank r with a non-zero count and receives `recv_bytes[r]` into
+  /// `recv[r]` (arrays of `size` entries; a rank's own entries are 0).
+  int (*exchange)(void *user, const void *const *send,
+                  const size_t *send_bytes, void *const *recv,
+                  const size_t *recv_bytes);
+  /// Every rank's `bytes[rank]` bytes from `data`, concatenated in rank
+  /// order into `out` on every rank (`bytes` has `size` entries).
+  int (*allgather)(void *user, const void *data, const size_t *bytes,
+                   void *out);
+} sim_communicator;
+
 typedef struct sim_session_options {
   sim_strategy strategy;
   sim_backend backend;
@@ -196,6 +226,11 @@ typedef struct sim_session_options {
   /// is refused with SIM_ERROR_MEMORY_LIMIT before anything is allocated.
   /// 0: three quarters of the device's memory.
   int64_t max_memory;
+  /// Distributed sessions: the ranks to split the range over (NULL: one
+  /// process). Needs a bundle compiled with sim-translate
+  /// --sim-distributed and the CPU backend; the communicator must outlive
+  /// the session.
+  const sim_communicator *communicator;
 } sim_session_options;
 
 /// Fills in the defaults: hip, auto, the plan's group size, all threads,
