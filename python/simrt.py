@@ -37,7 +37,9 @@ class _Options(ctypes.Structure):
     _fields_ = [("strategy", ctypes.c_int), ("backend", ctypes.c_int),
                 ("group_size", ctypes.c_int64), ("cpu_threads", ctypes.c_int32),
                 ("cuda_device", ctypes.c_int32), ("cuda_graph", ctypes.c_int32),
-                ("check_finite", ctypes.c_int32), ("max_memory", ctypes.c_int64)]
+                ("check_finite", ctypes.c_int32), ("max_memory", ctypes.c_int64),
+                # A sim_communicator *: Python sessions run on one process.
+                ("communicator", ctypes.c_void_p)]
 
 
 class _Metrics(ctypes.Structure):
@@ -45,7 +47,10 @@ class _Metrics(ctypes.Structure):
                 ("end", ctypes.c_int64), ("wall_seconds", ctypes.c_double),
                 ("kernel_seconds", ctypes.c_double),
                 ("launches", ctypes.c_int64), ("graph_launches", ctypes.c_int64),
-                ("host_syncs", ctypes.c_int64), ("big_steps", ctypes.c_int64)]
+                ("host_syncs", ctypes.c_int64), ("big_steps", ctypes.c_int64),
+                ("halo_exchanges", ctypes.c_int64),
+                ("exchanged_bytes", ctypes.c_int64),
+                ("allreduces", ctypes.c_int64)]
 
 
 class _BufferInfo(ctypes.Structure):

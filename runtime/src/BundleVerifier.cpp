@@ -16,6 +16,9 @@
 //   the kernel takes, the same dynamic shared memory, and a kernel made for
 //   the plan's clock;
 // - phases unroll to a bounded number of launches;
+// - distributed plans: halos within the plan's, exchanges of buffers (and
+//   snapshots) the plan has, all-reduces of clock slots it has; First and
+//   Extent arguments, halos, exchanges and all-reduces only there;
 // - the reference model resolves against the scene;
 // - every shared object's ELF headers lie inside its bytes
 //   (SharedObject.h), checked before anything is loaded.
@@ -43,6 +46,8 @@ constexpr uint32_t kMaxLanes = 64;
 constexpr uint32_t kMaxStride = 1 << 16;
 /// The largest group size a plan may be made for.
 constexpr uint32_t kMaxGroupSize = 1 << 16;
+/// The widest halo of a distributed plan (ghost items on each side).
+constexpr uint32_t kMaxHalo = 1 << 20;
 
 [[noreturn]] void bad(const std::string &message) {
   fail(SIM_ERROR_BUNDLE, message);
@@ -210,6 +215,10 @@ private:
     if (plan.clock_slots > kMaxClockSlots)
       bad(what + " asks for a clock of " + std::to_string(plan.clock_slots) +
           " slots, more than " + std::to_string(kMaxClockSlots));
+    if (plan.distributed && plan.distributed->halo > kMaxHalo)
+      bad(what + " is distributed with a halo of " +
+          std::to_string(plan.distributed->halo) + " items, more than " +
+          std::to_string(kMaxHalo));
     if (plan.histogram < kFirstFreeSlot ||
         uint64_t(plan.histogram) + uint64_t(scene.max_steps) + 1 >
             plan.clock_slots)
@@ -248,6 +257,15 @@ private:
         bad(about + " has a stride of " + std::to_string(buffer->stride) +
             " bytes, which cannot hold its elements (" +
             elementText(*sceneBuffer.element) + ")");
+      uint32_t halo = plan.distributed ? plan.distributed->halo : 0;
+      if (!plan.distributed && (buffer->halo_below || buffer->halo_above))
+        bad(about + " has a halo (" + std::to_string(buffer->halo_below) +
+            " below, " + std::to_string(buffer->halo_above) +
+            " above), but the plan is not distributed");
+      if (buffer->halo_below > halo || buffer->halo_above > halo)
+        bad(about + " has a halo of " + std::to_string(buffer->halo_below) +
+            " below and " + std::to_string(buffer->halo_above) +
+            " above, wider than the plan's halo of " + std::to_string(halo));
     }
   }
 
@@ -385,6 +403,13 @@ private:
       return scalar(scene.dt->type());
     case ArgKind::Time:
       return scalar(ScalarType::F64);
+    case ArgKind::First:
+    case ArgKind::Extent:
+      if (!plan.distributed)
+        bad(about + " passes the block's " +
+            (arg.kind() == ArgKind::First ? "first item" : "extent") +
+            ", but the plan is not distributed");
+      return scalar(ScalarType::I64);
     }
     bad(about + " has unknown kind " + std::to_string(int(arg.kind())));
   }
@@ -422,6 +447,33 @@ private:
       if (!same)
         bad(argument + " passes " + typeName(want) +
             ", but the kernel's parameter is " + typeName(have));
+    }
+    if (!plan.distributed &&
+        (!launch.reduce_min.empty() || !launch.exchange.empty()))
+      bad(about + " has " +
+          (launch.reduce_min.empty() ? "exchanges" : "all-reduces") +
+          ", but the plan is not distributed");
+    std::set<uint32_t> reduced;
+    for (uint32_t slot : launch.reduce_min) {
+      if (slot >= plan.clock_slots)
+        bad(about + " all-reduces clock slot " + std::to_string(slot) +
+            ", but the plan's clock has " + std::to_string(plan.clock_slots) +
+            " slots");
+      if (!reduced.insert(slot).second)
+        bad(about + " all-reduces clock slot " + std::to_string(slot) +
+            " twice");
+    }
+    std::set<std::pair<uint32_t, bool>> exchanged;
+    for (const schema::Exchange &entry : launch.exchange) {
+      checkIndex(entry.buffer(), plan.buffers.size(),
+                 about + ": an exchanged buffer");
+      if (entry.snapshot() && !plan.buffers[entry.buffer()]->snapshot)
+        bad(about + " exchanges the snapshot of buffer " +
+            quoted(bufferName(entry.buffer())) + ", which has none");
+      if (!exchanged.insert({entry.buffer(), entry.snapshot()}).second)
+        bad(about + " exchanges " +
+            (entry.snapshot() ? "the snapshot of buffer " : "buffer ") +
+            quoted(bufferName(entry.buffer())) + " twice");
     }
   }
 

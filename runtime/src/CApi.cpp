@@ -592,8 +592,7 @@ sim_status sim_session_checkpoint_fd(sim_session *session, int fd) {
 sim_status sim_session_restart(sim_session *session, const char *path) {
   SIM_REQUIRE(session);
   SIM_REQUIRE(path);
-  return guard(
-      [&] { restartFromCheckpoint(*session->session, readCheckpoint(path)); });
+  return guard([&] { restartFromCheckpointFile(*session->session, path); });
 }
 
 sim_status sim_session_nonfinite(const sim_session *session,

@@ -15,10 +15,17 @@
 // CRC, the FlatBuffers verifier, then every extent), and restarting checks
 // that the checkpoint belongs to the session before it changes anything.
 //
+// A distributed session (Distribution.h) gathers its state on every rank
+// (collectively, before any file is touched), and only rank 0 writes it: the
+// file is the one a single process would write. Every rank reads the file
+// on a restart and keeps its block. The ranks agree afterwards on whether
+// every one of them succeeded, so that none goes on alone.
+//
 //===----------------------------------------------------------------------===//
 
 #include "Checkpoint.h"
 
+#include "Distribution.h"
 #include "Error.h"
 #include "Executor.h"
 
@@ -27,6 +34,8 @@
 #include <cstdio>
 #include <cstring>
 #include <fcntl.h>
+#include <limits>
+#include <optional>
 #include <random>
 #include <sys/stat.h>
 #include <unistd.h>
@@ -91,13 +100,61 @@ void writeAll(int fd, const uint8_t *data, size_t size,
   }
 }
 
-} // namespace
+/// The communicator of a session on more than one rank, else null.
+Communicator *ranksOf(Executor &executor) {
+  Communicator *comm = executor.communicator();
+  return comm && comm->size() > 1 ? comm : nullptr;
+}
 
-//===----------------------------------------------------------------------===//
-// Writing
-//===----------------------------------------------------------------------===//
+/// Runs `body` on every rank of `comm`, then agrees on whether it failed
+/// anywhere: the rank that failed throws its error, the others an error
+/// with its status naming the first rank that failed and `what`.
+template <typename Body>
+void agreeOn(Communicator *comm, const std::string &what, Body &&body) {
+  if (!comm) {
+    body();
+    return;
+  }
+  std::optional<Error> error;
+  try {
+    body();
+  } catch (const Error &caught) {
+    error = caught;
+  }
+  // The first rank that failed, with its status.
+  constexpr int64_t kStatuses = 64;
+  int64_t failed = error ? int64_t(comm->rank()) * kStatuses + error->status
+                         : std::numeric_limits<int64_t>::max();
+  comm->minimum(&failed, 1);
+  if (error)
+    throw *error;
+  if (failed != std::numeric_limits<int64_t>::max())
+    fail(sim_status(failed % kStatuses),
+         "rank " + std::to_string(failed / kStatuses) + " " + what +
+             " (its message says why)");
+}
 
-void writeCheckpoint(Executor &executor, int fd, const std::string &name) {
+/// A distributed session's checkpoint, gathered on every rank.
+struct Gathered {
+  std::vector<int64_t> clock;
+  std::vector<std::vector<uint8_t>> buffers;
+};
+
+Gathered gather(Executor &executor) {
+  Gathered gathered;
+  gathered.clock = executor.checkpointClock();
+  for (const std::string &buffer : executor.stateBuffers()) {
+    gathered.buffers.emplace_back(executor.hostBytes(buffer));
+    executor.getBuffer(buffer, gathered.buffers.back().data(),
+                       gathered.buffers.back().size());
+  }
+  return gathered;
+}
+
+/// Writes the checkpoint; a distributed session's state is `gathered`
+/// already, a single process's is read as it is written.
+void writeImage(Executor &executor, int fd, const std::string &name,
+                const Gathered *gathered) {
   off_t start = lseek(fd, 0, SEEK_CUR);
   if (start < 0)
     fail(SIM_ERROR_IO, "cannot write checkpoint '" + name +
@@ -105,7 +162,8 @@ void writeCheckpoint(Executor &executor, int fd, const std::string &name) {
                            std::strerror(errno) + ")");
   // The clock first: it initialises a session without a state and refuses
   // one that is not on a big-step boundary.
-  std::vector<int64_t> clock = executor.checkpointClock();
+  std::vector<int64_t> clock =
+      gathered ? gathered->clock : executor.checkpointClock();
   const Bundle &bundle = executor.sourceBundle();
   const Settings &settings = executor.currentSettings();
   bool reference = executor.backendKind() == SIM_BACKEND_REFERENCE;
@@ -165,10 +223,14 @@ void writeCheckpoint(Executor &executor, int fd, const std::string &name) {
   emit(builder.GetBufferPointer(), builder.GetSize());
   pad();
   std::vector<uint8_t> data;
-  for (const std::string &buffer : names) {
-    data.resize(executor.hostBytes(buffer));
-    executor.getBuffer(buffer, data.data(), data.size());
-    emit(data.data(), data.size());
+  for (size_t b = 0; b < names.size(); ++b) {
+    if (gathered) {
+      emit(gathered->buffers[b].data(), gathered->buffers[b].size());
+    } else {
+      data.resize(executor.hostBytes(names[b]));
+      executor.getBuffer(names[b], data.data(), data.size());
+      emit(data.data(), data.size());
+    }
     pad();
   }
 
@@ -184,7 +246,8 @@ void writeCheckpoint(Executor &executor, int fd, const std::string &name) {
          "cannot write checkpoint '" + name + "': " + std::strerror(errno));
 }
 
-void writeCheckpointFile(Executor &executor, const std::string &path) {
+void writeFile(Executor &executor, const std::string &path,
+               const Gathered *gathered) {
   size_t slash = path.rfind('/');
   std::string dir = slash == std::string::npos ? "."
                     : slash == 0               ? "/"
@@ -212,7 +275,7 @@ void writeCheckpointFile(Executor &executor, const std::string &path) {
                            "' for checkpoint '" + path +
                            "': " + std::strerror(errno));
   try {
-    writeCheckpoint(executor, fd, path);
+    writeImage(executor, fd, path, gathered);
     if (fsync(fd) != 0)
       fail(SIM_ERROR_IO, "cannot write checkpoint '" + path +
                              "' (fsync): " + std::strerror(errno));
@@ -237,6 +300,38 @@ void writeCheckpointFile(Executor &executor, const std::string &path) {
     fsync(dirFd);
     close(dirFd);
   }
+}
+
+} // namespace
+
+//===----------------------------------------------------------------------===//
+// Writing
+//===----------------------------------------------------------------------===//
+
+void writeCheckpoint(Executor &executor, int fd, const std::string &name) {
+  Communicator *comm = ranksOf(executor);
+  if (!comm) {
+    writeImage(executor, fd, name, nullptr);
+    return;
+  }
+  Gathered gathered = gather(executor);
+  agreeOn(comm, "could not write checkpoint '" + name + "'", [&] {
+    if (comm->rank() == 0)
+      writeImage(executor, fd, name, &gathered);
+  });
+}
+
+void writeCheckpointFile(Executor &executor, const std::string &path) {
+  Communicator *comm = ranksOf(executor);
+  if (!comm) {
+    writeFile(executor, path, nullptr);
+    return;
+  }
+  Gathered gathered = gather(executor);
+  agreeOn(comm, "could not write checkpoint '" + path + "'", [&] {
+    if (comm->rank() == 0)
+      writeFile(executor, path, &gathered);
+  });
 }
 
 //===----------------------------------------------------------------------===//
@@ -355,7 +450,17 @@ CheckpointFile readCheckpoint(const std::string &path) {
 // Restarting
 //===----------------------------------------------------------------------===//
 
-void restartFromCheckpoint(Executor &executor, const CheckpointFile &file) {
+namespace {
+
+/// What a verified checkpoint restores.
+struct Restart {
+  std::vector<int64_t> clock;
+  std::vector<std::string> names;
+  std::vector<const ckpt::StateT *> states;
+};
+
+/// Checks that `file` belongs to the session; changes nothing.
+Restart checkRestart(Executor &executor, const CheckpointFile &file) {
   const ckpt::CheckpointT &m = file.manifest;
   const Bundle &bundle = executor.sourceBundle();
   const schema::SceneT &scene = executor.scene();
@@ -456,11 +561,36 @@ void restartFromCheckpoint(Executor &executor, const CheckpointFile &file) {
         refuse("holds buffer '" + state->name + "', which this session's " +
                (planSession ? "plan" : "reference model") + " does not have");
 
+  return {clock, names, states};
+}
+
+void applyRestart(Executor &executor, const CheckpointFile &file,
+                  const Restart &restart) {
+  executor.restoreClock(file.manifest.time, restart.clock);
+  for (size_t b = 0; b < restart.names.size(); ++b)
+    executor.setBuffer(restart.names[b], file.data(*restart.states[b]),
+                       size_t(restart.states[b]->bytes));
+}
+
+} // namespace
+
+void restartFromCheckpoint(Executor &executor, const CheckpointFile &file) {
+  Restart restart;
+  agreeOn(ranksOf(executor), "refused checkpoint '" + file.name + "'",
+          [&] { restart = checkRestart(executor, file); });
   // Only now: the state.
-  executor.restoreClock(m.time, clock);
-  for (size_t b = 0; b < names.size(); ++b)
-    executor.setBuffer(names[b], file.data(*states[b]),
-                       size_t(states[b]->bytes));
+  applyRestart(executor, file, restart);
+}
+
+void restartFromCheckpointFile(Executor &executor, const std::string &path) {
+  std::optional<CheckpointFile> file;
+  Restart restart;
+  agreeOn(ranksOf(executor), "could not read or use checkpoint '" + path + "'",
+          [&] {
+            file = readCheckpoint(path);
+            restart = checkRestart(executor, *file);
+          });
+  applyRestart(executor, *file, restart);
 }
 
 } // namespace sim::rt

@@ -39,6 +39,8 @@ constexpr uint64_t kCheckpointAlignment = 64;
 /// Writes a checkpoint of `executor` to `fd`, from its current offset
 /// (which must be seekable: the header is written last); `name` names the
 /// file in messages. Initialises the session first if it has no state.
+/// A distributed session's ranks all call it; only rank 0 writes (the
+/// other ranks' `fd` and `path` are not touched).
 void writeCheckpoint(Executor &executor, int fd, const std::string &name);
 
 /// Writes a checkpoint to `path` atomically: a new file in the same
@@ -70,6 +72,10 @@ CheckpointFile readCheckpoint(const std::string &path);
 /// clock, every buffer). Nothing changes when a check fails
 /// (SIM_ERROR_CHECKPOINT).
 void restartFromCheckpoint(Executor &executor, const CheckpointFile &file);
+
+/// readCheckpoint and restartFromCheckpoint. A distributed session's ranks
+/// each read the file, and all fail when one cannot read or use it.
+void restartFromCheckpointFile(Executor &executor, const std::string &path);
 
 } // namespace sim::rt
 

@@ -24,6 +24,8 @@
 
 namespace sim::rt {
 
+class Communicator;
+
 /// `range`, `dt` and the scene's parameters, set and read as text.
 class Settings {
 public:
@@ -145,6 +147,9 @@ public:
   /// executor takes `time` alone). The buffers follow with setBuffer.
   virtual void restoreClock(int64_t time,
                             const std::vector<int64_t> &clock) = 0;
+
+  /// A distributed session's ranks (Distribution.h); null otherwise.
+  virtual Communicator *communicator() { return nullptr; }
 
   /// The components the evaluation counters are for.
   virtual size_t numComponents() const = 0;

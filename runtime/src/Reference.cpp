@@ -68,6 +68,11 @@ void interpolateLanes(Interp interp, int32_t lanes, S f, S h, const uint8_t *a,
 ReferenceSession::ReferenceSession(std::shared_ptr<const Bundle> bundleIn,
                                    const sim_session_options &options)
     : bundle(std::move(bundleIn)), settings(*bundle) {
+  // It follows every item in one process, in plain C++: nothing to split.
+  if (options.communicator)
+    fail(SIM_ERROR_DISTRIBUTED,
+         "the reference executor runs on one process and takes no "
+         "communicator; distributed runs use the plan executor on the CPU");
   model_ = bundle->reference();
   if (!model_)
     fail(SIM_ERROR_BUNDLE,

@@ -55,6 +55,38 @@ Session::Session(std::shared_ptr<const Bundle> bundleIn,
   bool hasPtx = !plan_->ptx.empty();
   const schema::CpuCodeT *cpu = bundle->cpuCode(*plan_);
 
+  // Distributed plans run on every rank with the same code, on the CPU:
+  // ghosts are packed straight from the backend's memory, which the CPU
+  // backend's synchronous launches leave complete.
+  if (options.communicator && !plan_->distributed)
+    fail(SIM_ERROR_BUNDLE,
+         "bundle '" + bundle->name +
+             "' was not compiled for distributed runs: compile it with "
+             "sim-translate --sim-distributed");
+  if (plan_->distributed) {
+    comm = std::make_unique<Communicator>(options.communicator);
+    halo = int64_t(plan_->distributed->halo);
+    if (options.communicator) {
+      if (options.backend == SIM_BACKEND_CUDA)
+        fail(SIM_ERROR_DISTRIBUTED, "distributed runs use the CPU backend");
+      if (options.backend == SIM_BACKEND_AUTO) {
+        options.backend = SIM_BACKEND_CPU;
+        note = "distributed runs use the CPU backend";
+        hasPtx = false;
+      }
+    } else if (options.backend != SIM_BACKEND_CPU) {
+      // One process: the same code path, so the CPU too.
+      if (options.backend == SIM_BACKEND_CUDA)
+        fail(SIM_ERROR_DISTRIBUTED,
+             "the plan of strategy '" + name +
+                 "' is distributed, and distributed plans run on the CPU "
+                 "backend");
+      note = "the plan of strategy '" + name +
+             "' is distributed (distributed plans run on the CPU)";
+      hasPtx = false;
+    }
+  }
+
   auto noCode = [&](const char *what, const char *backendName) {
     fail(SIM_ERROR_BUNDLE, "bundle '" + bundle->name + "' has no " + what +
                                " for strategy '" + name + "'; the " +
@@ -110,6 +142,8 @@ Session::Session(std::shared_ptr<const Bundle> bundleIn,
 
   evaluations.assign(plan_->components.size(), 0);
   histogram.assign(size_t(scene().max_steps) + 1, 0);
+  if (distributed())
+    ensureAgreed();
 }
 
 Session::~Session() {
@@ -136,6 +170,7 @@ void Session::set(const std::string &name, const std::string &text) {
   }
   // dt and parameters are launch arguments.
   prepared = false;
+  agreed = false;
 }
 
 int Session::bufferIndex(const std::string &name) const {
@@ -155,7 +190,16 @@ size_t Session::deviceStride(int buffer) const {
   return size_t(plan_->buffers[buffer]->stride);
 }
 
-int64_t Session::memoryBytes(int64_t range) const {
+int64_t Session::extentAt(int64_t range) const {
+  if (!distributed())
+    return range;
+  Decomposition split(range, groupSize_, comm->size());
+  return split.count(comm->rank()) + 2 * halo;
+}
+
+int64_t Session::memoryBytes(int64_t globalRange) const {
+  // This rank's share: a distributed session's limit is per rank.
+  int64_t range = extentAt(globalRange);
   int64_t bytes = saturatingMul(plan_->clock_slots, sizeof(int64_t));
   for (size_t i = 0; i < plan_->buffers.size(); ++i) {
     const schema::PlanBufferT &buffer = *plan_->buffers[i];
@@ -180,19 +224,20 @@ size_t Session::hostBytes(const std::string &name) const {
 
 void Session::allocate() {
   checkMemory(settings.range, "range " + std::to_string(settings.range));
+  layout();
   auto take = [&](size_t bytes) {
     Memory memory{backend->allocate(bytes), bytes};
     return memory;
   };
   clockMemory = take(size_t(plan_->clock_slots) * sizeof(int64_t));
   for (size_t i = 0; i < plan_->buffers.size(); ++i) {
-    size_t half = size_t(settings.range) * deviceStride(int(i));
+    size_t half = size_t(extent) * deviceStride(int(i));
     buffers.push_back(take(2 * half));
     snapshots.push_back(plan_->buffers[i]->snapshot ? take(half) : Memory{});
     exacts.push_back(sceneBuffer(i).exact ? take(half) : Memory{});
   }
   for (size_t i = 0; i < plan_->totals.size(); ++i)
-    totalValues.push_back(take(size_t(settings.range) * sizeof(double)));
+    totalValues.push_back(take(size_t(extent) * sizeof(double)));
   clock.assign(size_t(plan_->clock_slots), 0);
   allocated = true;
 }
@@ -213,12 +258,15 @@ void Session::releaseAll() {
     list->clear();
   }
   clock.clear();
+  ghostCache.clear();
   allocated = initialized = prepared = false;
 }
 
 void Session::prepare() {
   if (prepared)
     return;
+  if (distributed())
+    ensureAgreed();
   backend->dropGraph();
   graphReady = false;
   launches.clear();
@@ -252,7 +300,7 @@ Session::Prepared Session::prepareLaunch(const schema::LaunchT &launch) {
   p.kernel = int(launch.kernel);
   bool single = launch.shape == LaunchShape::Single;
   p.groupSize = single ? 1 : groupSize_;
-  p.groups = single ? 1 : (settings.range + groupSize_ - 1) / groupSize_;
+  p.groups = single ? 1 : (count + groupSize_ - 1) / groupSize_;
   p.sharedBytes =
       int64_t(launch.shared_per_thread) * p.groupSize + launch.shared_fixed;
   // A memref travels as its descriptor: allocated pointer, aligned
@@ -267,16 +315,16 @@ Session::Prepared Session::prepareLaunch(const schema::LaunchT &launch) {
       memref(clockMemory.pointer, plan_->clock_slots);
       break;
     case ArgKind::Buffer:
-      memref(buffers[arg.index()].pointer, 2 * settings.range);
+      memref(buffers[arg.index()].pointer, 2 * extent);
       break;
     case ArgKind::Snapshot:
-      memref(snapshots[arg.index()].pointer, settings.range);
+      memref(snapshots[arg.index()].pointer, extent);
       break;
     case ArgKind::Exact:
-      memref(exacts[arg.index()].pointer, settings.range);
+      memref(exacts[arg.index()].pointer, extent);
       break;
     case ArgKind::Total:
-      memref(totalValues[arg.index()].pointer, settings.range);
+      memref(totalValues[arg.index()].pointer, extent);
       break;
     case ArgKind::Param:
       p.values.push_back(settings.params[arg.index()].bits());
@@ -291,8 +339,17 @@ Session::Prepared Session::prepareLaunch(const schema::LaunchT &launch) {
       p.timeValues.push_back(p.values.size());
       p.values.push_back(0);
       break;
+    case ArgKind::First:
+      p.values.push_back(uint64_t(first));
+      break;
+    case ArgKind::Extent:
+      p.values.push_back(uint64_t(extent));
+      break;
     }
   }
+  if (distributed())
+    for (const schema::Exchange &entry : launch.exchange)
+      p.exchanges.push_back(refreshOf(entry.buffer(), entry.snapshot()));
   return p;
 }
 
@@ -303,11 +360,21 @@ void Session::launch(Prepared &p) {
 }
 
 void Session::runPhase(PhaseKind phase) {
+  if (distributed()) {
+    for (uint32_t index : phases[int(phase)])
+      launchDistributed(launches[index], true);
+    return;
+  }
   for (uint32_t index : phases[int(phase)])
     launch(launches[index]);
 }
 
 void Session::runUncounted(PhaseKind phase) {
+  if (distributed()) {
+    for (uint32_t index : phases[int(phase)])
+      launchDistributed(launches[index], false);
+    return;
+  }
   for (uint32_t index : phases[int(phase)]) {
     Prepared &p = launches[index];
     backend->launch(p.kernel, p.params.data(), p.groups, p.groupSize,
@@ -317,6 +384,15 @@ void Session::runUncounted(PhaseKind phase) {
 
 void Session::runStepPhase() {
   const std::vector<uint32_t> &step = phases[int(PhaseKind::Step)];
+  if (distributed()) {
+    for (uint32_t index : step) {
+      Prepared &p = launches[index];
+      launchDistributed(p, true, true);
+      if (options.check_finite && p.launch->component >= 0)
+        checkFinite(p);
+    }
+    return;
+  }
   if (options.check_finite) {
     for (uint32_t index : step) {
       Prepared &p = launches[index];
@@ -355,53 +431,94 @@ void Session::readClock(size_t slots) {
 void Session::checkFinite(const Prepared &p) {
   const schema::ComponentT &component =
       *plan_->components[size_t(p.launch->component)];
+  // Per buffer written, its first non-finite value in the order half,
+  // item, lane, as the key (half * range + item) * lanes + lane (none:
+  // INT64_MAX): a distributed session's ranks agree on the smallest, so
+  // they all report what one process would.
+  std::vector<int64_t> keys;
+  std::vector<double> values;
   for (uint32_t index : component.writes) {
-    const schema::BufferT &buffer = sceneBuffer(index);
-    const schema::Element &type = *buffer.element;
+    const schema::Element &type = *sceneBuffer(index).element;
     size_t stride = deviceStride(int(index));
     std::vector<uint8_t> data(buffers[index].bytes);
     backend->read(data.data(), buffers[index].pointer, data.size());
     ++metrics.host_syncs;
+    int64_t key = std::numeric_limits<int64_t>::max();
+    double found = 0;
     // Both halves: the target just written, and the source, which holds
-    // the initial state the first time round.
-    for (int64_t element = 0; element < 2 * settings.range; ++element) {
-      const uint8_t *item = data.data() + size_t(element) * stride;
-      for (int32_t lane = 0; lane < int32_t(type.lanes()); ++lane) {
-        double value;
-        if (isF64(type)) {
-          std::memcpy(&value, item + lane * 8, 8);
-        } else {
-          float single;
-          std::memcpy(&single, item + lane * 4, 4);
-          value = single;
+    // the initial state the first time round. Ghost elements are copies.
+    for (int64_t half = 0;
+         half < 2 && key == std::numeric_limits<int64_t>::max(); ++half) {
+      for (int64_t i = 0; i < count; ++i) {
+        const uint8_t *item =
+            data.data() + size_t(half * extent + halo + i) * stride;
+        int32_t lane = 0;
+        double value = 0;
+        for (; lane < int32_t(type.lanes()); ++lane) {
+          if (isF64(type)) {
+            std::memcpy(&value, item + lane * 8, 8);
+          } else {
+            float single;
+            std::memcpy(&single, item + lane * 4, 4);
+            value = single;
+          }
+          if (!std::isfinite(value))
+            break;
         }
-        if (std::isfinite(value))
+        if (lane == int32_t(type.lanes()))
           continue;
-        readClock(2);
-        nonFinite.found = true;
-        nonFinite.baseStep = clock[kSlotBegin];
-        nonFinite.component = component.name;
-        nonFinite.buffer = buffer.name;
-        nonFinite.kernel = plan_->kernels[p.launch->kernel]->name;
-        nonFinite.item = element % settings.range;
-        nonFinite.lane = lane;
-        nonFinite.value = value;
-        std::string where = "item " + std::to_string(nonFinite.item);
-        if (type.lanes() > 1)
-          where += ", lane " + std::to_string(lane);
-        fail(SIM_ERROR_NONFINITE,
-             "non-finite value " +
-                 std::string(std::isnan(value) ? "nan"
-                             : value > 0       ? "inf"
-                                               : "-inf") +
-                 " in buffer '" + buffer.name + "' (" + where +
-                 ") after kernel '" + nonFinite.kernel + "' for component '" +
-                 component.name + "' at base step " +
-                 std::to_string(nonFinite.baseStep) + " (big step of " +
-                 std::to_string(clock[kSlotSize]) + ")");
+        key =
+            (half * settings.range + first + i) * int64_t(type.lanes()) + lane;
+        found = value;
+        break;
       }
     }
+    keys.push_back(key);
+    values.push_back(found);
   }
+  std::vector<int64_t> mine = keys;
+  if (distributed())
+    comm->minimum(keys.data(), int32_t(keys.size()));
+  size_t w = 0;
+  while (w < keys.size() && keys[w] == std::numeric_limits<int64_t>::max())
+    ++w;
+  if (w == keys.size())
+    return;
+  double value = values[w];
+  if (distributed()) {
+    // The rank that holds the item tells the others its value.
+    int64_t bits = 0;
+    if (mine[w] == keys[w])
+      std::memcpy(&bits, &value, sizeof bits);
+    comm->sum(&bits, 1);
+    std::memcpy(&value, &bits, sizeof bits);
+  }
+  uint32_t index = component.writes[w];
+  const schema::BufferT &buffer = sceneBuffer(index);
+  const schema::Element &type = *buffer.element;
+  int32_t lane = int32_t(keys[w] % int64_t(type.lanes()));
+  int64_t item = keys[w] / int64_t(type.lanes()) % settings.range;
+  readClock(2);
+  nonFinite.found = true;
+  nonFinite.baseStep = clock[kSlotBegin];
+  nonFinite.component = component.name;
+  nonFinite.buffer = buffer.name;
+  nonFinite.kernel = plan_->kernels[p.launch->kernel]->name;
+  nonFinite.item = item;
+  nonFinite.lane = lane;
+  nonFinite.value = value;
+  std::string where = "item " + std::to_string(nonFinite.item);
+  if (type.lanes() > 1)
+    where += ", lane " + std::to_string(lane);
+  fail(SIM_ERROR_NONFINITE,
+       "non-finite value " +
+           std::string(std::isnan(value) ? "nan"
+                       : value > 0       ? "inf"
+                                         : "-inf") +
+           " in buffer '" + buffer.name + "' (" + where + ") after kernel '" +
+           nonFinite.kernel + "' for component '" + component.name +
+           "' at base step " + std::to_string(nonFinite.baseStep) +
+           " (big step of " + std::to_string(clock[kSlotSize]) + ")");
 }
 
 //===----------------------------------------------------------------------===//
@@ -424,6 +541,10 @@ void Session::init() {
   }
   prepare();
   runUncounted(PhaseKind::Init);
+  // Whatever the init phase's own exchanges refreshed, every ghost holds
+  // its item's initial state before anything reads it.
+  if (distributed())
+    refreshAllGhosts();
   readClock(clock.size());
   initialized = true;
   onBoundary = true;
@@ -444,6 +565,8 @@ void Session::run(int64_t steps, int64_t pause) {
   cutBigSteps = 0;
   nonFinite = {};
   std::vector<int64_t> before = clock;
+  int64_t allReducesBefore = distributed() ? comm->allReduces : 0;
+  int64_t exchangesBefore = haloExchanges, bytesBefore = exchangedBytes;
   // After init and after finish m is 0, so this is T.
   int64_t begin = clock[kSlotBegin] + clock[kSlotSize];
   int64_t end = runEnd(begin, steps);
@@ -474,11 +597,6 @@ void Session::run(int64_t steps, int64_t pause) {
                    sizeof end);
   };
   while (now < end) {
-    if (interruptPending()) {
-      interrupted = true;
-      stopHere();
-      break;
-    }
     // Towards the pause, if there is one: batches sized for it stop near
     // it.
     int64_t target = std::min(end, pauseAt);
@@ -488,6 +606,21 @@ void Session::run(int64_t steps, int64_t pause) {
             : std::clamp<int64_t>(
                   int64_t(std::ceil(double(target - now) / meanStep)), 1,
                   batchCap);
+    bool stop = interruptPending();
+    if (distributed()) {
+      // Every rank launches the same step phases: the smallest batch (the
+      // progress callback's timing differs between ranks), and all stop
+      // when one was interrupted.
+      int64_t agree[2] = {batch, stop ? -1 : 0};
+      comm->minimum(agree, 2);
+      batch = agree[0];
+      stop = agree[1] < 0;
+    }
+    if (stop) {
+      interrupted = true;
+      stopHere();
+      break;
+    }
     auto batchStart = std::chrono::steady_clock::now();
     for (int64_t i = 0; i < batch; ++i)
       runStepPhase();
@@ -551,12 +684,216 @@ void Session::run(int64_t steps, int64_t pause) {
     size_t slot = size_t(plan_->components[i]->evaluations);
     evaluations[i] = clock[slot] - before[slot];
   }
+  if (distributed()) {
+    // Each rank counts its own items' evaluations.
+    if (!evaluations.empty())
+      comm->sum(evaluations.data(), int32_t(evaluations.size()));
+    metrics.allreduces = comm->allReduces - allReducesBefore;
+    metrics.halo_exchanges = haloExchanges - exchangesBefore;
+    metrics.exchanged_bytes = exchangedBytes - bytesBefore;
+  }
   for (int64_t m = 1; m < int64_t(histogram.size()); ++m) {
     size_t slot = size_t(plan_->histogram + m);
     histogram[m] = clock[slot] - before[slot];
   }
   if (interrupted)
     failInterrupted(begin, end, begin + steps);
+}
+
+//===----------------------------------------------------------------------===//
+// Distributed plans
+//===----------------------------------------------------------------------===//
+
+void Session::layout() {
+  ghostCache.clear();
+  if (!distributed()) {
+    first = 0;
+    count = extent = settings.range;
+    return;
+  }
+  // Every rank computes every rank's block from the same (agreed) numbers:
+  // a range too small fails on all of them alike, before any exchange.
+  decomposition =
+      std::make_unique<Decomposition>(settings.range, groupSize_, comm->size());
+  if (!decomposition->fits())
+    fail(SIM_ERROR_DISTRIBUTED, decomposition->tooManyRanks());
+  first = decomposition->first(comm->rank());
+  count = decomposition->count(comm->rank());
+  extent = count + 2 * halo;
+}
+
+void Session::ensureAgreed() {
+  if (agreed)
+    return;
+  // Each value's minimum and the minimum of its negation: the ranks agree
+  // when both give it back. What identifies the bundle first, as a fixed
+  // number of values, so that ranks with different bundles (and numbers
+  // of parameters) still make the same calls.
+  struct Named {
+    std::string what;
+    int64_t value;
+  };
+  auto check = [&](const std::vector<Named> &values) {
+    std::vector<int64_t> both;
+    for (const Named &named : values)
+      both.push_back(named.value);
+    for (const Named &named : values)
+      both.push_back(-named.value);
+    comm->minimum(both.data(), int32_t(both.size()));
+    size_t n = values.size();
+    for (size_t i = 0; i < n; ++i)
+      if (both[i] != -both[n + i])
+        fail(SIM_ERROR_DISTRIBUTED,
+             "the ranks disagree on the " + values[i].what + " (from " +
+                 std::to_string(both[i]) + " to " +
+                 std::to_string(-both[n + i]) + " over the " +
+                 std::to_string(comm->size()) + " ranks)");
+  };
+  check({{"bundle (its CRC-32)", int64_t(bundle->checksum)},
+         {"number of parameters", int64_t(settings.params.size())},
+         {"strategy (its number)", int64_t(plan_->strategy)},
+         {"group size", groupSize_}});
+  std::vector<Named> values = {{"range", settings.range},
+                               {"dt (its bits)", int64_t(settings.dt.bits())}};
+  for (size_t p = 0; p < settings.params.size(); ++p)
+    values.push_back({"parameter '" + scene().params[p]->name + "' (its bits)",
+                      int64_t(settings.params[p].bits())});
+  check(values);
+  agreed = true;
+}
+
+const GhostLists &Session::ghostsOf(size_t buffer) {
+  const schema::PlanBufferT &planBuffer = *plan_->buffers[buffer];
+  Boundary boundary = sceneBuffer(buffer).boundary;
+  auto key = std::make_tuple(planBuffer.halo_below, planBuffer.halo_above,
+                             int(boundary));
+  auto it = ghostCache.find(key);
+  if (it == ghostCache.end())
+    it = ghostCache
+             .emplace(key, ghostLists(*decomposition, comm->rank(), halo,
+                                      planBuffer.halo_below,
+                                      planBuffer.halo_above, boundary))
+             .first;
+  return it->second;
+}
+
+Session::GhostRefresh Session::refreshOf(size_t buffer, bool snapshot) {
+  return {snapshot ? snapshots[buffer].pointer : buffers[buffer].pointer,
+          deviceStride(int(buffer)), snapshot ? 1 : 2, &ghostsOf(buffer)};
+}
+
+void Session::refreshGhosts(const std::vector<GhostRefresh> &refreshes,
+                            bool counted) {
+  // The CPU backend's memory is the host's, and its launches are done when
+  // they return: pack and unpack in place.
+  size_t ranks = size_t(comm->size());
+  std::vector<size_t> sendBytes(ranks, 0), recvBytes(ranks, 0);
+  for (const GhostRefresh &r : refreshes)
+    for (size_t peer = 0; peer < ranks; ++peer) {
+      sendBytes[peer] += r.lists->send[peer].size() * r.stride * r.halves;
+      recvBytes[peer] += r.lists->recv[peer].size() * r.stride * r.halves;
+    }
+  sendStore.resize(ranks);
+  recvStore.resize(ranks);
+  std::vector<const void *> send(ranks);
+  std::vector<void *> recv(ranks);
+  size_t total = 0;
+  for (size_t peer = 0; peer < ranks; ++peer) {
+    sendStore[peer].resize(sendBytes[peer]);
+    recvStore[peer].resize(recvBytes[peer]);
+    send[peer] = sendStore[peer].data();
+    recv[peer] = recvStore[peer].data();
+    total += sendBytes[peer];
+  }
+  auto element = [&](const GhostRefresh &r, int half, int64_t e) {
+    return reinterpret_cast<uint8_t *>(r.base) +
+           size_t(half * extent + e) * r.stride;
+  };
+  for (size_t peer = 0; peer < ranks; ++peer) {
+    uint8_t *out = sendStore[peer].data();
+    for (const GhostRefresh &r : refreshes)
+      for (int half = 0; half < r.halves; ++half)
+        for (int64_t e : r.lists->send[peer]) {
+          std::memcpy(out, element(r, half, e), r.stride);
+          out += r.stride;
+        }
+  }
+  for (const GhostRefresh &r : refreshes)
+    for (int half = 0; half < r.halves; ++half)
+      for (auto [from, to] : r.lists->local)
+        std::memcpy(element(r, half, to), element(r, half, from), r.stride);
+  comm->exchange(send.data(), sendBytes.data(), recv.data(), recvBytes.data());
+  for (size_t peer = 0; peer < ranks; ++peer) {
+    const uint8_t *in = recvStore[peer].data();
+    for (const GhostRefresh &r : refreshes)
+      for (int half = 0; half < r.halves; ++half)
+        for (int64_t e : r.lists->recv[peer]) {
+          std::memcpy(element(r, half, e), in, r.stride);
+          in += r.stride;
+        }
+  }
+  if (counted) {
+    haloExchanges += int64_t(refreshes.size());
+    exchangedBytes += int64_t(total);
+  }
+}
+
+void Session::refreshAllGhosts() {
+  std::vector<GhostRefresh> refreshes;
+  for (size_t b = 0; b < plan_->buffers.size(); ++b)
+    refreshes.push_back(refreshOf(b, false));
+  if (!refreshes.empty())
+    refreshGhosts(refreshes, false);
+}
+
+void Session::launchDistributed(Prepared &p, bool counted, bool step) {
+  const std::vector<uint32_t> &slots = p.launch->reduce_min;
+  if (!slots.empty()) {
+    // The decisions every rank must share (the big step): their minimum
+    // over the ranks, in one all-reduce.
+    std::vector<int64_t> values(slots.size());
+    for (size_t i = 0; i < slots.size(); ++i)
+      backend->read(&values[i],
+                    clockMemory.pointer + slots[i] * sizeof(int64_t),
+                    sizeof(int64_t));
+    comm->minimum(values.data(), int32_t(values.size()));
+    for (size_t i = 0; i < slots.size(); ++i)
+      backend->write(clockMemory.pointer + slots[i] * sizeof(int64_t),
+                     &values[i], sizeof(int64_t));
+    if (counted)
+      ++metrics.host_syncs;
+  }
+  backend->launch(p.kernel, p.params.data(), p.groups, p.groupSize,
+                  p.sharedBytes);
+  if (counted)
+    ++metrics.launches;
+  if (p.exchanges.empty())
+    return;
+  if (step) {
+    // A step phase launched past the end of the run (T at the end, no big
+    // step decided) changes nothing, so neither do its exchanges: a
+    // buffer's ghosts travel once per big step, however far ahead the
+    // host launches.
+    int64_t fixed[kSlotEnd + 1];
+    backend->read(fixed, clockMemory.pointer, sizeof fixed);
+    if (fixed[kSlotSize] == 0 && fixed[kSlotBegin] >= fixed[kSlotEnd])
+      return;
+  }
+  refreshGhosts(p.exchanges, counted);
+}
+
+void Session::gatherItems(DevicePtr array, size_t stride, size_t packed,
+                          void *out) {
+  std::vector<uint8_t> device(size_t(count) * stride);
+  backend->read(device.data(), array + size_t(halo) * stride, device.size());
+  std::vector<uint8_t> mine(size_t(count) * packed);
+  for (int64_t i = 0; i < count; ++i)
+    std::memcpy(mine.data() + size_t(i) * packed,
+                device.data() + size_t(i) * stride, packed);
+  std::vector<size_t> bytes(size_t(comm->size()));
+  for (int32_t r = 0; r < comm->size(); ++r)
+    bytes[size_t(r)] = size_t(decomposition->count(r)) * packed;
+  comm->allgather(mine.data(), bytes.data(), out);
 }
 
 //===----------------------------------------------------------------------===//
@@ -582,7 +919,20 @@ std::vector<int64_t> Session::checkpointClock() {
   // The host's copy is the device's after init, a run's finish or a
   // restart; read it again all the same.
   readClock(clock.size());
-  return clock;
+  if (!distributed())
+    return clock;
+  // Every rank counts its own items' evaluations: the checkpoint holds
+  // their sums, as one process would have counted (restoreClock gives
+  // them to rank 0).
+  std::vector<int64_t> counted;
+  for (const auto &component : plan_->components)
+    counted.push_back(clock[component->evaluations]);
+  if (!counted.empty())
+    comm->sum(counted.data(), int32_t(counted.size()));
+  std::vector<int64_t> saved = clock;
+  for (size_t i = 0; i < counted.size(); ++i)
+    saved[plan_->components[i]->evaluations] = counted[i];
+  return saved;
 }
 
 void Session::restoreClock(int64_t, const std::vector<int64_t> &saved) {
@@ -590,9 +940,12 @@ void Session::restoreClock(int64_t, const std::vector<int64_t> &saved) {
   // The memory of this range, zeroed, and the init phase: what no
   // checkpoint holds (the other halves, snapshots) is as after init.
   init();
-  backend->write(clockMemory.pointer, saved.data(),
-                 saved.size() * sizeof(int64_t));
   clock = saved;
+  if (distributed() && comm->rank() != 0)
+    for (const auto &component : plan_->components)
+      clock[component->evaluations] = 0;
+  backend->write(clockMemory.pointer, clock.data(),
+                 clock.size() * sizeof(int64_t));
   onBoundary = true;
 }
 
@@ -620,12 +973,16 @@ Session::CurrentHalf Session::currentHalf(const std::string &name,
   size_t stride = deviceStride(index);
   size_t packed = size_t(packedBytes(*sceneBuffer(size_t(index)).element));
   DevicePtr half = buffers[index].pointer +
-                   size_t(clock[kSlotParity]) * size_t(settings.range) * stride;
+                   size_t(clock[kSlotParity]) * size_t(extent) * stride;
   return {half, stride, packed};
 }
 
 void Session::getBuffer(const std::string &name, void *data, size_t bytes) {
   auto [half, stride, packed] = currentHalf(name, bytes);
+  if (distributed()) {
+    gatherItems(half, stride, packed, data);
+    return;
+  }
   if (stride == packed) {
     backend->read(data, half, bytes);
     return;
@@ -640,6 +997,19 @@ void Session::getBuffer(const std::string &name, void *data, size_t bytes) {
 void Session::setBuffer(const std::string &name, const void *data,
                         size_t bytes) {
   auto [half, stride, packed] = currentHalf(name, bytes);
+  if (distributed()) {
+    // This rank's block of the whole array, then its ghosts from their
+    // owners (both halves: the other half's ghosts are refreshed again).
+    std::vector<uint8_t> device(size_t(count) * stride, 0);
+    for (int64_t i = 0; i < count; ++i)
+      std::memcpy(device.data() + size_t(i) * stride,
+                  static_cast<const uint8_t *>(data) +
+                      size_t(first + i) * packed,
+                  packed);
+    backend->write(half + size_t(halo) * stride, device.data(), device.size());
+    refreshGhosts({refreshOf(size_t(bufferIndex(name)), false)}, false);
+    return;
+  }
   if (stride == packed) {
     backend->write(half, data, bytes);
     return;
@@ -686,6 +1056,10 @@ void Session::exact(const std::string &name, void *data, size_t bytes) {
   runUncounted(PhaseKind::Exact);
   size_t stride = deviceStride(index);
   size_t packed = size_t(packedBytes(*sceneBuffer(size_t(index)).element));
+  if (distributed()) {
+    gatherItems(exacts[index].pointer, stride, packed, data);
+    return;
+  }
   std::vector<uint8_t> device(size_t(settings.range) * stride);
   backend->read(device.data(), exacts[index].pointer, device.size());
   for (int64_t i = 0; i < settings.range; ++i)
@@ -710,8 +1084,14 @@ std::vector<double> Session::totals() {
   // order, so the sum does not depend on the backend's grouping.
   std::vector<double> values(size_t(settings.range));
   for (size_t t = 0; t < sums.size(); ++t) {
-    backend->read(values.data(), totalValues[t].pointer,
-                  values.size() * sizeof(double));
+    // A distributed session's ranks gather every item's value and add
+    // them in the same order: the same sums on every rank.
+    if (distributed())
+      gatherItems(totalValues[t].pointer, sizeof(double), sizeof(double),
+                  values.data());
+    else
+      backend->read(values.data(), totalValues[t].pointer,
+                    values.size() * sizeof(double));
     double sum = 0.0;
     for (double value : values)
       sum += value;

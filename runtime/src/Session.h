@@ -14,11 +14,14 @@
 
 #include "Backend.h"
 #include "Bundle.h"
+#include "Distribution.h"
 #include "Executor.h"
 #include "sim/Runtime/sim_runtime.h"
 
+#include <map>
 #include <memory>
 #include <string>
+#include <tuple>
 #include <vector>
 
 namespace sim::rt {
@@ -83,6 +86,8 @@ public:
     return plan_->components[index]->name;
   }
 
+  Communicator *communicator() override { return comm.get(); }
+
 private:
   /// Where a buffer's current state lives on the device (the half the
   /// clock's parity selects) and its element stride there and on the host,
@@ -97,6 +102,15 @@ private:
     DevicePtr pointer = 0;
     size_t bytes = 0;
   };
+  /// Distributed plans: one `exchange` entry of a launch, resolved against
+  /// the current allocation. `halves` copies of `extent` elements of
+  /// `stride` bytes from `base` (2 for a buffer, 1 for a snapshot).
+  struct GhostRefresh {
+    DevicePtr base;
+    size_t stride;
+    int halves;
+    const GhostLists *lists;
+  };
   /// A launch with its parameter values laid out for the backend.
   struct Prepared {
     const schema::LaunchT *launch;
@@ -106,6 +120,8 @@ private:
     std::vector<void *> params;
     /// Positions of `time` arguments in `values`.
     std::vector<size_t> timeValues;
+    /// Distributed plans: the ghosts to refresh after the launch.
+    std::vector<GhostRefresh> exchanges;
   };
 
   int bufferIndex(const std::string &name) const;
@@ -126,6 +142,31 @@ private:
   void readClock(size_t slots);
   /// The bytes of one item on the device and in a host array.
   size_t deviceStride(int buffer) const;
+
+  // Distributed plans (Distribution.h); without `distributed` in the plan,
+  // `comm` is null, first is 0 and count and extent are the range.
+  bool distributed() const { return comm != nullptr; }
+  /// The elements of one half of a buffer at `range` items on this rank.
+  int64_t extentAt(int64_t range) const;
+  /// Splits the current range over the ranks: first, count, extent.
+  void layout();
+  /// Checks once per change of the settings that every rank runs the same
+  /// bundle, strategy, group size, range, dt and parameters.
+  void ensureAgreed();
+  const GhostLists &ghostsOf(size_t buffer);
+  GhostRefresh refreshOf(size_t buffer, bool snapshot);
+  /// Fills the ghost elements of `refreshes` from their owners (one
+  /// exchange for all of them); `counted` adds them to the run's metrics.
+  void refreshGhosts(const std::vector<GhostRefresh> &refreshes, bool counted);
+  /// Every buffer's ghosts, both halves (after init and setBuffer).
+  void refreshAllGhosts();
+  /// A launch of a distributed plan: its all-reduces, the kernel, its
+  /// exchanges (in the step phase, `step`, none past the run's end).
+  void launchDistributed(Prepared &prepared, bool counted, bool step = false);
+  /// Every rank's owned items of the `extent`-element array at `array`
+  /// (`stride` bytes per element), `packed` bytes of each, in item order
+  /// into the host array `out`.
+  void gatherItems(DevicePtr array, size_t stride, size_t packed, void *out);
 
   std::shared_ptr<const Bundle> bundle;
   const schema::PlanT *plan_ = nullptr;
@@ -152,6 +193,18 @@ private:
   std::vector<Prepared> launches;
   std::vector<uint32_t> phases[kNumPhases];
   bool hasPhase[kNumPhases] = {};
+
+  std::unique_ptr<Communicator> comm;
+  /// plan.distributed.halo; this rank's block [first, first + count) and
+  /// the elements of one half, count + 2 * halo.
+  int64_t halo = 0, first = 0, count = 0, extent = 0;
+  std::unique_ptr<Decomposition> decomposition;
+  /// Per (below, above, boundary): the ghost lists of the decomposition.
+  std::map<std::tuple<uint32_t, uint32_t, int>, GhostLists> ghostCache;
+  std::vector<std::vector<uint8_t>> sendStore, recvStore;
+  bool agreed = false;
+  /// Since the session began (a run's metrics take the difference).
+  int64_t haloExchanges = 0, exchangedBytes = 0;
 };
 
 } // namespace sim::rt

@@ -289,6 +289,90 @@ std::string decayBundle(bool ptx, bool reference) {
   return serialize(decayContents(ptx, reference));
 }
 
+BundleT ringContents(Boundary boundary) {
+  BundleT contents;
+  contents.producer = "runtime/test/TestBundle.cpp";
+  auto scene = std::make_unique<SceneT>();
+  scene->name = "ring";
+  scene->range = 100;
+  scene->dt = std::make_unique<Value>(0, 0.01, ScalarType::F64);
+  scene->max_steps = 4;
+  scene->buffers.push_back(
+      buffer("X", ScalarType::F64, 1, Interp::Linear, boundary, true));
+  auto total = std::make_unique<TotalT>();
+  total->name = "sum_X";
+  total->type = ScalarType::F64;
+  scene->totals.push_back(std::move(total));
+  contents.scene = std::move(scene);
+
+  auto plan = std::make_unique<PlanT>();
+  plan->strategy = Strategy::Hip;
+  plan->group_size = 4;
+  plan->step_cap = 4;
+  plan->clock_slots = 16;
+  plan->histogram = 10;
+  plan->distributed = std::make_unique<DistributionT>();
+  plan->distributed->halo = 2;
+  auto planBuffer = std::make_unique<PlanBufferT>();
+  planBuffer->buffer = 0;
+  planBuffer->stride = 8;
+  planBuffer->halo_below = 2;
+  planBuffer->halo_above = 2;
+  plan->buffers.push_back(std::move(planBuffer));
+  plan->components.push_back(component("Mix", {0}, 8, true));
+  plan->totals = {0};
+
+  const uint32_t slots = plan->clock_slots;
+  KernelParam x = memref(ScalarType::F64, 1, 8);
+  KernelParam i64 = scalar(ParamType::I64), f64 = scalar(ParamType::F64);
+  enum : uint32_t { kReset, kInit, kEstimate, kAdvance, kEvaluate, kTotal };
+  plan->kernels.push_back(kernel("reset_clock", {kClock}, slots));
+  plan->kernels.push_back(kernel("init_X", {x, i64, i64, kRange}, slots));
+  plan->kernels.push_back(
+      kernel("estimate", {kClock, i64, i64, kRange}, slots));
+  plan->kernels.push_back(kernel("advance", {kClock}, slots));
+  plan->kernels.push_back(
+      kernel("evaluate", {kClock, x, i64, i64, kRange, f64}, slots));
+  plan->kernels.push_back(kernel(
+      "total_X", {memref(ScalarType::F64, 1, 8), kClock, x, i64, i64, kRange},
+      slots));
+  Arg first = arg(ArgKind::First), extent = arg(ArgKind::Extent);
+  plan->phases.push_back(
+      phase(PhaseKind::Init,
+            list(launch(kReset, LaunchShape::Single, -1, {arg(ArgKind::Clock)}),
+                 launch(kInit, LaunchShape::Items, -1,
+                        {arg(ArgKind::Buffer, 0), first, extent,
+                         arg(ArgKind::Range)}))));
+  std::vector<std::unique_ptr<StepT>> step;
+  step.push_back(
+      launch(kEstimate, LaunchShape::Items, -1,
+             {arg(ArgKind::Clock), first, extent, arg(ArgKind::Range)}));
+  step.push_back(
+      launch(kAdvance, LaunchShape::Single, -1, {arg(ArgKind::Clock)}));
+  // The estimate slot, every rank's minimum, before advance decides.
+  step.back()->launch->reduce_min = {4};
+  step.push_back(launch(kEvaluate, LaunchShape::Items, 0,
+                        {arg(ArgKind::Clock), arg(ArgKind::Buffer, 0), first,
+                         extent, arg(ArgKind::Range), arg(ArgKind::Dt)}));
+  step.back()->launch->exchange = {Exchange(0, false)};
+  plan->phases.push_back(phase(PhaseKind::Step, std::move(step)));
+  plan->phases.push_back(phase(
+      PhaseKind::Finish,
+      list(launch(kAdvance, LaunchShape::Single, -1, {arg(ArgKind::Clock)}))));
+  plan->phases.push_back(
+      phase(PhaseKind::Total,
+            list(launch(kTotal, LaunchShape::Items, -1,
+                        {arg(ArgKind::Total, 0), arg(ArgKind::Clock),
+                         arg(ArgKind::Buffer, 0), first, extent,
+                         arg(ArgKind::Range)}))));
+  auto cpu = std::make_unique<CpuCodeT>();
+  cpu->isa = "x86-64";
+  cpu->object = readBytes(SIM_TEST_RING_SO);
+  plan->cpu.push_back(std::move(cpu));
+  contents.plans.push_back(std::move(plan));
+  return contents;
+}
+
 BundleT probeContents() {
   BundleT contents;
   auto scene = std::make_unique<SceneT>();

@@ -42,6 +42,11 @@ decayContents(bool ptx = false, bool reference = true,
               const std::string &referenceObject = SIM_TEST_DECAY_REFERENCE_SO);
 std::string decayBundle(bool ptx = false, bool reference = true);
 
+/// The "ring" scene of kernels/ring.c: a distributed hip plan (halo 2,
+/// group size 4) whose buffer X reads i-2 .. i+2 under `boundary`, with
+/// an all-reduced estimate and an exchange per big step.
+schema::BundleT ringContents(schema::Boundary boundary);
+
 /// The "probe" scene of kernels/probe_reference.c: a hip plan whose
 /// kernels exist nowhere (the reference executor needs none) and its
 /// reference model.

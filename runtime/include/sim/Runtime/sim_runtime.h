@@ -196,9 +196,8 @@ typedef struct sim_communicator {
   /// Point to point: sends `send_bytes[r]` bytes from `send[r]` to every
   /// rank r with a non-zero count and receives `recv_bytes[r]` into
   /// `recv[r]` (arrays of `size` entries; a rank's own entries are 0).
-  int (*exchange)(void *user, const void *const *send,
-                  const size_t *send_bytes, void *const *recv,
-                  const size_t *recv_bytes);
+  int (*exchange)(void *user, const void *const *send, const size_t *send_bytes,
+                  void *const *recv, const size_t *recv_bytes);
   /// Every rank's `bytes[rank]` bytes from `data`, concatenated in rank
   /// order into `out` on every rank (`bytes` has `size` entries).
   int (*allgather)(void *user, const void *data, const size_t *bytes,
@@ -395,6 +394,13 @@ typedef struct sim_metrics {
   int64_t host_syncs;
   /// Big steps taken (clock slot 5).
   int64_t big_steps;
+  /// Distributed sessions (0 otherwise), this rank's: ghost refreshes of a
+  /// buffer or snapshot after a launch (one per plan `exchange` entry),
+  /// the bytes this rank sent for them, and all-reduce calls (the same
+  /// on every rank).
+  int64_t halo_exchanges;
+  int64_t exchanged_bytes;
+  int64_t allreduces;
 } sim_metrics;
 
 /// Runs `steps` base steps from the current state (initialising first if

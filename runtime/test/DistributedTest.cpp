@@ -1,0 +1,372 @@
+//===- DistributedTest.cpp - distributed sessions against one process -----===//
+//
+// The "ring" scene (kernels/ring.c: a distributed plan written by hand) on
+// P ranks that are threads of this process, joined by a communicator of
+// shared memory, against the same plan on one process: the same values bit
+// for bit, evaluations, big steps and totals, for ranks that do not divide
+// the range, blocks smaller than the halo, and every boundary rule. Then
+// the refusals.
+//
+//===----------------------------------------------------------------------===//
+
+#include "Bundle.h"
+#include "Error.h"
+#include "Session.h"
+#include "TestBundle.h"
+#include "TestUtil.h"
+
+#include <gtest/gtest.h>
+
+#include <condition_variable>
+#include <cstdlib>
+#include <cstring>
+#include <functional>
+#include <mutex>
+#include <thread>
+
+using namespace sim::rt;
+using namespace sim::test;
+
+namespace {
+
+/// P threads as ranks: every call waits for all of them (a barrier) and
+/// reads what the others left in shared slots.
+class ThreadWorld {
+public:
+  explicit ThreadWorld(int32_t ranks)
+      : ranks(ranks), values(size_t(ranks)), sends(size_t(ranks)),
+        sendBytes(size_t(ranks)), data(size_t(ranks)) {
+    for (int32_t r = 0; r < ranks; ++r) {
+      Rank rank;
+      rank.world = this;
+      rank.comm.user = nullptr;
+      rank.comm.rank = r;
+      rank.comm.size = ranks;
+      rank.comm.allreduce_min_i64 = &ThreadWorld::minimum;
+      rank.comm.allreduce_sum_i64 = &ThreadWorld::sum;
+      rank.comm.exchange = &ThreadWorld::exchange;
+      rank.comm.allgather = &ThreadWorld::allgather;
+      all.push_back(rank);
+    }
+    for (Rank &rank : all)
+      rank.comm.user = &rank;
+  }
+
+  const sim_communicator *communicator(int32_t rank) {
+    return &all[size_t(rank)].comm;
+  }
+
+  /// Runs `body(rank)` on every rank, each on its own thread.
+  void run(const std::function<void(int32_t)> &body) {
+    std::vector<std::thread> threads;
+    for (int32_t r = 0; r < ranks; ++r)
+      threads.emplace_back([&, r] { body(r); });
+    for (std::thread &thread : threads)
+      thread.join();
+  }
+
+private:
+  struct Rank {
+    ThreadWorld *world;
+    sim_communicator comm;
+  };
+
+  void barrier() {
+    std::unique_lock<std::mutex> lock(mutex);
+    int64_t generation = this->generation;
+    if (++arrived == ranks) {
+      arrived = 0;
+      ++this->generation;
+      changed.notify_all();
+      return;
+    }
+    changed.wait(lock, [&] { return this->generation != generation; });
+  }
+
+  static int reduce(void *user, int64_t *v, int32_t count, bool isSum) {
+    Rank &rank = *static_cast<Rank *>(user);
+    ThreadWorld &w = *rank.world;
+    w.values[size_t(rank.comm.rank)].assign(v, v + count);
+    w.barrier();
+    for (int32_t i = 0; i < count; ++i) {
+      int64_t result = w.values[0][size_t(i)];
+      for (int32_t r = 1; r < w.ranks; ++r) {
+        int64_t other = w.values[size_t(r)][size_t(i)];
+        result = isSum ? result + other : std::min(result, other);
+      }
+      v[i] = result;
+    }
+    w.barrier();
+    return 0;
+  }
+  static int minimum(void *user, int64_t *v, int32_t count) {
+    return reduce(user, v, count, false);
+  }
+  static int sum(void *user, int64_t *v, int32_t count) {
+    return reduce(user, v, count, true);
+  }
+  static int exchange(void *user, const void *const *send,
+                      const size_t *sendBytes, void *const *recv,
+                      const size_t *recvBytes) {
+    Rank &rank = *static_cast<Rank *>(user);
+    ThreadWorld &w = *rank.world;
+    size_t me = size_t(rank.comm.rank);
+    w.sends[me].assign(send, send + w.ranks);
+    w.sendBytes[me].assign(sendBytes, sendBytes + w.ranks);
+    w.barrier();
+    int failed = 0;
+    for (size_t from = 0; from < size_t(w.ranks); ++from) {
+      if (from == me)
+        continue;
+      if (w.sendBytes[from][me] != recvBytes[from])
+        failed = 1;
+      else if (recvBytes[from])
+        std::memcpy(recv[from], w.sends[from][me], recvBytes[from]);
+    }
+    w.barrier();
+    return failed;
+  }
+  static int allgather(void *user, const void *data, const size_t *bytes,
+                       void *out) {
+    Rank &rank = *static_cast<Rank *>(user);
+    ThreadWorld &w = *rank.world;
+    w.data[size_t(rank.comm.rank)] = data;
+    w.barrier();
+    size_t at = 0;
+    for (int32_t r = 0; r < w.ranks; ++r) {
+      std::memcpy(static_cast<char *>(out) + at, w.data[size_t(r)],
+                  bytes[size_t(r)]);
+      at += bytes[size_t(r)];
+    }
+    w.barrier();
+    return 0;
+  }
+
+  int32_t ranks;
+  std::vector<Rank> all;
+  std::mutex mutex;
+  std::condition_variable changed;
+  int32_t arrived = 0;
+  int64_t generation = 0;
+  std::vector<std::vector<int64_t>> values;
+  std::vector<std::vector<const void *>> sends;
+  std::vector<std::vector<size_t>> sendBytes;
+  std::vector<const void *> data;
+};
+
+std::shared_ptr<const Bundle> ring(Boundary boundary) {
+  return parseBytes(serialize(ringContents(boundary)), "ring.simb");
+}
+
+sim_session_options ringOptions(int64_t groupSize,
+                                const sim_communicator *comm) {
+  sim_session_options options;
+  sim_session_options_init(&options);
+  options.strategy = SIM_STRATEGY_HIP;
+  options.backend = SIM_BACKEND_CPU;
+  options.cpu_threads = 2;
+  options.group_size = groupSize;
+  options.communicator = comm;
+  return options;
+}
+
+/// What a run leaves: X, the counters, the total.
+struct Outcome {
+  std::vector<double> x;
+  std::vector<int64_t> evaluations, histogram;
+  int64_t bigSteps = 0, cuts = 0;
+  double total = 0;
+  sim_metrics metrics{};
+};
+
+Outcome runRing(Session &session, int64_t range, int64_t steps) {
+  session.set("range", std::to_string(range));
+  session.init();
+  // Twice, so that the second run starts from a state the first left.
+  session.run(steps / 2);
+  session.run(steps - steps / 2);
+  Outcome outcome;
+  outcome.x.resize(size_t(range));
+  session.getBuffer("X", outcome.x.data(), outcome.x.size() * 8);
+  outcome.evaluations = session.evaluations;
+  outcome.histogram = session.histogram;
+  outcome.bigSteps = session.metrics.big_steps;
+  outcome.cuts = session.cutBigSteps;
+  outcome.total = session.totals()[0];
+  outcome.metrics = session.metrics;
+  return outcome;
+}
+
+void expectSame(const Outcome &one, const Outcome &many) {
+  ASSERT_EQ(one.x.size(), many.x.size());
+  EXPECT_EQ(std::memcmp(one.x.data(), many.x.data(), one.x.size() * 8), 0);
+  for (size_t i = 0; i < one.x.size(); ++i)
+    if (one.x[i] != many.x[i]) {
+      ADD_FAILURE() << "item " << i << ": " << one.x[i] << " vs " << many.x[i];
+      break;
+    }
+  EXPECT_EQ(one.evaluations, many.evaluations);
+  EXPECT_EQ(one.histogram, many.histogram);
+  EXPECT_EQ(one.bigSteps, many.bigSteps);
+  EXPECT_EQ(one.cuts, many.cuts);
+  EXPECT_EQ(one.total, many.total);
+}
+
+void checkRanks(Boundary boundary, int32_t ranks, int64_t range,
+                int64_t groupSize, int64_t steps) {
+  SCOPED_TRACE(std::string(boundaryName(boundary)) + ", " +
+               std::to_string(ranks) + " ranks, range " +
+               std::to_string(range) + ", group size " +
+               std::to_string(groupSize));
+  auto bundle = ring(boundary);
+  Session single(bundle, ringOptions(groupSize, nullptr));
+  Outcome one = runRing(single, range, steps);
+  EXPECT_GT(one.evaluations[0], 0);
+  ThreadWorld world(ranks);
+  std::vector<Outcome> outcomes(static_cast<size_t>(ranks));
+  std::vector<std::string> errors(static_cast<size_t>(ranks));
+  world.run([&](int32_t r) {
+    try {
+      Session session(bundle, ringOptions(groupSize, world.communicator(r)));
+      outcomes[size_t(r)] = runRing(session, range, steps);
+    } catch (const Error &error) {
+      errors[size_t(r)] = error.what();
+    }
+  });
+  for (int32_t r = 0; r < ranks; ++r) {
+    SCOPED_TRACE("rank " + std::to_string(r));
+    ASSERT_EQ(errors[size_t(r)], "");
+    expectSame(one, outcomes[size_t(r)]);
+    // One exchange of X per big step of the second run, one all-reduce of
+    // the estimate per step phase at least.
+    EXPECT_EQ(outcomes[size_t(r)].metrics.halo_exchanges,
+              outcomes[size_t(r)].metrics.big_steps);
+    EXPECT_GT(outcomes[size_t(r)].metrics.allreduces,
+              outcomes[size_t(r)].metrics.big_steps);
+  }
+}
+
+TEST(Distributed, SameAsOneProcess) {
+  for (Boundary boundary : {Boundary::Wrap, Boundary::Clamp, Boundary::Zero}) {
+    // Ranks that divide the range and ranks that do not.
+    checkRanks(boundary, 2, 100, 4, 57);
+    checkRanks(boundary, 3, 100, 4, 57);
+    // Blocks of one item under a halo of 2: ghosts from ranks further
+    // away (and under wrap, of the block itself).
+    checkRanks(boundary, 3, 3, 1, 23);
+    checkRanks(boundary, 4, 7, 1, 23);
+  }
+}
+
+TEST(Distributed, OneProcessWithoutCommunicatorRunsTheSameCode) {
+  // The ring's wrap ghosts are local copies on one rank: without them the
+  // ends of the range would read zeros.
+  auto bundle = ring(Boundary::Wrap);
+  Session single(bundle, ringOptions(4, nullptr));
+  Outcome one = runRing(single, 10, 9);
+  EXPECT_NE(one.x[0], one.x[1]);
+  EXPECT_EQ(one.metrics.halo_exchanges, one.metrics.big_steps);
+}
+
+TEST(Distributed, TooManyRanks) {
+  auto bundle = ring(Boundary::Wrap);
+  ThreadWorld world(3);
+  std::vector<std::string> errors(3);
+  world.run([&](int32_t r) {
+    try {
+      Session session(bundle, ringOptions(256, world.communicator(r)));
+      session.set("range", "300");
+      session.init();
+    } catch (const Error &error) {
+      EXPECT_EQ(error.status, SIM_ERROR_DISTRIBUTED);
+      errors[size_t(r)] = error.what();
+    }
+  });
+  for (const std::string &error : errors)
+    EXPECT_EQ(error, "3 ranks for a range of 2 groups of 256 items: use at "
+                     "most 2 ranks or a smaller group size");
+}
+
+TEST(Distributed, RanksMustAgree) {
+  auto bundle = ring(Boundary::Wrap);
+  ThreadWorld world(2);
+  std::vector<std::string> errors(2);
+  world.run([&](int32_t r) {
+    try {
+      Session session(bundle, ringOptions(4, world.communicator(r)));
+      session.set("range", r == 0 ? "40" : "44");
+      session.init();
+    } catch (const Error &error) {
+      EXPECT_EQ(error.status, SIM_ERROR_DISTRIBUTED);
+      errors[size_t(r)] = error.what();
+    }
+  });
+  for (const std::string &error : errors)
+    EXPECT_EQ(error, "the ranks disagree on the range (from 40 to 44 over "
+                     "the 2 ranks)");
+}
+
+TEST(Distributed, Refusals) {
+  ThreadWorld world(1);
+  // A plan made for one process.
+  auto decay = parseBytes(decayBundle(), "decay.simb");
+  try {
+    Session session(decay, ringOptions(0, world.communicator(0)));
+    FAIL() << "no error";
+  } catch (const Error &error) {
+    EXPECT_EQ(error.status, SIM_ERROR_BUNDLE);
+    EXPECT_STREQ(error.what(),
+                 "bundle 'decay.simb' was not compiled for distributed runs: "
+                 "compile it with sim-translate --sim-distributed");
+  }
+  auto bundle = ring(Boundary::Wrap);
+  sim_session_options cuda = ringOptions(4, world.communicator(0));
+  cuda.backend = SIM_BACKEND_CUDA;
+  try {
+    Session session(bundle, cuda);
+    FAIL() << "no error";
+  } catch (const Error &error) {
+    EXPECT_EQ(error.status, SIM_ERROR_DISTRIBUTED);
+    EXPECT_STREQ(error.what(), "distributed runs use the CPU backend");
+  }
+}
+
+TEST(Distributed, VerifierChecksTheRecords) {
+  auto expectBad = [](schema::BundleT contents, const std::string &message) {
+    try {
+      parseBytes(serialize(contents), "ring.simb");
+      ADD_FAILURE() << "no error for: " << message;
+    } catch (const Error &error) {
+      EXPECT_EQ(error.status, SIM_ERROR_BUNDLE);
+      EXPECT_NE(std::string(error.what()).find(message), std::string::npos)
+          << error.what();
+    }
+  };
+  schema::BundleT contents = ringContents(Boundary::Wrap);
+  contents.plans[0]->buffers[0]->halo_above = 3;
+  expectBad(std::move(contents), "buffer 'X' has a halo of 2 below and 3 "
+                                 "above, wider than the plan's halo of 2");
+  contents = ringContents(Boundary::Wrap);
+  contents.plans[0]->distributed.reset();
+  contents.plans[0]->buffers[0]->halo_below = 0;
+  contents.plans[0]->buffers[0]->halo_above = 0;
+  expectBad(std::move(contents), "passes the block's first item, but the plan "
+                                 "is not distributed");
+  contents = ringContents(Boundary::Wrap);
+  auto &step = contents.plans[0]->phases[1]->body;
+  step[1]->launch->reduce_min = {16};
+  expectBad(std::move(contents), "all-reduces clock slot 16, but the plan's "
+                                 "clock has 16 slots");
+  contents = ringContents(Boundary::Wrap);
+  contents.plans[0]->phases[1]->body[2]->launch->exchange = {
+      schema::Exchange(1, false)};
+  expectBad(std::move(contents), "an exchanged buffer is 1, but there are "
+                                 "only 1");
+  contents = ringContents(Boundary::Wrap);
+  contents.plans[0]->phases[1]->body[2]->launch->exchange = {
+      schema::Exchange(0, true)};
+  expectBad(std::move(contents), "exchanges the snapshot of buffer 'X', "
+                                 "which has none");
+}
+
+} // namespace
