@@ -121,6 +121,17 @@ for nvcc in [os.path.join(cuda_root, "bin", "nvcc"), lit.util.which("nvcc")]:
         config.substitutions.append(("%nvcc", nvcc))
         break
 
+# `mpi`: sim-run was built with --distributed and mpirun is here. %mpirun
+# runs N ranks on this machine whatever its cores (--oversubscribe), also
+# as root (the CI containers).
+mpirun = lit.util.which("mpirun")
+if config.sim_mpi and mpirun:
+    config.available_features.add("mpi")
+    config.substitutions.append((
+        "%mpirun", "env OMPI_ALLOW_RUN_AS_ROOT=1 "
+        "OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_rmaps_base_oversubscribe=1 "
+        "%s --oversubscribe" % mpirun))
+
 # `cuda`: a CUDA driver and at least one GPU, for execution tests.
 smi = lit.util.which("nvidia-smi")
 if smi and "GPU " in (runs([smi, "-L"]) or ""):

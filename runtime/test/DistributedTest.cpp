@@ -5,7 +5,7 @@
 // shared memory, against the same plan on one process: the same values bit
 // for bit, evaluations, big steps and totals, for ranks that do not divide
 // the range, blocks smaller than the halo, and every boundary rule. Then
-// the refusals.
+// the refusals, and with mpirun (when it is here) sim-run --distributed.
 //
 //===----------------------------------------------------------------------===//
 
@@ -367,6 +367,53 @@ TEST(Distributed, VerifierChecksTheRecords) {
       schema::Exchange(0, true)};
   expectBad(std::move(contents), "exchanges the snapshot of buffer 'X', "
                                  "which has none");
+}
+
+/// mpirun -n N sim-run --distributed against sim-run on one process: the
+/// --dump files and the counters of --json.
+TEST(Distributed, SimRunWithMpirun) {
+  if (std::system("command -v mpirun > /dev/null 2>&1") != 0)
+    GTEST_SKIP() << "no mpirun";
+  std::string dir = makeTempDir();
+  std::string bundlePath = dir + "/ring.simb";
+  writeFile(bundlePath, serialize(ringContents(Boundary::Wrap)));
+  auto run = [&](const std::string &prefix, const std::string &name,
+                 const std::string &extra) {
+    std::string out = dir + "/" + name;
+    std::string command = prefix + " " + SIM_RUN_PATH + " " + bundlePath +
+                          " --strategy hip --steps 41 --set range=37 "
+                          "--threads 1 --no-init-check --dump " +
+                          out + " --json " + out + ".json " + extra + " > " +
+                          out + ".log 2>&1";
+    return std::system(command.c_str());
+  };
+  std::string mpirun = "env OMPI_ALLOW_RUN_AS_ROOT=1 "
+                       "OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 mpirun "
+                       "--oversubscribe -n ";
+  ASSERT_EQ(run("", "one", "--backend cpu"), 0) << readFile(dir + "/one.log");
+  for (int ranks : {2, 3}) {
+    std::string name = "ranks" + std::to_string(ranks);
+    ASSERT_EQ(run(mpirun + std::to_string(ranks), name, "--distributed"), 0)
+        << readFile(dir + "/" + name + ".log");
+    EXPECT_EQ(readFile(dir + "/one/X.npy"),
+              readFile(dir + "/" + name + "/X.npy"));
+    std::string json = readFile(dir + "/" + name + ".json");
+    EXPECT_NE(json.find("\"ranks\": " + std::to_string(ranks)),
+              std::string::npos)
+        << json;
+    EXPECT_NE(json.find("\"halo_exchanges\""), std::string::npos);
+    std::string log = readFile(dir + "/" + name + ".log");
+    EXPECT_NE(log.find("halo exchanges"), std::string::npos) << log;
+  }
+  // Too many ranks: every rank fails, nothing hangs.
+  std::string log;
+  int status = run(mpirun + "3", "bad", "--distributed --group-size 32");
+  EXPECT_NE(status, 0);
+  log = readFile(dir + "/bad.log");
+  EXPECT_NE(log.find("3 ranks for a range of 2 groups of 32 items: use at "
+                     "most 2 ranks or a smaller group size"),
+            std::string::npos)
+      << log;
 }
 
 } // namespace

@@ -17,6 +17,11 @@
 // progress and skips the rest. The report (Report.cpp) and the output
 // files come last.
 //
+// With --distributed every rank of mpirun runs this program: the same
+// calls on every rank (the sessions are collective), rank 0 alone prints,
+// shows progress and writes files. A rank that fails prints its error and
+// aborts every rank (MPI_Abort), so that none waits for it.
+//
 //===----------------------------------------------------------------------===//
 
 #include "simrun/Compare.h"
@@ -31,6 +36,10 @@
 #include "simrun/Timeline.h"
 
 #include "sim/Runtime/sim_runtime.h"
+
+#ifdef SIM_HAVE_MPI
+#include "MpiCommunicator.h"
+#endif
 
 #include <cerrno>
 #include <chrono>
@@ -53,6 +62,14 @@ extern char **environ;
 using namespace simrun;
 
 namespace {
+
+/// --distributed: MPI_COMM_WORLD's communicator and this process's rank
+/// (null and 0 otherwise).
+const sim_communicator *world = nullptr;
+int worldRank = 0, worldSize = 0;
+
+/// Whether this process prints and writes files: rank 0.
+bool printing() { return worldRank == 0; }
 
 void check(sim_status status) {
   if (status != SIM_OK)
@@ -155,6 +172,8 @@ void translate(const std::string &scene, TemporaryFile &bundle,
       std::string(tmp && *tmp ? tmp : "/tmp") + "/sim-run-XXXXXX.simb", 5);
   std::vector<std::string> args = {*tool, scene, "--sim-to-bundle", "-o",
                                    bundle.path()};
+  if (world)
+    args.push_back("--sim-distributed");
   if (!compiled.empty()) {
     std::string values;
     for (const std::string &value : compiled)
@@ -306,6 +325,7 @@ sim_session_options mainOptions(const Options &options) {
   session.cuda_graph = options.cudaGraph;
   session.check_finite = options.checkFinite;
   session.max_memory = options.maxMemory;
+  session.communicator = world;
   return session;
 }
 
@@ -461,6 +481,14 @@ TimelineHooks progressHooks(Progress &progress, const std::string &label,
 /// Writes --checkpoint's file with the session's state (atomically, like
 /// every output; the checkpoint may replace the --restart file).
 void writeCheckpoint(sim_session *session, MainRun &main) {
+  if (!printing()) {
+    // The state is gathered collectively; rank 0 writes it.
+    if (sim_session_checkpoint_fd(session, -1) != SIM_OK)
+      runError("--checkpoint: " + std::string(sim_last_error()));
+    ++main.checkpointsWritten;
+    main.checkpointTime = sim_session_time(session);
+    return;
+  }
   writeFileAtomically(main.checkpointFile, [&](int fd) {
     if (sim_session_checkpoint_fd(session, fd) != SIM_OK)
       runError("--checkpoint: " + std::string(sim_last_error()));
@@ -573,6 +601,7 @@ void runMain(Results &results, Sessions &sessions, const sim_bundle *bundle,
   main.maxMemory = options.maxMemory;
   main.memoryBytes = sim_session_memory_bytes(session);
   main.memoryLimit = sim_session_memory_limit(session);
+  main.ranks = worldSize;
   main.restartFile = options.restart;
   main.checkpointFile = options.checkpoint;
   main.checkpointEvery = options.checkpointEvery;
@@ -959,11 +988,15 @@ void requireExactSolution(const sim_bundle *bundle, sim_session *session,
 Results runAll(Sessions &sessions, const sim_bundle *bundle,
                const Options &options,
                const std::vector<sim_buffer_info> &observed) {
-  Progress progress(isatty(STDERR_FILENO), options.progress);
+  Progress progress(printing() && isatty(STDERR_FILENO),
+                    printing() && options.progress);
   Results results;
-  // The init check first: what it finds matters before a long run.
+  // The init check first: what it finds matters before a long run. It
+  // runs the reference functions in this process: rank 0's is enough.
   if (options.noInitCheck)
     results.initCheck.skipped = "--no-init-check";
+  else if (!printing())
+    results.initCheck.skipped = "not rank 0";
   else
     results.initCheck = checkInit(sessions.main->get(), bundle);
   for (const std::string &message : initCheckMessages(results.initCheck))
@@ -1023,6 +1056,12 @@ int run(Options options) {
   stopIfInterrupted("before the run");
 
   Results results = runAll(sessions, bundle, options, observed);
+  if (!printing()) {
+    // Rank 0 reports; the exit status is every rank's.
+    if (int signal = receivedSignal())
+      return kExitSignalBase + signal;
+    return results.nonFinite.empty() ? kExitSuccess : kExitNonFinite;
+  }
 
   // The report and the files: the JSON last, so that its presence says
   // the dumps are complete.
@@ -1051,13 +1090,46 @@ int run(Options options) {
   return kExitSuccess;
 }
 
+#ifdef SIM_HAVE_MPI
+/// --distributed: run on every rank of MPI_COMM_WORLD.
+int runDistributed(Options options, int &argc, char **&argv) {
+  sim::mpi::World mpi(&argc, &argv);
+  world = mpi.communicator();
+  worldRank = mpi.rank();
+  worldSize = mpi.size();
+  try {
+    // Rank 0 prints the report and the output rows.
+    if (!printing() && !std::freopen("/dev/null", "w", stdout))
+      runError("cannot silence the standard output of rank " +
+               std::to_string(worldRank));
+    return run(std::move(options));
+  } catch (const Exit &exit) {
+    if (!exit.message.empty())
+      std::fprintf(stderr, "sim-run: rank %d: %s\n", worldRank,
+                   exit.message.c_str());
+    std::fflush(stderr);
+    // The other ranks may wait in a collective call for this one.
+    sim::mpi::World::abort(exit.status);
+  }
+}
+#endif
+
 } // namespace
 
 int main(int argc, char **argv) {
   captureUmask();
   installSignalHandlers();
   try {
-    return run(parseOptions(argc, argv));
+    Options options = parseOptions(argc, argv);
+    if (options.distributed) {
+#ifdef SIM_HAVE_MPI
+      return runDistributed(std::move(options), argc, argv);
+#else
+      usageError("--distributed: this sim-run was built without MPI (install "
+                 "libopenmpi-dev and configure the build again)");
+#endif
+    }
+    return run(std::move(options));
   } catch (const Exit &exit) {
     if (!exit.message.empty())
       std::fprintf(stderr, "sim-run: %s%s\n",

@@ -391,6 +391,12 @@ void declareOptions(CLI::App &app, Options &options, std::string &backend,
                "run launch by launch and stop at the first NaN\n"
                "or infinity, naming base step, component and item")
       ->disable_flag_override();
+  app.add_flag("--distributed", options.distributed,
+               "run on every rank of mpirun (MPI_COMM_WORLD), each\n"
+               "a block of the range, on the CPU backend; the\n"
+               "bundle must be compiled with sim-translate\n"
+               "--sim-distributed (rank 0 prints and writes files)")
+      ->disable_flag_override();
   app.add_flag("--no-init-check", options.noInitCheck,
                "skip the check that every buffer's init is what\n"
                "its writer computes with n = 0 at t = 0 (for scenes\n"
@@ -501,6 +507,16 @@ Options parseOptions(int argc, const char *const *argv) {
     sim_backend_parse(backend.c_str(), &options.backend);
   if (!strategy.empty())
     sim_strategy_parse(strategy.c_str(), &options.strategy);
+  if (options.distributed) {
+    if (options.backend == SIM_BACKEND_CUDA ||
+        options.backend == SIM_BACKEND_REFERENCE)
+      usageError(std::string("--distributed runs on the CPU backend, not ") +
+                 sim_backend_name(options.backend));
+    if (options.check)
+      usageError("--check runs the reference executor, which does not run "
+                 "distributed; leave out --check or --distributed");
+    options.backend = SIM_BACKEND_CPU;
+  }
   for (const std::string &set : sets) {
     size_t equals = set.find('=');
     std::string name = set.substr(0, equals), value = set.substr(equals + 1);

@@ -94,6 +94,8 @@ struct Options {
   std::string dump;
   std::string json;
   bool checkFinite = false;
+  /// --distributed: one block of the range per rank of mpirun.
+  bool distributed = false;
   /// --progress: the progress line also where stderr is not a terminal.
   bool progress = false;
   /// --no-init-check: skip the check of inits against their writers.

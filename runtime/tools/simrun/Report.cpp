@@ -146,6 +146,14 @@ void printMetrics(const MainRun &main) {
   row("memory", formatBytes(main.memoryBytes) + " (limit " +
                     formatBytes(main.memoryLimit) + ")");
   row("big steps", std::to_string(metrics.big_steps));
+  if (main.ranks > 0) {
+    // Rank 0's: every rank exchanges as often, its own bytes.
+    row("ranks", std::to_string(main.ranks));
+    row("halo exchanges", std::to_string(metrics.halo_exchanges) + " (" +
+                              formatBytes(metrics.exchanged_bytes) +
+                              " sent by rank 0)");
+    row("all-reduces", std::to_string(metrics.allreduces));
+  }
   std::string sizes;
   for (size_t m = 1; m < main.counts.histogram.size(); ++m)
     if (int64_t count = main.counts.histogram[m])
@@ -539,6 +547,12 @@ std::string toJson(const Results &results) {
   json["graph_launches"] = main.metrics.graph_launches;
   json["host_syncs"] = main.metrics.host_syncs;
   json["big_steps"] = main.metrics.big_steps;
+  if (main.ranks > 0) {
+    json["ranks"] = main.ranks;
+    json["halo_exchanges"] = main.metrics.halo_exchanges;
+    json["exchanged_bytes"] = main.metrics.exchanged_bytes;
+    json["allreduces"] = main.metrics.allreduces;
+  }
   json["big_step_histogram"] = histogram(main.counts.histogram);
   json["evaluations"] = evaluations(main.counts);
   json["totals"] = totals(main.totalNames, main.totals);

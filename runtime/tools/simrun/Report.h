@@ -51,6 +51,8 @@ struct MainRun {
   bool flushSubnormals = false;
   /// --max-memory, and the state's bytes and limit.
   int64_t maxMemory = 0, memoryBytes = 0, memoryLimit = 0;
+  /// --distributed: the ranks (0: not distributed).
+  int32_t ranks = 0;
 
   /// The last run's metrics and counters (the interrupted one if cut),
   /// added up over its session runs.

@@ -47,6 +47,9 @@ void RunTotals::add(sim_session *session, int64_t maxSteps, bool atOutput) {
   metrics.graph_launches += run.graph_launches;
   metrics.host_syncs += run.host_syncs;
   metrics.big_steps += run.big_steps;
+  metrics.halo_exchanges += run.halo_exchanges;
+  metrics.exchanged_bytes += run.exchanged_bytes;
+  metrics.allreduces += run.allreduces;
   counts.bigSteps += run.big_steps;
   int32_t components = sim_session_num_components(session);
   if (counts.evaluations.empty())

@@ -1,0 +1,144 @@
+//===- MpiCommunicator.cpp - a sim_communicator over MPI ------------------===//
+//
+// Each function is one MPI call (or a few non-blocking ones and a
+// Waitall); MPI's errors return (MPI_ERRORS_RETURN) so that the session
+// fails with SIM_ERROR_DISTRIBUTED and sim-run aborts every rank with a
+// message, instead of MPI's default handler killing the job without one.
+//
+//===----------------------------------------------------------------------===//
+
+#include "MpiCommunicator.h"
+
+#include <algorithm>
+#include <climits>
+#include <cstdint>
+#include <cstdlib>
+#include <mpi.h>
+#include <vector>
+
+namespace sim::mpi {
+
+namespace {
+
+/// Byte counts of one message: MPI counts are ints.
+constexpr size_t kMaxMessage = size_t(INT_MAX);
+
+int allreduce(int64_t *values, int32_t count, MPI_Op op) {
+  return MPI_Allreduce(MPI_IN_PLACE, values, count, MPI_INT64_T, op,
+                       MPI_COMM_WORLD) == MPI_SUCCESS
+             ? 0
+             : 1;
+}
+
+int allreduceMin(void *, int64_t *values, int32_t count) {
+  return allreduce(values, count, MPI_MIN);
+}
+
+int allreduceSum(void *, int64_t *values, int32_t count) {
+  return allreduce(values, count, MPI_SUM);
+}
+
+int exchange(void *, const void *const *send, const size_t *sendBytes,
+             void *const *recv, const size_t *recvBytes) {
+  int size = 0;
+  MPI_Comm_size(MPI_COMM_WORLD, &size);
+  std::vector<MPI_Request> requests;
+  requests.reserve(2 * size_t(size));
+  // Receives first, so that every send finds its receive posted.
+  for (int r = 0; r < size; ++r) {
+    if (!recvBytes[r])
+      continue;
+    if (recvBytes[r] > kMaxMessage)
+      return 1;
+    requests.emplace_back();
+    if (MPI_Irecv(recv[r], int(recvBytes[r]), MPI_BYTE, r, 0, MPI_COMM_WORLD,
+                  &requests.back()) != MPI_SUCCESS)
+      return 1;
+  }
+  for (int r = 0; r < size; ++r) {
+    if (!sendBytes[r])
+      continue;
+    if (sendBytes[r] > kMaxMessage)
+      return 1;
+    requests.emplace_back();
+    if (MPI_Isend(send[r], int(sendBytes[r]), MPI_BYTE, r, 0, MPI_COMM_WORLD,
+                  &requests.back()) != MPI_SUCCESS)
+      return 1;
+  }
+  return MPI_Waitall(int(requests.size()), requests.data(),
+                     MPI_STATUSES_IGNORE) == MPI_SUCCESS
+             ? 0
+             : 1;
+}
+
+int allgather(void *, const void *data, const size_t *bytes, void *out) {
+  int size = 0, rank = 0;
+  MPI_Comm_size(MPI_COMM_WORLD, &size);
+  MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+  std::vector<int> counts(static_cast<size_t>(size)),
+      displacements(static_cast<size_t>(size));
+  size_t offset = 0;
+  for (int r = 0; r < size; ++r) {
+    // MPI_Allgatherv takes int counts and displacements: a gathered array
+    // of 2 GiB or more goes as MPI_Bcasts of each rank's share instead.
+    if (offset + bytes[r] > kMaxMessage) {
+      size_t at = 0;
+      for (int from = 0; from < size; ++from) {
+        char *target = static_cast<char *>(out) + at;
+        if (from == rank && bytes[from])
+          std::copy(static_cast<const char *>(data),
+                    static_cast<const char *>(data) + bytes[from], target);
+        for (size_t done = 0; done < bytes[from]; done += kMaxMessage) {
+          size_t chunk = std::min(kMaxMessage, bytes[from] - done);
+          if (MPI_Bcast(target + done, int(chunk), MPI_BYTE, from,
+                        MPI_COMM_WORLD) != MPI_SUCCESS)
+            return 1;
+        }
+        at += bytes[from];
+      }
+      return 0;
+    }
+    counts[size_t(r)] = int(bytes[r]);
+    displacements[size_t(r)] = int(offset);
+    offset += bytes[r];
+  }
+  return MPI_Allgatherv(data, counts[size_t(rank)], MPI_BYTE, out,
+                        counts.data(), displacements.data(), MPI_BYTE,
+                        MPI_COMM_WORLD) == MPI_SUCCESS
+             ? 0
+             : 1;
+}
+
+} // namespace
+
+World::World(int *argc, char ***argv) {
+  int initialized = 0;
+  MPI_Initialized(&initialized);
+  if (!initialized) {
+    int provided = 0;
+    MPI_Init_thread(argc, argv, MPI_THREAD_FUNNELED, &provided);
+    owns = true;
+  }
+  MPI_Comm_set_errhandler(MPI_COMM_WORLD, MPI_ERRORS_RETURN);
+  MPI_Comm_rank(MPI_COMM_WORLD, &rank_);
+  MPI_Comm_size(MPI_COMM_WORLD, &size_);
+  comm.user = nullptr;
+  comm.rank = rank_;
+  comm.size = size_;
+  comm.allreduce_min_i64 = allreduceMin;
+  comm.allreduce_sum_i64 = allreduceSum;
+  comm.exchange = exchange;
+  comm.allgather = allgather;
+}
+
+World::~World() {
+  if (owns)
+    MPI_Finalize();
+}
+
+void World::abort(int status) {
+  MPI_Abort(MPI_COMM_WORLD, status ? status : 1);
+  std::exit(status ? status : 1);
+}
+
+} // namespace sim::mpi
