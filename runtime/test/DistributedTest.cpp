@@ -17,6 +17,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <condition_variable>
 #include <cstdlib>
 #include <cstring>
@@ -158,8 +159,8 @@ std::shared_ptr<const Bundle> ring(Boundary boundary) {
   return parseBytes(serialize(ringContents(boundary)), "ring.simb");
 }
 
-sim_session_options ringOptions(int64_t groupSize,
-                                const sim_communicator *comm) {
+sim_session_options ringOptions(int64_t groupSize, const sim_communicator *comm,
+                                bool checkFinite = false) {
   sim_session_options options;
   sim_session_options_init(&options);
   options.strategy = SIM_STRATEGY_HIP;
@@ -167,6 +168,7 @@ sim_session_options ringOptions(int64_t groupSize,
   options.cpu_threads = 2;
   options.group_size = groupSize;
   options.communicator = comm;
+  options.check_finite = checkFinite;
   return options;
 }
 
@@ -213,13 +215,13 @@ void expectSame(const Outcome &one, const Outcome &many) {
 }
 
 void checkRanks(Boundary boundary, int32_t ranks, int64_t range,
-                int64_t groupSize, int64_t steps) {
+                int64_t groupSize, int64_t steps, bool checkFinite = false) {
   SCOPED_TRACE(std::string(boundaryName(boundary)) + ", " +
                std::to_string(ranks) + " ranks, range " +
                std::to_string(range) + ", group size " +
                std::to_string(groupSize));
   auto bundle = ring(boundary);
-  Session single(bundle, ringOptions(groupSize, nullptr));
+  Session single(bundle, ringOptions(groupSize, nullptr, checkFinite));
   Outcome one = runRing(single, range, steps);
   EXPECT_GT(one.evaluations[0], 0);
   ThreadWorld world(ranks);
@@ -227,7 +229,8 @@ void checkRanks(Boundary boundary, int32_t ranks, int64_t range,
   std::vector<std::string> errors(static_cast<size_t>(ranks));
   world.run([&](int32_t r) {
     try {
-      Session session(bundle, ringOptions(groupSize, world.communicator(r)));
+      Session session(
+          bundle, ringOptions(groupSize, world.communicator(r), checkFinite));
       outcomes[size_t(r)] = runRing(session, range, steps);
     } catch (const Error &error) {
       errors[size_t(r)] = error.what();
@@ -256,6 +259,8 @@ TEST(Distributed, SameAsOneProcess) {
     checkRanks(boundary, 3, 3, 1, 23);
     checkRanks(boundary, 4, 7, 1, 23);
   }
+  // --check-finite: a batch per step phase, an agreement per launch.
+  checkRanks(Boundary::Wrap, 3, 50, 4, 31, true);
 }
 
 TEST(Distributed, OneProcessWithoutCommunicatorRunsTheSameCode) {
@@ -266,6 +271,37 @@ TEST(Distributed, OneProcessWithoutCommunicatorRunsTheSameCode) {
   Outcome one = runRing(single, 10, 9);
   EXPECT_NE(one.x[0], one.x[1]);
   EXPECT_EQ(one.metrics.halo_exchanges, one.metrics.big_steps);
+}
+
+/// A NaN set into one rank's block: every rank stops with the message
+/// one process gives (--check-finite), naming the global item.
+TEST(Distributed, NonFiniteValuesStopEveryRank) {
+  auto bundle = ring(Boundary::Wrap);
+  auto poisoned = [](Session &session) {
+    session.set("range", "50");
+    std::vector<double> x(50);
+    session.getBuffer("X", x.data(), x.size() * 8);
+    x[29] = std::nan("");
+    session.setBuffer("X", x.data(), x.size() * 8);
+    try {
+      session.run(10);
+    } catch (const Error &error) {
+      EXPECT_EQ(error.status, SIM_ERROR_NONFINITE);
+      return std::string(error.what());
+    }
+    return std::string("no error");
+  };
+  Session single(bundle, ringOptions(4, nullptr, true));
+  std::string one = poisoned(single);
+  EXPECT_NE(one.find("(item 29)"), std::string::npos) << one;
+  ThreadWorld world(3);
+  std::vector<std::string> messages(3);
+  world.run([&](int32_t r) {
+    Session session(bundle, ringOptions(4, world.communicator(r), true));
+    messages[size_t(r)] = poisoned(session);
+  });
+  for (const std::string &message : messages)
+    EXPECT_EQ(message, one);
 }
 
 TEST(Distributed, TooManyRanks) {
@@ -405,6 +441,29 @@ TEST(Distributed, SimRunWithMpirun) {
     std::string log = readFile(dir + "/" + name + ".log");
     EXPECT_NE(log.find("halo exchanges"), std::string::npos) << log;
   }
+  // Checkpoints: 3 ranks write the file one process writes, and 2 ranks
+  // restart from it to the values of one run.
+  auto steps = [&](const std::string &prefix, const std::string &args) {
+    std::string command = prefix + " " + SIM_RUN_PATH + " " + bundlePath +
+                          " --strategy hip --set range=37 --threads 1 "
+                          "--no-init-check " +
+                          args + " > " + dir + "/steps.log 2>&1";
+    return std::system(command.c_str());
+  };
+  ASSERT_EQ(
+      steps("", "--backend cpu --steps 17 --checkpoint " + dir + "/one.ckpt"),
+      0);
+  ASSERT_EQ(steps(mpirun + "3", "--distributed --steps 17 --checkpoint " + dir +
+                                    "/three.ckpt"),
+            0)
+      << readFile(dir + "/steps.log");
+  EXPECT_EQ(readFile(dir + "/one.ckpt"), readFile(dir + "/three.ckpt"));
+  ASSERT_EQ(steps(mpirun + "2", "--distributed --steps 41 --restart " + dir +
+                                    "/three.ckpt --dump " + dir + "/restart"),
+            0)
+      << readFile(dir + "/steps.log");
+  EXPECT_EQ(readFile(dir + "/one/X.npy"), readFile(dir + "/restart/X.npy"));
+
   // Too many ranks: every rank fails, nothing hangs.
   std::string log;
   int status = run(mpirun + "3", "bad", "--distributed --group-size 32");
@@ -412,6 +471,20 @@ TEST(Distributed, SimRunWithMpirun) {
   log = readFile(dir + "/bad.log");
   EXPECT_NE(log.find("3 ranks for a range of 2 groups of 32 items: use at "
                      "most 2 ranks or a smaller group size"),
+            std::string::npos)
+      << log;
+
+  // A bundle made for one process.
+  writeFile(dir + "/decay.simb", decayBundle());
+  status =
+      std::system((mpirun + "2 " + SIM_RUN_PATH + " " + dir +
+                   "/decay.simb --distributed > " + dir + "/decay.log 2>&1")
+                      .c_str());
+  EXPECT_NE(status, 0);
+  log = readFile(dir + "/decay.log");
+  EXPECT_NE(log.find("sim-run: rank 0: bundle '" + dir +
+                     "/decay.simb' was not compiled for distributed runs: "
+                     "compile it with sim-translate --sim-distributed"),
             std::string::npos)
       << log;
 }

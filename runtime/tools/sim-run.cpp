@@ -999,8 +999,9 @@ Results runAll(Sessions &sessions, const sim_bundle *bundle,
     results.initCheck.skipped = "not rank 0";
   else
     results.initCheck = checkInit(sessions.main->get(), bundle);
-  for (const std::string &message : initCheckMessages(results.initCheck))
-    std::fprintf(stderr, "%s\n", message.c_str());
+  if (printing())
+    for (const std::string &message : initCheckMessages(results.initCheck))
+      std::fprintf(stderr, "%s\n", message.c_str());
   std::fflush(stderr);
   results.referenceKind = options.reference;
   results.referenceValues.assign(observed.size(), std::nullopt);
