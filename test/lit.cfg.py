@@ -132,6 +132,12 @@ if config.sim_mpi and mpirun:
         "OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_rmaps_base_oversubscribe=1 "
         "%s --oversubscribe" % mpirun))
 
+# `sim-distributed`: sim-translate compiles plans for many processes
+# (--sim-distributed, docs/Distributed.md).
+translate = os.path.join(config.sim_tools_dir, "sim-translate")
+if "sim-distributed" in (runs([translate, "--help"]) or ""):
+    config.available_features.add("sim-distributed")
+
 # `cuda`: a CUDA driver and at least one GPU, for execution tests.
 smi = lit.util.which("nvidia-smi")
 if smi and "GPU " in (runs([smi, "-L"]) or ""):
