@@ -53,6 +53,9 @@ class _Metrics(ctypes.Structure):
                 ("allreduces", ctypes.c_int64)]
 
 
+_DISTRIBUTED_METRICS = ("halo_exchanges", "exchanged_bytes", "allreduces")
+
+
 class _BufferInfo(ctypes.Structure):
     _fields_ = [("name", ctypes.c_char_p), ("element_type", ctypes.c_char_p),
                 ("scalar_type", ctypes.c_char_p),
@@ -365,7 +368,10 @@ class Session:
         metrics = _Metrics()
         _check(load_library().sim_session_metrics(self._handle,
                                                   ctypes.byref(metrics)))
-        return {name: getattr(metrics, name) for name, _ in _Metrics._fields_}
+        # The distributed counters are always 0 here: Python sessions run
+        # on one process.
+        return {name: getattr(metrics, name) for name, _ in _Metrics._fields_
+                if name not in _DISTRIBUTED_METRICS}
 
     def evaluations(self):
         """Item evaluations per component during the last run."""

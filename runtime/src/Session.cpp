@@ -223,6 +223,10 @@ size_t Session::hostBytes(const std::string &name) const {
 //===----------------------------------------------------------------------===//
 
 void Session::allocate() {
+  // Before anything a rank could refuse alone (the range's blocks): ranks
+  // with different ranges would otherwise part ways here.
+  if (distributed())
+    ensureAgreed();
   checkMemory(settings.range, "range " + std::to_string(settings.range));
   layout();
   auto take = [&](size_t bytes) {

@@ -330,7 +330,9 @@ TEST(Distributed, RanksMustAgree) {
   world.run([&](int32_t r) {
     try {
       Session session(bundle, ringOptions(4, world.communicator(r)));
-      session.set("range", r == 0 ? "40" : "44");
+      // 8 items on rank 0 fit 2 ranks in groups of 4, 3 on rank 1 do not:
+      // the ranks must agree before either splits its range.
+      session.set("range", r == 0 ? "8" : "3");
       session.init();
     } catch (const Error &error) {
       EXPECT_EQ(error.status, SIM_ERROR_DISTRIBUTED);
@@ -338,7 +340,7 @@ TEST(Distributed, RanksMustAgree) {
     }
   });
   for (const std::string &error : errors)
-    EXPECT_EQ(error, "the ranks disagree on the range (from 40 to 44 over "
+    EXPECT_EQ(error, "the ranks disagree on the range (from 3 to 8 over "
                      "the 2 ranks)");
 }
 

@@ -223,7 +223,9 @@ typedef struct sim_session_options {
   /// The most bytes the session may allocate on its device (the host for
   /// the CPU and reference backends); a range whose buffers would need more
   /// is refused with SIM_ERROR_MEMORY_LIMIT before anything is allocated.
-  /// 0: three quarters of the device's memory.
+  /// 0: three quarters of the device's memory. A distributed session's
+  /// limit, and sim_session_memory_bytes, are per rank (its block and
+  /// ghosts).
   int64_t max_memory;
   /// Distributed sessions: the ranks to split the range over (NULL: one
   /// process). Needs a bundle compiled with sim-translate
