@@ -25,11 +25,12 @@ build_type="${SIM_BUILD_TYPE:-Release}"
 # Python for lit and the scene generator with numpy and matplotlib for the
 # Python package python/sim (numpy arrays in and out of runs, plots) and
 # the tests that read sim-run's .npy and .npz files, Graphviz to render
-# dependency graphs in tests, and clang-22's OpenMP runtime for the
-# hand-written CPU baseline of the benchmarks (bench/cpu).
+# dependency graphs in tests, clang-22's OpenMP runtime for the
+# hand-written CPU baseline of the benchmarks (bench/cpu), and Open MPI for
+# distributed runs (sim-run --distributed under mpirun; docs/Distributed.md).
 packages=(
   libmlir-22-dev mlir-22-tools llvm-22-dev llvm-22-tools clang-22 lld-22
-  libomp-22-dev
+  libomp-22-dev libopenmpi-dev openmpi-bin
   cmake ninja-build libgtest-dev libcli11-dev nlohmann-json3-dev
   libflatbuffers-dev flatbuffers-compiler zlib1g-dev libminizip-dev python3
   python3-numpy python3-matplotlib graphviz

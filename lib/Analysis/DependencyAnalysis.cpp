@@ -267,8 +267,13 @@ void DependencyAnalysis::analyzeReads() {
       return; // Not in verified IR.
     // A total reads the state at T after a run; it is an output, not a
     // component, so it takes no part in the schedule or the memory plan.
-    if (location->kind == BodyKind::Total)
+    if (location->kind == BodyKind::Total) {
+      auto total = read->getParentOfType<TotalOp>();
+      totalReads.emplace_back(
+          read, classifier.classify(read.getIndex(),
+                                    total.getBody().front().getArgument(0)));
       return;
+    }
     ReadInfo info{read,
                   buffer,
                   location->kind,

@@ -31,6 +31,8 @@ void mlir::sim::buildFrontEndPipeline(OpPassManager &pm,
   planOptions.strategy = options.strategy;
   planOptions.groupSize = options.groupSize;
   simulation.addPass(createSimPlanMemory(planOptions));
+  if (options.distributed)
+    simulation.addPass(createSimPlanHalos());
   simulation.addPass(createSimInsertInterpolation());
 }
 

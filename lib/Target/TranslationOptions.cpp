@@ -82,6 +82,14 @@ TranslationOptions::TranslationOptions()
                          "(PTX .ftz f32 forms and libdevice's FTZ variants; "
                          "FTZ and DAZ on the CPU threads; recorded in the "
                          "bundle). Default: IEEE subnormals"),
+          llvm::cl::init(false), llvm::cl::cat(category)),
+      distributed(
+          "sim-distributed",
+          llvm::cl::desc("--sim-to-bundle: plans for many processes "
+                         "(sim-run --distributed under mpirun): each rank "
+                         "holds a block of the range plus the ghost items "
+                         "the scene's read windows reach; gathers are "
+                         "refused (docs/Distributed.md)"),
           llvm::cl::init(false), llvm::cl::cat(category)) {}
 
 GPUTargetOptions TranslationOptions::getGPUTarget() const {

@@ -110,8 +110,14 @@ public:
   /// The buffers `component` writes, in `writes` order.
   SmallVector<BufferOp> getWrittenBuffers(ComponentOp component) const;
 
-  /// Every read of the simulation, in program order.
+  /// Every read of the simulation's components and buffers, in program
+  /// order.
   ArrayRef<ReadInfo> getReads() const { return reads; }
+  /// Every read of its totals' bodies, with its pattern. Totals are
+  /// outputs, not components: no schedule or memory plan sees them.
+  ArrayRef<std::pair<ReadOp, AccessPattern>> getTotalReads() const {
+    return totalReads;
+  }
   /// The pattern of one read.
   AccessPattern getPattern(ReadOp read) const;
 
@@ -148,6 +154,7 @@ private:
   SmallVector<ComponentOp> components;
   SmallVector<BufferOp> buffers;
   SmallVector<ReadInfo> reads;
+  SmallVector<std::pair<ReadOp, AccessPattern>> totalReads;
   llvm::DenseMap<Operation *, unsigned> readIndex;
   llvm::DenseMap<Operation *, SmallVector<BufferAccess>> accesses;
 };

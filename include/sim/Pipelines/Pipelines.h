@@ -33,6 +33,11 @@ struct FrontEndOptions : public PassPipelineOptions<FrontEndOptions> {
       *this, "prune",
       llvm::cl::desc("Remove what no observed buffer depends on"),
       llvm::cl::init(true)};
+  PassOptions::Option<bool> distributed{
+      *this, "distributed",
+      llvm::cl::desc("Plan for many processes: record the ghost items of "
+                     "every buffer (--sim-plan-halos)"),
+      llvm::cl::init(false)};
 };
 
 /// Adds the front end to `pm` (which runs on the module): prune, schedule,

@@ -45,6 +45,10 @@ struct BundleOptions {
   /// bundle, compiled into the PTX and the CPU code, and set by the runtime
   /// on the CPU threads. target.flushSubnormals is set from it.
   bool flushSubnormals = false;
+  /// Plans for many processes (--sim-distributed, docs/Distributed.md):
+  /// the front end records every buffer's ghost items and the kernels
+  /// address one rank's block.
+  bool distributed = false;
 };
 
 /// Compiles the one sim.simulation in `module` for every strategy of

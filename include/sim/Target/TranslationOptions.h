@@ -52,6 +52,8 @@ struct TranslationOptions {
   llvm::cl::list<std::string> cpuIsas;
   /// --sim-ftz: flush subnormals to zero on every backend.
   llvm::cl::opt<bool> ftz;
+  /// --sim-distributed: plans for many processes.
+  llvm::cl::opt<bool> distributed;
 
   /// The GPU back end's target the flags describe.
   GPUTargetOptions getGPUTarget() const;

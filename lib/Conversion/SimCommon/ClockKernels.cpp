@@ -94,6 +94,10 @@ LogicalResult SimulationLowering::emitAdvance(OpBuilder &launches,
     Value at = b.add(b.index(histogramSlot), b.toIndex(next));
     b.store(b.add(b.load(clock, at), one), clock, at);
   });
+  // Each rank's estimate kernels took the minimum over its own items: the
+  // ranks agree on the global minimum before the decision.
+  if (distributed && hasEstimates)
+    pendingReduce.push_back(kSlotEstimate);
   for (ComponentOp component : order) {
     auto it = subClockSlots.find(component);
     if (it == subClockSlots.end())

@@ -113,7 +113,7 @@ void SimulationLowering::evaluateItems(Kernel &kernel, ComponentOp component,
                  component.getWrites().getAsRange<FlatSymbolRefAttr>(),
                  results))
           b.store(value, values.buffers.lookup(name.getAttr()),
-                  b.add(writeBase, lane.item));
+                  b.add(writeBase, element(kernel, lane.item)));
       });
       countEvaluation(count, lane);
     });

@@ -64,13 +64,15 @@ LogicalResult SimulationLowering::emitRounds(ComponentOp component,
     b.ifThen(b.cmp(arith::CmpIPredicate::sgt, size, b.i64(0)), [&] {
       forEachItem(kernel, [&](const Lane &lane) {
         b.ifThen(lane.active, [&] {
+          Value at = element(kernel, lane.item);
           Value value = b.load(kernel.values.buffers.lookup(write.getAttr()),
-                               b.add(kernel.values.sourceBase, lane.item));
-          b.store(value, kernel.values.snapshots.lookup(write.getAttr()),
-                  lane.item);
+                               b.add(kernel.values.sourceBase, at));
+          b.store(value, kernel.values.snapshots.lookup(write.getAttr()), at);
         });
       });
     });
+    if (distributed && buffer.getHaloAttr())
+      pendingExchangeSnapshots.push_back(write);
     if (failed(endKernel(kernel, simplan::LaunchShape::items, launches)))
       return failure();
   }
@@ -120,6 +122,10 @@ LogicalResult SimulationLowering::emitRounds(ComponentOp component,
     b.store(next, clock, b.index(sub + kSubSize));
     b.store(done, clock, b.index(sub + kSubCount));
     b.store(b.i64(kNoEstimate64), clock, b.index(sub + kSubEstimate));
+    // The estimate is each rank's minimum: the ranks agree on the global
+    // one first.
+    if (distributed)
+      pendingReduce.push_back(sub + kSubEstimate);
     if (failed(endKernel(kernel, simplan::LaunchShape::single, roundLaunches)))
       return failure();
   }
@@ -136,7 +142,7 @@ LogicalResult SimulationLowering::emitRounds(ComponentOp component,
     Value readParity = arith::XOrIOp::create(b, b.loc, parity, odd(subCount));
     setHalves(kernel, parity, readParity);
     Value writeBase =
-        b.mul(b.toIndex(b.xorOne(readParity)), kernel.values.range);
+        b.mul(b.toIndex(b.xorOne(readParity)), kernel.values.extent);
     kernel.values.bigStepBegin = begin;
     kernel.values.bigStepSize = size;
     Value steps = b.truncate(subSize, b.getI32Type());
@@ -169,8 +175,9 @@ LogicalResult SimulationLowering::emitRounds(ComponentOp component,
       b.ifThen(lane.active, [&] {
         for (FlatSymbolRefAttr write : writes) {
           Value memory = kernel.values.buffers.lookup(write.getAttr());
-          b.store(b.load(memory, b.add(kernel.values.sourceBase, lane.item)),
-                  memory, b.add(kernel.values.targetBase, lane.item));
+          Value at = element(kernel, lane.item);
+          b.store(b.load(memory, b.add(kernel.values.sourceBase, at)), memory,
+                  b.add(kernel.values.targetBase, at));
         }
       });
     });

@@ -55,6 +55,18 @@ Value mlir::sim::applyBoundary(OpBuilder &builder, Location loc,
   llvm_unreachable("unknown boundary rule");
 }
 
+Value mlir::sim::getElementIndex(OpBuilder &builder, Location loc,
+                                 const KernelValues &values, Value item) {
+  if (!values.first)
+    return item;
+  Value shifted = arith::SubIOp::create(builder, loc, item, values.first);
+  if (values.halo == 0)
+    return shifted;
+  return arith::AddIOp::create(
+      builder, loc, shifted,
+      arith::ConstantIndexOp::create(builder, loc, values.halo));
+}
+
 /// Converts a parameter value to the type a `sim.get_param` asks for (the
 /// builtins are passed as i64 and may be read as index or i32).
 static Value castParam(OpBuilder &builder, Location loc, Value value,
@@ -227,7 +239,11 @@ private:
 
     Value index = load.getIndex();
     Value inBounds;
-    if (index != values.item)
+    if (index == values.item)
+      index = getElementIndex(builder, loc, values, index);
+    else if (values.first)
+      index = lowerGhostIndex(builder, loc, buffer, index, inBounds);
+    else
       index =
           applyBoundary(builder, loc, buffer, index, values.range, inBounds);
     if (base)
@@ -238,6 +254,26 @@ private:
           builder, loc, inBounds, value,
           buildZeroElement(builder, loc, value.getType()));
     return value;
+  }
+
+  /// A distributed plan's read of another item: the ghost items hold what
+  /// the boundary rule reads outside the rank's block (the exchanges after
+  /// each write put it there), so the element is the item's own, clamped
+  /// into the rank's storage for the padding lanes of a last group, which
+  /// read past the halo and whose values nobody uses. `zero` still returns
+  /// zero outside [0, range): ghost items beyond the range hold nothing.
+  Value lowerGhostIndex(OpBuilder &builder, Location loc, BufferOp buffer,
+                        Value index, Value &inBounds) {
+    if (buffer.getBoundary() == Boundary::zero)
+      inBounds = arith::CmpIOp::create(builder, loc, arith::CmpIPredicate::ult,
+                                       index, values.range);
+    Value element = getElementIndex(builder, loc, values, index);
+    Value zero = arith::ConstantIndexOp::create(builder, loc, 0);
+    Value last =
+        arith::SubIOp::create(builder, loc, values.extent,
+                              arith::ConstantIndexOp::create(builder, loc, 1));
+    Value low = arith::MaxSIOp::create(builder, loc, element, zero);
+    return arith::MinSIOp::create(builder, loc, low, last);
   }
 
   /// Inside the group's cached items, the cache; elsewhere (or without a
@@ -315,6 +351,7 @@ private:
           applyBoundary(builder, loc, buffer, index, values.range, inBounds);
     KernelValues initValues;
     initValues.range = values.range;
+    initValues.extent = values.extent;
     initValues.params = values.params;
     initValues.item = index;
     FailureOr<SmallVector<Value>> results =

@@ -41,6 +41,10 @@ LogicalResult SimulationLowering::checkFrontEnd() {
   strategy = strategyAttr.getValue();
   maxSteps = simulation.getMaxSteps();
   stepCap = simulation.getStepCapAttr().getInt();
+  if (IntegerAttr halo = simulation.getDistributedHaloAttr()) {
+    distributed = true;
+    distributedHalo = halo.getInt();
+  }
 
   std::optional<SmallVector<ComponentOp>> scheduled =
       simulation.getScheduledOrder();
@@ -150,6 +154,12 @@ Kernel SimulationLowering::beginKernel(StringRef name, BufferOp exactOf,
   }
   types.push_back(b.getI64Type());
   kernel.args.push_back(arg(simplan::ArgKind::range));
+  if (distributed) {
+    types.push_back(b.getI64Type());
+    kernel.args.push_back(arg(simplan::ArgKind::first));
+    types.push_back(b.getI64Type());
+    kernel.args.push_back(arg(simplan::ArgKind::extent));
+  }
   types.push_back(simulation.getTimeStepType());
   kernel.args.push_back(arg(simplan::ArgKind::dt));
   if (exactOf) {
@@ -176,9 +186,15 @@ Kernel SimulationLowering::beginKernel(StringRef name, BufferOp exactOf,
     values.params[param.getSymName()] = next();
   Value range = next();
   values.params["range"] = range;
+  values.range = b.toIndex(range);
+  values.extent = values.range;
+  if (distributed) {
+    values.first = b.toIndex(next());
+    values.extent = b.toIndex(next());
+    values.halo = distributedHalo;
+  }
   values.params["dt"] = next();
   values.params["max_steps"] = b.i64(maxSteps);
-  values.range = b.toIndex(range);
   if (exactOf) {
     kernel.time = next();
     // The exact kernel's output is addressed like a snapshot.
@@ -223,6 +239,20 @@ LogicalResult SimulationLowering::endKernel(Kernel &kernel,
   auto kernelRef = SymbolRefAttr::get(
       SymbolTable::getSymbolName(kernels),
       {FlatSymbolRefAttr::get(SymbolTable::getSymbolName(kernel.func))});
+  // Distributed plans: a launch that writes a component's buffers sends
+  // the ghost items of those that some read reaches at other items.
+  SmallVector<Attribute> exchange = std::move(pendingExchange);
+  SmallVector<Attribute> exchangeSnapshots =
+      std::move(pendingExchangeSnapshots);
+  SmallVector<int64_t> reduce = std::move(pendingReduce);
+  pendingExchange.clear();
+  pendingExchangeSnapshots.clear();
+  pendingReduce.clear();
+  if (distributed && component)
+    for (FlatSymbolRefAttr write :
+         component.getWrites().getAsRange<FlatSymbolRefAttr>())
+      if (simulation.lookupBuffer(write).getHaloAttr())
+        exchange.push_back(write);
   simplan::LaunchOp::create(
       launches, b.loc, kernelRef,
       simplan::LaunchShapeAttr::get(b.getContext(), shape),
@@ -230,7 +260,12 @@ LogicalResult SimulationLowering::endKernel(Kernel &kernel,
       component ? FlatSymbolRefAttr::get(component.getSymNameAttr())
                 : FlatSymbolRefAttr(),
       launches.getI64IntegerAttr(kernel.sharedPerThread),
-      launches.getI64IntegerAttr(kernel.sharedFixed));
+      launches.getI64IntegerAttr(kernel.sharedFixed),
+      reduce.empty() ? DenseI64ArrayAttr()
+                     : launches.getDenseI64ArrayAttr(reduce),
+      exchange.empty() ? ArrayAttr() : launches.getArrayAttr(exchange),
+      exchangeSnapshots.empty() ? ArrayAttr()
+                                : launches.getArrayAttr(exchangeSnapshots));
   return success();
 }
 
@@ -246,10 +281,10 @@ void SimulationLowering::readClock(Kernel &kernel, Value &begin, Value &size,
 void SimulationLowering::setHalves(Kernel &kernel, Value parity,
                                    Value localParity) {
   KernelValues &values = kernel.values;
-  Value range = values.range;
-  values.sourceBase = b.mul(b.toIndex(parity), range);
-  values.targetBase = b.mul(b.toIndex(b.xorOne(parity)), range);
-  values.localBase = b.mul(b.toIndex(localParity), range);
+  Value extent = values.extent;
+  values.sourceBase = b.mul(b.toIndex(parity), extent);
+  values.targetBase = b.mul(b.toIndex(b.xorOne(parity)), extent);
+  values.localBase = b.mul(b.toIndex(localParity), extent);
 }
 
 void SimulationLowering::forEachItem(Kernel &kernel,
@@ -319,7 +354,8 @@ LogicalResult SimulationLowering::run() {
       top.getI64IntegerAttr(simulation.getRange()),
       cast<TypedAttr>(simulation.getDt()), top.getI64IntegerAttr(maxSteps),
       top.getI64IntegerAttr(stepCap), top.getI64IntegerAttr(groupSize),
-      top.getI64IntegerAttr(clockSlots), top.getI64IntegerAttr(histogramSlot));
+      top.getI64IntegerAttr(clockSlots), top.getI64IntegerAttr(histogramSlot),
+      distributed ? top.getI64IntegerAttr(distributedHalo) : IntegerAttr());
   Block *body = &plan.getBody().emplaceBlock();
   auto unitIf = [&](bool set) { return set ? top.getUnitAttr() : UnitAttr(); };
   OpBuilder planBuilder = OpBuilder::atBlockEnd(body);
@@ -340,7 +376,7 @@ LogicalResult SimulationLowering::run() {
         planBuilder.getI64IntegerAttr(getElementStride(buffer)),
         unitIf(buffer.getSnapshot()),
         unitIf(observed.contains(buffer.getSymNameAttr())),
-        unitIf(!buffer.getExact().empty()));
+        unitIf(!buffer.getExact().empty()), buffer.getHaloAttr());
   }
   for (ComponentOp component : order) {
     auto subClock = subClockSlots.find(component);

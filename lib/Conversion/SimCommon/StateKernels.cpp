@@ -24,9 +24,11 @@ LogicalResult SimulationLowering::emitInit(BufferOp buffer,
       KernelValues values = kernel.values;
       values.item = lane.item;
       Value value = inline_(buffer.getInit(), {lane.item}, values).front();
-      b.store(value, memory, lane.item);
+      b.store(value, memory, element(kernel, lane.item));
     });
   });
+  if (distributed && buffer.getHaloAttr())
+    pendingExchange.push_back(FlatSymbolRefAttr::get(buffer.getSymNameAttr()));
   return endKernel(kernel, simplan::LaunchShape::items, launches);
 }
 
@@ -43,7 +45,7 @@ LogicalResult SimulationLowering::emitExact(BufferOp buffer,
       values.item = lane.item;
       Value value =
           inline_(buffer.getExact(), {lane.item, kernel.time}, values).front();
-      b.store(value, out, lane.item);
+      b.store(value, out, element(kernel, lane.item));
     });
   });
   return endKernel(kernel, simplan::LaunchShape::items, launches);
@@ -58,7 +60,7 @@ LogicalResult SimulationLowering::emitTotal(TotalOp total,
       beginKernel(getKernelName(kernels, "total", total.getSymName()),
                   /*exactOf=*/nullptr, total);
   Value parity = b.load(kernel.clock, b.index(kSlotParity));
-  kernel.values.sourceBase = b.mul(b.toIndex(parity), kernel.values.range);
+  kernel.values.sourceBase = b.mul(b.toIndex(parity), kernel.values.extent);
   forEachItem(kernel, [&](const Lane &lane) {
     b.ifThen(lane.active, [&] {
       KernelValues values = kernel.values;
@@ -66,7 +68,7 @@ LogicalResult SimulationLowering::emitTotal(TotalOp total,
       Value value = inline_(total.getBody(), {lane.item}, values).front();
       if (!value.getType().isF64())
         value = arith::ExtFOp::create(b, b.loc, b.getF64Type(), value);
-      b.store(value, kernel.totalOut, lane.item);
+      b.store(value, kernel.totalOut, element(kernel, lane.item));
     });
   });
   return endKernel(kernel, simplan::LaunchShape::items, launches);

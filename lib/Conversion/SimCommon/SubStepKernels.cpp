@@ -59,7 +59,8 @@ LogicalResult SimulationLowering::emitSubSteps(ComponentOp component,
             target.laneStore(
                 b,
                 b.load(kernel.values.buffers.lookup(name.getAttr()),
-                       b.add(kernel.values.sourceBase, lane.item)),
+                       b.add(kernel.values.sourceBase,
+                             element(kernel, lane.item))),
                 var, lane);
         });
       });
@@ -120,9 +121,10 @@ LogicalResult SimulationLowering::emitSubSteps(ComponentOp component,
       target.forEachLane(b, kernel, base, [&](const Lane &lane) {
         b.ifThen(lane.active, [&] {
           for (auto [name, var] : llvm::zip_equal(writes, state))
-            b.store(target.laneLoad(b, var, lane),
-                    kernel.values.buffers.lookup(name.getAttr()),
-                    b.add(kernel.values.targetBase, lane.item));
+            b.store(
+                target.laneLoad(b, var, lane),
+                kernel.values.buffers.lookup(name.getAttr()),
+                b.add(kernel.values.targetBase, element(kernel, lane.item)));
         });
       });
     });

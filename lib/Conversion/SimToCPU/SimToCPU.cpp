@@ -66,7 +66,11 @@ public:
     auto loop = scf::ForOp::create(b, b.loc, first, end, b.index(1));
     OpBuilder::InsertionGuard guard(b);
     b.setInsertionPoint(loop.getBody()->getTerminator());
-    body(b.mul(loop.getInductionVar(), groupSize(kernel)));
+    Value base = b.mul(loop.getInductionVar(), groupSize(kernel));
+    // A distributed plan's groups are counted from its rank's first item.
+    if (kernel.values.first)
+      base = b.add(base, kernel.values.first);
+    body(base);
   }
 
   void forEachLane(KernelBuilder &b, Kernel &kernel, Value base,

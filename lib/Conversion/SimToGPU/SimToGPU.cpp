@@ -67,9 +67,16 @@ public:
     // `base < the padded range` without the 64-bit division that rounds the
     // range up (a subroutine call in SASS, whose registers count against
     // the whole kernel).
-    auto loop =
-        scf::ForOp::create(b, b.loc, b.mul(group, groupSize),
-                           kernel.values.range, b.mul(groups, groupSize));
+    Value begin = b.mul(group, groupSize), end = kernel.values.range;
+    Value stride = b.mul(groups, groupSize);
+    // A distributed plan's grid is its rank's block (whole groups from its
+    // first item, the last rank's last one padded): one round, which the
+    // CPU kernels of the same plan also take without the extent.
+    if (Value first = kernel.values.first) {
+      begin = b.add(begin, first);
+      end = b.min(end, b.add(first, stride));
+    }
+    auto loop = scf::ForOp::create(b, b.loc, begin, end, stride);
     OpBuilder::InsertionGuard guard(b);
     b.setInsertionPoint(loop.getBody()->getTerminator());
     body(loop.getInductionVar());

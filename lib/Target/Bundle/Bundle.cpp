@@ -160,6 +160,10 @@ fb::ArgKind getArgKind(simplan::ArgKind kind) {
     return fb::ArgKind::Time;
   case simplan::ArgKind::total:
     return fb::ArgKind::Total;
+  case simplan::ArgKind::first:
+    return fb::ArgKind::First;
+  case simplan::ArgKind::extent:
+    return fb::ArgKind::Extent;
   }
   llvm_unreachable("unknown launch argument kind");
 }
@@ -355,6 +359,10 @@ FailureOr<std::unique_ptr<fb::PlanT>> PlanReader::read(simplan::PlanOp op) {
   plan->step_cap = op.getStepCap();
   plan->clock_slots = op.getClockSlots();
   plan->histogram = op.getHistogramSlot();
+  if (std::optional<int64_t> halo = op.getDistributedHalo()) {
+    plan->distributed = std::make_unique<fb::DistributionT>();
+    plan->distributed->halo = uint32_t(*halo);
+  }
 
   for (Operation &child : op.getBlock()) {
     if (isa<simplan::ParamOp>(child))
@@ -368,6 +376,11 @@ FailureOr<std::unique_ptr<fb::PlanT>> PlanReader::read(simplan::PlanOp op) {
       record->buffer = found->second;
       record->stride = buffer.getStride();
       record->snapshot = buffer.getSnapshot();
+      if (std::optional<ArrayRef<int64_t>> halo = buffer.getHalo();
+          halo && halo->size() == 2) {
+        record->halo_below = uint32_t((*halo)[0]);
+        record->halo_above = uint32_t((*halo)[1]);
+      }
       plan->buffers.push_back(std::move(record));
     } else if (auto component = dyn_cast<simplan::ComponentOp>(child)) {
       components[component.getSymName()] = plan->components.size();
@@ -462,6 +475,24 @@ PlanReader::readLaunch(simplan::LaunchOp launch) {
     }
     record->args.emplace_back(getArgKind(arg.getKind()), index);
   }
+  if (std::optional<ArrayRef<int64_t>> slots = launch.getReduceMin())
+    for (int64_t slot : *slots)
+      record->reduce_min.push_back(uint32_t(slot));
+  auto exchange = [&](ArrayAttr names, bool snapshot) -> LogicalResult {
+    if (!names)
+      return success();
+    for (auto name : names.getAsRange<FlatSymbolRefAttr>()) {
+      auto found = buffers.find(name.getValue());
+      if (found == buffers.end())
+        return launch.emitOpError()
+               << "exchanges " << name << ", which is not a buffer of the plan";
+      record->exchange.emplace_back(found->second, snapshot);
+    }
+    return success();
+  };
+  if (failed(exchange(launch.getExchangeAttr(), false)) ||
+      failed(exchange(launch.getExchangeSnapshotsAttr(), true)))
+    return failure();
   return record;
 }
 
@@ -725,6 +756,7 @@ public:
       FrontEndOptions frontEndOptions;
       frontEndOptions.strategy = strategy;
       frontEndOptions.groupSize = options.groupSize;
+      frontEndOptions.distributed = options.distributed;
       buildFrontEndPipeline(pm, frontEndOptions);
       if (failed(runPipeline(pm, *frontEnd)))
         return failure();

@@ -54,6 +54,7 @@ void mlir::sim::registerToBundleTranslation() {
         options.groupSize = flags.groupSize;
         options.target = flags.getGPUTarget();
         options.flushSubnormals = flags.ftz;
+        options.distributed = flags.distributed;
         if (!flags.cpuIsas.empty())
           options.cpuIsas.assign(flags.cpuIsas.begin(), flags.cpuIsas.end());
         return writeBundle(*module, options, os);

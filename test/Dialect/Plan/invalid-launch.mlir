@@ -247,3 +247,61 @@ simplan.plan @p strategy("simple") kernels(@k) range(4) dt(1.0e-2 : f32) max_ste
     simplan.launch @k::@init everywhere [#simplan.arg<clock>]
   }
 }
+
+// -----
+
+// Communication belongs to distributed plans only.
+module attributes {gpu.container_module} {
+  simplan.plan @p strategy("simple") kernels(@k) range(4) dt(1.0e-2 : f32) max_steps(1) step_cap(1) group_size(32) clock_slots(10) histogram(8) {
+    simplan.phase init {
+      // expected-error @+1 {{'simplan.launch' op passes #simplan.arg<first>, which only a distributed plan has}}
+      simplan.launch @k::@init items [#simplan.arg<clock>, #simplan.arg<first>]
+    }
+  }
+}
+
+// -----
+
+module attributes {gpu.container_module} {
+  simplan.plan @p strategy("simple") kernels(@k) range(4) dt(1.0e-2 : f32) max_steps(1) step_cap(1) group_size(32) clock_slots(10) histogram(8) {
+    simplan.phase step {
+      // expected-error @+1 {{'simplan.launch' op communicates between ranks in a plan that is not distributed}}
+      simplan.launch @k::@advance single [#simplan.arg<clock>] reduce_min [4]
+    }
+  }
+}
+
+// -----
+
+module attributes {gpu.container_module} {
+  simplan.plan @p strategy("simple") kernels(@k) range(4) dt(1.0e-2 : f32) max_steps(1) step_cap(1) group_size(32) clock_slots(10) histogram(8) distributed halo(1) {
+    simplan.phase step {
+      // expected-error @+1 {{'simplan.launch' op all-reduces clock slot 10, but the clock has 10 slots}}
+      simplan.launch @k::@advance single [#simplan.arg<clock>] reduce_min [10]
+    }
+  }
+}
+
+// -----
+
+module attributes {gpu.container_module} {
+  simplan.plan @p strategy("simple") kernels(@k) range(4) dt(1.0e-2 : f32) max_steps(1) step_cap(1) group_size(32) clock_slots(10) histogram(8) distributed halo(1) {
+    simplan.buffer @X : f32 stride(4) halo [1, 1]
+    simplan.phase init {
+      // expected-error @+1 {{'simplan.launch' op exchanges @Y, which is not a buffer of the plan}}
+      simplan.launch @k::@init_X items [#simplan.arg<buffer @X>, #simplan.arg<first>] exchange [@Y]
+    }
+  }
+}
+
+// -----
+
+module attributes {gpu.container_module} {
+  simplan.plan @p strategy("simple") kernels(@k) range(4) dt(1.0e-2 : f32) max_steps(1) step_cap(1) group_size(32) clock_slots(10) histogram(8) distributed halo(1) {
+    simplan.buffer @X : f32 stride(4) halo [1, 1]
+    simplan.phase init {
+      // expected-error @+1 {{'simplan.launch' op exchanges the snapshot of @X, which has none}}
+      simplan.launch @k::@init_X items [#simplan.arg<buffer @X>, #simplan.arg<first>] exchange_snapshots [@X]
+    }
+  }
+}

@@ -31,6 +31,14 @@ struct CacheView {
 struct KernelValues {
   /// The number of items (index).
   Value range;
+  /// Elements of one half of a buffer (index): `range` on one process; in a
+  /// distributed plan the rank's block plus `2 * halo` ghost items.
+  Value extent;
+  /// Distributed plans: the first item of the rank's block (index) and the
+  /// ghost items on each side of it; item `i` is element `i - first +
+  /// halo`. Null on one process, where item `i` is element `i`.
+  Value first;
+  int64_t halo = 0;
   /// Parameter values by name, including the builtins `range` (i64), `dt`
   /// and `max_steps` (i64). `sim.get_param` converts to the type it asks for.
   llvm::StringMap<Value> params;
@@ -63,6 +71,12 @@ struct KernelValues {
 /// false when the read must return zero (else it is left null).
 Value applyBoundary(OpBuilder &builder, Location loc, BufferOp buffer,
                     Value index, Value range, Value &inBounds);
+
+/// The element of item `item` in a half, a snapshot, an exact or a total
+/// array: `item` itself on one process, `item - first + halo` in a
+/// distributed plan.
+Value getElementIndex(OpBuilder &builder, Location loc,
+                      const KernelValues &values, Value item);
 
 /// Returns the zero element of `type` (a float or a vector of floats).
 Value buildZeroElement(OpBuilder &builder, Location loc, Type type);

@@ -78,6 +78,10 @@ private:
   LogicalResult endKernel(Kernel &kernel, simplan::LaunchShape shape,
                           OpBuilder &launches, ComponentOp component = nullptr);
   void readClock(Kernel &kernel, Value &begin, Value &size, Value &parity);
+  /// The element of `item` in the kernel's halves and arrays.
+  Value element(Kernel &kernel, Value item) {
+    return getElementIndex(b, b.loc, kernel.values, item);
+  }
   void setHalves(Kernel &kernel, Value parity, Value localParity);
   /// Runs `body` for every lane of every group the invocation handles.
   void forEachItem(Kernel &kernel, function_ref<void(const Lane &)> body);
@@ -129,6 +133,17 @@ private:
   KernelBuilder b;
   Strategy strategy;
   int64_t maxSteps, stepCap;
+  /// A plan for many processes (the simulation's `distributed_halo`): its
+  /// kernels address a rank's block with `distributedHalo` ghost items on
+  /// each side.
+  bool distributed = false;
+  int64_t distributedHalo = 0;
+  /// Distributed plans: what the next endKernel records on its launch
+  /// besides the exchange of its component's buffers (clock slots to
+  /// all-reduce before it, buffers and snapshots whose ghosts travel after
+  /// it).
+  SmallVector<int64_t> pendingReduce;
+  SmallVector<Attribute> pendingExchange, pendingExchangeSnapshots;
 
   Operation *kernels;
   simplan::PlanOp plan;

@@ -80,7 +80,9 @@ static_assert(sameArgKind(ArgKind::clock, ::sim::bundle::ArgKind::Clock) &&
                   sameArgKind(ArgKind::range, ::sim::bundle::ArgKind::Range) &&
                   sameArgKind(ArgKind::dt, ::sim::bundle::ArgKind::Dt) &&
                   sameArgKind(ArgKind::time, ::sim::bundle::ArgKind::Time) &&
-                  sameArgKind(ArgKind::total, ::sim::bundle::ArgKind::Total),
+                  sameArgKind(ArgKind::total, ::sim::bundle::ArgKind::Total) &&
+                  sameArgKind(ArgKind::first, ::sim::bundle::ArgKind::First) &&
+                  sameArgKind(ArgKind::extent, ::sim::bundle::ArgKind::Extent),
               "simplan's ArgKind and the bundle schema's differ");
 
 /// Slots of a sub-step clock (docs/Plan.md, "The clock").
@@ -244,8 +246,48 @@ LogicalResult ComponentOp::verify() {
   return success();
 }
 
+/// What only a distributed plan has (its `first` and `extent` arguments,
+/// all-reduces and exchanges), and that those name what the plan has.
+LogicalResult
+LaunchOp::verifyCommunication(PlanOp plan, SymbolTableCollection &symbolTable) {
+  bool distributed = plan.getDistributedHalo().has_value();
+  for (auto arg : getArgs().getAsRange<ArgAttr>())
+    if ((arg.getKind() == ArgKind::first || arg.getKind() == ArgKind::extent) &&
+        !distributed)
+      return emitOpError() << "passes " << arg
+                           << ", which only a distributed plan has";
+  if (!distributed &&
+      (getReduceMin() || getExchange() || getExchangeSnapshots()))
+    return emitOpError() << "communicates between ranks in a plan that is not "
+                            "distributed";
+  if (std::optional<ArrayRef<int64_t>> slots = getReduceMin())
+    for (int64_t slot : *slots)
+      if (slot < 0 || slot >= int64_t(plan.getClockSlots()))
+        return emitOpError()
+               << "all-reduces clock slot " << slot << ", but the clock has "
+               << plan.getClockSlots() << " slots";
+  for (auto [names, snapshot] : {std::pair(getExchangeAttr(), false),
+                                 std::pair(getExchangeSnapshotsAttr(), true)}) {
+    if (!names)
+      continue;
+    for (auto name : names.getAsRange<FlatSymbolRefAttr>()) {
+      auto buffer =
+          dyn_cast_or_null<BufferOp>(symbolTable.lookupSymbolIn(plan, name));
+      if (!buffer)
+        return emitOpError()
+               << "exchanges " << name << ", which is not a buffer of the plan";
+      if (snapshot && !buffer.getSnapshot())
+        return emitOpError()
+               << "exchanges the snapshot of " << name << ", which has none";
+    }
+  }
+  return success();
+}
+
 LogicalResult LaunchOp::verifySymbolUses(SymbolTableCollection &symbolTable) {
   auto plan = (*this)->getParentOfType<PlanOp>();
+  if (failed(verifyCommunication(plan, symbolTable)))
+    return failure();
   Operation *container = symbolTable.lookupSymbolIn(
       plan->getParentOp(), getKernel().getRootReference());
   if (!container)

@@ -52,7 +52,8 @@ def Plan_ArgKind : I32Enum<"ArgKind", "what a launch argument is", [
     I32EnumCase<"clock", 0>, I32EnumCase<"buffer", 1>,
     I32EnumCase<"snapshot", 2>, I32EnumCase<"exact", 3>,
     I32EnumCase<"param", 4>, I32EnumCase<"range", 5>, I32EnumCase<"dt", 6>,
-    I32EnumCase<"time", 7>, I32EnumCase<"total", 8>]> {
+    I32EnumCase<"time", 7>, I32EnumCase<"total", 8>,
+    I32EnumCase<"first", 9>, I32EnumCase<"extent", 10>]> {
   let cppNamespace = "::mlir::simplan";
   let description = [{
     `clock`: the clock (`memref<?xi64>`, `clock_slots` entries). `buffer @B`:
@@ -64,6 +65,10 @@ def Plan_ArgKind : I32Enum<"ArgKind", "what a launch argument is", [
     type). `time`: the time of an exact solution, in time units (`f64`).
     `total @T`: the per-item values of total T (`memref<?xf64>`, `range`
     elements). `max_steps` is no argument: it is compiled into the kernels.
+    Distributed plans only: `first`, the first item of the rank's block
+    (`i64`), and `extent`, the elements of one half of a buffer on the rank
+    (its block's items plus twice the plan's halo, `i64`); every `range`
+    above is then `extent`, and item `i` is element `i - first + halo`.
     The cases and their numbers are the bundle schema's `ArgKind`
     (runtime/schema/bundle.fbs).
   }];
@@ -124,7 +129,10 @@ def Plan_PlanOp : Plan_Op<"plan", [
     entries of the clock; docs/Plan.md gives its layout (`T`, `m`, the
     parity, the end of the run, the pending estimate, the big steps taken,
     evaluation counters, sub-step clocks and the histogram, which starts at
-    slot `histogram`).
+    slot `histogram`). `distributed halo(H)` marks a plan for many
+    processes (docs/Distributed.md): each rank holds a block of whole
+    groups plus `H` ghost items on either side, and its kernels take the
+    `first` and `extent` arguments.
 
     ```mlir
     simplan.plan @rod strategy("hip") kernels(@rod_kernels) range(1024)
@@ -146,14 +154,17 @@ def Plan_PlanOp : Plan_Op<"plan", [
                        TypedAttrInterface:$dt, I64Attr:$max_steps,
                        I64Attr:$step_cap, I64Attr:$group_size,
                        I64Attr:$clock_slots,
-                       I64Attr:$histogram_slot);
+                       I64Attr:$histogram_slot,
+                       OptionalAttr<I64Attr>:$distributed_halo);
   let regions = (region SizedRegion<1>:$body);
   let assemblyFormat = [{
     $sym_name `strategy` `(` $strategy `)` `kernels` `(` $kernels `)`
     `range` `(` $range `)` `dt` `(` $dt `)` `max_steps` `(` $max_steps `)`
     `step_cap` `(` $step_cap `)` `group_size` `(` $group_size `)`
     `clock_slots` `(` $clock_slots `)`
-    `histogram` `(` $histogram_slot `)` attr-dict-with-keyword $body
+    `histogram` `(` $histogram_slot `)`
+    (`distributed` `halo` `(` $distributed_halo^ `)`)? attr-dict-with-keyword
+    $body
   }];
   let hasRegionVerifier = 1;
   let extraClassDeclaration = [{
@@ -191,11 +202,11 @@ def Plan_BufferOp : Plan_Op<"buffer", [Symbol, HasParent<"PlanOp">]> {
   }];
   let arguments = (ins SymbolNameAttr:$sym_name, TypeAttr:$element_type,
                        I64Attr:$stride, UnitAttr:$snapshot, UnitAttr:$observed,
-                       UnitAttr:$exact);
+                       UnitAttr:$exact, OptionalAttr<DenseI64ArrayAttr>:$halo);
   let assemblyFormat = [{
     $sym_name `:` $element_type `stride` `(` $stride `)`
     (`snapshot` $snapshot^)? (`observed` $observed^)? (`exact` $exact^)?
-    attr-dict
+    (`halo` $halo^)? attr-dict
   }];
 }
 
@@ -305,17 +316,41 @@ def Plan_LaunchOp : Plan_Op<"launch", [
     ```mlir
     simplan.launch @k::@substep_C1 items
         [#simplan.arg<clock>, #simplan.arg<buffer @B0>, #simplan.arg<range>]
-        for @C1 shared(16, 128)
+            for @C1 shared(16, 128)
+    ```
+
+    In a distributed plan (docs/Distributed.md) a launch also says what the
+    ranks communicate around it: `reduce_min` lists clock slots that every
+    rank replaces by their minimum over all ranks before the launch (the
+    estimate of the next big step or sub-step, before the launch that
+    consumes it); `exchange` lists buffers whose ghost items (both halves)
+    travel after the launch, and `exchange_snapshots` buffers whose
+    snapshot's ghost items do: the buffers the launch writes that some read
+    reaches at other items.
+
+    ```mlir
+    simplan.launch @k::@advance single [#simplan.arg<clock>] reduce_min [4]
+    simplan.launch @k::@step_C0 items [...] for @C0 exchange [@B0]
     ```
   }];
   let arguments = (ins SymbolRefAttr:$kernel, Plan_LaunchShapeAttr:$shape,
                        TypedArrayAttrBase<Plan_ArgAttr, "launch arguments">:$args,
                        OptionalAttr<FlatSymbolRefAttr>:$component,
                        DefaultValuedAttr<I64Attr, "0">:$shared_per_thread,
-                       DefaultValuedAttr<I64Attr, "0">:$shared_fixed);
+                       DefaultValuedAttr<I64Attr, "0">:$shared_fixed,
+                       OptionalAttr<DenseI64ArrayAttr>:$reduce_min,
+                       OptionalAttr<FlatSymbolRefArrayAttr>:$exchange,
+                       OptionalAttr<FlatSymbolRefArrayAttr>:$exchange_snapshots);
   let assemblyFormat = [{
     $kernel custom<EnumKeyword>($shape) $args (`for` $component^)?
-    (`shared` `(` $shared_per_thread^ `,` $shared_fixed `)`)? attr-dict
+    (`shared` `(` $shared_per_thread^ `,` $shared_fixed `)`)?
+    (`reduce_min` $reduce_min^)? (`exchange` $exchange^)?
+    (`exchange_snapshots` $exchange_snapshots^)? attr-dict
+  }];
+  let extraClassDeclaration = [{
+    ::mlir::LogicalResult
+    verifyCommunication(PlanOp plan,
+                        ::mlir::SymbolTableCollection &symbolTable);
   }];
 }
 

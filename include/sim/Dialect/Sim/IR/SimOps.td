@@ -70,12 +70,19 @@ def Sim_SimulationOp : Sim_Op<"simulation", [
     strategy. So is `step_cap`, the largest big step the strategy takes (1
     under `simple`, `max_steps` otherwise), which the lowering and the
     runtime read.
+
+    `distributed_halo` is recorded by `--sim-plan-halos` for a scene
+    compiled for many processes (docs/Distributed.md): the most items any
+    read reaches below or above its item, the ghost items each rank keeps on
+    either side of its block. The lowering then addresses a rank's block
+    and takes reads of other items from the ghosts.
   }];
 
   let arguments = (ins SymbolNameAttr:$sym_name, I64Attr:$range,
                        Sim_TimeStepAttr:$dt, I32Attr:$max_steps,
                        OptionalAttr<Sim_StrategyAttr>:$strategy,
-                       OptionalAttr<I32Attr>:$step_cap);
+                       OptionalAttr<I32Attr>:$step_cap,
+                       OptionalAttr<I64Attr>:$distributed_halo);
   let regions = (region SizedRegion<1>:$body);
   let assemblyFormat = [{
     $sym_name `range` `(` $range `)` `dt` `(` $dt `)`
@@ -227,6 +234,9 @@ def Sim_BufferOp : Sim_Op<"buffer", [
       see initial states.
     - `snapshot` (set by `--sim-plan-memory`): the plan keeps a copy of the
       value at `T` for later interpolating readers.
+    - `halo` (set by `--sim-plan-halos`, distributed scenes only): the
+      items below and above an item that reads of the buffer reach, as
+      `array<i64: below, above>`; the ghost items that travel between ranks.
 
     ```mlir
     sim.buffer @X : f64 interp(#sim.hermite<@V>) boundary(wrap) init {
@@ -245,7 +255,8 @@ def Sim_BufferOp : Sim_Op<"buffer", [
                        OptionalAttr<Sim_InterpolationAttrInterface>:$interp,
                        DefaultValuedAttr<Sim_BoundaryAttr,
                                          "::mlir::sim::Boundary::clamp">:$boundary,
-                       UnitAttr:$snapshot);
+                       UnitAttr:$snapshot,
+                       OptionalAttr<DenseI64ArrayAttr>:$halo);
   let regions = (region SizedRegion<1>:$init, MaxSizedRegion<1>:$exact);
   let assemblyFormat = [{
     $sym_name `:` $element_type `` custom<InterpClause>($interp)

@@ -149,6 +149,26 @@ def SimPrune : Pass<"sim-prune", "::mlir::sim::SimulationOp"> {
   let dependentDialects = [];
 }
 
+def SimPlanHalos : Pass<"sim-plan-halos", "::mlir::sim::SimulationOp"> {
+  let summary = "Record the ghost items a distributed run exchanges";
+  let description = [{
+    For a scene compiled for many processes (`sim-translate
+    --sim-distributed`, docs/Distributed.md): every rank holds a block of
+    the range, and a read of another item must find it in the rank's ghost
+    items. From the recorded read windows of the `num_steps`, `evaluate`
+    and total bodies, records on every buffer read at other items
+    `halo = array<i64: below, above>` (the largest offsets below and above
+    the read item; an interpolated read reaches the buffers its
+    interpolation reads, a Hermite derivative too), and on the simulation
+    `distributed_halo`, the largest of them. Reads in `init` and `exact`
+    bodies need no ghosts: the kernels recompute initial states.
+
+    A gather (an index that is not the item plus a bounded offset) cannot be
+    served from ghosts: it is an error that names the read.
+  }];
+  let dependentDialects = [];
+}
+
 def SimPlanMemory : Pass<"sim-plan-memory", "::mlir::sim::SimulationOp"> {
   let summary = "Plan snapshots and parity copies for a strategy";
   let description = [{

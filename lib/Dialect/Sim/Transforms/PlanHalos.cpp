@@ -1,0 +1,100 @@
+//===- PlanHalos.cpp - the ghost items of a distributed run ---------------===//
+//
+// A distributed run gives every rank a block of the range (docs/
+// Distributed.md). Its kernels read other items only through windows, so
+// the items a rank reads outside its block are known before it runs: the
+// recorded windows of every read, joined per buffer. This pass records
+// them, and refuses what a block cannot serve: a gather, whose item may
+// lie on any rank.
+//
+//===----------------------------------------------------------------------===//
+
+#include "sim/Analysis/DependencyAnalysis.h"
+#include "sim/Dialect/Sim/IR/SimOps.h"
+#include "sim/Dialect/Sim/Transforms/Passes.h"
+
+#include "llvm/ADT/MapVector.h"
+
+namespace mlir::sim {
+#define GEN_PASS_DEF_SIMPLANHALOS
+#include "sim/Dialect/Sim/Transforms/Passes.h.inc"
+} // namespace mlir::sim
+
+using namespace mlir;
+using namespace mlir::sim;
+
+namespace {
+
+struct PlanHalosPass : public sim::impl::SimPlanHalosBase<PlanHalosPass> {
+  using SimPlanHalosBase::SimPlanHalosBase;
+
+  void runOnOperation() override {
+    SimulationOp simulation = getOperation();
+    if (failed(checkBeforeInterpolation(simulation, getArgument(),
+                                        "its halos are")))
+      return signalPassFailure();
+    const DependencyAnalysis &analysis = getAnalysis<DependencyAnalysis>();
+
+    // Per buffer: the items below and above the read item it is read at.
+    llvm::MapVector<Operation *, std::pair<int64_t, int64_t>> halos;
+    bool failedRead = false;
+    auto record =
+        [&](ReadOp read, const AccessPattern &pattern, StringRef body) {
+          BufferOp buffer = simulation.lookupBuffer(read.getBufferAttr());
+          if (!buffer)
+            return;
+          if (pattern.isGather()) {
+            read.emitError()
+                << "reads " << read.getBufferAttr() << " in " << body
+                << " through a gather, which a distributed run cannot serve: "
+                   "the item may lie on any rank; index it as the item plus a "
+                   "constant offset (a window), or compile without "
+                   "--sim-distributed";
+            failedRead = true;
+            return;
+          }
+          int64_t below = std::max<int64_t>(0, -pattern.getMinOffset());
+          int64_t above = std::max<int64_t>(0, pattern.getMaxOffset());
+          if (below == 0 && above == 0)
+            return;
+          // An interpolated read reads the auxiliary buffers of its
+          // interpolation (a Hermite derivative) at the same items.
+          SmallVector<BufferOp> reached = {buffer};
+          if (read.getRoleAttr() && read.getRole() == ReadRole::interpolate)
+            for (FlatSymbolRefAttr aux :
+                 buffer.getInterpolation().getAuxiliaryBuffers())
+              if (BufferOp auxBuffer = simulation.lookupBuffer(aux))
+                reached.push_back(auxBuffer);
+          for (BufferOp target : reached) {
+            auto [it, inserted] = halos.try_emplace(target, below, above);
+            if (!inserted)
+              it->second = {std::max(it->second.first, below),
+                            std::max(it->second.second, above)};
+          }
+        };
+    for (const ReadInfo &info : analysis.getReads()) {
+      // Init and exact bodies are recomputed at the item they read (the
+      // kernels never load an initial state), so they need no ghosts.
+      if (info.body != BodyKind::NumSteps && info.body != BodyKind::Evaluate)
+        continue;
+      record(info.read, info.pattern,
+             info.body == BodyKind::NumSteps ? "num_steps" : "evaluate");
+    }
+    for (auto [read, pattern] : analysis.getTotalReads())
+      record(read, pattern, "a total");
+    if (failedRead)
+      return signalPassFailure();
+
+    int64_t largest = 0;
+    Builder builder(&getContext());
+    for (auto [op, halo] : halos) {
+      cast<BufferOp>(op).setHaloAttr(
+          builder.getDenseI64ArrayAttr({halo.first, halo.second}));
+      largest = std::max({largest, halo.first, halo.second});
+    }
+    simulation.setDistributedHaloAttr(builder.getI64IntegerAttr(largest));
+    markAllAnalysesPreserved();
+  }
+};
+
+} // namespace
