@@ -11,6 +11,7 @@
 
 #include "Bundle.h"
 #include "Error.h"
+#include "Reference.h"
 #include "Session.h"
 #include "TestBundle.h"
 #include "TestUtil.h"
@@ -366,6 +367,19 @@ TEST(Distributed, Refusals) {
   } catch (const Error &error) {
     EXPECT_EQ(error.status, SIM_ERROR_DISTRIBUTED);
     EXPECT_STREQ(error.what(), "distributed runs use the CPU backend");
+  }
+  // The reference executor follows every item in one process.
+  sim_session_options reference = ringOptions(4, world.communicator(0));
+  reference.backend = SIM_BACKEND_REFERENCE;
+  try {
+    ReferenceSession session(decay, reference);
+    FAIL() << "no error";
+  } catch (const Error &error) {
+    EXPECT_EQ(error.status, SIM_ERROR_DISTRIBUTED);
+    EXPECT_STREQ(error.what(),
+                 "the reference executor runs on one process and takes no "
+                 "communicator; distributed runs use the plan executor on "
+                 "the CPU");
   }
 }
 
