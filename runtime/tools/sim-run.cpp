@@ -348,6 +348,10 @@ Sessions createSessions(const sim_bundle *bundle, const Options &options) {
     reference.backend = SIM_BACKEND_REFERENCE;
     reference.group_size = sim_session_group_size(measured);
     reference.cuda_graph = 0;
+    // The reference executor runs on one process: under --distributed every
+    // rank runs the whole scene on its own, and the comparison is with the
+    // distributed run's buffers, which every rank gathers.
+    reference.communicator = nullptr;
     sessions.check = std::make_unique<Session>(bundle, reference, options);
   }
   // A checkpoint that does not belong to the sessions (another bundle,

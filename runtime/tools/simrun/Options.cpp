@@ -512,9 +512,6 @@ Options parseOptions(int argc, const char *const *argv) {
         options.backend == SIM_BACKEND_REFERENCE)
       usageError(std::string("--distributed runs on the CPU backend, not ") +
                  sim_backend_name(options.backend));
-    if (options.check)
-      usageError("--check runs the reference executor, which does not run "
-                 "distributed; leave out --check or --distributed");
     options.backend = SIM_BACKEND_CPU;
   }
   for (const std::string &set : sets) {
