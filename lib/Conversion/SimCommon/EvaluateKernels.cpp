@@ -95,7 +95,7 @@ void SimulationLowering::fillCaches(Kernel &kernel, ComponentOp component,
 void SimulationLowering::evaluateItems(Kernel &kernel, ComponentOp component,
                                        ArrayRef<Cache> caches, Value time,
                                        Value steps, Value writeBase,
-                                       LaneVar count) {
+                                       Value writeParity, LaneVar count) {
   Value dt = kernel.values.params.lookup("dt");
   target.forEachGroup(b, kernel, [&](Value base) {
     if (!caches.empty()) {
@@ -112,8 +112,9 @@ void SimulationLowering::evaluateItems(Kernel &kernel, ComponentOp component,
         for (auto [name, value] : llvm::zip_equal(
                  component.getWrites().getAsRange<FlatSymbolRefAttr>(),
                  results))
-          b.store(value, values.buffers.lookup(name.getAttr()),
-                  b.add(writeBase, element(kernel, lane.item)));
+          b.store(
+              value, values.buffers.lookup(name.getAttr()),
+              at(kernel, name.getAttr(), writeBase, writeParity, lane.item));
       });
       countEvaluation(count, lane);
     });
@@ -137,7 +138,7 @@ LogicalResult SimulationLowering::emitEvaluate(ComponentOp component,
   SmallVector<Cache> caches = createCaches(kernel, component);
   b.ifThen(b.cmp(arith::CmpIPredicate::sgt, size, b.i64(0)), [&] {
     evaluateItems(kernel, component, caches, begin, steps,
-                  kernel.values.targetBase, count);
+                  kernel.values.targetBase, kernel.values.targetParity, count);
     target.reduceIntoClock(b, kernel, count, arith::AtomicRMWKind::addi,
                            evaluationSlots.lookup(component));
   });

@@ -64,14 +64,16 @@ LogicalResult SimulationLowering::emitRounds(ComponentOp component,
     b.ifThen(b.cmp(arith::CmpIPredicate::sgt, size, b.i64(0)), [&] {
       forEachItem(kernel, [&](const Lane &lane) {
         b.ifThen(lane.active, [&] {
-          Value at = element(kernel, lane.item);
-          Value value = b.load(kernel.values.buffers.lookup(write.getAttr()),
-                               b.add(kernel.values.sourceBase, at));
-          b.store(value, kernel.values.snapshots.lookup(write.getAttr()), at);
+          Value value =
+              b.load(kernel.values.buffers.lookup(write.getAttr()),
+                     at(kernel, write.getAttr(), kernel.values.sourceBase,
+                        kernel.values.sourceParity, lane.item));
+          b.store(value, kernel.values.snapshots.lookup(write.getAttr()),
+                  element(kernel, lane.item, write.getAttr()));
         });
       });
     });
-    if (distributed && buffer.getHaloAttr())
+    if (distributed && travels(buffer))
       pendingExchangeSnapshots.push_back(write);
     if (failed(endKernel(kernel, simplan::LaunchShape::items, launches)))
       return failure();
@@ -141,15 +143,15 @@ LogicalResult SimulationLowering::emitRounds(ComponentOp component,
     Value subCount = b.load(kernel.clock, b.index(sub + kSubCount));
     Value readParity = arith::XOrIOp::create(b, b.loc, parity, odd(subCount));
     setHalves(kernel, parity, readParity);
-    Value writeBase =
-        b.mul(b.toIndex(b.xorOne(readParity)), kernel.values.extent);
+    Value writeParity = b.xorOne(readParity);
+    Value writeBase = b.mul(b.toIndex(writeParity), kernel.values.extent);
     kernel.values.bigStepBegin = begin;
     kernel.values.bigStepSize = size;
     Value steps = b.truncate(subSize, b.getI32Type());
     SmallVector<Cache> caches = createCaches(kernel, component);
     b.ifThen(b.cmp(arith::CmpIPredicate::sgt, subSize, b.i64(0)), [&] {
       evaluateItems(kernel, component, caches, subBegin, steps, writeBase,
-                    count);
+                    writeParity, count);
       target.reduceIntoClock(b, kernel, count, arith::AtomicRMWKind::addi,
                              evaluationSlots.lookup(component));
     });
@@ -175,9 +177,12 @@ LogicalResult SimulationLowering::emitRounds(ComponentOp component,
       b.ifThen(lane.active, [&] {
         for (FlatSymbolRefAttr write : writes) {
           Value memory = kernel.values.buffers.lookup(write.getAttr());
-          Value at = element(kernel, lane.item);
-          b.store(b.load(memory, b.add(kernel.values.sourceBase, at)), memory,
-                  b.add(kernel.values.targetBase, at));
+          b.store(b.load(memory,
+                         at(kernel, write.getAttr(), kernel.values.sourceBase,
+                            kernel.values.sourceParity, lane.item)),
+                  memory,
+                  at(kernel, write.getAttr(), kernel.values.targetBase,
+                     kernel.values.targetParity, lane.item));
         }
       });
     });

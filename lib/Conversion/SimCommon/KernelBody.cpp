@@ -56,8 +56,9 @@ Value mlir::sim::applyBoundary(OpBuilder &builder, Location loc,
 }
 
 Value mlir::sim::getElementIndex(OpBuilder &builder, Location loc,
-                                 const KernelValues &values, Value item) {
-  if (!values.first)
+                                 const KernelValues &values, Value item,
+                                 StringAttr buffer) {
+  if (!values.first || (buffer && values.replicated.contains(buffer)))
     return item;
   Value shifted = arith::SubIOp::create(builder, loc, item, values.first);
   if (values.halo == 0)
@@ -65,6 +66,16 @@ Value mlir::sim::getElementIndex(OpBuilder &builder, Location loc,
   return arith::AddIOp::create(
       builder, loc, shifted,
       arith::ConstantIndexOp::create(builder, loc, values.halo));
+}
+
+Value mlir::sim::getHalfOffset(OpBuilder &builder, Location loc,
+                               const KernelValues &values, StringAttr buffer,
+                               Value blockBase, Value parity) {
+  if (!values.replicated.contains(buffer))
+    return blockBase;
+  Value index =
+      arith::IndexCastOp::create(builder, loc, builder.getIndexType(), parity);
+  return arith::MulIOp::create(builder, loc, index, values.range);
 }
 
 /// Converts a parameter value to the type a `sim.get_param` asks for (the
@@ -213,18 +224,23 @@ private:
       return lowerCacheLoad(builder, load);
 
     Value memory, base;
+    auto halfOf = [&](Value blockBase, Value parity) {
+      return blockBase
+                 ? getHalfOffset(builder, loc, values, name, blockBase, parity)
+                 : Value();
+    };
     switch (version) {
     case Version::source:
       memory = values.buffers.lookup(name);
-      base = values.sourceBase;
+      base = halfOf(values.sourceBase, values.sourceParity);
       break;
     case Version::target:
       memory = values.buffers.lookup(name);
-      base = values.targetBase;
+      base = halfOf(values.targetBase, values.targetParity);
       break;
     case Version::local:
       memory = values.buffers.lookup(name);
-      base = values.localBase;
+      base = halfOf(values.localBase, values.localParity);
       break;
     case Version::snapshot:
       memory = values.snapshots.lookup(name);
@@ -239,9 +255,10 @@ private:
 
     Value index = load.getIndex();
     Value inBounds;
+    bool replicated = values.replicated.contains(name);
     if (index == values.item)
-      index = getElementIndex(builder, loc, values, index);
-    else if (values.first)
+      index = getElementIndex(builder, loc, values, index, name);
+    else if (values.first && !replicated)
       index = lowerGhostIndex(builder, loc, buffer, index, inBounds);
     else
       index =
@@ -352,6 +369,7 @@ private:
     KernelValues initValues;
     initValues.range = values.range;
     initValues.extent = values.extent;
+    initValues.replicated = values.replicated;
     initValues.params = values.params;
     initValues.item = index;
     FailureOr<SmallVector<Value>> results =

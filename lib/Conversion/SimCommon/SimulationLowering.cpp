@@ -192,6 +192,9 @@ Kernel SimulationLowering::beginKernel(StringRef name, BufferOp exactOf,
     values.first = b.toIndex(next());
     values.extent = b.toIndex(next());
     values.halo = distributedHalo;
+    for (BufferOp buffer : buffers)
+      if (buffer.getReplicated())
+        values.replicated.insert(buffer.getSymNameAttr());
   }
   values.params["dt"] = next();
   values.params["max_steps"] = b.i64(maxSteps);
@@ -251,7 +254,7 @@ LogicalResult SimulationLowering::endKernel(Kernel &kernel,
   if (distributed && component)
     for (FlatSymbolRefAttr write :
          component.getWrites().getAsRange<FlatSymbolRefAttr>())
-      if (simulation.lookupBuffer(write).getHaloAttr())
+      if (travels(simulation.lookupBuffer(write)))
         exchange.push_back(write);
   simplan::LaunchOp::create(
       launches, b.loc, kernelRef,
@@ -282,8 +285,11 @@ void SimulationLowering::setHalves(Kernel &kernel, Value parity,
                                    Value localParity) {
   KernelValues &values = kernel.values;
   Value extent = values.extent;
+  values.sourceParity = parity;
+  values.targetParity = b.xorOne(parity);
+  values.localParity = localParity;
   values.sourceBase = b.mul(b.toIndex(parity), extent);
-  values.targetBase = b.mul(b.toIndex(b.xorOne(parity)), extent);
+  values.targetBase = b.mul(b.toIndex(values.targetParity), extent);
   values.localBase = b.mul(b.toIndex(localParity), extent);
 }
 
@@ -376,7 +382,8 @@ LogicalResult SimulationLowering::run() {
         planBuilder.getI64IntegerAttr(getElementStride(buffer)),
         unitIf(buffer.getSnapshot()),
         unitIf(observed.contains(buffer.getSymNameAttr())),
-        unitIf(!buffer.getExact().empty()), buffer.getHaloAttr());
+        unitIf(!buffer.getExact().empty()), buffer.getHaloAttr(),
+        buffer.getReplicatedAttr());
   }
   for (ComponentOp component : order) {
     auto subClock = subClockSlots.find(component);

@@ -24,10 +24,11 @@ LogicalResult SimulationLowering::emitInit(BufferOp buffer,
       KernelValues values = kernel.values;
       values.item = lane.item;
       Value value = inline_(buffer.getInit(), {lane.item}, values).front();
-      b.store(value, memory, element(kernel, lane.item));
+      b.store(value, memory,
+              element(kernel, lane.item, buffer.getSymNameAttr()));
     });
   });
-  if (distributed && buffer.getHaloAttr())
+  if (distributed && travels(buffer))
     pendingExchange.push_back(FlatSymbolRefAttr::get(buffer.getSymNameAttr()));
   return endKernel(kernel, simplan::LaunchShape::items, launches);
 }
@@ -45,7 +46,7 @@ LogicalResult SimulationLowering::emitExact(BufferOp buffer,
       values.item = lane.item;
       Value value =
           inline_(buffer.getExact(), {lane.item, kernel.time}, values).front();
-      b.store(value, out, element(kernel, lane.item));
+      b.store(value, out, element(kernel, lane.item, buffer.getSymNameAttr()));
     });
   });
   return endKernel(kernel, simplan::LaunchShape::items, launches);
@@ -61,6 +62,7 @@ LogicalResult SimulationLowering::emitTotal(TotalOp total,
                   /*exactOf=*/nullptr, total);
   Value parity = b.load(kernel.clock, b.index(kSlotParity));
   kernel.values.sourceBase = b.mul(b.toIndex(parity), kernel.values.extent);
+  kernel.values.sourceParity = parity;
   forEachItem(kernel, [&](const Lane &lane) {
     b.ifThen(lane.active, [&] {
       KernelValues values = kernel.values;

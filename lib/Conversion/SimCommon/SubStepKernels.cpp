@@ -59,8 +59,8 @@ LogicalResult SimulationLowering::emitSubSteps(ComponentOp component,
             target.laneStore(
                 b,
                 b.load(kernel.values.buffers.lookup(name.getAttr()),
-                       b.add(kernel.values.sourceBase,
-                             element(kernel, lane.item))),
+                       at(kernel, name.getAttr(), kernel.values.sourceBase,
+                          kernel.values.sourceParity, lane.item)),
                 var, lane);
         });
       });
@@ -121,10 +121,10 @@ LogicalResult SimulationLowering::emitSubSteps(ComponentOp component,
       target.forEachLane(b, kernel, base, [&](const Lane &lane) {
         b.ifThen(lane.active, [&] {
           for (auto [name, var] : llvm::zip_equal(writes, state))
-            b.store(
-                target.laneLoad(b, var, lane),
-                kernel.values.buffers.lookup(name.getAttr()),
-                b.add(kernel.values.targetBase, element(kernel, lane.item)));
+            b.store(target.laneLoad(b, var, lane),
+                    kernel.values.buffers.lookup(name.getAttr()),
+                    at(kernel, name.getAttr(), kernel.values.targetBase,
+                       kernel.values.targetParity, lane.item));
         });
       });
     });

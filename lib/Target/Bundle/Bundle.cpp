@@ -381,6 +381,7 @@ FailureOr<std::unique_ptr<fb::PlanT>> PlanReader::read(simplan::PlanOp op) {
         record->halo_below = uint32_t((*halo)[0]);
         record->halo_above = uint32_t((*halo)[1]);
       }
+      record->replicated = buffer.getReplicated();
       plan->buffers.push_back(std::move(record));
     } else if (auto component = dyn_cast<simplan::ComponentOp>(child)) {
       components[component.getSymName()] = plan->components.size();

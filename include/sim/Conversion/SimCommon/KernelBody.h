@@ -39,6 +39,10 @@ struct KernelValues {
   /// halo`. Null on one process, where item `i` is element `i`.
   Value first;
   int64_t halo = 0;
+  /// Distributed plans: the buffers every rank holds whole (a gather reads
+  /// them), addressed as on one process: item `i` at element `i`, halves
+  /// `range` apart.
+  llvm::DenseSet<StringAttr> replicated;
   /// Parameter values by name, including the builtins `range` (i64), `dt`
   /// and `max_steps` (i64). `sim.get_param` converts to the type it asks for.
   llvm::StringMap<Value> params;
@@ -47,8 +51,11 @@ struct KernelValues {
   /// Per buffer name: its snapshot (`range` elements), if planned.
   llvm::DenseMap<StringAttr, Value> snapshots;
   /// Element offsets of the half that `source`, `target` and (without
-  /// registers) `local` loads read.
+  /// registers) `local` loads read, and the parities (i64) they are for
+  /// (a replicated buffer's halves are `range` elements apart, not
+  /// `extent`).
   Value sourceBase, targetBase, localBase;
+  Value sourceParity, targetParity, localParity;
   /// Own state kept in registers: `local` loads of these buffers return the
   /// value instead of reading memory. Only valid for components that read
   /// their own buffers at their own item (`sub_stepping = in_kernel`).
@@ -76,7 +83,15 @@ Value applyBoundary(OpBuilder &builder, Location loc, BufferOp buffer,
 /// array: `item` itself on one process, `item - first + halo` in a
 /// distributed plan.
 Value getElementIndex(OpBuilder &builder, Location loc,
-                      const KernelValues &values, Value item);
+                      const KernelValues &values, Value item,
+                      StringAttr buffer = {});
+
+/// The element offset of the half of `buffer` that `parity` selects:
+/// `blockBase` (`parity * extent`), or `parity * range` for a replicated
+/// buffer.
+Value getHalfOffset(OpBuilder &builder, Location loc,
+                    const KernelValues &values, StringAttr buffer,
+                    Value blockBase, Value parity);
 
 /// Returns the zero element of `type` (a float or a vector of floats).
 Value buildZeroElement(OpBuilder &builder, Location loc, Type type);

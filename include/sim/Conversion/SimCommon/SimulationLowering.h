@@ -78,9 +78,23 @@ private:
   LogicalResult endKernel(Kernel &kernel, simplan::LaunchShape shape,
                           OpBuilder &launches, ComponentOp component = nullptr);
   void readClock(Kernel &kernel, Value &begin, Value &size, Value &parity);
-  /// The element of `item` in the kernel's halves and arrays.
-  Value element(Kernel &kernel, Value item) {
-    return getElementIndex(b, b.loc, kernel.values, item);
+  /// The element of `item` in the kernel's total arrays and in `buffer`'s
+  /// snapshot or exact array.
+  Value element(Kernel &kernel, Value item, StringAttr buffer = {}) {
+    return getElementIndex(b, b.loc, kernel.values, item, buffer);
+  }
+  /// The element of `item` in `buffer`'s storage, in the half `parity`
+  /// selects, whose block offset is `blockBase`.
+  Value at(Kernel &kernel, StringAttr buffer, Value blockBase, Value parity,
+           Value item) {
+    return b.add(
+        getHalfOffset(b, b.loc, kernel.values, buffer, blockBase, parity),
+        element(kernel, item, buffer));
+  }
+  /// Distributed plans: whether `buffer` travels between ranks after it is
+  /// written (its ghost items, or all of it when it is replicated).
+  static bool travels(BufferOp buffer) {
+    return buffer.getHaloAttr() || buffer.getReplicated();
   }
   void setHalves(Kernel &kernel, Value parity, Value localParity);
   /// Runs `body` for every lane of every group the invocation handles.
@@ -115,7 +129,7 @@ private:
   /// evaluations in `count`.
   void evaluateItems(Kernel &kernel, ComponentOp component,
                      ArrayRef<Cache> caches, Value time, Value steps,
-                     Value writeBase, LaneVar count);
+                     Value writeBase, Value writeParity, LaneVar count);
 
   LogicalResult emitResetClock(OpBuilder &launches);
   LogicalResult emitInit(BufferOp buffer, OpBuilder &launches);

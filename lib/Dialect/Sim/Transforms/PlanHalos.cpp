@@ -4,8 +4,8 @@
 // Distributed.md). Its kernels read other items only through windows, so
 // the items a rank reads outside its block are known before it runs: the
 // recorded windows of every read, joined per buffer. This pass records
-// them, and refuses what a block cannot serve: a gather, whose item may
-// lie on any rank.
+// them. A gather may read an item of any rank: its buffer is recorded
+// replicated, every rank holding all of it.
 //
 //===----------------------------------------------------------------------===//
 
@@ -14,6 +14,7 @@
 #include "sim/Dialect/Sim/Transforms/Passes.h"
 
 #include "llvm/ADT/MapVector.h"
+#include "llvm/ADT/SetVector.h"
 
 namespace mlir::sim {
 #define GEN_PASS_DEF_SIMPLANHALOS
@@ -35,27 +36,14 @@ struct PlanHalosPass : public sim::impl::SimPlanHalosBase<PlanHalosPass> {
       return signalPassFailure();
     const DependencyAnalysis &analysis = getAnalysis<DependencyAnalysis>();
 
-    // Per buffer: the items below and above the read item it is read at.
+    // Per buffer: the items below and above the read item it is read at,
+    // and whether a gather reads it.
     llvm::MapVector<Operation *, std::pair<int64_t, int64_t>> halos;
-    bool failedRead = false;
+    llvm::SetVector<Operation *> replicated;
     auto record =
         [&](ReadOp read, const AccessPattern &pattern, StringRef body) {
           BufferOp buffer = simulation.lookupBuffer(read.getBufferAttr());
           if (!buffer)
-            return;
-          if (pattern.isGather()) {
-            read.emitError()
-                << "reads " << read.getBufferAttr() << " in " << body
-                << " through a gather, which a distributed run cannot serve: "
-                   "the item may lie on any rank; index it as the item plus a "
-                   "constant offset (a window), or compile without "
-                   "--sim-distributed";
-            failedRead = true;
-            return;
-          }
-          int64_t below = std::max<int64_t>(0, -pattern.getMinOffset());
-          int64_t above = std::max<int64_t>(0, pattern.getMaxOffset());
-          if (below == 0 && above == 0)
             return;
           // An interpolated read reads the auxiliary buffers of its
           // interpolation (a Hermite derivative) at the same items.
@@ -65,6 +53,21 @@ struct PlanHalosPass : public sim::impl::SimPlanHalosBase<PlanHalosPass> {
                  buffer.getInterpolation().getAuxiliaryBuffers())
               if (BufferOp auxBuffer = simulation.lookupBuffer(aux))
                 reached.push_back(auxBuffer);
+          if (pattern.isGather()) {
+            read.emitRemark()
+                << "reads " << read.getBufferAttr() << " in " << body
+                << " through a gather: every rank holds all of it, and the "
+                   "blocks its writer computes travel to every rank after each "
+                   "write (an all-gather); a window (the item plus a constant "
+                   "offset) would need only the items next to each block";
+            for (BufferOp target : reached)
+              replicated.insert(target);
+            return;
+          }
+          int64_t below = std::max<int64_t>(0, -pattern.getMinOffset());
+          int64_t above = std::max<int64_t>(0, pattern.getMaxOffset());
+          if (below == 0 && above == 0)
+            return;
           for (BufferOp target : reached) {
             auto [it, inserted] = halos.try_emplace(target, below, above);
             if (!inserted)
@@ -82,12 +85,15 @@ struct PlanHalosPass : public sim::impl::SimPlanHalosBase<PlanHalosPass> {
     }
     for (auto [read, pattern] : analysis.getTotalReads())
       record(read, pattern, "a total");
-    if (failedRead)
-      return signalPassFailure();
 
     int64_t largest = 0;
     Builder builder(&getContext());
+    for (Operation *op : replicated)
+      cast<BufferOp>(op).setReplicatedAttr(builder.getUnitAttr());
+    // A replicated buffer holds every item: it needs no ghosts.
     for (auto [op, halo] : halos) {
+      if (replicated.contains(op))
+        continue;
       cast<BufferOp>(op).setHaloAttr(
           builder.getDenseI64ArrayAttr({halo.first, halo.second}));
       largest = std::max({largest, halo.first, halo.second});

@@ -196,17 +196,27 @@ def Plan_BufferOp : Plan_Op<"buffer", [Symbol, HasParent<"PlanOp">]> {
     declares its exact solution (the `exact` phase computes it into a
     separate array of `range` elements).
 
+    Distributed plans ([Distributed.md](../Distributed.md)): `halo` gives
+    the items below and above an item that reads of the buffer reach, the
+    ghost items that travel between ranks; `replicated` says that a gather
+    reads the buffer, so every rank holds all `range` items of it, addressed
+    as on one process, and an exchange of it is an all-gather of the ranks'
+    blocks.
+
     ```mlir
     simplan.buffer @B0 : vector<4xf32> stride(16) snapshot observed
+    simplan.buffer @T : f64 stride(8) halo [1, 1]
+    simplan.buffer @X : vector<3xf64> stride(32) observed replicated
     ```
   }];
   let arguments = (ins SymbolNameAttr:$sym_name, TypeAttr:$element_type,
                        I64Attr:$stride, UnitAttr:$snapshot, UnitAttr:$observed,
-                       UnitAttr:$exact, OptionalAttr<DenseI64ArrayAttr>:$halo);
+                       UnitAttr:$exact, OptionalAttr<DenseI64ArrayAttr>:$halo,
+                       UnitAttr:$replicated);
   let assemblyFormat = [{
     $sym_name `:` $element_type `stride` `(` $stride `)`
     (`snapshot` $snapshot^)? (`observed` $observed^)? (`exact` $exact^)?
-    (`halo` $halo^)? attr-dict
+    (`halo` $halo^)? (`replicated` $replicated^)? attr-dict
   }];
 }
 

@@ -237,6 +237,9 @@ def Sim_BufferOp : Sim_Op<"buffer", [
     - `halo` (set by `--sim-plan-halos`, distributed scenes only): the
       items below and above an item that reads of the buffer reach, as
       `array<i64: below, above>`; the ghost items that travel between ranks.
+    - `replicated` (set by `--sim-plan-halos`, distributed scenes only): a
+      gather reads the buffer, so every rank holds all of it and the blocks
+      its writer computes are all-gathered after each write.
 
     ```mlir
     sim.buffer @X : f64 interp(#sim.hermite<@V>) boundary(wrap) init {
@@ -256,7 +259,8 @@ def Sim_BufferOp : Sim_Op<"buffer", [
                        DefaultValuedAttr<Sim_BoundaryAttr,
                                          "::mlir::sim::Boundary::clamp">:$boundary,
                        UnitAttr:$snapshot,
-                       OptionalAttr<DenseI64ArrayAttr>:$halo);
+                       OptionalAttr<DenseI64ArrayAttr>:$halo,
+                       UnitAttr:$replicated);
   let regions = (region SizedRegion<1>:$init, MaxSizedRegion<1>:$exact);
   let assemblyFormat = [{
     $sym_name `:` $element_type `` custom<InterpClause>($interp)
