@@ -18,7 +18,8 @@
 // - phases unroll to a bounded number of launches;
 // - distributed plans: halos within the plan's, exchanges of buffers (and
 //   snapshots) the plan has, all-reduces of clock slots it has; First and
-//   Extent arguments, halos, exchanges and all-reduces only there;
+//   Extent arguments, halos, replicated buffers, exchanges and all-reduces
+//   only there; no halo on a replicated buffer;
 // - the reference model resolves against the scene;
 // - every shared object's ELF headers lie inside its bytes
 //   (SharedObject.h), checked before anything is loaded.
@@ -262,6 +263,13 @@ private:
         bad(about + " has a halo (" + std::to_string(buffer->halo_below) +
             " below, " + std::to_string(buffer->halo_above) +
             " above), but the plan is not distributed");
+      if (buffer->replicated && !plan.distributed)
+        bad(about + " is replicated, but the plan is not distributed");
+      // A replicated buffer is whole on every rank: nothing is a ghost.
+      if (buffer->replicated && (buffer->halo_below || buffer->halo_above))
+        bad(about + " is replicated and has a halo (" +
+            std::to_string(buffer->halo_below) + " below, " +
+            std::to_string(buffer->halo_above) + " above)");
       if (buffer->halo_below > halo || buffer->halo_above > halo)
         bad(about + " has a halo of " + std::to_string(buffer->halo_below) +
             " below and " + std::to_string(buffer->halo_above) +

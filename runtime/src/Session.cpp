@@ -205,8 +205,10 @@ int64_t Session::memoryBytes(int64_t globalRange) const {
     const schema::PlanBufferT &buffer = *plan_->buffers[i];
     int64_t copies =
         2 + int64_t(buffer.snapshot) + int64_t(sceneBuffer(i).exact);
+    // Every rank holds all of a replicated buffer.
+    int64_t elements = replicated(i) ? globalRange : range;
     bytes = saturatingAdd(
-        bytes, saturatingMul(saturatingMul(range, buffer.stride), copies));
+        bytes, saturatingMul(saturatingMul(elements, buffer.stride), copies));
   }
   return saturatingAdd(bytes,
                        saturatingMul(saturatingMul(range, sizeof(double)),
@@ -235,7 +237,7 @@ void Session::allocate() {
   };
   clockMemory = take(size_t(plan_->clock_slots) * sizeof(int64_t));
   for (size_t i = 0; i < plan_->buffers.size(); ++i) {
-    size_t half = size_t(extent) * deviceStride(int(i));
+    size_t half = size_t(elementsOf(i)) * deviceStride(int(i));
     buffers.push_back(take(2 * half));
     snapshots.push_back(plan_->buffers[i]->snapshot ? take(half) : Memory{});
     exacts.push_back(sceneBuffer(i).exact ? take(half) : Memory{});
@@ -319,13 +321,13 @@ Session::Prepared Session::prepareLaunch(const schema::LaunchT &launch) {
       memref(clockMemory.pointer, plan_->clock_slots);
       break;
     case ArgKind::Buffer:
-      memref(buffers[arg.index()].pointer, 2 * extent);
+      memref(buffers[arg.index()].pointer, 2 * elementsOf(arg.index()));
       break;
     case ArgKind::Snapshot:
-      memref(snapshots[arg.index()].pointer, extent);
+      memref(snapshots[arg.index()].pointer, elementsOf(arg.index()));
       break;
     case ArgKind::Exact:
-      memref(exacts[arg.index()].pointer, extent);
+      memref(exacts[arg.index()].pointer, elementsOf(arg.index()));
       break;
     case ArgKind::Total:
       memref(totalValues[arg.index()].pointer, extent);
@@ -450,12 +452,15 @@ void Session::checkFinite(const Prepared &p) {
     int64_t key = std::numeric_limits<int64_t>::max();
     double found = 0;
     // Both halves: the target just written, and the source, which holds
-    // the initial state the first time round. Ghost elements are copies.
+    // the initial state the first time round. Ghost elements (and the
+    // other ranks' items of a replicated buffer) are copies: each rank
+    // looks at its own items only.
+    int64_t elements = elementsOf(index), own = ownElement(index);
     for (int64_t half = 0;
          half < 2 && key == std::numeric_limits<int64_t>::max(); ++half) {
       for (int64_t i = 0; i < count; ++i) {
         const uint8_t *item =
-            data.data() + size_t(half * extent + halo + i) * stride;
+            data.data() + size_t(half * elements + own + i) * stride;
         int32_t lane = 0;
         double value = 0;
         for (; lane < int32_t(type.lanes()); ++lane) {
@@ -782,64 +787,126 @@ const GhostLists &Session::ghostsOf(size_t buffer) {
 }
 
 Session::GhostRefresh Session::refreshOf(size_t buffer, bool snapshot) {
+  bool whole = replicated(buffer);
   return {snapshot ? snapshots[buffer].pointer : buffers[buffer].pointer,
-          deviceStride(int(buffer)), snapshot ? 1 : 2, &ghostsOf(buffer)};
+          deviceStride(int(buffer)),
+          snapshot ? 1 : 2,
+          elementsOf(buffer),
+          whole,
+          whole ? nullptr : &ghostsOf(buffer)};
 }
 
 void Session::refreshGhosts(const std::vector<GhostRefresh> &refreshes,
                             bool counted) {
   // The CPU backend's memory is the host's, and its launches are done when
-  // they return: pack and unpack in place.
-  size_t ranks = size_t(comm->size());
-  std::vector<size_t> sendBytes(ranks, 0), recvBytes(ranks, 0);
+  // they return: pack and unpack in place. Every rank has the same entries,
+  // so all make the same collective calls (or skip them alike).
+  size_t total = gatherReplicated(refreshes);
+  std::vector<const GhostRefresh *> ghosts;
   for (const GhostRefresh &r : refreshes)
+    if (!r.replicated)
+      ghosts.push_back(&r);
+  if (!ghosts.empty()) {
+    size_t ranks = size_t(comm->size());
+    std::vector<size_t> sendBytes(ranks, 0), recvBytes(ranks, 0);
+    for (const GhostRefresh *r : ghosts)
+      for (size_t peer = 0; peer < ranks; ++peer) {
+        sendBytes[peer] += r->lists->send[peer].size() * r->stride * r->halves;
+        recvBytes[peer] += r->lists->recv[peer].size() * r->stride * r->halves;
+      }
+    sendStore.resize(ranks);
+    recvStore.resize(ranks);
+    std::vector<const void *> send(ranks);
+    std::vector<void *> recv(ranks);
     for (size_t peer = 0; peer < ranks; ++peer) {
-      sendBytes[peer] += r.lists->send[peer].size() * r.stride * r.halves;
-      recvBytes[peer] += r.lists->recv[peer].size() * r.stride * r.halves;
+      sendStore[peer].resize(sendBytes[peer]);
+      recvStore[peer].resize(recvBytes[peer]);
+      send[peer] = sendStore[peer].data();
+      recv[peer] = recvStore[peer].data();
+      total += sendBytes[peer];
     }
-  sendStore.resize(ranks);
-  recvStore.resize(ranks);
-  std::vector<const void *> send(ranks);
-  std::vector<void *> recv(ranks);
-  size_t total = 0;
-  for (size_t peer = 0; peer < ranks; ++peer) {
-    sendStore[peer].resize(sendBytes[peer]);
-    recvStore[peer].resize(recvBytes[peer]);
-    send[peer] = sendStore[peer].data();
-    recv[peer] = recvStore[peer].data();
-    total += sendBytes[peer];
-  }
-  auto element = [&](const GhostRefresh &r, int half, int64_t e) {
-    return reinterpret_cast<uint8_t *>(r.base) +
-           size_t(half * extent + e) * r.stride;
-  };
-  for (size_t peer = 0; peer < ranks; ++peer) {
-    uint8_t *out = sendStore[peer].data();
-    for (const GhostRefresh &r : refreshes)
-      for (int half = 0; half < r.halves; ++half)
-        for (int64_t e : r.lists->send[peer]) {
-          std::memcpy(out, element(r, half, e), r.stride);
-          out += r.stride;
-        }
-  }
-  for (const GhostRefresh &r : refreshes)
-    for (int half = 0; half < r.halves; ++half)
-      for (auto [from, to] : r.lists->local)
-        std::memcpy(element(r, half, to), element(r, half, from), r.stride);
-  comm->exchange(send.data(), sendBytes.data(), recv.data(), recvBytes.data());
-  for (size_t peer = 0; peer < ranks; ++peer) {
-    const uint8_t *in = recvStore[peer].data();
-    for (const GhostRefresh &r : refreshes)
-      for (int half = 0; half < r.halves; ++half)
-        for (int64_t e : r.lists->recv[peer]) {
-          std::memcpy(element(r, half, e), in, r.stride);
-          in += r.stride;
-        }
+    auto element = [&](const GhostRefresh *r, int half, int64_t e) {
+      return reinterpret_cast<uint8_t *>(r->base) +
+             size_t(half * r->elements + e) * r->stride;
+    };
+    for (size_t peer = 0; peer < ranks; ++peer) {
+      uint8_t *out = sendStore[peer].data();
+      for (const GhostRefresh *r : ghosts)
+        for (int half = 0; half < r->halves; ++half)
+          for (int64_t e : r->lists->send[peer]) {
+            std::memcpy(out, element(r, half, e), r->stride);
+            out += r->stride;
+          }
+    }
+    for (const GhostRefresh *r : ghosts)
+      for (int half = 0; half < r->halves; ++half)
+        for (auto [from, to] : r->lists->local)
+          std::memcpy(element(r, half, to), element(r, half, from), r->stride);
+    comm->exchange(send.data(), sendBytes.data(), recv.data(),
+                   recvBytes.data());
+    for (size_t peer = 0; peer < ranks; ++peer) {
+      const uint8_t *in = recvStore[peer].data();
+      for (const GhostRefresh *r : ghosts)
+        for (int half = 0; half < r->halves; ++half)
+          for (int64_t e : r->lists->recv[peer]) {
+            std::memcpy(element(r, half, e), in, r->stride);
+            in += r->stride;
+          }
+    }
   }
   if (counted) {
     haloExchanges += int64_t(refreshes.size());
     exchangedBytes += int64_t(total);
   }
+}
+
+size_t Session::gatherReplicated(const std::vector<GhostRefresh> &refreshes) {
+  std::vector<const GhostRefresh *> whole;
+  for (const GhostRefresh &r : refreshes)
+    if (r.replicated)
+      whole.push_back(&r);
+  if (whole.empty())
+    return 0;
+  // A rank's block is contiguous in each half (item i at element i): one
+  // all-gather of every rank's blocks of all entries and halves, in that
+  // order, then each piece into place. The block of a rank is its own
+  // items only, so the ranks' pieces never overlap.
+  int32_t ranks = comm->size(), me = comm->rank();
+  std::vector<size_t> bytes(size_t(ranks), 0);
+  for (int32_t r = 0; r < ranks; ++r)
+    for (const GhostRefresh *g : whole)
+      bytes[size_t(r)] +=
+          size_t(decomposition->count(r)) * g->stride * size_t(g->halves);
+  auto block = [&](const GhostRefresh *g, int half, int32_t r) {
+    return reinterpret_cast<uint8_t *>(g->base) +
+           size_t(half * g->elements + decomposition->first(r)) * g->stride;
+  };
+  // MPI wants the contribution apart from the gathered array.
+  std::vector<uint8_t> mine(bytes[size_t(me)]);
+  uint8_t *out = mine.data();
+  size_t own = size_t(decomposition->count(me));
+  for (const GhostRefresh *g : whole)
+    for (int half = 0; half < g->halves; ++half) {
+      std::memcpy(out, block(g, half, me), own * g->stride);
+      out += own * g->stride;
+    }
+  size_t all = 0;
+  for (size_t b : bytes)
+    all += b;
+  gatherStore.resize(all);
+  comm->allgather(mine.data(), bytes.data(), gatherStore.data());
+  const uint8_t *in = gatherStore.data();
+  for (int32_t r = 0; r < ranks; ++r) {
+    size_t items = size_t(decomposition->count(r));
+    for (const GhostRefresh *g : whole)
+      for (int half = 0; half < g->halves; ++half) {
+        if (r != me)
+          std::memcpy(block(g, half, r), in, items * g->stride);
+        in += items * g->stride;
+      }
+  }
+  // What this rank's block costs: it reaches every other rank.
+  return mine.size() * size_t(ranks - 1);
 }
 
 void Session::refreshAllGhosts() {
@@ -886,10 +953,10 @@ void Session::launchDistributed(Prepared &p, bool counted, bool step) {
   refreshGhosts(p.exchanges, counted);
 }
 
-void Session::gatherItems(DevicePtr array, size_t stride, size_t packed,
-                          void *out) {
+void Session::gatherItems(DevicePtr array, int64_t own, size_t stride,
+                          size_t packed, void *out) {
   std::vector<uint8_t> device(size_t(count) * stride);
-  backend->read(device.data(), array + size_t(halo) * stride, device.size());
+  backend->read(device.data(), array + size_t(own) * stride, device.size());
   std::vector<uint8_t> mine(size_t(count) * packed);
   for (int64_t i = 0; i < count; ++i)
     std::memcpy(mine.data() + size_t(i) * packed,
@@ -976,15 +1043,19 @@ Session::CurrentHalf Session::currentHalf(const std::string &name,
   ensureInitialized();
   size_t stride = deviceStride(index);
   size_t packed = size_t(packedBytes(*sceneBuffer(size_t(index)).element));
-  DevicePtr half = buffers[index].pointer +
-                   size_t(clock[kSlotParity]) * size_t(extent) * stride;
+  DevicePtr half =
+      buffers[index].pointer +
+      size_t(clock[kSlotParity]) * size_t(elementsOf(size_t(index))) * stride;
   return {half, stride, packed};
 }
 
 void Session::getBuffer(const std::string &name, void *data, size_t bytes) {
   auto [half, stride, packed] = currentHalf(name, bytes);
   if (distributed()) {
-    gatherItems(half, stride, packed, data);
+    // A replicated buffer is whole on every rank after its exchanges; its
+    // owners' blocks all the same, as for any other buffer.
+    gatherItems(half, ownElement(size_t(bufferIndex(name))), stride, packed,
+                data);
     return;
   }
   if (stride == packed) {
@@ -1001,7 +1072,9 @@ void Session::getBuffer(const std::string &name, void *data, size_t bytes) {
 void Session::setBuffer(const std::string &name, const void *data,
                         size_t bytes) {
   auto [half, stride, packed] = currentHalf(name, bytes);
-  if (distributed()) {
+  // A replicated buffer takes every item, as on one process (below), and
+  // nothing travels.
+  if (distributed() && !replicated(size_t(bufferIndex(name)))) {
     // This rank's block of the whole array, then its ghosts from their
     // owners (both halves: the other half's ghosts are refreshed again).
     std::vector<uint8_t> device(size_t(count) * stride, 0);
@@ -1061,7 +1134,8 @@ void Session::exact(const std::string &name, void *data, size_t bytes) {
   size_t stride = deviceStride(index);
   size_t packed = size_t(packedBytes(*sceneBuffer(size_t(index)).element));
   if (distributed()) {
-    gatherItems(exacts[index].pointer, stride, packed, data);
+    gatherItems(exacts[index].pointer, ownElement(size_t(index)), stride,
+                packed, data);
     return;
   }
   std::vector<uint8_t> device(size_t(settings.range) * stride);
@@ -1091,7 +1165,7 @@ std::vector<double> Session::totals() {
     // A distributed session's ranks gather every item's value and add
     // them in the same order: the same sums on every rank.
     if (distributed())
-      gatherItems(totalValues[t].pointer, sizeof(double), sizeof(double),
+      gatherItems(totalValues[t].pointer, halo, sizeof(double), sizeof(double),
                   values.data());
     else
       backend->read(values.data(), totalValues[t].pointer,

@@ -103,12 +103,16 @@ private:
     size_t bytes = 0;
   };
   /// Distributed plans: one `exchange` entry of a launch, resolved against
-  /// the current allocation. `halves` copies of `extent` elements of
-  /// `stride` bytes from `base` (2 for a buffer, 1 for a snapshot).
+  /// the current allocation. `halves` copies of `elements` elements of
+  /// `stride` bytes from `base` (2 for a buffer, 1 for a snapshot). A
+  /// replicated buffer's entry all-gathers every rank's block (`lists` is
+  /// null); any other refreshes the ghosts in `lists`.
   struct GhostRefresh {
     DevicePtr base;
     size_t stride;
     int halves;
+    int64_t elements;
+    bool replicated;
     const GhostLists *lists;
   };
   /// A launch with its parameter values laid out for the backend.
@@ -148,6 +152,19 @@ private:
   bool distributed() const { return comm != nullptr; }
   /// The elements of one half of a buffer at `range` items on this rank.
   int64_t extentAt(int64_t range) const;
+  /// Whether every rank holds all of plan buffer `buffer` (PlanBuffer.
+  /// replicated): one half, its snapshot and its exact array are `range`
+  /// elements, item i at element i; otherwise `extent` elements.
+  bool replicated(size_t buffer) const {
+    return distributed() && plan_->buffers[buffer]->replicated;
+  }
+  int64_t elementsOf(size_t buffer) const {
+    return replicated(buffer) ? settings.range : extent;
+  }
+  /// The element of this rank's first item in one half of `buffer`.
+  int64_t ownElement(size_t buffer) const {
+    return replicated(buffer) ? first : halo;
+  }
   /// Splits the current range over the ranks: first, count, extent.
   void layout();
   /// Checks once per change of the settings that every rank runs the same
@@ -156,17 +173,22 @@ private:
   const GhostLists &ghostsOf(size_t buffer);
   GhostRefresh refreshOf(size_t buffer, bool snapshot);
   /// Fills the ghost elements of `refreshes` from their owners (one
-  /// exchange for all of them); `counted` adds them to the run's metrics.
+  /// exchange for the ghosts, one all-gather for the replicated buffers);
+  /// `counted` adds them to the run's metrics.
   void refreshGhosts(const std::vector<GhostRefresh> &refreshes, bool counted);
+  /// The all-gather of the replicated entries of `refreshes`: every rank's
+  /// block into place in every half. Returns the bytes this rank sent.
+  size_t gatherReplicated(const std::vector<GhostRefresh> &refreshes);
   /// Every buffer's ghosts, both halves (after init and setBuffer).
   void refreshAllGhosts();
   /// A launch of a distributed plan: its all-reduces, the kernel, its
   /// exchanges (in the step phase, `step`, none past the run's end).
   void launchDistributed(Prepared &prepared, bool counted, bool step = false);
-  /// Every rank's owned items of the `extent`-element array at `array`
-  /// (`stride` bytes per element), `packed` bytes of each, in item order
-  /// into the host array `out`.
-  void gatherItems(DevicePtr array, size_t stride, size_t packed, void *out);
+  /// Every rank's owned items of the array at `array`, whose element
+  /// `own` holds this rank's first item (`stride` bytes per element),
+  /// `packed` bytes of each, in item order into the host array `out`.
+  void gatherItems(DevicePtr array, int64_t own, size_t stride, size_t packed,
+                   void *out);
 
   std::shared_ptr<const Bundle> bundle;
   const schema::PlanT *plan_ = nullptr;
@@ -202,6 +224,7 @@ private:
   /// Per (below, above, boundary): the ghost lists of the decomposition.
   std::map<std::tuple<uint32_t, uint32_t, int>, GhostLists> ghostCache;
   std::vector<std::vector<uint8_t>> sendStore, recvStore;
+  std::vector<uint8_t> gatherStore;
   bool agreed = false;
   /// Since the session began (a run's metrics take the difference).
   int64_t haloExchanges = 0, exchangedBytes = 0;

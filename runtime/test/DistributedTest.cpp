@@ -264,6 +264,127 @@ TEST(Distributed, SameAsOneProcess) {
   checkRanks(Boundary::Wrap, 3, 50, 4, 31, true);
 }
 
+/// The gather variant: Y is replicated, every item reads all of it, and
+/// its exchange is an all-gather of the ranks' blocks. A setBuffer between
+/// the runs stores every item of Y (and X's block and ghosts); getBuffer,
+/// exact and totals gather the owners' blocks.
+struct GatherOutcome {
+  std::vector<double> x, y, exactY;
+  std::vector<int64_t> evaluations;
+  int64_t bigSteps = 0;
+  double total = 0;
+  sim_metrics metrics{};
+};
+
+GatherOutcome runGather(Session &session, int64_t range, int64_t steps) {
+  session.set("range", std::to_string(range));
+  session.init();
+  session.run(steps / 2);
+  std::vector<double> x(static_cast<size_t>(range)),
+      y(static_cast<size_t>(range));
+  session.getBuffer("X", x.data(), x.size() * 8);
+  session.getBuffer("Y", y.data(), y.size() * 8);
+  for (size_t i = 0; i < y.size(); i += 7) {
+    x[i] += 0.5;
+    y[i] += 0.125;
+  }
+  session.setBuffer("X", x.data(), x.size() * 8);
+  session.setBuffer("Y", y.data(), y.size() * 8);
+  session.run(steps - steps / 2);
+  GatherOutcome outcome;
+  outcome.x.resize(size_t(range));
+  outcome.y.resize(size_t(range));
+  outcome.exactY.resize(size_t(range));
+  session.getBuffer("X", outcome.x.data(), outcome.x.size() * 8);
+  session.getBuffer("Y", outcome.y.data(), outcome.y.size() * 8);
+  session.exact("Y", outcome.exactY.data(), outcome.exactY.size() * 8);
+  outcome.evaluations = session.evaluations;
+  outcome.bigSteps = session.metrics.big_steps;
+  outcome.total = session.totals()[0];
+  outcome.metrics = session.metrics;
+  return outcome;
+}
+
+void checkGather(int32_t ranks, int64_t range, int64_t groupSize, int64_t steps,
+                 bool checkFinite = false) {
+  SCOPED_TRACE(std::to_string(ranks) + " ranks, range " +
+               std::to_string(range) + ", group size " +
+               std::to_string(groupSize));
+  auto bundle =
+      parseBytes(serialize(ringContents(Boundary::Wrap, true)), "ring.simb");
+  Session single(bundle, ringOptions(groupSize, nullptr, checkFinite));
+  GatherOutcome one = runGather(single, range, steps);
+  ASSERT_EQ(one.evaluations.size(), 2u);
+  EXPECT_GT(one.evaluations[1], 0);
+  // The kernels poison Y when their memref is not `range` items long.
+  for (size_t i = 0; i < one.y.size(); ++i) {
+    ASSERT_TRUE(std::isfinite(one.y[i])) << "item " << i;
+    ASSERT_TRUE(std::isfinite(one.exactY[i])) << "item " << i;
+  }
+  // Every item of Y moved towards the mean of all of them.
+  EXPECT_NE(one.y[1], 1.0 + 0.02 + 0.25 + (1 % 7 == 0 ? 0.125 : 0.0));
+  ThreadWorld world(ranks);
+  std::vector<GatherOutcome> outcomes(static_cast<size_t>(ranks));
+  std::vector<std::string> errors(static_cast<size_t>(ranks));
+  world.run([&](int32_t r) {
+    try {
+      Session session(
+          bundle, ringOptions(groupSize, world.communicator(r), checkFinite));
+      outcomes[size_t(r)] = runGather(session, range, steps);
+    } catch (const Error &error) {
+      errors[size_t(r)] = error.what();
+    }
+  });
+  Decomposition split(range, groupSize, ranks);
+  for (int32_t r = 0; r < ranks; ++r) {
+    SCOPED_TRACE("rank " + std::to_string(r));
+    ASSERT_EQ(errors[size_t(r)], "");
+    const GatherOutcome &many = outcomes[size_t(r)];
+    EXPECT_EQ(std::memcmp(one.x.data(), many.x.data(), one.x.size() * 8), 0);
+    EXPECT_EQ(std::memcmp(one.y.data(), many.y.data(), one.y.size() * 8), 0);
+    EXPECT_EQ(std::memcmp(one.exactY.data(), many.exactY.data(),
+                          one.exactY.size() * 8),
+              0);
+    EXPECT_EQ(one.evaluations, many.evaluations);
+    EXPECT_EQ(one.bigSteps, many.bigSteps);
+    EXPECT_EQ(one.total, many.total);
+    // X's ghosts and Y's all-gather, once per big step each; Y's bytes
+    // are the rank's block of both halves, to every other rank.
+    EXPECT_EQ(many.metrics.halo_exchanges, 2 * many.metrics.big_steps);
+    GhostLists ghosts = ghostLists(split, r, 2, 2, 2, Boundary::Wrap);
+    int64_t perBigStep =
+        int64_t(ghosts.sent()) * 16 + (ranks - 1) * split.count(r) * 16;
+    EXPECT_EQ(many.metrics.exchanged_bytes,
+              perBigStep * many.metrics.big_steps);
+  }
+}
+
+TEST(Distributed, ReplicatedBufferSameAsOneProcess) {
+  checkGather(2, 100, 4, 57);
+  checkGather(3, 100, 4, 57);
+  // Blocks of one item.
+  checkGather(4, 7, 1, 23);
+  checkGather(3, 50, 4, 31, true);
+}
+
+/// Replicated memory on one process is `range` items; on P ranks too.
+TEST(Distributed, ReplicatedBufferMemory) {
+  auto ring = parseBytes(serialize(ringContents(Boundary::Wrap)), "r.simb");
+  auto gather =
+      parseBytes(serialize(ringContents(Boundary::Wrap, true)), "g.simb");
+  ThreadWorld world(2);
+  std::vector<int64_t> plain(2), replicated(2);
+  world.run([&](int32_t r) {
+    Session a(ring, ringOptions(4, world.communicator(r)));
+    Session b(gather, ringOptions(4, world.communicator(r)));
+    plain[size_t(r)] = a.memoryBytes(100);
+    replicated[size_t(r)] = b.memoryBytes(100);
+  });
+  for (int32_t r = 0; r < 2; ++r)
+    // Y: two halves and an exact array of 100 items of 8 bytes.
+    EXPECT_EQ(replicated[size_t(r)] - plain[size_t(r)], 3 * 100 * 8);
+}
+
 TEST(Distributed, OneProcessWithoutCommunicatorRunsTheSameCode) {
   // The ring's wrap ghosts are local copies on one rank: without them the
   // ends of the range would read zeros.
@@ -295,6 +416,38 @@ TEST(Distributed, NonFiniteValuesStopEveryRank) {
   Session single(bundle, ringOptions(4, nullptr, true));
   std::string one = poisoned(single);
   EXPECT_NE(one.find("(item 29)"), std::string::npos) << one;
+  ThreadWorld world(3);
+  std::vector<std::string> messages(3);
+  world.run([&](int32_t r) {
+    Session session(bundle, ringOptions(4, world.communicator(r), true));
+    messages[size_t(r)] = poisoned(session);
+  });
+  for (const std::string &message : messages)
+    EXPECT_EQ(message, one);
+}
+
+/// The same in a replicated buffer: each rank looks at its own items of
+/// the whole array, and the ranks agree on the first non-finite one.
+TEST(Distributed, NonFiniteReplicatedValuesStopEveryRank) {
+  auto bundle =
+      parseBytes(serialize(ringContents(Boundary::Wrap, true)), "ring.simb");
+  auto poisoned = [](Session &session) {
+    session.set("range", "50");
+    std::vector<double> y(50);
+    session.getBuffer("Y", y.data(), y.size() * 8);
+    y[29] = std::nan("");
+    session.setBuffer("Y", y.data(), y.size() * 8);
+    try {
+      session.run(10);
+    } catch (const Error &error) {
+      EXPECT_EQ(error.status, SIM_ERROR_NONFINITE);
+      return std::string(error.what());
+    }
+    return std::string("no error");
+  };
+  Session single(bundle, ringOptions(4, nullptr, true));
+  std::string one = poisoned(single);
+  EXPECT_NE(one.find("in buffer 'Y'"), std::string::npos) << one;
   ThreadWorld world(3);
   std::vector<std::string> messages(3);
   world.run([&](int32_t r) {
@@ -414,6 +567,16 @@ TEST(Distributed, VerifierChecksTheRecords) {
       schema::Exchange(1, false)};
   expectBad(std::move(contents), "an exchanged buffer is 1, but there are "
                                  "only 1");
+  contents = ringContents(Boundary::Wrap, true);
+  contents.plans[0]->buffers[1]->halo_below = 1;
+  expectBad(std::move(contents), "buffer 'Y' is replicated and has a halo (1 "
+                                 "below, 0 above)");
+  contents = ringContents(Boundary::Wrap, true);
+  contents.plans[0]->distributed.reset();
+  contents.plans[0]->buffers[0]->halo_below = 0;
+  contents.plans[0]->buffers[0]->halo_above = 0;
+  expectBad(std::move(contents),
+            "buffer 'Y' is replicated, but the plan is not distributed");
   contents = ringContents(Boundary::Wrap);
   contents.plans[0]->phases[1]->body[2]->launch->exchange = {
       schema::Exchange(0, true)};

@@ -289,7 +289,7 @@ std::string decayBundle(bool ptx, bool reference) {
   return serialize(decayContents(ptx, reference));
 }
 
-BundleT ringContents(Boundary boundary) {
+BundleT ringContents(Boundary boundary, bool gather) {
   BundleT contents;
   contents.producer = "runtime/test/TestBundle.cpp";
   auto scene = std::make_unique<SceneT>();
@@ -299,6 +299,9 @@ BundleT ringContents(Boundary boundary) {
   scene->max_steps = 4;
   scene->buffers.push_back(
       buffer("X", ScalarType::F64, 1, Interp::Linear, boundary, true));
+  if (gather)
+    scene->buffers.push_back(buffer("Y", ScalarType::F64, 1, Interp::Linear,
+                                    Boundary::Clamp, true, true));
   auto total = std::make_unique<TotalT>();
   total->name = "sum_X";
   total->type = ScalarType::F64;
@@ -321,11 +324,30 @@ BundleT ringContents(Boundary boundary) {
   plan->buffers.push_back(std::move(planBuffer));
   plan->components.push_back(component("Mix", {0}, 8, true));
   plan->totals = {0};
+  if (gather) {
+    // Read at every item: whole on every rank, no halo.
+    planBuffer = std::make_unique<PlanBufferT>();
+    planBuffer->buffer = 1;
+    planBuffer->stride = 8;
+    planBuffer->replicated = true;
+    plan->buffers.push_back(std::move(planBuffer));
+    plan->components.push_back(component("Pull", {1}, 9, false));
+  }
 
   const uint32_t slots = plan->clock_slots;
   KernelParam x = memref(ScalarType::F64, 1, 8);
   KernelParam i64 = scalar(ParamType::I64), f64 = scalar(ParamType::F64);
-  enum : uint32_t { kReset, kInit, kEstimate, kAdvance, kEvaluate, kTotal };
+  enum : uint32_t {
+    kReset,
+    kInit,
+    kEstimate,
+    kAdvance,
+    kEvaluate,
+    kTotal,
+    kInitY,
+    kPull,
+    kExactY
+  };
   plan->kernels.push_back(kernel("reset_clock", {kClock}, slots));
   plan->kernels.push_back(kernel("init_X", {x, i64, i64, kRange}, slots));
   plan->kernels.push_back(
@@ -336,6 +358,13 @@ BundleT ringContents(Boundary boundary) {
   plan->kernels.push_back(kernel(
       "total_X", {memref(ScalarType::F64, 1, 8), kClock, x, i64, i64, kRange},
       slots));
+  if (gather) {
+    plan->kernels.push_back(kernel("init_Y", {x, i64, i64, kRange}, slots));
+    plan->kernels.push_back(
+        kernel("pull", {kClock, x, i64, i64, kRange, f64}, slots));
+    plan->kernels.push_back(
+        kernel("exact_Y", {x, i64, i64, kRange, f64}, slots));
+  }
   Arg first = arg(ArgKind::First), extent = arg(ArgKind::Extent);
   plan->phases.push_back(
       phase(PhaseKind::Init,
@@ -343,6 +372,11 @@ BundleT ringContents(Boundary boundary) {
                  launch(kInit, LaunchShape::Items, -1,
                         {arg(ArgKind::Buffer, 0), first, extent,
                          arg(ArgKind::Range)}))));
+  if (gather)
+    // No exchange recorded: the session's refresh after init completes Y.
+    plan->phases.back()->body.push_back(
+        launch(kInitY, LaunchShape::Items, -1,
+               {arg(ArgKind::Buffer, 1), first, extent, arg(ArgKind::Range)}));
   std::vector<std::unique_ptr<StepT>> step;
   step.push_back(
       launch(kEstimate, LaunchShape::Items, -1,
@@ -355,6 +389,13 @@ BundleT ringContents(Boundary boundary) {
                         {arg(ArgKind::Clock), arg(ArgKind::Buffer, 0), first,
                          extent, arg(ArgKind::Range), arg(ArgKind::Dt)}));
   step.back()->launch->exchange = {Exchange(0, false)};
+  if (gather) {
+    step.push_back(launch(kPull, LaunchShape::Items, 1,
+                          {arg(ArgKind::Clock), arg(ArgKind::Buffer, 1), first,
+                           extent, arg(ArgKind::Range), arg(ArgKind::Dt)}));
+    // An all-gather of every rank's block of Y.
+    step.back()->launch->exchange = {Exchange(1, false)};
+  }
   plan->phases.push_back(phase(PhaseKind::Step, std::move(step)));
   plan->phases.push_back(phase(
       PhaseKind::Finish,
@@ -365,6 +406,12 @@ BundleT ringContents(Boundary boundary) {
                         {arg(ArgKind::Total, 0), arg(ArgKind::Clock),
                          arg(ArgKind::Buffer, 0), first, extent,
                          arg(ArgKind::Range)}))));
+  if (gather)
+    plan->phases.push_back(
+        phase(PhaseKind::Exact,
+              list(launch(kExactY, LaunchShape::Items, -1,
+                          {arg(ArgKind::Exact, 1), first, extent,
+                           arg(ArgKind::Range), arg(ArgKind::Time)}))));
   auto cpu = std::make_unique<CpuCodeT>();
   cpu->isa = "x86-64";
   cpu->object = readBytes(SIM_TEST_RING_SO);

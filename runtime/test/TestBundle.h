@@ -44,8 +44,10 @@ std::string decayBundle(bool ptx = false, bool reference = true);
 
 /// The "ring" scene of kernels/ring.c: a distributed hip plan (halo 2,
 /// group size 4) whose buffer X reads i-2 .. i+2 under `boundary`, with
-/// an all-reduced estimate and an exchange per big step.
-schema::BundleT ringContents(schema::Boundary boundary);
+/// an all-reduced estimate and an exchange per big step. With `gather`, a
+/// second buffer Y (clamp, with an exact solution) that every item reads
+/// at all items: replicated, an all-gather per big step.
+schema::BundleT ringContents(schema::Boundary boundary, bool gather = false);
 
 /// The "probe" scene of kernels/probe_reference.c: a hip plan whose
 /// kernels exist nowhere (the reference executor needs none) and its

@@ -163,3 +163,63 @@ EXPORT void sim_cpu_total_X(void **params, int64_t first, int64_t end,
     out[kHalo + l] = x[half + kHalo + l] * (1.0 + 1e-7 * (double)i);
   }
 }
+
+/* The gather variant (ringContents(boundary, true)): a second buffer Y,
+ * replicated (every rank holds all `range` items, item i at element i of
+ * each half), that every item reads at all items: y' = y + m dt 0.1
+ * (mean_j w(i, j) y[j] - y[i]), w(i, j) = 1 + 1e-3 ((i + j) % 5), summed
+ * in item order. Its writers write only their block. A memref of the
+ * wrong size (not 2 range elements) makes the values NaN. */
+
+/* (Y, First, Extent, Range) */
+EXPORT void sim_cpu_init_Y(void **params, int64_t first, int64_t end,
+                           int64_t groupSize) {
+  double *y = memref(params, 0);
+  int64_t base = i64(params, 5), extent = i64(params, 6);
+  int64_t range = i64(params, 7), count = extent - 2 * kHalo;
+  FOR_ITEMS(l, i) {
+    (void)l;
+    y[i] = y[range + i] = 1.0 + 0.02 * (double)i + (i % 4 == 1 ? 0.25 : 0.0);
+  }
+}
+
+/* (Clock, Y, First, Extent, Range, Dt) */
+EXPORT void sim_cpu_pull(void **params, int64_t first, int64_t end,
+                         int64_t groupSize) {
+  int64_t *clock = memref(params, 0);
+  double *y = memref(params, 5);
+  int64_t base = i64(params, 10), extent = i64(params, 11);
+  int64_t range = i64(params, 12), count = extent - 2 * kHalo;
+  double dt = f64(params, 13);
+  int64_t m = load(clock, kSize);
+  if (m <= 0)
+    return;
+  double wrong = memrefSize(params, 5) == 2 * range ? 0.0 : __builtin_nan("");
+  int64_t source = load(clock, kParity) * range, target = range - source;
+  int64_t evaluated = 0;
+  FOR_ITEMS(l, i) {
+    (void)l;
+    double sum = 0;
+    for (int64_t j = 0; j < range; ++j)
+      sum += (1.0 + 1e-3 * (double)((i + j) % 5)) * y[source + j];
+    double s = y[source + i];
+    y[target + i] =
+        s + (double)m * dt * 0.1 * (sum / (double)range - s) + wrong;
+    ++evaluated;
+  }
+  __atomic_fetch_add(&clock[kEvaluations + 1], evaluated, __ATOMIC_RELAXED);
+}
+
+/* (Exact, First, Extent, Range, Time) */
+EXPORT void sim_cpu_exact_Y(void **params, int64_t first, int64_t end,
+                            int64_t groupSize) {
+  double *e = memref(params, 0);
+  int64_t base = i64(params, 5), extent = i64(params, 6);
+  int64_t range = i64(params, 7), count = extent - 2 * kHalo;
+  double time = f64(params, 8);
+  double wrong = memrefSize(params, 0) == range ? 0.0 : __builtin_nan("");
+  FOR_ITEMS(l, i) {
+    (void)l;
+    e[i] = (double)i + 2.0 * time + wrong;
+  }
+}
