@@ -26,6 +26,8 @@ public:
 
   int rank() const { return rank_; }
   int size() const { return size_; }
+  /// The rank among the ranks on this machine (0 when MPI cannot tell).
+  int localRank() const { return localRank_; }
   /// The communicator of MPI_COMM_WORLD (valid while this object lives).
   const sim_communicator *communicator() const { return &comm; }
 
@@ -34,7 +36,7 @@ public:
   [[noreturn]] static void abort(int status);
 
 private:
-  int rank_ = 0, size_ = 1;
+  int rank_ = 0, size_ = 1, localRank_ = 0;
   bool owns = false;
   sim_communicator comm{};
 };

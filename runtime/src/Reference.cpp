@@ -72,7 +72,7 @@ ReferenceSession::ReferenceSession(std::shared_ptr<const Bundle> bundleIn,
   if (options.communicator)
     fail(SIM_ERROR_DISTRIBUTED,
          "the reference executor runs on one process and takes no "
-         "communicator; distributed runs use the plan executor on the CPU");
+         "communicator; distributed runs use the plan executor");
   model_ = bundle->reference();
   if (!model_)
     fail(SIM_ERROR_BUNDLE,

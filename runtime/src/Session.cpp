@@ -33,6 +33,21 @@ constexpr int64_t kMaxBatch = 256;
 constexpr double kProgressBatchSeconds = 0.25;
 constexpr int64_t kFirstProgressBatch = 8;
 
+/// Calls `copy(first, count)` for each run of consecutive elements in
+/// `elements`, in order: ghost lists are mostly a few runs, and each run is
+/// one backend copy.
+template <typename Copy>
+void forEachRun(const std::vector<int64_t> &elements, Copy copy) {
+  size_t i = 0;
+  while (i < elements.size()) {
+    size_t j = i + 1;
+    while (j < elements.size() && elements[j] == elements[j - 1] + 1)
+      ++j;
+    copy(elements[i], int64_t(j - i));
+    i = j;
+  }
+}
+
 } // namespace
 
 Session::Session(std::shared_ptr<const Bundle> bundleIn,
@@ -55,9 +70,8 @@ Session::Session(std::shared_ptr<const Bundle> bundleIn,
   bool hasPtx = !plan_->ptx.empty();
   const schema::CpuCodeT *cpu = bundle->cpuCode(*plan_);
 
-  // Distributed plans run on every rank with the same code, on the CPU:
-  // ghosts are packed straight from the backend's memory, which the CPU
-  // backend's synchronous launches leave complete.
+  // Distributed plans run on every rank with the same code, on either
+  // backend: the ghost items move through the backend's reads and writes.
   if (options.communicator && !plan_->distributed)
     fail(SIM_ERROR_BUNDLE,
          "bundle '" + bundle->name +
@@ -66,25 +80,6 @@ Session::Session(std::shared_ptr<const Bundle> bundleIn,
   if (plan_->distributed) {
     comm = std::make_unique<Communicator>(options.communicator);
     halo = int64_t(plan_->distributed->halo);
-    if (options.communicator) {
-      if (options.backend == SIM_BACKEND_CUDA)
-        fail(SIM_ERROR_DISTRIBUTED, "distributed runs use the CPU backend");
-      if (options.backend == SIM_BACKEND_AUTO) {
-        options.backend = SIM_BACKEND_CPU;
-        note = "distributed runs use the CPU backend";
-        hasPtx = false;
-      }
-    } else if (options.backend != SIM_BACKEND_CPU) {
-      // One process: the same code path, so the CPU too.
-      if (options.backend == SIM_BACKEND_CUDA)
-        fail(SIM_ERROR_DISTRIBUTED,
-             "the plan of strategy '" + name +
-                 "' is distributed, and distributed plans run on the CPU "
-                 "backend");
-      note = "the plan of strategy '" + name +
-             "' is distributed (distributed plans run on the CPU)";
-      hasPtx = false;
-    }
   }
 
   auto noCode = [&](const char *what, const char *backendName) {
@@ -798,9 +793,11 @@ Session::GhostRefresh Session::refreshOf(size_t buffer, bool snapshot) {
 
 void Session::refreshGhosts(const std::vector<GhostRefresh> &refreshes,
                             bool counted) {
-  // The CPU backend's memory is the host's, and its launches are done when
-  // they return: pack and unpack in place. Every rank has the same entries,
-  // so all make the same collective calls (or skip them alike).
+  // Ghost items move through the backend's reads and writes (runs of
+  // consecutive elements each), which wait for the launches before them:
+  // host memory on the CPU, staged device memory on CUDA. Every rank has
+  // the same entries, so all make the same collective calls (or skip them
+  // alike).
   size_t total = gatherReplicated(refreshes);
   std::vector<const GhostRefresh *> ghosts;
   for (const GhostRefresh &r : refreshes)
@@ -826,32 +823,36 @@ void Session::refreshGhosts(const std::vector<GhostRefresh> &refreshes,
       total += sendBytes[peer];
     }
     auto element = [&](const GhostRefresh *r, int half, int64_t e) {
-      return reinterpret_cast<uint8_t *>(r->base) +
-             size_t(half * r->elements + e) * r->stride;
+      return r->base + DevicePtr(half * r->elements + e) * r->stride;
     };
     for (size_t peer = 0; peer < ranks; ++peer) {
       uint8_t *out = sendStore[peer].data();
       for (const GhostRefresh *r : ghosts)
         for (int half = 0; half < r->halves; ++half)
-          for (int64_t e : r->lists->send[peer]) {
-            std::memcpy(out, element(r, half, e), r->stride);
-            out += r->stride;
-          }
+          forEachRun(r->lists->send[peer], [&](int64_t e, int64_t n) {
+            backend->read(out, element(r, half, e), size_t(n) * r->stride);
+            out += size_t(n) * r->stride;
+          });
     }
-    for (const GhostRefresh *r : ghosts)
+    std::vector<uint8_t> item;
+    for (const GhostRefresh *r : ghosts) {
+      item.resize(r->stride);
       for (int half = 0; half < r->halves; ++half)
-        for (auto [from, to] : r->lists->local)
-          std::memcpy(element(r, half, to), element(r, half, from), r->stride);
+        for (auto [from, to] : r->lists->local) {
+          backend->read(item.data(), element(r, half, from), r->stride);
+          backend->write(element(r, half, to), item.data(), r->stride);
+        }
+    }
     comm->exchange(send.data(), sendBytes.data(), recv.data(),
                    recvBytes.data());
     for (size_t peer = 0; peer < ranks; ++peer) {
       const uint8_t *in = recvStore[peer].data();
       for (const GhostRefresh *r : ghosts)
         for (int half = 0; half < r->halves; ++half)
-          for (int64_t e : r->lists->recv[peer]) {
-            std::memcpy(element(r, half, e), in, r->stride);
-            in += r->stride;
-          }
+          forEachRun(r->lists->recv[peer], [&](int64_t e, int64_t n) {
+            backend->write(element(r, half, e), in, size_t(n) * r->stride);
+            in += size_t(n) * r->stride;
+          });
     }
   }
   if (counted) {
@@ -878,8 +879,8 @@ size_t Session::gatherReplicated(const std::vector<GhostRefresh> &refreshes) {
       bytes[size_t(r)] +=
           size_t(decomposition->count(r)) * g->stride * size_t(g->halves);
   auto block = [&](const GhostRefresh *g, int half, int32_t r) {
-    return reinterpret_cast<uint8_t *>(g->base) +
-           size_t(half * g->elements + decomposition->first(r)) * g->stride;
+    return g->base +
+           DevicePtr(half * g->elements + decomposition->first(r)) * g->stride;
   };
   // MPI wants the contribution apart from the gathered array.
   std::vector<uint8_t> mine(bytes[size_t(me)]);
@@ -887,7 +888,7 @@ size_t Session::gatherReplicated(const std::vector<GhostRefresh> &refreshes) {
   size_t own = size_t(decomposition->count(me));
   for (const GhostRefresh *g : whole)
     for (int half = 0; half < g->halves; ++half) {
-      std::memcpy(out, block(g, half, me), own * g->stride);
+      backend->read(out, block(g, half, me), own * g->stride);
       out += own * g->stride;
     }
   size_t all = 0;
@@ -901,7 +902,7 @@ size_t Session::gatherReplicated(const std::vector<GhostRefresh> &refreshes) {
     for (const GhostRefresh *g : whole)
       for (int half = 0; half < g->halves; ++half) {
         if (r != me)
-          std::memcpy(block(g, half, r), in, items * g->stride);
+          backend->write(block(g, half, r), in, items * g->stride);
         in += items * g->stride;
       }
   }

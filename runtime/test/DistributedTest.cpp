@@ -511,15 +511,16 @@ TEST(Distributed, Refusals) {
                  "bundle 'decay.simb' was not compiled for distributed runs: "
                  "compile it with sim-translate --sim-distributed");
   }
+  // CUDA takes a distributed plan like the CPU: what stops it here is what
+  // CUDA lacks (no PTX in the hand-written bundle, or no driver), not the
+  // communicator.
   auto bundle = ring(Boundary::Wrap);
   sim_session_options cuda = ringOptions(4, world.communicator(0));
   cuda.backend = SIM_BACKEND_CUDA;
   try {
     Session session(bundle, cuda);
-    FAIL() << "no error";
   } catch (const Error &error) {
-    EXPECT_EQ(error.status, SIM_ERROR_DISTRIBUTED);
-    EXPECT_STREQ(error.what(), "distributed runs use the CPU backend");
+    EXPECT_NE(error.status, SIM_ERROR_DISTRIBUTED) << error.what();
   }
   // The reference executor follows every item in one process.
   sim_session_options reference = ringOptions(4, world.communicator(0));
@@ -531,8 +532,7 @@ TEST(Distributed, Refusals) {
     EXPECT_EQ(error.status, SIM_ERROR_DISTRIBUTED);
     EXPECT_STREQ(error.what(),
                  "the reference executor runs on one process and takes no "
-                 "communicator; distributed runs use the plan executor on "
-                 "the CPU");
+                 "communicator; distributed runs use the plan executor");
   }
 }
 

@@ -1102,6 +1102,8 @@ int runDistributed(Options options, int &argc, char **&argv) {
   world = mpi.communicator();
   worldRank = mpi.rank();
   worldSize = mpi.size();
+  // One GPU per rank of a machine.
+  options.device += mpi.localRank();
   try {
     // Rank 0 prints the report and the output rows.
     if (!printing() && !std::freopen("/dev/null", "w", stdout))

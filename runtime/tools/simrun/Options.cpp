@@ -393,9 +393,10 @@ void declareOptions(CLI::App &app, Options &options, std::string &backend,
       ->disable_flag_override();
   app.add_flag("--distributed", options.distributed,
                "run on every rank of mpirun (MPI_COMM_WORLD), each\n"
-               "a block of the range, on the CPU backend; the\n"
-               "bundle must be compiled with sim-translate\n"
-               "--sim-distributed (rank 0 prints and writes files)")
+               "a block of the range; the bundle must be compiled\n"
+               "with sim-translate --sim-distributed (rank 0 prints\n"
+               "and writes files; on CUDA the ranks of a machine\n"
+               "take devices --device, --device + 1, ...)")
       ->disable_flag_override();
   app.add_flag("--no-init-check", options.noInitCheck,
                "skip the check that every buffer's init is what\n"
@@ -508,11 +509,9 @@ Options parseOptions(int argc, const char *const *argv) {
   if (!strategy.empty())
     sim_strategy_parse(strategy.c_str(), &options.strategy);
   if (options.distributed) {
-    if (options.backend == SIM_BACKEND_CUDA ||
-        options.backend == SIM_BACKEND_REFERENCE)
-      usageError(std::string("--distributed runs on the CPU backend, not ") +
-                 sim_backend_name(options.backend));
-    options.backend = SIM_BACKEND_CPU;
+    if (options.backend == SIM_BACKEND_REFERENCE)
+      usageError("--distributed runs the plan executor, not the reference "
+                 "executor (--check compares with it)");
   }
   for (const std::string &set : sets) {
     size_t equals = set.find('=');

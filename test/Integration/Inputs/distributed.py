@@ -2,7 +2,7 @@
 """Runs one bundle on one process and on N ranks (sim-run --distributed)
 and checks that they agree bit for bit.
 
-For each strategy it runs `sim-run BUNDLE --backend cpu --strategy S
+For each strategy it runs `sim-run BUNDLE --backend B --strategy S
 --steps N --dump --json` once on one process and once per rank count with
 `MPIRUN -n RANKS sim-run ... --distributed`, then compares every dumped
 buffer's bytes, the evaluation counters, big steps, the histogram of big
@@ -57,6 +57,9 @@ def main():
     parser.add_argument("--steps", type=int, required=True)
     parser.add_argument("--set", action="append", default=[])
     parser.add_argument("--group-size", type=int, default=0)
+    parser.add_argument("--backend", default="cpu",
+                        help="the backend of both the one-process run and "
+                        "the ranks (cpu or cuda)")
     parser.add_argument("--ranks", type=int, nargs="+", default=[2, 3])
     parser.add_argument("--strategies", nargs="+",
                         default=["simple", "traditional", "hip", "hip-cache"])
@@ -81,7 +84,7 @@ def main():
             with open(folder + ".json") as report:
                 return dumps(folder), json.load(report)
 
-        one = part("one", [], ["--backend", "cpu"])
+        one = part("one", [], ["--backend", args.backend])
         if one is None:
             print("DIFFERS: %s one process failed" % strategy)
             failed = True
@@ -89,7 +92,7 @@ def main():
         for ranks in args.ranks:
             many = part("ranks%d" % ranks,
                         shlex.split(args.mpirun) + ["-n", str(ranks)],
-                        ["--distributed"])
+                        ["--distributed", "--backend", args.backend])
             if many is None:
                 print("DIFFERS: %s ranks %d failed" % (strategy, ranks))
                 failed = True
