@@ -395,16 +395,18 @@ TEST(Distributed, OneProcessWithoutCommunicatorRunsTheSameCode) {
   EXPECT_EQ(one.metrics.halo_exchanges, one.metrics.big_steps);
 }
 
-/// A NaN set into one rank's block: every rank stops with the message
-/// one process gives (--check-finite), naming the global item.
-TEST(Distributed, NonFiniteValuesStopEveryRank) {
-  auto bundle = ring(Boundary::Wrap);
-  auto poisoned = [](Session &session) {
+/// Sets a NaN into item 29 of `buffer` and runs with --check-finite on one
+/// process and on 3 ranks: every rank stops with the message one process
+/// gives, which contains `expected`.
+static void expectEveryRankStops(const std::shared_ptr<const Bundle> &bundle,
+                                 const std::string &buffer,
+                                 const std::string &expected) {
+  auto poisoned = [&](Session &session) {
     session.set("range", "50");
-    std::vector<double> x(50);
-    session.getBuffer("X", x.data(), x.size() * 8);
-    x[29] = std::nan("");
-    session.setBuffer("X", x.data(), x.size() * 8);
+    std::vector<double> values(50);
+    session.getBuffer(buffer, values.data(), values.size() * 8);
+    values[29] = std::nan("");
+    session.setBuffer(buffer, values.data(), values.size() * 8);
     try {
       session.run(10);
     } catch (const Error &error) {
@@ -415,7 +417,7 @@ TEST(Distributed, NonFiniteValuesStopEveryRank) {
   };
   Session single(bundle, ringOptions(4, nullptr, true));
   std::string one = poisoned(single);
-  EXPECT_NE(one.find("(item 29)"), std::string::npos) << one;
+  EXPECT_NE(one.find(expected), std::string::npos) << one;
   ThreadWorld world(3);
   std::vector<std::string> messages(3);
   world.run([&](int32_t r) {
@@ -426,36 +428,18 @@ TEST(Distributed, NonFiniteValuesStopEveryRank) {
     EXPECT_EQ(message, one);
 }
 
+/// A NaN set into one rank's block: every rank stops with the message
+/// one process gives (--check-finite), naming the global item.
+TEST(Distributed, NonFiniteValuesStopEveryRank) {
+  expectEveryRankStops(ring(Boundary::Wrap), "X", "(item 29)");
+}
+
 /// The same in a replicated buffer: each rank looks at its own items of
 /// the whole array, and the ranks agree on the first non-finite one.
 TEST(Distributed, NonFiniteReplicatedValuesStopEveryRank) {
-  auto bundle =
-      parseBytes(serialize(ringContents(Boundary::Wrap, true)), "ring.simb");
-  auto poisoned = [](Session &session) {
-    session.set("range", "50");
-    std::vector<double> y(50);
-    session.getBuffer("Y", y.data(), y.size() * 8);
-    y[29] = std::nan("");
-    session.setBuffer("Y", y.data(), y.size() * 8);
-    try {
-      session.run(10);
-    } catch (const Error &error) {
-      EXPECT_EQ(error.status, SIM_ERROR_NONFINITE);
-      return std::string(error.what());
-    }
-    return std::string("no error");
-  };
-  Session single(bundle, ringOptions(4, nullptr, true));
-  std::string one = poisoned(single);
-  EXPECT_NE(one.find("in buffer 'Y'"), std::string::npos) << one;
-  ThreadWorld world(3);
-  std::vector<std::string> messages(3);
-  world.run([&](int32_t r) {
-    Session session(bundle, ringOptions(4, world.communicator(r), true));
-    messages[size_t(r)] = poisoned(session);
-  });
-  for (const std::string &message : messages)
-    EXPECT_EQ(message, one);
+  expectEveryRankStops(
+      parseBytes(serialize(ringContents(Boundary::Wrap, true)), "ring.simb"),
+      "Y", "in buffer 'Y'");
 }
 
 TEST(Distributed, TooManyRanks) {
