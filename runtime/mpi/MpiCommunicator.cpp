@@ -149,3 +149,25 @@ void World::abort(int status) {
 }
 
 } // namespace sim::mpi
+
+extern "C" {
+
+__attribute__((visibility("default"))) void *
+sim_mpi_open(int *argc, char ***argv, sim_mpi_world_info *info) {
+  auto *world = new sim::mpi::World(argc, argv);
+  info->communicator = world->communicator();
+  info->rank = world->rank();
+  info->size = world->size();
+  info->local_rank = world->localRank();
+  return world;
+}
+
+__attribute__((visibility("default"))) void sim_mpi_close(void *world) {
+  delete static_cast<sim::mpi::World *>(world);
+}
+
+__attribute__((visibility("default"))) void sim_mpi_abort(int status) {
+  sim::mpi::World::abort(status);
+}
+
+} // extern "C"

@@ -3,7 +3,9 @@
 //
 // The runtime never calls MPI (libsim_runtime links no MPI); sim-run
 // --distributed fills a sim_communicator with these MPI_COMM_WORLD calls
-// and hands it to its sessions. Built only when CMake finds MPI.
+// and hands it to its sessions. Built only when CMake finds MPI, as a
+// plugin (libsim_mpi.so) that sim-run opens only for --distributed, so
+// that sim-run itself starts on machines without MPI's libraries.
 //
 //===----------------------------------------------------------------------===//
 
@@ -42,5 +44,21 @@ private:
 };
 
 } // namespace sim::mpi
+
+extern "C" {
+/// The plugin's entry points, which sim-run looks up with dlsym.
+typedef struct sim_mpi_world_info {
+  const sim_communicator *communicator;
+  int rank, size, local_rank;
+} sim_mpi_world_info;
+
+/// Starts MPI (a sim::mpi::World) and describes it in `info`; the handle
+/// goes to sim_mpi_close.
+typedef void *(*sim_mpi_open_fn)(int *argc, char ***argv,
+                                 sim_mpi_world_info *info);
+typedef void (*sim_mpi_close_fn)(void *world);
+/// sim::mpi::World::abort.
+typedef void (*sim_mpi_abort_fn)(int status);
+}
 
 #endif // SIM_RUNTIME_MPI_MPICOMMUNICATOR_H

@@ -37,9 +37,9 @@
 
 #include "sim/Runtime/sim_runtime.h"
 
-#ifdef SIM_HAVE_MPI
 #include "MpiCommunicator.h"
-#endif
+
+#include <dlfcn.h>
 
 #include <cerrno>
 #include <chrono>
@@ -1095,31 +1095,61 @@ int run(Options options) {
   return kExitSuccess;
 }
 
-#ifdef SIM_HAVE_MPI
-/// --distributed: run on every rank of MPI_COMM_WORLD.
+/// The directory of this binary ("" if unknown).
+std::string selfDirectory() {
+  char self[4096];
+  ssize_t length = readlink("/proc/self/exe", self, sizeof self - 1);
+  if (length <= 0)
+    return "";
+  std::string path(self, size_t(length));
+  return path.substr(0, path.rfind('/'));
+}
+
+/// --distributed: run on every rank of MPI_COMM_WORLD, through the MPI
+/// plugin next to the runtime's libraries (opened only here, so that
+/// sim-run runs without MPI's libraries otherwise).
 int runDistributed(Options options, int &argc, char **&argv) {
-  sim::mpi::World mpi(&argc, &argv);
-  world = mpi.communicator();
-  worldRank = mpi.rank();
-  worldSize = mpi.size();
+  std::string path = selfDirectory() + "/" + SIM_MPI_PLUGIN;
+  void *plugin = dlopen(path.c_str(), RTLD_NOW | RTLD_LOCAL);
+  if (!plugin)
+    usageError("--distributed needs the MPI plugin " + path + " (" + dlerror() +
+               "); it is built when CMake finds MPI: install libopenmpi-dev "
+               "and configure the build again");
+  auto open = reinterpret_cast<sim_mpi_open_fn>(dlsym(plugin, "sim_mpi_open"));
+  auto close =
+      reinterpret_cast<sim_mpi_close_fn>(dlsym(plugin, "sim_mpi_close"));
+  auto abort =
+      reinterpret_cast<sim_mpi_abort_fn>(dlsym(plugin, "sim_mpi_abort"));
+  if (!open || !close || !abort)
+    usageError("--distributed: " + path +
+               " is not sim's MPI plugin (it lacks sim_mpi_open, "
+               "sim_mpi_close or sim_mpi_abort)");
+  sim_mpi_world_info info{};
+  void *mpi = open(&argc, &argv, &info);
+  world = info.communicator;
+  worldRank = info.rank;
+  worldSize = info.size;
   // One GPU per rank of a machine.
-  options.device += mpi.localRank();
+  options.device += info.local_rank;
   try {
     // Rank 0 prints the report and the output rows.
     if (!printing() && !std::freopen("/dev/null", "w", stdout))
       runError("cannot silence the standard output of rank " +
                std::to_string(worldRank));
-    return run(std::move(options));
+    int status = run(std::move(options));
+    world = nullptr;
+    close(mpi);
+    return status;
   } catch (const Exit &exit) {
     if (!exit.message.empty())
       std::fprintf(stderr, "sim-run: rank %d: %s\n", worldRank,
                    exit.message.c_str());
     std::fflush(stderr);
     // The other ranks may wait in a collective call for this one.
-    sim::mpi::World::abort(exit.status);
+    abort(exit.status);
+    std::exit(exit.status ? exit.status : 1);
   }
 }
-#endif
 
 } // namespace
 
@@ -1128,14 +1158,8 @@ int main(int argc, char **argv) {
   installSignalHandlers();
   try {
     Options options = parseOptions(argc, argv);
-    if (options.distributed) {
-#ifdef SIM_HAVE_MPI
+    if (options.distributed)
       return runDistributed(std::move(options), argc, argv);
-#else
-      usageError("--distributed: this sim-run was built without MPI (install "
-                 "libopenmpi-dev and configure the build again)");
-#endif
-    }
     return run(std::move(options));
   } catch (const Exit &exit) {
     if (!exit.message.empty())
