@@ -38,11 +38,15 @@ int allreduceSum(void *, int64_t *values, int32_t count) {
   return allreduce(values, count, MPI_SUM);
 }
 
-int exchange(void *, const void *const *send, const size_t *sendBytes,
-             void *const *recv, const size_t *recvBytes) {
+/// The requests of the exchange under way (exchangeBegin to exchangeEnd).
+std::vector<MPI_Request> pending;
+
+/// Posts the receives, then the sends, of one exchange into `requests`.
+int post(const void *const *send, const size_t *sendBytes, void *const *recv,
+         const size_t *recvBytes, std::vector<MPI_Request> &requests) {
   int size = 0;
   MPI_Comm_size(MPI_COMM_WORLD, &size);
-  std::vector<MPI_Request> requests;
+  requests.clear();
   requests.reserve(2 * size_t(size));
   // Receives first, so that every send finds its receive posted.
   for (int r = 0; r < size; ++r) {
@@ -65,11 +69,34 @@ int exchange(void *, const void *const *send, const size_t *sendBytes,
                   &requests.back()) != MPI_SUCCESS)
       return 1;
   }
-  return MPI_Waitall(int(requests.size()), requests.data(),
-                     MPI_STATUSES_IGNORE) == MPI_SUCCESS
-             ? 0
-             : 1;
+  return 0;
 }
+
+int wait(std::vector<MPI_Request> &requests) {
+  int status = MPI_Waitall(int(requests.size()), requests.data(),
+                           MPI_STATUSES_IGNORE) == MPI_SUCCESS
+                   ? 0
+                   : 1;
+  requests.clear();
+  return status;
+}
+
+int exchange(void *, const void *const *send, const size_t *sendBytes,
+             void *const *recv, const size_t *recvBytes) {
+  std::vector<MPI_Request> requests;
+  if (post(send, sendBytes, recv, recvBytes, requests) != 0)
+    return 1;
+  return wait(requests);
+}
+
+int exchangeBegin(void *, const void *const *send, const size_t *sendBytes,
+                  void *const *recv, const size_t *recvBytes) {
+  if (!pending.empty())
+    return 1; // One exchange under way at a time.
+  return post(send, sendBytes, recv, recvBytes, pending);
+}
+
+int exchangeEnd(void *) { return wait(pending); }
 
 int allgather(void *, const void *data, const size_t *bytes, void *out) {
   int size = 0, rank = 0;
@@ -136,6 +163,8 @@ World::World(int *argc, char ***argv) {
   comm.allreduce_sum_i64 = allreduceSum;
   comm.exchange = exchange;
   comm.allgather = allgather;
+  comm.exchange_begin = exchangeBegin;
+  comm.exchange_end = exchangeEnd;
 }
 
 World::~World() {

@@ -57,6 +57,16 @@ public:
   virtual void launch(int kernel, void **params, int64_t groups,
                       int64_t groupSize, int64_t sharedBytes) = 0;
 
+  /// Whether launchGroups runs a part of a launch's groups (the CPU).
+  virtual bool launchesGroupRanges() const { return false; }
+  /// Runs the groups `firstGroup .. firstGroup + groups` of a launch of
+  /// `totalGroups` groups (as `launch` would run them), where
+  /// launchesGroupRanges() says so.
+  virtual void launchGroups(int kernel, void **params, int64_t firstGroup,
+                            int64_t groups, int64_t groupSize) {
+    (void)kernel, (void)params, (void)firstGroup, (void)groups, (void)groupSize;
+  }
+
   /// Kernel time between the two calls; stopTimer waits for the device.
   virtual void startTimer() = 0;
   virtual double stopTimer() = 0;

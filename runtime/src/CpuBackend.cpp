@@ -66,17 +66,18 @@ public:
   /// [0, groups) and returns when all are done.
   /// With `flushSubnormals`, every part runs with subnormals flushed to
   /// zero (SubnormalScope).
+  /// Runs groups `offset .. offset + groups`, split over the workers.
   void run(KernelFn fn, void **params, int64_t groups, int64_t groupSize,
-           bool flushSubnormals) {
+           bool flushSubnormals, int64_t offset = 0) {
     int64_t parts = std::min<int64_t>(size(), groups);
     if (parts <= 1) {
       SubnormalScope mode(flushSubnormals);
-      fn(params, 0, groups, groupSize);
+      fn(params, offset, offset + groups, groupSize);
       return;
     }
     {
       std::lock_guard<std::mutex> lock(mutex);
-      job = {fn, params, groups, groupSize, parts, flushSubnormals};
+      job = {fn, params, groups, groupSize, parts, flushSubnormals, offset};
       pending = int(parts) - 1;
       ++generation;
     }
@@ -103,11 +104,12 @@ private:
     void **params;
     int64_t groups, groupSize, parts;
     bool flushSubnormals;
+    int64_t offset;
   };
 
   void runPart(int64_t part) {
-    int64_t first = job.groups * part / job.parts;
-    int64_t end = job.groups * (part + 1) / job.parts;
+    int64_t first = job.offset + job.groups * part / job.parts;
+    int64_t end = job.offset + job.groups * (part + 1) / job.parts;
     SubnormalScope mode(job.flushSubnormals);
     job.fn(job.params, first, end, job.groupSize);
   }
@@ -222,6 +224,15 @@ public:
     } else {
       pool.run(kernels[kernel], params, groups, groupSize, flushSubnormals);
     }
+    kernelTime += std::chrono::steady_clock::now() - start;
+  }
+
+  bool launchesGroupRanges() const override { return true; }
+  void launchGroups(int kernel, void **params, int64_t firstGroup,
+                    int64_t groups, int64_t groupSize) override {
+    auto start = std::chrono::steady_clock::now();
+    pool.run(kernels[kernel], params, groups, groupSize, flushSubnormals,
+             firstGroup);
     kernelTime += std::chrono::steady_clock::now() - start;
   }
 

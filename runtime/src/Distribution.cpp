@@ -81,6 +81,20 @@ void Communicator::exchange(const void *const *send, const size_t *sendBytes,
     failed("exchange of ghost items");
 }
 
+void Communicator::exchangeBegin(const void *const *send,
+                                 const size_t *sendBytes, void *const *recv,
+                                 const size_t *recvBytes) {
+  if (!overlaps())
+    return exchange(send, sendBytes, recv, recvBytes);
+  if (comm->exchange_begin(comm->user, send, sendBytes, recv, recvBytes) != 0)
+    failed("exchange of ghost items");
+}
+
+void Communicator::exchangeEnd() {
+  if (overlaps() && comm->exchange_end(comm->user) != 0)
+    failed("exchange of ghost items");
+}
+
 void Communicator::allgather(const void *data, const size_t *bytes, void *out) {
   if (comm->allgather(comm->user, data, bytes, out) != 0)
     failed("all-gather");

@@ -50,6 +50,14 @@ public:
   /// entries).
   void exchange(const void *const *send, const size_t *sendBytes,
                 void *const *recv, const size_t *recvBytes);
+  /// The same in two halves where the sim_communicator can (else
+  /// exchangeBegin exchanges and exchangeEnd does nothing); the arrays stay
+  /// valid until exchangeEnd.
+  void exchangeBegin(const void *const *send, const size_t *sendBytes,
+                     void *const *recv, const size_t *recvBytes);
+  void exchangeEnd();
+  /// Whether exchangeBegin returns before the items arrived.
+  bool overlaps() const { return comm->exchange_begin && comm->exchange_end; }
   /// Every rank's bytes[rank] bytes, in rank order into `out`.
   void allgather(const void *data, const size_t *bytes, void *out);
 

@@ -364,6 +364,7 @@ void Session::runPhase(PhaseKind phase) {
   if (distributed()) {
     for (uint32_t index : phases[int(phase)])
       launchDistributed(launches[index], true);
+    endGhosts();
     return;
   }
   for (uint32_t index : phases[int(phase)])
@@ -374,6 +375,7 @@ void Session::runUncounted(PhaseKind phase) {
   if (distributed()) {
     for (uint32_t index : phases[int(phase)])
       launchDistributed(launches[index], false);
+    endGhosts();
     return;
   }
   for (uint32_t index : phases[int(phase)]) {
@@ -389,9 +391,12 @@ void Session::runStepPhase() {
     for (uint32_t index : step) {
       Prepared &p = launches[index];
       launchDistributed(p, true, true);
-      if (options.check_finite && p.launch->component >= 0)
+      if (options.check_finite && p.launch->component >= 0) {
+        endGhosts();
         checkFinite(p);
+      }
     }
+    endGhosts();
     return;
   }
   if (options.check_finite) {
@@ -788,77 +793,141 @@ Session::GhostRefresh Session::refreshOf(size_t buffer, bool snapshot) {
           snapshot ? 1 : 2,
           elementsOf(buffer),
           whole,
-          whole ? nullptr : &ghostsOf(buffer)};
+          whole ? nullptr : &ghostsOf(buffer),
+          buffer};
 }
 
 void Session::refreshGhosts(const std::vector<GhostRefresh> &refreshes,
                             bool counted) {
+  beginGhosts(refreshes, counted);
+  endGhosts();
+}
+
+void Session::beginGhosts(const std::vector<GhostRefresh> &refreshes,
+                          bool counted) {
+  endGhosts();
   // Ghost items move through the backend's reads and writes (runs of
   // consecutive elements each), which wait for the launches before them:
   // host memory on the CPU, staged device memory on CUDA. Every rank has
   // the same entries, so all make the same collective calls (or skip them
-  // alike).
-  size_t total = gatherReplicated(refreshes);
-  std::vector<const GhostRefresh *> ghosts;
+  // alike). Replicated buffers are all-gathered at once.
+  PendingGhosts &p = pendingGhosts;
+  p.counted = counted;
+  p.entries = refreshes.size();
+  p.bytes = gatherReplicated(refreshes);
+  p.ghosts.clear();
   for (const GhostRefresh &r : refreshes)
     if (!r.replicated)
-      ghosts.push_back(&r);
-  if (!ghosts.empty()) {
-    size_t ranks = size_t(comm->size());
-    std::vector<size_t> sendBytes(ranks, 0), recvBytes(ranks, 0);
-    for (const GhostRefresh *r : ghosts)
-      for (size_t peer = 0; peer < ranks; ++peer) {
-        sendBytes[peer] += r->lists->send[peer].size() * r->stride * r->halves;
-        recvBytes[peer] += r->lists->recv[peer].size() * r->stride * r->halves;
+      p.ghosts.push_back(r);
+  p.active = true;
+  if (p.ghosts.empty())
+    return;
+  size_t ranks = size_t(comm->size());
+  p.sendBytes.assign(ranks, 0);
+  p.recvBytes.assign(ranks, 0);
+  for (const GhostRefresh &r : p.ghosts)
+    for (size_t peer = 0; peer < ranks; ++peer) {
+      p.sendBytes[peer] += r.lists->send[peer].size() * r.stride * r.halves;
+      p.recvBytes[peer] += r.lists->recv[peer].size() * r.stride * r.halves;
+    }
+  sendStore.resize(ranks);
+  recvStore.resize(ranks);
+  p.send.assign(ranks, nullptr);
+  p.recv.assign(ranks, nullptr);
+  for (size_t peer = 0; peer < ranks; ++peer) {
+    sendStore[peer].resize(p.sendBytes[peer]);
+    recvStore[peer].resize(p.recvBytes[peer]);
+    p.send[peer] = sendStore[peer].data();
+    p.recv[peer] = recvStore[peer].data();
+    p.bytes += p.sendBytes[peer];
+  }
+  auto element = [&](const GhostRefresh &r, int half, int64_t e) {
+    return r.base + DevicePtr(half * r.elements + e) * r.stride;
+  };
+  for (size_t peer = 0; peer < ranks; ++peer) {
+    uint8_t *out = sendStore[peer].data();
+    for (const GhostRefresh &r : p.ghosts)
+      for (int half = 0; half < r.halves; ++half)
+        forEachRun(r.lists->send[peer], [&](int64_t e, int64_t n) {
+          backend->read(out, element(r, half, e), size_t(n) * r.stride);
+          out += size_t(n) * r.stride;
+        });
+  }
+  std::vector<uint8_t> item;
+  for (const GhostRefresh &r : p.ghosts) {
+    item.resize(r.stride);
+    for (int half = 0; half < r.halves; ++half)
+      for (auto [from, to] : r.lists->local) {
+        backend->read(item.data(), element(r, half, from), r.stride);
+        backend->write(element(r, half, to), item.data(), r.stride);
       }
-    sendStore.resize(ranks);
-    recvStore.resize(ranks);
-    std::vector<const void *> send(ranks);
-    std::vector<void *> recv(ranks);
-    for (size_t peer = 0; peer < ranks; ++peer) {
-      sendStore[peer].resize(sendBytes[peer]);
-      recvStore[peer].resize(recvBytes[peer]);
-      send[peer] = sendStore[peer].data();
-      recv[peer] = recvStore[peer].data();
-      total += sendBytes[peer];
-    }
-    auto element = [&](const GhostRefresh *r, int half, int64_t e) {
-      return r->base + DevicePtr(half * r->elements + e) * r->stride;
+  }
+  comm->exchangeBegin(p.send.data(), p.sendBytes.data(), p.recv.data(),
+                      p.recvBytes.data());
+}
+
+void Session::endGhosts() {
+  PendingGhosts &p = pendingGhosts;
+  if (!p.active)
+    return;
+  p.active = false;
+  if (!p.ghosts.empty()) {
+    comm->exchangeEnd();
+    auto element = [&](const GhostRefresh &r, int half, int64_t e) {
+      return r.base + DevicePtr(half * r.elements + e) * r.stride;
     };
-    for (size_t peer = 0; peer < ranks; ++peer) {
-      uint8_t *out = sendStore[peer].data();
-      for (const GhostRefresh *r : ghosts)
-        for (int half = 0; half < r->halves; ++half)
-          forEachRun(r->lists->send[peer], [&](int64_t e, int64_t n) {
-            backend->read(out, element(r, half, e), size_t(n) * r->stride);
-            out += size_t(n) * r->stride;
-          });
-    }
-    std::vector<uint8_t> item;
-    for (const GhostRefresh *r : ghosts) {
-      item.resize(r->stride);
-      for (int half = 0; half < r->halves; ++half)
-        for (auto [from, to] : r->lists->local) {
-          backend->read(item.data(), element(r, half, from), r->stride);
-          backend->write(element(r, half, to), item.data(), r->stride);
-        }
-    }
-    comm->exchange(send.data(), sendBytes.data(), recv.data(),
-                   recvBytes.data());
-    for (size_t peer = 0; peer < ranks; ++peer) {
+    for (size_t peer = 0; peer < size_t(comm->size()); ++peer) {
       const uint8_t *in = recvStore[peer].data();
-      for (const GhostRefresh *r : ghosts)
-        for (int half = 0; half < r->halves; ++half)
-          forEachRun(r->lists->recv[peer], [&](int64_t e, int64_t n) {
-            backend->write(element(r, half, e), in, size_t(n) * r->stride);
-            in += size_t(n) * r->stride;
+      for (const GhostRefresh &r : p.ghosts)
+        for (int half = 0; half < r.halves; ++half)
+          forEachRun(r.lists->recv[peer], [&](int64_t e, int64_t n) {
+            backend->write(element(r, half, e), in, size_t(n) * r.stride);
+            in += size_t(n) * r.stride;
           });
     }
   }
-  if (counted) {
-    haloExchanges += int64_t(refreshes.size());
-    exchangedBytes += int64_t(total);
+  if (p.counted) {
+    haloExchanges += int64_t(p.entries);
+    exchangedBytes += int64_t(p.bytes);
   }
+}
+
+bool Session::readsPendingGhosts(const Prepared &p) const {
+  if (!pendingGhosts.active)
+    return false;
+  for (const schema::Arg &arg : p.launch->args)
+    if (arg.kind() == ArgKind::Buffer || arg.kind() == ArgKind::Snapshot)
+      for (const GhostRefresh &r : pendingGhosts.ghosts)
+        if (r.buffer == arg.index())
+          return true;
+  return false;
+}
+
+void Session::launchAroundExchange(Prepared &p) {
+  // The groups whose items' windows (the halos of the buffers on their
+  // way) stay inside the block need no ghost item: [lo, hi).
+  int64_t below = 0, above = 0;
+  for (const GhostRefresh &r : pendingGhosts.ghosts) {
+    below = std::max<int64_t>(below, plan_->buffers[r.buffer]->halo_below);
+    above = std::max<int64_t>(above, plan_->buffers[r.buffer]->halo_above);
+  }
+  int64_t size = p.groupSize;
+  int64_t lo = (below + size - 1) / size;
+  int64_t hi = count >= above ? std::min(p.groups, (count - above) / size) : 0;
+  bool split = p.launch->shape == LaunchShape::Items &&
+               backend->launchesGroupRanges() && comm->overlaps() && lo < hi;
+  if (!split) {
+    endGhosts();
+    backend->launch(p.kernel, p.params.data(), p.groups, p.groupSize,
+                    p.sharedBytes);
+    return;
+  }
+  backend->launchGroups(p.kernel, p.params.data(), lo, hi - lo, size);
+  endGhosts();
+  if (lo > 0)
+    backend->launchGroups(p.kernel, p.params.data(), 0, lo, size);
+  if (hi < p.groups)
+    backend->launchGroups(p.kernel, p.params.data(), hi, p.groups - hi, size);
 }
 
 size_t Session::gatherReplicated(const std::vector<GhostRefresh> &refreshes) {
@@ -935,8 +1004,11 @@ void Session::launchDistributed(Prepared &p, bool counted, bool step) {
     if (counted)
       ++metrics.host_syncs;
   }
-  backend->launch(p.kernel, p.params.data(), p.groups, p.groupSize,
-                  p.sharedBytes);
+  if (readsPendingGhosts(p))
+    launchAroundExchange(p);
+  else
+    backend->launch(p.kernel, p.params.data(), p.groups, p.groupSize,
+                    p.sharedBytes);
   if (counted)
     ++metrics.launches;
   if (p.exchanges.empty())
@@ -951,7 +1023,10 @@ void Session::launchDistributed(Prepared &p, bool counted, bool step) {
     if (fixed[kSlotSize] == 0 && fixed[kSlotBegin] >= fixed[kSlotEnd])
       return;
   }
-  refreshGhosts(p.exchanges, counted);
+  // The items travel while the next launches compute what needs none of
+  // them (launchAroundExchange); endGhosts puts them in place before
+  // anything else looks.
+  beginGhosts(p.exchanges, counted);
 }
 
 void Session::gatherItems(DevicePtr array, int64_t own, size_t stride,

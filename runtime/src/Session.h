@@ -114,6 +114,8 @@ private:
     int64_t elements;
     bool replicated;
     const GhostLists *lists;
+    /// The plan buffer.
+    size_t buffer;
   };
   /// A launch with its parameter values laid out for the backend.
   struct Prepared {
@@ -176,6 +178,18 @@ private:
   /// exchange for the ghosts, one all-gather for the replicated buffers);
   /// `counted` adds them to the run's metrics.
   void refreshGhosts(const std::vector<GhostRefresh> &refreshes, bool counted);
+  /// refreshGhosts in two halves: beginGhosts sends the ghost items (after
+  /// ending the exchange under way, if any), endGhosts waits for them and
+  /// puts them in place; the launches between compute what needs none.
+  void beginGhosts(const std::vector<GhostRefresh> &refreshes, bool counted);
+  void endGhosts();
+  /// Launches `p` while the exchange under way travels: its groups whose
+  /// items' windows stay inside the block first, then (the ghost items in
+  /// place) the others; or, where that cannot be, after the exchange.
+  void launchAroundExchange(Prepared &p);
+  /// Whether `p` takes a buffer (or snapshot) whose ghost items are under
+  /// way.
+  bool readsPendingGhosts(const Prepared &p) const;
   /// The all-gather of the replicated entries of `refreshes`: every rank's
   /// block into place in every half. Returns the bytes this rank sent.
   size_t gatherReplicated(const std::vector<GhostRefresh> &refreshes);
@@ -224,6 +238,16 @@ private:
   /// Per (below, above, boundary): the ghost lists of the decomposition.
   std::map<std::tuple<uint32_t, uint32_t, int>, GhostLists> ghostCache;
   std::vector<std::vector<uint8_t>> sendStore, recvStore;
+  /// The exchange under way (beginGhosts to endGhosts): its ghost entries,
+  /// the arrays the communicator holds, and what it counts once done.
+  struct PendingGhosts {
+    bool active = false, counted = false;
+    std::vector<GhostRefresh> ghosts;
+    std::vector<const void *> send;
+    std::vector<void *> recv;
+    std::vector<size_t> sendBytes, recvBytes;
+    size_t entries = 0, bytes = 0;
+  } pendingGhosts;
   std::vector<uint8_t> gatherStore;
   bool agreed = false;
   /// Since the session began (a run's metrics take the difference).

@@ -39,7 +39,8 @@ public:
       : ranks(ranks), values(size_t(ranks)), sends(size_t(ranks)),
         sendBytes(size_t(ranks)), data(size_t(ranks)) {
     for (int32_t r = 0; r < ranks; ++r) {
-      Rank rank;
+      // Zeroed: the optional functions (exchange_begin/end) stay null.
+      Rank rank{};
       rank.world = this;
       rank.comm.user = nullptr;
       rank.comm.rank = r;

@@ -184,7 +184,9 @@ typedef struct sim_session sim_session;
 /// it never calls MPI itself (runtime/mpi/ implements them with MPI for
 /// sim-run --distributed). Every function returns 0 on success and
 /// non-zero on failure (then the session fails with
-/// SIM_ERROR_DISTRIBUTED).
+/// SIM_ERROR_DISTRIBUTED). Zero the struct before filling it in
+/// (`sim_communicator comm = {0};`): optional functions left null are not
+/// called.
 typedef struct sim_communicator {
   void *user;
   /// This process's rank and the number of ranks.
@@ -202,6 +204,14 @@ typedef struct sim_communicator {
   /// order into `out` on every rank (`bytes` has `size` entries).
   int (*allgather)(void *user, const void *data, const size_t *bytes,
                    void *out);
+  /// Optional (both or neither): `exchange` in two halves, so that the
+  /// runtime computes the items that need no ghost items while they
+  /// travel. `exchange_begin` starts it (the arrays stay valid until
+  /// `exchange_end`, which waits for it); at most one is under way.
+  int (*exchange_begin)(void *user, const void *const *send,
+                        const size_t *send_bytes, void *const *recv,
+                        const size_t *recv_bytes);
+  int (*exchange_end)(void *user);
 } sim_communicator;
 
 typedef struct sim_session_options {
