@@ -841,15 +841,12 @@ void Session::beginGhosts(const std::vector<GhostRefresh> &refreshes,
     p.recv[peer] = recvStore[peer].data();
     p.bytes += p.sendBytes[peer];
   }
-  auto element = [&](const GhostRefresh &r, int half, int64_t e) {
-    return r.base + DevicePtr(half * r.elements + e) * r.stride;
-  };
   for (size_t peer = 0; peer < ranks; ++peer) {
     uint8_t *out = sendStore[peer].data();
     for (const GhostRefresh &r : p.ghosts)
       for (int half = 0; half < r.halves; ++half)
         forEachRun(r.lists->send[peer], [&](int64_t e, int64_t n) {
-          backend->read(out, element(r, half, e), size_t(n) * r.stride);
+          backend->read(out, r.element(half, e), size_t(n) * r.stride);
           out += size_t(n) * r.stride;
         });
   }
@@ -858,8 +855,8 @@ void Session::beginGhosts(const std::vector<GhostRefresh> &refreshes,
     item.resize(r.stride);
     for (int half = 0; half < r.halves; ++half)
       for (auto [from, to] : r.lists->local) {
-        backend->read(item.data(), element(r, half, from), r.stride);
-        backend->write(element(r, half, to), item.data(), r.stride);
+        backend->read(item.data(), r.element(half, from), r.stride);
+        backend->write(r.element(half, to), item.data(), r.stride);
       }
   }
   comm->exchangeBegin(p.send.data(), p.sendBytes.data(), p.recv.data(),
@@ -873,15 +870,12 @@ void Session::endGhosts() {
   p.active = false;
   if (!p.ghosts.empty()) {
     comm->exchangeEnd();
-    auto element = [&](const GhostRefresh &r, int half, int64_t e) {
-      return r.base + DevicePtr(half * r.elements + e) * r.stride;
-    };
     for (size_t peer = 0; peer < size_t(comm->size()); ++peer) {
       const uint8_t *in = recvStore[peer].data();
       for (const GhostRefresh &r : p.ghosts)
         for (int half = 0; half < r.halves; ++half)
           forEachRun(r.lists->recv[peer], [&](int64_t e, int64_t n) {
-            backend->write(element(r, half, e), in, size_t(n) * r.stride);
+            backend->write(r.element(half, e), in, size_t(n) * r.stride);
             in += size_t(n) * r.stride;
           });
     }

@@ -116,6 +116,10 @@ private:
     const GhostLists *lists;
     /// The plan buffer.
     size_t buffer;
+    /// Where element `e` of half `half` lies.
+    DevicePtr element(int half, int64_t e) const {
+      return base + DevicePtr(half * elements + e) * stride;
+    }
   };
   /// A launch with its parameter values laid out for the backend.
   struct Prepared {
