@@ -83,7 +83,7 @@ def hand_written_key(mangled):
     None for the kernels no sim kernel is compared with (init, advance,
     estimate)."""
     kind = re.search(r"(evaluateKernel|substepKernel)I", mangled)
-    scene = re.search(r"NS_\d+(" + "|".join(SCENES) + r")E", mangled)
+    scene = re.search(r"\d(" + "|".join(SCENES) + r")(?:E|\d)", mangled)
     component = re.search(r"ComponentILi(\d+)E", mangled)
     if not (kind and scene and component):
         return None
