@@ -130,6 +130,50 @@ def SimLowerToReference : Pass<"sim-lower-to-reference", "::mlir::ModuleOp"> {
   ];
 }
 
+def SimVectorizeLanes : Pass<"sim-vectorize-lanes"> {
+  let summary = "Run the lanes of a CPU kernel's group in SIMD registers";
+  let description = [{
+    A CPU kernel runs a group phase by phase, each phase a loop over the
+    group's lanes (`scf.for` marked `simplan.lanes`). The lanes of a phase
+    are independent, as the threads of a GPU block between two barriers
+    are, so this pass runs `width` lanes at once (SPMD on SIMD, as ISPC
+    does): every value that differs between lanes becomes a vector of
+    `width` lanes (a `vector<N x T>` value of one lane becomes `N` vectors,
+    one per element, so lane `l` of every vector is item `l` of the chunk);
+    values equal for all lanes stay scalars. Branches on a lane-dependent
+    condition run under a mask and are skipped when no lane takes them;
+    loads of consecutive items become one wide load (de-interleaved with
+    shuffles), other loads gathers, stores masked scatters. The lanes left
+    over when the group size is not a multiple of `width` run in the
+    original loop. Each lane computes exactly the operations of the scalar
+    loop in the same order (fused multiply-adds, libm calls per element,
+    ordered reductions), so the results are bit for bit those of the
+    scalar code. A loop with an operation the pass cannot widen (a
+    `scf.while`, a call, an atomic, a store of different lanes to one
+    element, a memref it cannot address) is left as it is.
+
+    ```
+    sim-opt kernels.mlir --sim-vectorize-lanes=width=16
+    ```
+  }];
+  let options = [
+    Option<"width", "width", "int64_t", "16",
+           "Lanes per SIMD chunk (a power of two from 2 to 64)">,
+    Option<"report", "report", "bool", "false",
+           "A remark at every lane loop: widened, or why it stays scalar">,
+  ];
+  let statistics = [
+    Statistic<"numWidened", "widened-loops", "Lane loops run in SIMD chunks">,
+    Statistic<"numScalar", "scalar-loops",
+              "Lane loops left scalar (an op the pass cannot widen)">,
+  ];
+  let dependentDialects = [
+    "::mlir::arith::ArithDialect", "::mlir::LLVM::LLVMDialect",
+    "::mlir::memref::MemRefDialect", "::mlir::scf::SCFDialect",
+    "::mlir::vector::VectorDialect"
+  ];
+}
+
 def SimFusedMultiplyAdd : Pass<"sim-fused-multiply-add"> {
   let summary = "Lower vector.fma to llvm.intr.fma, fused on every target";
   let description = [{

@@ -77,6 +77,9 @@ public:
                    function_ref<void(const Lane &)> body) override {
     auto loop =
         scf::ForOp::create(b, b.loc, b.index(0), groupSize(kernel), b.index(1));
+    // The lanes of a phase are independent (GPU threads between barriers):
+    // --sim-vectorize-lanes may run them side by side.
+    loop->setAttr(simplan::PlanDialect::getLanesAttrName(), b.getUnitAttr());
     OpBuilder::InsertionGuard guard(b);
     b.setInsertionPoint(loop.getBody()->getTerminator());
     Value lane = loop.getInductionVar();

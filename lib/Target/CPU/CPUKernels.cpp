@@ -98,6 +98,7 @@ compileSharedObjects(OwningOpRef<ModuleOp> module, Location loc,
   PassManager pm(module->getContext());
   // vector.fma rounds once here as on the GPU (not llvm.intr.fmuladd).
   pm.addPass(createSimFusedMultiplyAdd());
+  pm.addPass(createSimVectorizeLanes());
   pm.addPass(createSCFToControlFlowPass());
   pm.addPass(createConvertVectorToLLVMPass());
   pm.addPass(createConvertMathToLLVMPass());

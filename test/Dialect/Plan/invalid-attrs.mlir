@@ -74,3 +74,19 @@ func.func @k() attributes {simplan.stride = 4 : i64} {
 
 // expected-error @+1 {{'simplan.clock_slots' is a record of a kernel function, but 'test.op' is not a function}}
 "test.op"() {simplan.clock_slots = 12 : i64} : () -> ()
+
+// -----
+
+// expected-error @+1 {{'simplan.lanes' marks the loop over a group's lanes, but 'test.op' is not an scf.for}}
+"test.op"() {simplan.lanes} : () -> ()
+
+// -----
+
+func.func @k(%n: index) {
+  %c0 = arith.constant 0 : index
+  %c1 = arith.constant 1 : index
+  // expected-error @+1 {{'simplan.lanes' must be a unit attribute}}
+  scf.for %i = %c0 to %n step %c1 {
+  } {simplan.lanes = 1 : i64}
+  return
+}

@@ -102,6 +102,15 @@ LogicalResult PlanDialect::verifyOperationAttribute(Operation *op,
                                                     NamedAttribute attribute) {
   StringRef name = attribute.getName().getValue();
   Attribute value = attribute.getValue();
+  if (name == getLanesAttrName()) {
+    if (!isa<UnitAttr>(value))
+      return op->emitError() << "'" << name << "' must be a unit attribute";
+    if (op->getName().getStringRef() != "scf.for")
+      return op->emitError()
+             << "'" << name << "' marks the loop over a group's lanes, but '"
+             << op->getName() << "' is not an scf.for";
+    return success();
+  }
   if (name == getSharedAttrName()) {
     auto shared = dyn_cast<DenseI64ArrayAttr>(value);
     if (!shared || shared.size() != 2 || shared[0] < 0 || shared[1] < 0)

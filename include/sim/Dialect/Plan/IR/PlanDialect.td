@@ -68,6 +68,11 @@ def Plan_Dialect : Dialect {
     static ::llvm::StringRef getClockSlotsAttrName() {
       return "simplan.clock_slots";
     }
+    /// On an `scf.for` of a CPU kernel: the loop over the lanes of a group
+    /// in one phase, whose iterations are independent (the threads of a GPU
+    /// block between two barriers), so --sim-vectorize-lanes may run them
+    /// in SIMD lanes.
+    static ::llvm::StringRef getLanesAttrName() { return "simplan.lanes"; }
   }];
 }
 

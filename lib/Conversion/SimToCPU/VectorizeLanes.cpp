@@ -1,0 +1,1021 @@
+//===- VectorizeLanes.cpp - a group's lanes in SIMD registers -------------===//
+//
+// SPMD on SIMD for the CPU kernels. A phase of a group is a loop over its
+// lanes whose iterations are independent (GPU threads between barriers;
+// SimToCPU marks it `simplan.lanes`), and the body of one lane is scalar code
+// with loops and branches of its own, so LLVM's loop vectoriser, which only
+// takes innermost loops, cannot run lanes side by side. This pass does: it
+// re-emits the body once for a chunk of `width` lanes, each lane-dependent
+// ("varying") value a vector whose lane l belongs to item l of the chunk.
+// A value of type vector<N x T> per lane becomes N vectors of `width` T (one
+// per element), so that the component's own vec4 arithmetic becomes four
+// full-width SIMD operations instead of one item's four lanes in one
+// register. Lane-independent ("uniform") values stay as they are.
+//
+// Every lane executes exactly the scalar operations of the original loop, in
+// the same order, so the results are bit for bit the scalar ones: elementwise
+// ops are the same ops on vectors, libm functions are called per element,
+// reductions combine in the order the scalar lowering does. Lanes a branch
+// does not take still compute its values (discarded by a select), but they
+// never touch memory they would not have touched: loads use the address of
+// an active lane, stores are masked, integer divisions divide by one.
+//
+//===----------------------------------------------------------------------===//
+
+#include "sim/Conversion/Passes.h"
+
+#include "mlir/Dialect/LLVMIR/LLVMDialect.h"
+#include "mlir/Dialect/Vector/IR/VectorOps.h"
+#include "mlir/IR/IRMapping.h"
+#include "mlir/Interfaces/SideEffectInterfaces.h"
+
+#include "llvm/Support/Debug.h"
+
+#define DEBUG_TYPE "sim-vectorize-lanes"
+
+namespace mlir::sim {
+#define GEN_PASS_DEF_SIMVECTORIZELANES
+#include "sim/Conversion/Passes.h.inc"
+} // namespace mlir::sim
+
+using namespace mlir;
+
+namespace {
+
+/// The largest vector<N x T> of one lane that is split into N vectors.
+constexpr int64_t kMaxElements = 64;
+
+/// A value of the widened loop: uniform (`parts` is the one scalar value of
+/// the original type) or varying (one vector<width x T> per element of the
+/// original: one part for a scalar, N for a vector<N x T>).
+struct Wide {
+  SmallVector<Value, 4> parts;
+  bool varying = false;
+};
+
+/// Whether `type` can be held per lane: an integer, index or float scalar, or
+/// a one-dimensional fixed vector of those.
+static bool isLaneType(Type type) {
+  auto scalarOk = [](Type t) { return t.isIntOrIndexOrFloat(); };
+  if (auto vector = dyn_cast<VectorType>(type))
+    return vector.getRank() == 1 && !vector.isScalable() &&
+           vector.getNumElements() <= kMaxElements &&
+           scalarOk(vector.getElementType());
+  return scalarOk(type);
+}
+
+static int64_t elementCount(Type type) {
+  if (auto vector = dyn_cast<VectorType>(type))
+    return vector.getNumElements();
+  return 1;
+}
+
+static Type elementType(Type type) { return getElementTypeOrSelf(type); }
+
+/// The distance in scalars between consecutive elements of a memref of
+/// `type`. LLVM's x86-64 data layout gives a vector its size rounded up to a
+/// power of two (vector<3xf32> takes 16 bytes), and the memref lowering
+/// indexes elements by that size.
+static int64_t elementStride(Type type) {
+  return llvm::PowerOf2Ceil(elementCount(type));
+}
+
+/// A memref the widened loop can address element by element through a
+/// pointer: rank 1, identity layout (offset 0, stride 1), and elements that
+/// are whole bytes (no i1, no index).
+static bool isAddressable(Value memref) {
+  auto type = dyn_cast<MemRefType>(memref.getType());
+  if (!type || type.getRank() != 1 || !type.getLayout().isIdentity() ||
+      !isLaneType(type.getElementType()))
+    return false;
+  Type scalar = elementType(type.getElementType());
+  return !scalar.isIndex() && scalar.getIntOrFloatBitWidth() % 8 == 0;
+}
+
+/// A builder at the end of `block` after removing the terminator a builder of
+/// scf.if or scf.for may have put there (the caller yields its own).
+static OpBuilder emptyBody(Block *block) {
+  if (!block->empty() && block->mightHaveTerminator())
+    block->getTerminator()->erase();
+  return OpBuilder::atBlockEnd(block);
+}
+
+static bool isIntegerDivision(Operation *op) {
+  return isa<arith::DivSIOp, arith::DivUIOp, arith::RemSIOp, arith::RemUIOp,
+             arith::CeilDivSIOp, arith::CeilDivUIOp, arith::FloorDivSIOp>(op);
+}
+
+/// Ops that compute per element: arith, math and vector.fma.
+static bool isElementwise(Operation *op) {
+  return op->getNumRegions() == 0 && op->getNumResults() == 1 &&
+         (op->hasTrait<OpTrait::Elementwise>() || isa<vector::FMAOp>(op));
+}
+
+class LaneVectorizer {
+public:
+  LaneVectorizer(scf::ForOp loop, int64_t width) : loop(loop), width(width) {}
+
+  /// Finds the varying values and checks that every op can be widened; on
+  /// failure `why` names the first op that cannot.
+  LogicalResult analyze(std::string &why);
+  /// Emits the widened loop for the whole chunks before the original loop,
+  /// which keeps the remaining lanes.
+  void rewrite();
+
+private:
+  bool isVarying(Value value) const { return varying.contains(value); }
+  LogicalResult check(Operation *op, std::string &why);
+
+  // Emission.
+  void widenBlock(OpBuilder &b, Block &block, Value mask);
+  void widenOp(OpBuilder &b, Operation *op, Value mask);
+  void widenIf(OpBuilder &b, scf::IfOp op, Value mask);
+  void widenFor(OpBuilder &b, scf::ForOp op, Value mask);
+  void widenElementwise(OpBuilder &b, Operation *op, Value mask);
+  void widenLoad(OpBuilder &b, memref::LoadOp op, Value mask);
+  void widenStore(OpBuilder &b, memref::StoreOp op, Value mask);
+  void widenReduction(OpBuilder &b, vector::ReductionOp op);
+  void cloneUniform(OpBuilder &b, Operation *op);
+
+  Wide lookup(Value value) const;
+  /// Element `k` of `value` as a vector of lanes (broadcast if uniform).
+  Value lanePart(OpBuilder &b, Value value, int64_t k);
+  /// All parts of `value` as vectors of lanes.
+  SmallVector<Value> laneParts(OpBuilder &b, Value value);
+  VectorType laneType(Type scalar) const {
+    return VectorType::get({width}, scalar);
+  }
+  /// The types `value` is held in: its own if uniform, else N lane vectors.
+  void heldTypes(Value value, SmallVectorImpl<Type> &types) const;
+  /// `results` from a flat list of held values.
+  void assign(ValueRange results, ValueRange flat);
+  /// The held values of `value` (lane vectors where `value` is varying in the
+  /// widened loop but `source` may be uniform).
+  void appendHeld(OpBuilder &b, Value target, Value source,
+                  SmallVectorImpl<Value> &flat);
+
+  Value constantIndex(OpBuilder &b, int64_t value);
+  Value anyLane(OpBuilder &b, Value mask);
+  Value allLanes(OpBuilder &b, Value mask);
+  Value basePointer(OpBuilder &b, Value memref);
+  Value contiguousCheck(OpBuilder &b, Value index, Value mask);
+
+  scf::ForOp loop;
+  int64_t width;
+  Location loc = loop.getLoc();
+  DenseSet<Value> varying;
+  /// Values proven to be `uniform + lane` (consecutive items of the chunk).
+  DenseSet<Value> consecutive;
+  DenseMap<Value, Wide> values;
+  DenseMap<Value, Value> pointers;
+  Value iota;
+  OpBuilder::InsertPoint preheader;
+};
+
+} // namespace
+
+//===----------------------------------------------------------------------===//
+// Analysis
+//===----------------------------------------------------------------------===//
+
+LogicalResult LaneVectorizer::analyze(std::string &why) {
+  if (!loop.getInitArgs().empty()) {
+    why = "the lane loop carries values";
+    return failure();
+  }
+  std::optional<int64_t> step = getConstantIntValue(loop.getStep());
+  if (!step || *step != 1) {
+    why = "the lane loop's step is not 1";
+    return failure();
+  }
+  varying.insert(loop.getInductionVar());
+  consecutive.insert(loop.getInductionVar());
+  // Lane dependence flows along operands, branch conditions and loop-carried
+  // values; iterate until nothing changes (loop-carried values may become
+  // varying through their yields).
+  bool changed = true;
+  auto mark = [&](Value value) {
+    if (varying.insert(value).second)
+      changed = true;
+  };
+  while (changed) {
+    changed = false;
+    loop.getBody()->walk([&](Operation *op) {
+      if (auto ifOp = dyn_cast<scf::IfOp>(op)) {
+        bool laneCondition = isVarying(ifOp.getCondition());
+        for (auto [index, result] : llvm::enumerate(ifOp.getResults())) {
+          bool fromBranch = isVarying(ifOp.thenYield().getOperand(index)) ||
+                            (ifOp.elseBlock() &&
+                             isVarying(ifOp.elseYield().getOperand(index)));
+          if (laneCondition || fromBranch)
+            mark(result);
+        }
+        return;
+      }
+      if (auto forOp = dyn_cast<scf::ForOp>(op)) {
+        auto yield = cast<scf::YieldOp>(forOp.getBody()->getTerminator());
+        for (auto [index, result] : llvm::enumerate(forOp.getResults())) {
+          if (isVarying(forOp.getInitArgs()[index]) ||
+              isVarying(yield.getOperand(index))) {
+            mark(result);
+            mark(forOp.getRegionIterArg(index));
+          }
+        }
+        return;
+      }
+      if (op->getNumRegions() != 0)
+        return;
+      if (llvm::any_of(op->getOperands(),
+                       [&](Value v) { return isVarying(v); }))
+        for (Value result : op->getResults())
+          mark(result);
+    });
+  }
+  // `uniform + lane` values: their lanes are consecutive integers.
+  loop.getBody()->walk([&](Operation *op) {
+    if (auto add = dyn_cast<arith::AddIOp>(op)) {
+      Value lhs = add.getLhs(), rhs = add.getRhs();
+      if ((consecutive.contains(lhs) && !isVarying(rhs)) ||
+          (consecutive.contains(rhs) && !isVarying(lhs)))
+        consecutive.insert(add.getResult());
+    }
+  });
+
+  WalkResult result = loop.getBody()->walk([&](Operation *op) {
+    if (failed(check(op, why)))
+      return WalkResult::interrupt();
+    return WalkResult::advance();
+  });
+  return failure(result.wasInterrupted());
+}
+
+LogicalResult LaneVectorizer::check(Operation *op, std::string &why) {
+  auto fail = [&](StringRef reason) {
+    why = (reason + ": " + op->getName().getStringRef()).str();
+    return failure();
+  };
+  for (Value result : op->getResults())
+    if (isVarying(result) && !isLaneType(result.getType()))
+      return fail("a lane-dependent value of a type without lanes");
+  if (isa<scf::YieldOp>(op))
+    return success();
+  if (auto forOp = dyn_cast<scf::ForOp>(op)) {
+    if (isVarying(forOp.getLowerBound()) || isVarying(forOp.getUpperBound()) ||
+        isVarying(forOp.getStep()))
+      return fail("a loop with lane-dependent bounds");
+    for (BlockArgument arg : forOp.getRegionIterArgs())
+      if (isVarying(arg) && !isLaneType(arg.getType()))
+        return fail("a lane-dependent loop value of a type without lanes");
+    return success();
+  }
+  if (isa<scf::IfOp>(op))
+    return success();
+  if (auto load = dyn_cast<memref::LoadOp>(op)) {
+    if (load.getIndices().size() == 1 && !isVarying(load.getIndices()[0]))
+      return success();
+    if (!isAddressable(load.getMemRef()) ||
+        loop->isAncestor(load.getMemRef().getParentRegion()->getParentOp()))
+      return fail("a lane-dependent load from a memref it cannot address");
+    return success();
+  }
+  if (auto store = dyn_cast<memref::StoreOp>(op)) {
+    if (store.getIndices().size() != 1)
+      return fail("a store to a memref of rank other than 1");
+    bool laneIndex = isVarying(store.getIndices()[0]);
+    if (!laneIndex && isVarying(store.getValueToStore()))
+      return fail("lanes that store different values to one element");
+    if (laneIndex &&
+        (!isAddressable(store.getMemRef()) ||
+         loop->isAncestor(store.getMemRef().getParentRegion()->getParentOp())))
+      return fail("a lane-dependent store to a memref it cannot address");
+    return success();
+  }
+  bool anyVarying =
+      llvm::any_of(op->getResults(), [&](Value v) { return isVarying(v); });
+  if (!anyVarying) {
+    // Uniform: cloned as it is, once for all lanes, which only holds for an
+    // op without effects (a repeated store of one value is handled above).
+    if (op->getNumRegions() == 0 && isMemoryEffectFree(op))
+      return success();
+    return fail("an op with effects or regions");
+  }
+  if (isElementwise(op)) {
+    Type resultType = op->getResult(0).getType();
+    for (Value operand : op->getOperands()) {
+      if (!isLaneType(operand.getType()))
+        return fail("an operand without lanes");
+      if (isa<VectorType>(operand.getType()) &&
+          elementCount(operand.getType()) != elementCount(resultType))
+        return fail("operands of different shapes");
+    }
+    return success();
+  }
+  if (auto broadcast = dyn_cast<vector::BroadcastOp>(op)) {
+    if (isa<VectorType>(broadcast.getSourceType()))
+      return fail("a broadcast of a vector");
+    return success();
+  }
+  if (auto extract = dyn_cast<vector::ExtractOp>(op)) {
+    if (!extract.getDynamicPosition().empty() ||
+        extract.getStaticPosition().size() != 1 ||
+        extract.getStaticPosition()[0] < 0)
+      return fail("an extract at a dynamic position");
+    return success();
+  }
+  if (auto insert = dyn_cast<vector::InsertOp>(op)) {
+    if (!insert.getDynamicPosition().empty() ||
+        insert.getStaticPosition().size() != 1 ||
+        insert.getStaticPosition()[0] < 0 ||
+        isa<VectorType>(insert.getValueToStoreType()))
+      return fail("an insert at a dynamic position");
+    return success();
+  }
+  if (isa<vector::ShuffleOp, vector::FromElementsOp>(op))
+    return success();
+  if (auto reduction = dyn_cast<vector::ReductionOp>(op)) {
+    // A reassociating reduction may be lowered in another order.
+    if (auto fastmath = reduction.getFastmathAttr();
+        fastmath &&
+        bitEnumContainsAny(fastmath.getValue(), arith::FastMathFlags::reassoc))
+      return fail("a reassociating reduction");
+    switch (reduction.getKind()) {
+    case vector::CombiningKind::ADD:
+    case vector::CombiningKind::MUL:
+    case vector::CombiningKind::MINUI:
+    case vector::CombiningKind::MINSI:
+    case vector::CombiningKind::MAXUI:
+    case vector::CombiningKind::MAXSI:
+    case vector::CombiningKind::AND:
+    case vector::CombiningKind::OR:
+    case vector::CombiningKind::XOR:
+    case vector::CombiningKind::MINIMUMF:
+    case vector::CombiningKind::MAXIMUMF:
+      return success();
+    default:
+      return fail("a reduction of an unsupported kind");
+    }
+  }
+  return fail("an op it cannot widen");
+}
+
+//===----------------------------------------------------------------------===//
+// Emission helpers
+//===----------------------------------------------------------------------===//
+
+Wide LaneVectorizer::lookup(Value value) const {
+  auto it = values.find(value);
+  if (it != values.end())
+    return it->second;
+  // Defined outside the loop: uniform, used as it is.
+  Wide wide;
+  wide.parts.push_back(value);
+  return wide;
+}
+
+Value LaneVectorizer::constantIndex(OpBuilder &b, int64_t value) {
+  return arith::ConstantIndexOp::create(b, loc, value);
+}
+
+Value LaneVectorizer::lanePart(OpBuilder &b, Value value, int64_t k) {
+  Wide wide = lookup(value);
+  if (wide.varying)
+    return wide.parts[isa<VectorType>(value.getType()) ? k : 0];
+  Value scalar = wide.parts[0];
+  if (isa<VectorType>(value.getType()))
+    scalar = vector::ExtractOp::create(b, loc, scalar, k);
+  return vector::BroadcastOp::create(b, loc, laneType(scalar.getType()),
+                                     scalar);
+}
+
+SmallVector<Value> LaneVectorizer::laneParts(OpBuilder &b, Value value) {
+  SmallVector<Value> parts;
+  for (int64_t k = 0, e = elementCount(value.getType()); k < e; ++k)
+    parts.push_back(lanePart(b, value, k));
+  return parts;
+}
+
+void LaneVectorizer::heldTypes(Value value,
+                               SmallVectorImpl<Type> &types) const {
+  if (!isVarying(value)) {
+    types.push_back(value.getType());
+    return;
+  }
+  types.append(elementCount(value.getType()),
+               laneType(elementType(value.getType())));
+}
+
+void LaneVectorizer::assign(ValueRange results, ValueRange flat) {
+  unsigned position = 0;
+  for (Value result : results) {
+    Wide wide;
+    wide.varying = isVarying(result);
+    unsigned count = wide.varying ? elementCount(result.getType()) : 1;
+    for (unsigned k = 0; k < count; ++k)
+      wide.parts.push_back(flat[position++]);
+    values[result] = wide;
+  }
+}
+
+void LaneVectorizer::appendHeld(OpBuilder &b, Value target, Value source,
+                                SmallVectorImpl<Value> &flat) {
+  if (!isVarying(target)) {
+    flat.push_back(lookup(source).parts[0]);
+    return;
+  }
+  llvm::append_range(flat, laneParts(b, source));
+}
+
+Value LaneVectorizer::anyLane(OpBuilder &b, Value mask) {
+  return vector::ReductionOp::create(b, loc, vector::CombiningKind::OR, mask);
+}
+
+Value LaneVectorizer::allLanes(OpBuilder &b, Value mask) {
+  return vector::ReductionOp::create(b, loc, vector::CombiningKind::AND, mask);
+}
+
+/// The aligned pointer of `memref` as an !llvm.ptr, made once before the
+/// widened loop (every memref it addresses is defined outside the loop).
+Value LaneVectorizer::basePointer(OpBuilder &b, Value memref) {
+  auto it = pointers.find(memref);
+  if (it != pointers.end())
+    return it->second;
+  OpBuilder::InsertionGuard guard(b);
+  b.restoreInsertionPoint(preheader);
+  Value address =
+      memref::ExtractAlignedPointerAsIndexOp::create(b, loc, memref);
+  Value integer = arith::IndexCastOp::create(b, loc, b.getI64Type(), address);
+  Value pointer = LLVM::IntToPtrOp::create(
+      b, loc, LLVM::LLVMPointerType::get(b.getContext()), integer);
+  preheader = b.saveInsertionPoint();
+  pointers[memref] = pointer;
+  return pointer;
+}
+
+/// True (i1) when the lanes of `index` (i64 lanes) are consecutive and every
+/// lane is active, so that one wide access serves the chunk.
+Value LaneVectorizer::contiguousCheck(OpBuilder &b, Value index, Value mask) {
+  Value first = vector::ExtractOp::create(b, loc, index, 0);
+  Value firsts = vector::BroadcastOp::create(b, loc, index.getType(), first);
+  Value iota64 = arith::IndexCastOp::create(b, loc, index.getType(), iota);
+  Value expected = arith::AddIOp::create(b, loc, firsts, iota64);
+  Value equal =
+      arith::CmpIOp::create(b, loc, arith::CmpIPredicate::eq, index, expected);
+  Value all = allLanes(b, equal);
+  if (mask)
+    all = arith::AndIOp::create(b, loc, all, allLanes(b, mask));
+  return all;
+}
+
+//===----------------------------------------------------------------------===//
+// Emission
+//===----------------------------------------------------------------------===//
+
+void LaneVectorizer::widenBlock(OpBuilder &b, Block &block, Value mask) {
+  for (Operation &op : block.without_terminator())
+    widenOp(b, &op, mask);
+}
+
+void LaneVectorizer::cloneUniform(OpBuilder &b, Operation *op) {
+  IRMapping mapping;
+  for (Value operand : op->getOperands())
+    mapping.map(operand, lookup(operand).parts[0]);
+  Operation *clone = b.clone(*op, mapping);
+  for (auto [result, cloned] :
+       llvm::zip(op->getResults(), clone->getResults())) {
+    Wide wide;
+    wide.parts.push_back(cloned);
+    values[result] = wide;
+  }
+}
+
+void LaneVectorizer::widenOp(OpBuilder &b, Operation *op, Value mask) {
+  if (auto ifOp = dyn_cast<scf::IfOp>(op))
+    return widenIf(b, ifOp, mask);
+  if (auto forOp = dyn_cast<scf::ForOp>(op))
+    return widenFor(b, forOp, mask);
+  if (auto load = dyn_cast<memref::LoadOp>(op)) {
+    if (isVarying(load.getIndices()[0]))
+      return widenLoad(b, load, mask);
+    return cloneUniform(b, op);
+  }
+  if (auto store = dyn_cast<memref::StoreOp>(op)) {
+    if (isVarying(store.getIndices()[0]))
+      return widenStore(b, store, mask);
+    // Every active lane stores the same value to one element: once (the
+    // enclosing branches already run only when a lane is active).
+    return cloneUniform(b, op);
+  }
+  if (!llvm::any_of(op->getResults(), [&](Value v) { return isVarying(v); }))
+    return cloneUniform(b, op);
+
+  Wide wide;
+  wide.varying = true;
+  if (auto broadcast = dyn_cast<vector::BroadcastOp>(op)) {
+    Value lanes = lanePart(b, broadcast.getSource(), 0);
+    wide.parts.append(elementCount(broadcast.getResultVectorType()), lanes);
+  } else if (auto extract = dyn_cast<vector::ExtractOp>(op)) {
+    wide.parts.push_back(
+        lanePart(b, extract.getSource(), extract.getStaticPosition()[0]));
+  } else if (auto insert = dyn_cast<vector::InsertOp>(op)) {
+    wide.parts = laneParts(b, insert.getDest());
+    wide.parts[insert.getStaticPosition()[0]] =
+        lanePart(b, insert.getValueToStore(), 0);
+  } else if (auto shuffle = dyn_cast<vector::ShuffleOp>(op)) {
+    SmallVector<Value> both = laneParts(b, shuffle.getV1());
+    llvm::append_range(both, laneParts(b, shuffle.getV2()));
+    Type scalar = elementType(shuffle.getResultVectorType());
+    for (int64_t position : shuffle.getMask()) {
+      if (position < 0 || position >= static_cast<int64_t>(both.size()))
+        wide.parts.push_back(arith::ConstantOp::create(
+            b, loc, laneType(scalar), b.getZeroAttr(laneType(scalar))));
+      else
+        wide.parts.push_back(both[position]);
+    }
+  } else if (auto fromElements = dyn_cast<vector::FromElementsOp>(op)) {
+    for (Value element : fromElements.getElements())
+      wide.parts.push_back(lanePart(b, element, 0));
+  } else if (auto reduction = dyn_cast<vector::ReductionOp>(op)) {
+    return widenReduction(b, reduction);
+  } else {
+    return widenElementwise(b, op, mask);
+  }
+  values[op->getResult(0)] = wide;
+}
+
+void LaneVectorizer::widenElementwise(OpBuilder &b, Operation *op, Value mask) {
+  Value result = op->getResult(0);
+  int64_t count = elementCount(result.getType());
+  Type resultScalar = elementType(result.getType());
+  Wide wide;
+  wide.varying = true;
+  for (int64_t k = 0; k < count; ++k) {
+    SmallVector<Value> operands;
+    for (auto [index, operand] : llvm::enumerate(op->getOperands())) {
+      // A select on one uniform condition stays a scalar select.
+      if (index == 0 && isa<arith::SelectOp>(op) && !isVarying(operand) &&
+          !isa<VectorType>(operand.getType())) {
+        operands.push_back(lookup(operand).parts[0]);
+        continue;
+      }
+      Value lanes = lanePart(b, operand, k);
+      // Lanes that do not run this division divide by one: x86 traps on a
+      // division by zero (and on INT_MIN / -1), whichever lane it is in.
+      if (index == 1 && mask && isIntegerDivision(op)) {
+        Type type = lanes.getType();
+        Value one = arith::ConstantOp::create(
+            b, loc, type,
+            DenseElementsAttr::get(cast<ShapedType>(type),
+                                   b.getIntegerAttr(elementType(type), 1)));
+        lanes = arith::SelectOp::create(b, loc, mask, lanes, one);
+      }
+      operands.push_back(lanes);
+    }
+    OperationState state(loc, op->getName());
+    state.addOperands(operands);
+    state.addTypes(laneType(resultScalar));
+    state.addAttributes(op->getAttrs());
+    wide.parts.push_back(b.create(state)->getResult(0));
+  }
+  values[result] = wide;
+}
+
+void LaneVectorizer::widenReduction(OpBuilder &b, vector::ReductionOp op) {
+  SmallVector<Value> parts = laneParts(b, op.getVector());
+  Type scalar = op.getDest().getType();
+  VectorType lanes = laneType(scalar);
+  auto combine = [&](Value lhs, Value rhs) -> Value {
+    switch (op.getKind()) {
+    case vector::CombiningKind::ADD:
+      if (isa<FloatType>(scalar))
+        return arith::AddFOp::create(b, loc, lhs, rhs);
+      return arith::AddIOp::create(b, loc, lhs, rhs);
+    case vector::CombiningKind::MUL:
+      if (isa<FloatType>(scalar))
+        return arith::MulFOp::create(b, loc, lhs, rhs);
+      return arith::MulIOp::create(b, loc, lhs, rhs);
+    case vector::CombiningKind::MINUI:
+      return arith::MinUIOp::create(b, loc, lhs, rhs);
+    case vector::CombiningKind::MINSI:
+      return arith::MinSIOp::create(b, loc, lhs, rhs);
+    case vector::CombiningKind::MAXUI:
+      return arith::MaxUIOp::create(b, loc, lhs, rhs);
+    case vector::CombiningKind::MAXSI:
+      return arith::MaxSIOp::create(b, loc, lhs, rhs);
+    case vector::CombiningKind::AND:
+      return arith::AndIOp::create(b, loc, lhs, rhs);
+    case vector::CombiningKind::OR:
+      return arith::OrIOp::create(b, loc, lhs, rhs);
+    case vector::CombiningKind::XOR:
+      return arith::XOrIOp::create(b, loc, lhs, rhs);
+    case vector::CombiningKind::MINIMUMF:
+      return arith::MinimumFOp::create(b, loc, lhs, rhs);
+    case vector::CombiningKind::MAXIMUMF:
+      return arith::MaximumFOp::create(b, loc, lhs, rhs);
+    default:
+      llvm_unreachable("checked in analyze");
+    }
+  };
+  // The scalar lowering is an ordered llvm.vector.reduce.* from the
+  // accumulator, or for fadd and fmul without one from +0.0 and 1.0
+  // (convert-vector-to-llvm): the same chain here, element by element.
+  Value total;
+  if (op.getAcc()) {
+    total = lanePart(b, op.getAcc(), 0);
+  } else if (isa<FloatType>(scalar) &&
+             (op.getKind() == vector::CombiningKind::ADD ||
+              op.getKind() == vector::CombiningKind::MUL)) {
+    double start = op.getKind() == vector::CombiningKind::ADD ? 0.0 : 1.0;
+    total = arith::ConstantOp::create(
+        b, loc, lanes,
+        DenseElementsAttr::get(lanes, b.getFloatAttr(scalar, start)));
+  }
+  bool minMaxWithAcc =
+      op.getAcc() && (op.getKind() != vector::CombiningKind::ADD &&
+                      op.getKind() != vector::CombiningKind::MUL);
+  if (minMaxWithAcc) {
+    // Lowered as the reduction of the vector, then combined with the
+    // accumulator (exact for these kinds in any order, but keep it).
+    Value reduced = parts[0];
+    for (Value part : ArrayRef(parts).drop_front())
+      reduced = combine(reduced, part);
+    total = combine(total, reduced);
+  } else {
+    for (Value part : parts)
+      total = total ? combine(total, part) : part;
+  }
+  Wide wide;
+  wide.varying = true;
+  wide.parts.push_back(total);
+  values[op.getDest()] = wide;
+}
+
+void LaneVectorizer::widenIf(OpBuilder &b, scf::IfOp op, Value mask) {
+  SmallVector<Type> types;
+  for (Value result : op.getResults())
+    heldTypes(result, types);
+
+  auto emitBranch = [&](OpBuilder &inner, Block *block, Value branchMask) {
+    SmallVector<Value> flat;
+    if (block) {
+      widenBlock(inner, *block, branchMask);
+      auto yield = cast<scf::YieldOp>(block->getTerminator());
+      for (auto [result, yielded] :
+           llvm::zip(op.getResults(), yield.getOperands()))
+        appendHeld(inner, result, yielded, flat);
+    }
+    scf::YieldOp::create(inner, loc, flat);
+  };
+
+  if (!isVarying(op.getCondition())) {
+    Value condition = lookup(op.getCondition()).parts[0];
+    bool hasElse = op.elseBlock() != nullptr || !types.empty();
+    auto newIf = scf::IfOp::create(b, loc, types, condition, hasElse);
+    {
+      OpBuilder inner = emptyBody(newIf.thenBlock());
+      emitBranch(inner, op.thenBlock(), mask);
+    }
+    if (hasElse) {
+      OpBuilder inner = emptyBody(newIf.elseBlock());
+      emitBranch(inner, op.elseBlock(), mask);
+    }
+    assign(op.getResults(), newIf.getResults());
+    return;
+  }
+
+  // A lane-dependent branch: each side runs under its lanes' mask, only when
+  // one of them takes it; the results are selected per lane.
+  Value condition = lookup(op.getCondition()).parts[0];
+  Value ones = arith::ConstantOp::create(
+      b, loc, condition.getType(),
+      DenseElementsAttr::get(cast<ShapedType>(condition.getType()),
+                             b.getBoolAttr(true)));
+  Value negated = arith::XOrIOp::create(b, loc, condition, ones);
+  auto side = [&](Block *block, Value sideMask) -> SmallVector<Value> {
+    if (mask)
+      sideMask = arith::AndIOp::create(b, loc, mask, sideMask);
+    auto guard = scf::IfOp::create(b, loc, types, anyLane(b, sideMask),
+                                   /*withElse=*/true);
+    OpBuilder inner = emptyBody(guard.thenBlock());
+    emitBranch(inner, block, sideMask);
+    OpBuilder skipped = emptyBody(guard.elseBlock());
+    SmallVector<Value> zeros;
+    for (Type type : types)
+      zeros.push_back(arith::ConstantOp::create(skipped, loc, type,
+                                                skipped.getZeroAttr(type)));
+    scf::YieldOp::create(skipped, loc, zeros);
+    return SmallVector<Value>(guard.getResults());
+  };
+  SmallVector<Value> thenValues = side(op.thenBlock(), condition);
+  SmallVector<Value> elseValues;
+  if (op.elseBlock())
+    elseValues = side(op.elseBlock(), negated);
+  SmallVector<Value> selected;
+  for (auto [index, type] : llvm::enumerate(types))
+    selected.push_back(arith::SelectOp::create(
+        b, loc, condition, thenValues[index], elseValues[index]));
+  assign(op.getResults(), selected);
+}
+
+void LaneVectorizer::widenFor(OpBuilder &b, scf::ForOp op, Value mask) {
+  SmallVector<Value> inits;
+  for (auto [arg, init] : llvm::zip(op.getRegionIterArgs(), op.getInitArgs()))
+    appendHeld(b, arg, init, inits);
+  auto newFor = scf::ForOp::create(b, loc, lookup(op.getLowerBound()).parts[0],
+                                   lookup(op.getUpperBound()).parts[0],
+                                   lookup(op.getStep()).parts[0], inits);
+  Block *body = newFor.getBody();
+  Wide iv;
+  iv.parts.push_back(newFor.getInductionVar());
+  values[op.getInductionVar()] = iv;
+  assign(op.getRegionIterArgs(), newFor.getRegionIterArgs());
+  OpBuilder inner = emptyBody(body);
+  widenBlock(inner, *op.getBody(), mask);
+  auto yield = cast<scf::YieldOp>(op.getBody()->getTerminator());
+  SmallVector<Value> flat;
+  for (auto [arg, yielded] :
+       llvm::zip(op.getRegionIterArgs(), yield.getOperands()))
+    appendHeld(inner, arg, yielded, flat);
+  scf::YieldOp::create(inner, loc, flat);
+  assign(op.getResults(), newFor.getResults());
+}
+
+void LaneVectorizer::widenLoad(OpBuilder &b, memref::LoadOp op, Value mask) {
+  Type element = op.getMemRefType().getElementType();
+  int64_t count = elementCount(element);
+  int64_t stride = elementStride(element);
+  Type scalar = elementType(element);
+  VectorType lanes = laneType(scalar);
+  VectorType i64Lanes = laneType(b.getI64Type());
+  Value pointer = basePointer(b, op.getMemRef());
+  Value indexLanes = lookup(op.getIndices()[0]).parts[0];
+  Value index = arith::IndexCastOp::create(b, loc, i64Lanes, indexLanes);
+  int64_t alignment = scalar.getIntOrFloatBitWidth() / 8;
+  Type pointerType = LLVM::LLVMPointerType::get(b.getContext());
+
+  // One load of `width * stride` scalars from the first lane's element,
+  // split into one vector per element.
+  auto wideLoad = [&](OpBuilder &at) {
+    Value first = vector::ExtractOp::create(at, loc, index, 0);
+    Value offset = first;
+    if (stride != 1)
+      offset = arith::MulIOp::create(
+          at, loc, first,
+          arith::ConstantIntOp::create(at, loc, at.getI64Type(), stride));
+    Value address = LLVM::GEPOp::create(at, loc, pointerType, scalar, pointer,
+                                        ValueRange{offset});
+    Value all = LLVM::LoadOp::create(
+        at, loc, VectorType::get({width * stride}, scalar), address, alignment);
+    SmallVector<Value> parts;
+    if (count == 1) {
+      parts.push_back(all);
+      return parts;
+    }
+    for (int64_t k = 0; k < count; ++k) {
+      SmallVector<int64_t> positions;
+      for (int64_t lane = 0; lane < width; ++lane)
+        positions.push_back(lane * stride + k);
+      parts.push_back(vector::ShuffleOp::create(at, loc, all, all, positions));
+    }
+    return parts;
+  };
+  // Gathers, one per element, at addresses every lane may read: lanes a
+  // branch does not take load from an active lane's element.
+  auto gather = [&](OpBuilder &at) {
+    Value safe = index;
+    if (mask) {
+      Value largest = arith::ConstantOp::create(
+          at, loc, i64Lanes,
+          DenseElementsAttr::get(
+              i64Lanes,
+              at.getI64IntegerAttr(std::numeric_limits<int64_t>::max())));
+      Value active = arith::SelectOp::create(at, loc, mask, index, largest);
+      Value lowest = vector::ReductionOp::create(
+          at, loc, vector::CombiningKind::MINSI, active);
+      Value lowests = vector::BroadcastOp::create(at, loc, i64Lanes, lowest);
+      safe = arith::SelectOp::create(at, loc, mask, index, lowests);
+    }
+    Value base = safe;
+    if (stride != 1)
+      base = arith::MulIOp::create(
+          at, loc, safe,
+          arith::ConstantOp::create(
+              at, loc, i64Lanes,
+              DenseElementsAttr::get(i64Lanes, at.getI64IntegerAttr(stride))));
+    VectorType pointers = VectorType::get({width}, pointerType);
+    Value everyLane = arith::ConstantOp::create(
+        at, loc, laneType(at.getI1Type()),
+        DenseElementsAttr::get(laneType(at.getI1Type()), at.getBoolAttr(true)));
+    Value zero =
+        arith::ConstantOp::create(at, loc, lanes, at.getZeroAttr(lanes));
+    SmallVector<Value> parts;
+    for (int64_t k = 0; k < count; ++k) {
+      Value offsets = base;
+      if (k != 0)
+        offsets = arith::AddIOp::create(
+            at, loc, base,
+            arith::ConstantOp::create(
+                at, loc, i64Lanes,
+                DenseElementsAttr::get(i64Lanes, at.getI64IntegerAttr(k))));
+      Value addresses = LLVM::GEPOp::create(at, loc, pointers, scalar, pointer,
+                                            ValueRange{offsets});
+      parts.push_back(LLVM::masked_gather::create(
+          at, loc, lanes, addresses, everyLane, ValueRange{zero},
+          at.getI32IntegerAttr(alignment)));
+    }
+    return parts;
+  };
+
+  SmallVector<Value> parts;
+  if (!mask && consecutive.contains(op.getIndices()[0])) {
+    parts = wideLoad(b);
+  } else {
+    SmallVector<Type> types(count, lanes);
+    auto choice =
+        scf::IfOp::create(b, loc, types, contiguousCheck(b, index, mask), true);
+    OpBuilder fast = emptyBody(choice.thenBlock());
+    scf::YieldOp::create(fast, loc, wideLoad(fast));
+    OpBuilder slow = emptyBody(choice.elseBlock());
+    scf::YieldOp::create(slow, loc, gather(slow));
+    parts = SmallVector<Value>(choice.getResults());
+  }
+  Wide wide;
+  wide.varying = true;
+  wide.parts.assign(parts.begin(), parts.end());
+  values[op.getResult()] = wide;
+}
+
+/// Interleaves `parts` (count a power of two) into one vector whose element
+/// `lane * count + k` is lane `lane` of part k.
+static Value interleaveLanes(OpBuilder &b, Location loc,
+                             ArrayRef<Value> parts) {
+  if (parts.size() == 1)
+    return parts[0];
+  SmallVector<Value> even, odd;
+  for (auto [k, part] : llvm::enumerate(parts))
+    (k % 2 ? odd : even).push_back(part);
+  Value lhs = interleaveLanes(b, loc, even), rhs = interleaveLanes(b, loc, odd);
+  int64_t length = cast<VectorType>(lhs.getType()).getNumElements();
+  SmallVector<int64_t> positions;
+  for (int64_t i = 0; i < length; ++i) {
+    positions.push_back(i);
+    positions.push_back(length + i);
+  }
+  return vector::ShuffleOp::create(b, loc, lhs, rhs, positions);
+}
+
+void LaneVectorizer::widenStore(OpBuilder &b, memref::StoreOp op, Value mask) {
+  Type element = op.getMemRefType().getElementType();
+  int64_t count = elementCount(element);
+  int64_t stride = elementStride(element);
+  Type scalar = elementType(element);
+  VectorType i64Lanes = laneType(b.getI64Type());
+  Value pointer = basePointer(b, op.getMemRef());
+  Value indexLanes = lookup(op.getIndices()[0]).parts[0];
+  Value index = arith::IndexCastOp::create(b, loc, i64Lanes, indexLanes);
+  SmallVector<Value> parts = laneParts(b, op.getValueToStore());
+  int64_t alignment = scalar.getIntOrFloatBitWidth() / 8;
+  Type pointerType = LLVM::LLVMPointerType::get(b.getContext());
+  // A wide store writes whole elements; of a vector<3 x T> that includes its
+  // padding, which the scatter leaves alone.
+  bool wideOk = stride == count;
+
+  auto wideStore = [&](OpBuilder &at) {
+    Value first = vector::ExtractOp::create(at, loc, index, 0);
+    Value offset = first;
+    if (stride != 1)
+      offset = arith::MulIOp::create(
+          at, loc, first,
+          arith::ConstantIntOp::create(at, loc, at.getI64Type(), stride));
+    Value address = LLVM::GEPOp::create(at, loc, pointerType, scalar, pointer,
+                                        ValueRange{offset});
+    LLVM::StoreOp::create(at, loc, interleaveLanes(at, loc, parts), address,
+                          alignment);
+  };
+  auto scatter = [&](OpBuilder &at) {
+    Value lanesMask = mask
+                          ? mask
+                          : arith::ConstantOp::create(
+                                at, loc, laneType(at.getI1Type()),
+                                DenseElementsAttr::get(laneType(at.getI1Type()),
+                                                       at.getBoolAttr(true)));
+    Value base = index;
+    if (stride != 1)
+      base = arith::MulIOp::create(
+          at, loc, index,
+          arith::ConstantOp::create(
+              at, loc, i64Lanes,
+              DenseElementsAttr::get(i64Lanes, at.getI64IntegerAttr(stride))));
+    VectorType pointers = VectorType::get({width}, pointerType);
+    for (int64_t k = 0; k < count; ++k) {
+      Value offsets = base;
+      if (k != 0)
+        offsets = arith::AddIOp::create(
+            at, loc, base,
+            arith::ConstantOp::create(
+                at, loc, i64Lanes,
+                DenseElementsAttr::get(i64Lanes, at.getI64IntegerAttr(k))));
+      Value addresses = LLVM::GEPOp::create(at, loc, pointers, scalar, pointer,
+                                            ValueRange{offsets});
+      LLVM::masked_scatter::create(
+          at, loc, TypeRange{}, ValueRange{parts[k], addresses, lanesMask},
+          {at.getNamedAttr("alignment", at.getI32IntegerAttr(alignment))});
+    }
+  };
+
+  if (wideOk && !mask && consecutive.contains(op.getIndices()[0])) {
+    wideStore(b);
+    return;
+  }
+  if (!wideOk) {
+    scatter(b);
+    return;
+  }
+  auto choice = scf::IfOp::create(b, loc, TypeRange{},
+                                  contiguousCheck(b, index, mask), true);
+  OpBuilder fast = OpBuilder::atBlockBegin(choice.thenBlock());
+  if (!choice.thenBlock()->empty() && choice.thenBlock()->mightHaveTerminator())
+    fast.setInsertionPoint(choice.thenBlock()->getTerminator());
+  wideStore(fast);
+  OpBuilder slow = OpBuilder::atBlockBegin(choice.elseBlock());
+  if (!choice.elseBlock()->empty() && choice.elseBlock()->mightHaveTerminator())
+    slow.setInsertionPoint(choice.elseBlock()->getTerminator());
+  scatter(slow);
+}
+
+void LaneVectorizer::rewrite() {
+  OpBuilder b(loop);
+  Value lower = loop.getLowerBound(), upper = loop.getUpperBound();
+  // Whole chunks: [lower, lower + (upper - lower) / width * width).
+  Value count = arith::SubIOp::create(b, loc, upper, lower);
+  Value widthValue = constantIndex(b, width);
+  Value chunks = arith::DivUIOp::create(b, loc, count, widthValue);
+  Value whole = arith::MulIOp::create(b, loc, chunks, widthValue);
+  Value end = arith::AddIOp::create(b, loc, lower, whole);
+  SmallVector<APInt> positions;
+  for (int64_t lane = 0; lane < width; ++lane)
+    positions.push_back(APInt(64, lane));
+  VectorType indexLanes = laneType(b.getIndexType());
+  iota = arith::ConstantOp::create(
+      b, loc, indexLanes, DenseElementsAttr::get(indexLanes, positions));
+
+  auto chunkLoop = scf::ForOp::create(b, loc, lower, end, widthValue);
+  // Base pointers are made before the chunk loop.
+  preheader =
+      OpBuilder::InsertPoint(chunkLoop->getBlock(), Block::iterator(chunkLoop));
+  OpBuilder inner = OpBuilder::atBlockBegin(chunkLoop.getBody());
+  inner.setInsertionPoint(chunkLoop.getBody()->getTerminator());
+  Value firsts = vector::BroadcastOp::create(inner, loc, indexLanes,
+                                             chunkLoop.getInductionVar());
+  Wide lanes;
+  lanes.varying = true;
+  lanes.parts.push_back(arith::AddIOp::create(inner, loc, firsts, iota));
+  values[loop.getInductionVar()] = lanes;
+  widenBlock(inner, *loop.getBody(), /*mask=*/Value());
+
+  // The original loop keeps the lanes after the last whole chunk.
+  loop.getLowerBoundMutable().assign(end);
+  loop->removeAttr(simplan::PlanDialect::getLanesAttrName());
+}
+
+namespace {
+
+struct SimVectorizeLanesPass
+    : sim::impl::SimVectorizeLanesBase<SimVectorizeLanesPass> {
+  using Base::Base;
+
+  void runOnOperation() override {
+    if (width < 2 || width > 64 || !llvm::isPowerOf2_64(width)) {
+      getOperation()->emitError()
+          << "--sim-vectorize-lanes: width must be a power of two from 2 to "
+             "64, not "
+          << static_cast<int64_t>(width);
+      return signalPassFailure();
+    }
+    SmallVector<scf::ForOp> loops;
+    getOperation()->walk([&](scf::ForOp loop) {
+      if (loop->hasAttr(simplan::PlanDialect::getLanesAttrName()))
+        loops.push_back(loop);
+    });
+    for (scf::ForOp loop : loops) {
+      LaneVectorizer vectorizer(loop, width);
+      std::string why;
+      if (failed(vectorizer.analyze(why))) {
+        // The scalar loop stays; it computes the same results.
+        LLVM_DEBUG(llvm::dbgs() << "lanes stay scalar (" << why << ") at "
+                                << loop.getLoc() << "\n");
+        if (report)
+          loop.emitRemark() << "lanes stay scalar: " << why;
+        loop->removeAttr(simplan::PlanDialect::getLanesAttrName());
+        ++numScalar;
+        continue;
+      }
+      if (report)
+        loop.emitRemark() << "lanes run " << static_cast<int64_t>(width)
+                          << " at a time";
+      vectorizer.rewrite();
+      ++numWidened;
+    }
+  }
+};
+
+} // namespace

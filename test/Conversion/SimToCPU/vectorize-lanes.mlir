@@ -1,0 +1,174 @@
+// RUN: sim-opt %s --sim-vectorize-lanes=width=8 --split-input-file | FileCheck %s
+// RUN: sim-opt %s --sim-vectorize-lanes="width=8 report=true" --split-input-file --verify-diagnostics -o /dev/null
+
+// Consecutive items of vec4 buffers: one wide load of 8 items, split into
+// one vector per element by shuffles; elementwise math per element; one
+// interleaved wide store. The lanes after the last whole chunk stay in the
+// original loop.
+// CHECK-LABEL: func.func @consecutive
+// CHECK-SAME:      (%[[IN:.*]]: memref<?xvector<4xf32>>, %[[OUT:.*]]: memref<?xvector<4xf32>>, %[[BASE:.*]]: index, %[[G:.*]]: index)
+// CHECK-DAG:     %[[C8:.*]] = arith.constant 8 : index
+// CHECK:         %[[CHUNKS:.*]] = arith.divui %{{.*}}, %[[C8]]
+// CHECK:         %[[WHOLE:.*]] = arith.muli %[[CHUNKS]], %[[C8]]
+// CHECK:         %[[END:.*]] = arith.addi %{{.*}}, %[[WHOLE]]
+// CHECK:         %[[IOTA:.*]] = arith.constant dense<[0, 1, 2, 3, 4, 5, 6, 7]> : vector<8xindex>
+// CHECK-DAG:     memref.extract_aligned_pointer_as_index %[[IN]]
+// CHECK-DAG:     memref.extract_aligned_pointer_as_index %[[OUT]]
+// CHECK:         scf.for %[[CHUNK:.*]] = %{{.*}} to %[[END]] step %[[C8]] {
+// CHECK:           %[[FIRSTS:.*]] = vector.broadcast %[[CHUNK]] : index to vector<8xindex>
+// CHECK:           %[[LANES:.*]] = arith.addi %[[FIRSTS]], %[[IOTA]] : vector<8xindex>
+// CHECK:           %[[ALL:.*]] = llvm.load %{{.*}} {alignment = 4 : i64} : !llvm.ptr -> vector<32xf32>
+// CHECK:           %[[X:.*]] = vector.shuffle %[[ALL]], %[[ALL]] [0, 4, 8, 12, 16, 20, 24, 28]
+// CHECK:           %[[W:.*]] = vector.shuffle %[[ALL]], %[[ALL]] [3, 7, 11, 15, 19, 23, 27, 31]
+// CHECK:           math.tanh %[[X]] : vector<8xf32>
+// CHECK-COUNT-3:   math.tanh %{{.*}} : vector<8xf32>
+// CHECK:           vector.shuffle {{.*}} : vector<16xf32>, vector<16xf32>
+// CHECK:           llvm.store %{{.*}}, %{{.*}} {alignment = 4 : i64} : vector<32xf32>, !llvm.ptr
+// CHECK:         }
+// CHECK:         scf.for %[[LANE:.*]] = %[[END]] to %[[G]] step %{{.*}} {
+// CHECK:           memref.load %[[IN]]
+// CHECK:           math.tanh %{{.*}} : vector<4xf32>
+// CHECK-NOT:     simplan.lanes
+func.func @consecutive(%in: memref<?xvector<4xf32>>, %out: memref<?xvector<4xf32>>, %base: index, %g: index) {
+  %c0 = arith.constant 0 : index
+  %c1 = arith.constant 1 : index
+  // expected-remark @below {{lanes run 8 at a time}}
+  scf.for %lane = %c0 to %g step %c1 {
+    %item = arith.addi %base, %lane : index
+    %v = memref.load %in[%item] : memref<?xvector<4xf32>>
+    %t = math.tanh %v : vector<4xf32>
+    memref.store %t, %out[%item] : memref<?xvector<4xf32>>
+  } {simplan.lanes}
+  return
+}
+
+// -----
+
+// A branch on a lane-dependent condition (the range check of a partial
+// group) runs when one lane takes it, under its mask; its result is selected
+// per lane. Loads inside it take the gather path unless the lanes are
+// consecutive and all active; a load whose index is clamped is a gather
+// from an active lane's address.
+// CHECK-LABEL: func.func @masked
+// CHECK:         scf.for
+// CHECK:           %[[ACTIVE:.*]] = arith.cmpi ult, %{{.*}}, %{{.*}} : vector<8xindex>
+// CHECK:           %[[ANY:.*]] = vector.reduction <or>, %{{.*}} : vector<8xi1> into i1
+// CHECK:           %[[THEN:.*]] = scf.if %[[ANY]] -> (vector<8xf32>) {
+// CHECK:             %[[MIN:.*]] = vector.reduction <minsi>, %{{.*}} : vector<8xi64> into i64
+// CHECK:             llvm.intr.masked.gather
+// CHECK:           } else {
+// CHECK:             arith.constant dense<0.000000e+00> : vector<8xf32>
+// CHECK:           }
+// CHECK:           arith.select %[[ACTIVE]], %[[THEN]], %{{.*}} : vector<8xi1>, vector<8xf32>
+// CHECK:           llvm.intr.masked.scatter
+func.func @masked(%in: memref<?xf32>, %out: memref<?xf32>, %base: index, %range: index, %g: index) {
+  %c0 = arith.constant 0 : index
+  %c1 = arith.constant 1 : index
+  %zero = arith.constant 0.0 : f32
+  %last = arith.subi %range, %c1 : index
+  // expected-remark @below {{lanes run 8 at a time}}
+  scf.for %lane = %c0 to %g step %c1 {
+    %item = arith.addi %base, %lane : index
+    %active = arith.cmpi ult, %item, %range : index
+    %v = scf.if %active -> (f32) {
+      %right = arith.addi %item, %c1 : index
+      %clamped = arith.minsi %right, %last : index
+      %x = memref.load %in[%clamped] : memref<?xf32>
+      scf.yield %x : f32
+    } else {
+      scf.yield %zero : f32
+    }
+    scf.if %active {
+      memref.store %v, %out[%item] : memref<?xf32>
+    }
+  } {simplan.lanes}
+  return
+}
+
+// -----
+
+// Lanes that do not take a branch divide by one, not by their divisor.
+// CHECK-LABEL: func.func @division
+// CHECK:         scf.if
+// CHECK:           %[[ONE:.*]] = arith.constant dense<1> : vector<8xi64>
+// CHECK:           %[[SAFE:.*]] = arith.select %{{.*}}, %{{.*}}, %[[ONE]] : vector<8xi1>, vector<8xi64>
+// CHECK:           arith.divui %{{.*}}, %[[SAFE]] : vector<8xi64>
+func.func @division(%d: memref<?xi64>, %out: memref<?xi64>, %g: index) {
+  %c0 = arith.constant 0 : index
+  %c1 = arith.constant 1 : index
+  %c0_i64 = arith.constant 0 : i64
+  %c100 = arith.constant 100 : i64
+  // expected-remark @below {{lanes run 8 at a time}}
+  scf.for %lane = %c0 to %g step %c1 {
+    %divisor = memref.load %d[%lane] : memref<?xi64>
+    %nonzero = arith.cmpi ne, %divisor, %c0_i64 : i64
+    %q = scf.if %nonzero -> (i64) {
+      %x = arith.divui %c100, %divisor : i64
+      scf.yield %x : i64
+    } else {
+      scf.yield %c0_i64 : i64
+    }
+    memref.store %q, %out[%lane] : memref<?xi64>
+  } {simplan.lanes}
+  return
+}
+
+// -----
+
+// Reductions combine in the scalar lowering's order: from +0.0 for an fadd
+// without accumulator, element by element. Uniform loops keep their bounds
+// and carry lane vectors.
+// CHECK-LABEL: func.func @reduction
+// CHECK:         scf.for
+// CHECK:           %[[START:.*]] = arith.constant dense<0.000000e+00> : vector<8xf32>
+// CHECK:           %[[S0:.*]] = arith.addf %[[START]], %[[E0:.*]] : vector<8xf32>
+// CHECK:           %[[S1:.*]] = arith.addf %[[S0]], %{{.*}} : vector<8xf32>
+// CHECK:           %[[S2:.*]] = arith.addf %[[S1]], %{{.*}} : vector<8xf32>
+// CHECK:           scf.for %{{.*}} = %{{.*}} to %{{.*}} step %{{.*}} iter_args(%{{.*}} = %[[S2]]) -> (vector<8xf32>)
+func.func @reduction(%in: memref<?xvector<3xf32>>, %out: memref<?xf32>, %rounds: index, %g: index) {
+  %c0 = arith.constant 0 : index
+  %c1 = arith.constant 1 : index
+  // expected-remark @below {{lanes run 8 at a time}}
+  scf.for %lane = %c0 to %g step %c1 {
+    %v = memref.load %in[%lane] : memref<?xvector<3xf32>>
+    %s = vector.reduction <add>, %v : vector<3xf32> into f32
+    %r = scf.for %k = %c0 to %rounds step %c1 iter_args(%acc = %s) -> (f32) {
+      %m = arith.mulf %acc, %acc : f32
+      scf.yield %m : f32
+    }
+    memref.store %r, %out[%lane] : memref<?xf32>
+  } {simplan.lanes}
+  return
+}
+
+// -----
+
+// What the pass cannot widen stays the scalar loop, unmarked: a loop whose
+// trip count depends on the lane, a store of different lanes to one
+// element, an atomic.
+// CHECK-LABEL: func.func @stays_scalar
+// CHECK-NOT:     vector<8x
+// CHECK-NOT:     simplan.lanes
+func.func @stays_scalar(%in: memref<?xindex>, %out: memref<?xf32>, %sum: memref<?xi64>, %g: index) {
+  %c0 = arith.constant 0 : index
+  %c1 = arith.constant 1 : index
+  %one = arith.constant 1.0 : f32
+  %one_i64 = arith.constant 1 : i64
+  // expected-remark @below {{lanes stay scalar: a loop with lane-dependent bounds: scf.for}}
+  scf.for %lane = %c0 to %g step %c1 {
+    scf.for %k = %c0 to %lane step %c1 {
+      memref.store %one, %out[%k] : memref<?xf32>
+    }
+  } {simplan.lanes}
+  // expected-remark @below {{lanes stay scalar: lanes that store different values to one element: memref.store}}
+  scf.for %lane = %c0 to %g step %c1 {
+    %x = arith.index_cast %lane : index to i64
+    %f = arith.sitofp %x : i64 to f32
+    memref.store %f, %out[%c0] : memref<?xf32>
+  } {simplan.lanes}
+  // expected-remark @below {{lanes stay scalar: an op with effects or regions: memref.atomic_rmw}}
+  scf.for %lane = %c0 to %g step %c1 {
+    %old = memref.atomic_rmw addi %one_i64, %sum[%c0] : (i64, memref<?xi64>) -> i64
+  } {simplan.lanes}
+  return
+}
