@@ -22,8 +22,9 @@
 //  - SIMD. Every loop over the items of a chunk is a `#pragma omp simd` loop
 //    with the four rows, four lanes and the window unrolled in its body, so
 //    the compiler maps items to SIMD lanes (-O3 -march=native); the L rounds
-//    run over a chunk held in local arrays. tanh is glibc's tanhf, one
-//    scalar call per value, as sim's CPU kernels call it.
+//    run over a chunk held in local arrays. tanh is glibc's tanhf algorithm
+//    written to vectorise (GlibcTanh.h), bit for bit glibc's values, as
+//    sim's CPU kernels compute it (--sim-expand-tanh).
 //  - Threads. One OpenMP parallel region per run; the clock is an ordinary
 //    struct that one thread advances between barriers (`omp single`), and
 //    every kernel of sim is a work-shared loop over groups.
@@ -36,6 +37,7 @@
 //===----------------------------------------------------------------------===//
 
 #include "../common/Scenes.h"
+#include "GlibcTanh.h"
 
 #include <omp.h>
 
@@ -370,16 +372,18 @@ inline void evaluateChunk(const Reader &read, long long i0,
     }
   }
 
-  // The sum of X's rows plus the bias, then glibc's tanhf value by value.
+  // The sum of X's rows plus the bias, then glibc's tanhf in SIMD lanes.
   alignas(64) float target[kLanes][kChunk];
 #pragma omp simd
   for (int j = 0; j < kChunk; ++j)
     for (int l = 0; l < kLanes; ++l)
       target[l][j] =
           (((x[0][l][j] + x[1][l][j]) + x[2][l][j]) + x[3][l][j]) + bias[l][j];
-  for (int l = 0; l < kLanes; ++l)
+  for (int l = 0; l < kLanes; ++l) {
+#pragma omp simd
     for (int j = 0; j < kChunk; ++j)
-      target[l][j] = tanhf(target[l][j]);
+      target[l][j] = glibcTanhf(target[l][j]);
+  }
 
   if constexpr (!Comp::own) {
     std::memcpy(out, target, sizeof target);

@@ -174,6 +174,30 @@ def SimVectorizeLanes : Pass<"sim-vectorize-lanes"> {
   ];
 }
 
+def SimExpandTanh : Pass<"sim-expand-tanh"> {
+  let summary = "Expand f32 math.tanh into glibc's tanhf algorithm in "
+                "arithmetic (CPU kernels)";
+  let description = [{
+    On the CPU an f32 `math.tanh` is a call of libm's `tanhf` per element,
+    about 33 cycles each, and every live SIMD register is spilled around
+    it. glibc's `tanhf` (Debian 12's 2.36 and earlier releases) is
+    fdlibm's: `expm1f` plus a few operations, all plain f32 arithmetic and
+    bit manipulation. This pass writes that algorithm out in `arith` ops,
+    every path computed and the right one selected per element, so that
+    the vectorised lanes compute it in SIMD instructions and every element
+    gets the bits glibc's `tanhf` returns; the reference executor and the
+    hand-written CPU baseline, which call glibc, still agree bit for bit
+    (checked on all 2^32 inputs, `utils/check-tanh.sh`). f64 `tanh` and
+    other math ops stay libm calls. The CPU kernels run it
+    (lib/Target/CPU/CPUKernels.cpp); the GPU keeps libdevice's `tanhf`.
+
+    ```
+    sim-opt kernels.mlir --sim-expand-tanh
+    ```
+  }];
+  let dependentDialects = ["::mlir::arith::ArithDialect"];
+}
+
 def SimFusedMultiplyAdd : Pass<"sim-fused-multiply-add"> {
   let summary = "Lower vector.fma to llvm.intr.fma, fused on every target";
   let description = [{

@@ -105,10 +105,12 @@ static bool isIntegerDivision(Operation *op) {
              arith::CeilDivSIOp, arith::CeilDivUIOp, arith::FloorDivSIOp>(op);
 }
 
-/// Ops that compute per element: arith, math and vector.fma.
+/// Ops that compute per element: arith, math, vector.fma and the
+/// llvm.intr.fma that --sim-fused-multiply-add makes of it.
 static bool isElementwise(Operation *op) {
   return op->getNumRegions() == 0 && op->getNumResults() == 1 &&
-         (op->hasTrait<OpTrait::Elementwise>() || isa<vector::FMAOp>(op));
+         (op->hasTrait<OpTrait::Elementwise>() ||
+          isa<vector::FMAOp, LLVM::FMAOp>(op));
 }
 
 class LaneVectorizer {

@@ -86,7 +86,7 @@ static FailureOr<std::string> compileForIsa(llvm::Module &module, Location loc,
 static FailureOr<SmallVector<std::string>>
 compileSharedObjects(OwningOpRef<ModuleOp> module, Location loc,
                      ArrayRef<std::string> isas, unsigned optLevel,
-                     bool flushSubnormals, StringRef linker,
+                     bool flushSubnormals, bool kernels, StringRef linker,
                      function_ref<LogicalResult(llvm::Module &)> finish) {
   for (const std::string &isa : isas)
     if (!llvm::is_contained(getCPUIsaLevels(), isa))
@@ -97,8 +97,16 @@ compileSharedObjects(OwningOpRef<ModuleOp> module, Location loc,
   // To the LLVM dialect with upstream conversions.
   PassManager pm(module->getContext());
   // vector.fma rounds once here as on the GPU (not llvm.intr.fmuladd).
+  if (kernels) {
+    // A group's lanes side by side in SIMD registers, while the kernels are
+    // still scf and vector ops.
+    pm.addPass(createSimVectorizeLanes());
+    // f32 tanh as glibc computes it, in SIMD instructions instead of a libm
+    // call per element (the same bits). Not in the reference functions:
+    // they call libm itself, so the cross-check compares the two.
+    pm.addPass(createSimExpandTanh());
+  }
   pm.addPass(createSimFusedMultiplyAdd());
-  pm.addPass(createSimVectorizeLanes());
   pm.addPass(createSCFToControlFlowPass());
   pm.addPass(createConvertVectorToLLVMPass());
   pm.addPass(createConvertMathToLLVMPass());
@@ -259,8 +267,8 @@ mlir::sim::compileCPUKernels(ModuleOp kernels, ArrayRef<std::string> isas,
   }
   return compileSharedObjects(
       OwningOpRef<ModuleOp>(cast<ModuleOp>(kernels->clone())), loc, isas,
-      options.optLevel, options.flushSubnormals, options.linker,
-      [&](llvm::Module &llvmModule) -> LogicalResult {
+      options.optLevel, options.flushSubnormals, /*kernels=*/true,
+      options.linker, [&](llvm::Module &llvmModule) -> LogicalResult {
         for (const std::string &name : names) {
           llvm::Function *kernel = llvmModule.getFunction(name);
           if (!kernel || kernel->arg_size() < 3)
@@ -279,7 +287,7 @@ mlir::sim::compileReferenceFunctions(ModuleOp reference,
   FailureOr<SmallVector<std::string>> objects = compileSharedObjects(
       OwningOpRef<ModuleOp>(cast<ModuleOp>(reference->clone())),
       reference.getLoc(), {options.isa}, options.optLevel,
-      options.flushSubnormals, options.linker,
+      options.flushSubnormals, /*kernels=*/false, options.linker,
       [](llvm::Module &) { return success(); });
   if (failed(objects))
     return failure();

@@ -1,0 +1,43 @@
+// RUN: sim-opt %s --sim-expand-tanh --split-input-file | FileCheck %s
+
+// An f32 tanh becomes fdlibm's arithmetic: the bits of x, expm1f's argument
+// reduction by ln2 (hi 0x3f317180 = 0.693138123) and its polynomial, and the
+// selects of tanhf's special cases; no libm call is left.
+// CHECK-LABEL: func.func @scalar
+// CHECK-SAME:      (%[[X:.*]]: f32) -> f32
+// CHECK:         %[[BITS:.*]] = arith.bitcast %[[X]] : f32 to i32
+// CHECK:         arith.constant 0.693138123 : f32
+// CHECK:         arith.fptosi %{{.*}} : f32 to i32
+// CHECK:         arith.constant -0.0333333351 : f32
+// CHECK:         arith.divf
+// CHECK:         arith.select %{{.*}}, %{{.*}}, %{{.*}} : f32
+// CHECK:         return %{{.*}} : f32
+// CHECK-NOT:     math.tanh
+func.func @scalar(%x: f32) -> f32 {
+  %y = math.tanh %x : f32
+  return %y : f32
+}
+
+// -----
+
+// Vectors of f32 (the lanes of --sim-vectorize-lanes) in the same shape,
+// with i32 vectors for the bits.
+// CHECK-LABEL: func.func @lanes
+// CHECK:         arith.bitcast %{{.*}} : vector<16xf32> to vector<16xi32>
+// CHECK:         arith.fptosi %{{.*}} : vector<16xf32> to vector<16xi32>
+// CHECK:         arith.select %{{.*}}, %{{.*}}, %{{.*}} : vector<16xi1>, vector<16xf32>
+// CHECK-NOT:     math.tanh
+func.func @lanes(%x: vector<16xf32>) -> vector<16xf32> {
+  %y = math.tanh %x : vector<16xf32>
+  return %y : vector<16xf32>
+}
+
+// -----
+
+// f64 stays libm's.
+// CHECK-LABEL: func.func @double
+// CHECK-NEXT:    math.tanh %{{.*}} : f64
+func.func @double(%x: f64) -> f64 {
+  %y = math.tanh %x : f64
+  return %y : f64
+}
