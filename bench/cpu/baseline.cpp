@@ -40,6 +40,7 @@
 #include "GlibcTanh.h"
 
 #include <omp.h>
+#include <xmmintrin.h>
 
 #include <algorithm>
 #include <cerrno>
@@ -431,6 +432,9 @@ struct Options {
   int threads = 0; // 0: OpenMP's default (every core)
   std::string interp = "linear";
   std::string dumpDir, jsonPath;
+  /// Flush subnormals to zero (MXCSR FTZ and DAZ on every thread), as a
+  /// bundle compiled with sim-translate --sim-ftz computes.
+  bool ftz = false;
   Params params{65536, 1.0e-3f, 8, 0, 32, kMaxSteps, 0};
 };
 
@@ -466,6 +470,7 @@ public:
 
   /// Runs `steps` base steps from the initial state.
   RunMetrics run(long long steps) {
+    applyFlushMode();
     init();
     RunMetrics metrics;
     Clock &clock = metrics.clock;
@@ -481,6 +486,7 @@ public:
     auto start = std::chrono::steady_clock::now();
 #pragma omp parallel
     {
+      applyFlushMode();
       Scratch scratch(options_.groupSize);
       for (;;) {
         // Commit the big step that just ended and decide the next one.
@@ -577,6 +583,16 @@ private:
   template <typename F, size_t... I>
   static void forEachComponentImpl(F &&f, std::index_sequence<I...>) {
     (f(std::tuple_element_t<I, typename Scene::Components>{}), ...);
+  }
+
+  /// FTZ and DAZ in this thread's MXCSR under --ftz, as sim's CPU workers
+  /// set them for a --sim-ftz bundle; IEEE subnormals otherwise.
+  void applyFlushMode() const {
+    constexpr unsigned kFlushBits = 0x8040; // FTZ (bit 15), DAZ (bit 6)
+    if (options_.ftz)
+      _mm_setcsr(_mm_getcsr() | kFlushBits);
+    else
+      _mm_setcsr(_mm_getcsr() & ~kFlushBits);
   }
 
   /// Every buffer's half 0 from its init body; half 1 zero.
@@ -749,6 +765,8 @@ OPTIONS:
   --interp I           linear: the scene as checked in (pbd_like keeps B3 and
                        B4 cubic); cubic: every buffer cubic, as bench/run
                        substitutes it (default linear)
+  --ftz                flush subnormals to zero (FTZ and DAZ), as sim-run does
+                       for a bundle compiled with sim-translate --sim-ftz
   --dump DIR           write the observed buffer as DIR/<buffer>.npy
   --json FILE          write the metrics as JSON (sim-run's keys)
   --help               this text
@@ -809,6 +827,8 @@ Options parseOptions(int argc, char **argv) {
       o.interp = value();
       if (o.interp != "linear" && o.interp != "cubic")
         usageError("--interp expects linear or cubic");
+    } else if (name == "--ftz") {
+      o.ftz = true;
     } else if (name == "--dump") {
       o.dumpDir = value();
     } else if (name == "--json") {
@@ -949,6 +969,8 @@ template <typename Scene> int runScene(const Options &o) {
          << "  \"device\": \"" << device << "\",\n"
          << "  \"threads\": " << threads << ",\n"
          << "  \"m_on_host\": false,\n"
+         << "  \"subnormals\": \"" << (o.ftz ? "flush-to-zero" : "ieee")
+         << "\",\n"
          << "  \"interp\": \"" << o.interp << "\",\n"
          << "  \"range\": " << o.params.range << ",\n"
          << "  \"dt\": " << jsonNumber(o.params.dt) << ",\n"

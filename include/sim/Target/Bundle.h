@@ -40,7 +40,7 @@ struct BundleOptions {
   /// The instruction-set levels to compile the CPU kernels for, each into
   /// its own shared object (getCPUIsaLevels()); the runtime runs the highest
   /// one the CPU supports.
-  SmallVector<std::string, 2> cpuIsas = getDefaultCPUIsas();
+  SmallVector<std::string, 3> cpuIsas = getDefaultCPUIsas();
   /// Flush subnormals to zero on every backend (--sim-ftz): recorded in the
   /// bundle, compiled into the PTX and the CPU code, and set by the runtime
   /// on the CPU threads. target.flushSubnormals is set from it.

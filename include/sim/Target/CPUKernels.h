@@ -62,7 +62,7 @@ ArrayRef<StringRef> getCPUIsaLevels();
 /// (FMA and AVX2, which nearly every x86-64 CPU in use has). Not the
 /// compiling CPU's own level: a bundle is the same wherever it is compiled,
 /// and each level costs a compilation (x86-64-v4 is --sim-cpu-isas' to ask).
-SmallVector<std::string, 2> getDefaultCPUIsas();
+SmallVector<std::string, 3> getDefaultCPUIsas();
 
 /// Registers the dialect translations the CPU compilation needs.
 void registerCPUKernelDialects(DialectRegistry &registry);

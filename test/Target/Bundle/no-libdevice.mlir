@@ -19,10 +19,12 @@
 // PLANS:      ptx: none
 // PLANS-NEXT: cpu x86-64: shared object, 4 kernels, every one exported
 // PLANS-NEXT: cpu x86-64-v3: shared object, 4 kernels, every one exported
+// PLANS-NEXT: cpu x86-64-v4: shared object, 4 kernels, every one exported
 // PLANS-NEXT: --- plan 1 Hip
 // PLANS:      ptx: none
 // PLANS-NEXT: cpu x86-64: shared object, 4 kernels, every one exported
 // PLANS-NEXT: cpu x86-64-v3: shared object, 4 kernels, every one exported
+// PLANS-NEXT: cpu x86-64-v4: shared object, 4 kernels, every one exported
 // PLANS-NEXT: --- reference
 
 // REPORT:      scene cooling, strategy hip, backend cpu
@@ -35,6 +37,7 @@
 // DECAY:      ptx: .target sm_90, chip sm_90, 4 kernels, every one an .entry
 // DECAY-NEXT: cpu x86-64: shared object, 4 kernels, every one exported
 // DECAY-NEXT: cpu x86-64-v3: shared object, 4 kernels, every one exported
+// DECAY-NEXT: cpu x86-64-v4: shared object, 4 kernels, every one exported
 
 sim.simulation @cooling range(64) dt(1.0e-2 : f32) max_steps(2) {
   sim.param @rate = 2.0 : f32
