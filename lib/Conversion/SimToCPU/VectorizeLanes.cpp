@@ -160,6 +160,15 @@ private:
   Value anyLane(OpBuilder &b, Value mask);
   Value allLanes(OpBuilder &b, Value mask);
   Value basePointer(OpBuilder &b, Value memref);
+  /// A constant vector of lanes all equal to `value`.
+  Value splat(OpBuilder &b, Type scalar, Attribute value);
+  /// The address of element `index[0]` (`stride` scalars each) of `pointer`.
+  Value firstAddress(OpBuilder &b, Value pointer, Type scalar, Value index,
+                     int64_t stride);
+  /// Per element k < count of the lanes' elements `index` (i64 lanes), the
+  /// vector of their addresses.
+  SmallVector<Value> laneAddresses(OpBuilder &b, Value pointer, Type scalar,
+                                   Value index, int64_t stride, int64_t count);
   Value contiguousCheck(OpBuilder &b, Value index, Value mask);
 
   scf::ForOp loop;
@@ -453,6 +462,45 @@ Value LaneVectorizer::basePointer(OpBuilder &b, Value memref) {
   return pointer;
 }
 
+Value LaneVectorizer::splat(OpBuilder &b, Type scalar, Attribute value) {
+  VectorType type = laneType(scalar);
+  return arith::ConstantOp::create(b, loc, type,
+                                   DenseElementsAttr::get(type, value));
+}
+
+Value LaneVectorizer::firstAddress(OpBuilder &b, Value pointer, Type scalar,
+                                   Value index, int64_t stride) {
+  Value offset = vector::ExtractOp::create(b, loc, index, 0);
+  if (stride != 1)
+    offset = arith::MulIOp::create(
+        b, loc, offset,
+        arith::ConstantIntOp::create(b, loc, b.getI64Type(), stride));
+  return LLVM::GEPOp::create(b, loc, LLVM::LLVMPointerType::get(b.getContext()),
+                             scalar, pointer, ValueRange{offset});
+}
+
+SmallVector<Value> LaneVectorizer::laneAddresses(OpBuilder &b, Value pointer,
+                                                 Type scalar, Value index,
+                                                 int64_t stride,
+                                                 int64_t count) {
+  Value base = index;
+  if (stride != 1)
+    base = arith::MulIOp::create(
+        b, loc, index, splat(b, b.getI64Type(), b.getI64IntegerAttr(stride)));
+  VectorType pointers =
+      VectorType::get({width}, LLVM::LLVMPointerType::get(b.getContext()));
+  SmallVector<Value> addresses;
+  for (int64_t k = 0; k < count; ++k) {
+    Value offsets = base;
+    if (k != 0)
+      offsets = arith::AddIOp::create(
+          b, loc, base, splat(b, b.getI64Type(), b.getI64IntegerAttr(k)));
+    addresses.push_back(LLVM::GEPOp::create(b, loc, pointers, scalar, pointer,
+                                            ValueRange{offsets}));
+  }
+  return addresses;
+}
+
 /// True (i1) when the lanes of `index` (i64 lanes) are consecutive and every
 /// lane is active, so that one wide access serves the chunk.
 Value LaneVectorizer::contiguousCheck(OpBuilder &b, Value index, Value mask) {
@@ -585,37 +633,9 @@ void LaneVectorizer::widenReduction(OpBuilder &b, vector::ReductionOp op) {
   SmallVector<Value> parts = laneParts(b, op.getVector());
   Type scalar = op.getDest().getType();
   VectorType lanes = laneType(scalar);
+  // The op each kind combines with (upstream's), element by element.
   auto combine = [&](Value lhs, Value rhs) -> Value {
-    switch (op.getKind()) {
-    case vector::CombiningKind::ADD:
-      if (isa<FloatType>(scalar))
-        return arith::AddFOp::create(b, loc, lhs, rhs);
-      return arith::AddIOp::create(b, loc, lhs, rhs);
-    case vector::CombiningKind::MUL:
-      if (isa<FloatType>(scalar))
-        return arith::MulFOp::create(b, loc, lhs, rhs);
-      return arith::MulIOp::create(b, loc, lhs, rhs);
-    case vector::CombiningKind::MINUI:
-      return arith::MinUIOp::create(b, loc, lhs, rhs);
-    case vector::CombiningKind::MINSI:
-      return arith::MinSIOp::create(b, loc, lhs, rhs);
-    case vector::CombiningKind::MAXUI:
-      return arith::MaxUIOp::create(b, loc, lhs, rhs);
-    case vector::CombiningKind::MAXSI:
-      return arith::MaxSIOp::create(b, loc, lhs, rhs);
-    case vector::CombiningKind::AND:
-      return arith::AndIOp::create(b, loc, lhs, rhs);
-    case vector::CombiningKind::OR:
-      return arith::OrIOp::create(b, loc, lhs, rhs);
-    case vector::CombiningKind::XOR:
-      return arith::XOrIOp::create(b, loc, lhs, rhs);
-    case vector::CombiningKind::MINIMUMF:
-      return arith::MinimumFOp::create(b, loc, lhs, rhs);
-    case vector::CombiningKind::MAXIMUMF:
-      return arith::MaximumFOp::create(b, loc, lhs, rhs);
-    default:
-      llvm_unreachable("checked in analyze");
-    }
+    return vector::makeArithReduction(b, loc, op.getKind(), lhs, rhs);
   };
   // The scalar lowering is an ordered llvm.vector.reduce.* from the
   // accumulator, or for fadd and fmul without one from +0.0 and 1.0
@@ -752,19 +772,11 @@ void LaneVectorizer::widenLoad(OpBuilder &b, memref::LoadOp op, Value mask) {
   Value indexLanes = lookup(op.getIndices()[0]).parts[0];
   Value index = arith::IndexCastOp::create(b, loc, i64Lanes, indexLanes);
   int64_t alignment = scalar.getIntOrFloatBitWidth() / 8;
-  Type pointerType = LLVM::LLVMPointerType::get(b.getContext());
 
   // One load of `width * stride` scalars from the first lane's element,
   // split into one vector per element.
   auto wideLoad = [&](OpBuilder &at) {
-    Value first = vector::ExtractOp::create(at, loc, index, 0);
-    Value offset = first;
-    if (stride != 1)
-      offset = arith::MulIOp::create(
-          at, loc, first,
-          arith::ConstantIntOp::create(at, loc, at.getI64Type(), stride));
-    Value address = LLVM::GEPOp::create(at, loc, pointerType, scalar, pointer,
-                                        ValueRange{offset});
+    Value address = firstAddress(at, pointer, scalar, index, stride);
     Value all = LLVM::LoadOp::create(
         at, loc, VectorType::get({width * stride}, scalar), address, alignment);
     SmallVector<Value> parts;
@@ -785,41 +797,21 @@ void LaneVectorizer::widenLoad(OpBuilder &b, memref::LoadOp op, Value mask) {
   auto gather = [&](OpBuilder &at) {
     Value safe = index;
     if (mask) {
-      Value largest = arith::ConstantOp::create(
-          at, loc, i64Lanes,
-          DenseElementsAttr::get(
-              i64Lanes,
-              at.getI64IntegerAttr(std::numeric_limits<int64_t>::max())));
+      Value largest =
+          splat(at, at.getI64Type(),
+                at.getI64IntegerAttr(std::numeric_limits<int64_t>::max()));
       Value active = arith::SelectOp::create(at, loc, mask, index, largest);
       Value lowest = vector::ReductionOp::create(
           at, loc, vector::CombiningKind::MINSI, active);
       Value lowests = vector::BroadcastOp::create(at, loc, i64Lanes, lowest);
       safe = arith::SelectOp::create(at, loc, mask, index, lowests);
     }
-    Value base = safe;
-    if (stride != 1)
-      base = arith::MulIOp::create(
-          at, loc, safe,
-          arith::ConstantOp::create(
-              at, loc, i64Lanes,
-              DenseElementsAttr::get(i64Lanes, at.getI64IntegerAttr(stride))));
-    VectorType pointers = VectorType::get({width}, pointerType);
-    Value everyLane = arith::ConstantOp::create(
-        at, loc, laneType(at.getI1Type()),
-        DenseElementsAttr::get(laneType(at.getI1Type()), at.getBoolAttr(true)));
+    Value everyLane = splat(at, at.getI1Type(), at.getBoolAttr(true));
     Value zero =
         arith::ConstantOp::create(at, loc, lanes, at.getZeroAttr(lanes));
     SmallVector<Value> parts;
-    for (int64_t k = 0; k < count; ++k) {
-      Value offsets = base;
-      if (k != 0)
-        offsets = arith::AddIOp::create(
-            at, loc, base,
-            arith::ConstantOp::create(
-                at, loc, i64Lanes,
-                DenseElementsAttr::get(i64Lanes, at.getI64IntegerAttr(k))));
-      Value addresses = LLVM::GEPOp::create(at, loc, pointers, scalar, pointer,
-                                            ValueRange{offsets});
+    for (Value addresses :
+         laneAddresses(at, pointer, scalar, safe, stride, count)) {
       parts.push_back(LLVM::masked_gather::create(
           at, loc, lanes, addresses, everyLane, ValueRange{zero},
           at.getI32IntegerAttr(alignment)));
@@ -876,50 +868,23 @@ void LaneVectorizer::widenStore(OpBuilder &b, memref::StoreOp op, Value mask) {
   Value index = arith::IndexCastOp::create(b, loc, i64Lanes, indexLanes);
   SmallVector<Value> parts = laneParts(b, op.getValueToStore());
   int64_t alignment = scalar.getIntOrFloatBitWidth() / 8;
-  Type pointerType = LLVM::LLVMPointerType::get(b.getContext());
   // A wide store writes whole elements; of a vector<3 x T> that includes its
   // padding, which the scatter leaves alone.
   bool wideOk = stride == count;
 
   auto wideStore = [&](OpBuilder &at) {
-    Value first = vector::ExtractOp::create(at, loc, index, 0);
-    Value offset = first;
-    if (stride != 1)
-      offset = arith::MulIOp::create(
-          at, loc, first,
-          arith::ConstantIntOp::create(at, loc, at.getI64Type(), stride));
-    Value address = LLVM::GEPOp::create(at, loc, pointerType, scalar, pointer,
-                                        ValueRange{offset});
+    Value address = firstAddress(at, pointer, scalar, index, stride);
     LLVM::StoreOp::create(at, loc, interleaveLanes(at, loc, parts), address,
                           alignment);
   };
   auto scatter = [&](OpBuilder &at) {
-    Value lanesMask = mask
-                          ? mask
-                          : arith::ConstantOp::create(
-                                at, loc, laneType(at.getI1Type()),
-                                DenseElementsAttr::get(laneType(at.getI1Type()),
-                                                       at.getBoolAttr(true)));
-    Value base = index;
-    if (stride != 1)
-      base = arith::MulIOp::create(
-          at, loc, index,
-          arith::ConstantOp::create(
-              at, loc, i64Lanes,
-              DenseElementsAttr::get(i64Lanes, at.getI64IntegerAttr(stride))));
-    VectorType pointers = VectorType::get({width}, pointerType);
+    Value lanesMask =
+        mask ? mask : splat(at, at.getI1Type(), at.getBoolAttr(true));
+    SmallVector<Value> addresses =
+        laneAddresses(at, pointer, scalar, index, stride, count);
     for (int64_t k = 0; k < count; ++k) {
-      Value offsets = base;
-      if (k != 0)
-        offsets = arith::AddIOp::create(
-            at, loc, base,
-            arith::ConstantOp::create(
-                at, loc, i64Lanes,
-                DenseElementsAttr::get(i64Lanes, at.getI64IntegerAttr(k))));
-      Value addresses = LLVM::GEPOp::create(at, loc, pointers, scalar, pointer,
-                                            ValueRange{offsets});
       LLVM::masked_scatter::create(
-          at, loc, TypeRange{}, ValueRange{parts[k], addresses, lanesMask},
+          at, loc, TypeRange{}, ValueRange{parts[k], addresses[k], lanesMask},
           {at.getNamedAttr("alignment", at.getI32IntegerAttr(alignment))});
     }
   };

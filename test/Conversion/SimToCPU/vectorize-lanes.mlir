@@ -116,12 +116,13 @@ func.func @division(%d: memref<?xi64>, %out: memref<?xi64>, %g: index) {
 // -----
 
 // Reductions combine in the scalar lowering's order: from +0.0 for an fadd
-// without accumulator, element by element. Uniform loops keep their bounds
+// without accumulator, element by element (the builder puts the constant
+// on the right of the first add, which rounds the same). Uniform loops keep their bounds
 // and carry lane vectors.
 // CHECK-LABEL: func.func @reduction
 // CHECK:         scf.for
 // CHECK:           %[[START:.*]] = arith.constant dense<0.000000e+00> : vector<8xf32>
-// CHECK:           %[[S0:.*]] = arith.addf %[[START]], %[[E0:.*]] : vector<8xf32>
+// CHECK:           %[[S0:.*]] = arith.addf %{{.*}}, %[[START]] : vector<8xf32>
 // CHECK:           %[[S1:.*]] = arith.addf %[[S0]], %{{.*}} : vector<8xf32>
 // CHECK:           %[[S2:.*]] = arith.addf %[[S1]], %{{.*}} : vector<8xf32>
 // CHECK:           scf.for %{{.*}} = %{{.*}} to %{{.*}} step %{{.*}} iter_args(%{{.*}} = %[[S2]]) -> (vector<8xf32>)
