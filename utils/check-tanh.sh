@@ -3,7 +3,7 @@
 # algorithm in SIMD arithmetic) returns the bits of this machine's libm
 # tanhf on all 2^32 inputs, NaN patterns as infinities: 64 runs of 2^26
 # inputs of test/Integration/Inputs/tanh-inputs.mlir, each compared byte
-# for byte with the reference executor's (which calls libm). About ten
+# for byte with the reference executor's (which calls libm). About five
 # minutes on 2 cores; test/Integration/tanh-glibc.test runs every 257th input.
 #
 # usage: utils/check-tanh.sh [BUILD_DIR]   (default: build)
