@@ -16,7 +16,7 @@
 
 #include "mlir/Dialect/Math/IR/Math.h"
 #include "mlir/IR/PatternMatch.h"
-#include "mlir/Transforms/GreedyPatternRewriteDriver.h"
+#include "mlir/Transforms/WalkPatternRewriteDriver.h"
 
 namespace mlir::sim {
 #define GEN_PASS_DEF_SIMEXPANDTANH
@@ -206,14 +206,11 @@ struct ExpandTanh : OpRewritePattern<math::TanhOp> {
 
 struct SimExpandTanhPass : sim::impl::SimExpandTanhBase<SimExpandTanhPass> {
   void runOnOperation() override {
+    // One walk: the expansion has no tanh in it, and nothing else changes
+    // (no folding, no CSE), so the kernels keep every other op.
     RewritePatternSet patterns(&getContext());
     patterns.add<ExpandTanh>(&getContext());
-    GreedyRewriteConfig config;
-    config.enableFolding(false).enableConstantCSE(false);
-    config.setRegionSimplificationLevel(GreedySimplifyRegionLevel::Disabled);
-    if (failed(
-            applyPatternsGreedily(getOperation(), std::move(patterns), config)))
-      signalPassFailure();
+    walkAndApplyPatterns(getOperation(), std::move(patterns));
   }
 };
 
