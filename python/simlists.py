@@ -22,7 +22,7 @@ Standard library only; it loads nothing (no runtime library).
 
 import sys
 
-STRATEGIES = ("simple", "traditional", "hip", "hip-cache")
+STRATEGIES = ("simple", "traditional", "hip", "hip-cache", "lts")
 
 
 def schema_name(strategy):

@@ -143,9 +143,10 @@ protected:
         "estimates = false}, traditional = {advance = #sim<advance "
         "whole_step>, estimates = true}, hip = {advance = #sim<advance "
         "group_substeps>, estimates = false}, \"hip-cache\" = {advance = "
+        "#sim<advance group_substeps>, estimates = false}, lts = {advance = "
         "#sim<advance group_substeps>, estimates = false}}}], totals = [], "
         "step_caps = {simple = 1, traditional = 6, hip = 6, \"hip-cache\" = "
-        "6}}",
+        "6, lts = 6}}",
         &context);
     ASSERT_TRUE(expected);
     EXPECT_EQ(model, expected) << "the model is " << debugString(model);

@@ -294,6 +294,7 @@ FailureOr<Stepping> mlir::sim::decideStepping(ComponentOp component,
     return Stepping{Advance::whole_step, hasNumSteps};
   case Strategy::hip:
   case Strategy::hip_cache:
+  case Strategy::lts:
     break;
   }
   // hip: the big step is the minimum num_steps at T of the components that
@@ -310,10 +311,13 @@ FailureOr<Stepping> mlir::sim::decideStepping(ComponentOp component,
     return component.emitOpError()
            << "has no sub-stepping verdict; run --sim-substep-legality "
               "before deciding how it takes a big step";
-  return Stepping{*component.getSubStepping() == SubStepping::in_kernel
-                      ? Advance::group_substeps
-                      : Advance::grid_substeps,
-                  false};
+  if (*component.getSubStepping() == SubStepping::in_kernel)
+    return Stepping{Advance::group_substeps, false};
+  // lts: a grid_sync component whose own reads allow it (the recorded
+  // local_window) advances each group at its own rate.
+  if (strategy == Strategy::lts && component.getLocalWindowAttr())
+    return Stepping{Advance::local_steps, false};
+  return Stepping{Advance::grid_substeps, false};
 }
 
 int64_t mlir::sim::getStepCap(SimulationOp simulation, Strategy strategy) {

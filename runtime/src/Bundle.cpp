@@ -42,6 +42,8 @@ const char *strategyName(Strategy strategy) {
     return "hip";
   case Strategy::HipCache:
     return "hip-cache";
+  case Strategy::Lts:
+    return "lts";
   }
   return "?";
 }
@@ -119,6 +121,8 @@ const char *advanceName(Advance advance) {
     return "group_substeps";
   case Advance::GridSubSteps:
     return "grid_substeps";
+  case Advance::LocalSteps:
+    return "local_steps";
   }
   return "?";
 }

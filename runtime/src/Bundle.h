@@ -62,7 +62,7 @@ constexpr int64_t kMaxPhaseLaunches = int64_t(1) << 22;
 // Names
 //===----------------------------------------------------------------------===//
 
-/// "simple", "traditional", "hip", "hip-cache".
+/// "simple", "traditional", "hip", "hip-cache", "lts".
 const char *strategyName(Strategy strategy);
 std::optional<Strategy> parseStrategy(std::string_view name);
 /// "i32", "i64", "index", "f32", "f64".

@@ -299,7 +299,11 @@ private:
         bad(what + ": " + about + " advances in an unknown way (" +
             std::to_string(int(component.advance)) + ")");
       claimSlots(component.evaluations, 1, about + "'s evaluation counter");
-      if (component.advance == Advance::GridSubSteps)
+      if (component.advance == Advance::LocalSteps && plan.distributed)
+        bad(about + " takes local time steps, which a distributed plan "
+                    "cannot run");
+      if (component.advance == Advance::GridSubSteps ||
+          component.advance == Advance::LocalSteps)
         claimSlots(component.sub_clock, uint64_t(schema::SubClockSlot::Slots),
                    about + "'s sub-step clock");
     }
@@ -402,6 +406,13 @@ private:
     case ArgKind::Total:
       checkIndex(arg.index(), plan.totals.size(), about + "'s total");
       return memref(ScalarType::F64, 1, 8);
+    case ArgKind::Levels:
+      checkIndex(arg.index(), plan.components.size(), about + "'s component");
+      if (plan.components[arg.index()]->advance != Advance::LocalSteps)
+        bad(about + " passes the levels of component " +
+            quoted(plan.components[arg.index()]->name) +
+            ", which does not take local time steps");
+      return memref(ScalarType::I64, 1, 8);
     case ArgKind::Param:
       checkIndex(arg.index(), scene.params.size(), about + "'s parameter");
       return scalar(scene.params[arg.index()]->value->type());
@@ -610,6 +621,11 @@ void verifyReference(const schema::SceneT &scene,
       if (!component.num_steps &&
           (stepping.estimates() || stepping.advance() != Advance::WholeStep))
         bad(under + " estimates or sub-steps, but it has no num_steps");
+      if (stepping.advance() == Advance::LocalSteps &&
+          (component.local_window.size() != 2 ||
+           component.local_window[0] > 0 || component.local_window[1] < 0))
+        bad(under + " takes local time steps without a window [lo, hi] "
+                    "with lo <= 0 <= hi");
     }
   }
   if (reference.step_caps.size() != size_t(kNumStrategies))

@@ -578,6 +578,10 @@ void ReferenceSession::readInStep(int32_t buffer, int64_t item, uint8_t *out) {
     // No writer: the initial state (or what the user set).
     from = state.begin.data();
   } else if (writer == running.component) {
+    if (writer == levels.component && running.body == Body::Evaluate) {
+      readLevels(buffer, item, out);
+      return;
+    }
     from = state.current.data();
   } else if (writer > running.component) {
     // A back edge: the writer has not advanced yet.
@@ -654,26 +658,33 @@ int64_t ReferenceSession::numSteps(int32_t component, int64_t item, int64_t t) {
   return std::clamp<int64_t>(n, 1, scene().max_steps);
 }
 
+void ReferenceSession::evaluateInto(
+    int32_t component, int64_t first, int64_t last, int64_t t, int64_t n,
+    std::vector<std::vector<uint8_t>> &results) {
+  const schema::RefComponentT &info = *model_->components[size_t(component)];
+  results.clear();
+  for (int32_t buffer : info.writes)
+    results.emplace_back(size_t(last - first) * packed(buffer));
+  std::vector<void *> outs(info.writes.size());
+  double dt = settings.dtValue();
+  running = {Body::Evaluate, component, t + n, t};
+  for (int64_t i = first; i < last; ++i) {
+    for (size_t k = 0; k < info.writes.size(); ++k)
+      outs[k] = results[k].data() + size_t(i - first) * packed(info.writes[k]);
+    evaluateFns[component](&context, i, t, int32_t(n), dt, outs.data());
+    rethrowCallbackError();
+  }
+  running = {};
+  evaluations[component] += last - first;
+}
+
 void ReferenceSession::evaluate(int32_t component, int64_t first, int64_t last,
                                 int64_t t, int64_t n) {
   const schema::RefComponentT &info = *model_->components[size_t(component)];
   // Every item of the group reads the state before the sub-step: evaluate
   // into temporaries, then commit.
   std::vector<std::vector<uint8_t>> temporaries;
-  for (int32_t buffer : info.writes)
-    temporaries.emplace_back(size_t(last - first) * packed(buffer));
-  std::vector<void *> outs(info.writes.size());
-  double dt = settings.dtValue();
-  running = {Body::Evaluate, component, t + n};
-  for (int64_t i = first; i < last; ++i) {
-    for (size_t k = 0; k < info.writes.size(); ++k)
-      outs[k] =
-          temporaries[k].data() + size_t(i - first) * packed(info.writes[k]);
-    evaluateFns[component](&context, i, t, int32_t(n), dt, outs.data());
-    rethrowCallbackError();
-  }
-  running = {};
-  evaluations[component] += last - first;
+  evaluateInto(component, first, last, t, n, temporaries);
   for (size_t k = 0; k < info.writes.size(); ++k) {
     int32_t buffer = info.writes[k];
     std::memcpy(states[buffer].current.data() + size_t(first) * packed(buffer),
@@ -723,6 +734,14 @@ void ReferenceSession::checkFinite(int32_t component, int64_t first,
   }
 }
 
+/// The largest power of two not above `value` (positive).
+static int64_t floorPowerOfTwo(int64_t value) {
+  int64_t power = 1;
+  while (power <= value / 2)
+    power *= 2;
+  return power;
+}
+
 void ReferenceSession::bigStep(int64_t end) {
   const int64_t range = settings.range;
   const int32_t components = int32_t(model_->components.size());
@@ -745,6 +764,12 @@ void ReferenceSession::bigStep(int64_t end) {
     m = end - now;
     ++cutBigSteps;
   }
+  // Local time steps nest only in a big step of a power of two.
+  if (std::any_of(stepping.begin(), stepping.end(),
+                  [](const schema::Stepping &decided) {
+                    return decided.advance() == Advance::LocalSteps;
+                  }))
+    m = floorPowerOfTwo(m);
   stepSize = m;
   ++histogram[size_t(m)];
   ++metrics.big_steps;
@@ -757,6 +782,8 @@ void ReferenceSession::bigStep(int64_t end) {
     Advance advance = stepping[size_t(c)].advance();
     if (advance == Advance::WholeStep) {
       evaluate(c, 0, range, now, m);
+    } else if (advance == Advance::LocalSteps) {
+      localSteps(c, m);
     } else {
       int64_t group = advance == Advance::GridSubSteps ? range : groupSize_;
       for (int64_t first = 0; first < range; first += group) {
@@ -779,6 +806,122 @@ void ReferenceSession::bigStep(int64_t end) {
       states[b].begin = states[b].end;
   now += m;
   stepSize = 0;
+}
+
+void ReferenceSession::localSteps(int32_t component, int64_t m) {
+  const schema::RefComponentT &info = *model_->components[size_t(component)];
+  const int64_t range = settings.range;
+  const int64_t group = int64_t(schema::LocalStepBlock::Items);
+  const int64_t groups = (range + group - 1) / group;
+  auto firstOf = [&](int64_t g) { return g * group; };
+  auto lastOf = [&](int64_t g) { return std::min(range, (g + 1) * group); };
+
+  // Each block's sub-step (blocks of LocalStepBlock::Items items, whatever
+  // the group size): the largest power of two within m and its items'
+  // num_steps at T.
+  levels = {};
+  levels.level.assign(size_t(groups), 0);
+  for (int64_t g = 0; g < groups; ++g) {
+    int64_t smallest = m;
+    for (int64_t i = firstOf(g); i < lastOf(g); ++i)
+      smallest = std::min(smallest, numSteps(component, i, now));
+    levels.level[size_t(g)] = floorPowerOfTwo(smallest);
+  }
+  // No block more than twice as coarse as a block within reach of its
+  // window (ceil(reach / block) blocks, around the range under wrap).
+  int64_t reach = std::max(-info.local_window[0], info.local_window[1]);
+  int64_t radius = (reach + group - 1) / group;
+  bool cyclic = false;
+  for (uint32_t buffer : info.writes)
+    cyclic |= buffers_[buffer].info->boundary == schema::Boundary::Wrap;
+  for (bool changed = true; changed;) {
+    changed = false;
+    for (int64_t g = 0; g < groups; ++g)
+      for (int64_t d = 1; d <= radius; ++d)
+        for (int64_t h : {g - d, g + d}) {
+          if (cyclic)
+            h = ((h % groups) + groups) % groups;
+          else if (h < 0 || h >= groups)
+            continue;
+          int64_t &own = levels.level[size_t(g)];
+          if (own > 2 * levels.level[size_t(h)]) {
+            own = 2 * levels.level[size_t(h)];
+            changed = true;
+          }
+        }
+  }
+
+  // Slots in time order; the blocks whose sub-step starts at a slot read
+  // the levels as they are before it, then all commit.
+  levels.component = component;
+  levels.latest.assign(size_t(groups), now);
+  levels.previous.assign(size_t(groups), now);
+  levels.previousState.clear();
+  for (uint32_t buffer : info.writes)
+    levels.previousState.push_back(states[buffer].current);
+  std::vector<std::vector<std::vector<uint8_t>>> results(
+      static_cast<size_t>(groups));
+  for (int64_t q = 0; q < m; ++q) {
+    std::vector<int64_t> starting;
+    for (int64_t g = 0; g < groups; ++g)
+      if (q % levels.level[size_t(g)] == 0)
+        starting.push_back(g);
+    for (int64_t g : starting)
+      evaluateInto(component, firstOf(g), lastOf(g), now + q,
+                   levels.level[size_t(g)], results[size_t(g)]);
+    for (int64_t g : starting) {
+      for (size_t k = 0; k < info.writes.size(); ++k) {
+        uint32_t buffer = info.writes[k];
+        size_t at = size_t(firstOf(g)) * packed(int32_t(buffer));
+        std::vector<uint8_t> &current = states[buffer].current;
+        std::memcpy(levels.previousState[k].data() + at, current.data() + at,
+                    results[size_t(g)][k].size());
+        std::memcpy(current.data() + at, results[size_t(g)][k].data(),
+                    results[size_t(g)][k].size());
+      }
+      levels.previous[size_t(g)] = levels.latest[size_t(g)];
+      levels.latest[size_t(g)] += levels.level[size_t(g)];
+      if (checkFinite_)
+        checkFinite(component, firstOf(g), lastOf(g), now + q,
+                    levels.level[size_t(g)]);
+    }
+  }
+  levels = {};
+}
+
+void ReferenceSession::readLevels(int32_t buffer, int64_t item, uint8_t *out) {
+  const schema::BufferT &info = *buffers_[size_t(buffer)].info;
+  const schema::Element &element = *info.element;
+  size_t bytes = packed(buffer), at = size_t(item) * bytes;
+  size_t g = size_t(item / int64_t(schema::LocalStepBlock::Items));
+  int64_t t = running.localTime;
+  int64_t a = levels.previous[g], b = levels.latest[g];
+  const uint8_t *latest = states[buffer].current.data() + at;
+  if (t == b) {
+    std::memcpy(out, latest, bytes);
+    return;
+  }
+  size_t k = 0;
+  const auto &writes = model_->components[size_t(levels.component)]->writes;
+  while (writes[k] != uint32_t(buffer))
+    ++k;
+  if (!(a < t && t < b))
+    fail(SIM_ERROR_BACKEND,
+         describeRead(buffer, item) + " at local time " + std::to_string(t) +
+             ", outside its group's time levels [" + std::to_string(a) + ", " +
+             std::to_string(b) + "]");
+  const uint8_t *previous = levels.previousState[k].data() + at;
+  if (isF64(element)) {
+    double f = double(t - a) / double(b - a);
+    double h = double(b - a) * settings.dtValue();
+    interpolateLanes<double>(info.interp, element.lanes(), f, h, previous,
+                             latest, nullptr, nullptr, out);
+  } else {
+    float f = float(t - a) / float(b - a);
+    float h = float(b - a) * float(settings.dtValue());
+    interpolateLanes<float>(info.interp, element.lanes(), f, h, previous,
+                            latest, nullptr, nullptr, out);
+  }
 }
 
 void ReferenceSession::run(int64_t steps, int64_t pause) {

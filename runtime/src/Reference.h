@@ -188,6 +188,19 @@ private:
     int32_t component = -1;
     /// The local time reads of earlier components' buffers are at.
     int64_t readTime = 0;
+    /// The local time the body advances from (the start of its sub-step):
+    /// what reads of its own buffers see under local time steps.
+    int64_t localTime = 0;
+  };
+
+  /// The time levels of a component that takes local time steps, during
+  /// its big step (docs/Model.md, "Local time stepping"): every block's
+  /// sub-step and the times of its two levels; every item's previous level
+  /// of each buffer it writes (the latest is the state's `current`).
+  struct LocalLevels {
+    int32_t component = -1;
+    std::vector<int64_t> level, latest, previous;
+    std::vector<std::vector<uint8_t>> previousState;
   };
 
   static void readCallback(void *executor, int32_t buffer, int64_t item,
@@ -229,6 +242,15 @@ private:
   int64_t numSteps(int32_t component, int64_t item, int64_t t);
   void evaluate(int32_t component, int64_t first, int64_t last, int64_t t,
                 int64_t n);
+  /// Evaluates items [first, last) from t over n base steps into
+  /// `results` (one array per written buffer), without committing them.
+  void evaluateInto(int32_t component, int64_t first, int64_t last, int64_t t,
+                    int64_t n, std::vector<std::vector<uint8_t>> &results);
+  /// Takes `component`'s big step of m in local time steps.
+  void localSteps(int32_t component, int64_t m);
+  /// A read of `buffer`, written by the component taking local time
+  /// steps, from the time levels of `item`'s group.
+  void readLevels(int32_t buffer, int64_t item, uint8_t *out);
   void checkFinite(int32_t component, int64_t first, int64_t last, int64_t t,
                    int64_t n);
 
@@ -276,6 +298,7 @@ private:
   /// Which components have run in this big step: their buffers' end exists.
   std::vector<bool> ran;
   Running running;
+  LocalLevels levels;
   /// The first error a callback met, thrown when the body returns.
   bool callbackFailed = false;
   sim_status callbackStatus = SIM_OK;

@@ -205,6 +205,13 @@ int64_t Session::memoryBytes(int64_t globalRange) const {
     bytes = saturatingAdd(
         bytes, saturatingMul(saturatingMul(elements, buffer.stride), copies));
   }
+  for (const auto &component : plan_->components)
+    if (component->advance == Advance::LocalSteps)
+      bytes = saturatingAdd(
+          bytes, saturatingMul(
+                     2 * ((range + int64_t(schema::LocalStepBlock::Items) - 1) /
+                          int64_t(schema::LocalStepBlock::Items)),
+                     int64_t(sizeof(int64_t))));
   return saturatingAdd(bytes,
                        saturatingMul(saturatingMul(range, sizeof(double)),
                                      int64_t(plan_->totals.size())));
@@ -239,6 +246,10 @@ void Session::allocate() {
   }
   for (size_t i = 0; i < plan_->totals.size(); ++i)
     totalValues.push_back(take(size_t(extent) * sizeof(double)));
+  for (const auto &component : plan_->components)
+    levels.push_back(component->advance == Advance::LocalSteps
+                         ? take(size_t(levelCount()) * sizeof(int64_t))
+                         : Memory{});
   clock.assign(size_t(plan_->clock_slots), 0);
   allocated = true;
 }
@@ -253,7 +264,7 @@ void Session::releaseAll() {
   };
   give(clockMemory);
   for (std::vector<Memory> *list :
-       {&buffers, &snapshots, &exacts, &totalValues}) {
+       {&buffers, &snapshots, &exacts, &totalValues, &levels}) {
     for (Memory &memory : *list)
       give(memory);
     list->clear();
@@ -326,6 +337,9 @@ Session::Prepared Session::prepareLaunch(const schema::LaunchT &launch) {
       break;
     case ArgKind::Total:
       memref(totalValues[arg.index()].pointer, extent);
+      break;
+    case ArgKind::Levels:
+      memref(levels[arg.index()].pointer, levelCount());
       break;
     case ArgKind::Param:
       p.values.push_back(settings.params[arg.index()].bits());
@@ -543,7 +557,7 @@ void Session::init() {
     // addresses stay, so a captured step phase stays valid.
     backend->zero(clockMemory.pointer, clockMemory.bytes);
     for (std::vector<Memory> *list :
-         {&buffers, &snapshots, &exacts, &totalValues})
+         {&buffers, &snapshots, &exacts, &totalValues, &levels})
       for (Memory &memory : *list)
         if (memory.pointer)
           backend->zero(memory.pointer, memory.bytes);

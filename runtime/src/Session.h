@@ -167,6 +167,12 @@ private:
   int64_t elementsOf(size_t buffer) const {
     return replicated(buffer) ? settings.range : extent;
   }
+  /// The entries of a component's levels: two halves of one per block of
+  /// LocalStepBlock::Items items.
+  int64_t levelCount() const {
+    const int64_t block = int64_t(schema::LocalStepBlock::Items);
+    return 2 * ((settings.range + block - 1) / block);
+  }
   /// The element of this rank's first item in one half of `buffer`.
   int64_t ownElement(size_t buffer) const {
     return replicated(buffer) ? first : halo;
@@ -221,6 +227,9 @@ private:
   std::vector<Memory> buffers, snapshots, exacts;
   /// Per total: its per-item values (`range` doubles).
   std::vector<Memory> totalValues;
+  /// Per plan component: the sub-steps of its groups when it takes local
+  /// time steps (ArgKind::Levels), else nothing.
+  std::vector<Memory> levels;
   /// The host's copy of the clock as last read (valid after init).
   std::vector<int64_t> clock;
   bool allocated = false, initialized = false, prepared = false;

@@ -295,8 +295,8 @@ TEST(BundleVerifier, ChecksPlansAndTheirClocks) {
   const Case cases[] = {
       {[](auto &c) { c.plans[1]->strategy = Strategy::Simple; },
        "there are two plans of strategy 'simple'"},
-      {[](auto &c) { c.plans[1]->strategy = Strategy(4); },
-       "a plan has unknown strategy 4"},
+      {[](auto &c) { c.plans[1]->strategy = Strategy(5); },
+       "a plan has unknown strategy 5"},
       {[](auto &c) { hipPlan(c).group_size = 0; },
        "the plan of strategy 'hip' is made for groups of 0"},
       {[](auto &c) { hipPlan(c).step_cap = 5; },
@@ -514,7 +514,7 @@ TEST(BundleVerifier, ChecksTheReferenceModel) {
       {[](auto &c) { c.reference->components[1]->name = "Decay"; },
        "component 'Decay' is declared twice"},
       {[](auto &c) { c.reference->components[1]->stepping.pop_back(); },
-       "says how it steps under 3 strategies, not 4"},
+       "says how it steps under 4 strategies, not 5"},
       {[](auto &c) {
          c.reference->components[1]->stepping[2] =
              schema::Stepping(Advance::GroupSubSteps, false);
@@ -526,7 +526,7 @@ TEST(BundleVerifier, ChecksTheReferenceModel) {
        },
        "component 'Decay' has an unknown sub-stepping verdict"},
       {[](auto &c) { c.reference->step_caps.pop_back(); },
-       "gives the largest big step of 3 strategies, not 4"},
+       "gives the largest big step of 4 strategies, not 5"},
       {[](auto &c) { c.reference->step_caps[0] = 9; },
        "caps big steps under simple at 9 base steps, not 1 to max_steps (4)"},
       {[](auto &c) {

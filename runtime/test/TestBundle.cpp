@@ -227,7 +227,8 @@ std::unique_ptr<PlanT> decayPlan(Strategy strategy, bool ptx) {
 /// `advance` and `estimates` of a component under every strategy.
 std::vector<Stepping> stepping(Stepping simple, Stepping traditional,
                                Stepping hip) {
-  return {simple, traditional, hip, hip};
+  // hip-cache and lts plan as hip here: nothing reads its own neighbours.
+  return {simple, traditional, hip, hip, hip};
 }
 
 std::unique_ptr<RefComponentT> refComponent(const std::string &name,
@@ -278,7 +279,7 @@ BundleT decayContents(bool ptx, bool reference,
       "Decay", true, {0}, {0, 1}, stepping(whole, estimating, estimating)));
   model->components.push_back(
       refComponent("Grow", false, {1}, {1}, stepping(whole, whole, whole)));
-  model->step_caps = {1, 4, 4, 4};
+  model->step_caps = {1, 4, 4, 4, 4};
   model->object = readBytes(referenceObject);
   model->isa = "x86-64";
   contents.reference = std::move(model);
@@ -484,7 +485,7 @@ BundleT probeContents() {
                                            stepping(whole, estimating, group)));
   model->components.push_back(refComponent("Edge", false, {9, 5}, {1, 2, 3},
                                            stepping(whole, whole, whole)));
-  model->step_caps = {1, 4, 4, 4};
+  model->step_caps = {1, 4, 4, 4, 4};
   model->object = readBytes(SIM_TEST_PROBE_REFERENCE_SO);
   model->isa = "x86-64";
   contents.reference = std::move(model);

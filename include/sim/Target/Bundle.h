@@ -27,9 +27,9 @@ namespace mlir::sim {
 struct BundleOptions {
   /// The strategies to compile for, in the order of the bundle's plans; each
   /// at most once.
-  SmallVector<Strategy, 4> strategies = {Strategy::simple,
+  SmallVector<Strategy, 5> strategies = {Strategy::simple,
                                          Strategy::traditional, Strategy::hip,
-                                         Strategy::hip_cache};
+                                         Strategy::hip_cache, Strategy::lts};
   /// Threads per thread group the plans and kernels are made for.
   int64_t groupSize = 256;
   /// The GPU back end's target. Its optimization level applies to the CPU

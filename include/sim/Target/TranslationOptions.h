@@ -34,7 +34,8 @@ struct TranslationOptions {
   llvm::cl::OptionCategory category;
   /// --sim-strategy: the strategy of --sim-to-ptx.
   llvm::cl::opt<Strategy> strategy;
-  /// --sim-strategies: the strategies of --sim-to-bundle (empty: all four).
+  /// --sim-strategies: the strategies of --sim-to-bundle (empty: all five,
+  /// without lts for a distributed bundle).
   llvm::cl::list<Strategy> strategies;
   /// --sim-group-size: threads per thread group.
   llvm::cl::opt<unsigned> groupSize;

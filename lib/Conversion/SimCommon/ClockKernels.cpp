@@ -55,7 +55,8 @@ LogicalResult SimulationLowering::emitEstimate(ComponentOp component,
 
 /// Commits the big step that just ended (T += m, flip the parity when it
 /// advanced) and decides the next one: m = min(estimate, cap, end - T), 0
-/// past the end. Also counts big steps by size and the ones the end cut
+/// past the end, rounded down to a power of two when a component takes
+/// local time steps. Also counts big steps by size and the ones the end cut
 /// short (clock slot Cuts), and restarts the sub-step clocks.
 LogicalResult SimulationLowering::emitAdvance(OpBuilder &launches,
                                               bool hasEstimates) {
@@ -78,6 +79,10 @@ LogicalResult SimulationLowering::emitAdvance(OpBuilder &launches,
   Value bound = hasEstimates ? b.min(slot(kSlotEstimate), cap) : cap;
   Value positive = b.cmp(arith::CmpIPredicate::sgt, remaining, zero);
   Value next = b.select(positive, b.min(bound, remaining), zero);
+  // Local time steps nest only in a big step of a power of two: the
+  // largest one not above the decision (m >= 1 when positive).
+  if (localSteps)
+    next = b.floorPowerOfTwo(next);
   // A cut: the end of the run, not the estimate or the cap, sizes the big
   // step (a run that ends between two natural big-step boundaries).
   Value cut = b.select(

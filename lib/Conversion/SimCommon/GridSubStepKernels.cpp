@@ -15,6 +15,41 @@
 using namespace mlir;
 using namespace mlir::sim;
 
+/// Snapshots of the value at T of the buffers later components read
+/// between T and T + m, before `component` ping-pongs between the halves.
+LogicalResult SimulationLowering::emitSnapshots(ComponentOp component,
+                                                OpBuilder &launches) {
+  for (FlatSymbolRefAttr write :
+       component.getWrites().getAsRange<FlatSymbolRefAttr>()) {
+    BufferOp buffer = simulation.lookupBuffer(write);
+    if (!buffer.getSnapshot())
+      continue;
+    Kernel kernel =
+        beginKernel(getKernelName(kernels, "snapshot", buffer.getSymName()));
+    Value begin, size, parity;
+    readClock(kernel, begin, size, parity);
+    setHalves(kernel, parity, parity);
+    b.ifThen(b.cmp(arith::CmpIPredicate::sgt, size, b.i64(0)), [&] {
+      forEachItem(kernel, [&](const Lane &lane) {
+        b.ifThen(lane.active, [&] {
+          Value value =
+              b.load(kernel.values.buffers.lookup(write.getAttr()),
+                     at(kernel, write.getAttr(), kernel.values.sourceBase,
+                        kernel.values.sourceParity, lane.item));
+          b.store(value, kernel.values.snapshots.lookup(write.getAttr()),
+                  element(kernel, lane.item, write.getAttr()));
+        });
+      });
+    });
+    if (distributed && travels(buffer))
+      pendingExchangeSnapshots.push_back(write);
+    if (failed(endKernel(kernel, simplan::LaunchShape::items, launches)))
+      return failure();
+  }
+
+  return success();
+}
+
 /// A grid_sync component with num_steps: its sub-steps read other items of
 /// its own buffers, so every sub-step is a launch of its own and its size is
 /// the minimum over the whole range. Before them: snapshots of the buffers
@@ -51,33 +86,8 @@ LogicalResult SimulationLowering::emitRounds(ComponentOp component,
     return arith::AndIOp::create(b, b.loc, count, b.i64(1)).getResult();
   };
 
-  // Snapshots of the value at T.
-  for (FlatSymbolRefAttr write : writes) {
-    BufferOp buffer = simulation.lookupBuffer(write);
-    if (!buffer.getSnapshot())
-      continue;
-    Kernel kernel =
-        beginKernel(getKernelName(kernels, "snapshot", buffer.getSymName()));
-    Value begin, size, parity;
-    readClock(kernel, begin, size, parity);
-    setHalves(kernel, parity, parity);
-    b.ifThen(b.cmp(arith::CmpIPredicate::sgt, size, b.i64(0)), [&] {
-      forEachItem(kernel, [&](const Lane &lane) {
-        b.ifThen(lane.active, [&] {
-          Value value =
-              b.load(kernel.values.buffers.lookup(write.getAttr()),
-                     at(kernel, write.getAttr(), kernel.values.sourceBase,
-                        kernel.values.sourceParity, lane.item));
-          b.store(value, kernel.values.snapshots.lookup(write.getAttr()),
-                  element(kernel, lane.item, write.getAttr()));
-        });
-      });
-    });
-    if (distributed && travels(buffer))
-      pendingExchangeSnapshots.push_back(write);
-    if (failed(endKernel(kernel, simplan::LaunchShape::items, launches)))
-      return failure();
-  }
+  if (failed(emitSnapshots(component, launches)))
+    return failure();
 
   auto round = simplan::RepeatOp::create(launches, b.loc,
                                          launches.getI64IntegerAttr(maxSteps));

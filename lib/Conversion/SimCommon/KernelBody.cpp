@@ -16,7 +16,9 @@
 #include "mlir/Dialect/SCF/IR/SCF.h"
 #include "mlir/Dialect/Utils/StaticValueUtils.h"
 #include "mlir/IR/IRMapping.h"
+#include "mlir/IR/TypeUtilities.h"
 #include "mlir/Transforms/RegionUtils.h"
+#include "sim/Runtime/bundle_generated.h"
 
 using namespace mlir;
 using namespace mlir::sim;
@@ -222,6 +224,9 @@ private:
         return value;
     if (version == Version::cache)
       return lowerCacheLoad(builder, load);
+    if (version == Version::local && values.levels &&
+        load.getIndex() != values.item)
+      return lowerLevelLoad(builder, load, buffer);
 
     Value memory, base;
     auto halfOf = [&](Value blockBase, Value parity) {
@@ -270,6 +275,95 @@ private:
       value = arith::SelectOp::create(
           builder, loc, inBounds, value,
           buildZeroElement(builder, loc, value.getType()));
+    return value;
+  }
+
+  /// Local time steps: item `j`'s state at the reader's local time `T +
+  /// slot`, from the two time levels its block keeps. The block of sub-step
+  /// `s` has taken `c = ceil(slot / s)` sub-steps, so its latest level is
+  /// at `b = c s` after `T` (in the half `source parity xor (c & 1)`) and
+  /// its previous one at `b - s` (the other half). In step (`b = slot`):
+  /// the latest level; a coarser block ahead in time: the buffer's
+  /// interpolation between the two at `(slot - (b - s)) / s`.
+  FailureOr<Value> lowerLevelLoad(OpBuilder &builder, LoadOp load,
+                                  BufferOp buffer) {
+    Location loc = load.getLoc();
+    StringAttr name = load.getBufferAttr().getAttr();
+    Value memory = values.buffers.lookup(name);
+    if (!memory)
+      return load.emitOpError() << "reads @" << buffer.getSymName()
+                                << ", which this kernel does not have";
+    Type type = load.getType();
+    auto floatType = cast<FloatType>(mlir::getElementTypeOrSelf(type));
+    Value inBounds;
+    Value item = applyBoundary(builder, loc, buffer, load.getIndex(),
+                               values.range, inBounds);
+    Value block = arith::DivUIOp::create(
+        builder, loc, item,
+        arith::ConstantIndexOp::create(
+            builder, loc, int64_t(::sim::bundle::LocalStepBlock::Items)));
+    Value element =
+        arith::AddIOp::create(builder, loc, values.levelBase, block);
+    Value level = memref::LoadOp::create(builder, loc, values.levels, element);
+    // Sub-steps are powers of two: `c s` is `slot` rounded up to a
+    // multiple of `s`, and `c` is odd when bit `s` of that is set.
+    Value one = arith::ConstantIntOp::create(builder, loc, 1, 64);
+    Value zero64 = arith::ConstantIntOp::create(builder, loc, 0, 64);
+    Value slot = values.levelSlot;
+    Value mask = arith::SubIOp::create(builder, loc, level, one);
+    Value latestTime = arith::AndIOp::create(
+        builder, loc, arith::AddIOp::create(builder, loc, slot, mask),
+        arith::XOrIOp::create(
+            builder, loc, mask,
+            arith::ConstantIntOp::create(builder, loc, -1, 64)));
+    Value odd = arith::ExtUIOp::create(
+        builder, loc, builder.getI64Type(),
+        arith::CmpIOp::create(
+            builder, loc, arith::CmpIPredicate::ne,
+            arith::AndIOp::create(builder, loc, latestTime, level), zero64));
+    Value latestParity =
+        arith::XOrIOp::create(builder, loc, values.sourceParity, odd);
+    auto elementOf = [&](Value parity) {
+      Value half = arith::MulIOp::create(
+          builder, loc,
+          arith::IndexCastOp::create(builder, loc, builder.getIndexType(),
+                                     parity),
+          values.extent);
+      return arith::AddIOp::create(builder, loc, half, item).getResult();
+    };
+    Value latest =
+        memref::LoadOp::create(builder, loc, memory, elementOf(latestParity));
+    Value inStep = arith::CmpIOp::create(builder, loc, arith::CmpIPredicate::eq,
+                                         latestTime, slot);
+    auto select = scf::IfOp::create(builder, loc, TypeRange{type}, inStep,
+                                    /*withElseRegion=*/true);
+    {
+      OpBuilder::InsertionGuard guard(builder);
+      builder.setInsertionPointToStart(select.thenBlock());
+      scf::YieldOp::create(builder, loc, latest);
+      builder.setInsertionPointToStart(select.elseBlock());
+      Value previousParity =
+          arith::XOrIOp::create(builder, loc, latestParity, one);
+      Value previous = memref::LoadOp::create(builder, loc, memory,
+                                              elementOf(previousParity));
+      Value behind = arith::SubIOp::create(
+          builder, loc, slot,
+          arith::SubIOp::create(builder, loc, latestTime, level));
+      Value levelF = arith::SIToFPOp::create(builder, loc, floatType, level);
+      Value fraction = arith::DivFOp::create(
+          builder, loc,
+          arith::SIToFPOp::create(builder, loc, floatType, behind), levelF);
+      Value dt = castParam(builder, loc, values.params.lookup("dt"), floatType);
+      Value span = arith::MulFOp::create(builder, loc, levelF, dt);
+      Value value = buffer.getInterpolation().buildInterpolation(
+          builder, loc, ValueRange{previous}, ValueRange{latest}, fraction,
+          span);
+      scf::YieldOp::create(builder, loc, value);
+    }
+    Value value = select.getResult(0);
+    if (inBounds)
+      value = arith::SelectOp::create(builder, loc, inBounds, value,
+                                      buildZeroElement(builder, loc, type));
     return value;
   }
 

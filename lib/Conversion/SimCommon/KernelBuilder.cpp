@@ -111,3 +111,14 @@ void KernelBuilder::ifThen(Value cond, function_ref<void()> thenBuilder) {
 }
 
 KernelTarget::~KernelTarget() = default;
+
+Value KernelBuilder::floorPowerOfTwo(Value value) {
+  // Smear the highest set bit into every lower one, then keep it alone.
+  for (int64_t shift : {1, 2, 4, 8, 16, 32})
+    value = arith::OrIOp::create(
+        *this, loc, value,
+        arith::ShRUIOp::create(*this, loc, value,
+                               constant(value.getType(), shift)));
+  return sub(value, arith::ShRUIOp::create(*this, loc, value,
+                                           constant(value.getType(), 1)));
+}

@@ -89,6 +89,16 @@ LogicalResult SimulationLowering::checkFrontEnd() {
   }
   for (BufferOp buffer : simulation.getBuffers())
     buffers.push_back(buffer);
+  for (ComponentOp component : order) {
+    if (component.getAdvance() != Advance::local_steps)
+      continue;
+    localSteps = true;
+    if (distributed)
+      return component.emitOpError()
+             << "advances in local_steps, which a distributed plan cannot "
+                "run yet; compile it for one process or with another "
+                "strategy";
+  }
   return success();
 }
 
@@ -100,7 +110,8 @@ void SimulationLowering::planClock() {
   for (ComponentOp component : order)
     evaluationSlots[component] = next++;
   for (ComponentOp component : order)
-    if (component.getAdvance() == Advance::grid_substeps) {
+    if (component.getAdvance() == Advance::grid_substeps ||
+        component.getAdvance() == Advance::local_steps) {
       subClockSlots[component] = next;
       next += kSubClockSlots;
     }
@@ -146,6 +157,12 @@ Kernel SimulationLowering::beginKernel(StringRef name, BufferOp exactOf,
     kernel.args.push_back(
         arg(simplan::ArgKind::total, totalOf.getSymNameAttr()));
   }
+  for (ComponentOp component : order)
+    if (component.getAdvance() == Advance::local_steps) {
+      types.push_back(dynamic(b.getI64Type()));
+      kernel.args.push_back(
+          arg(simplan::ArgKind::levels, component.getSymNameAttr()));
+    }
   for (ParamOp param : params) {
     // An index parameter is passed as i64 (sim.get_param casts it back).
     Type type = cast<TypedAttr>(param.getValue()).getType();
@@ -182,6 +199,9 @@ Kernel SimulationLowering::beginKernel(StringRef name, BufferOp exactOf,
       values.snapshots[buffer.getSymNameAttr()] = next();
   Value exactOut = exactOf ? next() : Value();
   kernel.totalOut = totalOf ? next() : Value();
+  for (ComponentOp component : order)
+    if (component.getAdvance() == Advance::local_steps)
+      kernel.levels[component.getSymNameAttr()] = next();
   for (ParamOp param : params)
     values.params[param.getSymName()] = next();
   Value range = next();
@@ -439,6 +459,9 @@ LogicalResult SimulationLowering::run() {
       break;
     case Advance::grid_substeps:
       result = emitRounds(component, step);
+      break;
+    case Advance::local_steps:
+      result = emitLocalSteps(component, step);
       break;
     }
     if (failed(result))

@@ -98,11 +98,16 @@ public:
     Value memory =
         memref::AllocaOp::create(b, b.loc, MemRefType::get({1}, type));
     if (initial) {
-      b.setInsertionPointAfterValue(
-          memory.getDefiningOp()->isBeforeInBlock(initial.getDefiningOp())
-              ? initial
-              : memory);
-      b.store(initial, memory, b.index(0));
+      // After the alloca, the initial value and the index, whichever of
+      // them comes last in the entry block (constants made earlier sit
+      // after an alloca inserted at its start now).
+      Value zero = b.index(0);
+      Value last = memory;
+      for (Value value : {initial, zero})
+        if (last.getDefiningOp()->isBeforeInBlock(value.getDefiningOp()))
+          last = value;
+      b.setInsertionPointAfterValue(last);
+      b.store(initial, memory, zero);
     }
     return {memory};
   }

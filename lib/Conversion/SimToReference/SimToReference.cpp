@@ -144,13 +144,17 @@ FailureOr<DictionaryAttr> ReferenceLowering::model() {
               {named("advance", AdvanceAttr::get(context, decided->advance)),
                named("estimates", b.getBoolAttr(decided->estimates))})));
     }
-    components.push_back(b.getDictionaryAttr(
-        {named("name", component.getSymNameAttr()),
-         named("sub_stepping", component.getSubSteppingAttr()),
-         named("num_steps", b.getBoolAttr(component.hasNumSteps())),
-         named("writes", b.getDenseI64ArrayAttr(writes)),
-         named("reads", getReads(component, bufferIndex)),
-         named("stepping", b.getDictionaryAttr(stepping))}));
+    SmallVector<NamedAttribute> fields = {
+        named("name", component.getSymNameAttr()),
+        named("sub_stepping", component.getSubSteppingAttr()),
+        named("num_steps", b.getBoolAttr(component.hasNumSteps())),
+        named("writes", b.getDenseI64ArrayAttr(writes)),
+        named("reads", getReads(component, bufferIndex)),
+        named("stepping", b.getDictionaryAttr(stepping))};
+    // The window its local time steps read (the neighbours of a group).
+    if (DenseI64ArrayAttr window = component.getLocalWindowAttr())
+      fields.push_back(named("local_window", window));
+    components.push_back(b.getDictionaryAttr(fields));
   }
   for (TotalOp total : simulation.getTotals())
     totals.push_back(

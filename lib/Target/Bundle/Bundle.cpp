@@ -76,6 +76,8 @@ fb::Strategy getStrategy(Strategy strategy) {
     return fb::Strategy::Hip;
   case Strategy::hip_cache:
     return fb::Strategy::HipCache;
+  case Strategy::lts:
+    return fb::Strategy::Lts;
   }
   llvm_unreachable("unknown strategy");
 }
@@ -88,6 +90,8 @@ fb::Advance getAdvance(Advance advance) {
     return fb::Advance::GroupSubSteps;
   case Advance::grid_substeps:
     return fb::Advance::GridSubSteps;
+  case Advance::local_steps:
+    return fb::Advance::LocalSteps;
   }
   llvm_unreachable("unknown advance");
 }
@@ -164,6 +168,8 @@ fb::ArgKind getArgKind(simplan::ArgKind kind) {
     return fb::ArgKind::First;
   case simplan::ArgKind::extent:
     return fb::ArgKind::Extent;
+  case simplan::ArgKind::levels:
+    return fb::ArgKind::Levels;
   }
   llvm_unreachable("unknown launch argument kind");
 }
@@ -464,9 +470,10 @@ PlanReader::readLaunch(simplan::LaunchOp launch) {
     uint32_t index = 0;
     if (FlatSymbolRefAttr name = arg.getName()) {
       const llvm::StringMap<uint32_t> &symbols =
-          arg.getKind() == simplan::ArgKind::param   ? scene.params
-          : arg.getKind() == simplan::ArgKind::total ? totals
-                                                     : buffers;
+          arg.getKind() == simplan::ArgKind::param    ? scene.params
+          : arg.getKind() == simplan::ArgKind::total  ? totals
+          : arg.getKind() == simplan::ArgKind::levels ? components
+                                                      : buffers;
       auto found = symbols.find(name.getValue());
       if (found == symbols.end())
         return launch.emitOpError()
@@ -657,6 +664,12 @@ LogicalResult readReferenceModel(ModuleOp module, const SceneIndex &scene,
     if (failed(readIndices(entry, "writes", record->writes)) ||
         failed(readIndices(entry, "reads", record->reads)))
       return failure();
+    if (auto window = entry.getAs<DenseI64ArrayAttr>("local_window")) {
+      if (window.size() != 2)
+        return malformed("a 'local_window' that is not [lo, hi]");
+      record->local_window.assign(window.asArrayRef().begin(),
+                                  window.asArrayRef().end());
+    }
     // Indexed by the schema's Strategy, which is the sim dialect's order.
     for (uint32_t value = 0; value <= getMaxEnumValForStrategy(); ++value) {
       Strategy strategy = *symbolizeStrategy(value);

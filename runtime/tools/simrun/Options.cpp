@@ -288,7 +288,8 @@ void declareOptions(CLI::App &app, Options &options, std::string &backend,
       ->option_text("B")
       ->check(knownName(&sim_backend_parse));
   app.add_option("--strategy", strategy,
-                 "simple, traditional, hip or hip-cache (default hip)")
+                 "simple, traditional, hip, hip-cache or lts (default\n"
+                 "hip; lts: local time steps, docs/Model.md)")
       ->option_text("S")
       ->check(knownName(&sim_strategy_parse));
   app.add_option("--steps", options.steps,

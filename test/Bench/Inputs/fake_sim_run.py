@@ -8,6 +8,7 @@ advance (test/Bench/noise.test). As sim-run:
   traditional  0.90-1.20 s (spread 30%); 50 evaluations
   hip          0.40 s, every run: 2.5x simple, above its ceiling of 2x
   hip-cache    0.60 s, every run: 1.67x simple, below its ceiling
+  lts          as hip
 
 As the baseline (--scene given): 0.50 s every run, except hip-cache at
 0.50-0.60 s (spread 20%). Both dump the same observed state (--dump).
@@ -19,7 +20,8 @@ import struct
 import sys
 
 TIMES = {"simple": [1.0, 1.0, 1.0], "traditional": [0.9, 1.0, 1.2],
-         "hip": [0.4, 0.4, 0.4], "hip-cache": [0.6, 0.6, 0.6]}
+         "hip": [0.4, 0.4, 0.4], "hip-cache": [0.6, 0.6, 0.6],
+         "lts": [0.4, 0.4, 0.4]}
 BASELINE_TIMES = {"hip-cache": [0.5, 0.55, 0.6]}
 
 args = sys.argv[1:]

@@ -70,13 +70,13 @@ sim.simulation @rod range(16) dt(1.0e-3 : f32) max_steps(4) {
 // CHECK-LABEL: module @rod_reference attributes {sim.reference_model = {
 // CHECK-SAME:    buffers = ["Q", "T"],
 // CHECK-SAME:    components = [{name = "Heater", num_steps = true, reads = array<i64: 1>,
-// CHECK-SAME:      stepping = {hip = {advance = #sim<advance whole_step>, estimates = true}, "hip-cache" = {advance = #sim<advance whole_step>, estimates = true}, simple = {advance = #sim<advance whole_step>, estimates = false}, traditional = {advance = #sim<advance whole_step>, estimates = true}},
+// CHECK-SAME:      stepping = {hip = {advance = #sim<advance whole_step>, estimates = true}, "hip-cache" = {advance = #sim<advance whole_step>, estimates = true}, lts = {advance = #sim<advance whole_step>, estimates = true}, simple = {advance = #sim<advance whole_step>, estimates = false}, traditional = {advance = #sim<advance whole_step>, estimates = true}},
 // CHECK-SAME:      sub_stepping = #sim<sub_stepping in_kernel>, writes = array<i64: 0>},
 // CHECK-SAME:    {name = "Rod", num_steps = false, reads = array<i64: 0>,
-// CHECK-SAME:      stepping = {hip = {advance = #sim<advance whole_step>, estimates = false}, "hip-cache" = {advance = #sim<advance whole_step>, estimates = false}, simple = {advance = #sim<advance whole_step>, estimates = false}, traditional = {advance = #sim<advance whole_step>, estimates = false}},
+// CHECK-SAME:      stepping = {hip = {advance = #sim<advance whole_step>, estimates = false}, "hip-cache" = {advance = #sim<advance whole_step>, estimates = false}, lts = {advance = #sim<advance whole_step>, estimates = false}, simple = {advance = #sim<advance whole_step>, estimates = false}, traditional = {advance = #sim<advance whole_step>, estimates = false}},
 // CHECK-SAME:      sub_stepping = #sim<sub_stepping in_kernel>, writes = array<i64: 1>}],
 // CHECK-SAME:    params = ["k", "unused"],
-// CHECK-SAME:    step_caps = {hip = 4 : i64, "hip-cache" = 4 : i64, simple = 1 : i64, traditional = 4 : i64}, totals = []}}
+// CHECK-SAME:    step_caps = {hip = 4 : i64, "hip-cache" = 4 : i64, lts = 4 : i64, simple = 1 : i64, traditional = 4 : i64}, totals = []}}
 // CHECK-NOT: sim.
 // CHECK: func.func @sim_ref_init_0(%{{.*}}: !llvm.ptr, %{{.*}}: i64, %{{.*}}: !llvm.ptr)
 // CHECK: func.func @sim_ref_init_1(%[[CTX:.*]]: !llvm.ptr, %[[ITEM:.*]]: i64, %[[OUT:.*]]: !llvm.ptr)
@@ -150,14 +150,15 @@ sim.simulation @diffuse range(16) dt(1.0e-3 : f64) max_steps(4) {
   sim.observe [@U]
 }
 
-// grid_sync: grid-wide sub-steps under hip and hip-cache.
+// grid_sync: grid-wide sub-steps under hip, hip-cache and lts (@U is
+// Hermite-interpolated, so no local time steps).
 // CHECK-LABEL: module @diffuse_reference attributes {sim.reference_model = {
 // CHECK-SAME:    buffers = ["U", "V"],
 // CHECK-SAME:    components = [{name = "Spread", num_steps = true, reads = array<i64: 0, 1>,
-// CHECK-SAME:      stepping = {hip = {advance = #sim<advance grid_substeps>, estimates = false}, "hip-cache" = {advance = #sim<advance grid_substeps>, estimates = false}, simple = {advance = #sim<advance whole_step>, estimates = false}, traditional = {advance = #sim<advance whole_step>, estimates = true}},
+// CHECK-SAME:      stepping = {hip = {advance = #sim<advance grid_substeps>, estimates = false}, "hip-cache" = {advance = #sim<advance grid_substeps>, estimates = false}, lts = {advance = #sim<advance grid_substeps>, estimates = false}, simple = {advance = #sim<advance whole_step>, estimates = false}, traditional = {advance = #sim<advance whole_step>, estimates = true}},
 // CHECK-SAME:      sub_stepping = #sim<sub_stepping grid_sync>, writes = array<i64: 0, 1>}],
 // CHECK-SAME:    params = [],
-// CHECK-SAME:    step_caps = {hip = 4 : i64, "hip-cache" = 4 : i64, simple = 1 : i64, traditional = 4 : i64}, totals = []}}
+// CHECK-SAME:    step_caps = {hip = 4 : i64, "hip-cache" = 4 : i64, lts = 4 : i64, simple = 1 : i64, traditional = 4 : i64}, totals = []}}
 // CHECK: func.func @sim_ref_num_steps_0(
 // CHECK:   arith.constant -3 : i32
 // CHECK:   %[[MAX:.*]] = llvm.load %{{.*}} {alignment = 4 : i64} : !llvm.ptr -> i32
@@ -223,10 +224,10 @@ sim.simulation @"two stage" range(16) dt(1.0e-3 : f32) max_steps(4) {
 // CHECK-LABEL: module @"two stage_reference" attributes {sim.reference_model = {
 // CHECK-SAME:    buffers = ["X 0", "Y"],
 // CHECK-SAME:    components = [{name = "A", num_steps = true, reads = array<i64: 0>,
-// CHECK-SAME:      stepping = {hip = {advance = #sim<advance group_substeps>, estimates = false}, "hip-cache" = {advance = #sim<advance group_substeps>, estimates = false}, simple = {advance = #sim<advance whole_step>, estimates = false}, traditional = {advance = #sim<advance whole_step>, estimates = true}},
+// CHECK-SAME:      stepping = {hip = {advance = #sim<advance group_substeps>, estimates = false}, "hip-cache" = {advance = #sim<advance group_substeps>, estimates = false}, lts = {advance = #sim<advance group_substeps>, estimates = false}, simple = {advance = #sim<advance whole_step>, estimates = false}, traditional = {advance = #sim<advance whole_step>, estimates = true}},
 // CHECK-SAME:      sub_stepping = #sim<sub_stepping in_kernel>, writes = array<i64: 0>},
 // CHECK-SAME:    {name = "B", num_steps = true, reads = array<i64: 0>,
-// CHECK-SAME:      stepping = {hip = {advance = #sim<advance group_substeps>, estimates = false}, "hip-cache" = {advance = #sim<advance group_substeps>, estimates = false}, simple = {advance = #sim<advance whole_step>, estimates = false}, traditional = {advance = #sim<advance whole_step>, estimates = true}},
+// CHECK-SAME:      stepping = {hip = {advance = #sim<advance group_substeps>, estimates = false}, "hip-cache" = {advance = #sim<advance group_substeps>, estimates = false}, lts = {advance = #sim<advance group_substeps>, estimates = false}, simple = {advance = #sim<advance whole_step>, estimates = false}, traditional = {advance = #sim<advance whole_step>, estimates = true}},
 // CHECK-SAME:      sub_stepping = #sim<sub_stepping in_kernel>, writes = array<i64: 1>}],
 // CHECK-SAME:    params = ["gain 1"],
 // CHECK-SAME:    totals = [{name = "sum Y", reads = array<i64: 1, 0>}]}}

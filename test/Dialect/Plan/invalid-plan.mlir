@@ -67,7 +67,7 @@ simplan.plan @p strategy("hip") kernels(@k) range(4) dt(1.0e-2 : f32) max_steps(
 // -----
 
 simplan.plan @p strategy("hip") kernels(@k) range(4) dt(1.0e-2 : f32) max_steps(2) step_cap(2) group_size(32) clock_slots(16) histogram(13) {
-  // expected-error @+1 {{'simplan.component' op has a sub_clock but advances in group_substeps; only grid_substeps components have one}}
+  // expected-error @+1 {{'simplan.component' op has a sub_clock but advances in group_substeps; only grid_substeps and local_steps components have one}}
   simplan.component @C writes [] evaluations(8) advance group_substeps sub_clock(9)
 }
 

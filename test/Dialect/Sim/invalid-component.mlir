@@ -558,3 +558,39 @@ sim.simulation @s range(16) dt(1.0 : f32) max_steps(2) {
     sim.yield %x : f32
   }
 }
+
+// -----
+
+sim.simulation @s range(16) dt(1.0 : f32) max_steps(2) {
+  sim.buffer @B : f32 init {
+  ^bb0(%i: index):
+    %c = arith.constant 0.0 : f32
+    sim.yield %c : f32
+  }
+  // expected-error @+1 {{'sim.component' op has a local_window that is not [lo, hi] with lo <= 0 <= hi}}
+  sim.component @C writes(@B) attributes {local_window = array<i64: 1, 2>} evaluate {
+  ^bb0(%i: index, %t: i64, %n: i32, %dt: f32):
+    %x = sim.read @B[%i] : f32
+    sim.yield %x : f32
+  }
+}
+
+// -----
+
+sim.simulation @s range(16) dt(1.0 : f32) max_steps(2) attributes {strategy = #sim<strategy hip>} {
+  sim.buffer @B : f32 init {
+  ^bb0(%i: index):
+    %c = arith.constant 0.0 : f32
+    sim.yield %c : f32
+  }
+  // expected-error @+1 {{'sim.component' op advances in local_steps, which needs a local_window and the lts strategy}}
+  sim.component @C writes(@B) attributes {advance = #sim<advance local_steps>, local_window = array<i64: -1, 1>} num_steps {
+  ^bb0(%i: index, %t: i64):
+    %c2 = arith.constant 2 : i32
+    sim.yield %c2 : i32
+  } evaluate {
+  ^bb0(%i: index, %t: i64, %n: i32, %dt: f32):
+    %x = sim.read @B[%i] : f32
+    sim.yield %x : f32
+  }
+}

@@ -71,6 +71,16 @@ struct KernelValues {
   /// at `item` plus offsets bounded inside the fill's window needs no
   /// check: `item` is one of the group's items.
   llvm::DenseMap<StringAttr, CacheView> caches;
+  /// Local time steps (a component that advances in `local_steps`, in the
+  /// sub-step of slot `levelSlot`, i64): a `local` load of another item
+  /// reads the two stored time levels of that item's block (32 items).
+  /// `levels` holds every block's sub-step (i64) from element `levelBase`;
+  /// the block of sub-step `s` has taken `ceil(levelSlot / s)` sub-steps,
+  /// so its latest level is at `ceil(levelSlot / s) * s` base steps after
+  /// `T`, in the half `sourceParity` xor that count's parity, and its
+  /// previous one `s` earlier in the other half. Null outside such a
+  /// sub-step.
+  Value levels, levelSlot, levelBase;
 };
 
 /// Returns the item index that a read of `index` actually reads under

@@ -49,6 +49,8 @@ struct KernelBuilder : OpBuilder {
   Value cmp(arith::CmpIPredicate predicate, Value a, Value b);
   Value select(Value cond, Value a, Value b);
   Value xorOne(Value value);
+  /// The largest power of two not above `value` (a positive i64), 0 for 0.
+  Value floorPowerOfTwo(Value value);
   Value toIndex(Value value);
   Value extend(Value value, Type type);
   Value truncate(Value value, Type type);
@@ -98,6 +100,9 @@ struct Kernel {
   /// The values bodies read; each kernel builder adds the halves,
   /// registers and big step that its bodies see.
   KernelValues values;
+  /// Per component that advances in `local_steps`: its groups' sub-steps
+  /// (`levels @C`).
+  llvm::DenseMap<StringAttr, Value> levels;
   /// The time argument of an exact kernel.
   Value time;
   /// The per-item output array (f64) of a total kernel.

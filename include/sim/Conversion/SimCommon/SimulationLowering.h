@@ -12,6 +12,8 @@
 //   SubStepKernels.cpp       substep_C: group sub-steps in one kernel
 //   GridSubStepKernels.cpp   snapshot_B, the rounds of grid-wide sub-steps,
 //                            parity_C
+//   LocalStepKernels.cpp     levels_C, limit_levels_C, the slots of local
+//                            time steps, local_parity_C
 //
 // Everything here decides *how* to run what the front end recorded: the
 // strategy, the schedule, how each component advances (`advance`,
@@ -49,6 +51,12 @@ constexpr int64_t kSubSize = int64_t(::sim::bundle::SubClockSlot::Size);
 constexpr int64_t kSubCount = int64_t(::sim::bundle::SubClockSlot::Done);
 constexpr int64_t kSubEstimate = int64_t(::sim::bundle::SubClockSlot::Estimate);
 constexpr int64_t kSubClockSlots = int64_t(::sim::bundle::SubClockSlot::Slots);
+
+/// Local time steps: the items of a block that chooses one level, and the
+/// code levels_C combines sub-steps into (kLevelCode - sub-step, by an
+/// atomic maximum whose identity is 0).
+constexpr int64_t kLevelBlock = int64_t(::sim::bundle::LocalStepBlock::Items);
+constexpr int64_t kLevelCode = int64_t(1) << 62;
 
 /// No estimate yet: the identity of the minimum.
 constexpr int32_t kNoEstimate = std::numeric_limits<int32_t>::max();
@@ -140,6 +148,10 @@ private:
   LogicalResult emitEvaluate(ComponentOp component, OpBuilder &launches);
   LogicalResult emitSubSteps(ComponentOp component, OpBuilder &launches);
   LogicalResult emitRounds(ComponentOp component, OpBuilder &launches);
+  LogicalResult emitLocalSteps(ComponentOp component, OpBuilder &launches);
+  /// Snapshots of the value at T of `component`'s buffers that the plan
+  /// snapshots, before it ping-pongs between the halves.
+  LogicalResult emitSnapshots(ComponentOp component, OpBuilder &launches);
 
   SimulationOp simulation;
   KernelTarget &target;
@@ -166,6 +178,9 @@ private:
   SmallVector<ComponentOp> order;
   llvm::DenseMap<Operation *, int64_t> evaluationSlots, subClockSlots;
   int64_t histogramSlot = 0, clockSlots = 0;
+  /// Some component advances in `local_steps`: every big step is rounded
+  /// down to a power of two (docs/Model.md, "Local time stepping").
+  bool localSteps = false;
   /// Set when inlining a body failed inside a builder callback.
   bool bodyFailed = false;
 };

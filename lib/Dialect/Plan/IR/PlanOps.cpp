@@ -70,20 +70,20 @@ void PlanDialect::initialize() {
 static constexpr bool sameArgKind(ArgKind kind, ::sim::bundle::ArgKind other) {
   return uint32_t(kind) == uint32_t(other);
 }
-static_assert(sameArgKind(ArgKind::clock, ::sim::bundle::ArgKind::Clock) &&
-                  sameArgKind(ArgKind::buffer,
-                              ::sim::bundle::ArgKind::Buffer) &&
-                  sameArgKind(ArgKind::snapshot,
-                              ::sim::bundle::ArgKind::Snapshot) &&
-                  sameArgKind(ArgKind::exact, ::sim::bundle::ArgKind::Exact) &&
-                  sameArgKind(ArgKind::param, ::sim::bundle::ArgKind::Param) &&
-                  sameArgKind(ArgKind::range, ::sim::bundle::ArgKind::Range) &&
-                  sameArgKind(ArgKind::dt, ::sim::bundle::ArgKind::Dt) &&
-                  sameArgKind(ArgKind::time, ::sim::bundle::ArgKind::Time) &&
-                  sameArgKind(ArgKind::total, ::sim::bundle::ArgKind::Total) &&
-                  sameArgKind(ArgKind::first, ::sim::bundle::ArgKind::First) &&
-                  sameArgKind(ArgKind::extent, ::sim::bundle::ArgKind::Extent),
-              "simplan's ArgKind and the bundle schema's differ");
+static_assert(
+    sameArgKind(ArgKind::clock, ::sim::bundle::ArgKind::Clock) &&
+        sameArgKind(ArgKind::buffer, ::sim::bundle::ArgKind::Buffer) &&
+        sameArgKind(ArgKind::snapshot, ::sim::bundle::ArgKind::Snapshot) &&
+        sameArgKind(ArgKind::exact, ::sim::bundle::ArgKind::Exact) &&
+        sameArgKind(ArgKind::param, ::sim::bundle::ArgKind::Param) &&
+        sameArgKind(ArgKind::range, ::sim::bundle::ArgKind::Range) &&
+        sameArgKind(ArgKind::dt, ::sim::bundle::ArgKind::Dt) &&
+        sameArgKind(ArgKind::time, ::sim::bundle::ArgKind::Time) &&
+        sameArgKind(ArgKind::total, ::sim::bundle::ArgKind::Total) &&
+        sameArgKind(ArgKind::first, ::sim::bundle::ArgKind::First) &&
+        sameArgKind(ArgKind::extent, ::sim::bundle::ArgKind::Extent) &&
+        sameArgKind(ArgKind::levels, ::sim::bundle::ArgKind::Levels),
+    "simplan's ArgKind and the bundle schema's differ");
 
 /// Slots of a sub-step clock (docs/Plan.md, "The clock").
 constexpr int64_t kSubClockSlots = int64_t(::sim::bundle::SubClockSlot::Slots);
@@ -146,14 +146,14 @@ LogicalResult PlanDialect::verifyOperationAttribute(Operation *op,
 static bool needsName(ArgKind kind) {
   return kind == ArgKind::buffer || kind == ArgKind::snapshot ||
          kind == ArgKind::exact || kind == ArgKind::param ||
-         kind == ArgKind::total;
+         kind == ArgKind::total || kind == ArgKind::levels;
 }
 
 /// Kinds that the runtime passes as memory (a memref descriptor).
 static bool isMemory(ArgKind kind) {
   return kind == ArgKind::clock || kind == ArgKind::buffer ||
          kind == ArgKind::snapshot || kind == ArgKind::exact ||
-         kind == ArgKind::total;
+         kind == ArgKind::total || kind == ArgKind::levels;
 }
 
 LogicalResult ArgAttr::verify(function_ref<InFlightDiagnostic()> emitError,
@@ -245,13 +245,17 @@ LogicalResult PlanOp::verifyRegions() {
 }
 
 LogicalResult ComponentOp::verify() {
-  bool grid = getAdvance() == mlir::sim::Advance::grid_substeps;
+  bool grid = getAdvance() == mlir::sim::Advance::grid_substeps ||
+              getAdvance() == mlir::sim::Advance::local_steps;
   if (grid && !getSubClock())
-    return emitOpError() << "advances in grid_substeps but has no sub_clock";
+    return emitOpError() << "advances in "
+                         << mlir::sim::stringifyAdvance(getAdvance())
+                         << " but has no sub_clock";
   if (!grid && getSubClock())
     return emitOpError() << "has a sub_clock but advances in "
                          << mlir::sim::stringifyAdvance(getAdvance())
-                         << "; only grid_substeps components have one";
+                         << "; only grid_substeps and local_steps components "
+                            "have one";
   return success();
 }
 
@@ -358,6 +362,16 @@ LogicalResult LaunchOp::verifySymbolUses(SymbolTableCollection &symbolTable) {
         return emitOpError()
                << "passes " << attr << ", but the plan has no total "
                << attr.getName();
+      continue;
+    }
+    if (attr.getKind() == ArgKind::levels) {
+      auto component = dyn_cast_or_null<ComponentOp>(symbol);
+      if (!component ||
+          component.getAdvance() != mlir::sim::Advance::local_steps)
+        return emitOpError()
+               << "passes " << attr << ", but the plan has no component "
+               << attr.getName() << " that advances in "
+               << "local_steps";
       continue;
     }
     bool isParam = attr.getKind() == ArgKind::param;

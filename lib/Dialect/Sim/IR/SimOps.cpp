@@ -798,6 +798,15 @@ LogicalResult ComponentOp::verify() {
   if (getCachesAttr() && simulation.getStrategy() != Strategy::hip_cache)
     return emitOpError() << "has shared-memory caches, but the simulation's "
                             "memory plan is not for the hip-cache strategy";
+  if (DenseI64ArrayAttr window = getLocalWindowAttr()) {
+    if (window.size() != 2 || window[0] > 0 || window[1] < 0)
+      return emitOpError() << "has a local_window that is not [lo, hi] with "
+                              "lo <= 0 <= hi";
+  }
+  if (getAdvance() == Advance::local_steps &&
+      (!getLocalWindowAttr() || simulation.getStrategy() != Strategy::lts))
+    return emitOpError() << "advances in local_steps, which needs a "
+                            "local_window and the lts strategy";
   return success();
 }
 

@@ -180,8 +180,7 @@ struct InsertInterpolationPass
     if (failed(checkSchedule(simulation)))
       return signalPassFailure();
 
-    bool subSteps = strategy.getValue() == Strategy::hip ||
-                    strategy.getValue() == Strategy::hip_cache;
+    bool subSteps = isSubSteppingStrategy(strategy.getValue());
     for (ComponentOp component : simulation.getComponents()) {
       if (component.hasNumSteps() &&
           failed(rewriteBody(simulation, component, component.getNumSteps(),

@@ -37,7 +37,7 @@ using namespace mlir::sim;
 namespace {
 
 bool isSubStepping(Strategy strategy) {
-  return strategy == Strategy::hip || strategy == Strategy::hip_cache;
+  return isSubSteppingStrategy(strategy);
 }
 
 /// True when `component`'s sub-steps ping-pong between the halves of its
@@ -45,7 +45,8 @@ bool isSubStepping(Strategy strategy) {
 /// `advance`). Every other way of advancing reads the source half and
 /// writes the target half once.
 bool pingPongs(ComponentOp component) {
-  return component.getAdvance() == Advance::grid_substeps;
+  return component.getAdvance() == Advance::grid_substeps ||
+         component.getAdvance() == Advance::local_steps;
 }
 
 struct PlanMemoryPass : public sim::impl::SimPlanMemoryBase<PlanMemoryPass> {

@@ -35,7 +35,7 @@ LogicalResult mlir::sim::checkInterpolable(ReadOp read, BufferOp buffer,
                                            ComponentOp component, BodyKind kind,
                                            Strategy strategy) {
   if (buffer.getInterpolation().isInterpolable() ||
-      (strategy != Strategy::hip && strategy != Strategy::hip_cache))
+      !isSubSteppingStrategy(strategy))
     return success();
   InFlightDiagnostic diag =
       read.emitOpError()

@@ -80,6 +80,8 @@ typedef enum sim_strategy {
   SIM_STRATEGY_TRADITIONAL = 1,
   SIM_STRATEGY_HIP = 2,
   SIM_STRATEGY_HIP_CACHE = 3,
+  /// hip with local time steps (docs/Model.md, "Local time stepping").
+  SIM_STRATEGY_LTS = 4,
 } sim_strategy;
 
 typedef enum sim_backend {
@@ -95,7 +97,7 @@ typedef enum sim_backend {
   SIM_BACKEND_REFERENCE = 3,
 } sim_backend;
 
-/// "simple", "traditional", "hip", "hip-cache".
+/// "simple", "traditional", "hip", "hip-cache", "lts".
 SIM_API const char *sim_strategy_name(sim_strategy strategy);
 SIM_API sim_status sim_strategy_parse(const char *name, sim_strategy *out);
 /// "auto", "cpu", "cuda", "reference".

@@ -1,6 +1,7 @@
 // RUN: sim-opt %s --split-input-file --sim-schedule --sim-substep-legality --sim-plan-memory=strategy=simple | FileCheck %s --check-prefixes=CHECK,SIMPLE
 // RUN: sim-opt %s --split-input-file --sim-schedule --sim-substep-legality --sim-plan-memory=strategy=traditional | FileCheck %s --check-prefixes=CHECK,TRAD
 // RUN: sim-opt %s --split-input-file --sim-schedule --sim-substep-legality --sim-plan-memory=strategy=hip | FileCheck %s --check-prefixes=CHECK,HIP
+// RUN: sim-opt %s --split-input-file --sim-schedule --sim-substep-legality --sim-plan-memory=strategy=lts | FileCheck %s --check-prefixes=CHECK,LTS
 
 // How each component takes a big step (`advance`), whether its num_steps
 // decides the big step (`estimates`), and the largest big step (`step_cap`),
@@ -13,20 +14,26 @@
 //   and takes it whole; @Middle sub-steps in one kernel (it reads its own
 //   buffer at its own item); @Tail reads its own buffer at i+1, so it
 //   sub-steps grid-wide; @Plain has no num_steps and takes the step whole.
+// - lts: as hip, but @Tail's own read is a window (local_window [0, 1]), so
+//   its thread groups take local time steps.
 
 // CHECK-LABEL: sim.simulation @stepping
 // SIMPLE-SAME: attributes {step_cap = 1 : i32, strategy = #sim<strategy simple>}
 // TRAD-SAME: attributes {step_cap = 3 : i32, strategy = #sim<strategy traditional>}
 // HIP-SAME: attributes {step_cap = 3 : i32, strategy = #sim<strategy hip>}
+// LTS-SAME: attributes {step_cap = 3 : i32, strategy = #sim<strategy lts>}
 // SIMPLE: sim.component @Lead writes(@L) attributes {advance = #sim<advance whole_step>, parity
 // TRAD: sim.component @Lead writes(@L) attributes {advance = #sim<advance whole_step>, estimates, parity
 // HIP: sim.component @Lead writes(@L) attributes {advance = #sim<advance whole_step>, estimates, parity
+// LTS: sim.component @Lead writes(@L) attributes {advance = #sim<advance whole_step>, estimates, parity
 // SIMPLE: sim.component @Middle writes(@M) attributes {advance = #sim<advance whole_step>, parity
 // TRAD: sim.component @Middle writes(@M) attributes {advance = #sim<advance whole_step>, estimates, parity
 // HIP: sim.component @Middle writes(@M) attributes {advance = #sim<advance group_substeps>, parity = #sim<parity none>
-// SIMPLE: sim.component @Tail writes(@T) attributes {advance = #sim<advance whole_step>, parity = #sim<parity none>
-// TRAD: sim.component @Tail writes(@T) attributes {advance = #sim<advance whole_step>, estimates, parity = #sim<parity none>
-// HIP: sim.component @Tail writes(@T) attributes {advance = #sim<advance grid_substeps>, parity = #sim<parity copy_if_even>
+// LTS: sim.component @Middle writes(@M) attributes {advance = #sim<advance group_substeps>, parity = #sim<parity none>
+// SIMPLE: sim.component @Tail writes(@T) attributes {advance = #sim<advance whole_step>, local_window = array<i64: 0, 1>, parity = #sim<parity none>
+// TRAD: sim.component @Tail writes(@T) attributes {advance = #sim<advance whole_step>, estimates, local_window = array<i64: 0, 1>, parity = #sim<parity none>
+// HIP: sim.component @Tail writes(@T) attributes {advance = #sim<advance grid_substeps>, local_window = array<i64: 0, 1>, parity = #sim<parity copy_if_even>
+// LTS: sim.component @Tail writes(@T) attributes {advance = #sim<advance local_steps>, local_window = array<i64: 0, 1>, parity = #sim<parity copy_if_even>
 // CHECK: sim.component @Plain writes(@P) attributes {advance = #sim<advance whole_step>, parity = #sim<parity none>
 // CHECK: sim.schedule [@Lead, @Middle, @Tail, @Plain] bounded_by [@Lead]
 sim.simulation @stepping range(64) dt(1.0e-2 : f32) max_steps(3) {
@@ -101,9 +108,10 @@ sim.simulation @stepping range(64) dt(1.0e-2 : f32) max_steps(3) {
 // SIMPLE-SAME: attributes {step_cap = 1 : i32, strategy = #sim<strategy simple>}
 // TRAD-SAME: attributes {step_cap = 1 : i32, strategy = #sim<strategy traditional>}
 // HIP-SAME: attributes {step_cap = 1 : i32, strategy = #sim<strategy hip>}
+// LTS-SAME: attributes {step_cap = 1 : i32, strategy = #sim<strategy lts>}
 // CHECK: sim.component @Lead writes(@L) attributes {advance = #sim<advance whole_step>, parity
 // CHECK: sim.component @Middle writes(@M) attributes {advance = #sim<advance whole_step>, parity
-// CHECK: sim.component @Tail writes(@T) attributes {advance = #sim<advance whole_step>, parity = #sim<parity none>
+// CHECK: sim.component @Tail writes(@T) attributes {advance = #sim<advance whole_step>, local_window = array<i64: 0, 1>, parity = #sim<parity none>
 // CHECK: sim.component @Plain writes(@P) attributes {advance = #sim<advance whole_step>, parity = #sim<parity none>
 sim.simulation @one_step range(64) dt(1.0e-2 : f32) max_steps(1) {
   sim.buffer @L : f32 init {

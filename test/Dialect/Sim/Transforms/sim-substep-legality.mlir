@@ -46,7 +46,7 @@ sim.simulation @legal range(16) dt(1.0e-2 : f32) max_steps(2) {
 // A window read of the own buffer (a stencil on its own state): grid_sync.
 
 // CHECK-LABEL: sim.simulation @own_window
-// CHECK: sim.component @Diffuse writes(@U) attributes {sub_stepping = #sim<sub_stepping grid_sync>}
+// CHECK: sim.component @Diffuse writes(@U) attributes {local_window = array<i64: -1, 1>, sub_stepping = #sim<sub_stepping grid_sync>}
 sim.simulation @own_window range(16) dt(1.0e-2 : f32) max_steps(2) {
   sim.buffer @U : f32 init {
   ^bb0(%i: index):

@@ -36,7 +36,7 @@ from simlists import STRATEGIES, schema_name  # noqa: E402
 
 HEADER_SIZE = 32
 MAGIC = b"SIMBNDL\0"
-MEMORY_ARGS = {"Clock", "Buffer", "Snapshot", "Exact", "Total"}
+MEMORY_ARGS = {"Clock", "Buffer", "Snapshot", "Exact", "Total", "Levels"}
 
 
 def fail(message):
@@ -183,7 +183,7 @@ def dump_steps(steps, plan, names, depth, launches):
             kind, index = arg["kind"], arg["index"]
             table = {"Buffer": "buffers", "Snapshot": "buffers",
                      "Exact": "buffers", "Param": "params",
-                     "Total": "totals"}.get(kind)
+                     "Total": "totals", "Levels": "components"}.get(kind)
             if table is None:
                 if index:
                     fail("a %s argument has index %d" % (kind, index))
@@ -244,7 +244,9 @@ def dump_plan(index, plan, scene):
     scene_buffers = scene.get("buffers", [])
     scene_totals = scene.get("totals", [])
     names = {"buffers": [], "totals": [],
-             "params": [name(p["name"]) for p in scene.get("params", [])]}
+             "params": [name(p["name"]) for p in scene.get("params", [])],
+             "components": [name(c["name"])
+                            for c in plan.get("components", [])]}
     for i, b in enumerate(plan.get("buffers", [])):
         if not 0 <= b["buffer"] < len(scene_buffers):
             fail("plan buffer %d is scene buffer %d of %d" % (
@@ -332,10 +334,13 @@ def dump_reference(reference, scene):
             "%s:%s%s" % (s, st["advance"], "+estimates"
                          if st["estimates"] else "")
             for s, st in zip(strategies, c["stepping"]))
-        print("component %d %s %s%s writes %s reads %s" % (
+        window = c.get("local_window", [])
+        print("component %d %s %s%s writes %s reads %s%s" % (
             i, name(c["name"]), c["sub_stepping"],
             " num_steps" if c["num_steps"] else "",
-            model_buffers(c["writes"]), model_buffers(c.get("reads", []))))
+            model_buffers(c["writes"]), model_buffers(c.get("reads", [])),
+            " local_window %s" % " ".join(str(w) for w in window)
+            if window else ""))
         print("  stepping %s" % stepping)
     for t in reference.get("totals", []):
         if not 0 <= t["total"] < len(scene_totals):

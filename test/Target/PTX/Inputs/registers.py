@@ -184,7 +184,10 @@ def check(args):
         registers = info.get("registers")
         if registers is None or "stack" not in info:
             problems.append("no register count from ptxas")
-        reference = table.get((args.scene, kernel, args.strategy),
+        # The paper scenes read no buffer of their own at other items, so
+        # lts compiles the kernels of hip (and bench/cuda runs lts as hip).
+        compared = "hip" if args.strategy == "lts" else args.strategy
+        reference = table.get((args.scene, kernel, compared),
                               table.get((args.scene, kernel, EVERY_STRATEGY)))
         line = "%s %s %s: %s registers" % (args.scene, args.strategy, kernel,
                                             registers)

@@ -53,7 +53,8 @@ def Plan_ArgKind : I32Enum<"ArgKind", "what a launch argument is", [
     I32EnumCase<"snapshot", 2>, I32EnumCase<"exact", 3>,
     I32EnumCase<"param", 4>, I32EnumCase<"range", 5>, I32EnumCase<"dt", 6>,
     I32EnumCase<"time", 7>, I32EnumCase<"total", 8>,
-    I32EnumCase<"first", 9>, I32EnumCase<"extent", 10>]> {
+    I32EnumCase<"first", 9>, I32EnumCase<"extent", 10>,
+    I32EnumCase<"levels", 11>]> {
   let cppNamespace = "::mlir::simplan";
   let description = [{
     `clock`: the clock (`memref<?xi64>`, `clock_slots` entries). `buffer @B`:
@@ -69,6 +70,9 @@ def Plan_ArgKind : I32Enum<"ArgKind", "what a launch argument is", [
     (`i64`), and `extent`, the elements of one half of a buffer on the rank
     (its block's items plus twice the plan's halo, `i64`); every `range`
     above is then `extent`, and item `i` is element `i - first + halo`.
+    `levels @C`: the sub-step of every thread group of a component that
+    advances in `local_steps` (`memref<?xi64>`, `ceil(range / group_size)`
+    elements), which its kernels decide and read in every big step.
     The cases and their numbers are the bundle schema's `ArgKind`
     (runtime/schema/bundle.fbs).
   }];

@@ -83,7 +83,7 @@ def Sim_ParityAttr : EnumAttr<Sim_Dialect, Sim_Parity, "parity">;
 def Sim_Advance : I32Enum<"Advance",
     "how a component advances through a big step", [
     I32EnumCase<"whole_step", 0>, I32EnumCase<"group_substeps", 1>,
-    I32EnumCase<"grid_substeps", 2>]> {
+    I32EnumCase<"grid_substeps", 2>, I32EnumCase<"local_steps", 3>]> {
   let cppNamespace = "::mlir::sim";
   let description = [{
     Recorded by `--sim-plan-memory` on every component for the strategy it
@@ -98,6 +98,12 @@ def Sim_Advance : I32Enum<"Advance",
     component with `num_steps` under `hip`). `grid_substeps`: sub-steps of
     the minimum over the whole range, one launch each, ping-ponging between
     the halves (a `grid_sync` component with `num_steps` under `hip`).
+    `local_steps`: every thread group advances at its own power-of-two
+    sub-step, chosen per big step from its items' `num_steps` and limited to
+    twice its neighbours'; reads of its own buffers at other items are
+    answered from the two time levels each item keeps (a `grid_sync`
+    component with `num_steps` and a recorded `local_window` under `lts`;
+    docs/Model.md, "Local time stepping").
   }];
 }
 def Sim_AdvanceAttr : EnumAttr<Sim_Dialect, Sim_Advance, "advance">;
@@ -123,7 +129,8 @@ def Sim_VersionAttr : EnumAttr<Sim_Dialect, Sim_Version, "version">;
 
 def Sim_Strategy : I32Enum<"Strategy", "how big steps are chosen and run", [
     I32EnumCase<"simple", 0>, I32EnumCase<"traditional", 1>,
-    I32EnumCase<"hip", 2>, I32EnumCase<"hip_cache", 3, "hip-cache">]> {
+    I32EnumCase<"hip", 2>, I32EnumCase<"hip_cache", 3, "hip-cache">,
+    I32EnumCase<"lts", 4>]> {
   let cppNamespace = "::mlir::sim";
   let description = [{
     `simple`: every big step is one base step. `traditional`: every component
@@ -132,7 +139,11 @@ def Sim_Strategy : I32Enum<"Strategy", "how big steps are chosen and run", [
     minimum estimate of the components that read through the back edge, and
     every component advances through it in sub-steps, reading earlier
     components' buffers interpolated in time. `hip-cache`: `hip` with
-    shared-memory caches of interpolated values (Section 4.1). Recorded on a
+    shared-memory caches of interpolated values (Section 4.1). `lts`: `hip`
+    with local time stepping: a component that reads its own buffers at
+    other items through windows advances every thread group at its own rate
+    (`advance = local_steps`) instead of the range-wide minimum, and the big
+    step is rounded down to a power of two when one does. Recorded on a
     simulation by `--sim-plan-memory`; the pass options use the same names.
     A name with a `-` is printed in quotes:
 

@@ -34,7 +34,17 @@ inline llvm::cl::ValuesClass getStrategyOptionValues() {
       clEnumValN(Strategy::hip, stringifyStrategy(Strategy::hip),
                  "the paper's method: interpolated sub-steps"),
       clEnumValN(Strategy::hip_cache, stringifyStrategy(Strategy::hip_cache),
-                 "hip with shared-memory caches of window reads"));
+                 "hip with shared-memory caches of window reads"),
+      clEnumValN(Strategy::lts, stringifyStrategy(Strategy::lts),
+                 "hip with local time steps for stencil components"));
+}
+
+/// True for the strategies that sub-step and interpolate inside a big step
+/// (`hip`, `hip-cache`, `lts`); `simple` and `traditional` evaluate every
+/// component once per big step.
+inline bool isSubSteppingStrategy(Strategy strategy) {
+  return strategy == Strategy::hip || strategy == Strategy::hip_cache ||
+         strategy == Strategy::lts;
 }
 
 /// Fails with an error on `simulation` when it is past

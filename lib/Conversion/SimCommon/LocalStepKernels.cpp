@@ -1,0 +1,392 @@
+//===- LocalStepKernels.cpp - local time steps of thread groups -----------===//
+//
+// For components that advance in `local_steps` (strategy `lts`,
+// docs/Model.md, "Local time stepping"): every block of kLevelBlock (32)
+// items takes its own power-of-two sub-step in the big step, so a stiff
+// region no longer sets the step of the whole range. Blocks, not thread
+// groups, so that the result does not depend on the group size and a
+// stiff item holds back 32 items, not a whole group. The kernels, in launch
+// order:
+//
+//   snapshot_B       the value at T of buffers later components read
+//   levels_C         each block's sub-step: the largest power of two not
+//                    above m and its items' minimum num_steps at T
+//   limit_levels_C   (one thread) lowers sub-steps until no block's is
+//                    more than twice a neighbour's; records the finest
+//   max_steps times:
+//     local_step_C   slot q of the big step: every item whose block's
+//                    sub-step divides q takes one sub-step from T + q
+//     local_advance_C  (one thread) the next slot: q + finest sub-step
+//   local_parity_C   blocks that took an even number of sub-steps copy
+//                    their result into the target half
+//
+// `levels @C` has two halves of one i64 per block; the big step of clock
+// parity p uses half p. levels_C combines its items into half p with an
+// atomic maximum of kLevelCode - sub-step (0, what the runtime and the
+// previous use leave there, is the identity) and clears half 1 - p for the
+// next big step; limit_levels_C turns the codes into sub-steps. The
+// sub-step clock of the component holds: Begin, the time T + q of the next
+// slot (advance resets it to T); Size, the finest sub-step. Which half of a
+// buffer holds a block's latest level follows from its sub-step and the
+// slot alone, so no flag is written during a slot and every reader can tell
+// (KernelBody.cpp, the `local` loads).
+//
+//===----------------------------------------------------------------------===//
+
+#include "mlir/Dialect/Arith/IR/Arith.h"
+#include "mlir/Dialect/SCF/IR/SCF.h"
+#include "sim/Conversion/SimCommon/KernelNames.h"
+#include "sim/Conversion/SimCommon/SimulationLowering.h"
+
+using namespace mlir;
+using namespace mlir::sim;
+
+LogicalResult SimulationLowering::emitLocalSteps(ComponentOp component,
+                                                 OpBuilder &launches) {
+  int64_t sub = subClockSlots.lookup(component);
+  StringRef name = component.getSymName();
+  StringAttr symbol = component.getSymNameAttr();
+  auto writes =
+      llvm::to_vector(component.getWrites().getAsRange<FlatSymbolRefAttr>());
+  ArrayRef<int64_t> window = component.getLocalWindowAttr().asArrayRef();
+  int64_t reach = std::max(-window[0], window[1]);
+  // Blocks within `radius` of a block are its neighbours: those its window
+  // can reach. They wrap around the range when a buffer it writes does.
+  int64_t radius = llvm::divideCeil(reach, kLevelBlock);
+  bool cyclic = llvm::any_of(writes, [&](FlatSymbolRefAttr write) {
+    return simulation.lookupBuffer(write).getBoundary() == Boundary::wrap;
+  });
+  component.emitRemark()
+      << "@" << name << " takes local time steps: every block of "
+      << kLevelBlock
+      << " items its own power-of-two sub-step, at most twice that of the "
+      << radius << " block" << (radius == 1 ? "" : "s")
+      << " on each side, in up to " << maxSteps
+      << " slot launches per big step";
+
+  if (failed(emitSnapshots(component, launches)))
+    return failure();
+
+  // The blocks of the range and the half of `levels @C` of this big step.
+  auto blocksOf = [&](Kernel &kernel) {
+    return arith::DivUIOp::create(
+               b, b.loc, b.add(kernel.values.range, b.index(kLevelBlock - 1)),
+               b.index(kLevelBlock))
+        .getResult();
+  };
+  auto blockOf = [&](Value item) {
+    return arith::DivUIOp::create(b, b.loc, item, b.index(kLevelBlock))
+        .getResult();
+  };
+
+  // levels_C: each block's sub-step from its items' num_steps at T.
+  {
+    Kernel kernel = beginKernel(getKernelName(kernels, "levels", name));
+    Value begin, size, parity;
+    readClock(kernel, begin, size, parity);
+    setHalves(kernel, parity, parity);
+    kernel.values.bigStepBegin = begin;
+    kernel.values.bigStepSize = size;
+    Value levels = kernel.levels.lookup(symbol);
+    b.ifThen(b.cmp(arith::CmpIPredicate::sgt, size, b.i64(0)), [&] {
+      Value blocks = blocksOf(kernel);
+      Value half = b.mul(b.toIndex(parity), blocks);
+      Value other = b.mul(b.toIndex(b.xorOne(parity)), blocks);
+      forEachItem(kernel, [&](const Lane &lane) {
+        b.ifThen(lane.active, [&] {
+          KernelValues values = kernel.values;
+          values.item = lane.item;
+          Value steps =
+              b.extend(estimate(kernel, component, lane.item, begin, values),
+                       b.getI64Type());
+          Value level = b.floorPowerOfTwo(b.min(steps, size));
+          Value block = blockOf(lane.item);
+          b.atomic(arith::AtomicRMWKind::maxs, b.sub(b.i64(kLevelCode), level),
+                   levels, b.add(half, block));
+          Value first = b.cmp(arith::CmpIPredicate::eq,
+                              b.mul(block, b.index(kLevelBlock)), lane.item);
+          b.ifThen(first,
+                   [&] { b.store(b.i64(0), levels, b.add(other, block)); });
+        });
+      });
+    });
+    if (failed(endKernel(kernel, simplan::LaunchShape::items, launches)))
+      return failure();
+  }
+
+  // limit_levels_C: no block more than twice as coarse as a neighbour.
+  {
+    Kernel kernel = beginKernel(getKernelName(kernels, "limit_levels", name));
+    Value begin, size, parity;
+    readClock(kernel, begin, size, parity);
+    Value levels = kernel.levels.lookup(symbol);
+    b.ifThen(b.cmp(arith::CmpIPredicate::sgt, size, b.i64(0)), [&] {
+      Value one = b.i64(1), zero = b.i64(0);
+      Value blocks = arith::IndexCastOp::create(b, b.loc, b.getI64Type(),
+                                                blocksOf(kernel));
+      Value half = arith::IndexCastOp::create(
+          b, b.loc, b.getI64Type(), b.mul(b.toIndex(parity), blocksOf(kernel)));
+      auto at = [&](Value block) { return b.toIndex(b.add(half, block)); };
+      auto levelAt = [&](Value block) { return b.load(levels, at(block)); };
+      // The codes of levels_C to sub-steps.
+      {
+        auto decode = scf::ForOp::create(b, b.loc, zero, blocks, one);
+        OpBuilder::InsertionGuard guard(b);
+        b.setInsertionPoint(decode.getBody()->getTerminator());
+        Value k = decode.getInductionVar();
+        b.store(b.sub(b.i64(kLevelCode), levelAt(k)), levels, at(k));
+      }
+      // Lowers block `g` to twice its finest neighbour; returns whether it
+      // changed.
+      auto relax = [&](Value g) -> Value {
+        Value own = levelAt(g);
+        Value bound = own;
+        if (radius > 0) {
+          auto loop = scf::ForOp::create(b, b.loc, one, b.i64(radius + 1), one,
+                                         ValueRange{own});
+          OpBuilder::InsertionGuard guard(b);
+          b.setInsertionPointToStart(loop.getBody());
+          Value d = loop.getInductionVar();
+          Value finest = loop.getRegionIterArg(0);
+          for (bool below : {true, false}) {
+            Value h = below ? b.sub(g, d) : b.add(g, d);
+            Value valid;
+            if (cyclic) {
+              // h mod blocks; d <= radius may exceed the blocks.
+              Value rem = arith::RemSIOp::create(b, b.loc, h, blocks);
+              h = b.select(b.cmp(arith::CmpIPredicate::slt, rem, zero),
+                           b.add(rem, blocks), rem);
+              valid = b.constant(b.getI1Type(), 1);
+            } else {
+              valid = arith::AndIOp::create(
+                  b, b.loc, b.cmp(arith::CmpIPredicate::sge, h, zero),
+                  b.cmp(arith::CmpIPredicate::slt, h, blocks));
+              h = b.min(b.max(h, zero), b.sub(blocks, one));
+            }
+            Value twice = arith::ShLIOp::create(b, b.loc, levelAt(h), one);
+            finest = b.select(valid, b.min(finest, twice), finest);
+          }
+          scf::YieldOp::create(b, b.loc, finest);
+          b.setInsertionPointAfter(loop);
+          bound = loop.getResult(0);
+        }
+        b.store(bound, levels, at(g));
+        return b.cmp(arith::CmpIPredicate::slt, bound, own);
+      };
+      // Forward and backward sweeps until nothing changes: the levels only
+      // go down, each at most log2(m) times, and the result is the largest
+      // assignment that meets the rule, whatever the order.
+      auto sweeps = scf::WhileOp::create(
+          b, b.loc, b.getI1Type(), ValueRange{b.constant(b.getI1Type(), 1)});
+      {
+        OpBuilder::InsertionGuard guard(b);
+        Block *before =
+            b.createBlock(&sweeps.getBefore(), {}, b.getI1Type(), b.loc);
+        scf::ConditionOp::create(b, b.loc, before->getArgument(0),
+                                 before->getArguments());
+        b.createBlock(&sweeps.getAfter(), {}, b.getI1Type(), b.loc);
+        Value changed = b.constant(b.getI1Type(), 0);
+        for (bool forward : {true, false}) {
+          auto pass = scf::ForOp::create(b, b.loc, zero, blocks, one,
+                                         ValueRange{changed});
+          OpBuilder::InsertionGuard inner(b);
+          b.setInsertionPointToStart(pass.getBody());
+          Value k = pass.getInductionVar();
+          Value g = forward ? k : b.sub(b.sub(blocks, one), k);
+          Value any = arith::OrIOp::create(b, b.loc, pass.getRegionIterArg(0),
+                                           relax(g));
+          scf::YieldOp::create(b, b.loc, any);
+          b.setInsertionPointAfter(pass);
+          changed = pass.getResult(0);
+        }
+        scf::YieldOp::create(b, b.loc, changed);
+      }
+      // The finest sub-step: the distance between slots where some block
+      // starts one.
+      auto finest =
+          scf::ForOp::create(b, b.loc, zero, blocks, one, ValueRange{size});
+      {
+        OpBuilder::InsertionGuard guard(b);
+        b.setInsertionPointToStart(finest.getBody());
+        scf::YieldOp::create(b, b.loc,
+                             b.min(finest.getRegionIterArg(0),
+                                   levelAt(finest.getInductionVar())));
+      }
+      b.store(finest.getResult(0), kernel.clock, b.index(sub + kSubSize));
+    });
+    if (failed(endKernel(kernel, simplan::LaunchShape::single, launches)))
+      return failure();
+  }
+
+  auto slots = simplan::RepeatOp::create(launches, b.loc,
+                                         launches.getI64IntegerAttr(maxSteps));
+  slots.getBody().emplaceBlock();
+  OpBuilder slotLaunches = OpBuilder::atBlockEnd(&slots.getBody().front());
+
+  // local_step_C: the items whose block's sub-step starts at slot q.
+  {
+    Kernel kernel = beginKernel(getKernelName(kernels, "local_step", name));
+    LaneVar count = target.createLaneVar(b, kernel, b.getI32Type(), b.i32(0));
+    Value begin, size, parity;
+    readClock(kernel, begin, size, parity);
+    setHalves(kernel, parity, parity);
+    kernel.values.bigStepBegin = begin;
+    kernel.values.bigStepSize = size;
+    Value levels = kernel.levels.lookup(symbol);
+    Value dt = kernel.values.params.lookup("dt");
+    Value now = b.load(kernel.clock, b.index(sub + kSubBegin));
+    Value slot = b.sub(now, begin);
+    Value running = arith::AndIOp::create(
+        b, b.loc, b.cmp(arith::CmpIPredicate::sgt, size, b.i64(0)),
+        b.cmp(arith::CmpIPredicate::slt, slot, size));
+    b.ifThen(running, [&] {
+      Value half = b.mul(b.toIndex(parity), blocksOf(kernel));
+      Value lastBlock = b.sub(blocksOf(kernel), b.index(1));
+      // One evaluation of a lane's item from T + slot over `level` base
+      // steps, reading its own buffers at `readParity`, and through
+      // `levels` at other items unless the group's neighbourhood is
+      // uniform (`uniform`: every block its window reaches has `level`).
+      auto evaluateLane = [&](const Lane &lane, Value level, Value readParity,
+                              bool uniform) {
+        Value writeParity = b.xorOne(readParity);
+        Value writeBase = b.mul(b.toIndex(writeParity), kernel.values.extent);
+        KernelValues values = kernel.values;
+        values.item = lane.item;
+        values.localParity = readParity;
+        values.localBase = b.mul(b.toIndex(readParity), values.extent);
+        if (!uniform) {
+          values.levels = levels;
+          values.levelSlot = slot;
+          values.levelBase = half;
+        }
+        SmallVector<Value> results = inline_(
+            component.getEvaluate(),
+            {lane.item, now, b.truncate(level, b.getI32Type()), dt}, values);
+        for (auto [write, value] : llvm::zip_equal(writes, results))
+          b.store(
+              value, values.buffers.lookup(write.getAttr()),
+              at(kernel, write.getAttr(), writeBase, writeParity, lane.item));
+        target.laneStore(b, b.add(target.laneLoad(b, count, lane), b.i32(1)),
+                         count, lane);
+      };
+      // Sub-steps are powers of two: masks instead of divisions. A block
+      // of sub-step `level` starts one at the slot when the slot is a
+      // multiple of it, after slot / level sub-steps, whose parity (bit
+      // `level` of the slot) selects the half it reads.
+      auto startsAt = [&](Value level) {
+        return b.cmp(
+            arith::CmpIPredicate::eq,
+            arith::AndIOp::create(b, b.loc, slot, b.sub(level, b.i64(1))),
+            b.i64(0));
+      };
+      auto readParityOf = [&](Value level) {
+        Value odd = b.extend(b.cmp(arith::CmpIPredicate::ne,
+                                   arith::AndIOp::create(b, b.loc, slot, level),
+                                   b.i64(0)),
+                             b.getI64Type());
+        return arith::XOrIOp::create(b, b.loc, parity, odd).getResult();
+      };
+      target.forEachGroup(b, kernel, [&](Value base) {
+        // The blocks the group's window reaches, and whether they all
+        // have one sub-step: then every lane reads its neighbours in step
+        // from one half, as a grid-wide sub-step does (no level lookups;
+        // on a CPU, wide loads). A window that wraps around the range
+        // takes the general path.
+        Value groupSize = target.groupSize(b, kernel);
+        Value low = b.sub(base, b.index(reach));
+        Value high = b.add(b.add(base, groupSize), b.index(reach - 1));
+        Value inside = b.constant(b.getI1Type(), 1);
+        if (cyclic)
+          inside = arith::AndIOp::create(
+              b, b.loc, b.cmp(arith::CmpIPredicate::sge, low, b.index(0)),
+              b.cmp(arith::CmpIPredicate::slt, high, kernel.values.range));
+        Value firstBlock = blockOf(b.max(low, b.index(0)));
+        Value endBlock =
+            b.add(blockOf(b.min(high, b.sub(kernel.values.range, b.index(1)))),
+                  b.index(1));
+        Value first = b.load(levels, b.add(half, b.min(firstBlock, lastBlock)));
+        auto scan = scf::ForOp::create(b, b.loc, firstBlock, endBlock,
+                                       b.index(1), ValueRange{inside});
+        {
+          OpBuilder::InsertionGuard guard(b);
+          b.setInsertionPointToStart(scan.getBody());
+          Value same =
+              b.cmp(arith::CmpIPredicate::eq,
+                    b.load(levels, b.add(half, scan.getInductionVar())), first);
+          scf::YieldOp::create(
+              b, b.loc,
+              arith::AndIOp::create(b, b.loc, scan.getRegionIterArg(0), same)
+                  .getResult());
+        }
+        Value uniform = scan.getResult(0);
+        auto branch = scf::IfOp::create(b, b.loc, TypeRange{}, uniform,
+                                        /*withElseRegion=*/true);
+        {
+          OpBuilder::InsertionGuard guard(b);
+          b.setInsertionPointToStart(branch.thenBlock());
+          b.ifThen(startsAt(first), [&] {
+            Value readParity = readParityOf(first);
+            target.forEachLane(b, kernel, base, [&](const Lane &lane) {
+              b.ifThen(lane.active,
+                       [&] { evaluateLane(lane, first, readParity, true); });
+            });
+          });
+          b.setInsertionPointToStart(branch.elseBlock());
+          target.forEachLane(b, kernel, base, [&](const Lane &lane) {
+            b.ifThen(lane.active, [&] {
+              Value level = b.load(levels, b.add(half, blockOf(lane.item)));
+              b.ifThen(startsAt(level), [&] {
+                evaluateLane(lane, level, readParityOf(level), false);
+              });
+            });
+          });
+        }
+      });
+      target.reduceIntoClock(b, kernel, count, arith::AtomicRMWKind::addi,
+                             evaluationSlots.lookup(component));
+    });
+    if (failed(endKernel(kernel, simplan::LaunchShape::items, slotLaunches,
+                         component)))
+      return failure();
+  }
+
+  // local_advance_C: the next slot where a block starts a sub-step.
+  {
+    Kernel kernel = beginKernel(getKernelName(kernels, "local_advance", name));
+    Value now = b.load(kernel.clock, b.index(sub + kSubBegin));
+    Value finest = b.load(kernel.clock, b.index(sub + kSubSize));
+    b.store(b.add(now, finest), kernel.clock, b.index(sub + kSubBegin));
+    if (failed(endKernel(kernel, simplan::LaunchShape::single, slotLaunches)))
+      return failure();
+  }
+
+  // local_parity_C: after an even number of sub-steps a block's result is
+  // in the source half.
+  Kernel kernel = beginKernel(getKernelName(kernels, "local_parity", name));
+  Value begin, size, parity;
+  readClock(kernel, begin, size, parity);
+  setHalves(kernel, parity, parity);
+  Value levels = kernel.levels.lookup(symbol);
+  b.ifThen(b.cmp(arith::CmpIPredicate::sgt, size, b.i64(0)), [&] {
+    Value half = b.mul(b.toIndex(parity), blocksOf(kernel));
+    forEachItem(kernel, [&](const Lane &lane) {
+      b.ifThen(lane.active, [&] {
+        // m / level sub-steps (both powers of two): even unless equal.
+        Value level = b.load(levels, b.add(half, blockOf(lane.item)));
+        Value even = b.cmp(arith::CmpIPredicate::ne, size, level);
+        b.ifThen(even, [&] {
+          for (FlatSymbolRefAttr write : writes) {
+            Value memory = kernel.values.buffers.lookup(write.getAttr());
+            b.store(b.load(memory,
+                           at(kernel, write.getAttr(), kernel.values.sourceBase,
+                              kernel.values.sourceParity, lane.item)),
+                    memory,
+                    at(kernel, write.getAttr(), kernel.values.targetBase,
+                       kernel.values.targetParity, lane.item));
+          }
+        });
+      });
+    });
+  });
+  return endKernel(kernel, simplan::LaunchShape::items, launches, component);
+}

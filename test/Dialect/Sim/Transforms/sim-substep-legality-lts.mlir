@@ -1,0 +1,127 @@
+// RUN: sim-opt %s --split-input-file --sim-substep-legality --verify-diagnostics | FileCheck %s
+
+// Whether a grid_sync component may take local time steps under lts: the
+// joined window of its reads of its own buffers at other items is recorded
+// as local_window, or the remark says what prevents it.
+
+// A window in num_steps and evaluate, joined: local_window [-2, 3].
+
+// CHECK-LABEL: sim.simulation @window
+// CHECK: sim.component @Diffuse writes(@U) attributes {local_window = array<i64: -2, 3>, sub_stepping = #sim<sub_stepping grid_sync>}
+sim.simulation @window range(64) dt(1.0e-2 : f32) max_steps(4) {
+  sim.buffer @U : f32 init {
+  ^bb0(%i: index):
+    %c = arith.constant 0.0 : f32
+    sim.yield %c : f32
+  }
+  // expected-remark @+1 {{@Diffuse needs a grid-wide barrier between sub-steps: its num_steps body reads @U, which it writes, at i+3, so a thread could read another item while that item is between sub-steps; under lts its thread groups take local time steps (window i-2..i+3)}}
+  sim.component @Diffuse writes(@U) num_steps {
+  ^bb0(%i: index, %t: i64):
+    %c3 = arith.constant 3 : index
+    %j = arith.addi %i, %c3 : index
+    // expected-note @+1 {{reads @U at i+3}}
+    %u = sim.read @U[%j] : f32
+    %n = arith.fptosi %u : f32 to i32
+    sim.yield %n : i32
+  } evaluate {
+  ^bb0(%i: index, %t: i64, %n: i32, %dt: f32):
+    %c2 = arith.constant 2 : index
+    %j = arith.subi %i, %c2 : index
+    %u = sim.read @U[%i] : f32
+    %l = sim.read @U[%j] : f32
+    %r = arith.addf %u, %l : f32
+    sim.yield %r : f32
+  }
+  sim.observe [@U]
+}
+
+// -----
+
+// A gather of its own buffer: no local_window.
+
+// CHECK-LABEL: sim.simulation @gather
+// CHECK: sim.component @Scatter writes(@U) attributes {sub_stepping = #sim<sub_stepping grid_sync>}
+sim.simulation @gather range(64) dt(1.0e-2 : f32) max_steps(4) {
+  sim.buffer @U : f32 init {
+  ^bb0(%i: index):
+    %c = arith.constant 0.0 : f32
+    sim.yield %c : f32
+  }
+  // expected-remark @+1 {{under lts it cannot take local time steps: its evaluate body reads @U through a gather, so the groups it reads are not known; a window (%i plus a bounded offset) lets the levels of neighbouring groups be limited}}
+  sim.component @Scatter writes(@U) num_steps {
+  ^bb0(%i: index, %t: i64):
+    %c2 = arith.constant 2 : i32
+    sim.yield %c2 : i32
+  } evaluate {
+  ^bb0(%i: index, %t: i64, %n: i32, %dt: f32):
+    %c7 = arith.constant 7 : index
+    %j = arith.muli %i, %c7 : index
+    // expected-note @+1 {{reads @U at gather}}
+    %g = sim.read @U[%j] : f32
+    sim.yield %g : f32
+  }
+  sim.observe [@U]
+}
+
+// -----
+
+// A neighbour of an interp(none) buffer: no value between time levels.
+
+// CHECK-LABEL: sim.simulation @none
+// CHECK: sim.component @Hop writes(@U) attributes {sub_stepping = #sim<sub_stepping grid_sync>}
+sim.simulation @none range(64) dt(1.0e-2 : f32) max_steps(4) {
+  sim.buffer @U : f32 interp(none) init {
+  ^bb0(%i: index):
+    %c = arith.constant 0.0 : f32
+    sim.yield %c : f32
+  }
+  // expected-remark @+1 {{under lts it cannot take local time steps: @U is interp(none), and a read of a neighbour that is ahead in time needs a value between its time levels; give @U an interpolation}}
+  sim.component @Hop writes(@U) num_steps {
+  ^bb0(%i: index, %t: i64):
+    %c2 = arith.constant 2 : i32
+    sim.yield %c2 : i32
+  } evaluate {
+  ^bb0(%i: index, %t: i64, %n: i32, %dt: f32):
+    %c1 = arith.constant 1 : index
+    %j = arith.addi %i, %c1 : index
+    // expected-note @+1 {{reads @U at i+1}}
+    %u = sim.read @U[%j] : f32
+    sim.yield %u : f32
+  }
+  sim.observe [@U]
+}
+
+// -----
+
+// A neighbour of a Hermite buffer: its derivative has no two time levels.
+
+// CHECK-LABEL: sim.simulation @hermite
+// CHECK: sim.component @Wave writes(@X, @V) attributes {sub_stepping = #sim<sub_stepping grid_sync>}
+sim.simulation @hermite range(64) dt(1.0e-2 : f32) max_steps(4) {
+  sim.buffer @V : f32 init {
+  ^bb0(%i: index):
+    %c = arith.constant 0.0 : f32
+    sim.yield %c : f32
+  }
+  sim.buffer @X : f32 interp(#sim.hermite<@V>) init {
+  ^bb0(%i: index):
+    %c = arith.constant 0.0 : f32
+    sim.yield %c : f32
+  }
+  // expected-remark @+1 {{under lts it cannot take local time steps: @X's interpolation reads other buffers (derivative), which are not kept at every item's two time levels; use #sim.linear or #sim.cubic for @X}}
+  sim.component @Wave writes(@X, @V) num_steps {
+  ^bb0(%i: index, %t: i64):
+    %c2 = arith.constant 2 : i32
+    sim.yield %c2 : i32
+  } evaluate {
+  ^bb0(%i: index, %t: i64, %n: i32, %dt: f32):
+    %c1 = arith.constant 1 : index
+    %j = arith.subi %i, %c1 : index
+    // expected-note @+1 {{reads @X at i-1}}
+    %l = sim.read @X[%j] : f32
+    %v = sim.read @V[%i] : f32
+    %x1 = arith.addf %l, %v : f32
+    sim.yield %x1, %v : f32, f32
+  }
+  sim.observe [@X]
+}
