@@ -93,6 +93,8 @@ SCENES = {
     # takes max_steps and lts has nothing to gain (a smoke run).
     "heat_rod": dict(ref="fine", steps=4096, quick_steps=256,
                      quick_range=256, interps=[None], sets=[{}]),
+    "wave_rod": dict(ref="fine", steps=10000, quick_steps=400,
+                     quick_range=256, interps=[None], sets=[{}]),
 }
 
 
