@@ -77,6 +77,18 @@ struct PlanMemoryPass : public sim::impl::SimPlanMemoryBase<PlanMemoryPass> {
       component.setAdvanceAttr(AdvanceAttr::get(context, stepping->advance));
       component.setEstimates(stepping->estimates);
     }
+    // An lts request that no component can use plans what hip plans: say
+    // so (the sub-stepping remarks say why for each grid_sync component).
+    if (strategy == Strategy::lts &&
+        llvm::none_of(analysis.getComponents(), [](ComponentOp component) {
+          return component.getAdvance() == Advance::local_steps;
+        }))
+      simulation.emitRemark()
+          << "strategy lts: no component takes local time steps (none with "
+             "num_steps reads its own buffers at other items through a "
+             "window), so the plan is hip's; a stencil component with "
+             "num_steps that reads @B[%i + c] of a buffer it writes would take "
+             "them";
     simulation.setStrategyAttr(StrategyAttr::get(context, strategy));
     simulation.setStepCapAttr(IntegerAttr::get(
         IntegerType::get(context, 32), getStepCap(simulation, strategy)));

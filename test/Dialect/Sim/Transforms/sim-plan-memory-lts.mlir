@@ -1,0 +1,74 @@
+// RUN: sim-opt %s --split-input-file --sim-schedule --sim-substep-legality --sim-plan-memory=strategy=lts --verify-diagnostics | FileCheck %s
+
+// Under lts a component with num_steps that reads its own buffer through a
+// window takes local time steps: it ping-pongs per block, so it needs the
+// parity copy, and the buffer a later component interpolates a snapshot.
+
+// CHECK-LABEL: sim.simulation @stencil
+// CHECK-SAME: strategy = #sim<strategy lts>
+// CHECK: sim.buffer @U : f32 attributes {snapshot}
+// CHECK: sim.component @Diffuse writes(@U) attributes {advance = #sim<advance local_steps>, local_window = array<i64: -1, 1>, parity = #sim<parity copy_if_even>, sub_stepping = #sim<sub_stepping grid_sync>}
+// CHECK: sim.component @Follow writes(@Q) attributes {advance = #sim<advance whole_step>, parity = #sim<parity none>
+sim.simulation @stencil range(64) dt(1.0e-2 : f32) max_steps(4) {
+  sim.buffer @U : f32 init {
+  ^bb0(%i: index):
+    %c = arith.constant 0.0 : f32
+    sim.yield %c : f32
+  }
+  sim.buffer @Q : f32 init {
+  ^bb0(%i: index):
+    %c = arith.constant 0.0 : f32
+    sim.yield %c : f32
+  }
+  // expected-remark @+1 {{under lts its thread groups take local time steps (window i-1..i+1)}}
+  sim.component @Diffuse writes(@U) num_steps {
+  ^bb0(%i: index, %t: i64):
+    %c2 = arith.constant 2 : i32
+    sim.yield %c2 : i32
+  } evaluate {
+  ^bb0(%i: index, %t: i64, %n: i32, %dt: f32):
+    %c1 = arith.constant 1 : index
+    %l = arith.subi %i, %c1 : index
+    %r = arith.addi %i, %c1 : index
+    %u = sim.read @U[%i] : f32
+    // expected-note @+1 {{reads @U at i-1}}
+    %ul = sim.read @U[%l] : f32
+    %ur = sim.read @U[%r] : f32
+    %s = arith.addf %ul, %ur : f32
+    %d = arith.subf %s, %u : f32
+    sim.yield %d : f32
+  }
+  sim.component @Follow writes(@Q) evaluate {
+  ^bb0(%i: index, %t: i64, %n: i32, %dt: f32):
+    %u = sim.read @U[%i] : f32
+    sim.yield %u : f32
+  }
+  sim.observe [@Q]
+}
+
+// -----
+
+// Nothing that lts could use: a remark, and hip's plan.
+
+// CHECK-LABEL: sim.simulation @pointwise
+// CHECK: sim.component @Decay writes(@U) attributes {advance = #sim<advance group_substeps>
+// expected-remark @+1 {{strategy lts: no component takes local time steps (none with num_steps reads its own buffers at other items through a window), so the plan is hip's}}
+sim.simulation @pointwise range(64) dt(1.0e-2 : f32) max_steps(4) {
+  sim.buffer @U : f32 init {
+  ^bb0(%i: index):
+    %c = arith.constant 1.0 : f32
+    sim.yield %c : f32
+  }
+  sim.component @Decay writes(@U) num_steps {
+  ^bb0(%i: index, %t: i64):
+    %c2 = arith.constant 2 : i32
+    sim.yield %c2 : i32
+  } evaluate {
+  ^bb0(%i: index, %t: i64, %n: i32, %dt: f32):
+    %u = sim.read @U[%i] : f32
+    %h = arith.constant 0.5 : f32
+    %d = arith.mulf %u, %h : f32
+    sim.yield %d : f32
+  }
+  sim.observe [@U]
+}
