@@ -184,17 +184,7 @@ LogicalResult SimulationLowering::emitRounds(ComponentOp component,
       b, b.loc, even, b.cmp(arith::CmpIPredicate::sgt, size, b.i64(0)));
   b.ifThen(copy, [&] {
     forEachItem(kernel, [&](const Lane &lane) {
-      b.ifThen(lane.active, [&] {
-        for (FlatSymbolRefAttr write : writes) {
-          Value memory = kernel.values.buffers.lookup(write.getAttr());
-          b.store(b.load(memory,
-                         at(kernel, write.getAttr(), kernel.values.sourceBase,
-                            kernel.values.sourceParity, lane.item)),
-                  memory,
-                  at(kernel, write.getAttr(), kernel.values.targetBase,
-                     kernel.values.targetParity, lane.item));
-        }
-      });
+      b.ifThen(lane.active, [&] { copyToTarget(kernel, writes, lane.item); });
     });
   });
   return endKernel(kernel, simplan::LaunchShape::items, launches, component);

@@ -374,17 +374,7 @@ LogicalResult SimulationLowering::emitLocalSteps(ComponentOp component,
         // m / level sub-steps (both powers of two): even unless equal.
         Value level = b.load(levels, b.add(half, blockOf(lane.item)));
         Value even = b.cmp(arith::CmpIPredicate::ne, size, level);
-        b.ifThen(even, [&] {
-          for (FlatSymbolRefAttr write : writes) {
-            Value memory = kernel.values.buffers.lookup(write.getAttr());
-            b.store(b.load(memory,
-                           at(kernel, write.getAttr(), kernel.values.sourceBase,
-                              kernel.values.sourceParity, lane.item)),
-                    memory,
-                    at(kernel, write.getAttr(), kernel.values.targetBase,
-                       kernel.values.targetParity, lane.item));
-          }
-        });
+        b.ifThen(even, [&] { copyToTarget(kernel, writes, lane.item); });
       });
     });
   });

@@ -320,6 +320,19 @@ void SimulationLowering::forEachItem(Kernel &kernel,
   });
 }
 
+void SimulationLowering::copyToTarget(Kernel &kernel,
+                                      ArrayRef<FlatSymbolRefAttr> writes,
+                                      Value item) {
+  for (FlatSymbolRefAttr write : writes) {
+    Value memory = kernel.values.buffers.lookup(write.getAttr());
+    b.store(b.load(memory, at(kernel, write.getAttr(), kernel.values.sourceBase,
+                              kernel.values.sourceParity, item)),
+            memory,
+            at(kernel, write.getAttr(), kernel.values.targetBase,
+               kernel.values.targetParity, item));
+  }
+}
+
 void SimulationLowering::countEvaluation(LaneVar count, const Lane &lane) {
   Value one = b.extend(lane.active, b.getI32Type());
   target.laneStore(b, b.add(target.laneLoad(b, count, lane), one), count, lane);

@@ -107,6 +107,10 @@ private:
   void setHalves(Kernel &kernel, Value parity, Value localParity);
   /// Runs `body` for every lane of every group the invocation handles.
   void forEachItem(Kernel &kernel, function_ref<void(const Lane &)> body);
+  /// Copies `item` of every buffer in `writes` from the source half to the
+  /// target half (the parity copy after an even number of sub-steps).
+  void copyToTarget(Kernel &kernel, ArrayRef<FlatSymbolRefAttr> writes,
+                    Value item);
   /// Counts an evaluation of the lane's item in `count` when it is active.
   void countEvaluation(LaneVar count, const Lane &lane);
   SmallVector<Value> inline_(Region &body, ValueRange args,
