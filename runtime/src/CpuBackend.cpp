@@ -17,6 +17,7 @@
 #include "SharedObject.h"
 
 #include <algorithm>
+#include <atomic>
 #include <chrono>
 #include <condition_variable>
 #include <cstdlib>
@@ -37,7 +38,12 @@ using KernelFn = void (*)(void **params, int64_t firstGroup, int64_t endGroup,
                           int64_t groupSize);
 
 /// Runs a range of groups split over a fixed set of threads, the calling
-/// thread included. One job at a time; workers sleep between jobs.
+/// thread included. One job at a time. Between jobs a worker first spins
+/// for a few microseconds on the job counter, then sleeps on a condition
+/// variable; the caller waits for the others the same way. Waking a
+/// sleeping thread costs tens of microseconds (a futex round trip), more
+/// than a small scene's whole kernel, and a run launches kernels back to
+/// back, so most wake-ups find the thread still spinning.
 class ThreadPool {
 public:
   explicit ThreadPool(int threads) {
@@ -78,20 +84,25 @@ public:
     {
       std::lock_guard<std::mutex> lock(mutex);
       job = {fn, params, groups, groupSize, parts, flushSubnormals, offset};
-      pending = int(parts) - 1;
-      ++generation;
+      pending.store(int(parts) - 1, std::memory_order_relaxed);
+      // Publishes the job to the spinning workers (acquire in work()).
+      generation.fetch_add(1, std::memory_order_release);
     }
     wake.notify_all();
     runPart(0);
+    if (spinUntil(
+            [this] { return pending.load(std::memory_order_acquire) == 0; }))
+      return;
     std::unique_lock<std::mutex> lock(mutex);
-    done.wait(lock, [this] { return pending == 0; });
+    done.wait(lock,
+              [this] { return pending.load(std::memory_order_acquire) == 0; });
   }
 
 private:
   void stop() {
     {
       std::lock_guard<std::mutex> lock(mutex);
-      stopping = true;
+      stopping.store(true, std::memory_order_release);
     }
     wake.notify_all();
     for (std::thread &worker : workers)
@@ -114,22 +125,46 @@ private:
     job.fn(job.params, first, end, job.groupSize);
   }
 
+  /// Spins until `ready()` holds or about 20 microseconds have passed;
+  /// returns whether it holds.
+  template <typename Ready> static bool spinUntil(Ready &&ready) {
+    for (int i = 0; i < kSpins; ++i) {
+      if (ready())
+        return true;
+#if defined(__x86_64__) || defined(__i386__)
+      __builtin_ia32_pause();
+#endif
+    }
+    return ready();
+  }
+
   void work(int index) {
     uint64_t seen = 0;
     for (;;) {
+      auto changed = [&] {
+        return stopping.load(std::memory_order_acquire) ||
+               generation.load(std::memory_order_acquire) != seen;
+      };
+      spinUntil(changed);
+      // The job and its counter under the lock, as one snapshot: the caller
+      // may already be filling in the next job for the workers that take
+      // no part in this one.
       std::unique_lock<std::mutex> lock(mutex);
-      wake.wait(lock, [&] { return stopping || generation != seen; });
-      if (stopping)
+      wake.wait(lock, changed);
+      if (stopping.load(std::memory_order_relaxed))
         return;
-      seen = generation;
+      seen = generation.load(std::memory_order_relaxed);
       bool mine = index < job.parts;
       lock.unlock();
       if (!mine)
         continue;
       runPart(index);
-      lock.lock();
-      if (--pending == 0)
+      if (pending.fetch_sub(1, std::memory_order_acq_rel) == 1) {
+        // The caller may be asleep on `done`: take the lock so that it
+        // either sees the count or is already waiting when notified.
+        std::lock_guard<std::mutex> lock(mutex);
         done.notify_one();
+      }
     }
   }
 
@@ -137,9 +172,11 @@ private:
   std::mutex mutex;
   std::condition_variable wake, done;
   Job job{};
-  int pending = 0;
-  uint64_t generation = 0;
-  bool stopping = false;
+  /// About 20 microseconds of spinning (a pause is some tens of cycles).
+  static constexpr int kSpins = 1 << 11;
+  std::atomic<int> pending{0};
+  std::atomic<uint64_t> generation{0};
+  std::atomic<bool> stopping{false};
 };
 
 class CpuBackend final : public Backend {
