@@ -208,10 +208,7 @@ int64_t Session::memoryBytes(int64_t globalRange) const {
   for (const auto &component : plan_->components)
     if (component->advance == Advance::LocalSteps)
       bytes = saturatingAdd(
-          bytes, saturatingMul(
-                     2 * ((range + int64_t(schema::LocalStepBlock::Items) - 1) /
-                          int64_t(schema::LocalStepBlock::Items)),
-                     int64_t(sizeof(int64_t))));
+          bytes, saturatingMul(levelCount(range), int64_t(sizeof(int64_t))));
   return saturatingAdd(bytes,
                        saturatingMul(saturatingMul(range, sizeof(double)),
                                      int64_t(plan_->totals.size())));

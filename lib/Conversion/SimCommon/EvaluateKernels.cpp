@@ -130,10 +130,7 @@ LogicalResult SimulationLowering::emitEvaluate(ComponentOp component,
       beginKernel(getKernelName(kernels, "evaluate", component.getSymName()));
   LaneVar count = target.createLaneVar(b, kernel, b.getI32Type(), b.i32(0));
   Value begin, size, parity;
-  readClock(kernel, begin, size, parity);
-  setHalves(kernel, parity, parity);
-  kernel.values.bigStepBegin = begin;
-  kernel.values.bigStepSize = size;
+  readBigStep(kernel, begin, size, parity);
   Value steps = b.truncate(size, b.getI32Type());
   SmallVector<Cache> caches = createCaches(kernel, component);
   b.ifThen(b.cmp(arith::CmpIPredicate::sgt, size, b.i64(0)), [&] {

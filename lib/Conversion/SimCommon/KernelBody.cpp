@@ -18,7 +18,6 @@
 #include "mlir/IR/IRMapping.h"
 #include "mlir/IR/TypeUtilities.h"
 #include "mlir/Transforms/RegionUtils.h"
-#include "sim/Runtime/bundle_generated.h"
 
 using namespace mlir;
 using namespace mlir::sim;
@@ -300,8 +299,7 @@ private:
                                values.range, inBounds);
     Value block = arith::DivUIOp::create(
         builder, loc, item,
-        arith::ConstantIndexOp::create(
-            builder, loc, int64_t(::sim::bundle::LocalStepBlock::Items)));
+        arith::ConstantIndexOp::create(builder, loc, kLevelBlock));
     Value element =
         arith::AddIOp::create(builder, loc, values.levelBase, block);
     Value level = memref::LoadOp::create(builder, loc, values.levels, element);

@@ -83,10 +83,7 @@ LogicalResult SimulationLowering::emitLocalSteps(ComponentOp component,
   {
     Kernel kernel = beginKernel(getKernelName(kernels, "levels", name));
     Value begin, size, parity;
-    readClock(kernel, begin, size, parity);
-    setHalves(kernel, parity, parity);
-    kernel.values.bigStepBegin = begin;
-    kernel.values.bigStepSize = size;
+    readBigStep(kernel, begin, size, parity);
     Value levels = kernel.levels.lookup(symbol);
     b.ifThen(b.cmp(arith::CmpIPredicate::sgt, size, b.i64(0)), [&] {
       Value blocks = blocksOf(kernel);
@@ -228,10 +225,7 @@ LogicalResult SimulationLowering::emitLocalSteps(ComponentOp component,
     Kernel kernel = beginKernel(getKernelName(kernels, "local_step", name));
     LaneVar count = target.createLaneVar(b, kernel, b.getI32Type(), b.i32(0));
     Value begin, size, parity;
-    readClock(kernel, begin, size, parity);
-    setHalves(kernel, parity, parity);
-    kernel.values.bigStepBegin = begin;
-    kernel.values.bigStepSize = size;
+    readBigStep(kernel, begin, size, parity);
     Value levels = kernel.levels.lookup(symbol);
     Value dt = kernel.values.params.lookup("dt");
     Value now = b.load(kernel.clock, b.index(sub + kSubBegin));

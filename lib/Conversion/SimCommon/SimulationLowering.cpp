@@ -299,6 +299,14 @@ void SimulationLowering::readClock(Kernel &kernel, Value &begin, Value &size,
   parity = b.load(kernel.clock, b.index(kSlotParity));
 }
 
+void SimulationLowering::readBigStep(Kernel &kernel, Value &begin, Value &size,
+                                     Value &parity) {
+  readClock(kernel, begin, size, parity);
+  setHalves(kernel, parity, parity);
+  kernel.values.bigStepBegin = begin;
+  kernel.values.bigStepSize = size;
+}
+
 /// Source and target halves from the clock's parity; `local` loads (own
 /// state not in registers) read the half `localParity` selects.
 void SimulationLowering::setHalves(Kernel &kernel, Value parity,

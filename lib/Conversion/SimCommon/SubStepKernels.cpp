@@ -31,10 +31,7 @@ LogicalResult SimulationLowering::emitSubSteps(ComponentOp component,
     state.push_back(target.createLaneVar(
         b, kernel, simulation.lookupBuffer(name).getElementType()));
   Value begin, size, parity;
-  readClock(kernel, begin, size, parity);
-  setHalves(kernel, parity, parity);
-  kernel.values.bigStepBegin = begin;
-  kernel.values.bigStepSize = size;
+  readBigStep(kernel, begin, size, parity);
   Value dt = kernel.values.params.lookup("dt");
   SmallVector<Cache> caches = createCaches(kernel, component);
 

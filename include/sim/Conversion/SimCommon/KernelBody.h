@@ -83,6 +83,11 @@ struct KernelValues {
   Value levels, levelSlot, levelBase;
 };
 
+/// Local time steps: the items of a block that chooses one level (the
+/// bundle schema's LocalStepBlock, which the runtime reads too;
+/// SimulationLowering.h checks that they agree).
+constexpr int64_t kLevelBlock = 32;
+
 /// Returns the item index that a read of `index` actually reads under
 /// `buffer`'s boundary rule. For `zero`, `inBounds` receives an i1 that is
 /// false when the read must return zero (else it is left null).

@@ -52,11 +52,12 @@ constexpr int64_t kSubCount = int64_t(::sim::bundle::SubClockSlot::Done);
 constexpr int64_t kSubEstimate = int64_t(::sim::bundle::SubClockSlot::Estimate);
 constexpr int64_t kSubClockSlots = int64_t(::sim::bundle::SubClockSlot::Slots);
 
-/// Local time steps: the items of a block that chooses one level, and the
-/// code levels_C combines sub-steps into (kLevelCode - sub-step, by an
-/// atomic maximum whose identity is 0).
-constexpr int64_t kLevelBlock = int64_t(::sim::bundle::LocalStepBlock::Items);
+/// Local time steps: the code levels_C combines sub-steps into
+/// (kLevelCode - sub-step, by an atomic maximum whose identity is 0). The
+/// block size, kLevelBlock, is in KernelBody.h.
 constexpr int64_t kLevelCode = int64_t(1) << 62;
+static_assert(kLevelBlock == int64_t(::sim::bundle::LocalStepBlock::Items),
+              "the kernels' level blocks and the bundle schema's differ");
 
 /// No estimate yet: the identity of the minimum.
 constexpr int32_t kNoEstimate = std::numeric_limits<int32_t>::max();
@@ -86,6 +87,10 @@ private:
   LogicalResult endKernel(Kernel &kernel, simplan::LaunchShape shape,
                           OpBuilder &launches, ComponentOp component = nullptr);
   void readClock(Kernel &kernel, Value &begin, Value &size, Value &parity);
+  /// readClock, and the values of a kernel whose bodies run in the big
+  /// step: both halves from the clock's parity (`local` loads the source)
+  /// and `sim.big_step`.
+  void readBigStep(Kernel &kernel, Value &begin, Value &size, Value &parity);
   /// The element of `item` in the kernel's total arrays and in `buffer`'s
   /// snapshot or exact array.
   Value element(Kernel &kernel, Value item, StringAttr buffer = {}) {

@@ -36,10 +36,6 @@ using namespace mlir::sim;
 
 namespace {
 
-bool isSubStepping(Strategy strategy) {
-  return isSubSteppingStrategy(strategy);
-}
-
 /// True when `component`'s sub-steps ping-pong between the halves of its
 /// buffers through memory: it takes grid-wide sub-steps (its recorded
 /// `advance`). Every other way of advancing reads the source half and
@@ -100,7 +96,7 @@ struct PlanMemoryPass : public sim::impl::SimPlanMemoryBase<PlanMemoryPass> {
       component.removeCachesAttr();
       component.setParityAttr(ParityAttr::get(
           context, pingPongs(component) ? Parity::copy_if_even : Parity::none));
-      if (!isSubStepping(strategy))
+      if (!isSubSteppingStrategy(strategy))
         continue;
 
       for (const BufferAccess &access : analysis.getAccesses(component)) {
@@ -167,7 +163,7 @@ struct PlanMemoryPass : public sim::impl::SimPlanMemoryBase<PlanMemoryPass> {
   /// would silently plan too little memory.
   LogicalResult checkPrerequisites(const DependencyAnalysis &analysis) {
     for (ComponentOp component : analysis.getComponents()) {
-      if (isSubStepping(strategy) && !component.getSubSteppingAttr())
+      if (isSubSteppingStrategy(strategy) && !component.getSubSteppingAttr())
         return component.emitOpError()
                << "has no sub-stepping verdict; run --sim-substep-legality "
                   "before --sim-plan-memory";
