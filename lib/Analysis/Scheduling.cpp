@@ -300,6 +300,10 @@ FailureOr<Stepping> mlir::sim::decideStepping(ComponentOp component,
   // hip: the big step is the minimum num_steps at T of the components that
   // read through the back edge. One of them takes the whole step in one
   // evaluation (its own minimum is at least m); the others sub-step.
+  // lts: the flux writer of a flux pair (a recorded flux_window) runs inside
+  // its reader's slots, so its estimate no longer bounds the big step.
+  if (strategy == Strategy::lts && component.getFluxWindowAttr())
+    return Stepping{Advance::local_flux, false};
   ArrayAttr bounds = schedule.getBoundedByAttr();
   bool bounding =
       hasNumSteps && bounds &&
@@ -311,12 +315,13 @@ FailureOr<Stepping> mlir::sim::decideStepping(ComponentOp component,
     return component.emitOpError()
            << "has no sub-stepping verdict; run --sim-substep-legality "
               "before deciding how it takes a big step";
-  if (*component.getSubStepping() == SubStepping::in_kernel)
-    return Stepping{Advance::group_substeps, false};
-  // lts: a grid_sync component whose own reads allow it (the recorded
-  // local_window) advances each group at its own rate.
+  // lts: a grid_sync component whose own reads allow it, or the reader of
+  // a flux pair (the recorded local_window), advances each block at its
+  // own rate.
   if (strategy == Strategy::lts && component.getLocalWindowAttr())
     return Stepping{Advance::local_steps, false};
+  if (*component.getSubStepping() == SubStepping::in_kernel)
+    return Stepping{Advance::group_substeps, false};
   return Stepping{Advance::grid_substeps, false};
 }
 

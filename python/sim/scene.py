@@ -34,7 +34,7 @@ __all__ = ["Scene", "Param", "Buffer", "Component", "Total", "hermite",
            "Hermite"]
 
 _NAME = re.compile(r"^[A-Za-z_][A-Za-z0-9_$.]*$")
-_INTERPS = ("linear", "cubic", "none")
+_INTERPS = ("linear", "cubic", "none", "flux")
 _BOUNDARIES = ("clamp", "wrap", "zero")
 _BUILTIN_PARAMS = ("range", "dt", "max_steps")
 
@@ -278,8 +278,9 @@ class Scene:
         """Decorator: a buffer whose `init(i)` body is the function; the
         buffer takes the function's name. `dtype`: f32, f64 or a vector of
         them (default: the scene's precision). `interp`: "linear",
-        "cubic", "none" or sim.hermite(V). `boundary`: "clamp", "wrap" or
-        "zero"."""
+        "cubic", "none", "flux" (a flux through interfaces, constant over
+        its writer's step; docs/Model.md, "Conservation") or
+        sim.hermite(V). `boundary`: "clamp", "wrap" or "zero"."""
         loc = user_location(2)
         fn = None
         if callable(dtype) and not isinstance(dtype, DType):

@@ -97,6 +97,8 @@ const char *interpName(Interp interp) {
     return "hermite";
   case Interp::None:
     return "none";
+  case Interp::Flux:
+    return "flux";
   }
   return "?";
 }
@@ -123,6 +125,8 @@ const char *advanceName(Advance advance) {
     return "grid_substeps";
   case Advance::LocalSteps:
     return "local_steps";
+  case Advance::LocalFlux:
+    return "local_flux";
   }
   return "?";
 }

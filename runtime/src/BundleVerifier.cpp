@@ -157,7 +157,7 @@ void verifyScene(const schema::SceneT &scene) {
     checkElement(buffer->element.get(), about);
     if (!valid(buffer->interp))
       bad(about + " has interpolation " + std::to_string(int(buffer->interp)) +
-          ", which is not linear, cubic, hermite or none");
+          ", which is not linear, cubic, hermite, none or flux");
     if (!valid(buffer->boundary))
       bad(about + " has boundary rule " +
           std::to_string(int(buffer->boundary)) +
@@ -299,7 +299,9 @@ private:
         bad(what + ": " + about + " advances in an unknown way (" +
             std::to_string(int(component.advance)) + ")");
       claimSlots(component.evaluations, 1, about + "'s evaluation counter");
-      if (component.advance == Advance::LocalSteps && plan.distributed)
+      if ((component.advance == Advance::LocalSteps ||
+           component.advance == Advance::LocalFlux) &&
+          plan.distributed)
         bad(about + " takes local time steps, which a distributed plan "
                     "cannot run");
       if (component.advance == Advance::GridSubSteps ||
@@ -626,6 +628,11 @@ void verifyReference(const schema::SceneT &scene,
            component.local_window[0] > 0 || component.local_window[1] < 0))
         bad(under + " takes local time steps without a window [lo, hi] "
                     "with lo <= 0 <= hi");
+      if (stepping.advance() == Advance::LocalFlux &&
+          (component.flux_window.size() != 2 ||
+           component.flux_window[0] > component.flux_window[1]))
+        bad(under + " writes the fluxes of a flux pair without a window "
+                    "[lo, hi] with lo <= hi");
     }
   }
   if (reference.step_caps.size() != size_t(kNumStrategies))

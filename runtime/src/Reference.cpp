@@ -58,6 +58,10 @@ void interpolateLanes(Interp interp, int32_t lanes, S f, S h, const uint8_t *a,
       // The caller reports the read; there is no value to give.
       value = 0;
       break;
+    case Interp::Flux:
+      // The flux over the writer's whole step.
+      value = f > 0 ? bv : av;
+      break;
     }
     std::memcpy(out + size_t(l) * sizeof(S), &value, sizeof(S));
   }
@@ -583,6 +587,12 @@ void ReferenceSession::readInStep(int32_t buffer, int64_t item, uint8_t *out) {
       return;
     }
     from = state.current.data();
+  } else if (writer == levels.component &&
+             running.component == levels.fluxWriter &&
+             running.body == Body::Evaluate) {
+    // A flux pair's writer reads its reader's state at its local time.
+    readLevels(buffer, item, out);
+    return;
   } else if (writer > running.component) {
     // A back edge: the writer has not advanced yet.
     from = state.begin.data();
@@ -782,6 +792,8 @@ void ReferenceSession::bigStep(int64_t end) {
     Advance advance = stepping[size_t(c)].advance();
     if (advance == Advance::WholeStep) {
       evaluate(c, 0, range, now, m);
+    } else if (advance == Advance::LocalFlux) {
+      // Runs inside the slots of the component that reads its fluxes.
     } else if (advance == Advance::LocalSteps) {
       localSteps(c, m);
     } else {
@@ -816,17 +828,56 @@ void ReferenceSession::localSteps(int32_t component, int64_t m) {
   auto firstOf = [&](int64_t g) { return g * group; };
   auto lastOf = [&](int64_t g) { return std::min(range, (g + 1) * group); };
 
+  // A flux pair: the writer whose fluxes this component reads.
+  int32_t fluxWriter = -1;
+  for (int32_t c = 0; c < int32_t(model_->components.size()); ++c) {
+    if (stepping[size_t(c)].advance() != Advance::LocalFlux)
+      continue;
+    for (uint32_t buffer : model_->components[size_t(c)]->writes)
+      if (std::find(info.reads.begin(), info.reads.end(), buffer) !=
+          info.reads.end())
+        fluxWriter = c;
+  }
+  // The items that read interface j of its fluxes: j - o for the offsets o
+  // of its flux_window, under the fluxes' boundary rule (docs/Model.md,
+  // "Conservation").
+  auto readersOf = [&](int64_t j) {
+    std::vector<int64_t> readers;
+    const schema::RefComponentT &writer =
+        *model_->components[size_t(fluxWriter)];
+    schema::Boundary boundary = buffers_[writer.writes[0]].info->boundary;
+    for (int64_t o = writer.flux_window[0]; o <= writer.flux_window[1]; ++o) {
+      int64_t r = j - o;
+      if (boundary == schema::Boundary::Wrap)
+        r = ((r % range) + range) % range;
+      else if (boundary == schema::Boundary::Clamp)
+        r = std::clamp<int64_t>(r, 0, range - 1);
+      else if (r < 0 || r >= range)
+        continue;
+      readers.push_back(r);
+    }
+    return readers;
+  };
+
   // Each block's sub-step (blocks of LocalStepBlock::Items items, whatever
   // the group size): the largest power of two within m and its items'
-  // num_steps at T.
+  // num_steps at T, and those of the interfaces its items read.
   levels = {};
   levels.level.assign(size_t(groups), 0);
-  for (int64_t g = 0; g < groups; ++g) {
-    int64_t smallest = m;
+  std::vector<int64_t> smallest(size_t(groups), m);
+  for (int64_t g = 0; g < groups; ++g)
     for (int64_t i = firstOf(g); i < lastOf(g); ++i)
-      smallest = std::min(smallest, numSteps(component, i, now));
-    levels.level[size_t(g)] = floorPowerOfTwo(smallest);
-  }
+      smallest[size_t(g)] =
+          std::min(smallest[size_t(g)], numSteps(component, i, now));
+  if (fluxWriter >= 0 && model_->components[size_t(fluxWriter)]->num_steps)
+    for (int64_t j = 0; j < range; ++j) {
+      int64_t steps = numSteps(fluxWriter, j, now);
+      for (int64_t r : readersOf(j))
+        smallest[size_t(r / group)] =
+            std::min(smallest[size_t(r / group)], steps);
+    }
+  for (int64_t g = 0; g < groups; ++g)
+    levels.level[size_t(g)] = floorPowerOfTwo(smallest[size_t(g)]);
   // No block more than twice as coarse as a block within reach of its
   // window (ceil(reach / block) blocks, around the range under wrap).
   int64_t reach = std::max(-info.local_window[0], info.local_window[1]);
@@ -854,6 +905,7 @@ void ReferenceSession::localSteps(int32_t component, int64_t m) {
   // Slots in time order; the blocks whose sub-step starts at a slot read
   // the levels as they are before it, then all commit.
   levels.component = component;
+  levels.fluxWriter = fluxWriter;
   levels.latest.assign(size_t(groups), now);
   levels.previous.assign(size_t(groups), now);
   levels.previousState.clear();
@@ -861,7 +913,42 @@ void ReferenceSession::localSteps(int32_t component, int64_t m) {
     levels.previousState.push_back(states[buffer].current);
   std::vector<std::vector<std::vector<uint8_t>>> results(
       static_cast<size_t>(groups));
+  std::vector<std::vector<uint8_t>> flux;
   for (int64_t q = 0; q < m; ++q) {
+    // The interfaces whose coarsest reader starts a sub-step here, from the
+    // levels before the slot; their fluxes hold until its next one.
+    if (fluxWriter >= 0) {
+      const auto &writes = model_->components[size_t(fluxWriter)]->writes;
+      std::vector<std::pair<int64_t, int64_t>> due;
+      for (int64_t j = 0; j < range; ++j) {
+        int64_t level = 0;
+        for (int64_t r : readersOf(j))
+          level = std::max(level, levels.level[size_t(r / group)]);
+        if (level == 0)
+          level = m;
+        if (q % level == 0)
+          due.emplace_back(j, level);
+      }
+      std::vector<std::vector<uint8_t>> values;
+      for (auto [j, level] : due) {
+        evaluateInto(fluxWriter, j, j + 1, now + q, level, flux);
+        for (size_t k = 0; k < writes.size(); ++k)
+          values.push_back(flux[k]);
+      }
+      size_t next = 0;
+      for (auto [j, level] : due) {
+        for (uint32_t buffer : writes) {
+          size_t bytes = packed(int32_t(buffer)), at = size_t(j) * bytes;
+          std::memcpy(states[buffer].current.data() + at, values[next].data(),
+                      bytes);
+          std::memcpy(states[buffer].end.data() + at, values[next].data(),
+                      bytes);
+          ++next;
+        }
+        if (checkFinite_)
+          checkFinite(fluxWriter, j, j + 1, now + q, level);
+      }
+    }
     std::vector<int64_t> starting;
     for (int64_t g = 0; g < groups; ++g)
       if (q % levels.level[size_t(g)] == 0)
@@ -1082,7 +1169,12 @@ std::vector<InitCheck> ReferenceSession::checkInit(double tolerance,
                            initialItem(buffer, i), outs[k].data());
           }
         }
-      for (Differences &buffer : found) {
+      for (size_t k = 0; k < found.size(); ++k) {
+        // A flux is read only over its writer's steps, never as the init
+        // (docs/Model.md, "Conservation"): nothing to check.
+        if (buffers_[component.writes[k]].info->interp == Interp::Flux)
+          continue;
+        Differences &buffer = found[k];
         InitCheck &row = buffer.row;
         double limit = row.tolerance * row.scale;
         row.count = std::count_if(buffer.values.begin(), buffer.values.end(),

@@ -199,6 +199,9 @@ private:
   /// of each buffer it writes (the latest is the state's `current`).
   struct LocalLevels {
     int32_t component = -1;
+    /// The flux writer of a flux pair with `component`, which reads its
+    /// state from these levels (-1: none).
+    int32_t fluxWriter = -1;
     std::vector<int64_t> level, latest, previous;
     std::vector<std::vector<uint8_t>> previousState;
   };

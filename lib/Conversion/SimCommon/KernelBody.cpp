@@ -224,7 +224,7 @@ private:
     if (version == Version::cache)
       return lowerCacheLoad(builder, load);
     if (version == Version::local && values.levels &&
-        load.getIndex() != values.item)
+        (values.levelsAtItem || load.getIndex() != values.item))
       return lowerLevelLoad(builder, load, buffer);
 
     Value memory, base;

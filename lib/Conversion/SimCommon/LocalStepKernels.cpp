@@ -14,6 +14,10 @@
 //   limit_levels_C   (one thread) lowers sub-steps until no block's is
 //                    more than twice a neighbour's; records the finest
 //   max_steps times:
+//     local_flux_E   (a flux pair, docs/Model.md "Conservation") every
+//                    interface of the flux writer E whose coarsest reading
+//                    block starts a sub-step at q: its flux from C's state
+//                    at T + q, held until that block's next sub-step
 //     local_step_C   slot q of the big step: every item whose block's
 //                    sub-step divides q takes one sub-step from T + q
 //     local_advance_C  (one thread) the next slot: q + finest sub-step
@@ -40,6 +44,22 @@
 
 using namespace mlir;
 using namespace mlir::sim;
+
+ComponentOp SimulationLowering::findFluxWriter(ComponentOp reader) {
+  for (ComponentOp writer : order) {
+    if (writer.getAdvance() != Advance::local_flux)
+      continue;
+    auto writes = writer.getWrites().getAsRange<FlatSymbolRefAttr>();
+    WalkResult found = reader.getEvaluate().walk([&](LoadOp load) {
+      return llvm::is_contained(writes, load.getBufferAttr())
+                 ? WalkResult::interrupt()
+                 : WalkResult::advance();
+    });
+    if (found.wasInterrupted())
+      return writer;
+  }
+  return nullptr;
+}
 
 LogicalResult SimulationLowering::emitLocalSteps(ComponentOp component,
                                                  OpBuilder &launches) {
@@ -79,6 +99,49 @@ LogicalResult SimulationLowering::emitLocalSteps(ComponentOp component,
         .getResult();
   };
 
+  // A flux pair: the items that read interface `j` of the writer's fluxes
+  // are `j - o` for the offsets `o` of flux_window, under the fluxes'
+  // boundary rule (around the range under wrap, the end item under clamp,
+  // none outside the range under zero). `withReader` gets each reader and
+  // whether it exists.
+  ComponentOp fluxWriter = findFluxWriter(component);
+  // `combine` folds each reader, and whether it exists, into `init`.
+  auto foldReaders = [&](Kernel &kernel, Value interface, Value init,
+                         function_ref<Value(Value, Value, Value)> combine) {
+    ArrayRef<int64_t> offsets = fluxWriter.getFluxWindowAttr().asArrayRef();
+    BufferOp flux = simulation.lookupBuffer(
+        cast<FlatSymbolRefAttr>(fluxWriter.getWrites()[0]));
+    Value range = kernel.values.range;
+    auto loop = scf::ForOp::create(b, b.loc, b.index(offsets[0]),
+                                   b.index(offsets[1] + 1), b.index(1),
+                                   ValueRange{init});
+    OpBuilder::InsertionGuard guard(b);
+    b.setInsertionPointToStart(loop.getBody());
+    Value reader = b.sub(interface, loop.getInductionVar());
+    Value zero = b.index(0), last = b.sub(range, b.index(1));
+    Value exists = b.constant(b.getI1Type(), 1);
+    switch (flux.getBoundary()) {
+    case Boundary::wrap: {
+      Value rem = arith::RemSIOp::create(b, b.loc, reader, range);
+      reader = b.select(b.cmp(arith::CmpIPredicate::slt, rem, zero),
+                        b.add(rem, range), rem);
+      break;
+    }
+    case Boundary::clamp:
+      reader = b.min(b.max(reader, zero), last);
+      break;
+    case Boundary::zero:
+      exists = arith::AndIOp::create(
+          b, b.loc, b.cmp(arith::CmpIPredicate::sge, reader, zero),
+          b.cmp(arith::CmpIPredicate::slt, reader, range));
+      reader = b.min(b.max(reader, zero), last);
+      break;
+    }
+    scf::YieldOp::create(b, b.loc,
+                         combine(reader, exists, loop.getRegionIterArg(0)));
+    return loop.getResult(0);
+  };
+
   // levels_C: each block's sub-step from its items' num_steps at T.
   {
     Kernel kernel = beginKernel(getKernelName(kernels, "levels", name));
@@ -100,6 +163,23 @@ LogicalResult SimulationLowering::emitLocalSteps(ComponentOp component,
           Value block = blockOf(lane.item);
           b.atomic(arith::AtomicRMWKind::maxs, b.sub(b.i64(kLevelCode), level),
                    levels, b.add(half, block));
+          // A flux writer's estimate at interface j bounds every block
+          // that reads the interface.
+          if (fluxWriter && fluxWriter.hasNumSteps()) {
+            Value fluxSteps =
+                b.extend(estimate(kernel, fluxWriter, lane.item, begin, values),
+                         b.getI64Type());
+            Value code = b.sub(b.i64(kLevelCode),
+                               b.floorPowerOfTwo(b.min(fluxSteps, size)));
+            foldReaders(kernel, lane.item, b.i64(0),
+                        [&](Value reader, Value exists, Value unused) {
+                          b.ifThen(exists, [&] {
+                            b.atomic(arith::AtomicRMWKind::maxs, code, levels,
+                                     b.add(half, blockOf(reader)));
+                          });
+                          return unused;
+                        });
+          }
           Value first = b.cmp(arith::CmpIPredicate::eq,
                               b.mul(block, b.index(kLevelBlock)), lane.item);
           b.ifThen(first,
@@ -219,6 +299,72 @@ LogicalResult SimulationLowering::emitLocalSteps(ComponentOp component,
                                          launches.getI64IntegerAttr(maxSteps));
   slots.getBody().emplaceBlock();
   OpBuilder slotLaunches = OpBuilder::atBlockEnd(&slots.getBody().front());
+
+  // local_flux_E: the interfaces whose coarsest reading block starts a
+  // sub-step at slot q, from C's state at T + q (its time levels), into
+  // the target half, where C's reads find them until the next evaluation.
+  if (fluxWriter) {
+    StringRef fluxName = fluxWriter.getSymName();
+    auto fluxWrites =
+        llvm::to_vector(fluxWriter.getWrites().getAsRange<FlatSymbolRefAttr>());
+    Kernel kernel = beginKernel(getKernelName(kernels, "local_flux", fluxName));
+    LaneVar count = target.createLaneVar(b, kernel, b.getI32Type(), b.i32(0));
+    Value begin, size, parity;
+    readBigStep(kernel, begin, size, parity);
+    Value levels = kernel.levels.lookup(symbol);
+    Value dt = kernel.values.params.lookup("dt");
+    Value now = b.load(kernel.clock, b.index(sub + kSubBegin));
+    Value slot = b.sub(now, begin);
+    Value running = arith::AndIOp::create(
+        b, b.loc, b.cmp(arith::CmpIPredicate::sgt, size, b.i64(0)),
+        b.cmp(arith::CmpIPredicate::slt, slot, size));
+    b.ifThen(running, [&] {
+      Value half = b.mul(b.toIndex(parity), blocksOf(kernel));
+      forEachItem(kernel, [&](const Lane &lane) {
+        b.ifThen(lane.active, [&] {
+          // The interface's sub-step: its coarsest reader's (the whole big
+          // step when nothing reads it).
+          Value coarsest = foldReaders(
+              kernel, lane.item, b.i64(0),
+              [&](Value reader, Value exists, Value coarsest) {
+                Value level = b.load(levels, b.add(half, blockOf(reader)));
+                return b.select(exists, b.max(coarsest, level), coarsest);
+              });
+          Value level =
+              b.select(b.cmp(arith::CmpIPredicate::eq, coarsest, b.i64(0)),
+                       size, coarsest);
+          Value starts = b.cmp(
+              arith::CmpIPredicate::eq,
+              arith::AndIOp::create(b, b.loc, slot, b.sub(level, b.i64(1))),
+              b.i64(0));
+          b.ifThen(starts, [&] {
+            KernelValues values = kernel.values;
+            values.item = lane.item;
+            values.levels = levels;
+            values.levelSlot = slot;
+            values.levelBase = half;
+            values.levelsAtItem = true;
+            SmallVector<Value> results =
+                inline_(fluxWriter.getEvaluate(),
+                        {lane.item, now, b.truncate(level, b.getI32Type()), dt},
+                        values);
+            for (auto [write, value] : llvm::zip_equal(fluxWrites, results))
+              b.store(value, values.buffers.lookup(write.getAttr()),
+                      at(kernel, write.getAttr(), values.targetBase,
+                         values.targetParity, lane.item));
+            target.laneStore(b,
+                             b.add(target.laneLoad(b, count, lane), b.i32(1)),
+                             count, lane);
+          });
+        });
+      });
+      target.reduceIntoClock(b, kernel, count, arith::AtomicRMWKind::addi,
+                             evaluationSlots.lookup(fluxWriter));
+    });
+    if (failed(endKernel(kernel, simplan::LaunchShape::items, slotLaunches,
+                         fluxWriter)))
+      return failure();
+  }
 
   // local_step_C: the items whose block's sub-step starts at slot q.
   {

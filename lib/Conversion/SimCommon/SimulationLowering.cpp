@@ -484,6 +484,16 @@ LogicalResult SimulationLowering::run() {
     case Advance::local_steps:
       result = emitLocalSteps(component, step);
       break;
+    case Advance::local_flux:
+      // Runs inside the slots of the component that reads its fluxes.
+      if (llvm::none_of(order, [&](ComponentOp reader) {
+            return reader.getAdvance() == Advance::local_steps &&
+                   findFluxWriter(reader) == component;
+          }))
+        result = component.emitOpError()
+                 << "advances in local_flux, but no component that takes "
+                    "local time steps reads its fluxes";
+      break;
     }
     if (failed(result))
       return failure();

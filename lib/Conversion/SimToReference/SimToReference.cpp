@@ -154,6 +154,9 @@ FailureOr<DictionaryAttr> ReferenceLowering::model() {
     // The window its local time steps read (the neighbours of a group).
     if (DenseI64ArrayAttr window = component.getLocalWindowAttr())
       fields.push_back(named("local_window", window));
+    // The offsets its reader reads its fluxes at (a flux pair's writer).
+    if (DenseI64ArrayAttr window = component.getFluxWindowAttr())
+      fields.push_back(named("flux_window", window));
     components.push_back(b.getDictionaryAttr(fields));
   }
   for (TotalOp total : simulation.getTotals())

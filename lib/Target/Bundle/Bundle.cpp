@@ -92,6 +92,8 @@ fb::Advance getAdvance(Advance advance) {
     return fb::Advance::GridSubSteps;
   case Advance::local_steps:
     return fb::Advance::LocalSteps;
+  case Advance::local_flux:
+    return fb::Advance::LocalFlux;
   }
   llvm_unreachable("unknown advance");
 }
@@ -291,6 +293,8 @@ LogicalResult buildScene(SimulationOp simulation, fb::SceneT &scene,
       record->interp = fb::Interp::Cubic;
     } else if (isa<NoneInterpAttr>(interp)) {
       record->interp = fb::Interp::None;
+    } else if (isa<FluxInterpAttr>(interp)) {
+      record->interp = fb::Interp::Flux;
     } else if (auto hermite = dyn_cast<HermiteInterpAttr>(interp)) {
       auto derivative = index.buffers.find(hermite.getDerivative().getValue());
       if (derivative == index.buffers.end())
@@ -303,7 +307,7 @@ LogicalResult buildScene(SimulationOp simulation, fb::SceneT &scene,
       return buffer.emitOpError()
              << "interpolates with " << interp
              << ", which the bundle format has no value for (linear, cubic, "
-                "hermite or none)";
+                "hermite, flux or none)";
     }
     record->boundary = getBoundary(buffer.getBoundary());
     record->observed = observed.contains(buffer.getSymName());
@@ -669,6 +673,12 @@ LogicalResult readReferenceModel(ModuleOp module, const SceneIndex &scene,
         return malformed("a 'local_window' that is not [lo, hi]");
       record->local_window.assign(window.asArrayRef().begin(),
                                   window.asArrayRef().end());
+    }
+    if (auto window = entry.getAs<DenseI64ArrayAttr>("flux_window")) {
+      if (window.size() != 2)
+        return malformed("a 'flux_window' that is not [lo, hi]");
+      record->flux_window.assign(window.asArrayRef().begin(),
+                                 window.asArrayRef().end());
     }
     // Indexed by the schema's Strategy, which is the sim dialect's order.
     for (uint32_t value = 0; value <= getMaxEnumValForStrategy(); ++value) {

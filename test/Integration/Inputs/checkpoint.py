@@ -87,7 +87,10 @@ class Runtime:
                         ("cuda_device", ctypes.c_int32),
                         ("cuda_graph", ctypes.c_int32),
                         ("check_finite", ctypes.c_int32),
-                        ("max_memory", ctypes.c_int64)]
+                        ("max_memory", ctypes.c_int64),
+                        # sim_runtime.h's full struct: without this field
+                        # the runtime reads whatever follows it.
+                        ("communicator", ctypes.c_void_p)]
         options = Options()
         value = ctypes.c_int()
         self.check(lib.sim_strategy_parse(strategy.encode(),

@@ -81,6 +81,9 @@ struct KernelValues {
   /// previous one `s` earlier in the other half. Null outside such a
   /// sub-step.
   Value levels, levelSlot, levelBase;
+  /// The flux writer of a flux pair reads its reader's state from the time
+  /// levels at every item, its own included (it writes none of it).
+  bool levelsAtItem = false;
 };
 
 /// Local time steps: the items of a block that chooses one level (the

@@ -158,6 +158,9 @@ private:
   LogicalResult emitSubSteps(ComponentOp component, OpBuilder &launches);
   LogicalResult emitRounds(ComponentOp component, OpBuilder &launches);
   LogicalResult emitLocalSteps(ComponentOp component, OpBuilder &launches);
+  /// The flux writer (`advance = local_flux`) whose fluxes `reader` reads,
+  /// or null.
+  ComponentOp findFluxWriter(ComponentOp reader);
   /// Snapshots of the value at T of `component`'s buffers that the plan
   /// snapshots, before it ping-pongs between the halves.
   LogicalResult emitSnapshots(ComponentOp component, OpBuilder &launches);

@@ -128,6 +128,24 @@ Value NoneInterpAttr::buildInterpolation(OpBuilder &builder, Location loc,
 }
 
 //===----------------------------------------------------------------------===//
+// FluxInterpAttr
+//===----------------------------------------------------------------------===//
+
+unsigned FluxInterpAttr::getOrderOfAccuracy() const { return 1; }
+
+Value FluxInterpAttr::buildInterpolation(OpBuilder &builder, Location loc,
+                                         ValueRange atBegin, ValueRange atEnd,
+                                         Value fraction, Value span) const {
+  // The writer's value over its whole step: the end value anywhere after
+  // the start, the start value exactly at it.
+  Value zero = arith::ConstantOp::create(
+      builder, loc, builder.getFloatAttr(fraction.getType(), 0.0));
+  Value after = arith::CmpFOp::create(builder, loc, arith::CmpFPredicate::OGT,
+                                      fraction, zero);
+  return arith::SelectOp::create(builder, loc, after, atEnd[0], atBegin[0]);
+}
+
+//===----------------------------------------------------------------------===//
 // LinearInterpAttr
 //===----------------------------------------------------------------------===//
 

@@ -807,6 +807,15 @@ LogicalResult ComponentOp::verify() {
       (!getLocalWindowAttr() || simulation.getStrategy() != Strategy::lts))
     return emitOpError() << "advances in local_steps, which needs a "
                             "local_window and the lts strategy";
+  if (DenseI64ArrayAttr window = getFluxWindowAttr()) {
+    if (window.size() != 2 || window[0] > window[1])
+      return emitOpError() << "has a flux_window that is not [lo, hi] with "
+                              "lo <= hi";
+  }
+  if (getAdvance() == Advance::local_flux &&
+      (!getFluxWindowAttr() || simulation.getStrategy() != Strategy::lts))
+    return emitOpError() << "advances in local_flux, which needs a "
+                            "flux_window and the lts strategy";
   return success();
 }
 
@@ -980,8 +989,11 @@ LogicalResult LoadOp::verifySymbolUses(SymbolTableCollection &symbolTable) {
     return emitOpError() << "loads the cache of " << getBufferAttr()
                          << ", but the body fills no cache of it "
                             "(sim.fill_cache)";
+  // A flux writer reads its reader's state at its local time (the
+  // reader's time levels).
   if (getVersion() == Version::local &&
-      !component.writesBuffer(getBufferAttr()))
+      !component.writesBuffer(getBufferAttr()) &&
+      component.getAdvance() != Advance::local_flux)
     return emitOpError() << "loads the local state of " << getBufferAttr()
                          << ", but component @" << component.getSymName()
                          << " does not write it";

@@ -265,6 +265,12 @@ struct InsertInterpolationPass
     case ReadRole::own:
       return load(buffer, Version::local);
     case ReadRole::back_edge:
+      // The flux writer of a flux pair runs in its reader's slots: it reads
+      // the reader's state at its own local time, from the reader's time
+      // levels (docs/Model.md, "Conservation"); its estimate is at T.
+      if (component.getAdvance() == Advance::local_flux &&
+          kind == BodyKind::Evaluate)
+        return load(buffer, Version::local);
       return load(buffer, Version::source);
     case ReadRole::interpolate:
       break;

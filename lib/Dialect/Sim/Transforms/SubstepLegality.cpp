@@ -14,6 +14,14 @@
 // two time levels is an interpolation of the two: the pass records the
 // joined window as `local_window`, or says in the remark what prevents it.
 //
+// A flux pair (docs/Model.md, "Conservation") is recognised here too: the
+// first component of the schedule writes only `#sim.flux` buffers, one
+// component reads them all through windows and writes every buffer the
+// first one reads. The pass records the reader's window of the fluxes as
+// `flux_window` on the writer and widens the reader's `local_window` by
+// the reads of its own buffers through the fluxes; a remark on the writer
+// says that the two form a pair, or why they cannot.
+//
 //===----------------------------------------------------------------------===//
 
 #include "sim/Analysis/DependencyAnalysis.h"
@@ -63,7 +71,164 @@ struct SubstepLegalityPass
           << analysis.getPattern(offending).str();
       recordLocalWindow(analysis, component, offending, remark);
     }
+    for (ComponentOp component : analysis.getComponents())
+      component.removeFluxWindowAttr();
+    for (ComponentOp component : analysis.getComponents())
+      recordFluxPair(analysis, component);
     markAllAnalysesPreserved();
+  }
+
+  /// Records `flux_window` on `writer` and widens its reader's
+  /// `local_window` when the two form a flux pair; emits a remark that says
+  /// so, or why not, when `writer` writes a `#sim.flux` buffer.
+  void recordFluxPair(const DependencyAnalysis &analysis, ComponentOp writer) {
+    SmallVector<BufferOp> fluxes = analysis.getWrittenBuffers(writer);
+    auto isFlux = [](BufferOp buffer) {
+      return isa<FluxInterpAttr>(buffer.getInterpolation());
+    };
+    if (!llvm::any_of(fluxes, isFlux))
+      return;
+    StringRef name = writer.getSymName();
+    auto refuse = [&]() {
+      return writer.emitRemark()
+             << "under lts @" << name
+             << " and the readers of its fluxes take the big step as under "
+                "hip: ";
+    };
+    for (BufferOp buffer : fluxes)
+      if (!isFlux(buffer)) {
+        refuse() << "it also writes @" << buffer.getSymName()
+                 << ", which is not #sim.flux; a flux writer writes only "
+                    "fluxes (move @"
+                 << buffer.getSymName() << " to another component)";
+        return;
+      }
+    for (BufferOp buffer : fluxes)
+      if (buffer.getBoundary() != fluxes.front().getBoundary()) {
+        refuse() << "its fluxes @" << fluxes.front().getSymName() << " and @"
+                 << buffer.getSymName()
+                 << " have different boundary rules; give them one";
+        return;
+      }
+    // The one component that reads the fluxes, and the offsets it reads
+    // them at.
+    ComponentOp reader;
+    std::optional<AccessPattern> fluxWindow;
+    for (ComponentOp component : analysis.getComponents())
+      for (const BufferAccess &access : analysis.getAccesses(component)) {
+        if (!llvm::is_contained(fluxes, access.buffer))
+          continue;
+        if (component == writer) {
+          refuse() << "it reads its own flux @" << access.buffer.getSymName()
+                   << "; a flux writer computes fluxes from the state of "
+                      "the component that reads them";
+          return;
+        }
+        if (reader && reader != component) {
+          refuse() << "both @" << reader.getSymName() << " and @"
+                   << component.getSymName()
+                   << " read its fluxes; a flux "
+                      "pair has one reader, which updates the conserved "
+                      "state";
+          return;
+        }
+        reader = component;
+        if (access.body != BodyKind::Evaluate) {
+          refuse() << "@" << component.getSymName() << " reads @"
+                   << access.buffer.getSymName() << " in its "
+                   << stringifyBodyKind(access.body)
+                   << " body; read fluxes only in evaluate";
+          return;
+        }
+        if (access.pattern.isGather()) {
+          refuse() << "@" << component.getSymName() << " reads @"
+                   << access.buffer.getSymName()
+                   << " through a gather; the items that share an "
+                      "interface must be known: read it through a window";
+          return;
+        }
+        fluxWindow =
+            fluxWindow ? fluxWindow->join(access.pattern) : access.pattern;
+      }
+    if (!reader) {
+      refuse() << "no component reads its fluxes";
+      return;
+    }
+    StringRef readerName = reader.getSymName();
+    ScheduleOp schedule = analysis.getSimulation().getScheduleOp();
+    if (!schedule || schedule.getOrder().empty() ||
+        cast<FlatSymbolRefAttr>(schedule.getOrder()[0]).getAttr() !=
+            writer.getSymNameAttr()) {
+      refuse() << "it is not the first component of the step; name it "
+                  "first in sim.schedule so that it reads @"
+               << readerName << "'s state through the back edge";
+      return;
+    }
+    // What the writer reads: only the reader's buffers (or buffers nobody
+    // writes), through windows of buffers with an interpolation of their own.
+    std::optional<AccessPattern> cellWindow;
+    for (const BufferAccess &access : analysis.getAccesses(writer)) {
+      ComponentOp producer = analysis.getWriter(access.buffer);
+      if (!producer)
+        continue;
+      StringRef buffer = access.buffer.getSymName();
+      if (producer != reader) {
+        refuse() << "it reads @" << buffer << ", which @"
+                 << producer.getSymName() << " writes; a flux writer reads "
+                 << "only the state of the component that reads its fluxes (@"
+                 << readerName << ")";
+        return;
+      }
+      if (access.body != BodyKind::Evaluate)
+        continue;
+      if (access.pattern.isGather()) {
+        refuse() << "it reads @" << buffer
+                 << " through a gather; read it through a window so that "
+                    "the blocks an interface reads are known";
+        return;
+      }
+      InterpolationAttrInterface interp = access.buffer.getInterpolation();
+      if (!interp.isInterpolable() || !interp.getAuxiliaryBuffers().empty()) {
+        refuse() << "it reads @" << buffer
+                 << ", whose value between two time levels is not an "
+                    "interpolation of the two; use #sim.linear or #sim.cubic";
+        return;
+      }
+      cellWindow =
+          cellWindow ? cellWindow->join(access.pattern) : access.pattern;
+    }
+    if (!reader.hasNumSteps()) {
+      refuse() << "@" << readerName
+               << " has no num_steps, so its blocks have no step of their own";
+      return;
+    }
+    if (reader.getSubStepping() == SubStepping::grid_sync &&
+        !reader.getLocalWindowAttr()) {
+      refuse() << "@" << readerName
+               << " cannot take local time steps (see its remark)";
+      return;
+    }
+    // The reader's state reaches the reader through the fluxes: the window
+    // of its blocks' neighbours is widened by the flux writer's window.
+    AccessPattern cells = cellWindow.value_or(AccessPattern::own());
+    AccessPattern through = AccessPattern::window(
+        fluxWindow->getMinOffset() + cells.getMinOffset(),
+        fluxWindow->getMaxOffset() + cells.getMaxOffset());
+    AccessPattern window = through.join(AccessPattern::own());
+    if (DenseI64ArrayAttr own = reader.getLocalWindowAttr())
+      window = window.join(AccessPattern::window(own[0], own[1]));
+    reader.setLocalWindowAttr(DenseI64ArrayAttr::get(
+        &getContext(), {window.getMinOffset(), window.getMaxOffset()}));
+    writer.setFluxWindowAttr(
+        DenseI64ArrayAttr::get(&getContext(), {fluxWindow->getMinOffset(),
+                                               fluxWindow->getMaxOffset()}));
+    writer.emitRemark() << "@" << name << " and @" << readerName
+                        << " form a flux pair: under lts every interface of "
+                           "its fluxes steps with the coarsest block that "
+                           "reads it (at "
+                        << fluxWindow->str() << "), and @" << readerName
+                        << "'s blocks take local time steps (window "
+                        << window.str() << ")";
   }
 
   /// Records `local_window` on a grid_sync component whose reads of its own

@@ -148,7 +148,7 @@ typedef struct sim_buffer_info {
   /// type). A host array of a buffer holds `lanes` packed scalars per item.
   int32_t scalar_bytes;
   int32_t lanes;
-  /// "linear", "cubic", "hermite:<derivative>" or "none".
+  /// "linear", "cubic", "hermite:<derivative>", "none" or "flux".
   const char *interp;
   /// "clamp", "wrap" or "zero".
   const char *boundary;

@@ -83,7 +83,8 @@ def Sim_ParityAttr : EnumAttr<Sim_Dialect, Sim_Parity, "parity">;
 def Sim_Advance : I32Enum<"Advance",
     "how a component advances through a big step", [
     I32EnumCase<"whole_step", 0>, I32EnumCase<"group_substeps", 1>,
-    I32EnumCase<"grid_substeps", 2>, I32EnumCase<"local_steps", 3>]> {
+    I32EnumCase<"grid_substeps", 2>, I32EnumCase<"local_steps", 3>,
+    I32EnumCase<"local_flux", 4>]> {
   let cppNamespace = "::mlir::sim";
   let description = [{
     Recorded by `--sim-plan-memory` on every component for the strategy it
@@ -103,7 +104,12 @@ def Sim_Advance : I32Enum<"Advance",
     twice its neighbours'; reads of its own buffers at other items are
     answered from the two time levels each item keeps (a `grid_sync`
     component with `num_steps` and a recorded `local_window` under `lts`;
-    docs/Model.md, "Local time stepping").
+    docs/Model.md, "Local time stepping"). `local_flux`: the flux writer of
+    a flux pair under `lts` (a component with a recorded `flux_window`): it
+    runs inside the slots of the `local_steps` component that reads its
+    `#sim.flux` buffers, evaluating every interface at the slots where the
+    coarsest block that reads it starts a sub-step (docs/Model.md,
+    "Conservation").
   }];
 }
 def Sim_AdvanceAttr : EnumAttr<Sim_Dialect, Sim_Advance, "advance">;
@@ -232,6 +238,31 @@ def Sim_NoneInterpAttr : Sim_Attr<"NoneInterp", "none", [
 
     ```mlir
     sim.buffer @P : f32 interp(none) init { ... }
+    ```
+  }];
+}
+
+def Sim_FluxInterpAttr : Sim_Attr<"FluxInterp", "flux", [
+    DeclareAttrInterfaceMethods<Sim_InterpolationAttrInterface>]> {
+  let summary = "a flux through interfaces, constant over its writer's step";
+  let description = [{
+    Declares that item `j` of the buffer is a flux through an interface
+    (between items `j` and `j + 1` for a 1-D scene) over its writer's whole
+    step: a read at any time inside the step returns the value the writer
+    computed for that step (`b` for every fraction above 0, `a` at 0), so
+    every reader that integrates the flux over the step integrates the same
+    amount, whatever its own sub-steps. Order 1.
+
+    Under `lts` a component that writes only such buffers, all read by one
+    component that writes every buffer the first one reads, forms a **flux
+    pair** with it (`--sim-substep-legality` records `flux_window`): each
+    interface then steps with the coarsest block among the items that read
+    it, and the readers add their shares of its flux in their own
+    sub-steps, so a `sim.total` of what the readers update is conserved to
+    round-off (docs/Model.md, "Conservation").
+
+    ```mlir
+    sim.buffer @F : f64 interp(#sim.flux) boundary(zero) init { ... }
     ```
   }];
 }

@@ -369,8 +369,10 @@ def Sim_ComponentOp : Sim_Op<"component", [
     Both bodies read state only through `sim.read`. The analyses record
     their verdicts as attributes: `sub_stepping` and, for a `grid_sync`
     component that may take local time steps, `local_window = array<i64: lo,
-    hi>`, the offsets at which it reads its own buffers
-    (`--sim-substep-legality`);
+    hi>`, the offsets at which it reads its own buffers (through the
+    fluxes of a flux pair too), and, for the flux writer of a flux pair,
+    `flux_window = array<i64: lo, hi>`, the offsets at which its reader
+    reads its `#sim.flux` buffers (`--sim-substep-legality`);
     `advance` (how the component advances through a big step), `estimates`
     (its `num_steps` decides the size of the big step), `parity` and, under
     `hip-cache`, `caches` (a `#sim.cache<@B, lo, hi>` for each buffer whose
@@ -396,6 +398,7 @@ def Sim_ComponentOp : Sim_Op<"component", [
                        FlatSymbolRefArrayAttr:$writes,
                        OptionalAttr<Sim_SubSteppingAttr>:$sub_stepping,
                        OptionalAttr<DenseI64ArrayAttr>:$local_window,
+                       OptionalAttr<DenseI64ArrayAttr>:$flux_window,
                        OptionalAttr<Sim_AdvanceAttr>:$advance,
                        UnitAttr:$estimates,
                        OptionalAttr<Sim_ParityAttr>:$parity,
