@@ -12,7 +12,7 @@ the error against the scene's reference:
 
   * scenes with `exact` bodies (harmonic, kpr, kepler): sim-run's error
     against the exact solution at the final time;
-  * springs, nbody and heat_rod: the dumped state against `simple` run at
+  * springs, nbody, heat_rod, heat_rod_flux and wave_rod: the dumped state against `simple` run at
     dt / 8 for 8 times the steps (the same end time), computed here;
   * pbd: against `simple` at the same dt (position-based dynamics has no
     small-step limit to compare with: its stiffness depends on the step).
@@ -93,6 +93,9 @@ SCENES = {
     # takes max_steps and lts has nothing to gain (a smoke run).
     "heat_rod": dict(ref="fine", steps=4096, quick_steps=256,
                      quick_range=256, interps=[None], sets=[{}]),
+    # The same rod in flux form (a flux pair under lts).
+    "heat_rod_flux": dict(ref="fine", steps=4096, quick_steps=256,
+                          quick_range=256, interps=[None], sets=[{}]),
     "wave_rod": dict(ref="fine", steps=10000, quick_steps=400,
                      quick_range=256, interps=[None], sets=[{}]),
 }

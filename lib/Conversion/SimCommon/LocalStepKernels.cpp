@@ -318,43 +318,112 @@ LogicalResult SimulationLowering::emitLocalSteps(ComponentOp component,
     Value running = arith::AndIOp::create(
         b, b.loc, b.cmp(arith::CmpIPredicate::sgt, size, b.i64(0)),
         b.cmp(arith::CmpIPredicate::slt, slot, size));
+    // The items a group of interfaces reaches: their readers (flux_window)
+    // and the state the writer reads (its local_window).
+    ArrayRef<int64_t> fluxWindow = fluxWriter.getFluxWindowAttr().asArrayRef();
+    ArrayRef<int64_t> stateWindow =
+        fluxWriter.getLocalWindowAttr().asArrayRef();
+    int64_t below = std::max({int64_t(0), -stateWindow[0], fluxWindow[1]});
+    int64_t above = std::max({int64_t(0), stateWindow[1], -fluxWindow[0]});
     b.ifThen(running, [&] {
       Value half = b.mul(b.toIndex(parity), blocksOf(kernel));
-      forEachItem(kernel, [&](const Lane &lane) {
-        b.ifThen(lane.active, [&] {
-          // The interface's sub-step: its coarsest reader's (the whole big
-          // step when nothing reads it).
-          Value coarsest = foldReaders(
-              kernel, lane.item, b.i64(0),
-              [&](Value reader, Value exists, Value coarsest) {
-                Value level = b.load(levels, b.add(half, blockOf(reader)));
-                return b.select(exists, b.max(coarsest, level), coarsest);
-              });
-          Value level =
-              b.select(b.cmp(arith::CmpIPredicate::eq, coarsest, b.i64(0)),
-                       size, coarsest);
-          Value starts = b.cmp(
-              arith::CmpIPredicate::eq,
-              arith::AndIOp::create(b, b.loc, slot, b.sub(level, b.i64(1))),
-              b.i64(0));
-          b.ifThen(starts, [&] {
-            KernelValues values = kernel.values;
-            values.item = lane.item;
-            values.levels = levels;
-            values.levelSlot = slot;
-            values.levelBase = half;
-            values.levelsAtItem = true;
-            SmallVector<Value> results =
-                inline_(fluxWriter.getEvaluate(),
-                        {lane.item, now, b.truncate(level, b.getI32Type()), dt},
-                        values);
-            for (auto [write, value] : llvm::zip_equal(fluxWrites, results))
-              b.store(value, values.buffers.lookup(write.getAttr()),
-                      at(kernel, write.getAttr(), values.targetBase,
-                         values.targetParity, lane.item));
-            target.laneStore(b,
-                             b.add(target.laneLoad(b, count, lane), b.i32(1)),
-                             count, lane);
+      Value lastBlock = b.sub(blocksOf(kernel), b.index(1));
+      // One evaluation of interface `lane.item` over `level` from T +
+      // slot; reads the reader's state from its time levels, or (`uniform`:
+      // every block it reaches at `level`, all in step) from the half
+      // `readParity`.
+      auto evaluateLane = [&](const Lane &lane, Value level, bool uniform,
+                              Value readParity) {
+        KernelValues values = kernel.values;
+        values.item = lane.item;
+        if (uniform) {
+          values.localParity = readParity;
+          values.localBase = b.mul(b.toIndex(readParity), values.extent);
+        } else {
+          values.levels = levels;
+          values.levelSlot = slot;
+          values.levelBase = half;
+          values.levelsAtItem = true;
+        }
+        SmallVector<Value> results = inline_(
+            fluxWriter.getEvaluate(),
+            {lane.item, now, b.truncate(level, b.getI32Type()), dt}, values);
+        for (auto [write, value] : llvm::zip_equal(fluxWrites, results))
+          b.store(value, values.buffers.lookup(write.getAttr()),
+                  at(kernel, write.getAttr(), values.targetBase,
+                     values.targetParity, lane.item));
+        target.laneStore(b, b.add(target.laneLoad(b, count, lane), b.i32(1)),
+                         count, lane);
+      };
+      auto startsAt = [&](Value level) {
+        return b.cmp(
+            arith::CmpIPredicate::eq,
+            arith::AndIOp::create(b, b.loc, slot, b.sub(level, b.i64(1))),
+            b.i64(0));
+      };
+      target.forEachGroup(b, kernel, [&](Value base) {
+        // A group whose interfaces reach only blocks of one sub-step, all
+        // inside the range (so every interface has its readers): at a slot
+        // where they start, every interface steps with them and reads them
+        // in step; at any other slot nothing is due.
+        Value groupSize = target.groupSize(b, kernel);
+        Value low = b.sub(base, b.index(below));
+        Value high = b.add(b.add(base, groupSize), b.index(above - 1));
+        Value inside = arith::AndIOp::create(
+            b, b.loc, b.cmp(arith::CmpIPredicate::sge, low, b.index(0)),
+            b.cmp(arith::CmpIPredicate::slt, high, kernel.values.range));
+        Value firstBlock = blockOf(b.max(low, b.index(0)));
+        Value endBlock =
+            b.add(blockOf(b.min(high, b.sub(kernel.values.range, b.index(1)))),
+                  b.index(1));
+        Value first = b.load(levels, b.add(half, b.min(firstBlock, lastBlock)));
+        auto scan = scf::ForOp::create(b, b.loc, firstBlock, endBlock,
+                                       b.index(1), ValueRange{inside});
+        {
+          OpBuilder::InsertionGuard guard(b);
+          b.setInsertionPointToStart(scan.getBody());
+          Value same =
+              b.cmp(arith::CmpIPredicate::eq,
+                    b.load(levels, b.add(half, scan.getInductionVar())), first);
+          scf::YieldOp::create(
+              b, b.loc,
+              arith::AndIOp::create(b, b.loc, scan.getRegionIterArg(0), same)
+                  .getResult());
+        }
+        auto branch =
+            scf::IfOp::create(b, b.loc, TypeRange{}, scan.getResult(0),
+                              /*withElseRegion=*/true);
+        OpBuilder::InsertionGuard guard(b);
+        b.setInsertionPointToStart(branch.thenBlock());
+        b.ifThen(startsAt(first), [&] {
+          // After slot / first sub-steps: their parity selects the half.
+          Value odd = b.extend(
+              b.cmp(arith::CmpIPredicate::ne,
+                    arith::AndIOp::create(b, b.loc, slot, first), b.i64(0)),
+              b.getI64Type());
+          Value readParity =
+              arith::XOrIOp::create(b, b.loc, parity, odd).getResult();
+          target.forEachLane(b, kernel, base, [&](const Lane &lane) {
+            b.ifThen(lane.active,
+                     [&] { evaluateLane(lane, first, true, readParity); });
+          });
+        });
+        b.setInsertionPointToStart(branch.elseBlock());
+        target.forEachLane(b, kernel, base, [&](const Lane &lane) {
+          b.ifThen(lane.active, [&] {
+            // The interface's sub-step: its coarsest reader's (the whole
+            // big step when nothing reads it).
+            Value coarsest = foldReaders(
+                kernel, lane.item, b.i64(0),
+                [&](Value reader, Value exists, Value coarsest) {
+                  Value level = b.load(levels, b.add(half, blockOf(reader)));
+                  return b.select(exists, b.max(coarsest, level), coarsest);
+                });
+            Value level =
+                b.select(b.cmp(arith::CmpIPredicate::eq, coarsest, b.i64(0)),
+                         size, coarsest);
+            b.ifThen(startsAt(level),
+                     [&] { evaluateLane(lane, level, false, Value()); });
           });
         });
       });

@@ -757,10 +757,12 @@ LogicalResult ComponentOp::verify() {
     if (!seen.insert(name).second)
       return emitOpError() << "lists buffer " << name << " twice in writes";
 
-  // Sub-steps and estimates are sized by num_steps.
+  // Sub-steps and estimates are sized by num_steps (a flux writer's steps
+  // by its reader's).
   if (!hasNumSteps()) {
     if (std::optional<Advance> advance = getAdvance();
-        advance && *advance != Advance::whole_step)
+        advance && *advance != Advance::whole_step &&
+        *advance != Advance::local_flux)
       return emitOpError() << "advances by " << stringifyAdvance(*advance)
                            << " but has no num_steps body to size them";
     if (getEstimates())

@@ -281,6 +281,12 @@ struct InsertInterpolationPass
       return load(buffer, kind == BodyKind::Evaluate ? Version::target
                                                      : Version::source);
 
+    // A flux holds its writer's value over the whole step, and evaluate
+    // reads at the end of its sub-step, after T: always the target.
+    if (isa<FluxInterpAttr>(buffer.getInterpolation()) &&
+        kind == BodyKind::Evaluate)
+      return load(buffer, Version::target);
+
     // --sim-plan-memory rejects these reads; a hand-written plan may not.
     if (failed(checkInterpolable(read, buffer, component, kind,
                                  simulation.getStrategy().value())))

@@ -219,6 +219,11 @@ struct SubstepLegalityPass
       window = window.join(AccessPattern::window(own[0], own[1]));
     reader.setLocalWindowAttr(DenseI64ArrayAttr::get(
         &getContext(), {window.getMinOffset(), window.getMaxOffset()}));
+    // The writer reads that state from the reader's time levels: its
+    // window bounds the blocks one interface's evaluation reaches.
+    AccessPattern state = cells.join(AccessPattern::own());
+    writer.setLocalWindowAttr(DenseI64ArrayAttr::get(
+        &getContext(), {state.getMinOffset(), state.getMaxOffset()}));
     writer.setFluxWindowAttr(
         DenseI64ArrayAttr::get(&getContext(), {fluxWindow->getMinOffset(),
                                                fluxWindow->getMaxOffset()}));

@@ -7,11 +7,12 @@
 // the writer which rule fails.
 
 // A flux pair: @Flux writes only the #sim.flux @F, which @Cells alone reads
-// at i-1..i; @Flux reads @U at i..i+1. flux_window [-1, 0] on the writer,
+// at i-1..i; @Flux reads @U at i..i+1. flux_window [-1, 0] and
+// local_window [0, 1] (where it reads the reader's state) on the writer,
 // local_window [-1, 1] (through the fluxes) on the reader.
 
 // CHECK-LABEL: sim.simulation @pair
-// CHECK: sim.component @Flux writes(@F) attributes {flux_window = array<i64: -1, 0>, sub_stepping = #sim<sub_stepping in_kernel>}
+// CHECK: sim.component @Flux writes(@F) attributes {flux_window = array<i64: -1, 0>, local_window = array<i64: 0, 1>, sub_stepping = #sim<sub_stepping in_kernel>}
 // CHECK: sim.component @Cells writes(@U) attributes {local_window = array<i64: -1, 1>, sub_stepping = #sim<sub_stepping in_kernel>}
 
 sim.simulation @pair range(64) dt(1.0e-2 : f32) max_steps(4) {

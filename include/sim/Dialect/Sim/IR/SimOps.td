@@ -372,7 +372,8 @@ def Sim_ComponentOp : Sim_Op<"component", [
     hi>`, the offsets at which it reads its own buffers (through the
     fluxes of a flux pair too), and, for the flux writer of a flux pair,
     `flux_window = array<i64: lo, hi>`, the offsets at which its reader
-    reads its `#sim.flux` buffers (`--sim-substep-legality`);
+    reads its `#sim.flux` buffers, with `local_window` the offsets at which
+    it reads the reader's state (`--sim-substep-legality`);
     `advance` (how the component advances through a big step), `estimates`
     (its `num_steps` decides the size of the big step), `parity` and, under
     `hip-cache`, `caches` (a `#sim.cache<@B, lo, hi>` for each buffer whose
