@@ -344,13 +344,71 @@ def convergence(args):
     return out
 
 
+def lts_convergence(args):
+    """The order of lts on both heat rods (forward Euler: 1, Model.md
+    "Accuracy and stability we expect"), and its error against simple's at
+    each dt. dt and the CFL fraction halve together, so every block keeps
+    its sub-step in base steps (1 in the stiff half, max_steps in the soft
+    one) and every physical step halves; the reference is simple at the
+    finest dt / FINE, at the same end time."""
+    levels = 3 if args.quick else 4
+    if args.quick:
+        # 1024 cells: at dt 4e-7 the stiff half takes 1 base step.
+        dt0, steps0, sets0 = 4.0e-7, 128, {"range": "1024"}
+    else:
+        dt0, steps0, sets0 = 2.0e-8, 1024, {}
+    cfl0 = 0.4
+    out = {}
+    for scene in ["heat_rod", "heat_rod_flux"]:
+        simb = build_bundle(args, scene, None)
+        finest = dt0 / 2 ** (levels - 1)
+        fine = os.path.join(args.out, "runs", "lts-convergence-%s-fine" % scene)
+        log("lts convergence %s: reference simple at dt %g" %
+            (scene, finest / FINE))
+        sim_run(args, simb, "simple", steps0 * 2 ** (levels - 1) * FINE,
+                dict(sets0, dt=repr(finest / FINE)), fine)
+        reference = read_npy(os.path.join(fine, "U.npy"))[1]
+        points = []
+        for level in range(levels):
+            dt = dt0 / 2 ** level
+            steps = steps0 * 2 ** level
+            sets = dict(sets0, dt=repr(dt), cfl=repr(cfl0 / 2 ** level))
+            point = {"dt": dt, "steps": steps}
+            for strategy in ["simple", "lts"]:
+                dump = os.path.join(args.out, "runs", "lts-convergence-%s-%s-%d"
+                                    % (scene, strategy, level))
+                log("lts convergence %s %s dt %g" % (scene, strategy, dt))
+                run = sim_run(args, simb, strategy, steps, sets, dump)
+                u = read_npy(os.path.join(dump, "U.npy"))[1]
+                point["error_" + strategy] = compare(u, reference)["max_abs"]
+                point["evaluations_" + strategy] = sum(
+                    run["evaluations"].values())
+            points.append(point)
+        xs = [math.log(p["dt"]) for p in points]
+        ys = [math.log(max(p["error_lts"], 1e-300)) for p in points]
+        mx, my = sum(xs) / len(xs), sum(ys) / len(ys)
+        slope = (sum((x - mx) * (y - my) for x, y in zip(xs, ys)) /
+                 sum((x - mx) ** 2 for x in xs))
+        ratio = max(p["error_lts"] / p["error_simple"] for p in points)
+        fewer = min(p["evaluations_simple"] / p["evaluations_lts"]
+                    for p in points)
+        out[scene] = {"points": points, "slope": slope,
+                      "largest_error_ratio": ratio}
+        print("convergence %s lts: slope %.2f, error at most %.2fx simple's, "
+              "%.2fx fewer evaluations (error %s)" % (
+                  scene, slope, ratio, fewer,
+                  ", ".join("%.2e" % p["error_lts"] for p in points)),
+              flush=True)
+    return out
+
+
 # --- output ----------------------------------------------------------------
 
 def fmt(x):
     return "%.2e" % x
 
 
-def markdown(results, conv, command):
+def markdown(results, conv, command, lts_conv=None):
     lines = ["# Accuracy study", "", "Command: `%s`" % command, ""]
     for scene in dict.fromkeys(r["scene"] for r in results):
         rs = [r for r in results if r["scene"] == scene]
@@ -388,6 +446,20 @@ def markdown(results, conv, command):
         for interp, c in conv.items():
             lines.append("| %s | %s | %.2f |" % (interp, " | ".join(
                 fmt(p["error_Y"]) for p in c["points"]), c["slope"]))
+        lines.append("")
+    if lts_conv:
+        first = next(iter(lts_conv.values()))["points"]
+        lines += ["## Convergence of lts (heat rods, max-abs error of @U "
+                  "against simple at dt/%d, dt and cfl halved together)" %
+                  FINE, "", "| scene | strategy | " + " | ".join(
+                      "dt %g" % p["dt"] for p in first) + " | slope |",
+                  "|" + " --- |" * (3 + len(first))]
+        for scene, c in lts_conv.items():
+            for strategy in ["simple", "lts"]:
+                lines.append("| %s | %s | %s | %s |" % (
+                    scene, strategy, " | ".join(
+                        fmt(p["error_" + strategy]) for p in c["points"]),
+                    "%.2f" % c["slope"] if strategy == "lts" else "-"))
         lines.append("")
     return "\n".join(lines)
 
@@ -485,11 +557,16 @@ def main():
     if not args.no_convergence and (args.convergence_only or
                                     "harmonic" in args.scenes):
         conv = convergence(args)
+    lts_conv = None
+    if not args.no_convergence and (args.convergence_only or
+                                    "heat_rod" in args.scenes):
+        lts_conv = lts_convergence(args)
     with open(os.path.join(args.out, "results.json"), "w") as f:
         json.dump({"command": command, "backend": args.backend,
-                   "results": results, "convergence": conv}, f, indent=1)
+                   "results": results, "convergence": conv,
+                   "lts_convergence": lts_conv}, f, indent=1)
     with open(os.path.join(args.out, "results.md"), "w") as f:
-        f.write(markdown(results, conv, command))
+        f.write(markdown(results, conv, command, lts_conv))
     if results and plot(results, os.path.join(args.out, "accuracy.png")):
         log("wrote %s" % os.path.join(args.out, "accuracy.png"))
     log("wrote %s/results.md and results.json in %.1f s" % (
