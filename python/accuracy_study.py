@@ -12,7 +12,8 @@ the error against the scene's reference:
 
   * scenes with `exact` bodies (harmonic, kpr, kepler): sim-run's error
     against the exact solution at the final time;
-  * springs, nbody, heat_rod, heat_rod_flux and wave_rod: the dumped state against `simple` run at
+  * springs, nbody, heat_rod, heat_rod_flux, wave_rod and particle_chain:
+    the dumped state against `simple` run at
     dt / 8 for 8 times the steps (the same end time), computed here;
   * pbd: against `simple` at the same dt (position-based dynamics has no
     small-step limit to compare with: its stiffness depends on the step).
@@ -98,6 +99,9 @@ SCENES = {
                           quick_range=256, interps=[None], sets=[{}]),
     "wave_rod": dict(ref="fine", steps=10000, quick_steps=400,
                      quick_range=256, interps=[None], sets=[{}]),
+    # Particles that read their neighbours (FPU-beta ring, light segment).
+    "particle_chain": dict(ref="fine", steps=4000, quick_steps=200,
+                           quick_range=256, interps=[None], sets=[{}]),
 }
 
 
