@@ -522,6 +522,19 @@ TEST(BundleVerifier, ChecksTheReferenceModel) {
        "component 'Grow' under hip estimates or sub-steps, but it has no "
        "num_steps"},
       {[](auto &c) {
+         c.reference->components[1]->stepping[4] =
+             schema::Stepping(Advance::LocalFlux, false);
+       },
+       "component 'Grow' under lts writes the fluxes of a flux pair without "
+       "a window [lo, hi] with lo <= hi"},
+      {[](auto &c) {
+         c.reference->components[1]->stepping[4] =
+             schema::Stepping(Advance::LocalFlux, false);
+         c.reference->components[1]->flux_window = {1, 0};
+       },
+       "component 'Grow' under lts writes the fluxes of a flux pair without "
+       "a window [lo, hi] with lo <= hi"},
+      {[](auto &c) {
          c.reference->components[0]->sub_stepping = schema::SubStepping(4);
        },
        "component 'Decay' has an unknown sub-stepping verdict"},

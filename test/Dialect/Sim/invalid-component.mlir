@@ -594,3 +594,35 @@ sim.simulation @s range(16) dt(1.0 : f32) max_steps(2) attributes {strategy = #s
     sim.yield %x : f32
   }
 }
+
+// -----
+
+sim.simulation @s range(16) dt(1.0 : f32) max_steps(2) {
+  sim.buffer @F : f32 interp(#sim.flux) init {
+  ^bb0(%i: index):
+    %c = arith.constant 0.0 : f32
+    sim.yield %c : f32
+  }
+  // expected-error @+1 {{'sim.component' op has a flux_window that is not [lo, hi] with lo <= hi}}
+  sim.component @E writes(@F) attributes {flux_window = array<i64: 1, 0>} evaluate {
+  ^bb0(%i: index, %t: i64, %n: i32, %dt: f32):
+    %c = arith.constant 0.0 : f32
+    sim.yield %c : f32
+  }
+}
+
+// -----
+
+sim.simulation @s range(16) dt(1.0 : f32) max_steps(2) attributes {strategy = #sim<strategy hip>} {
+  sim.buffer @F : f32 interp(#sim.flux) init {
+  ^bb0(%i: index):
+    %c = arith.constant 0.0 : f32
+    sim.yield %c : f32
+  }
+  // expected-error @+1 {{'sim.component' op advances in local_flux, which needs a flux_window and the lts strategy}}
+  sim.component @E writes(@F) attributes {advance = #sim<advance local_flux>, flux_window = array<i64: -1, 0>} evaluate {
+  ^bb0(%i: index, %t: i64, %n: i32, %dt: f32):
+    %c = arith.constant 0.0 : f32
+    sim.yield %c : f32
+  }
+}
