@@ -99,6 +99,103 @@ LogicalResult SimulationLowering::emitLocalSteps(ComponentOp component,
         .getResult();
   };
 
+  // Sub-steps are powers of two: masks instead of divisions. A block of
+  // sub-step `level` starts one at `slot` when the slot is a multiple of
+  // it, after slot / level sub-steps, whose parity (bit `level` of the
+  // slot) selects the half it reads (`parity` is the big step's).
+  auto startsAt = [&](Value slot, Value level) {
+    return b.cmp(arith::CmpIPredicate::eq,
+                 arith::AndIOp::create(b, b.loc, slot, b.sub(level, b.i64(1))),
+                 b.i64(0));
+  };
+  auto readParityOf = [&](Value parity, Value slot, Value level) {
+    Value odd =
+        b.extend(b.cmp(arith::CmpIPredicate::ne,
+                       arith::AndIOp::create(b, b.loc, slot, level), b.i64(0)),
+                 b.getI64Type());
+    return arith::XOrIOp::create(b, b.loc, parity, odd).getResult();
+  };
+  // The blocks that the items `base - below .. base + group size - 1 +
+  // above` of a thread group reach: whether they all have one sub-step
+  // (and, unless `clipped`, lie inside the range), and that sub-step.
+  auto groupLevel = [&](Kernel &kernel, Value levels, Value half, Value base,
+                        int64_t below, int64_t above,
+                        bool clipped) -> std::pair<Value, Value> {
+    Value range = kernel.values.range;
+    Value lastBlock = b.sub(blocksOf(kernel), b.index(1));
+    Value low = b.sub(base, b.index(below));
+    Value high =
+        b.add(b.add(base, target.groupSize(b, kernel)), b.index(above - 1));
+    Value inside = b.constant(b.getI1Type(), 1);
+    if (!clipped)
+      inside = arith::AndIOp::create(
+          b, b.loc, b.cmp(arith::CmpIPredicate::sge, low, b.index(0)),
+          b.cmp(arith::CmpIPredicate::slt, high, range));
+    Value firstBlock = blockOf(b.max(low, b.index(0)));
+    Value endBlock =
+        b.add(blockOf(b.min(high, b.sub(range, b.index(1)))), b.index(1));
+    Value first = b.load(levels, b.add(half, b.min(firstBlock, lastBlock)));
+    auto scan = scf::ForOp::create(b, b.loc, firstBlock, endBlock, b.index(1),
+                                   ValueRange{inside});
+    OpBuilder::InsertionGuard guard(b);
+    b.setInsertionPointToStart(scan.getBody());
+    Value same =
+        b.cmp(arith::CmpIPredicate::eq,
+              b.load(levels, b.add(half, scan.getInductionVar())), first);
+    scf::YieldOp::create(
+        b, b.loc,
+        arith::AndIOp::create(b, b.loc, scan.getRegionIterArg(0), same)
+            .getResult());
+    return {scan.getResult(0), first};
+  };
+
+  // The prologue of a slot kernel: the big step, `levels @C`, the slot's
+  // time `now = T + slot`, and whether a slot of this big step is due.
+  struct Slot {
+    Value begin, size, parity, levels, dt, now, slot, running;
+  };
+  auto readSlot = [&](Kernel &kernel) {
+    Slot state;
+    readBigStep(kernel, state.begin, state.size, state.parity);
+    state.levels = kernel.levels.lookup(symbol);
+    state.dt = kernel.values.params.lookup("dt");
+    state.now = b.load(kernel.clock, b.index(sub + kSubBegin));
+    state.slot = b.sub(state.now, state.begin);
+    state.running = arith::AndIOp::create(
+        b, b.loc, b.cmp(arith::CmpIPredicate::sgt, state.size, b.i64(0)),
+        b.cmp(arith::CmpIPredicate::slt, state.slot, state.size));
+    return state;
+  };
+  // The lanes of a slot kernel, group by group: `inStep(lane, level,
+  // readParity)` for every lane of a group whose blocks all have one
+  // sub-step `level` that starts at the slot (nothing when it does not
+  // start), `general(lane)` for every lane of any other group.
+  auto forEachGroupAtSlot =
+      [&](Kernel &kernel, Value levels, Value half, Value slot, Value parity,
+          int64_t below, int64_t above, bool clipped,
+          function_ref<void(const Lane &, Value, Value)> inStep,
+          function_ref<void(const Lane &)> general) {
+        target.forEachGroup(b, kernel, [&](Value base) {
+          Value uniform, first;
+          std::tie(uniform, first) =
+              groupLevel(kernel, levels, half, base, below, above, clipped);
+          auto branch = scf::IfOp::create(b, b.loc, TypeRange{}, uniform,
+                                          /*withElseRegion=*/true);
+          OpBuilder::InsertionGuard guard(b);
+          b.setInsertionPointToStart(branch.thenBlock());
+          b.ifThen(startsAt(slot, first), [&] {
+            Value readParity = readParityOf(parity, slot, first);
+            target.forEachLane(b, kernel, base, [&](const Lane &lane) {
+              b.ifThen(lane.active, [&] { inStep(lane, first, readParity); });
+            });
+          });
+          b.setInsertionPointToStart(branch.elseBlock());
+          target.forEachLane(b, kernel, base, [&](const Lane &lane) {
+            b.ifThen(lane.active, [&] { general(lane); });
+          });
+        });
+      };
+
   // A flux pair: the items that read interface `j` of the writer's fluxes
   // are `j - o` for the offsets `o` of flux_window, under the fluxes'
   // boundary rule (around the range under wrap, the end item under clamp,
@@ -309,15 +406,9 @@ LogicalResult SimulationLowering::emitLocalSteps(ComponentOp component,
         llvm::to_vector(fluxWriter.getWrites().getAsRange<FlatSymbolRefAttr>());
     Kernel kernel = beginKernel(getKernelName(kernels, "local_flux", fluxName));
     LaneVar count = target.createLaneVar(b, kernel, b.getI32Type(), b.i32(0));
-    Value begin, size, parity;
-    readBigStep(kernel, begin, size, parity);
-    Value levels = kernel.levels.lookup(symbol);
-    Value dt = kernel.values.params.lookup("dt");
-    Value now = b.load(kernel.clock, b.index(sub + kSubBegin));
-    Value slot = b.sub(now, begin);
-    Value running = arith::AndIOp::create(
-        b, b.loc, b.cmp(arith::CmpIPredicate::sgt, size, b.i64(0)),
-        b.cmp(arith::CmpIPredicate::slt, slot, size));
+    Slot state = readSlot(kernel);
+    Value size = state.size, parity = state.parity, levels = state.levels,
+          dt = state.dt, now = state.now, slot = state.slot;
     // The items a group of interfaces reaches: their readers (flux_window)
     // and the state the writer reads (its local_window).
     ArrayRef<int64_t> fluxWindow = fluxWriter.getFluxWindowAttr().asArrayRef();
@@ -325,9 +416,8 @@ LogicalResult SimulationLowering::emitLocalSteps(ComponentOp component,
         fluxWriter.getLocalWindowAttr().asArrayRef();
     int64_t below = std::max({int64_t(0), -stateWindow[0], fluxWindow[1]});
     int64_t above = std::max({int64_t(0), stateWindow[1], -fluxWindow[0]});
-    b.ifThen(running, [&] {
+    b.ifThen(state.running, [&] {
       Value half = b.mul(b.toIndex(parity), blocksOf(kernel));
-      Value lastBlock = b.sub(blocksOf(kernel), b.index(1));
       // One evaluation of interface `lane.item` over `level` from T +
       // slot; reads the reader's state from its time levels, or (`uniform`:
       // every block it reaches at `level`, all in step) from the half
@@ -355,62 +445,16 @@ LogicalResult SimulationLowering::emitLocalSteps(ComponentOp component,
         target.laneStore(b, b.add(target.laneLoad(b, count, lane), b.i32(1)),
                          count, lane);
       };
-      auto startsAt = [&](Value level) {
-        return b.cmp(
-            arith::CmpIPredicate::eq,
-            arith::AndIOp::create(b, b.loc, slot, b.sub(level, b.i64(1))),
-            b.i64(0));
-      };
-      target.forEachGroup(b, kernel, [&](Value base) {
-        // A group whose interfaces reach only blocks of one sub-step, all
-        // inside the range (so every interface has its readers): at a slot
-        // where they start, every interface steps with them and reads them
-        // in step; at any other slot nothing is due.
-        Value groupSize = target.groupSize(b, kernel);
-        Value low = b.sub(base, b.index(below));
-        Value high = b.add(b.add(base, groupSize), b.index(above - 1));
-        Value inside = arith::AndIOp::create(
-            b, b.loc, b.cmp(arith::CmpIPredicate::sge, low, b.index(0)),
-            b.cmp(arith::CmpIPredicate::slt, high, kernel.values.range));
-        Value firstBlock = blockOf(b.max(low, b.index(0)));
-        Value endBlock =
-            b.add(blockOf(b.min(high, b.sub(kernel.values.range, b.index(1)))),
-                  b.index(1));
-        Value first = b.load(levels, b.add(half, b.min(firstBlock, lastBlock)));
-        auto scan = scf::ForOp::create(b, b.loc, firstBlock, endBlock,
-                                       b.index(1), ValueRange{inside});
-        {
-          OpBuilder::InsertionGuard guard(b);
-          b.setInsertionPointToStart(scan.getBody());
-          Value same =
-              b.cmp(arith::CmpIPredicate::eq,
-                    b.load(levels, b.add(half, scan.getInductionVar())), first);
-          scf::YieldOp::create(
-              b, b.loc,
-              arith::AndIOp::create(b, b.loc, scan.getRegionIterArg(0), same)
-                  .getResult());
-        }
-        auto branch =
-            scf::IfOp::create(b, b.loc, TypeRange{}, scan.getResult(0),
-                              /*withElseRegion=*/true);
-        OpBuilder::InsertionGuard guard(b);
-        b.setInsertionPointToStart(branch.thenBlock());
-        b.ifThen(startsAt(first), [&] {
-          // After slot / first sub-steps: their parity selects the half.
-          Value odd = b.extend(
-              b.cmp(arith::CmpIPredicate::ne,
-                    arith::AndIOp::create(b, b.loc, slot, first), b.i64(0)),
-              b.getI64Type());
-          Value readParity =
-              arith::XOrIOp::create(b, b.loc, parity, odd).getResult();
-          target.forEachLane(b, kernel, base, [&](const Lane &lane) {
-            b.ifThen(lane.active,
-                     [&] { evaluateLane(lane, first, true, readParity); });
-          });
-        });
-        b.setInsertionPointToStart(branch.elseBlock());
-        target.forEachLane(b, kernel, base, [&](const Lane &lane) {
-          b.ifThen(lane.active, [&] {
+      // A group whose interfaces reach only blocks of one sub-step, all
+      // inside the range (so every interface has its readers): at a slot
+      // where they start, every interface steps with them and reads them in
+      // step; at any other slot nothing is due.
+      forEachGroupAtSlot(
+          kernel, levels, half, slot, parity, below, above, /*clipped=*/false,
+          [&](const Lane &lane, Value level, Value readParity) {
+            evaluateLane(lane, level, true, readParity);
+          },
+          [&](const Lane &lane) {
             // The interface's sub-step: its coarsest reader's (the whole
             // big step when nothing reads it).
             Value coarsest = foldReaders(
@@ -422,11 +466,9 @@ LogicalResult SimulationLowering::emitLocalSteps(ComponentOp component,
             Value level =
                 b.select(b.cmp(arith::CmpIPredicate::eq, coarsest, b.i64(0)),
                          size, coarsest);
-            b.ifThen(startsAt(level),
+            b.ifThen(startsAt(slot, level),
                      [&] { evaluateLane(lane, level, false, Value()); });
           });
-        });
-      });
       target.reduceIntoClock(b, kernel, count, arith::AtomicRMWKind::addi,
                              evaluationSlots.lookup(fluxWriter));
     });
@@ -439,18 +481,11 @@ LogicalResult SimulationLowering::emitLocalSteps(ComponentOp component,
   {
     Kernel kernel = beginKernel(getKernelName(kernels, "local_step", name));
     LaneVar count = target.createLaneVar(b, kernel, b.getI32Type(), b.i32(0));
-    Value begin, size, parity;
-    readBigStep(kernel, begin, size, parity);
-    Value levels = kernel.levels.lookup(symbol);
-    Value dt = kernel.values.params.lookup("dt");
-    Value now = b.load(kernel.clock, b.index(sub + kSubBegin));
-    Value slot = b.sub(now, begin);
-    Value running = arith::AndIOp::create(
-        b, b.loc, b.cmp(arith::CmpIPredicate::sgt, size, b.i64(0)),
-        b.cmp(arith::CmpIPredicate::slt, slot, size));
-    b.ifThen(running, [&] {
+    Slot state = readSlot(kernel);
+    Value parity = state.parity, levels = state.levels, dt = state.dt,
+          now = state.now, slot = state.slot;
+    b.ifThen(state.running, [&] {
       Value half = b.mul(b.toIndex(parity), blocksOf(kernel));
-      Value lastBlock = b.sub(blocksOf(kernel), b.index(1));
       // One evaluation of a lane's item from T + slot over `level` base
       // steps, reading its own buffers at `readParity`, and through
       // `levels` at other items unless the group's neighbourhood is
@@ -478,79 +513,23 @@ LogicalResult SimulationLowering::emitLocalSteps(ComponentOp component,
         target.laneStore(b, b.add(target.laneLoad(b, count, lane), b.i32(1)),
                          count, lane);
       };
-      // Sub-steps are powers of two: masks instead of divisions. A block
-      // of sub-step `level` starts one at the slot when the slot is a
-      // multiple of it, after slot / level sub-steps, whose parity (bit
-      // `level` of the slot) selects the half it reads.
-      auto startsAt = [&](Value level) {
-        return b.cmp(
-            arith::CmpIPredicate::eq,
-            arith::AndIOp::create(b, b.loc, slot, b.sub(level, b.i64(1))),
-            b.i64(0));
-      };
-      auto readParityOf = [&](Value level) {
-        Value odd = b.extend(b.cmp(arith::CmpIPredicate::ne,
-                                   arith::AndIOp::create(b, b.loc, slot, level),
-                                   b.i64(0)),
-                             b.getI64Type());
-        return arith::XOrIOp::create(b, b.loc, parity, odd).getResult();
-      };
-      target.forEachGroup(b, kernel, [&](Value base) {
-        // The blocks the group's window reaches, and whether they all
-        // have one sub-step: then every lane reads its neighbours in step
-        // from one half, as a grid-wide sub-step does (no level lookups;
-        // on a CPU, wide loads). A window that wraps around the range
-        // takes the general path.
-        Value groupSize = target.groupSize(b, kernel);
-        Value low = b.sub(base, b.index(reach));
-        Value high = b.add(b.add(base, groupSize), b.index(reach - 1));
-        Value inside = b.constant(b.getI1Type(), 1);
-        if (cyclic)
-          inside = arith::AndIOp::create(
-              b, b.loc, b.cmp(arith::CmpIPredicate::sge, low, b.index(0)),
-              b.cmp(arith::CmpIPredicate::slt, high, kernel.values.range));
-        Value firstBlock = blockOf(b.max(low, b.index(0)));
-        Value endBlock =
-            b.add(blockOf(b.min(high, b.sub(kernel.values.range, b.index(1)))),
-                  b.index(1));
-        Value first = b.load(levels, b.add(half, b.min(firstBlock, lastBlock)));
-        auto scan = scf::ForOp::create(b, b.loc, firstBlock, endBlock,
-                                       b.index(1), ValueRange{inside});
-        {
-          OpBuilder::InsertionGuard guard(b);
-          b.setInsertionPointToStart(scan.getBody());
-          Value same =
-              b.cmp(arith::CmpIPredicate::eq,
-                    b.load(levels, b.add(half, scan.getInductionVar())), first);
-          scf::YieldOp::create(
-              b, b.loc,
-              arith::AndIOp::create(b, b.loc, scan.getRegionIterArg(0), same)
-                  .getResult());
-        }
-        Value uniform = scan.getResult(0);
-        auto branch = scf::IfOp::create(b, b.loc, TypeRange{}, uniform,
-                                        /*withElseRegion=*/true);
-        {
-          OpBuilder::InsertionGuard guard(b);
-          b.setInsertionPointToStart(branch.thenBlock());
-          b.ifThen(startsAt(first), [&] {
-            Value readParity = readParityOf(first);
-            target.forEachLane(b, kernel, base, [&](const Lane &lane) {
-              b.ifThen(lane.active,
-                       [&] { evaluateLane(lane, first, readParity, true); });
+      // A group whose window reaches blocks of one sub-step only: every
+      // lane reads its neighbours in step from one half, as a grid-wide
+      // sub-step does (no level lookups; on a CPU, wide loads). A window
+      // that wraps around the range takes the general path.
+      forEachGroupAtSlot(
+          kernel, levels, half, slot, parity, reach, reach,
+          /*clipped=*/!cyclic,
+          [&](const Lane &lane, Value level, Value readParity) {
+            evaluateLane(lane, level, readParity, true);
+          },
+          [&](const Lane &lane) {
+            Value level = b.load(levels, b.add(half, blockOf(lane.item)));
+            b.ifThen(startsAt(slot, level), [&] {
+              evaluateLane(lane, level, readParityOf(parity, slot, level),
+                           false);
             });
           });
-          b.setInsertionPointToStart(branch.elseBlock());
-          target.forEachLane(b, kernel, base, [&](const Lane &lane) {
-            b.ifThen(lane.active, [&] {
-              Value level = b.load(levels, b.add(half, blockOf(lane.item)));
-              b.ifThen(startsAt(level), [&] {
-                evaluateLane(lane, level, readParityOf(level), false);
-              });
-            });
-          });
-        }
-      });
       target.reduceIntoClock(b, kernel, count, arith::AtomicRMWKind::addi,
                              evaluationSlots.lookup(component));
     });
