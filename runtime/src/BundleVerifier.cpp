@@ -621,9 +621,8 @@ void verifyReference(const schema::SceneT &scene,
       if (!valid(stepping.advance()))
         bad(under + " advances in an unknown way");
       if (!component.num_steps &&
-          (stepping.estimates() ||
-           (stepping.advance() != Advance::WholeStep &&
-            stepping.advance() != Advance::LocalFlux)))
+          (stepping.estimates() || (stepping.advance() != Advance::WholeStep &&
+                                    stepping.advance() != Advance::LocalFlux)))
         bad(under + " estimates or sub-steps, but it has no num_steps");
       if (stepping.advance() == Advance::LocalSteps &&
           (component.local_window.size() != 2 ||
