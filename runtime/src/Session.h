@@ -167,11 +167,12 @@ private:
   int64_t elementsOf(size_t buffer) const {
     return replicated(buffer) ? settings.range : extent;
   }
-  /// The entries of a component's levels at `range` items: two halves of
+  /// The entries of a component's levels at `range` items: sections of
   /// one per block of LocalStepBlock::Items items.
   static int64_t levelCount(int64_t range) {
     const int64_t block = int64_t(schema::LocalStepBlock::Items);
-    return 2 * ((range + block - 1) / block);
+    return int64_t(schema::LocalStepLevels::Sections) *
+           ((range + block - 1) / block);
   }
   int64_t levelCount() const { return levelCount(settings.range); }
   /// The element of this rank's first item in one half of `buffer`.

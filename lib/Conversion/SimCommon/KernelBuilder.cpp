@@ -112,6 +112,26 @@ void KernelBuilder::ifThen(Value cond, function_ref<void()> thenBuilder) {
 
 KernelTarget::~KernelTarget() = default;
 
+void KernelTarget::forEachLaneOf(KernelBuilder &b, Kernel &kernel,
+                                 const Part &part,
+                                 function_ref<void(const Lane &)> body) {
+  assert(part.whole && "a target that splits groups runs their parts");
+  forEachLane(b, kernel, part.base, body);
+}
+
+void KernelTarget::maxPerBlock(KernelBuilder &b, Kernel &kernel, Value base,
+                               LaneVar value, int64_t blockSize, Value memory,
+                               Value offset) {
+  forEachLane(b, kernel, base, [&](const Lane &lane) {
+    b.ifThen(lane.active, [&] {
+      Value block =
+          arith::DivUIOp::create(b, b.loc, lane.item, b.index(blockSize));
+      b.atomic(arith::AtomicRMWKind::maxs, laneLoad(b, value, lane), memory,
+               b.add(offset, block));
+    });
+  });
+}
+
 Value KernelBuilder::floorPowerOfTwo(Value value) {
   // Smear the highest set bit into every lower one, then keep it alone.
   for (int64_t shift : {1, 2, 4, 8, 16, 32})

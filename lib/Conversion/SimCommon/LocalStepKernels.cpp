@@ -13,6 +13,7 @@
 //                    above m and its items' minimum num_steps at T
 //   limit_levels_C   (one thread) lowers sub-steps until no block's is
 //                    more than twice a neighbour's; records the finest
+//                    and each block's neighbourhood codes
 //   max_steps times:
 //     local_flux_E   (a flux pair, docs/Model.md "Conservation") every
 //                    interface of the flux writer E whose coarsest reading
@@ -24,15 +25,20 @@
 //   local_parity_C   blocks that took an even number of sub-steps copy
 //                    their result into the target half
 //
-// `levels @C` has two halves of one i64 per block; the big step of clock
-// parity p uses half p. levels_C combines its items into half p with an
-// atomic maximum of kLevelCode - sub-step (0, what the runtime and the
-// previous use leave there, is the identity) and clears half 1 - p for the
-// next big step; limit_levels_C turns the codes into sub-steps. The
-// sub-step clock of the component holds: Begin, the time T + q of the next
-// slot (advance resets it to T); Size, the finest sub-step. Which half of a
-// buffer holds a block's latest level follows from its sub-step and the
-// slot alone, so no flag is written during a slot and every reader can tell
+// `levels @C` has four sections of one i64 per block: two halves of
+// sub-steps (the big step of clock parity p uses half p) and two of
+// neighbourhood codes (kLevelStepCodes, kLevelFluxCodes): the block's
+// sub-step when every block its items reach has it, else minus it (step)
+// or 0 (flux), so that a slot kernel decides from one value per block which
+// blocks start at the slot and which of those read their neighbours in
+// step (wide loads on a CPU) or through their time levels. levels_C combines
+// its items into half p with an atomic maximum of kLevelCode - sub-step (0,
+// what the runtime and the previous use leave there, is the identity) and
+// clears half 1 - p for the next big step; limit_levels_C turns the codes into
+// sub-steps. The sub-step clock of the component holds: Begin, the time T + q
+// of the next slot (advance resets it to T); Size, the finest sub-step. Which
+// half of a buffer holds a block's latest level follows from its sub-step and
+// the slot alone, so no flag is written during a slot and every reader can tell
 // (KernelBody.cpp, the `local` loads).
 //
 //===----------------------------------------------------------------------===//
@@ -115,33 +121,22 @@ LogicalResult SimulationLowering::emitLocalSteps(ComponentOp component,
                  b.getI64Type());
     return arith::XOrIOp::create(b, b.loc, parity, odd).getResult();
   };
-  // The blocks that the items `base - below .. base + group size - 1 +
-  // above` of a thread group reach: whether they all have one sub-step
-  // (and, unless `clipped`, lie inside the range), and that sub-step.
-  auto groupLevel = [&](Kernel &kernel, Value levels, Value half, Value base,
-                        int64_t below, int64_t above,
-                        bool clipped) -> std::pair<Value, Value> {
-    Value range = kernel.values.range;
-    Value lastBlock = b.sub(blocksOf(kernel), b.index(1));
-    Value low = b.sub(base, b.index(below));
-    Value high =
-        b.add(b.add(base, target.groupSize(b, kernel)), b.index(above - 1));
-    Value inside = b.constant(b.getI1Type(), 1);
-    if (!clipped)
-      inside = arith::AndIOp::create(
-          b, b.loc, b.cmp(arith::CmpIPredicate::sge, low, b.index(0)),
-          b.cmp(arith::CmpIPredicate::slt, high, range));
-    Value firstBlock = blockOf(b.max(low, b.index(0)));
-    Value endBlock =
-        b.add(blockOf(b.min(high, b.sub(range, b.index(1)))), b.index(1));
-    Value first = b.load(levels, b.add(half, b.min(firstBlock, lastBlock)));
-    auto scan = scf::ForOp::create(b, b.loc, firstBlock, endBlock, b.index(1),
-                                   ValueRange{inside});
+  // The neighbourhood codes of the blocks of a part (limit_levels_C): whether
+  // they are all one code, and the first. A part inside the range.
+  auto partCode = [&](Kernel &kernel, Value levels, Value codes,
+                      const Part &part) -> std::pair<Value, Value> {
+    Value end = b.min(b.add(part.base, part.count), kernel.values.range);
+    Value firstBlock = blockOf(part.base);
+    Value endBlock = b.add(blockOf(b.sub(end, b.index(1))), b.index(1));
+    Value first = b.load(levels, b.add(codes, firstBlock));
+    auto scan = scf::ForOp::create(b, b.loc, b.add(firstBlock, b.index(1)),
+                                   endBlock, b.index(1),
+                                   ValueRange{b.constant(b.getI1Type(), 1)});
     OpBuilder::InsertionGuard guard(b);
     b.setInsertionPointToStart(scan.getBody());
     Value same =
         b.cmp(arith::CmpIPredicate::eq,
-              b.load(levels, b.add(half, scan.getInductionVar())), first);
+              b.load(levels, b.add(codes, scan.getInductionVar())), first);
     scf::YieldOp::create(
         b, b.loc,
         arith::AndIOp::create(b, b.loc, scan.getRegionIterArg(0), same)
@@ -166,33 +161,84 @@ LogicalResult SimulationLowering::emitLocalSteps(ComponentOp component,
         b.cmp(arith::CmpIPredicate::slt, state.slot, state.size));
     return state;
   };
-  // The lanes of a slot kernel, group by group: `inStep(lane, level,
-  // readParity)` for every lane of a group whose blocks all have one
-  // sub-step `level` that starts at the slot (nothing when it does not
-  // start), `general(lane)` for every lane of any other group.
-  auto forEachGroupAtSlot =
-      [&](Kernel &kernel, Value levels, Value half, Value slot, Value parity,
-          int64_t below, int64_t above, bool clipped,
+  // The lanes of a slot kernel, part by part: `inStep(lane, level,
+  // readParity)` for every lane of a part whose blocks all have the positive
+  // neighbourhood code `level` (their neighbourhood is in step at that
+  // sub-step) when it starts at the slot, `general(lane)` for every lane of
+  // any other part. With `ownLevels` a negative code is minus the block's
+  // own sub-step, and a part whose blocks all have one that does not start
+  // at the slot has nothing to do. A part is a run of blocks of one code
+  // inside a group where the target splits groups (KernelTarget::
+  // splitsGroups: one test skips the run, one loop of SIMD chunks runs it),
+  // else the whole group.
+  auto forEachPartAtSlot =
+      [&](Kernel &kernel, Value levels, int64_t codeSection, int64_t runSection,
+          Value slot, Value parity, bool ownLevels,
           function_ref<void(const Lane &, Value, Value)> inStep,
           function_ref<void(const Lane &)> general) {
-        target.forEachGroup(b, kernel, [&](Value base) {
-          Value uniform, first;
-          std::tie(uniform, first) =
-              groupLevel(kernel, levels, half, base, below, above, clipped);
-          auto branch = scf::IfOp::create(b, b.loc, TypeRange{}, uniform,
+        Value blocks = blocksOf(kernel);
+        Value codes = b.mul(b.index(codeSection), blocks);
+        Value runs = b.mul(b.index(runSection), blocks);
+        auto forPart = [&](const Part &part, Value same, Value code) {
+          auto lanes = [&](function_ref<void(const Lane &)> body) {
+            target.forEachLaneOf(b, kernel, part, [&](const Lane &lane) {
+              b.ifThen(lane.active, [&] { body(lane); });
+            });
+          };
+          Value inStepHere = arith::AndIOp::create(
+              b, b.loc, same, b.cmp(arith::CmpIPredicate::sgt, code, b.i64(0)));
+          auto branch = scf::IfOp::create(b, b.loc, TypeRange{}, inStepHere,
                                           /*withElseRegion=*/true);
           OpBuilder::InsertionGuard guard(b);
           b.setInsertionPointToStart(branch.thenBlock());
-          b.ifThen(startsAt(slot, first), [&] {
-            Value readParity = readParityOf(parity, slot, first);
-            target.forEachLane(b, kernel, base, [&](const Lane &lane) {
-              b.ifThen(lane.active, [&] { inStep(lane, first, readParity); });
-            });
+          b.ifThen(startsAt(slot, code), [&] {
+            Value readParity = readParityOf(parity, slot, code);
+            lanes([&](const Lane &lane) { inStep(lane, code, readParity); });
           });
           b.setInsertionPointToStart(branch.elseBlock());
-          target.forEachLane(b, kernel, base, [&](const Lane &lane) {
-            b.ifThen(lane.active, [&] { general(lane); });
-          });
+          Value due = b.constant(b.getI1Type(), 1);
+          if (ownLevels)
+            due = arith::OrIOp::create(b, b.loc, b.xorOne(same),
+                                       startsAt(slot, b.sub(b.i64(0), code)));
+          b.ifThen(due, [&] { lanes(general); });
+        };
+        target.forEachGroup(b, kernel, [&](Value groupBase) {
+          Value range = kernel.values.range;
+          if (!target.splitsGroups()) {
+            b.ifThen(b.cmp(arith::CmpIPredicate::ult, groupBase, range), [&] {
+              Part part{groupBase, b.index(0), target.groupSize(b, kernel),
+                        /*whole=*/true};
+              Value same, code;
+              std::tie(same, code) = partCode(kernel, levels, codes, part);
+              forPart(part, same, code);
+            });
+            return;
+          }
+          // Run by run: from item `start`, the blocks up to the end of the
+          // run of the block that holds it, within the group.
+          Value groupEnd =
+              b.min(b.add(groupBase, target.groupSize(b, kernel)), range);
+          auto loop = scf::WhileOp::create(b, b.loc, b.getIndexType(),
+                                           ValueRange{groupBase});
+          OpBuilder::InsertionGuard guard(b);
+          Block *before =
+              b.createBlock(&loop.getBefore(), {}, b.getIndexType(), b.loc);
+          Value start = before->getArgument(0);
+          scf::ConditionOp::create(
+              b, b.loc, b.cmp(arith::CmpIPredicate::ult, start, groupEnd),
+              ValueRange{start});
+          Block *after =
+              b.createBlock(&loop.getAfter(), {}, b.getIndexType(), b.loc);
+          start = after->getArgument(0);
+          Value block = blockOf(start);
+          Value code = b.load(levels, b.add(codes, block));
+          Value runEnd = b.mul(b.toIndex(b.load(levels, b.add(runs, block))),
+                               b.index(kLevelBlock));
+          Value end = b.min(runEnd, groupEnd);
+          forPart(Part{start, b.sub(start, groupBase), b.sub(end, start),
+                       /*whole=*/false},
+                  b.constant(b.getI1Type(), 1), code);
+          scf::YieldOp::create(b, b.loc, end);
         });
       };
 
@@ -239,9 +285,21 @@ LogicalResult SimulationLowering::emitLocalSteps(ComponentOp component,
     return loop.getResult(0);
   };
 
+  // The items a block of a flux writer's interfaces reaches: their readers
+  // (flux_window) and the state the writer reads (its local_window).
+  int64_t fluxBelow = 0, fluxAbove = 0;
+  if (fluxWriter) {
+    ArrayRef<int64_t> fluxWindow = fluxWriter.getFluxWindowAttr().asArrayRef();
+    ArrayRef<int64_t> stateWindow =
+        fluxWriter.getLocalWindowAttr().asArrayRef();
+    fluxBelow = std::max({int64_t(0), -stateWindow[0], fluxWindow[1]});
+    fluxAbove = std::max({int64_t(0), stateWindow[1], -fluxWindow[0]});
+  }
+
   // levels_C: each block's sub-step from its items' num_steps at T.
   {
     Kernel kernel = beginKernel(getKernelName(kernels, "levels", name));
+    LaneVar code = target.createLaneVar(b, kernel, b.getI64Type(), b.i64(0));
     Value begin, size, parity;
     readBigStep(kernel, begin, size, parity);
     Value levels = kernel.levels.lookup(symbol);
@@ -249,38 +307,47 @@ LogicalResult SimulationLowering::emitLocalSteps(ComponentOp component,
       Value blocks = blocksOf(kernel);
       Value half = b.mul(b.toIndex(parity), blocks);
       Value other = b.mul(b.toIndex(b.xorOne(parity)), blocks);
-      forEachItem(kernel, [&](const Lane &lane) {
-        b.ifThen(lane.active, [&] {
-          KernelValues values = kernel.values;
-          values.item = lane.item;
-          Value steps =
-              b.extend(estimate(kernel, component, lane.item, begin, values),
-                       b.getI64Type());
-          Value level = b.floorPowerOfTwo(b.min(steps, size));
-          Value block = blockOf(lane.item);
-          b.atomic(arith::AtomicRMWKind::maxs, b.sub(b.i64(kLevelCode), level),
-                   levels, b.add(half, block));
-          // A flux writer's estimate at interface j bounds every block
-          // that reads the interface.
-          if (fluxWriter && fluxWriter.hasNumSteps()) {
+      target.forEachGroup(b, kernel, [&](Value base) {
+        target.forEachLane(b, kernel, base, [&](const Lane &lane) {
+          b.ifThen(lane.active, [&] {
+            KernelValues values = kernel.values;
+            values.item = lane.item;
+            Value steps =
+                b.extend(estimate(kernel, component, lane.item, begin, values),
+                         b.getI64Type());
+            Value level = b.floorPowerOfTwo(b.min(steps, size));
+            target.laneStore(b, b.sub(b.i64(kLevelCode), level), code, lane);
+            Value block = blockOf(lane.item);
+            Value first = b.cmp(arith::CmpIPredicate::eq,
+                                b.mul(block, b.index(kLevelBlock)), lane.item);
+            b.ifThen(first,
+                     [&] { b.store(b.i64(0), levels, b.add(other, block)); });
+          });
+        });
+        target.maxPerBlock(b, kernel, base, code, kLevelBlock, levels, half);
+        // A flux writer's estimate at interface j bounds every block that
+        // reads the interface (a phase of its own: its atomics keep a CPU
+        // thread's lanes one at a time).
+        if (!fluxWriter || !fluxWriter.hasNumSteps())
+          return;
+        target.forEachLane(b, kernel, base, [&](const Lane &lane) {
+          b.ifThen(lane.active, [&] {
+            KernelValues values = kernel.values;
+            values.item = lane.item;
             Value fluxSteps =
                 b.extend(estimate(kernel, fluxWriter, lane.item, begin, values),
                          b.getI64Type());
-            Value code = b.sub(b.i64(kLevelCode),
-                               b.floorPowerOfTwo(b.min(fluxSteps, size)));
+            Value fluxCode = b.sub(b.i64(kLevelCode),
+                                   b.floorPowerOfTwo(b.min(fluxSteps, size)));
             foldReaders(kernel, lane.item, b.i64(0),
                         [&](Value reader, Value exists, Value unused) {
                           b.ifThen(exists, [&] {
-                            b.atomic(arith::AtomicRMWKind::maxs, code, levels,
-                                     b.add(half, blockOf(reader)));
+                            b.atomic(arith::AtomicRMWKind::maxs, fluxCode,
+                                     levels, b.add(half, blockOf(reader)));
                           });
                           return unused;
                         });
-          }
-          Value first = b.cmp(arith::CmpIPredicate::eq,
-                              b.mul(block, b.index(kLevelBlock)), lane.item);
-          b.ifThen(first,
-                   [&] { b.store(b.i64(0), levels, b.add(other, block)); });
+          });
         });
       });
     });
@@ -387,6 +454,89 @@ LogicalResult SimulationLowering::emitLocalSteps(ComponentOp component,
                                    levelAt(finest.getInductionVar())));
       }
       b.store(finest.getResult(0), kernel.clock, b.index(sub + kSubSize));
+
+      // The neighbourhood codes of the big step, so that a slot kernel tells
+      // from one value per block whether the items a block's items reach
+      // (`below` before its first, `above` after its last, and, unless
+      // `clipped` to the range, all inside it) have its own sub-step: then
+      // the code is that sub-step, else minus it (`ownLevels`) or 0.
+      Value range = arith::IndexCastOp::create(b, b.loc, b.getI64Type(),
+                                               kernel.values.range);
+      Value blockItems = b.i64(kLevelBlock);
+      auto neighbourhoodCodes = [&](int64_t section, int64_t below,
+                                    int64_t above, bool clipped,
+                                    bool ownLevels) {
+        auto loop = scf::ForOp::create(b, b.loc, zero, blocks, one);
+        OpBuilder::InsertionGuard guard(b);
+        b.setInsertionPoint(loop.getBody()->getTerminator());
+        Value g = loop.getInductionVar();
+        Value own = levelAt(g);
+        Value firstItem = b.mul(g, blockItems);
+        Value lastItem =
+            b.min(b.add(firstItem, b.i64(kLevelBlock - 1)), b.sub(range, one));
+        Value low = b.sub(firstItem, b.i64(below));
+        Value high = b.add(lastItem, b.i64(above));
+        Value inside = b.constant(b.getI1Type(), 1);
+        if (!clipped)
+          inside = arith::AndIOp::create(
+              b, b.loc, b.cmp(arith::CmpIPredicate::sge, low, zero),
+              b.cmp(arith::CmpIPredicate::slt, high, range));
+        Value lowBlock =
+            arith::DivUIOp::create(b, b.loc, b.max(low, zero), blockItems);
+        Value highBlock = arith::DivUIOp::create(
+            b, b.loc, b.min(high, b.sub(range, one)), blockItems);
+        auto scan = scf::ForOp::create(
+            b, b.loc, lowBlock, b.add(highBlock, one), one, ValueRange{inside});
+        {
+          OpBuilder::InsertionGuard inner(b);
+          b.setInsertionPointToStart(scan.getBody());
+          Value same = b.cmp(arith::CmpIPredicate::eq,
+                             levelAt(scan.getInductionVar()), own);
+          scf::YieldOp::create(
+              b, b.loc,
+              arith::AndIOp::create(b, b.loc, scan.getRegionIterArg(0), same)
+                  .getResult());
+        }
+        Value code = b.select(scan.getResult(0), own,
+                              ownLevels ? b.sub(zero, own) : zero);
+        b.store(code, levels,
+                b.toIndex(b.add(b.mul(b.i64(section), blocks), g)));
+      };
+      // Where the run of equal codes that holds each block ends (the block
+      // after its last), from the last block back.
+      auto runEnds = [&](int64_t codeSection, int64_t runSection) {
+        auto elementOf = [&](int64_t section, Value block) {
+          return b.toIndex(b.add(b.mul(b.i64(section), blocks), block));
+        };
+        auto loop = scf::ForOp::create(b, b.loc, zero, blocks, one);
+        OpBuilder::InsertionGuard guard(b);
+        b.setInsertionPoint(loop.getBody()->getTerminator());
+        Value g = b.sub(b.sub(blocks, one), loop.getInductionVar());
+        Value next = b.add(g, one);
+        Value end =
+            b.ifThenElse(
+                 b.getI64Type(), b.cmp(arith::CmpIPredicate::slt, next, blocks),
+                 [&]() -> SmallVector<Value> {
+                   Value same =
+                       b.cmp(arith::CmpIPredicate::eq,
+                             b.load(levels, elementOf(codeSection, next)),
+                             b.load(levels, elementOf(codeSection, g)));
+                   return {b.select(same,
+                                    b.load(levels, elementOf(runSection, next)),
+                                    next)};
+                 },
+                 [&]() -> SmallVector<Value> { return {next}; })
+                .getResult(0);
+        b.store(end, levels, elementOf(runSection, g));
+      };
+      neighbourhoodCodes(kLevelStepCodes, reach, reach, /*clipped=*/!cyclic,
+                         /*ownLevels=*/true);
+      runEnds(kLevelStepCodes, kLevelStepRuns);
+      if (fluxWriter) {
+        neighbourhoodCodes(kLevelFluxCodes, fluxBelow, fluxAbove,
+                           /*clipped=*/false, /*ownLevels=*/false);
+        runEnds(kLevelFluxCodes, kLevelFluxRuns);
+      }
     });
     if (failed(endKernel(kernel, simplan::LaunchShape::single, launches)))
       return failure();
@@ -409,13 +559,6 @@ LogicalResult SimulationLowering::emitLocalSteps(ComponentOp component,
     Slot state = readSlot(kernel);
     Value size = state.size, parity = state.parity, levels = state.levels,
           dt = state.dt, now = state.now, slot = state.slot;
-    // The items a group of interfaces reaches: their readers (flux_window)
-    // and the state the writer reads (its local_window).
-    ArrayRef<int64_t> fluxWindow = fluxWriter.getFluxWindowAttr().asArrayRef();
-    ArrayRef<int64_t> stateWindow =
-        fluxWriter.getLocalWindowAttr().asArrayRef();
-    int64_t below = std::max({int64_t(0), -stateWindow[0], fluxWindow[1]});
-    int64_t above = std::max({int64_t(0), stateWindow[1], -fluxWindow[0]});
     b.ifThen(state.running, [&] {
       Value half = b.mul(b.toIndex(parity), blocksOf(kernel));
       // One evaluation of interface `lane.item` over `level` from T +
@@ -445,12 +588,13 @@ LogicalResult SimulationLowering::emitLocalSteps(ComponentOp component,
         target.laneStore(b, b.add(target.laneLoad(b, count, lane), b.i32(1)),
                          count, lane);
       };
-      // A group whose interfaces reach only blocks of one sub-step, all
-      // inside the range (so every interface has its readers): at a slot
-      // where they start, every interface steps with them and reads them in
-      // step; at any other slot nothing is due.
-      forEachGroupAtSlot(
-          kernel, levels, half, slot, parity, below, above, /*clipped=*/false,
+      // A part whose interfaces reach only blocks of one sub-step, all
+      // inside the range (so every interface has its readers; its flux
+      // codes say so): at a slot where they start, every interface steps
+      // with them and reads them in step; at any other slot nothing is due.
+      forEachPartAtSlot(
+          kernel, levels, kLevelFluxCodes, kLevelFluxRuns, slot, parity,
+          /*ownLevels=*/false,
           [&](const Lane &lane, Value level, Value readParity) {
             evaluateLane(lane, level, true, readParity);
           },
@@ -513,13 +657,14 @@ LogicalResult SimulationLowering::emitLocalSteps(ComponentOp component,
         target.laneStore(b, b.add(target.laneLoad(b, count, lane), b.i32(1)),
                          count, lane);
       };
-      // A group whose window reaches blocks of one sub-step only: every
-      // lane reads its neighbours in step from one half, as a grid-wide
-      // sub-step does (no level lookups; on a CPU, wide loads). A window
-      // that wraps around the range takes the general path.
-      forEachGroupAtSlot(
-          kernel, levels, half, slot, parity, reach, reach,
-          /*clipped=*/!cyclic,
+      // A part whose window reaches blocks of one sub-step only (its step
+      // codes say so): every lane reads its neighbours in step from one
+      // half, as a grid-wide sub-step does (no level lookups; on a CPU, wide
+      // loads). A window that wraps around the range takes the general
+      // path, and a part whose blocks do not start at the slot none.
+      forEachPartAtSlot(
+          kernel, levels, kLevelStepCodes, kLevelStepRuns, slot, parity,
+          /*ownLevels=*/true,
           [&](const Lane &lane, Value level, Value readParity) {
             evaluateLane(lane, level, readParity, true);
           },

@@ -88,6 +88,57 @@ public:
     body(Lane{item, active, lane});
   }
 
+  bool splitsGroups() const override { return true; }
+
+  void forEachLaneOf(KernelBuilder &b, Kernel &kernel, const Part &part,
+                     function_ref<void(const Lane &)> body) override {
+    auto loop = scf::ForOp::create(b, b.loc, part.first,
+                                   b.add(part.first, part.count), b.index(1));
+    loop->setAttr(simplan::PlanDialect::getLanesAttrName(), b.getUnitAttr());
+    OpBuilder::InsertionGuard guard(b);
+    b.setInsertionPoint(loop.getBody()->getTerminator());
+    Value lane = loop.getInductionVar();
+    Value item = b.add(part.base, b.sub(lane, part.first));
+    Value active = b.cmp(arith::CmpIPredicate::ult, item, kernel.values.range);
+    body(Lane{item, active, lane});
+  }
+
+  /// One atomic per block and group instead of one per lane: the lanes of
+  /// each block the group's items touch are folded first (so that the
+  /// lanes' phase has no atomic and runs in SIMD chunks).
+  void maxPerBlock(KernelBuilder &b, Kernel &kernel, Value base, LaneVar value,
+                   int64_t blockSize, Value memory, Value offset) override {
+    Value end = b.min(b.add(base, groupSize(kernel)), kernel.values.range);
+    b.ifThen(b.cmp(arith::CmpIPredicate::ult, base, end), [&] {
+      Value size = b.index(blockSize);
+      Value firstBlock = arith::DivUIOp::create(b, b.loc, base, size);
+      Value endBlock =
+          b.add(arith::DivUIOp::create(b, b.loc, b.sub(end, b.index(1)), size),
+                b.index(1));
+      auto blocks =
+          scf::ForOp::create(b, b.loc, firstBlock, endBlock, b.index(1));
+      OpBuilder::InsertionGuard guard(b);
+      b.setInsertionPoint(blocks.getBody()->getTerminator());
+      Value block = blocks.getInductionVar();
+      Value low = b.sub(b.max(b.mul(block, size), base), base);
+      Value high =
+          b.sub(b.min(b.mul(b.add(block, b.index(1)), size), end), base);
+      auto lanes = scf::ForOp::create(
+          b, b.loc, low, high, b.index(1),
+          ValueRange{b.i64(std::numeric_limits<int64_t>::min())});
+      {
+        OpBuilder::InsertionGuard inner(b);
+        b.setInsertionPointToEnd(lanes.getBody());
+        scf::YieldOp::create(
+            b, b.loc,
+            b.max(lanes.getRegionIterArg(0),
+                  b.load(value.memory, lanes.getInductionVar())));
+      }
+      b.atomic(arith::AtomicRMWKind::maxs, lanes.getResult(0), memory,
+               b.add(offset, block));
+    });
+  }
+
   /// One element per lane of the group, on the stack of the call.
   LaneVar createLaneVar(KernelBuilder &b, Kernel &kernel, Type type,
                         Value initial) override {

@@ -89,6 +89,14 @@ struct LaneVar {
   Value memory;
 };
 
+/// Consecutive lanes of a group, `first` to `first + count - 1` (index
+/// values), whose items start at `base`; `whole` when they are the whole
+/// group.
+struct Part {
+  Value base, first, count;
+  bool whole;
+};
+
 /// One kernel under construction.
 struct Kernel {
   FunctionOpInterface func;
@@ -140,6 +148,25 @@ public:
   /// Runs `body` for each lane of the group that starts at `base`.
   virtual void forEachLane(KernelBuilder &b, Kernel &kernel, Value base,
                            function_ref<void(const Lane &)> body) = 0;
+  /// Whether one thread runs a group's lanes chunk by chunk (a CPU), so
+  /// that a kernel may split a group into parts (forEachLaneOf) and decide
+  /// at group level per part (lts: whether the neighbourhood of its items
+  /// has one sub-step) rather than for the whole group; where lanes run
+  /// side by side (a GPU) a part is the whole group.
+  virtual bool splitsGroups() const { return false; }
+  /// Runs `body` for each lane of `part`.
+  virtual void forEachLaneOf(KernelBuilder &b, Kernel &kernel, const Part &part,
+                             function_ref<void(const Lane &)> body);
+  /// Combines the i64 lane variable `value` of every active lane of the
+  /// group that starts at `base` with a signed maximum into element
+  /// `offset + item / blockSize` of `memory`, atomically (groups may run at
+  /// once). At group level, after the phase that set `value`. The default
+  /// is an atomic per lane; a target whose lanes run in one thread
+  /// combines the lanes of each block first.
+  virtual void maxPerBlock(KernelBuilder &b, Kernel &kernel, Value base,
+                           LaneVar value, int64_t blockSize, Value memory,
+                           Value offset);
+
   /// A lane variable of `type`, created at the kernel entry and, when
   /// `initial` is given (a value available there), set to it in every lane.
   virtual LaneVar createLaneVar(KernelBuilder &b, Kernel &kernel, Type type,

@@ -58,6 +58,15 @@ constexpr int64_t kSubClockSlots = int64_t(::sim::bundle::SubClockSlot::Slots);
 constexpr int64_t kLevelCode = int64_t(1) << 62;
 static_assert(kLevelBlock == int64_t(::sim::bundle::LocalStepBlock::Items),
               "the kernels' level blocks and the bundle schema's differ");
+/// The sections of `levels @C`, each one i64 per block: the two halves of
+/// the sub-steps, then, for the big step, the neighbourhood codes for
+/// local_step_C and for a flux writer's local_flux_E, and the ends of their
+/// runs of equal codes (LocalStepKernels.cpp).
+constexpr int64_t kLevelStepCodes = 2, kLevelFluxCodes = 3, kLevelStepRuns = 4,
+                  kLevelFluxRuns = 5;
+static_assert(int64_t(::sim::bundle::LocalStepLevels::Sections) ==
+                  kLevelFluxRuns + 1,
+              "the kernels' level sections and the bundle schema's differ");
 
 /// No estimate yet: the identity of the minimum.
 constexpr int32_t kNoEstimate = std::numeric_limits<int32_t>::max();

@@ -70,9 +70,10 @@ def Plan_ArgKind : I32Enum<"ArgKind", "what a launch argument is", [
     (`i64`), and `extent`, the elements of one half of a buffer on the rank
     (its block's items plus twice the plan's halo, `i64`); every `range`
     above is then `extent`, and item `i` is element `i - first + halo`.
-    `levels @C`: the sub-step of every thread group of a component that
-    advances in `local_steps` (`memref<?xi64>`, `ceil(range / group_size)`
-    elements), which its kernels decide and read in every big step.
+    `levels @C`: the sub-steps of the blocks of 32 items of a component
+    that advances in `local_steps` and their neighbourhood codes
+    (`memref<?xi64>`, `6 * ceil(range / 32)` elements: docs/Plan.md,
+    "Levels"), which its kernels decide and read in every big step.
     The cases and their numbers are the bundle schema's `ArgKind`
     (runtime/schema/bundle.fbs).
   }];
