@@ -25,21 +25,23 @@
 //   local_parity_C   blocks that took an even number of sub-steps copy
 //                    their result into the target half
 //
-// `levels @C` has four sections of one i64 per block: two halves of
-// sub-steps (the big step of clock parity p uses half p) and two of
-// neighbourhood codes (kLevelStepCodes, kLevelFluxCodes): the block's
+// `levels @C` has six sections of one i64 per block: two halves of
+// sub-steps (the big step of clock parity p uses half p), two of
+// neighbourhood codes (kLevelStepCodes, kLevelFluxCodes: the block's
 // sub-step when every block its items reach has it, else minus it (step)
-// or 0 (flux), so that a slot kernel decides from one value per block which
-// blocks start at the slot and which of those read their neighbours in
-// step (wide loads on a CPU) or through their time levels. levels_C combines
-// its items into half p with an atomic maximum of kLevelCode - sub-step (0,
-// what the runtime and the previous use leave there, is the identity) and
-// clears half 1 - p for the next big step; limit_levels_C turns the codes into
-// sub-steps. The sub-step clock of the component holds: Begin, the time T + q
-// of the next slot (advance resets it to T); Size, the finest sub-step. Which
-// half of a buffer holds a block's latest level follows from its sub-step and
-// the slot alone, so no flag is written during a slot and every reader can tell
-// (KernelBody.cpp, the `local` loads).
+// or 0 (flux)) and two of where each block's run of equal codes ends, so
+// that a slot kernel decides from one value per run which blocks start at
+// the slot and which of those read their neighbours in step (wide loads on
+// a CPU) or through their time levels. levels_C combines its items into
+// half p with an atomic maximum of kLevelCode - sub-step (0, what the
+// runtime and limit_levels_C of the previous big step leave there, is the
+// identity); limit_levels_C turns the codes into sub-steps, clears half
+// 1 - p for the next big step and writes the codes and runs. The sub-step
+// clock of the component holds: Begin, the time T + q of the next slot
+// (advance resets it to T); Size, the finest sub-step. Which half of a
+// buffer holds a block's latest level follows from its sub-step and the
+// slot alone, so no flag is written during a slot and every reader can
+// tell (KernelBody.cpp, the `local` loads).
 //
 //===----------------------------------------------------------------------===//
 
@@ -175,15 +177,22 @@ LogicalResult SimulationLowering::emitLocalSteps(ComponentOp component,
       [&](Kernel &kernel, Value levels, int64_t codeSection, int64_t runSection,
           Value slot, Value parity, bool ownLevels,
           function_ref<void(const Lane &, Value, Value)> inStep,
-          function_ref<void(const Lane &)> general) {
+          function_ref<void(const Lane &)> general,
+          function_ref<void(const Lane &, Value, Value)> repair) {
         Value blocks = blocksOf(kernel);
         Value codes = b.mul(b.index(codeSection), blocks);
         Value runs = b.mul(b.index(runSection), blocks);
-        auto forPart = [&](const Part &part, Value same, Value code) {
-          auto lanes = [&](function_ref<void(const Lane &)> body) {
-            target.forEachLaneOf(b, kernel, part, [&](const Lane &lane) {
+        Value range = kernel.values.range;
+        auto forPart = [&](const Part &part, Value same, Value code,
+                           bool isRun) {
+          auto lanesOf = [&](const Part &lanes,
+                             function_ref<void(const Lane &)> body) {
+            target.forEachLaneOf(b, kernel, lanes, [&](const Lane &lane) {
               b.ifThen(lane.active, [&] { body(lane); });
             });
+          };
+          auto lanes = [&](function_ref<void(const Lane &)> body) {
+            lanesOf(part, body);
           };
           Value inStepHere = arith::AndIOp::create(
               b, b.loc, same, b.cmp(arith::CmpIPredicate::sgt, code, b.i64(0)));
@@ -196,6 +205,95 @@ LogicalResult SimulationLowering::emitLocalSteps(ComponentOp component,
             lanes([&](const Lane &lane) { inStep(lane, code, readParity); });
           });
           b.setInsertionPointToStart(branch.elseBlock());
+          if (isRun && repair && reach <= kLevelBlock) {
+            // A run of one sub-step whose neighbourhood is not: only its
+            // first and last `reach` items read another block. The whole
+            // run takes its sub-step in step (SIMD chunks), then `repair`
+            // evaluates again, through the time levels, the items at an
+            // end whose next block has another sub-step (or that wrap
+            // around the range). Nothing reads the half a block writes in
+            // its own slot (its readers' latest level of it is the other
+            // half), so the first results are never seen.
+            Value level = b.sub(b.i64(0), code);
+            b.ifThen(startsAt(slot, level), [&] {
+              Value readParity = readParityOf(parity, slot, level);
+              Value wide = b.cmp(arith::CmpIPredicate::uge, part.count,
+                                 b.index(2 * reach));
+              auto split = scf::IfOp::create(b, b.loc, TypeRange{}, wide,
+                                             /*withElseRegion=*/true);
+              OpBuilder::InsertionGuard inner(b);
+              b.setInsertionPointToStart(split.thenBlock());
+              lanes([&](const Lane &lane) { inStep(lane, level, readParity); });
+              // The items within `reach` before the part (and after it)
+              // lie in at most two blocks: those of the first and the last
+              // of them; when either has another sub-step, or they wrap
+              // around the range, the part's first (last) `reach` items
+              // are repaired. (A part may start or end inside a run, at a
+              // group's edge: its neighbours there are then in step.)
+              Value half = b.mul(b.toIndex(parity), blocks);
+              auto otherLevel = [&](Value item) {
+                return b.cmp(arith::CmpIPredicate::ne,
+                             b.load(levels, b.add(half, blockOf(item))), level);
+              };
+              auto either = [&](Value x, Value y) {
+                return arith::OrIOp::create(b, b.loc, x, y).getResult();
+              };
+              Value zero = b.index(0), edge = b.index(reach);
+              Value end = b.add(part.base, part.count);
+              Value last = b.sub(range, b.index(1));
+              Value repairFirst =
+                  b.ifThenElse(
+                       b.getI1Type(),
+                       b.cmp(arith::CmpIPredicate::eq, part.base, zero),
+                       [&]() -> SmallVector<Value> {
+                         return {b.constant(b.getI1Type(), cyclic)};
+                       },
+                       [&]() -> SmallVector<Value> {
+                         Value outside =
+                             b.cmp(arith::CmpIPredicate::ult, part.base, edge);
+                         Value low =
+                             b.select(outside, zero, b.sub(part.base, edge));
+                         Value other =
+                             either(otherLevel(low),
+                                    otherLevel(b.sub(part.base, b.index(1))));
+                         if (cyclic)
+                           other = either(other, outside);
+                         return {other};
+                       })
+                      .getResult(0);
+              Value repairLast =
+                  b.ifThenElse(
+                       b.getI1Type(),
+                       b.cmp(arith::CmpIPredicate::eq, end, range),
+                       [&]() -> SmallVector<Value> {
+                         return {b.constant(b.getI1Type(), cyclic)};
+                       },
+                       [&]() -> SmallVector<Value> {
+                         Value high = b.add(end, b.index(reach - 1));
+                         Value outside =
+                             b.cmp(arith::CmpIPredicate::ugt, high, last);
+                         Value other = either(otherLevel(end),
+                                              otherLevel(b.min(high, last)));
+                         if (cyclic)
+                           other = either(other, outside);
+                         return {other};
+                       })
+                      .getResult(0);
+              auto repairLanes = [&](Value offset) {
+                lanesOf(
+                    Part{b.add(part.base, offset), b.add(part.first, offset),
+                         edge,
+                         /*whole=*/false},
+                    [&](const Lane &lane) { repair(lane, level, readParity); });
+              };
+              b.ifThen(repairFirst, [&] { repairLanes(b.index(0)); });
+              b.ifThen(repairLast,
+                       [&] { repairLanes(b.sub(part.count, edge)); });
+              b.setInsertionPointToStart(split.elseBlock());
+              lanes(general);
+            });
+            return;
+          }
           Value due = b.constant(b.getI1Type(), 1);
           if (ownLevels)
             due = arith::OrIOp::create(b, b.loc, b.xorOne(same),
@@ -203,14 +301,13 @@ LogicalResult SimulationLowering::emitLocalSteps(ComponentOp component,
           b.ifThen(due, [&] { lanes(general); });
         };
         target.forEachGroup(b, kernel, [&](Value groupBase) {
-          Value range = kernel.values.range;
           if (!target.splitsGroups()) {
             b.ifThen(b.cmp(arith::CmpIPredicate::ult, groupBase, range), [&] {
               Part part{groupBase, b.index(0), target.groupSize(b, kernel),
                         /*whole=*/true};
               Value same, code;
               std::tie(same, code) = partCode(kernel, levels, codes, part);
-              forPart(part, same, code);
+              forPart(part, same, code, /*isRun=*/false);
             });
             return;
           }
@@ -237,7 +334,7 @@ LogicalResult SimulationLowering::emitLocalSteps(ComponentOp component,
           Value end = b.min(runEnd, groupEnd);
           forPart(Part{start, b.sub(start, groupBase), b.sub(end, start),
                        /*whole=*/false},
-                  b.constant(b.getI1Type(), 1), code);
+                  b.constant(b.getI1Type(), 1), code, /*isRun=*/true);
           scf::YieldOp::create(b, b.loc, end);
         });
       };
@@ -304,9 +401,7 @@ LogicalResult SimulationLowering::emitLocalSteps(ComponentOp component,
     readBigStep(kernel, begin, size, parity);
     Value levels = kernel.levels.lookup(symbol);
     b.ifThen(b.cmp(arith::CmpIPredicate::sgt, size, b.i64(0)), [&] {
-      Value blocks = blocksOf(kernel);
-      Value half = b.mul(b.toIndex(parity), blocks);
-      Value other = b.mul(b.toIndex(b.xorOne(parity)), blocks);
+      Value half = b.mul(b.toIndex(parity), blocksOf(kernel));
       target.forEachGroup(b, kernel, [&](Value base) {
         target.forEachLane(b, kernel, base, [&](const Lane &lane) {
           b.ifThen(lane.active, [&] {
@@ -317,11 +412,6 @@ LogicalResult SimulationLowering::emitLocalSteps(ComponentOp component,
                          b.getI64Type());
             Value level = b.floorPowerOfTwo(b.min(steps, size));
             target.laneStore(b, b.sub(b.i64(kLevelCode), level), code, lane);
-            Value block = blockOf(lane.item);
-            Value first = b.cmp(arith::CmpIPredicate::eq,
-                                b.mul(block, b.index(kLevelBlock)), lane.item);
-            b.ifThen(first,
-                     [&] { b.store(b.i64(0), levels, b.add(other, block)); });
           });
         });
         target.maxPerBlock(b, kernel, base, code, kLevelBlock, levels, half);
@@ -369,13 +459,16 @@ LogicalResult SimulationLowering::emitLocalSteps(ComponentOp component,
           b, b.loc, b.getI64Type(), b.mul(b.toIndex(parity), blocksOf(kernel)));
       auto at = [&](Value block) { return b.toIndex(b.add(half, block)); };
       auto levelAt = [&](Value block) { return b.load(levels, at(block)); };
-      // The codes of levels_C to sub-steps.
+      // The codes of levels_C to sub-steps; the other half, the previous
+      // big step's, cleared for the next (0 is the identity of its codes).
       {
+        Value other = b.mul(b.xorOne(parity), blocks);
         auto decode = scf::ForOp::create(b, b.loc, zero, blocks, one);
         OpBuilder::InsertionGuard guard(b);
         b.setInsertionPoint(decode.getBody()->getTerminator());
         Value k = decode.getInductionVar();
         b.store(b.sub(b.i64(kLevelCode), levelAt(k)), levels, at(k));
+        b.store(zero, levels, b.toIndex(b.add(other, k)));
       }
       // Lowers block `g` to twice its finest neighbour; returns whether it
       // changed.
@@ -612,7 +705,8 @@ LogicalResult SimulationLowering::emitLocalSteps(ComponentOp component,
                          size, coarsest);
             b.ifThen(startsAt(slot, level),
                      [&] { evaluateLane(lane, level, false, Value()); });
-          });
+          },
+          nullptr);
       target.reduceIntoClock(b, kernel, count, arith::AtomicRMWKind::addi,
                              evaluationSlots.lookup(fluxWriter));
     });
@@ -635,7 +729,7 @@ LogicalResult SimulationLowering::emitLocalSteps(ComponentOp component,
       // `levels` at other items unless the group's neighbourhood is
       // uniform (`uniform`: every block its window reaches has `level`).
       auto evaluateLane = [&](const Lane &lane, Value level, Value readParity,
-                              bool uniform) {
+                              bool uniform, bool counted = true) {
         Value writeParity = b.xorOne(readParity);
         Value writeBase = b.mul(b.toIndex(writeParity), kernel.values.extent);
         KernelValues values = kernel.values;
@@ -654,8 +748,9 @@ LogicalResult SimulationLowering::emitLocalSteps(ComponentOp component,
           b.store(
               value, values.buffers.lookup(write.getAttr()),
               at(kernel, write.getAttr(), writeBase, writeParity, lane.item));
-        target.laneStore(b, b.add(target.laneLoad(b, count, lane), b.i32(1)),
-                         count, lane);
+        if (counted)
+          target.laneStore(b, b.add(target.laneLoad(b, count, lane), b.i32(1)),
+                           count, lane);
       };
       // A part whose window reaches blocks of one sub-step only (its step
       // codes say so): every lane reads its neighbours in step from one
@@ -674,6 +769,9 @@ LogicalResult SimulationLowering::emitLocalSteps(ComponentOp component,
               evaluateLane(lane, level, readParityOf(parity, slot, level),
                            false);
             });
+          },
+          [&](const Lane &lane, Value level, Value readParity) {
+            evaluateLane(lane, level, readParity, false, /*counted=*/false);
           });
       target.reduceIntoClock(b, kernel, count, arith::AtomicRMWKind::addi,
                              evaluationSlots.lookup(component));
