@@ -112,6 +112,13 @@ void KernelBuilder::ifThen(Value cond, function_ref<void()> thenBuilder) {
 
 KernelTarget::~KernelTarget() = default;
 
+void KernelTarget::forEachGroupSpan(KernelBuilder &b, Kernel &kernel,
+                                    function_ref<void(Value, Value)> body) {
+  forEachGroup(b, kernel, [&](Value base) {
+    body(base, b.min(b.add(base, groupSize(b, kernel)), kernel.values.range));
+  });
+}
+
 void KernelTarget::forEachLaneOf(KernelBuilder &b, Kernel &kernel,
                                  const Part &part,
                                  function_ref<void(const Lane &)> body) {

@@ -163,6 +163,92 @@ LogicalResult SimulationLowering::emitLocalSteps(ComponentOp component,
         b.cmp(arith::CmpIPredicate::slt, state.slot, state.size));
     return state;
   };
+  // The parts of the groups of a kernel with their codes of section
+  // `codeSection` (partCode): `body(part, same, code, isRun)`. Where the
+  // target splits groups, a part is a run of blocks of one code (its end
+  // in `runSection`) within a group, and `same` is true; else it is the
+  // whole group.
+  // An scf.while over an index from `init` while `cond` holds, `body`
+  // returning the next.
+  auto whileIndex = [&](Value init, function_ref<Value(Value)> cond,
+                        function_ref<Value(Value)> body) {
+    auto loop =
+        scf::WhileOp::create(b, b.loc, b.getIndexType(), ValueRange{init});
+    OpBuilder::InsertionGuard guard(b);
+    Block *before =
+        b.createBlock(&loop.getBefore(), {}, b.getIndexType(), b.loc);
+    scf::ConditionOp::create(b, b.loc, cond(before->getArgument(0)),
+                             before->getArguments());
+    Block *after = b.createBlock(&loop.getAfter(), {}, b.getIndexType(), b.loc);
+    scf::YieldOp::create(b, b.loc, body(after->getArgument(0)));
+  };
+  // The parts of the groups of a kernel with their codes of section
+  // `codeSection` (partCode): `body(part, same, code, isRun)`. Where the
+  // target splits groups, a part is a run of blocks of one code (its end
+  // in `runSection`) within a group, and `same` is true; runs are walked
+  // over all the groups of the invocation, and one that `due(code)` says
+  // has nothing to do is skipped with one test, whatever the groups it
+  // spans. Else a part is the whole group.
+  auto forEachCodePart =
+      [&](Kernel &kernel, Value levels, int64_t codeSection, int64_t runSection,
+          function_ref<Value(Value)> due,
+          function_ref<void(const Part &, Value, Value, bool)> forPart) {
+        Value blocks = blocksOf(kernel);
+        Value codes = b.mul(b.index(codeSection), blocks);
+        Value runs = b.mul(b.index(runSection), blocks);
+        Value range = kernel.values.range;
+        if (!target.splitsGroups()) {
+          target.forEachGroup(b, kernel, [&](Value groupBase) {
+            b.ifThen(b.cmp(arith::CmpIPredicate::ult, groupBase, range), [&] {
+              Part part{groupBase, b.index(0), target.groupSize(b, kernel),
+                        /*whole=*/true};
+              Value same, code;
+              std::tie(same, code) = partCode(kernel, levels, codes, part);
+              forPart(part, same, code, /*isRun=*/false);
+            });
+          });
+          return;
+        }
+        Value size = target.groupSize(b, kernel);
+        target.forEachGroupSpan(b, kernel, [&](Value origin, Value spanEnd) {
+          whileIndex(
+              origin,
+              [&](Value start) {
+                return b.cmp(arith::CmpIPredicate::ult, start, spanEnd);
+              },
+              [&](Value start) {
+                Value block = blockOf(start);
+                Value code = b.load(levels, b.add(codes, block));
+                Value runEnd =
+                    b.min(b.mul(b.toIndex(b.load(levels, b.add(runs, block))),
+                                b.index(kLevelBlock)),
+                          spanEnd);
+                // The run, group by group.
+                b.ifThen(due(code), [&] {
+                  whileIndex(
+                      start,
+                      [&](Value piece) {
+                        return b.cmp(arith::CmpIPredicate::ult, piece, runEnd);
+                      },
+                      [&](Value piece) {
+                        Value offset = b.sub(piece, origin);
+                        Value groupBase =
+                            b.add(origin, b.mul(arith::DivUIOp::create(
+                                                    b, b.loc, offset, size),
+                                                size));
+                        Value end = b.min(b.add(groupBase, size), runEnd);
+                        forPart(Part{piece, b.sub(piece, groupBase),
+                                     b.sub(end, piece), /*whole=*/false},
+                                b.constant(b.getI1Type(), 1), code,
+                                /*isRun=*/true);
+                        return end;
+                      });
+                });
+                return runEnd;
+              });
+        });
+      };
+
   // The lanes of a slot kernel, part by part: `inStep(lane, level,
   // readParity)` for every lane of a part whose blocks all have the positive
   // neighbourhood code `level` (their neighbourhood is in step at that
@@ -180,8 +266,6 @@ LogicalResult SimulationLowering::emitLocalSteps(ComponentOp component,
           function_ref<void(const Lane &)> general,
           function_ref<void(const Lane &, Value, Value)> repair) {
         Value blocks = blocksOf(kernel);
-        Value codes = b.mul(b.index(codeSection), blocks);
-        Value runs = b.mul(b.index(runSection), blocks);
         Value range = kernel.values.range;
         auto forPart = [&](const Part &part, Value same, Value code,
                            bool isRun) {
@@ -300,43 +384,18 @@ LogicalResult SimulationLowering::emitLocalSteps(ComponentOp component,
                                        startsAt(slot, b.sub(b.i64(0), code)));
           b.ifThen(due, [&] { lanes(general); });
         };
-        target.forEachGroup(b, kernel, [&](Value groupBase) {
-          if (!target.splitsGroups()) {
-            b.ifThen(b.cmp(arith::CmpIPredicate::ult, groupBase, range), [&] {
-              Part part{groupBase, b.index(0), target.groupSize(b, kernel),
-                        /*whole=*/true};
-              Value same, code;
-              std::tie(same, code) = partCode(kernel, levels, codes, part);
-              forPart(part, same, code, /*isRun=*/false);
-            });
-            return;
-          }
-          // Run by run: from item `start`, the blocks up to the end of the
-          // run of the block that holds it, within the group.
-          Value groupEnd =
-              b.min(b.add(groupBase, target.groupSize(b, kernel)), range);
-          auto loop = scf::WhileOp::create(b, b.loc, b.getIndexType(),
-                                           ValueRange{groupBase});
-          OpBuilder::InsertionGuard guard(b);
-          Block *before =
-              b.createBlock(&loop.getBefore(), {}, b.getIndexType(), b.loc);
-          Value start = before->getArgument(0);
-          scf::ConditionOp::create(
-              b, b.loc, b.cmp(arith::CmpIPredicate::ult, start, groupEnd),
-              ValueRange{start});
-          Block *after =
-              b.createBlock(&loop.getAfter(), {}, b.getIndexType(), b.loc);
-          start = after->getArgument(0);
-          Value block = blockOf(start);
-          Value code = b.load(levels, b.add(codes, block));
-          Value runEnd = b.mul(b.toIndex(b.load(levels, b.add(runs, block))),
-                               b.index(kLevelBlock));
-          Value end = b.min(runEnd, groupEnd);
-          forPart(Part{start, b.sub(start, groupBase), b.sub(end, start),
-                       /*whole=*/false},
-                  b.constant(b.getI1Type(), 1), code, /*isRun=*/true);
-          scf::YieldOp::create(b, b.loc, end);
-        });
+        forEachCodePart(
+            kernel, levels, codeSection, runSection,
+            [&](Value code) -> Value {
+              // A positive code or (ownLevels) a negative one is a run's
+              // sub-step; 0 (flux) says nothing.
+              if (!ownLevels)
+                return b.select(
+                    b.cmp(arith::CmpIPredicate::sgt, code, b.i64(0)),
+                    startsAt(slot, code), b.constant(b.getI1Type(), 1));
+              return startsAt(slot, b.max(code, b.sub(b.i64(0), code)));
+            },
+            forPart);
       };
 
   // A flux pair: the items that read interface `j` of the writer's fluxes
@@ -800,14 +859,38 @@ LogicalResult SimulationLowering::emitLocalSteps(ComponentOp component,
   Value levels = kernel.levels.lookup(symbol);
   b.ifThen(b.cmp(arith::CmpIPredicate::sgt, size, b.i64(0)), [&] {
     Value half = b.mul(b.toIndex(parity), blocksOf(kernel));
-    forEachItem(kernel, [&](const Lane &lane) {
-      b.ifThen(lane.active, [&] {
-        // m / level sub-steps (both powers of two): even unless equal.
-        Value level = b.load(levels, b.add(half, blockOf(lane.item)));
-        Value even = b.cmp(arith::CmpIPredicate::ne, size, level);
-        b.ifThen(even, [&] { copyToTarget(kernel, writes, lane.item); });
-      });
-    });
+    // m / level sub-steps (both powers of two): even unless equal. A part
+    // of one sub-step (its step codes are it or minus it) copies all its
+    // items or none.
+    forEachCodePart(
+        kernel, levels, kLevelStepCodes, kLevelStepRuns,
+        [&](Value code) {
+          return b.cmp(arith::CmpIPredicate::ne, size,
+                       b.max(code, b.sub(b.i64(0), code)));
+        },
+        [&](const Part &part, Value same, Value code, bool) {
+          auto lanes = [&](function_ref<void(const Lane &)> body) {
+            target.forEachLaneOf(b, kernel, part, [&](const Lane &lane) {
+              b.ifThen(lane.active, [&] { body(lane); });
+            });
+          };
+          auto branch = scf::IfOp::create(b, b.loc, TypeRange{}, same,
+                                          /*withElseRegion=*/true);
+          OpBuilder::InsertionGuard guard(b);
+          b.setInsertionPointToStart(branch.thenBlock());
+          Value level = b.max(code, b.sub(b.i64(0), code));
+          b.ifThen(b.cmp(arith::CmpIPredicate::ne, size, level), [&] {
+            lanes([&](const Lane &lane) {
+              copyToTarget(kernel, writes, lane.item);
+            });
+          });
+          b.setInsertionPointToStart(branch.elseBlock());
+          lanes([&](const Lane &lane) {
+            Value level = b.load(levels, b.add(half, blockOf(lane.item)));
+            Value even = b.cmp(arith::CmpIPredicate::ne, size, level);
+            b.ifThen(even, [&] { copyToTarget(kernel, writes, lane.item); });
+          });
+        });
   });
   return endKernel(kernel, simplan::LaunchShape::items, launches, component);
 }

@@ -90,6 +90,24 @@ public:
 
   bool splitsGroups() const override { return true; }
 
+  /// The invocation's groups, first to end, as one span.
+  void forEachGroupSpan(KernelBuilder &b, Kernel &kernel,
+                        function_ref<void(Value, Value)> body) override {
+    unsigned count = kernel.func.getNumArguments();
+    Value first = b.toIndex(kernel.func.getArgument(count - 3));
+    Value end = b.toIndex(kernel.func.getArgument(count - 2));
+    b.ifThen(b.cmp(arith::CmpIPredicate::ult, first, end), [&] {
+      Value begin = b.mul(first, groupSize(kernel));
+      Value stop = b.mul(end, groupSize(kernel));
+      // A distributed plan's groups are counted from its rank's first item.
+      if (kernel.values.first) {
+        begin = b.add(begin, kernel.values.first);
+        stop = b.add(stop, kernel.values.first);
+      }
+      body(begin, b.min(stop, kernel.values.range));
+    });
+  }
+
   void forEachLaneOf(KernelBuilder &b, Kernel &kernel, const Part &part,
                      function_ref<void(const Lane &)> body) override {
     auto loop = scf::ForOp::create(b, b.loc, part.first,

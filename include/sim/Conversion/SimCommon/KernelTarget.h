@@ -154,6 +154,15 @@ public:
   /// has one sub-step) rather than for the whole group; where lanes run
   /// side by side (a GPU) a part is the whole group.
   virtual bool splitsGroups() const { return false; }
+  /// Runs `body(begin, end)` for spans of the items of consecutive groups
+  /// this invocation handles, in order, `end` at most the range: where one
+  /// thread runs its groups one after another (a CPU, splitsGroups), one
+  /// span of all of them, so that a kernel may walk its items across
+  /// groups at group level; else each group. `begin` is a group's first
+  /// item, and every group of the span starts a multiple of the group
+  /// size after it.
+  virtual void forEachGroupSpan(KernelBuilder &b, Kernel &kernel,
+                                function_ref<void(Value, Value)> body);
   /// Runs `body` for each lane of `part`.
   virtual void forEachLaneOf(KernelBuilder &b, Kernel &kernel, const Part &part,
                              function_ref<void(const Lane &)> body);

@@ -1,0 +1,76 @@
+// The CPU kernels of local time steps (strategy lts): levels_C folds the
+// lanes of each block before one atomic maximum per block and group (its
+// lanes' phase has no atomic, so --sim-vectorize-lanes widens it);
+// limit_levels_C writes the neighbourhood codes and the ends of their runs;
+// local_step_C and local_parity_C walk the runs of blocks across the
+// invocation's groups (scf.while) and run a run's lanes as one loop.
+//
+// RUN: sim-opt %s --sim-front-end=strategy=lts --sim-lower-to-cpu | FileCheck %s
+// RUN: sim-opt %s --sim-front-end=strategy=lts --sim-lower-to-cpu \
+// RUN:   | sim-opt --sim-vectorize-lanes="width=8 report=true" -o /dev/null 2>&1 \
+// RUN:   | FileCheck %s --check-prefix=WIDE --implicit-check-not="lanes stay scalar"
+
+sim.simulation @rod range(100) dt(1.0e-2 : f32) max_steps(8) {
+  sim.buffer @U : f32 init {
+  ^bb0(%i: index):
+    %one = arith.constant 1.0 : f32
+    sim.yield %one : f32
+  }
+  sim.component @Diffuse writes(@U) num_steps {
+  ^bb0(%i: index, %t: i64):
+    %i64 = arith.index_cast %i : index to i64
+    %c50 = arith.constant 50 : i64
+    %stiff = arith.cmpi sge, %i64, %c50 : i64
+    %c1 = arith.constant 1 : i32
+    %c8 = arith.constant 8 : i32
+    %n = arith.select %stiff, %c1, %c8 : i32
+    sim.yield %n : i32
+  } evaluate {
+  ^bb0(%i: index, %t: i64, %n: i32, %dt: f32):
+    %c1 = arith.constant 1 : index
+    %il = arith.subi %i, %c1 : index
+    %ir = arith.addi %i, %c1 : index
+    %ul = sim.read @U[%il] : f32
+    %u0 = sim.read @U[%i] : f32
+    %ur = sim.read @U[%ir] : f32
+    %s = arith.addf %ul, %ur : f32
+    %two = arith.constant 2.0 : f32
+    %d = arith.mulf %two, %u0 : f32
+    %lap = arith.subf %s, %d : f32
+    %nf = arith.sitofp %n : i32 to f32
+    %h = arith.mulf %nf, %dt : f32
+    %u1 = math.fma %h, %lap, %u0 : f32
+    sim.yield %u1 : f32
+  }
+  sim.observe [@U]
+}
+
+// levels_C: the lanes store their codes; one atomic per block after them.
+// CHECK-LABEL: func.func @levels_Diffuse(
+// CHECK-NOT:     memref.atomic_rmw
+// CHECK:         } {simplan.lanes}
+// CHECK:         scf.for
+// CHECK:           scf.for
+// CHECK:             arith.maxsi
+// CHECK:           memref.atomic_rmw maxs
+// CHECK:       return
+
+// limit_levels_C: decode, the sweeps, the finest, then the codes and runs.
+// CHECK-LABEL: func.func @limit_levels_Diffuse(
+// CHECK:         scf.while
+// CHECK:         memref.store {{.*}}[{{.*}}] : memref<?xi64>
+// CHECK:       return
+
+// local_step_C: runs across groups, then each run group by group.
+// CHECK-LABEL: func.func @local_step_Diffuse(
+// CHECK:         scf.while
+// CHECK:           scf.while
+// CHECK:             } {simplan.lanes}
+// CHECK:       return
+
+// CHECK-LABEL: func.func @local_parity_Diffuse(
+// CHECK:         scf.while
+// CHECK:       return
+
+// Every lanes loop of the lts kernels is widened.
+// WIDE-COUNT-9: lanes run 8 at a time
