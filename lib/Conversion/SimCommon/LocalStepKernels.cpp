@@ -163,11 +163,6 @@ LogicalResult SimulationLowering::emitLocalSteps(ComponentOp component,
         b.cmp(arith::CmpIPredicate::slt, state.slot, state.size));
     return state;
   };
-  // The parts of the groups of a kernel with their codes of section
-  // `codeSection` (partCode): `body(part, same, code, isRun)`. Where the
-  // target splits groups, a part is a run of blocks of one code (its end
-  // in `runSection`) within a group, and `same` is true; else it is the
-  // whole group.
   // An scf.while over an index from `init` while `cond` holds, `body`
   // returning the next.
   auto whileIndex = [&](Value init, function_ref<Value(Value)> cond,
@@ -183,16 +178,18 @@ LogicalResult SimulationLowering::emitLocalSteps(ComponentOp component,
     scf::YieldOp::create(b, b.loc, body(after->getArgument(0)));
   };
   // The parts of the groups of a kernel with their codes of section
-  // `codeSection` (partCode): `body(part, same, code, isRun)`. Where the
+  // `codeSection` (partCode): `forPart(part, same, code, origin)`. Where the
   // target splits groups, a part is a run of blocks of one code (its end
-  // in `runSection`) within a group, and `same` is true; runs are walked
-  // over all the groups of the invocation, and one that `due(code)` says
-  // has nothing to do is skipped with one test, whatever the groups it
-  // spans. Else a part is the whole group.
+  // in `runSection`), walked over all the groups of the invocation (`origin`
+  // is the first item of the first; the part's lanes are numbered from 0,
+  // so no lane variable may be indexed by them: piecesOf splits it into
+  // groups for that), `same` is true, and a run that `due(code)` says has
+  // nothing to do is skipped with one test. Else a part is the whole group
+  // and `origin` is null.
   auto forEachCodePart =
       [&](Kernel &kernel, Value levels, int64_t codeSection, int64_t runSection,
           function_ref<Value(Value)> due,
-          function_ref<void(const Part &, Value, Value, bool)> forPart) {
+          function_ref<void(const Part &, Value, Value, Value)> forPart) {
         Value blocks = blocksOf(kernel);
         Value codes = b.mul(b.index(codeSection), blocks);
         Value runs = b.mul(b.index(runSection), blocks);
@@ -204,12 +201,11 @@ LogicalResult SimulationLowering::emitLocalSteps(ComponentOp component,
                         /*whole=*/true};
               Value same, code;
               std::tie(same, code) = partCode(kernel, levels, codes, part);
-              forPart(part, same, code, /*isRun=*/false);
+              forPart(part, same, code, Value());
             });
           });
           return;
         }
-        Value size = target.groupSize(b, kernel);
         target.forEachGroupSpan(b, kernel, [&](Value origin, Value spanEnd) {
           whileIndex(
               origin,
@@ -223,31 +219,37 @@ LogicalResult SimulationLowering::emitLocalSteps(ComponentOp component,
                     b.min(b.mul(b.toIndex(b.load(levels, b.add(runs, block))),
                                 b.index(kLevelBlock)),
                           spanEnd);
-                // The run, group by group.
                 b.ifThen(due(code), [&] {
-                  whileIndex(
-                      start,
-                      [&](Value piece) {
-                        return b.cmp(arith::CmpIPredicate::ult, piece, runEnd);
-                      },
-                      [&](Value piece) {
-                        Value offset = b.sub(piece, origin);
-                        Value groupBase =
-                            b.add(origin, b.mul(arith::DivUIOp::create(
-                                                    b, b.loc, offset, size),
-                                                size));
-                        Value end = b.min(b.add(groupBase, size), runEnd);
-                        forPart(Part{piece, b.sub(piece, groupBase),
-                                     b.sub(end, piece), /*whole=*/false},
-                                b.constant(b.getI1Type(), 1), code,
-                                /*isRun=*/true);
-                        return end;
-                      });
+                  forPart(Part{start, b.index(0), b.sub(runEnd, start),
+                               /*whole=*/false},
+                          b.constant(b.getI1Type(), 1), code, origin);
                 });
                 return runEnd;
               });
         });
       };
+  // The pieces of a run (forEachCodePart) in each group, their lanes
+  // numbered as the group's.
+  auto piecesOf = [&](Kernel &kernel, const Part &run, Value origin,
+                      function_ref<void(const Part &)> body) {
+    Value size = target.groupSize(b, kernel);
+    Value runEnd = b.add(run.base, run.count);
+    whileIndex(
+        run.base,
+        [&](Value piece) {
+          return b.cmp(arith::CmpIPredicate::ult, piece, runEnd);
+        },
+        [&](Value piece) {
+          Value offset = b.sub(piece, origin);
+          Value groupBase = b.add(
+              origin,
+              b.mul(arith::DivUIOp::create(b, b.loc, offset, size), size));
+          Value end = b.min(b.add(groupBase, size), runEnd);
+          body(Part{piece, b.sub(piece, groupBase), b.sub(end, piece),
+                    /*whole=*/false});
+          return end;
+        });
+  };
 
   // The lanes of a slot kernel, part by part: `inStep(lane, level,
   // readParity)` for every lane of a part whose blocks all have the positive
@@ -261,22 +263,42 @@ LogicalResult SimulationLowering::emitLocalSteps(ComponentOp component,
   // else the whole group.
   auto forEachPartAtSlot =
       [&](Kernel &kernel, Value levels, int64_t codeSection, int64_t runSection,
-          Value slot, Value parity, bool ownLevels,
-          function_ref<void(const Lane &, Value, Value)> inStep,
+          Value slot, Value parity, bool ownLevels, int64_t countSlot,
+          function_ref<void(const Lane &, Value, Value, bool)> inStep,
           function_ref<void(const Lane &)> general,
           function_ref<void(const Lane &, Value, Value)> repair) {
         Value blocks = blocksOf(kernel);
         Value range = kernel.values.range;
         auto forPart = [&](const Part &part, Value same, Value code,
-                           bool isRun) {
+                           Value origin) {
           auto lanesOf = [&](const Part &lanes,
                              function_ref<void(const Lane &)> body) {
             target.forEachLaneOf(b, kernel, lanes, [&](const Lane &lane) {
               b.ifThen(lane.active, [&] { body(lane); });
             });
           };
-          auto lanes = [&](function_ref<void(const Lane &)> body) {
-            lanesOf(part, body);
+          // Lanes that count their evaluations in a lane variable: a run's
+          // pieces in each group.
+          auto countingLanes = [&](function_ref<void(const Lane &)> body) {
+            if (!origin)
+              return lanesOf(part, body);
+            piecesOf(kernel, part, origin,
+                     [&](const Part &piece) { lanesOf(piece, body); });
+          };
+          // Every lane of the part takes its sub-step in step. A run's lanes
+          // (all inside the range) run as one loop, counted at once.
+          auto allInStep = [&](Value level, Value readParity) {
+            if (!origin)
+              return lanesOf(part, [&](const Lane &lane) {
+                inStep(lane, level, readParity, /*counted=*/true);
+              });
+            lanesOf(part, [&](const Lane &lane) {
+              inStep(lane, level, readParity, /*counted=*/false);
+            });
+            b.atomic(arith::AtomicRMWKind::addi,
+                     arith::IndexCastOp::create(b, b.loc, b.getI64Type(),
+                                                part.count),
+                     kernel.clock, b.index(countSlot));
           };
           Value inStepHere = arith::AndIOp::create(
               b, b.loc, same, b.cmp(arith::CmpIPredicate::sgt, code, b.i64(0)));
@@ -284,12 +306,10 @@ LogicalResult SimulationLowering::emitLocalSteps(ComponentOp component,
                                           /*withElseRegion=*/true);
           OpBuilder::InsertionGuard guard(b);
           b.setInsertionPointToStart(branch.thenBlock());
-          b.ifThen(startsAt(slot, code), [&] {
-            Value readParity = readParityOf(parity, slot, code);
-            lanes([&](const Lane &lane) { inStep(lane, code, readParity); });
-          });
+          b.ifThen(startsAt(slot, code),
+                   [&] { allInStep(code, readParityOf(parity, slot, code)); });
           b.setInsertionPointToStart(branch.elseBlock());
-          if (isRun && repair && reach <= kLevelBlock) {
+          if (origin && repair && reach <= kLevelBlock) {
             // A run of one sub-step whose neighbourhood is not: only its
             // first and last `reach` items read another block. The whole
             // run takes its sub-step in step (SIMD chunks), then `repair`
@@ -307,7 +327,7 @@ LogicalResult SimulationLowering::emitLocalSteps(ComponentOp component,
                                              /*withElseRegion=*/true);
               OpBuilder::InsertionGuard inner(b);
               b.setInsertionPointToStart(split.thenBlock());
-              lanes([&](const Lane &lane) { inStep(lane, level, readParity); });
+              allInStep(level, readParity);
               // The items within `reach` before the part (and after it)
               // lie in at most two blocks: those of the first and the last
               // of them; when either has another sub-step, or they wrap
@@ -374,7 +394,7 @@ LogicalResult SimulationLowering::emitLocalSteps(ComponentOp component,
               b.ifThen(repairLast,
                        [&] { repairLanes(b.sub(part.count, edge)); });
               b.setInsertionPointToStart(split.elseBlock());
-              lanes(general);
+              countingLanes(general);
             });
             return;
           }
@@ -382,7 +402,7 @@ LogicalResult SimulationLowering::emitLocalSteps(ComponentOp component,
           if (ownLevels)
             due = arith::OrIOp::create(b, b.loc, b.xorOne(same),
                                        startsAt(slot, b.sub(b.i64(0), code)));
-          b.ifThen(due, [&] { lanes(general); });
+          b.ifThen(due, [&] { countingLanes(general); });
         };
         forEachCodePart(
             kernel, levels, codeSection, runSection,
@@ -718,7 +738,7 @@ LogicalResult SimulationLowering::emitLocalSteps(ComponentOp component,
       // every block it reaches at `level`, all in step) from the half
       // `readParity`.
       auto evaluateLane = [&](const Lane &lane, Value level, bool uniform,
-                              Value readParity) {
+                              Value readParity, bool counted = true) {
         KernelValues values = kernel.values;
         values.item = lane.item;
         if (uniform) {
@@ -737,8 +757,9 @@ LogicalResult SimulationLowering::emitLocalSteps(ComponentOp component,
           b.store(value, values.buffers.lookup(write.getAttr()),
                   at(kernel, write.getAttr(), values.targetBase,
                      values.targetParity, lane.item));
-        target.laneStore(b, b.add(target.laneLoad(b, count, lane), b.i32(1)),
-                         count, lane);
+        if (counted)
+          target.laneStore(b, b.add(target.laneLoad(b, count, lane), b.i32(1)),
+                           count, lane);
       };
       // A part whose interfaces reach only blocks of one sub-step, all
       // inside the range (so every interface has its readers; its flux
@@ -746,9 +767,9 @@ LogicalResult SimulationLowering::emitLocalSteps(ComponentOp component,
       // with them and reads them in step; at any other slot nothing is due.
       forEachPartAtSlot(
           kernel, levels, kLevelFluxCodes, kLevelFluxRuns, slot, parity,
-          /*ownLevels=*/false,
-          [&](const Lane &lane, Value level, Value readParity) {
-            evaluateLane(lane, level, true, readParity);
+          /*ownLevels=*/false, evaluationSlots.lookup(fluxWriter),
+          [&](const Lane &lane, Value level, Value readParity, bool counted) {
+            evaluateLane(lane, level, true, readParity, counted);
           },
           [&](const Lane &lane) {
             // The interface's sub-step: its coarsest reader's (the whole
@@ -818,9 +839,9 @@ LogicalResult SimulationLowering::emitLocalSteps(ComponentOp component,
       // path, and a part whose blocks do not start at the slot none.
       forEachPartAtSlot(
           kernel, levels, kLevelStepCodes, kLevelStepRuns, slot, parity,
-          /*ownLevels=*/true,
-          [&](const Lane &lane, Value level, Value readParity) {
-            evaluateLane(lane, level, readParity, true);
+          /*ownLevels=*/true, evaluationSlots.lookup(component),
+          [&](const Lane &lane, Value level, Value readParity, bool counted) {
+            evaluateLane(lane, level, readParity, true, counted);
           },
           [&](const Lane &lane) {
             Value level = b.load(levels, b.add(half, blockOf(lane.item)));
@@ -868,7 +889,7 @@ LogicalResult SimulationLowering::emitLocalSteps(ComponentOp component,
           return b.cmp(arith::CmpIPredicate::ne, size,
                        b.max(code, b.sub(b.i64(0), code)));
         },
-        [&](const Part &part, Value same, Value code, bool) {
+        [&](const Part &part, Value same, Value code, Value) {
           auto lanes = [&](function_ref<void(const Lane &)> body) {
             target.forEachLaneOf(b, kernel, part, [&](const Lane &lane) {
               b.ifThen(lane.active, [&] { body(lane); });
