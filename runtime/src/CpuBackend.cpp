@@ -3,7 +3,11 @@
 // The CPU section of a bundle is an ELF shared object exporting
 // `sim_cpu_<kernel>(params, first_group, end_group, group_size)`
 // (docs/Bundle.md), loaded from memory (SharedObject.h). An `items` launch
-// splits its groups into contiguous ranges run by a small pool of threads;
+// splits its groups into contiguous ranges, a few per thread, dealt to a
+// small pool of threads in turn (thread t runs ranges t, t + threads, ...):
+// the work of a range can differ (under lts a stiff region's groups
+// evaluate at every slot and the others seldom), and a thread keeps the
+// same ranges, and so the same data in its caches, from launch to launch;
 // the kernels update the clock with atomics, so concurrent disjoint ranges
 // are what the ABI promises to support. Launches are synchronous, which
 // makes reads, writes and timing trivial.
@@ -69,27 +73,34 @@ public:
   int size() const { return int(workers.size()) + 1; }
 
   /// Calls `fn(params, first, end, groupSize)` on disjoint ranges covering
-  /// [0, groups) and returns when all are done.
+  /// groups `offset .. offset + groups` and returns when all are done: one
+  /// to kPartsPerThread ranges per thread, dealt to the threads that take
+  /// part (the caller is thread 0) in turn. Groups are independent and the
+  /// clock's counters are integer atomics, so which thread runs which range
+  /// changes no result.
   /// With `flushSubnormals`, every part runs with subnormals flushed to
   /// zero (SubnormalScope).
-  /// Runs groups `offset .. offset + groups`, split over the workers.
   void run(KernelFn fn, void **params, int64_t groups, int64_t groupSize,
            bool flushSubnormals, int64_t offset = 0) {
-    int64_t parts = std::min<int64_t>(size(), groups);
-    if (parts <= 1) {
+    int64_t threads = std::min<int64_t>(size(), groups);
+    if (threads <= 1) {
       SubnormalScope mode(flushSubnormals);
       fn(params, offset, offset + groups, groupSize);
       return;
     }
+    int64_t perThread = std::clamp<int64_t>(
+        groups / (threads * kMinGroupsPerPart), 1, kPartsPerThread);
+    int64_t parts = threads * perThread;
     {
       std::lock_guard<std::mutex> lock(mutex);
-      job = {fn, params, groups, groupSize, parts, flushSubnormals, offset};
-      pending.store(int(parts) - 1, std::memory_order_relaxed);
+      job = {fn,    params,          groups, groupSize,
+             parts, flushSubnormals, offset, threads};
+      pending.store(int(threads) - 1, std::memory_order_relaxed);
       // Publishes the job to the spinning workers (acquire in work()).
       generation.fetch_add(1, std::memory_order_release);
     }
     wake.notify_all();
-    runPart(0);
+    runParts(0);
     if (spinUntil(
             [this] { return pending.load(std::memory_order_acquire) == 0; }))
       return;
@@ -116,13 +127,18 @@ private:
     int64_t groups, groupSize, parts;
     bool flushSubnormals;
     int64_t offset;
+    /// The threads that take part, the caller included.
+    int64_t threads;
   };
 
-  void runPart(int64_t part) {
-    int64_t first = job.offset + job.groups * part / job.parts;
-    int64_t end = job.offset + job.groups * (part + 1) / job.parts;
+  /// Runs the job's parts dealt to thread `thread`.
+  void runParts(int64_t thread) {
     SubnormalScope mode(job.flushSubnormals);
-    job.fn(job.params, first, end, job.groupSize);
+    for (int64_t part = thread; part < job.parts; part += job.threads) {
+      int64_t first = job.offset + job.groups * part / job.parts;
+      int64_t end = job.offset + job.groups * (part + 1) / job.parts;
+      job.fn(job.params, first, end, job.groupSize);
+    }
   }
 
   /// Spins until `ready()` holds or about 20 microseconds have passed;
@@ -154,11 +170,11 @@ private:
       if (stopping.load(std::memory_order_relaxed))
         return;
       seen = generation.load(std::memory_order_relaxed);
-      bool mine = index < job.parts;
+      bool mine = index < job.threads;
       lock.unlock();
       if (!mine)
         continue;
-      runPart(index);
+      runParts(index);
       if (pending.fetch_sub(1, std::memory_order_acq_rel) == 1) {
         // The caller may be asleep on `done`: take the lock so that it
         // either sees the count or is already waiting when notified.
@@ -174,6 +190,11 @@ private:
   Job job{};
   /// About 20 microseconds of spinning (a pause is some tens of cycles).
   static constexpr int kSpins = 1 << 11;
+  /// Ranges per thread: enough that uneven work spreads over the threads,
+  /// few enough that a launch stays a few calls; and groups per range at
+  /// least (a call has fixed costs: its lane variables, its atomics on the
+  /// clock), so that a small launch stays one range per thread.
+  static constexpr int64_t kPartsPerThread = 4, kMinGroupsPerPart = 16;
   std::atomic<int> pending{0};
   std::atomic<uint64_t> generation{0};
   std::atomic<bool> stopping{false};
