@@ -255,15 +255,16 @@ LogicalResult SimulationLowering::emitLocalSteps(ComponentOp component,
   // readParity)` for every lane of a part whose blocks all have the positive
   // neighbourhood code `level` (their neighbourhood is in step at that
   // sub-step) when it starts at the slot, `general(lane)` for every lane of
-  // any other part. With `ownLevels` a negative code is minus the block's
-  // own sub-step, and a part whose blocks all have one that does not start
-  // at the slot has nothing to do. A part is a run of blocks of one code
-  // inside a group where the target splits groups (KernelTarget::
+  // any other part. A negative code is minus a sub-step that every item of
+  // its block takes (step codes: the block's own) or divides (flux codes:
+  // the finest its interfaces reach), so a part whose blocks all have one
+  // that does not start at the slot has nothing to do. A part is a run of
+  // blocks of one code where the target splits groups (KernelTarget::
   // splitsGroups: one test skips the run, one loop of SIMD chunks runs it),
   // else the whole group.
   auto forEachPartAtSlot =
       [&](Kernel &kernel, Value levels, int64_t codeSection, int64_t runSection,
-          Value slot, Value parity, bool ownLevels, int64_t countSlot,
+          Value slot, Value parity, int64_t countSlot,
           function_ref<void(const Lane &, Value, Value, bool)> inStep,
           function_ref<void(const Lane &)> general,
           function_ref<void(const Lane &, Value, Value)> repair) {
@@ -398,21 +399,15 @@ LogicalResult SimulationLowering::emitLocalSteps(ComponentOp component,
             });
             return;
           }
-          Value due = b.constant(b.getI1Type(), 1);
-          if (ownLevels)
-            due = arith::OrIOp::create(b, b.loc, b.xorOne(same),
-                                       startsAt(slot, b.sub(b.i64(0), code)));
+          Value due = arith::OrIOp::create(
+              b, b.loc, b.xorOne(same), startsAt(slot, b.sub(b.i64(0), code)));
           b.ifThen(due, [&] { countingLanes(general); });
         };
         forEachCodePart(
             kernel, levels, codeSection, runSection,
             [&](Value code) -> Value {
-              // A positive code or (ownLevels) a negative one is a run's
-              // sub-step; 0 (flux) says nothing.
-              if (!ownLevels)
-                return b.select(
-                    b.cmp(arith::CmpIPredicate::sgt, code, b.i64(0)),
-                    startsAt(slot, code), b.constant(b.getI1Type(), 1));
+              // A negative code is minus a sub-step that every item of the
+              // run takes or (flux) divides.
               return startsAt(slot, b.max(code, b.sub(b.i64(0), code)));
             },
             forPart);
@@ -631,7 +626,9 @@ LogicalResult SimulationLowering::emitLocalSteps(ComponentOp component,
       // from one value per block whether the items a block's items reach
       // (`below` before its first, `above` after its last, and, unless
       // `clipped` to the range, all inside it) have its own sub-step: then
-      // the code is that sub-step, else minus it (`ownLevels`) or 0.
+      // the code is that sub-step, else minus it (`ownLevels`) or minus the
+      // finest sub-step among them (a flux writer's interface takes that of
+      // its coarsest reader, a multiple of it).
       Value range = arith::IndexCastOp::create(b, b.loc, b.getI64Type(),
                                                kernel.values.range);
       Value blockItems = b.i64(kLevelBlock);
@@ -657,20 +654,22 @@ LogicalResult SimulationLowering::emitLocalSteps(ComponentOp component,
             arith::DivUIOp::create(b, b.loc, b.max(low, zero), blockItems);
         Value highBlock = arith::DivUIOp::create(
             b, b.loc, b.min(high, b.sub(range, one)), blockItems);
-        auto scan = scf::ForOp::create(
-            b, b.loc, lowBlock, b.add(highBlock, one), one, ValueRange{inside});
+        auto scan =
+            scf::ForOp::create(b, b.loc, lowBlock, b.add(highBlock, one), one,
+                               ValueRange{inside, own});
         {
           OpBuilder::InsertionGuard inner(b);
           b.setInsertionPointToStart(scan.getBody());
-          Value same = b.cmp(arith::CmpIPredicate::eq,
-                             levelAt(scan.getInductionVar()), own);
+          Value level = levelAt(scan.getInductionVar());
+          Value same = b.cmp(arith::CmpIPredicate::eq, level, own);
           scf::YieldOp::create(
               b, b.loc,
-              arith::AndIOp::create(b, b.loc, scan.getRegionIterArg(0), same)
-                  .getResult());
+              ValueRange{arith::AndIOp::create(b, b.loc,
+                                               scan.getRegionIterArg(0), same),
+                         b.min(scan.getRegionIterArg(1), level)});
         }
         Value code = b.select(scan.getResult(0), own,
-                              ownLevels ? b.sub(zero, own) : zero);
+                              b.sub(zero, ownLevels ? own : scan.getResult(1)));
         b.store(code, levels,
                 b.toIndex(b.add(b.mul(b.i64(section), blocks), g)));
       };
@@ -767,7 +766,7 @@ LogicalResult SimulationLowering::emitLocalSteps(ComponentOp component,
       // with them and reads them in step; at any other slot nothing is due.
       forEachPartAtSlot(
           kernel, levels, kLevelFluxCodes, kLevelFluxRuns, slot, parity,
-          /*ownLevels=*/false, evaluationSlots.lookup(fluxWriter),
+          evaluationSlots.lookup(fluxWriter),
           [&](const Lane &lane, Value level, Value readParity, bool counted) {
             evaluateLane(lane, level, true, readParity, counted);
           },
@@ -839,7 +838,7 @@ LogicalResult SimulationLowering::emitLocalSteps(ComponentOp component,
       // path, and a part whose blocks do not start at the slot none.
       forEachPartAtSlot(
           kernel, levels, kLevelStepCodes, kLevelStepRuns, slot, parity,
-          /*ownLevels=*/true, evaluationSlots.lookup(component),
+          evaluationSlots.lookup(component),
           [&](const Lane &lane, Value level, Value readParity, bool counted) {
             evaluateLane(lane, level, readParity, true, counted);
           },
