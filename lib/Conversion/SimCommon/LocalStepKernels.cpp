@@ -163,6 +163,19 @@ LogicalResult SimulationLowering::emitLocalSteps(ComponentOp component,
         b.cmp(arith::CmpIPredicate::slt, state.slot, state.size));
     return state;
   };
+  // The results of a lane's evaluation into the half at `base` and
+  // `parity` of the buffers `writes`, and one more evaluation in `count`
+  // (unless null: a run counts its lanes at once).
+  auto storeResults =
+      [&](Kernel &kernel, const Lane &lane, ArrayRef<FlatSymbolRefAttr> writes,
+          ArrayRef<Value> results, Value base, Value parity, LaneVar *count) {
+        for (auto [write, value] : llvm::zip_equal(writes, results))
+          b.store(value, kernel.values.buffers.lookup(write.getAttr()),
+                  at(kernel, write.getAttr(), base, parity, lane.item));
+        if (count)
+          target.laneStore(b, b.add(target.laneLoad(b, *count, lane), b.i32(1)),
+                           *count, lane);
+      };
   // An scf.while over an index from `init` while `cond` holds, `body`
   // returning the next.
   auto whileIndex = [&](Value init, function_ref<Value(Value)> cond,
@@ -476,16 +489,18 @@ LogicalResult SimulationLowering::emitLocalSteps(ComponentOp component,
     Value levels = kernel.levels.lookup(symbol);
     b.ifThen(b.cmp(arith::CmpIPredicate::sgt, size, b.i64(0)), [&] {
       Value half = b.mul(b.toIndex(parity), blocksOf(kernel));
+      // The code of `writer`'s num_steps at T at a lane's item.
+      auto codeAt = [&](ComponentOp writer, const Lane &lane) {
+        KernelValues values = kernel.values;
+        values.item = lane.item;
+        Value steps = b.extend(
+            estimate(kernel, writer, lane.item, begin, values), b.getI64Type());
+        return b.sub(b.i64(kLevelCode), b.floorPowerOfTwo(b.min(steps, size)));
+      };
       target.forEachGroup(b, kernel, [&](Value base) {
         target.forEachLane(b, kernel, base, [&](const Lane &lane) {
           b.ifThen(lane.active, [&] {
-            KernelValues values = kernel.values;
-            values.item = lane.item;
-            Value steps =
-                b.extend(estimate(kernel, component, lane.item, begin, values),
-                         b.getI64Type());
-            Value level = b.floorPowerOfTwo(b.min(steps, size));
-            target.laneStore(b, b.sub(b.i64(kLevelCode), level), code, lane);
+            target.laneStore(b, codeAt(component, lane), code, lane);
           });
         });
         target.maxPerBlock(b, kernel, base, code, kLevelBlock, levels, half);
@@ -496,13 +511,7 @@ LogicalResult SimulationLowering::emitLocalSteps(ComponentOp component,
           return;
         target.forEachLane(b, kernel, base, [&](const Lane &lane) {
           b.ifThen(lane.active, [&] {
-            KernelValues values = kernel.values;
-            values.item = lane.item;
-            Value fluxSteps =
-                b.extend(estimate(kernel, fluxWriter, lane.item, begin, values),
-                         b.getI64Type());
-            Value fluxCode = b.sub(b.i64(kLevelCode),
-                                   b.floorPowerOfTwo(b.min(fluxSteps, size)));
+            Value fluxCode = codeAt(fluxWriter, lane);
             foldReaders(kernel, lane.item, b.i64(0),
                         [&](Value reader, Value exists, Value unused) {
                           b.ifThen(exists, [&] {
@@ -752,13 +761,8 @@ LogicalResult SimulationLowering::emitLocalSteps(ComponentOp component,
         SmallVector<Value> results = inline_(
             fluxWriter.getEvaluate(),
             {lane.item, now, b.truncate(level, b.getI32Type()), dt}, values);
-        for (auto [write, value] : llvm::zip_equal(fluxWrites, results))
-          b.store(value, values.buffers.lookup(write.getAttr()),
-                  at(kernel, write.getAttr(), values.targetBase,
-                     values.targetParity, lane.item));
-        if (counted)
-          target.laneStore(b, b.add(target.laneLoad(b, count, lane), b.i32(1)),
-                           count, lane);
+        storeResults(kernel, lane, fluxWrites, results, values.targetBase,
+                     values.targetParity, counted ? &count : nullptr);
       };
       // A part whose interfaces reach only blocks of one sub-step, all
       // inside the range (so every interface has its readers; its flux
@@ -823,13 +827,8 @@ LogicalResult SimulationLowering::emitLocalSteps(ComponentOp component,
         SmallVector<Value> results = inline_(
             component.getEvaluate(),
             {lane.item, now, b.truncate(level, b.getI32Type()), dt}, values);
-        for (auto [write, value] : llvm::zip_equal(writes, results))
-          b.store(
-              value, values.buffers.lookup(write.getAttr()),
-              at(kernel, write.getAttr(), writeBase, writeParity, lane.item));
-        if (counted)
-          target.laneStore(b, b.add(target.laneLoad(b, count, lane), b.i32(1)),
-                           count, lane);
+        storeResults(kernel, lane, writes, results, writeBase, writeParity,
+                     counted ? &count : nullptr);
       };
       // A part whose window reaches blocks of one sub-step only (its step
       // codes say so): every lane reads its neighbours in step from one
