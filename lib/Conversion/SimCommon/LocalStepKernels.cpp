@@ -50,6 +50,8 @@
 #include "sim/Conversion/SimCommon/KernelNames.h"
 #include "sim/Conversion/SimCommon/SimulationLowering.h"
 
+#include <array>
+
 using namespace mlir;
 using namespace mlir::sim;
 
@@ -359,44 +361,41 @@ LogicalResult SimulationLowering::emitLocalSteps(ComponentOp component,
               Value zero = b.index(0), edge = b.index(reach);
               Value end = b.add(part.base, part.count);
               Value last = b.sub(range, b.index(1));
+              // Whether the items within `reach` beyond one end of the part
+              // (`near` and `far` the blocks' items, `outside` whether they
+              // leave the range) need a repair; at an end of the range only
+              // a wrap reads beyond it.
+              auto beyond = [&](Value atRangeEnd,
+                                function_ref<std::array<Value, 3>()> items) {
+                return b
+                    .ifThenElse(
+                        b.getI1Type(), atRangeEnd,
+                        [&]() -> SmallVector<Value> {
+                          return {b.constant(b.getI1Type(), cyclic)};
+                        },
+                        [&]() -> SmallVector<Value> {
+                          auto [near, far, outside] = items();
+                          Value other =
+                              either(otherLevel(near), otherLevel(far));
+                          return {cyclic ? either(other, outside) : other};
+                        })
+                    .getResult(0);
+              };
               Value repairFirst =
-                  b.ifThenElse(
-                       b.getI1Type(),
-                       b.cmp(arith::CmpIPredicate::eq, part.base, zero),
-                       [&]() -> SmallVector<Value> {
-                         return {b.constant(b.getI1Type(), cyclic)};
-                       },
-                       [&]() -> SmallVector<Value> {
-                         Value outside =
-                             b.cmp(arith::CmpIPredicate::ult, part.base, edge);
-                         Value low =
-                             b.select(outside, zero, b.sub(part.base, edge));
-                         Value other =
-                             either(otherLevel(low),
-                                    otherLevel(b.sub(part.base, b.index(1))));
-                         if (cyclic)
-                           other = either(other, outside);
-                         return {other};
-                       })
-                      .getResult(0);
+                  beyond(b.cmp(arith::CmpIPredicate::eq, part.base, zero), [&] {
+                    Value outside =
+                        b.cmp(arith::CmpIPredicate::ult, part.base, edge);
+                    Value low = b.select(outside, zero, b.sub(part.base, edge));
+                    return std::array<Value, 3>{b.sub(part.base, b.index(1)),
+                                                low, outside};
+                  });
               Value repairLast =
-                  b.ifThenElse(
-                       b.getI1Type(),
-                       b.cmp(arith::CmpIPredicate::eq, end, range),
-                       [&]() -> SmallVector<Value> {
-                         return {b.constant(b.getI1Type(), cyclic)};
-                       },
-                       [&]() -> SmallVector<Value> {
-                         Value high = b.add(end, b.index(reach - 1));
-                         Value outside =
-                             b.cmp(arith::CmpIPredicate::ugt, high, last);
-                         Value other = either(otherLevel(end),
-                                              otherLevel(b.min(high, last)));
-                         if (cyclic)
-                           other = either(other, outside);
-                         return {other};
-                       })
-                      .getResult(0);
+                  beyond(b.cmp(arith::CmpIPredicate::eq, end, range), [&] {
+                    Value high = b.add(end, b.index(reach - 1));
+                    return std::array<Value, 3>{
+                        end, b.min(high, last),
+                        b.cmp(arith::CmpIPredicate::ugt, high, last)};
+                  });
               auto repairLanes = [&](Value offset) {
                 lanesOf(
                     Part{b.add(part.base, offset), b.add(part.first, offset),
