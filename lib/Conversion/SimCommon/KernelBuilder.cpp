@@ -73,9 +73,9 @@ Value KernelBuilder::load(Value memref, Value index) {
 void KernelBuilder::store(Value value, Value memref, Value index) {
   memref::StoreOp::create(*this, loc, value, memref, index);
 }
-void KernelBuilder::atomic(arith::AtomicRMWKind kind, Value value, Value memref,
-                           Value index) {
-  memref::AtomicRMWOp::create(*this, loc, kind, value, memref, index);
+Value KernelBuilder::atomic(arith::AtomicRMWKind kind, Value value,
+                            Value memref, Value index) {
+  return memref::AtomicRMWOp::create(*this, loc, kind, value, memref, index);
 }
 
 scf::IfOp

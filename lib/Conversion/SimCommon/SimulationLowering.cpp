@@ -373,16 +373,38 @@ Value SimulationLowering::estimate(Kernel &kernel, ComponentOp component,
 void SimulationLowering::estimateInto(Kernel &kernel, ComponentOp component,
                                       LaneVar minimum, Value time,
                                       int64_t slot) {
-  forEachItem(kernel, [&](const Lane &lane) {
-    b.ifThen(lane.active, [&] {
-      KernelValues values = kernel.values;
-      values.item = lane.item;
-      Value steps = estimate(kernel, component, lane.item, time, values);
-      target.laneStore(b, b.min(target.laneLoad(b, minimum, lane), steps),
-                       minimum, lane);
+  auto lanes = [&](Value base) {
+    target.forEachLane(b, kernel, base, [&](const Lane &lane) {
+      b.ifThen(lane.active, [&] {
+        KernelValues values = kernel.values;
+        values.item = lane.item;
+        Value steps = estimate(kernel, component, lane.item, time, values);
+        target.laneStore(b, b.min(target.laneLoad(b, minimum, lane), steps),
+                         minimum, lane);
+      });
+    });
+  };
+  if (!target.reducesPerGroup()) {
+    target.forEachGroup(b, kernel, lanes);
+    target.reduceIntoClock(b, kernel, minimum, arith::AtomicRMWKind::mins,
+                           slot);
+    return;
+  }
+  // An estimate is at least 1, so once the slot holds 1 (an item of this or
+  // an earlier group, or another estimate of the same decision) no item can
+  // change it: the groups after that skip their num_steps. With per-item
+  // step counts nearly every group holds an item at 1, and the estimate
+  // would otherwise cost as much as a component's evaluation. The slot ends
+  // at the same minimum either way.
+  target.forEachGroup(b, kernel, [&](Value base) {
+    Value current = b.atomic(arith::AtomicRMWKind::addi, b.i64(0), kernel.clock,
+                             b.index(slot));
+    b.ifThen(b.cmp(arith::CmpIPredicate::sgt, current, b.i64(1)), [&] {
+      lanes(base);
+      target.reduceIntoClock(b, kernel, minimum, arith::AtomicRMWKind::mins,
+                             slot);
     });
   });
-  target.reduceIntoClock(b, kernel, minimum, arith::AtomicRMWKind::mins, slot);
 }
 
 LogicalResult SimulationLowering::run() {

@@ -184,6 +184,9 @@ public:
     return fold(b, kernel, value, arith::AtomicRMWKind::mins);
   }
 
+  bool reducesPerGroup() const override { return true; }
+  bool evaluatesUnitBigStep() const override { return true; }
+
   void reduceIntoClock(KernelBuilder &b, Kernel &kernel, LaneVar value,
                        arith::AtomicRMWKind kind, int64_t slot) override {
     Value total = fold(b, kernel, value, kind);

@@ -48,12 +48,41 @@ sim.simulation @pair range(100) dt(1.0e-2 : f32) max_steps(4) {
 }
 
 // CHECK-LABEL: module @pair_kernels {
+//                The estimate of the next big step: each group first reads
+//                the running minimum (slot 4) and skips its lanes once it is
+//                1, since no estimate is smaller; else it adds its own.
+// CHECK-LABEL: func.func @estimate_Lead(
+// CHECK-SAME:      %[[ECLOCK:[^:]*]]: memref<?xi64>
+// CHECK:         scf.for %{{.*}} = %{{.*}} to %{{.*}} step %c1 {
+// CHECK:           %[[SEEN:.*]] = memref.atomic_rmw addi %c0_i64, %[[ECLOCK]][%c4]
+// CHECK:           %[[OPEN:.*]] = arith.cmpi sgt, %[[SEEN]], %c1_i64 : i64
+// CHECK:           scf.if %[[OPEN]] {
+// CHECK:             scf.for
+// CHECK:               arith.minsi
+// CHECK:             } {simplan.lanes}
+// CHECK:             scf.for {{.*}} iter_args
+// CHECK:             memref.atomic_rmw mins %{{.*}}, %[[ECLOCK]][%c4]
+// CHECK-NEXT:      }
+// CHECK-NEXT:    }
 // CHECK-LABEL: func.func @substep_Follow(
 // CHECK-SAME:      %[[CLOCK:[^:]*]]: memref<?xi64>, %[[X:[^:]*]]: memref<?xf32>, %[[Y:[^:]*]]: memref<?xf32>, %[[RANGE:[^:]*]]: i64, %[[FIRST:[^:]*]]: i64, %[[END:[^:]*]]: i64, %[[GROUP:[^:]*]]: i64) attributes {simplan.clock_slots = 15 : i64, simplan.group_arguments = 3 : i64, simplan.shared = array<i64: 0, 0>}
 // CHECK:         %[[G:.*]] = arith.index_cast %[[GROUP]] : i64 to index
 //                One register per lane of the group.
 // CHECK:         %[[OWN:.*]] = memref.alloca(%[[G]]) : memref<?xf32>
 // CHECK:         %[[STEPS:.*]] = memref.alloca(%[[G]]) : memref<?xi32>
+//                m = 1: one evaluation per item as evaluate_C does it, own
+//                state from its half, straight into the target.
+// CHECK:         %[[SINGLE:.*]] = arith.cmpi eq, %{{.*}}, %c1_i64 : i64
+// CHECK-NEXT:    scf.if %[[SINGLE]] {
+// CHECK:           scf.for %{{.*}} = %{{.*}} to %{{.*}} step %c1 {
+// CHECK:             scf.for %{{.*}} = %c0 to %[[G]] step %c1 {
+// CHECK-NOT:           %[[OWN]]
+// CHECK:               memref.load %[[Y]]
+// CHECK-NOT:           %[[OWN]]
+// CHECK:               memref.store %{{.*}}, %[[Y]]
+// CHECK:             } {simplan.lanes}
+// CHECK:         } else {
+//                Otherwise each group sub-steps in registers.
 // CHECK:         scf.for %[[GI:.*]] = %{{.*}} to %{{.*}} step %c1 {
 // CHECK:           %[[BASE:.*]] = arith.muli %[[GI]], %[[G]]
 // CHECK:           scf.for %[[LANE:.*]] = %c0 to %[[G]] step %c1 {

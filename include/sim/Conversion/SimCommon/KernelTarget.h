@@ -56,8 +56,9 @@ struct KernelBuilder : OpBuilder {
   Value truncate(Value value, Type type);
   Value load(Value memref, Value index);
   void store(Value value, Value memref, Value index);
-  void atomic(arith::AtomicRMWKind kind, Value value, Value memref,
-              Value index);
+  /// An atomic read-modify-write; returns the value before it.
+  Value atomic(arith::AtomicRMWKind kind, Value value, Value memref,
+               Value index);
 
   /// scf.if with results; the callbacks build each branch and return what
   /// it yields.
@@ -190,9 +191,25 @@ public:
   virtual Value groupMin(KernelBuilder &b, Kernel &kernel, LaneVar value) = 0;
   /// Combines an i32 lane variable over every lane of the invocation into
   /// clock slot `slot` (as i64) with `kind` (`mins` or `addi`). Called once,
-  /// after the last group, at the kernel's top level.
+  /// after the last group, at the kernel's top level; or, where
+  /// reducesPerGroup, at group level once per group.
   virtual void reduceIntoClock(KernelBuilder &b, Kernel &kernel, LaneVar value,
                                arith::AtomicRMWKind kind, int64_t slot) = 0;
+  /// Whether a group may decide on its own, from a clock slot that other
+  /// groups of the same launch change atomically, to skip its lanes, and
+  /// then combine its lanes into that slot itself (reduceIntoClock at group
+  /// level): a target whose threads run whole groups one after another (a
+  /// CPU). Where lanes of a group run side by side (a GPU) each would read
+  /// the slot on its own, and the combination synchronises them.
+  virtual bool reducesPerGroup() const { return false; }
+  /// Whether a sub-step kernel takes a big step of 1 as evaluate_C does
+  /// (own state read where it lies, no registers, no group minimum), in a
+  /// second copy of the component's body next to the sub-step loop. On a
+  /// CPU that copy is the faster code for m = 1 and costs only code size;
+  /// on a GPU a kernel's registers are the maximum over both copies, and
+  /// the copy raised hip-cache's beyond 1.25x the hand-written kernel's
+  /// (Target/PTX/registers.test).
+  virtual bool evaluatesUnitBigStep() const { return false; }
 
   /// Whether the backend keeps hip-cache's shared-memory caches. Without
   /// them a cache load computes its value (the results are the same).
