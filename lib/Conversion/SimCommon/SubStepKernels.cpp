@@ -62,9 +62,8 @@ LogicalResult SimulationLowering::emitSubSteps(ComponentOp component,
     return values;
   };
 
-  // The sub-steps of every group; `single` (m = 1), where given, takes one
-  // sub-step of 1 without estimates.
-  auto subStepGroups = [&](Value end, Value single) {
+  // The sub-steps of every group.
+  auto subStepGroups = [&](Value end) {
     target.forEachGroup(b, kernel, [&](Value base) {
       // Own state at T into registers, where the bodies read it.
       if (!initial.empty())
@@ -111,19 +110,21 @@ LogicalResult SimulationLowering::emitSubSteps(ComponentOp component,
             b.extend(target.groupMin(b, kernel, steps), b.getI64Type());
         return SmallVector<Value>{b.min(groupMin, b.sub(end, time))};
       };
+      // With one base step left the sub-step is 1 whatever the estimates
+      // say (none is below 1): no estimates, no minimum. That is every
+      // big step of 1 and the last sub-step of many others.
+      Value last = b.cmp(arith::CmpIPredicate::eq, b.sub(end, time), b.i64(1));
       Value subStep =
-          single ? b.ifThenElse(
-                        b.getI64Type(), single,
-                        [&] { return SmallVector<Value>{b.i64(1)}; }, groupStep)
-                       .getResult(0)
-                 : groupStep().front();
+          b.ifThenElse(
+               b.getI64Type(), last,
+               [&] { return SmallVector<Value>{b.i64(1)}; }, groupStep)
+              .getResult(0);
       Value subStep32 = b.truncate(subStep, b.getI32Type());
       if (!caches.empty()) {
         // The caches of the previous sub-step are free once every lane
-        // has passed the barrier of this sub-step's minimum; when m = 1
-        // there was none.
-        if (single)
-          b.ifThen(single, [&] { target.barrier(b); });
+        // has passed the barrier of this sub-step's minimum; without a
+        // minimum there was none.
+        b.ifThen(last, [&] { target.barrier(b); });
         fillCaches(kernel, component, caches, stepBase, time, subStep32, dt);
       }
       target.forEachLane(b, kernel, stepBase, [&](const Lane &lane) {
@@ -154,10 +155,10 @@ LogicalResult SimulationLowering::emitSubSteps(ComponentOp component,
   b.ifThen(b.cmp(arith::CmpIPredicate::sgt, size, b.i64(0)), [&] {
     target.prepareGroupMin(b, kernel);
     Value end = b.add(begin, size);
-    Value single = b.cmp(arith::CmpIPredicate::eq, size, b.i64(1));
     if (!target.evaluatesUnitBigStep()) {
-      subStepGroups(end, single);
+      subStepGroups(end);
     } else {
+      Value single = b.cmp(arith::CmpIPredicate::eq, size, b.i64(1));
       // m = 1: one sub-step of 1, which is what evaluate_C does with n = 1
       // (own state at T, other buffers at T + 1): no registers, no
       // estimate, no minimum. With per-item step counts most big steps
@@ -171,7 +172,7 @@ LogicalResult SimulationLowering::emitSubSteps(ComponentOp component,
             return SmallVector<Value>{};
           },
           [&] {
-            subStepGroups(end, Value());
+            subStepGroups(end);
             return SmallVector<Value>{};
           });
     }

@@ -26,8 +26,10 @@
 
 #include "mlir/Dialect/LLVMIR/LLVMDialect.h"
 #include "mlir/Dialect/Vector/IR/VectorOps.h"
+#include "mlir/IR/Dominance.h"
 #include "mlir/IR/IRMapping.h"
 #include "mlir/Interfaces/SideEffectInterfaces.h"
+#include "mlir/Transforms/ControlFlowSinkUtils.h"
 
 #include "llvm/Support/Debug.h"
 
@@ -105,6 +107,18 @@ static bool isIntegerDivision(Operation *op) {
              arith::CeilDivSIOp, arith::CeilDivUIOp, arith::FloorDivSIOp>(op);
 }
 
+/// Whether the integer division `op` by `divisor` cannot trap in any lane: a
+/// constant divisor other than 0 (and, for a signed division, -1, which traps
+/// on INT_MIN / -1). Such a division needs no mask, and LLVM turns it into a
+/// multiplication by the divisor's reciprocal instead of one `div` per lane.
+static bool divisorCannotTrap(Operation *op, Value divisor) {
+  APInt value;
+  if (!matchPattern(divisor, m_ConstantInt(&value)))
+    return false;
+  bool isUnsigned = isa<arith::DivUIOp, arith::RemUIOp, arith::CeilDivUIOp>(op);
+  return !value.isZero() && (isUnsigned || !value.isAllOnes());
+}
+
 /// Ops that compute per element: arith, math, vector.fma and the
 /// llvm.intr.fma that --sim-fused-multiply-add makes of it.
 static bool isElementwise(Operation *op) {
@@ -123,6 +137,11 @@ public:
   /// Emits the widened loop for the whole chunks before the original loop,
   /// which keeps the remaining lanes.
   void rewrite();
+  /// After `analyze`: turns every select on a lane-independent condition
+  /// whose operand costs an integer division into a branch that computes
+  /// only the chosen operand. Returns whether it changed the loop (then the
+  /// analysis must run again).
+  bool branchCostlySelects();
 
 private:
   bool isVarying(Value value) const { return varying.contains(value); }
@@ -610,7 +629,8 @@ void LaneVectorizer::widenElementwise(OpBuilder &b, Operation *op, Value mask) {
       Value lanes = lanePart(b, operand, k);
       // Lanes that do not run this division divide by one: x86 traps on a
       // division by zero (and on INT_MIN / -1), whichever lane it is in.
-      if (index == 1 && mask && isIntegerDivision(op)) {
+      if (index == 1 && mask && isIntegerDivision(op) &&
+          !divisorCannotTrap(op, operand)) {
         Type type = lanes.getType();
         Value one = arith::ConstantOp::create(
             b, loc, type,
@@ -909,6 +929,67 @@ void LaneVectorizer::widenStore(OpBuilder &b, memref::StoreOp op, Value mask) {
   scatter(slow);
 }
 
+//===----------------------------------------------------------------------===//
+// Selects that would divide in every lane
+//===----------------------------------------------------------------------===//
+
+/// Whether `value` is computed, through ops of `block` whose results nothing
+/// else uses, by an integer division: work that a branch on the select's
+/// condition would skip. x86 has no SIMD integer division, so a widened one
+/// is a `div` per lane (tens of cycles each), and a select computes both of
+/// its operands in every lane.
+static bool costsDivision(Value value, Block *block, int depth = 0) {
+  Operation *def = value.getDefiningOp();
+  if (!def || def->getBlock() != block || !value.hasOneUse() ||
+      def->getNumRegions() != 0 || !isMemoryEffectFree(def) || depth > 8)
+    return false;
+  if (isIntegerDivision(def) && !divisorCannotTrap(def, def->getOperand(1)))
+    return true;
+  return llvm::any_of(def->getOperands(), [&](Value operand) {
+    return costsDivision(operand, block, depth + 1);
+  });
+}
+
+bool LaneVectorizer::branchCostlySelects() {
+  // A scene's num_steps picks its key with selects on scene parameters
+  // (`i / @group` or `i`): the same choice in every lane, so a branch costs
+  // one predictable jump where the select pays the division in every lane.
+  SmallVector<arith::SelectOp> selects;
+  loop.getBody()->walk([&](arith::SelectOp select) {
+    Value condition = select.getCondition();
+    if (isVarying(condition) || isa<VectorType>(condition.getType()))
+      return;
+    Block *block = select->getBlock();
+    if (costsDivision(select.getTrueValue(), block) ||
+        costsDivision(select.getFalseValue(), block))
+      selects.push_back(select);
+  });
+  if (selects.empty())
+    return false;
+  DominanceInfo dominance;
+  for (arith::SelectOp select : selects) {
+    OpBuilder b(select);
+    auto branch = scf::IfOp::create(b, select.getLoc(), select.getType(),
+                                    select.getCondition(), /*withElse=*/true);
+    OpBuilder thenBuilder = emptyBody(branch.thenBlock());
+    scf::YieldOp::create(thenBuilder, select.getLoc(), select.getTrueValue());
+    OpBuilder elseBuilder = emptyBody(branch.elseBlock());
+    scf::YieldOp::create(elseBuilder, select.getLoc(), select.getFalseValue());
+    select.replaceAllUsesWith(branch.getResult(0));
+    select.erase();
+    // Each operand's computation moves into the branch that uses it.
+    controlFlowSink(
+        branch->getRegions(), dominance,
+        [](Operation *op, Region *) {
+          return op->getNumRegions() == 0 && isMemoryEffectFree(op);
+        },
+        [](Operation *op, Region *region) {
+          op->moveBefore(&region->front(), region->front().begin());
+        });
+  }
+  return true;
+}
+
 void LaneVectorizer::rewrite() {
   OpBuilder b(loop);
   Value lower = loop.getLowerBound(), upper = loop.getUpperBound();
@@ -964,9 +1045,15 @@ struct SimVectorizeLanesPass
         loops.push_back(loop);
     });
     for (scf::ForOp loop : loops) {
-      LaneVectorizer vectorizer(loop, width);
+      std::optional<LaneVectorizer> vectorizer;
+      vectorizer.emplace(loop, width);
       std::string why;
-      if (failed(vectorizer.analyze(why))) {
+      LogicalResult analyzed = vectorizer->analyze(why);
+      if (succeeded(analyzed) && vectorizer->branchCostlySelects()) {
+        vectorizer.emplace(loop, width);
+        analyzed = vectorizer->analyze(why);
+      }
+      if (failed(analyzed)) {
         // The scalar loop stays; it computes the same results.
         LLVM_DEBUG(llvm::dbgs() << "lanes stay scalar (" << why << ") at "
                                 << loop.getLoc() << "\n");
@@ -979,7 +1066,7 @@ struct SimVectorizeLanesPass
       if (report)
         loop.emitRemark() << "lanes run " << static_cast<int64_t>(width)
                           << " at a time";
-      vectorizer.rewrite();
+      vectorizer->rewrite();
       ++numWidened;
     }
   }

@@ -115,6 +115,82 @@ func.func @division(%d: memref<?xi64>, %out: memref<?xi64>, %g: index) {
 
 // -----
 
+// A division by a constant other than 0 cannot trap: no mask, so LLVM can
+// multiply by the reciprocal instead of dividing lane by lane. A signed
+// division by -1 keeps its mask (INT_MIN / -1 traps).
+// CHECK-LABEL: func.func @constant_divisor
+// CHECK:         scf.if
+// CHECK-NOT:       arith.select
+// CHECK:           arith.remui %{{.*}}, %{{.*}} : vector<8xi64>
+// CHECK:           %[[SAFE:.*]] = arith.select %{{.*}}, %{{.*}}, %{{.*}} : vector<8xi1>, vector<8xi64>
+// CHECK:           arith.divsi %{{.*}}, %[[SAFE]] : vector<8xi64>
+func.func @constant_divisor(%d: memref<?xi64>, %out: memref<?xi64>, %g: index) {
+  %c0 = arith.constant 0 : index
+  %c1 = arith.constant 1 : index
+  %c0_i64 = arith.constant 0 : i64
+  %c3 = arith.constant 3 : i64
+  %minus_one = arith.constant -1 : i64
+  // expected-remark @below {{lanes run 8 at a time}}
+  scf.for %lane = %c0 to %g step %c1 {
+    %x = memref.load %d[%lane] : memref<?xi64>
+    %positive = arith.cmpi sgt, %x, %c0_i64 : i64
+    %q = scf.if %positive -> (i64) {
+      %r = arith.remui %x, %c3 : i64
+      %n = arith.divsi %r, %minus_one : i64
+      scf.yield %n : i64
+    } else {
+      scf.yield %c0_i64 : i64
+    }
+    memref.store %q, %out[%lane] : memref<?xi64>
+  } {simplan.lanes}
+  return
+}
+
+// -----
+
+// A select on a lane-independent condition whose operand costs a division
+// (num_steps keyed by `i / @group` or `i`, chosen by a parameter) becomes a
+// branch that computes only the chosen operand, in the widened loop and in
+// the scalar one after it; so does a select that picks that select's value.
+// A select on a lane-dependent condition stays a select.
+// CHECK-LABEL: func.func @uniform_select
+// CHECK:         scf.for
+// CHECK:           %[[KEY:.*]] = scf.if %{{.*}} -> (vector<8xindex>) {
+// CHECK:             arith.divui %{{.*}} : vector<8xindex>
+// CHECK:           } else {
+// CHECK-NEXT:        scf.yield
+// CHECK-NEXT:      }
+// CHECK-NEXT:      scf.if %{{.*}} -> (vector<8xindex>) {
+// CHECK-NEXT:        scf.yield %[[KEY]]
+// CHECK-NEXT:      } else {
+// CHECK-NOT:         arith.divui
+// CHECK:             arith.select %{{.*}}, %{{.*}}, %{{.*}} : vector<8xi1>, vector<8xindex>
+// CHECK:         scf.for
+// CHECK:           scf.if %{{.*}} -> (index) {
+// CHECK:             arith.divui %{{.*}} : index
+// CHECK:           } else {
+// CHECK-NEXT:        scf.yield
+func.func @uniform_select(%out: memref<?xi64>, %g: index, %group: index,
+                          %per_group: i1, %plain: i1) {
+  %c0 = arith.constant 0 : index
+  %c1 = arith.constant 1 : index
+  %c7 = arith.constant 7 : index
+  // expected-remark @below {{lanes run 8 at a time}}
+  scf.for %lane = %c0 to %g step %c1 {
+    %size = arith.maxui %group, %c1 : index
+    %group_id = arith.divui %lane, %size : index
+    %key = arith.select %per_group, %group_id, %lane : index
+    %odd = arith.cmpi ugt, %lane, %c7 : index
+    %cheap = arith.select %odd, %lane, %c7 : index
+    %both = arith.select %plain, %key, %cheap : index
+    %value = arith.index_cast %both : index to i64
+    memref.store %value, %out[%lane] : memref<?xi64>
+  } {simplan.lanes}
+  return
+}
+
+// -----
+
 // Reductions combine in the scalar lowering's order: from +0.0 for an fadd
 // without accumulator, element by element (the builder puts the constant
 // on the right of the first add, which rounds the same). Uniform loops keep their bounds

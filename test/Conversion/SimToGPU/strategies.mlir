@@ -154,7 +154,7 @@ sim.simulation @rod range(1024) dt(1.0e-3 : f32) max_steps(4) {
 // HIP-DAG:     %[[SIZE:.*]] = memref.load %[[CLOCK]][%c1]
 // HIP:         scf.if
 // HIP:           gpu.barrier
-// HIP:           %[[SINGLE:.*]] = arith.cmpi eq, %[[SIZE]], %c1_i64
+// HIP:           %[[END:.*]] = arith.addi %[[BEGIN]], %[[SIZE]]
 // HIP:           scf.for
 //                  Own state at T into the register, once.
 // HIP:             scf.if
@@ -162,8 +162,12 @@ sim.simulation @rod range(1024) dt(1.0e-3 : f32) max_steps(4) {
 // HIP-NEXT:          %[[INITIAL:.*]] = memref.load %[[T]]
 // HIP-NEXT:          memref.store %[[INITIAL]], %[[OWN]]
 // HIP:             scf.while
-// HIP:               scf.if %[[SINGLE]] -> (i64) {
-//                      m = 1: no num_steps, no reduction.
+// HIP:             ^bb0(%[[TIME:.*]]: i64):
+// HIP:               %[[LEFT:.*]] = arith.subi %[[END]], %[[TIME]]
+// HIP:               %[[LAST:.*]] = arith.cmpi eq, %[[LEFT]], %c1_i64
+// HIP:               scf.if %[[LAST]] -> (i64) {
+//                      One base step left (m = 1, or the last sub-step):
+//                      no num_steps, no reduction.
 // HIP-NEXT:            scf.yield %c1_i64 : i64
 // HIP-NEXT:          } else {
 // HIP:                 %[[WARP:.*]] = gpu.subgroup_reduce minsi %{{.*}} uniform : (i32) -> i32
