@@ -128,13 +128,24 @@ void KernelTarget::forEachLaneOf(KernelBuilder &b, Kernel &kernel,
 
 void KernelTarget::maxPerBlock(KernelBuilder &b, Kernel &kernel, Value base,
                                LaneVar value, int64_t blockSize, Value memory,
-                               Value offset) {
+                               Value offset, int64_t spreadLow,
+                               int64_t spreadHigh) {
   forEachLane(b, kernel, base, [&](const Lane &lane) {
     b.ifThen(lane.active, [&] {
-      Value block =
-          arith::DivUIOp::create(b, b.loc, lane.item, b.index(blockSize));
-      b.atomic(arith::AtomicRMWKind::maxs, laneLoad(b, value, lane), memory,
-               b.add(offset, block));
+      Value element = laneLoad(b, value, lane);
+      for (int64_t shift = spreadLow; shift <= spreadHigh; ++shift) {
+        // Item `lane.item - shift`, when it lies in the range (below 0 it
+        // wraps around to an index above the range).
+        Value item = b.sub(lane.item, b.index(shift));
+        Value inRange =
+            b.cmp(arith::CmpIPredicate::ult, item, kernel.values.range);
+        b.ifThen(inRange, [&] {
+          Value block =
+              arith::DivUIOp::create(b, b.loc, item, b.index(blockSize));
+          b.atomic(arith::AtomicRMWKind::maxs, element, memory,
+                   b.add(offset, block));
+        });
+      }
     });
   });
 }

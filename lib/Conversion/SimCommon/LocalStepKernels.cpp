@@ -504,21 +504,53 @@ LogicalResult SimulationLowering::emitLocalSteps(ComponentOp component,
         });
         target.maxPerBlock(b, kernel, base, code, kLevelBlock, levels, half);
         // A flux writer's estimate at interface j bounds every block that
-        // reads the interface (a phase of its own: its atomics keep a CPU
-        // thread's lanes one at a time).
+        // reads the interface: the blocks of j - o for the offsets o of
+        // flux_window where all of those lie in the range (combined per
+        // block like the codes above, so that the lanes' phase has no
+        // atomic), else the readers the fluxes' boundary rule gives, one
+        // atomic each (the few interfaces at the ends of the range).
         if (!fluxWriter || !fluxWriter.hasNumSteps())
           return;
+        ArrayRef<int64_t> offsets = fluxWriter.getFluxWindowAttr().asArrayRef();
+        Value range = kernel.values.range;
+        auto interior = [&](Value item) {
+          Value above = b.cmp(arith::CmpIPredicate::sge, item,
+                              b.index(std::max<int64_t>(offsets[1], 0)));
+          Value below = b.cmp(arith::CmpIPredicate::slt, item,
+                              b.add(range, b.index(offsets[0])));
+          return arith::AndIOp::create(b, b.loc, above, below).getResult();
+        };
         target.forEachLane(b, kernel, base, [&](const Lane &lane) {
           b.ifThen(lane.active, [&] {
             Value fluxCode = codeAt(fluxWriter, lane);
-            foldReaders(kernel, lane.item, b.i64(0),
-                        [&](Value reader, Value exists, Value unused) {
-                          b.ifThen(exists, [&] {
-                            b.atomic(arith::AtomicRMWKind::maxs, fluxCode,
-                                     levels, b.add(half, blockOf(reader)));
+            target.laneStore(
+                b,
+                b.select(interior(lane.item), fluxCode,
+                         b.i64(std::numeric_limits<int64_t>::min())),
+                code, lane);
+          });
+        });
+        target.maxPerBlock(b, kernel, base, code, kLevelBlock, levels, half,
+                           offsets[0], offsets[1]);
+        Value groupEnd = b.add(base, target.groupSize(b, kernel));
+        Value atRangeEnds = arith::OrIOp::create(
+            b, b.loc, b.xorOne(interior(base)),
+            b.xorOne(interior(b.sub(b.min(groupEnd, range), b.index(1)))));
+        b.ifThen(atRangeEnds, [&] {
+          target.forEachLane(b, kernel, base, [&](const Lane &lane) {
+            Value edge = arith::AndIOp::create(b, b.loc, lane.active,
+                                               b.xorOne(interior(lane.item)));
+            b.ifThen(edge, [&] {
+              Value fluxCode = codeAt(fluxWriter, lane);
+              foldReaders(kernel, lane.item, b.i64(0),
+                          [&](Value reader, Value exists, Value unused) {
+                            b.ifThen(exists, [&] {
+                              b.atomic(arith::AtomicRMWKind::maxs, fluxCode,
+                                       levels, b.add(half, blockOf(reader)));
+                            });
+                            return unused;
                           });
-                          return unused;
-                        });
+            });
           });
         });
       });

@@ -121,28 +121,37 @@ public:
     body(Lane{item, active, lane});
   }
 
-  /// One atomic per block and group instead of one per lane: the lanes of
-  /// each block the group's items touch are folded first (so that the
-  /// lanes' phase has no atomic and runs in SIMD chunks).
+  /// One atomic per block and group instead of one per lane: the lanes that
+  /// reach each block the group's items reach are folded first (so that
+  /// the lanes' phase has no atomic and runs in SIMD chunks).
   void maxPerBlock(KernelBuilder &b, Kernel &kernel, Value base, LaneVar value,
-                   int64_t blockSize, Value memory, Value offset) override {
-    Value end = b.min(b.add(base, groupSize(kernel)), kernel.values.range);
-    b.ifThen(b.cmp(arith::CmpIPredicate::ult, base, end), [&] {
+                   int64_t blockSize, Value memory, Value offset,
+                   int64_t spreadLow, int64_t spreadHigh) override {
+    Value range = kernel.values.range;
+    Value end = b.min(b.add(base, groupSize(kernel)), range);
+    // The items the lanes [base, end) reach: [base - spreadHigh,
+    // end - spreadLow) within the range (signed: below 0 near the start).
+    Value low = b.max(b.sub(base, b.index(spreadHigh)), b.index(0));
+    Value high = b.min(b.sub(end, b.index(spreadLow)), range);
+    b.ifThen(b.cmp(arith::CmpIPredicate::slt, low, high), [&] {
       Value size = b.index(blockSize);
-      Value firstBlock = arith::DivUIOp::create(b, b.loc, base, size);
+      Value firstBlock = arith::DivUIOp::create(b, b.loc, low, size);
       Value endBlock =
-          b.add(arith::DivUIOp::create(b, b.loc, b.sub(end, b.index(1)), size),
+          b.add(arith::DivUIOp::create(b, b.loc, b.sub(high, b.index(1)), size),
                 b.index(1));
       auto blocks =
           scf::ForOp::create(b, b.loc, firstBlock, endBlock, b.index(1));
       OpBuilder::InsertionGuard guard(b);
       b.setInsertionPoint(blocks.getBody()->getTerminator());
       Value block = blocks.getInductionVar();
-      Value low = b.sub(b.max(b.mul(block, size), base), base);
-      Value high =
-          b.sub(b.min(b.mul(b.add(block, b.index(1)), size), end), base);
+      // The block's items the lanes reach, then the lanes that reach them.
+      Value first = b.max(b.mul(block, size), low);
+      Value last = b.min(b.mul(b.add(block, b.index(1)), size), high);
+      Value fromLane =
+          b.sub(b.max(b.add(first, b.index(spreadLow)), base), base);
+      Value toLane = b.sub(b.min(b.add(last, b.index(spreadHigh)), end), base);
       auto lanes = scf::ForOp::create(
-          b, b.loc, low, high, b.index(1),
+          b, b.loc, fromLane, toLane, b.index(1),
           ValueRange{b.i64(std::numeric_limits<int64_t>::min())});
       {
         OpBuilder::InsertionGuard inner(b);

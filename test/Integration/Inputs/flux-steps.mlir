@@ -9,7 +9,10 @@
 // num_steps by @pattern, for both components of the pair: 0, blocks of 24
 // items (@Cells) and of 20 interfaces (@Flux, shifted) ask 8, 4, 2, 1 in
 // turn; 1, every item 1 (all fine: the pair is simple's); 2, every item 8
-// (all coarse: lts is hip); 3, one stiff interface (77) in a soft range.
+// (all coarse: lts is hip); 3, one stiff interface (77) in a soft range;
+// 4, stiff interfaces only at the ends of ranges 101 and 200 (0-1, 99-100,
+// 198-199) in a soft range, where an interface's readers follow the
+// fluxes' boundary rule (the cells stay soft).
 sim.simulation @flux_steps range(200) dt(5.0e-2 : f32) max_steps(8) {
   sim.param @pattern = 0 : i32
 
@@ -69,7 +72,21 @@ sim.simulation @flux_steps range(200) dt(5.0e-2 : f32) max_steps(8) {
     %p1 = arith.cmpi eq, %pattern, %one : i32
     %p2 = arith.cmpi eq, %pattern, %c2 : i32
     %p3 = arith.cmpi eq, %pattern, %c3 : i32
-    %x1 = arith.select %p3, %s3, %s0 : i32
+    %c99 = arith.constant 99 : i32
+    %c101 = arith.constant 101 : i32
+    %c198 = arith.constant 198 : i32
+    %first = arith.cmpi slt, %j32, %c2 : i32
+    %from99 = arith.cmpi sge, %j32, %c99 : i32
+    %below101 = arith.cmpi slt, %j32, %c101 : i32
+    %middle = arith.andi %from99, %below101 : i1
+    %last = arith.cmpi sge, %j32, %c198 : i32
+    %ends0 = arith.ori %first, %middle : i1
+    %ends = arith.ori %ends0, %last : i1
+    %s4 = arith.select %ends, %one, %eight : i32
+    %c4p = arith.constant 4 : i32
+    %p4 = arith.cmpi eq, %pattern, %c4p : i32
+    %x0 = arith.select %p4, %s4, %s0 : i32
+    %x1 = arith.select %p3, %s3, %x0 : i32
     %x2 = arith.select %p2, %eight, %x1 : i32
     %n = arith.select %p1, %one, %x2 : i32
     sim.yield %n : i32
@@ -114,7 +131,10 @@ sim.simulation @flux_steps range(200) dt(5.0e-2 : f32) max_steps(8) {
     %p1 = arith.cmpi eq, %pattern, %one : i32
     %p2 = arith.cmpi eq, %pattern, %c2 : i32
     %p3 = arith.cmpi eq, %pattern, %c3 : i32
-    %x1 = arith.select %p3, %eight, %s0 : i32
+    %c4p = arith.constant 4 : i32
+    %p4 = arith.cmpi eq, %pattern, %c4p : i32
+    %p34 = arith.ori %p3, %p4 : i1
+    %x1 = arith.select %p34, %eight, %s0 : i32
     %x2 = arith.select %p2, %eight, %x1 : i32
     %n = arith.select %p1, %one, %x2 : i32
     sim.yield %n : i32

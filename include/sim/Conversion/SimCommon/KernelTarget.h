@@ -169,13 +169,16 @@ public:
                              function_ref<void(const Lane &)> body);
   /// Combines the i64 lane variable `value` of every active lane of the
   /// group that starts at `base` with a signed maximum into element
-  /// `offset + item / blockSize` of `memory`, atomically (groups may run at
-  /// once). At group level, after the phase that set `value`. The default
-  /// is an atomic per lane; a target whose lanes run in one thread
-  /// combines the lanes of each block first.
+  /// `offset + k / blockSize` of `memory` for every item k from
+  /// `item - spreadHigh` to `item - spreadLow` (just `item` by default)
+  /// that lies in the range, atomically (groups may run at once). At group
+  /// level, after the phase that set `value`. The default is an atomic per
+  /// lane and item; a target whose lanes run in one thread combines the
+  /// lanes that reach each block first.
   virtual void maxPerBlock(KernelBuilder &b, Kernel &kernel, Value base,
                            LaneVar value, int64_t blockSize, Value memory,
-                           Value offset);
+                           Value offset, int64_t spreadLow = 0,
+                           int64_t spreadHigh = 0);
 
   /// A lane variable of `type`, created at the kernel entry and, when
   /// `initial` is given (a value available there), set to it in every lane.
