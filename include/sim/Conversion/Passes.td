@@ -152,6 +152,14 @@ def SimVectorizeLanes : Pass<"sim-vectorize-lanes"> {
     `scf.while`, a call, an atomic, a store of different lanes to one
     element, a memref it cannot address) is left as it is.
 
+    x86 has no SIMD integer division: a widened one is a `div` per lane.
+    So a select on a lane-independent condition whose operand costs an
+    integer division (a `num_steps` keyed by `i / @group` or `i` as a
+    parameter says) becomes a branch that computes only the chosen operand,
+    and a division by a constant that cannot trap (not 0, not -1 when
+    signed) keeps its divisor in lanes a branch does not take (others
+    divide by one there), so that LLVM multiplies by its reciprocal.
+
     ```
     sim-opt kernels.mlir --sim-vectorize-lanes=width=16
     ```
