@@ -142,8 +142,13 @@ def SimVectorizeLanes : Pass<"sim-vectorize-lanes"> {
     one per element, so lane `l` of every vector is item `l` of the chunk);
     values equal for all lanes stay scalars. Branches on a lane-dependent
     condition run under a mask and are skipped when no lane takes them;
-    loads of consecutive items become one wide load (de-interleaved with
-    shuffles), other loads gathers, stores masked scatters. The lanes left
+    loads of consecutive items become one wide load, other loads gathers,
+    stores masked scatters. A loaded `vector<N x T>` (N a power of two)
+    stays interleaved as memory holds it while elementwise ops use it (a
+    uniform operand is spread to match), and is de-interleaved by shuffles
+    only where something needs its elements apart: an interpolation of two
+    halves costs one de-interleaving, not two, and a value loaded, computed
+    and stored needs none. The lanes left
     over when the group size is not a multiple of `width` run in the
     original loop. Each lane computes exactly the operations of the scalar
     loop in the same order (fused multiply-adds, libm calls per element,

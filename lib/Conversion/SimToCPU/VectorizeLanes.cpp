@@ -53,6 +53,16 @@ constexpr int64_t kMaxElements = 64;
 struct Wide {
   SmallVector<Value, 4> parts;
   bool varying = false;
+  /// A varying vector<N x T> may also be held as the elements of its lanes
+  /// side by side, as memory holds them: one vector<width * stride x T>
+  /// whose element `lane * stride + k` is element k of lane `lane` (a
+  /// wide load before its de-interleaving shuffles). Elementwise ops on
+  /// such values stay in that form, so that a value computed from loads
+  /// (an interpolation of two halves) is de-interleaved once, not each
+  /// load. `parts` are made from it on demand, right after `definedBy`.
+  Value interleaved;
+  int64_t stride = 0;
+  Operation *definedBy = nullptr;
 };
 
 /// Whether `type` can be held per lane: an integer, index or float scalar, or
@@ -161,6 +171,12 @@ private:
   Wide lookup(Value value) const;
   /// Element `k` of `value` as a vector of lanes (broadcast if uniform).
   Value lanePart(OpBuilder &b, Value value, int64_t k);
+  /// `value` in the interleaved form of a result with `stride` (an
+  /// interleaved value as it is, a uniform one spread), or null.
+  Value interleavedOf(OpBuilder &b, Value value, int64_t stride);
+  /// Widens an elementwise op in the interleaved form when an operand has
+  /// it and every other one can take it; returns whether it did.
+  bool widenInterleaved(OpBuilder &b, Operation *op);
   /// All parts of `value` as vectors of lanes.
   SmallVector<Value> laneParts(OpBuilder &b, Value value);
   VectorType laneType(Type scalar) const {
@@ -408,6 +424,20 @@ Value LaneVectorizer::constantIndex(OpBuilder &b, int64_t value) {
 
 Value LaneVectorizer::lanePart(OpBuilder &b, Value value, int64_t k) {
   Wide wide = lookup(value);
+  if (wide.varying && wide.parts.empty() && wide.interleaved) {
+    // The de-interleaving shuffles, once, where the value is defined.
+    OpBuilder at(b.getContext());
+    at.setInsertionPointAfter(wide.definedBy);
+    Wide &held = values[value];
+    for (int64_t e = 0, n = elementCount(value.getType()); e < n; ++e) {
+      SmallVector<int64_t> positions;
+      for (int64_t lane = 0; lane < width; ++lane)
+        positions.push_back(lane * wide.stride + e);
+      held.parts.push_back(vector::ShuffleOp::create(
+          at, loc, wide.interleaved, wide.interleaved, positions));
+    }
+    wide = held;
+  }
   if (wide.varying)
     return wide.parts[isa<VectorType>(value.getType()) ? k : 0];
   Value scalar = wide.parts[0];
@@ -415,6 +445,73 @@ Value LaneVectorizer::lanePart(OpBuilder &b, Value value, int64_t k) {
     scalar = vector::ExtractOp::create(b, loc, scalar, k);
   return vector::BroadcastOp::create(b, loc, laneType(scalar.getType()),
                                      scalar);
+}
+
+Value LaneVectorizer::interleavedOf(OpBuilder &b, Value value, int64_t stride) {
+  auto type = dyn_cast<VectorType>(value.getType());
+  if (!type)
+    return Value();
+  Wide wide = lookup(value);
+  if (wide.varying)
+    return wide.interleaved && wide.stride == stride ? wide.interleaved
+                                                     : Value();
+  // A uniform vector<N x T>: element k in every lane's position k (the
+  // padding of a vector<3 x T> takes element 0; nothing reads it).
+  Value uniform = wide.parts[0];
+  int64_t count = type.getNumElements();
+  SmallVector<int64_t> positions;
+  for (int64_t lane = 0; lane < width; ++lane)
+    for (int64_t e = 0; e < stride; ++e)
+      positions.push_back(e < count ? e : 0);
+  return vector::ShuffleOp::create(b, loc, uniform, uniform, positions);
+}
+
+bool LaneVectorizer::widenInterleaved(OpBuilder &b, Operation *op) {
+  Value result = op->getResult(0);
+  auto type = dyn_cast<VectorType>(result.getType());
+  // Integer divisions keep their per-part masks (a lane a branch does not
+  // take divides by one); comparisons make their masks per part (a shuffle
+  // of i1 vectors costs more on x86 than the compares it would save).
+  if (!type || type.getNumElements() < 2 || isIntegerDivision(op) ||
+      type.getElementType().isInteger(1))
+    return false;
+  int64_t stride = 0;
+  for (Value operand : op->getOperands()) {
+    Wide wide = lookup(operand);
+    if (wide.varying && wide.interleaved) {
+      stride = wide.stride;
+      break;
+    }
+  }
+  if (!stride)
+    return false;
+  SmallVector<Value> operands;
+  for (auto [index, operand] : llvm::enumerate(op->getOperands())) {
+    // A select on one uniform condition keeps it scalar.
+    if (index == 0 && isa<arith::SelectOp>(op) && !isVarying(operand) &&
+        !isa<VectorType>(operand.getType())) {
+      operands.push_back(lookup(operand).parts[0]);
+      continue;
+    }
+    if (isVarying(operand) && !lookup(operand).interleaved)
+      return false;
+    Value held = interleavedOf(b, operand, stride);
+    if (!held)
+      return false;
+    operands.push_back(held);
+  }
+  OperationState state(loc, op->getName());
+  state.addOperands(operands);
+  state.addTypes(VectorType::get({width * stride}, type.getElementType()));
+  state.addAttributes(op->getAttrs());
+  Operation *widened = b.create(state);
+  Wide wide;
+  wide.varying = true;
+  wide.interleaved = widened->getResult(0);
+  wide.stride = stride;
+  wide.definedBy = widened;
+  values[result] = wide;
+  return true;
 }
 
 SmallVector<Value> LaneVectorizer::laneParts(OpBuilder &b, Value value) {
@@ -612,6 +709,8 @@ void LaneVectorizer::widenOp(OpBuilder &b, Operation *op, Value mask) {
 }
 
 void LaneVectorizer::widenElementwise(OpBuilder &b, Operation *op, Value mask) {
+  if (widenInterleaved(b, op))
+    return;
   Value result = op->getResult(0);
   int64_t count = elementCount(result.getType());
   Type resultScalar = elementType(result.getType());
@@ -781,6 +880,25 @@ void LaneVectorizer::widenFor(OpBuilder &b, scf::ForOp op, Value mask) {
   assign(op.getResults(), newFor.getResults());
 }
 
+/// Interleaves `parts` (count a power of two) into one vector whose element
+/// `lane * count + k` is lane `lane` of part k.
+static Value interleaveLanes(OpBuilder &b, Location loc,
+                             ArrayRef<Value> parts) {
+  if (parts.size() == 1)
+    return parts[0];
+  SmallVector<Value> even, odd;
+  for (auto [k, part] : llvm::enumerate(parts))
+    (k % 2 ? odd : even).push_back(part);
+  Value lhs = interleaveLanes(b, loc, even), rhs = interleaveLanes(b, loc, odd);
+  int64_t length = cast<VectorType>(lhs.getType()).getNumElements();
+  SmallVector<int64_t> positions;
+  for (int64_t i = 0; i < length; ++i) {
+    positions.push_back(i);
+    positions.push_back(length + i);
+  }
+  return vector::ShuffleOp::create(b, loc, lhs, rhs, positions);
+}
+
 void LaneVectorizer::widenLoad(OpBuilder &b, memref::LoadOp op, Value mask) {
   Type element = op.getMemRefType().getElementType();
   int64_t count = elementCount(element);
@@ -839,8 +957,42 @@ void LaneVectorizer::widenLoad(OpBuilder &b, memref::LoadOp op, Value mask) {
     return parts;
   };
 
+  // Elements of several scalars without padding are held interleaved, as
+  // loaded (the gathers' parts interleaved in the slow path), and
+  // de-interleaved only where something needs them apart.
+  bool interleave = count > 1 && stride == count && llvm::isPowerOf2_64(count);
+  bool contiguous = !mask && consecutive.contains(op.getIndices()[0]);
+  Wide wide;
+  wide.varying = true;
+  if (interleave) {
+    auto raw = [&](OpBuilder &at) {
+      Value address = firstAddress(at, pointer, scalar, index, stride);
+      return LLVM::LoadOp::create(at, loc,
+                                  VectorType::get({width * stride}, scalar),
+                                  address, alignment);
+    };
+    if (contiguous) {
+      auto load = raw(b);
+      wide.interleaved = load;
+      wide.definedBy = load;
+    } else {
+      auto choice = scf::IfOp::create(
+          b, loc, TypeRange{VectorType::get({width * stride}, scalar)},
+          contiguousCheck(b, index, mask), true);
+      OpBuilder fast = emptyBody(choice.thenBlock());
+      scf::YieldOp::create(fast, loc, ValueRange{raw(fast).getResult()});
+      OpBuilder slow = emptyBody(choice.elseBlock());
+      scf::YieldOp::create(
+          slow, loc, ValueRange{interleaveLanes(slow, loc, gather(slow))});
+      wide.interleaved = choice.getResult(0);
+      wide.definedBy = choice;
+    }
+    wide.stride = stride;
+    values[op.getResult()] = wide;
+    return;
+  }
   SmallVector<Value> parts;
-  if (!mask && consecutive.contains(op.getIndices()[0])) {
+  if (contiguous) {
     parts = wideLoad(b);
   } else {
     SmallVector<Type> types(count, lanes);
@@ -852,29 +1004,8 @@ void LaneVectorizer::widenLoad(OpBuilder &b, memref::LoadOp op, Value mask) {
     scf::YieldOp::create(slow, loc, gather(slow));
     parts = SmallVector<Value>(choice.getResults());
   }
-  Wide wide;
-  wide.varying = true;
   wide.parts.assign(parts.begin(), parts.end());
   values[op.getResult()] = wide;
-}
-
-/// Interleaves `parts` (count a power of two) into one vector whose element
-/// `lane * count + k` is lane `lane` of part k.
-static Value interleaveLanes(OpBuilder &b, Location loc,
-                             ArrayRef<Value> parts) {
-  if (parts.size() == 1)
-    return parts[0];
-  SmallVector<Value> even, odd;
-  for (auto [k, part] : llvm::enumerate(parts))
-    (k % 2 ? odd : even).push_back(part);
-  Value lhs = interleaveLanes(b, loc, even), rhs = interleaveLanes(b, loc, odd);
-  int64_t length = cast<VectorType>(lhs.getType()).getNumElements();
-  SmallVector<int64_t> positions;
-  for (int64_t i = 0; i < length; ++i) {
-    positions.push_back(i);
-    positions.push_back(length + i);
-  }
-  return vector::ShuffleOp::create(b, loc, lhs, rhs, positions);
 }
 
 void LaneVectorizer::widenStore(OpBuilder &b, memref::StoreOp op, Value mask) {
@@ -886,18 +1017,26 @@ void LaneVectorizer::widenStore(OpBuilder &b, memref::StoreOp op, Value mask) {
   Value pointer = basePointer(b, op.getMemRef());
   Value indexLanes = lookup(op.getIndices()[0]).parts[0];
   Value index = arith::IndexCastOp::create(b, loc, i64Lanes, indexLanes);
-  SmallVector<Value> parts = laneParts(b, op.getValueToStore());
+  Value stored = op.getValueToStore();
   int64_t alignment = scalar.getIntOrFloatBitWidth() / 8;
   // A wide store writes whole elements; of a vector<3 x T> that includes its
   // padding, which the scatter leaves alone.
   bool wideOk = stride == count;
+  // A value held interleaved is stored as it is (loaded, computed and
+  // stored without a shuffle).
+  Wide held = lookup(stored);
+  Value interleaved = wideOk && held.varying && held.stride == stride
+                          ? held.interleaved
+                          : Value();
 
   auto wideStore = [&](OpBuilder &at) {
     Value address = firstAddress(at, pointer, scalar, index, stride);
-    LLVM::StoreOp::create(at, loc, interleaveLanes(at, loc, parts), address,
-                          alignment);
+    Value all = interleaved ? interleaved
+                            : interleaveLanes(at, loc, laneParts(at, stored));
+    LLVM::StoreOp::create(at, loc, all, address, alignment);
   };
   auto scatter = [&](OpBuilder &at) {
+    SmallVector<Value> parts = laneParts(at, stored);
     Value lanesMask =
         mask ? mask : splat(at, at.getI1Type(), at.getBoolAttr(true));
     SmallVector<Value> addresses =

@@ -1,10 +1,10 @@
 // RUN: sim-opt %s --sim-vectorize-lanes=width=8 --split-input-file | FileCheck %s
 // RUN: sim-opt %s --sim-vectorize-lanes="width=8 report=true" --split-input-file --verify-diagnostics -o /dev/null
 
-// Consecutive items of vec4 buffers: one wide load of 8 items, split into
-// one vector per element by shuffles; elementwise math per element; one
-// interleaved wide store. The lanes after the last whole chunk stay in the
-// original loop.
+// Consecutive items of vec4 buffers: one wide load of 8 items; elementwise
+// math on the items' elements as loaded (interleaved: no shuffle); one wide
+// store of them. The lanes after the last whole chunk stay in the original
+// loop.
 // CHECK-LABEL: func.func @consecutive
 // CHECK-SAME:      (%[[IN:.*]]: memref<?xvector<4xf32>>, %[[OUT:.*]]: memref<?xvector<4xf32>>, %[[BASE:.*]]: index, %[[G:.*]]: index)
 // CHECK-DAG:     %[[C8:.*]] = arith.constant 8 : index
@@ -18,12 +18,9 @@
 // CHECK:           %[[FIRSTS:.*]] = vector.broadcast %[[CHUNK]] : index to vector<8xindex>
 // CHECK:           %[[LANES:.*]] = arith.addi %[[FIRSTS]], %[[IOTA]] : vector<8xindex>
 // CHECK:           %[[ALL:.*]] = llvm.load %{{.*}} {alignment = 4 : i64} : !llvm.ptr -> vector<32xf32>
-// CHECK:           %[[X:.*]] = vector.shuffle %[[ALL]], %[[ALL]] [0, 4, 8, 12, 16, 20, 24, 28]
-// CHECK:           %[[W:.*]] = vector.shuffle %[[ALL]], %[[ALL]] [3, 7, 11, 15, 19, 23, 27, 31]
-// CHECK:           math.tanh %[[X]] : vector<8xf32>
-// CHECK-COUNT-3:   math.tanh %{{.*}} : vector<8xf32>
-// CHECK:           vector.shuffle {{.*}} : vector<16xf32>, vector<16xf32>
-// CHECK:           llvm.store %{{.*}}, %{{.*}} {alignment = 4 : i64} : vector<32xf32>, !llvm.ptr
+// CHECK-NEXT:      %[[T:.*]] = math.tanh %[[ALL]] : vector<32xf32>
+// CHECK-NOT:       vector.shuffle
+// CHECK:           llvm.store %[[T]], %{{.*}} {alignment = 4 : i64} : vector<32xf32>, !llvm.ptr
 // CHECK:         }
 // CHECK:         scf.for %[[LANE:.*]] = %[[END]] to %[[G]] step %{{.*}} {
 // CHECK:           memref.load %[[IN]]
@@ -80,6 +77,64 @@ func.func @masked(%in: memref<?xf32>, %out: memref<?xf32>, %base: index, %range:
     }
     scf.if %active {
       memref.store %v, %out[%item] : memref<?xf32>
+    }
+  } {simplan.lanes}
+  return
+}
+
+// -----
+
+// An interpolated read of a vec4 buffer (two halves, weights uniform):
+// both loads stay interleaved as loaded (a gather's parts interleaved in
+// the slow path), the interpolation runs on them, and the result is
+// de-interleaved once, where the accumulator (held per element) needs it.
+// CHECK-LABEL: func.func @interpolated
+// CHECK:         scf.for
+// CHECK:           %[[A:.*]] = scf.if %{{.*}} -> (vector<32xf32>) {
+// CHECK:             llvm.load {{.*}} -> vector<32xf32>
+// CHECK:           } else {
+// CHECK-COUNT-4:     llvm.intr.masked.gather
+// CHECK:             vector.shuffle {{.*}} : vector<16xf32>, vector<16xf32>
+// CHECK:           }
+// CHECK:           %[[B:.*]] = scf.if %{{.*}} -> (vector<32xf32>) {
+// CHECK:           %[[WA:.*]] = vector.shuffle %{{.*}}, %{{.*}} [0, 1, 2, 3, 0, 1, 2, 3,
+// CHECK:           %[[SA:.*]] = arith.mulf %[[WA]], %[[A]] : vector<32xf32>
+// CHECK:           %[[SB:.*]] = arith.mulf %{{.*}}, %[[B]] : vector<32xf32>
+// CHECK:           %[[SUM:.*]] = arith.addf %[[SA]], %[[SB]] : vector<32xf32>
+// CHECK-NEXT:      vector.shuffle %[[SUM]], %[[SUM]] [0, 4, 8, 12, 16, 20, 24, 28]
+// CHECK-NEXT:      vector.shuffle %[[SUM]], %[[SUM]] [1, 5, 9, 13, 17, 21, 25, 29]
+// CHECK-NEXT:      vector.shuffle %[[SUM]], %[[SUM]] [2, 6, 10, 14, 18, 22, 26, 30]
+// CHECK-NEXT:      vector.shuffle %[[SUM]], %[[SUM]] [3, 7, 11, 15, 19, 23, 27, 31]
+// CHECK-NOT:       vector.shuffle %[[A]]
+// CHECK:           arith.addf %{{.*}}, %{{.*}} : vector<8xf32>
+func.func @interpolated(%halves: memref<?xvector<4xf32>>, %out: memref<?xvector<4xf32>>,
+                        %base: index, %extent: index, %range: index,
+                        %fraction: f32, %g: index) {
+  %c0 = arith.constant 0 : index
+  %c1 = arith.constant 1 : index
+  %one = arith.constant 1.0 : f32
+  // expected-remark @below {{lanes run 8 at a time}}
+  scf.for %lane = %c0 to %g step %c1 {
+    %item = arith.addi %base, %lane : index
+    %active = arith.cmpi ult, %item, %range : index
+    scf.if %active {
+      %late = arith.addi %item, %extent : index
+      %a = memref.load %halves[%item] : memref<?xvector<4xf32>>
+      %b = memref.load %halves[%late] : memref<?xvector<4xf32>>
+      %rest = arith.subf %one, %fraction : f32
+      %wa = vector.broadcast %rest : f32 to vector<4xf32>
+      %wb = vector.broadcast %fraction : f32 to vector<4xf32>
+      %sa = arith.mulf %wa, %a : vector<4xf32>
+      %sb = arith.mulf %wb, %b : vector<4xf32>
+      %v = arith.addf %sa, %sb : vector<4xf32>
+      %i64 = arith.index_cast %item : index to i64
+      %if = arith.sitofp %i64 : i64 to f32
+      %w = vector.broadcast %if : f32 to vector<4xf32>
+      %acc = arith.addf %w, %v : vector<4xf32>
+      %x = vector.extract %acc[0] : f32 from vector<4xf32>
+      %y = vector.broadcast %x : f32 to vector<4xf32>
+      %r = arith.mulf %y, %acc : vector<4xf32>
+      memref.store %r, %out[%item] : memref<?xvector<4xf32>>
     }
   } {simplan.lanes}
   return
