@@ -49,7 +49,8 @@ def main():
         sys.exit("error: matplotlib is missing (apt-get install "
                  "python3-matplotlib, then run with /usr/bin/python3)")
     if args.versus_baseline:
-        return plot_versus_baseline(args, plt)
+        from matplotlib.patches import Patch
+        return plot_versus_baseline(args, plt, Patch)
     if len(args.results) != 1:
         sys.exit("error: one bench.json at a time (or --versus-baseline)")
     data = json.load(open(args.results[0]))
@@ -96,7 +97,7 @@ def main():
     print("wrote", output)
 
 
-def plot_versus_baseline(args, plt):
+def plot_versus_baseline(args, plt, Patch):
     rows = []
     devices = set()
     for path in args.results:
@@ -146,8 +147,7 @@ def plot_versus_baseline(args, plt):
                 r = match[0]
                 ax.bar(x + (k - (len(algorithms) - 1) / 2) * width, r["ratio"],
                        width, color="C%d" % k,
-                       hatch="//" if r["noise"] else None,
-                       label=algorithm if x == 0 else None)
+                       hatch="//" if r["noise"] else None)
         ax.axhline(1.0, color="grey", linewidth=0.8)
         ax.axhline(0.8, color="red", linewidth=0.8, linestyle="--",
                    label="target (within 1.25x)")
@@ -159,7 +159,13 @@ def plot_versus_baseline(args, plt):
         ax.set_ylim(0, max(1.3, 1.2 * max(r["ratio"] for r in mine)))
         ax.set_ylabel("hand-written time / sim time")
         ax.set_title(scenario, fontsize=9)
-        ax.legend(fontsize=7, ncol=len(algorithms) + 1, loc="upper right")
+        # The legend from plain patches: a noisy first bar would lend its
+        # hatch to its algorithm's entry.
+        handles = [Patch(color="C%d" % k, label=algorithm)
+                   for k, algorithm in enumerate(algorithms)]
+        handles += ax.get_legend_handles_labels()[0]
+        ax.legend(handles=handles, fontsize=7, ncol=len(algorithms) + 1,
+                  loc="upper right")
     fig.suptitle("sim against the hand-written code on %s (above 1: sim is "
                  "faster; hatched: noise)" % " / ".join(sorted(devices)),
                  fontsize=10)
