@@ -155,6 +155,13 @@ public:
 
 private:
   bool isVarying(Value value) const { return varying.contains(value); }
+  /// Whether operand `index` of `op` is a select's condition that is one
+  /// scalar for every lane: the widened select keeps it as it is.
+  bool isUniformCondition(Operation *op, unsigned index) const {
+    Value operand = op->getOperand(index);
+    return index == 0 && isa<arith::SelectOp>(op) && !isVarying(operand) &&
+           !isa<VectorType>(operand.getType());
+  }
   LogicalResult check(Operation *op, std::string &why);
 
   // Emission.
@@ -487,9 +494,7 @@ bool LaneVectorizer::widenInterleaved(OpBuilder &b, Operation *op) {
     return false;
   SmallVector<Value> operands;
   for (auto [index, operand] : llvm::enumerate(op->getOperands())) {
-    // A select on one uniform condition keeps it scalar.
-    if (index == 0 && isa<arith::SelectOp>(op) && !isVarying(operand) &&
-        !isa<VectorType>(operand.getType())) {
+    if (isUniformCondition(op, index)) {
       operands.push_back(lookup(operand).parts[0]);
       continue;
     }
@@ -719,9 +724,7 @@ void LaneVectorizer::widenElementwise(OpBuilder &b, Operation *op, Value mask) {
   for (int64_t k = 0; k < count; ++k) {
     SmallVector<Value> operands;
     for (auto [index, operand] : llvm::enumerate(op->getOperands())) {
-      // A select on one uniform condition stays a scalar select.
-      if (index == 0 && isa<arith::SelectOp>(op) && !isVarying(operand) &&
-          !isa<VectorType>(operand.getType())) {
+      if (isUniformCondition(op, index)) {
         operands.push_back(lookup(operand).parts[0]);
         continue;
       }
