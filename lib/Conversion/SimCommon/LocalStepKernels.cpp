@@ -504,44 +504,46 @@ LogicalResult SimulationLowering::emitLocalSteps(ComponentOp component,
         });
         target.maxPerBlock(b, kernel, base, code, kLevelBlock, levels, half);
         // A flux writer's estimate at interface j bounds every block that
-        // reads the interface: the blocks of j - o for the offsets o of
-        // flux_window where all of those lie in the range (combined per
-        // block like the codes above, so that the lanes' phase has no
-        // atomic), else the readers the fluxes' boundary rule gives, one
-        // atomic each (the few interfaces at the ends of the range).
+        // reads the interface: the blocks of its readers j - o (o in
+        // flux_window) that lie in the range, combined per block like the
+        // codes above (so that the lanes' phase has no atomic); and, under
+        // clamp or wrap, the readers that rule gives for those outside it,
+        // one atomic each (the few interfaces at the ends of the range;
+        // their readers inside the range again, which changes nothing).
         if (!fluxWriter || !fluxWriter.hasNumSteps())
           return;
+        target.forEachLane(b, kernel, base, [&](const Lane &lane) {
+          b.ifThen(lane.active, [&] {
+            target.laneStore(b, codeAt(fluxWriter, lane), code, lane);
+          });
+        });
         ArrayRef<int64_t> offsets = fluxWriter.getFluxWindowAttr().asArrayRef();
+        target.maxPerBlock(b, kernel, base, code, kLevelBlock, levels, half,
+                           offsets[0], offsets[1]);
+        BufferOp flux = simulation.lookupBuffer(
+            cast<FlatSymbolRefAttr>(fluxWriter.getWrites()[0]));
+        if (flux.getBoundary() == Boundary::zero)
+          return;
+        // Interface j has a reader outside the range unless
+        // max(o1, 0) <= j < range + min(o0, 0).
         Value range = kernel.values.range;
-        auto interior = [&](Value item) {
+        auto inside = [&](Value item) {
           Value above = b.cmp(arith::CmpIPredicate::sge, item,
                               b.index(std::max<int64_t>(offsets[1], 0)));
           Value below = b.cmp(arith::CmpIPredicate::slt, item,
                               b.add(range, b.index(offsets[0])));
           return arith::AndIOp::create(b, b.loc, above, below).getResult();
         };
-        target.forEachLane(b, kernel, base, [&](const Lane &lane) {
-          b.ifThen(lane.active, [&] {
-            Value fluxCode = codeAt(fluxWriter, lane);
-            target.laneStore(
-                b,
-                b.select(interior(lane.item), fluxCode,
-                         b.i64(std::numeric_limits<int64_t>::min())),
-                code, lane);
-          });
-        });
-        target.maxPerBlock(b, kernel, base, code, kLevelBlock, levels, half,
-                           offsets[0], offsets[1]);
         Value groupEnd = b.add(base, target.groupSize(b, kernel));
         Value atRangeEnds = arith::OrIOp::create(
-            b, b.loc, b.xorOne(interior(base)),
-            b.xorOne(interior(b.sub(b.min(groupEnd, range), b.index(1)))));
+            b, b.loc, b.xorOne(inside(base)),
+            b.xorOne(inside(b.sub(b.min(groupEnd, range), b.index(1)))));
         b.ifThen(atRangeEnds, [&] {
           target.forEachLane(b, kernel, base, [&](const Lane &lane) {
             Value edge = arith::AndIOp::create(b, b.loc, lane.active,
-                                               b.xorOne(interior(lane.item)));
+                                               b.xorOne(inside(lane.item)));
             b.ifThen(edge, [&] {
-              Value fluxCode = codeAt(fluxWriter, lane);
+              Value fluxCode = target.laneLoad(b, code, lane);
               foldReaders(kernel, lane.item, b.i64(0),
                           [&](Value reader, Value exists, Value unused) {
                             b.ifThen(exists, [&] {

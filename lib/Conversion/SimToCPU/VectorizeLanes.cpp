@@ -462,14 +462,15 @@ Value LaneVectorizer::interleavedOf(OpBuilder &b, Value value, int64_t stride) {
   if (wide.varying)
     return wide.interleaved && wide.stride == stride ? wide.interleaved
                                                      : Value();
-  // A uniform vector<N x T>: element k in every lane's position k (the
-  // padding of a vector<3 x T> takes element 0; nothing reads it).
+  // A uniform vector<N x T>: element k in every lane's position k
+  // (interleaved values have no padding: stride == N).
   Value uniform = wide.parts[0];
-  int64_t count = type.getNumElements();
+  if (type.getNumElements() != stride)
+    return Value();
   SmallVector<int64_t> positions;
   for (int64_t lane = 0; lane < width; ++lane)
     for (int64_t e = 0; e < stride; ++e)
-      positions.push_back(e < count ? e : 0);
+      positions.push_back(e);
   return vector::ShuffleOp::create(b, loc, uniform, uniform, positions);
 }
 
@@ -914,12 +915,16 @@ void LaneVectorizer::widenLoad(OpBuilder &b, memref::LoadOp op, Value mask) {
   Value index = arith::IndexCastOp::create(b, loc, i64Lanes, indexLanes);
   int64_t alignment = scalar.getIntOrFloatBitWidth() / 8;
 
-  // One load of `width * stride` scalars from the first lane's element,
-  // split into one vector per element.
-  auto wideLoad = [&](OpBuilder &at) {
+  // One load of `width * stride` scalars from the first lane's element, as
+  // memory holds them.
+  auto raw = [&](OpBuilder &at) {
     Value address = firstAddress(at, pointer, scalar, index, stride);
-    Value all = LLVM::LoadOp::create(
+    return LLVM::LoadOp::create(
         at, loc, VectorType::get({width * stride}, scalar), address, alignment);
+  };
+  // The same, split into one vector per element.
+  auto wideLoad = [&](OpBuilder &at) {
+    Value all = raw(at);
     SmallVector<Value> parts;
     if (count == 1) {
       parts.push_back(all);
@@ -968,12 +973,6 @@ void LaneVectorizer::widenLoad(OpBuilder &b, memref::LoadOp op, Value mask) {
   Wide wide;
   wide.varying = true;
   if (interleave) {
-    auto raw = [&](OpBuilder &at) {
-      Value address = firstAddress(at, pointer, scalar, index, stride);
-      return LLVM::LoadOp::create(at, loc,
-                                  VectorType::get({width * stride}, scalar),
-                                  address, alignment);
-    };
     if (contiguous) {
       auto load = raw(b);
       wide.interleaved = load;

@@ -12,7 +12,8 @@
 // (all coarse: lts is hip); 3, one stiff interface (77) in a soft range;
 // 4, stiff interfaces only at the ends of ranges 101 and 200 (0-1, 99-100,
 // 198-199) in a soft range, where an interface's readers follow the
-// fluxes' boundary rule (the cells stay soft).
+// fluxes' boundary rule (the cells stay soft); 5, stiff interfaces 0-1
+// only (under wrap their readers -2..-1 are the last items).
 sim.simulation @flux_steps range(200) dt(5.0e-2 : f32) max_steps(8) {
   sim.param @pattern = 0 : i32
 
@@ -83,9 +84,13 @@ sim.simulation @flux_steps range(200) dt(5.0e-2 : f32) max_steps(8) {
     %ends0 = arith.ori %first, %middle : i1
     %ends = arith.ori %ends0, %last : i1
     %s4 = arith.select %ends, %one, %eight : i32
+    %s5 = arith.select %first, %one, %eight : i32
     %c4p = arith.constant 4 : i32
     %p4 = arith.cmpi eq, %pattern, %c4p : i32
-    %x0 = arith.select %p4, %s4, %s0 : i32
+    %c5p = arith.constant 5 : i32
+    %p5 = arith.cmpi eq, %pattern, %c5p : i32
+    %x00 = arith.select %p5, %s5, %s0 : i32
+    %x0 = arith.select %p4, %s4, %x00 : i32
     %x1 = arith.select %p3, %s3, %x0 : i32
     %x2 = arith.select %p2, %eight, %x1 : i32
     %n = arith.select %p1, %one, %x2 : i32
@@ -133,7 +138,10 @@ sim.simulation @flux_steps range(200) dt(5.0e-2 : f32) max_steps(8) {
     %p3 = arith.cmpi eq, %pattern, %c3 : i32
     %c4p = arith.constant 4 : i32
     %p4 = arith.cmpi eq, %pattern, %c4p : i32
-    %p34 = arith.ori %p3, %p4 : i1
+    %c5p = arith.constant 5 : i32
+    %p5 = arith.cmpi eq, %pattern, %c5p : i32
+    %p45 = arith.ori %p4, %p5 : i1
+    %p34 = arith.ori %p3, %p45 : i1
     %x1 = arith.select %p34, %eight, %s0 : i32
     %x2 = arith.select %p2, %eight, %x1 : i32
     %n = arith.select %p1, %one, %x2 : i32
