@@ -160,6 +160,15 @@ compileSharedObjects(OwningOpRef<ModuleOp> module, Location loc,
       return emitError(loc) << "could not translate the CPU kernels to LLVM IR";
     if (failed(finish(*llvmModule)))
       return failure();
+    // A kernel with per-lane arrays allocates them dynamically, and LLVM
+    // then keeps the caller's 16-byte stack alignment: the spill slots of
+    // the SIMD levels' 32- and 64-byte registers lie across cache lines or
+    // not depending on how deep the caller's stack is. A realigned frame
+    // spills on whole lines (measured: gravity-like at L 8 on AVX-512).
+    if (lanesFor(isa) > 1)
+      for (llvm::Function &function : *llvmModule)
+        if (!function.isDeclaration())
+          function.addFnAttr("stackrealign");
     FailureOr<std::string> object =
         compileForIsa(*llvmModule, loc, isa, optLevel, linker);
     if (failed(object))
@@ -190,15 +199,6 @@ static FailureOr<std::string> compileForIsa(llvm::Module &module, Location loc,
       triple, isa, "", targetOptions, llvm::Reloc::PIC_));
   module.setDataLayout(machine->createDataLayout());
   module.setTargetTriple(triple);
-  // A kernel with per-lane arrays allocates them dynamically, and LLVM then
-  // keeps the caller's 16-byte stack alignment: the spill slots of the 32-
-  // and 64-byte registers of the SIMD levels lie across cache lines or not
-  // depending on how deep the caller's stack is. A realigned frame spills
-  // on whole lines (measured: hip's sub-step kernels at L 8 on AVX-512).
-  if (isa == "x86-64-v3" || isa == "x86-64-v4")
-    for (llvm::Function &function : module)
-      if (!function.isDeclaration())
-        function.addFnAttr("stackrealign");
   auto optimize = makeOptimizingTransformer(optLevel,
                                             /*sizeLevel=*/0, machine.get());
   if (llvm::Error failure = optimize(&module))

@@ -360,6 +360,9 @@ def main():
     parser.add_argument("--flatc", required=True)
     parser.add_argument("--schema", required=True)
     parser.add_argument("--json", action="store_true")
+    parser.add_argument("--extract-cpu", metavar="DIR",
+                        help="also write each plan's CPU shared objects as "
+                        "DIR/plan<index>-<isa>.so")
     parser.add_argument("bundle")
     args = parser.parse_args()
 
@@ -367,6 +370,14 @@ def main():
         data = f.read()
     check_header(data, quiet=args.json)
     bundle = decode(args.flatc, args.schema, data[HEADER_SIZE:])
+    if args.extract_cpu:
+        os.makedirs(args.extract_cpu, exist_ok=True)
+        for i, plan in enumerate(bundle.get("plans", [])):
+            for cpu in plan.get("cpu", []):
+                path = os.path.join(args.extract_cpu,
+                                    "plan%d-%s.so" % (i, cpu["isa"]))
+                with open(path, "wb") as f:
+                    f.write(bytes(cpu["object"]))
     if args.json:
         json.dump(bundle, sys.stdout, indent=1, sort_keys=True)
         print()

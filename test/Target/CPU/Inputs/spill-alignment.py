@@ -1,41 +1,28 @@
-"""Checks that every function of a bundle's CPU objects that keeps 32- or
-64-byte registers on the stack realigns its frame to 64 bytes, so that its
-spill slots lie on whole cache lines (lib/Target/CPU/CPUKernels.cpp).
+"""Checks that every function of CPU shared objects that keeps 32- or
+64-byte registers on the stack realigns its frame, so that its spill slots
+lie on whole cache lines (lib/Target/CPU/CPUKernels.cpp).
 
-usage: spill-alignment.py OBJDUMP BUNDLE
-Prints one line per object and function checked; exits 1 at the first
-function that spills wide registers without realigning."""
+usage: spill-alignment.py OBJDUMP OBJECT...
+Prints, per object, each function that spills wide registers without
+realigning its frame and how many functions spill them; exits 1 if any
+function does not realign."""
+import os
 import re
-import struct
 import subprocess
 import sys
-import tempfile
 
-objdump, bundle = sys.argv[1], sys.argv[2]
-data = open(bundle, "rb").read()
-start, objects = 0, []
-while True:
-    start = data.find(b"\x7fELF", start)
-    if start < 0:
-        break
-    (shoff,) = struct.unpack_from("<Q", data, start + 0x28)
-    shentsize, shnum = struct.unpack_from("<HH", data, start + 0x3A)
-    size = shoff + shentsize * shnum
-    objects.append(data[start : start + size])
-    start += size
-
+# A ymm or zmm register stored to or loaded from the frame.
 wide_stack = re.compile(
     r"vmov\w+\s+(%[yz]mm\d+,\s*-?(0x[0-9a-f]+)?\(%r(bp|sp|bx)\)"
     r"|-?(0x[0-9a-f]+)?\(%r(bp|sp|bx)\),\s*%[yz]mm\d+)")
-realign = re.compile(r"and\w*\s+\$(-0x40|-0x20|0xffffffffffffff[ce]0),\s*%rsp")
+# The frame realigned to 32 or 64 bytes.
+realign = re.compile(r"and\w*\s+\$(-0x40|-0x20),\s*%rsp")
+
+objdump, objects = sys.argv[1], sys.argv[2:]
 failed = False
-for index, obj in enumerate(objects):
-    with tempfile.NamedTemporaryFile(suffix=".so") as f:
-        f.write(obj)
-        f.flush()
-        text = subprocess.run(
-            [objdump, "-d", "--no-show-raw-insn", f.name],
-            capture_output=True, text=True, check=True).stdout
+for path in objects:
+    text = subprocess.run([objdump, "-d", "--no-show-raw-insn", path],
+                          capture_output=True, text=True, check=True).stdout
     functions = re.split(r"\n[0-9a-f]+ <([^>]+)>:\n", text)[1:]
     spilling = 0
     for name, body in zip(functions[0::2], functions[1::2]):
@@ -43,8 +30,9 @@ for index, obj in enumerate(objects):
             continue
         spilling += 1
         if not realign.search(body):
-            print(f"object {index}: {name} spills wide registers on a "
-                  f"frame it does not realign")
+            print("%s: %s spills wide registers on a frame it does not "
+                  "realign" % (os.path.basename(path), name))
             failed = True
-    print(f"object {index}: {spilling} functions spill wide registers")
+    print("%s: %d functions spill wide registers" %
+          (os.path.basename(path), spilling))
 sys.exit(1 if failed else 0)
