@@ -129,6 +129,23 @@ static bool divisorCannotTrap(Operation *op, Value divisor) {
   return !value.isZero() && (isUnsigned || !value.isAllOnes());
 }
 
+/// The divisor of a 64-bit unsigned remainder by a constant that the widened
+/// loop computes in 32-bit halves, or 0. x86 has no vector instruction for
+/// the high half of a 64-bit product, so LLVM computes `x % c` on a vector of
+/// i64 with one scalar `mul` per lane; the same remainder from 32-bit
+/// remainders, which x86 does have in vector form (`pmuludq`), is exact when
+/// `(c - 1)^2 + c - 1 < 2^32`. Powers of two are a mask already.
+static uint64_t narrowRemainderDivisor(Operation *op) {
+  if (!isa<arith::RemUIOp>(op) ||
+      !elementType(op->getResultTypes()[0]).isInteger(64))
+    return 0;
+  APInt value;
+  if (!matchPattern(op->getOperand(1), m_ConstantInt(&value)) ||
+      value.getActiveBits() > 16 || value.ult(3) || value.isPowerOf2())
+    return 0;
+  return value.getZExtValue();
+}
+
 /// Ops that compute per element: arith, math, vector.fma and the
 /// llvm.intr.fma that --sim-fused-multiply-add makes of it.
 static bool isElementwise(Operation *op) {
@@ -170,6 +187,9 @@ private:
   void widenIf(OpBuilder &b, scf::IfOp op, Value mask);
   void widenFor(OpBuilder &b, scf::ForOp op, Value mask);
   void widenElementwise(OpBuilder &b, Operation *op, Value mask);
+  /// `lanes % divisor` for a vector of i64 lanes and a divisor that
+  /// narrowRemainderDivisor accepts, from 32-bit remainders.
+  Value remainderByHalves(OpBuilder &b, Value lanes, uint64_t divisor);
   void widenLoad(OpBuilder &b, memref::LoadOp op, Value mask);
   void widenStore(OpBuilder &b, memref::StoreOp op, Value mask);
   void widenReduction(OpBuilder &b, vector::ReductionOp op);
@@ -715,13 +735,20 @@ void LaneVectorizer::widenOp(OpBuilder &b, Operation *op, Value mask) {
 }
 
 void LaneVectorizer::widenElementwise(OpBuilder &b, Operation *op, Value mask) {
-  if (widenInterleaved(b, op))
-    return;
   Value result = op->getResult(0);
   int64_t count = elementCount(result.getType());
   Type resultScalar = elementType(result.getType());
   Wide wide;
   wide.varying = true;
+  if (uint64_t divisor = narrowRemainderDivisor(op)) {
+    for (int64_t k = 0; k < count; ++k)
+      wide.parts.push_back(
+          remainderByHalves(b, lanePart(b, op->getOperand(0), k), divisor));
+    values[result] = wide;
+    return;
+  }
+  if (widenInterleaved(b, op))
+    return;
   for (int64_t k = 0; k < count; ++k) {
     SmallVector<Value> operands;
     for (auto [index, operand] : llvm::enumerate(op->getOperands())) {
@@ -750,6 +777,33 @@ void LaneVectorizer::widenElementwise(OpBuilder &b, Operation *op, Value mask) {
     wide.parts.push_back(b.create(state)->getResult(0));
   }
   values[result] = wide;
+}
+
+Value LaneVectorizer::remainderByHalves(OpBuilder &b, Value lanes,
+                                        uint64_t divisor) {
+  // x = hi * 2^32 + lo, so x % c = ((hi % c) * (2^32 % c) + lo % c) % c, and
+  // with c < 2^16 every term fits in 32 bits.
+  VectorType wide = laneType(b.getI64Type());
+  VectorType narrow = laneType(b.getI32Type());
+  auto splat = [&](VectorType type, uint64_t value) -> Value {
+    return arith::ConstantOp::create(
+        b, loc, type,
+        DenseElementsAttr::get(type,
+                               b.getIntegerAttr(type.getElementType(), value)));
+  };
+  Value c = splat(narrow, divisor);
+  Value high = arith::TruncIOp::create(
+      b, loc, narrow, arith::ShRUIOp::create(b, loc, lanes, splat(wide, 32)));
+  Value low = arith::TruncIOp::create(b, loc, narrow, lanes);
+  Value highRemainder = arith::RemUIOp::create(b, loc, high, c);
+  Value lowRemainder = arith::RemUIOp::create(b, loc, low, c);
+  uint64_t scale = (uint64_t(1) << 32) % divisor;
+  Value scaled = scale == 1 ? highRemainder
+                            : Value(arith::MulIOp::create(
+                                  b, loc, highRemainder, splat(narrow, scale)));
+  Value sum = arith::AddIOp::create(b, loc, scaled, lowRemainder);
+  return arith::ExtUIOp::create(b, loc, wide,
+                                arith::RemUIOp::create(b, loc, sum, c));
 }
 
 void LaneVectorizer::widenReduction(OpBuilder &b, vector::ReductionOp op) {

@@ -170,13 +170,64 @@ func.func @division(%d: memref<?xi64>, %out: memref<?xi64>, %g: index) {
 
 // -----
 
+// A 64-bit remainder by a constant below 2^16 that is not a power of two is
+// computed from the 32-bit halves (x86 has no vector high half of a 64-bit
+// product, so LLVM would take the i64 remainder lane by lane):
+// ((hi % c) * (2^32 % c) + lo % c) % c, without the multiplication where
+// 2^32 % c is 1. Powers of two and wider divisors stay as they are.
+// CHECK-LABEL: func.func @remainder_by_halves
+// CHECK:         scf.for
+// CHECK:           %[[X:.*]] = llvm.load %{{.*}} -> vector<8xi64>
+// CHECK:           %[[C3:.*]] = arith.constant dense<3> : vector<8xi32>
+// CHECK:           %[[C32:.*]] = arith.constant dense<32> : vector<8xi64>
+// CHECK:           %[[SHIFTED:.*]] = arith.shrui %[[X]], %[[C32]] : vector<8xi64>
+// CHECK:           %[[HI:.*]] = arith.trunci %[[SHIFTED]] : vector<8xi64> to vector<8xi32>
+// CHECK:           %[[LO:.*]] = arith.trunci %[[X]] : vector<8xi64> to vector<8xi32>
+// CHECK:           %[[HI3:.*]] = arith.remui %[[HI]], %[[C3]] : vector<8xi32>
+// CHECK:           %[[LO3:.*]] = arith.remui %[[LO]], %[[C3]] : vector<8xi32>
+// CHECK-NEXT:      %[[SUM3:.*]] = arith.addi %[[HI3]], %[[LO3]] : vector<8xi32>
+// CHECK-NEXT:      %[[R3:.*]] = arith.remui %[[SUM3]], %[[C3]] : vector<8xi32>
+// CHECK-NEXT:      arith.extui %[[R3]] : vector<8xi32> to vector<8xi64>
+// CHECK:           %[[C7:.*]] = arith.constant dense<7> : vector<8xi32>
+// CHECK:           %[[HI7:.*]] = arith.remui %{{.*}}, %[[C7]] : vector<8xi32>
+// CHECK:           %[[LO7:.*]] = arith.remui %{{.*}}, %[[C7]] : vector<8xi32>
+// CHECK:           %[[SCALE7:.*]] = arith.constant dense<4> : vector<8xi32>
+// CHECK:           %[[SCALED7:.*]] = arith.muli %[[HI7]], %[[SCALE7]] : vector<8xi32>
+// CHECK:           %[[SUM7:.*]] = arith.addi %[[SCALED7]], %[[LO7]] : vector<8xi32>
+// CHECK:           arith.remui %[[SUM7]], %[[C7]] : vector<8xi32>
+// CHECK:           arith.remui %[[X]], %{{.*}} : vector<8xi64>
+// CHECK:           arith.remui %[[X]], %{{.*}} : vector<8xi64>
+func.func @remainder_by_halves(%d: memref<?xi64>, %out: memref<?xi64>, %g: index) {
+  %c0 = arith.constant 0 : index
+  %c1 = arith.constant 1 : index
+  %c3 = arith.constant 3 : i64
+  %c7 = arith.constant 7 : i64
+  %c8 = arith.constant 8 : i64
+  %c65537 = arith.constant 65537 : i64
+  // expected-remark @below {{lanes run 8 at a time}}
+  scf.for %lane = %c0 to %g step %c1 {
+    %x = memref.load %d[%lane] : memref<?xi64>
+    %r3 = arith.remui %x, %c3 : i64
+    %r7 = arith.remui %x, %c7 : i64
+    %r8 = arith.remui %x, %c8 : i64
+    %r65537 = arith.remui %x, %c65537 : i64
+    %s0 = arith.addi %r3, %r7 : i64
+    %s1 = arith.addi %s0, %r8 : i64
+    %s2 = arith.addi %s1, %r65537 : i64
+    memref.store %s2, %out[%lane] : memref<?xi64>
+  } {simplan.lanes}
+  return
+}
+
+// -----
+
 // A division by a constant other than 0 cannot trap: no mask, so LLVM can
 // multiply by the reciprocal instead of dividing lane by lane. A signed
 // division by -1 keeps its mask (INT_MIN / -1 traps).
 // CHECK-LABEL: func.func @constant_divisor
 // CHECK:         scf.if
 // CHECK-NOT:       arith.select
-// CHECK:           arith.remui %{{.*}}, %{{.*}} : vector<8xi64>
+// CHECK:           arith.divui %{{.*}}, %{{.*}} : vector<8xi64>
 // CHECK:           %[[SAFE:.*]] = arith.select %{{.*}}, %{{.*}}, %{{.*}} : vector<8xi1>, vector<8xi64>
 // CHECK:           arith.divsi %{{.*}}, %[[SAFE]] : vector<8xi64>
 func.func @constant_divisor(%d: memref<?xi64>, %out: memref<?xi64>, %g: index) {
@@ -190,7 +241,7 @@ func.func @constant_divisor(%d: memref<?xi64>, %out: memref<?xi64>, %g: index) {
     %x = memref.load %d[%lane] : memref<?xi64>
     %positive = arith.cmpi sgt, %x, %c0_i64 : i64
     %q = scf.if %positive -> (i64) {
-      %r = arith.remui %x, %c3 : i64
+      %r = arith.divui %x, %c3 : i64
       %n = arith.divsi %r, %minus_one : i64
       scf.yield %n : i64
     } else {
