@@ -89,12 +89,14 @@ TEST(SimRunValues, ParsesSizesInPowersOf1024) {
     EXPECT_FALSE(parseSize(bad)) << bad;
 }
 
-TEST(SimRunValues, ParsesPositiveFiniteNumbers) {
-  EXPECT_EQ(parsePositive("1e-3"), 1e-3);
-  EXPECT_EQ(parsePositive("2"), 2.0);
+TEST(SimRunValues, ParsesNonNegativeFiniteNumbers) {
+  EXPECT_EQ(parseNonNegative("1e-3"), 1e-3);
+  EXPECT_EQ(parseNonNegative("2"), 2.0);
+  EXPECT_EQ(parseNonNegative("0"), 0.0);
+  EXPECT_FALSE(std::signbit(*parseNonNegative("-0")));
   for (const char *bad :
-       {"", "0", "-0", "-1", "nan", "inf", "-inf", "1e999", "1e-3x", " 1"})
-    EXPECT_FALSE(parsePositive(bad)) << bad;
+       {"", "-1", "-1e-300", "nan", "inf", "-inf", "1e999", "1e-3x", " 1"})
+    EXPECT_FALSE(parseNonNegative(bad)) << bad;
 }
 
 TEST(SimRunOptions, TakesEveryOption) {
@@ -199,7 +201,7 @@ TEST(SimRunOptions, RejectsValuesOutsideTheirDomain) {
        "--report-every 4 and --output-every 3 disagree"},
       {{"a", "--restart", ""}, "--restart: expects a path"},
       {{"a", "--check", "--check-tolerance", "inf"},
-       "--check-tolerance: 'inf' is not a positive finite number"},
+       "--check-tolerance: 'inf' is not a finite number >= 0"},
       {{"a", "--max-memory", "-1"}, "--max-memory: '-1' is not a size"},
       {{"a", "--strategy", "best"}, "--strategy: unknown strategy 'best'"},
       {{"a", "--backend", "tpu"}, "--backend: unknown backend 'tpu'"},
@@ -467,7 +469,7 @@ Buffer doubles(const std::string &name, std::vector<double> values) {
 
 TEST(SimRunCheck, FailsOnNonFiniteValuesEvenWhenBothSidesAgree) {
   Buffer nan = doubles("X", {1, NAN, 2, NAN});
-  Check check = compareWithReference({nan}, {nan}, {}, {}, 0);
+  Check check = compareWithReference({nan}, {nan}, {}, {}, -1);
   ASSERT_EQ(check.buffers.size(), 1u);
   EXPECT_FALSE(check.buffers[0].pass);
   EXPECT_EQ(check.buffers[0].nonFiniteBackend, 2u);
@@ -478,15 +480,28 @@ TEST(SimRunCheck, FailsOnNonFiniteValuesEvenWhenBothSidesAgree) {
 
   Buffer inf = doubles("V", {INFINITY, 0});
   Buffer fine = doubles("V", {0, 0});
-  check = compareWithReference({inf}, {fine}, {}, {}, 0);
+  check = compareWithReference({inf}, {fine}, {}, {}, -1);
   EXPECT_EQ(check.failures,
             std::vector<std::string>{
                 "buffer V has 1 non-finite value on the backend"});
-  check = compareWithReference({fine}, {inf}, {}, {}, 0);
+  check = compareWithReference({fine}, {inf}, {}, {}, -1);
   EXPECT_EQ(check.failures,
             std::vector<std::string>{
                 "buffer V has 1 non-finite value on the reference executor"});
-  check = compareWithReference({fine}, {fine}, {}, {}, 0);
+  check = compareWithReference({fine}, {fine}, {}, {}, -1);
+  EXPECT_TRUE(check.pass());
+}
+
+TEST(SimRunCheck, ToleranceZeroAsksForEqualValues) {
+  Buffer reference = doubles("X", {1, 2, 3});
+  Buffer oneUlpOff = doubles("X", {1, std::nextafter(2.0, 3.0), 3});
+  Check check = compareWithReference({reference}, {reference}, {}, {}, 0);
+  EXPECT_TRUE(check.pass());
+  EXPECT_EQ(check.buffers[0].limit, 0.0);
+  check = compareWithReference({oneUlpOff}, {reference}, {}, {}, 0);
+  EXPECT_FALSE(check.pass());
+  // By default (a negative tolerance) one ulp of a double passes.
+  check = compareWithReference({oneUlpOff}, {reference}, {}, {}, -1);
   EXPECT_TRUE(check.pass());
 }
 

@@ -817,7 +817,7 @@ void runCheck(Results &results, Session &session,
       compareWithReference(main.values, results.checkValues, main.counts,
                            totals.counts, options.checkTolerance);
   double totalTolerance =
-      options.checkTolerance > 0 ? options.checkTolerance : kTotalTolerance;
+      options.checkTolerance >= 0 ? options.checkTolerance : kTotalTolerance;
   compareTotals(main.totalNames, options.steps, main.totals,
                 totalsOf(reference), totalTolerance, check.totals,
                 check.failures);

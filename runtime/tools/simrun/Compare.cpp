@@ -108,7 +108,7 @@ Check::BufferRow checkBuffer(const Buffer &backend, const Buffer &reference,
     if (std::isfinite(reference.at(v)))
       row.maxReference = std::max(row.maxReference, std::fabs(reference.at(v)));
   row.tolerance =
-      tolerance > 0 ? tolerance : defaultTolerance(backend.scalarBytes);
+      tolerance >= 0 ? tolerance : defaultTolerance(backend.scalarBytes);
   row.limit = row.tolerance * std::max(1.0, row.maxReference);
   row.nonFiniteBackend = backend.nonFinite();
   row.nonFiniteReference = reference.nonFinite();

@@ -92,7 +92,7 @@ constexpr double kTotalTolerance = 1e-8;
 /// Compares buffers and counters. A buffer passes when it has no NaN or
 /// infinity on either side (a scene that blows up fails, even when both
 /// blow up alike) and max-abs <= tolerance * max(1, max|reference|)
-/// (tolerance 0: defaultTolerance).
+/// (a negative tolerance: defaultTolerance; 0: equal values).
 Check compareWithReference(const std::vector<Buffer> &backend,
                            const std::vector<Buffer> &reference,
                            const RunCounts &backendCounts,

@@ -93,16 +93,16 @@ std::optional<int64_t> parseSize(std::string_view text) {
   return *count << shift;
 }
 
-std::optional<double> parsePositive(std::string_view text) {
+std::optional<double> parseNonNegative(std::string_view text) {
   std::string copy(text);
   if (copy.empty() || std::isspace(static_cast<unsigned char>(copy[0])))
     return std::nullopt;
   char *end = nullptr;
   errno = 0;
   double value = std::strtod(copy.c_str(), &end);
-  if (*end || !std::isfinite(value) || !(value > 0))
+  if (*end || !std::isfinite(value) || !(value >= 0))
     return std::nullopt;
-  return value;
+  return value == 0 ? 0.0 : value; // -0 is 0
 }
 
 namespace {
@@ -141,14 +141,14 @@ CLI::Validator size() {
       "", "size");
 }
 
-CLI::Validator positiveNumber() {
+CLI::Validator nonNegativeNumber() {
   return CLI::Validator(
       [](std::string &text) -> std::string {
-        if (!parsePositive(text))
-          return inQuotes(text) + " is not a positive finite number";
+        if (!parseNonNegative(text))
+          return inQuotes(text) + " is not a finite number >= 0";
         return "";
       },
-      "", "positive");
+      "", "non-negative");
 }
 
 /// A name that `parse` (sim_strategy_parse, sim_backend_parse) knows.
@@ -373,9 +373,10 @@ void declareOptions(CLI::App &app, Options &options, std::string &backend,
   app.add_option("--check-tolerance", options.checkTolerance,
                  "a buffer passes --check when max-abs <= X *\n"
                  "max(1, max|reference|) (default 1e-4 for f32\n"
-                 "buffers, 1e-10 for f64; 1e-8 for totals)")
+                 "buffers, 1e-10 for f64; 1e-8 for totals); 0:\n"
+                 "the values must be equal")
       ->option_text("X")
-      ->check(positiveNumber())
+      ->check(nonNegativeNumber())
       ->needs(check);
   app.add_option("--dump", options.dump,
                  "write the observed buffers as DIR/<buffer>.npy\n"

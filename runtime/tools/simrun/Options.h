@@ -88,8 +88,8 @@ struct Options {
   /// "", "simple" or "exact".
   std::string reference;
   bool check = false;
-  /// --check-tolerance; 0: by scalar type.
-  double checkTolerance = 0;
+  /// --check-tolerance; negative (not given): by scalar type, 0: equal.
+  double checkTolerance = -1;
   /// Output paths; empty: not asked for.
   std::string dump;
   std::string json;
@@ -127,7 +127,7 @@ std::optional<int64_t> parseSize(std::string_view text);
 
 /// A positive finite number as strtod reads it (the whole text), or
 /// nullopt.
-std::optional<double> parsePositive(std::string_view text);
+std::optional<double> parseNonNegative(std::string_view text);
 
 } // namespace simrun
 
