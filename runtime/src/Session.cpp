@@ -63,9 +63,19 @@ Session::Session(std::shared_ptr<const Bundle> bundleIn,
     std::vector<std::string> present;
     for (Strategy s : bundle->strategies())
       present.push_back(strategyName(s));
+    // A distributed bundle leaves lts out unless it is asked for (and then
+    // its compile fails): say so rather than leave the user guessing.
+    bool distributedBundle = !present.empty();
+    for (Strategy s : bundle->strategies())
+      distributedBundle = distributedBundle && bundle->plan(s)->distributed;
+    std::string why =
+        distributedBundle && strategy == Strategy::Lts
+            ? "; sim-translate --sim-distributed leaves lts out: local time "
+              "steps do not run on many processes yet"
+            : "";
     fail(SIM_ERROR_BUNDLE, "bundle '" + bundle->name +
                                "' has no plan for strategy '" + name +
-                               "' (it has: " + listNames(present) + ")");
+                               "' (it has: " + listNames(present) + ")" + why);
   }
   bool hasPtx = !plan_->ptx.empty();
   const schema::CpuCodeT *cpu = bundle->cpuCode(*plan_);

@@ -1044,6 +1044,18 @@ std::vector<std::string> takeCompileTimeSettings(Options &options) {
   return compiled;
 }
 
+/// Without --strategy: hip, or where a bundle was compiled without it (for
+/// example --sim-strategies=simple) the first plan it has, so that such a
+/// bundle runs as it is.
+sim_strategy defaultStrategy(const sim_bundle *bundle, sim_strategy preferred) {
+  for (sim_strategy strategy :
+       {preferred, SIM_STRATEGY_HIP_CACHE, SIM_STRATEGY_LTS,
+        SIM_STRATEGY_TRADITIONAL, SIM_STRATEGY_SIMPLE})
+    if (sim_bundle_has_strategy(bundle, strategy))
+      return strategy;
+  return preferred; // No plan at all: the session says so.
+}
+
 int run(Options options) {
   // Before anything runs: the paths, the bundle, every session and every
   // --set, the dump files.
@@ -1051,6 +1063,8 @@ int run(Options options) {
   std::vector<std::string> compiled = takeCompileTimeSettings(options);
   Input input(options.input, compiled);
   const sim_bundle *bundle = input.bundle();
+  if (!options.strategyGiven)
+    options.strategy = defaultStrategy(bundle, options.strategy);
   Sessions sessions = createSessions(bundle, options);
   std::vector<sim_buffer_info> observed = observedBuffers(bundle);
   std::vector<std::string> stems = planDumps(outputs, options, observed);

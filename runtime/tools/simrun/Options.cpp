@@ -289,7 +289,9 @@ void declareOptions(CLI::App &app, Options &options, std::string &backend,
       ->check(knownName(&sim_backend_parse));
   app.add_option("--strategy", strategy,
                  "simple, traditional, hip, hip-cache or lts (default\n"
-                 "hip; lts: local time steps, docs/Model.md)")
+                 "hip, or where the bundle has no hip plan the first\n"
+                 "of hip-cache, lts, traditional, simple it has; lts:\n"
+                 "local time steps, docs/Model.md)")
       ->option_text("S")
       ->check(knownName(&sim_strategy_parse));
   app.add_option("--steps", options.steps,
@@ -508,8 +510,10 @@ Options parseOptions(int argc, const char *const *argv) {
 
   if (!backend.empty())
     sim_backend_parse(backend.c_str(), &options.backend);
-  if (!strategy.empty())
+  if (!strategy.empty()) {
     sim_strategy_parse(strategy.c_str(), &options.strategy);
+    options.strategyGiven = true;
+  }
   if (options.distributed) {
     if (options.backend == SIM_BACKEND_REFERENCE)
       usageError("--distributed runs the plan executor, not the reference "

@@ -69,6 +69,9 @@ struct Options {
   std::string input;
   sim_backend backend = SIM_BACKEND_AUTO;
   sim_strategy strategy = SIM_STRATEGY_HIP;
+  /// Whether --strategy was given (else a bundle without hip runs the
+  /// first of its plans in defaultStrategies).
+  bool strategyGiven = false;
   int64_t steps = 100;
   int64_t repeat = 1;
   /// --output-every (or its old name --report-every): the run stops at
