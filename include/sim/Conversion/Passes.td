@@ -163,7 +163,17 @@ def SimVectorizeLanes : Pass<"sim-vectorize-lanes"> {
     parameter says) becomes a branch that computes only the chosen operand,
     and a division by a constant that cannot trap (not 0, not -1 when
     signed) keeps its divisor in lanes a branch does not take (others
-    divide by one there), so that LLVM multiplies by its reciprocal.
+    divide by one there), so that LLVM multiplies by its reciprocal. A
+    division or remainder by any other divisor runs in f64 lanes where
+    that is exact: for |x| < 2^53 and 0 < |d| < 2^53 the quotient
+    truncated from the correctly rounded x / d is the integer quotient (a
+    quotient that is not an integer lies at least 1 / |d| from the nearest
+    one, further than the rounding error). 32-bit operands always qualify;
+    64-bit and `index` ones (the wrap of a window read) are checked per
+    chunk, and a chunk with a lane out of range divides as before. A
+    64-bit remainder by a constant below 2^16 that is not a power of two
+    is computed from 32-bit remainders of the two halves, which x86 has
+    in vector form where it has no vector high half of a 64-bit product.
 
     ```
     sim-opt kernels.mlir --sim-vectorize-lanes=width=16

@@ -146,6 +146,24 @@ static uint64_t narrowRemainderDivisor(Operation *op) {
   return value.getZExtValue();
 }
 
+/// Whether the widened loop computes the integer division `op` in f64 lanes.
+/// x86 has no SIMD integer division, so LLVM divides lane by lane (`idiv`,
+/// tens of cycles each); but for |x| < 2^53 and 0 < |d| < 2^53 the quotient
+/// truncated from the correctly rounded f64 x / d is exact: one that is not
+/// an integer lies at least 1 / |d| from the nearest integer, further than
+/// the rounding error |x / d| 2^-53 (and an integer quotient is exact). So
+/// are 32-bit operands always, and 64-bit ones where a chunk's lanes are in
+/// range (checked; else the chunk divides as before), index ones (the wrap
+/// of a window read) as 64-bit ones. A constant divisor is left to LLVM,
+/// which multiplies by its reciprocal.
+static bool dividesThroughDouble(Operation *op) {
+  if (!isa<arith::DivSIOp, arith::DivUIOp, arith::RemSIOp, arith::RemUIOp>(op))
+    return false;
+  Type scalar = elementType(op->getResultTypes()[0]);
+  return (scalar.isInteger(32) || scalar.isInteger(64) || scalar.isIndex()) &&
+         !matchPattern(op->getOperand(1), m_Constant());
+}
+
 /// Ops that compute per element: arith, math, vector.fma and the
 /// llvm.intr.fma that --sim-fused-multiply-add makes of it.
 static bool isElementwise(Operation *op) {
@@ -190,6 +208,10 @@ private:
   /// `lanes % divisor` for a vector of i64 lanes and a divisor that
   /// narrowRemainderDivisor accepts, from 32-bit remainders.
   Value remainderByHalves(OpBuilder &b, Value lanes, uint64_t divisor);
+  /// `op` (dividesThroughDouble) on the lane vectors `dividend` and
+  /// `divisor`; `mask`: the lanes that run it, or null for all.
+  Value divideThroughDouble(OpBuilder &b, Operation *op, Value dividend,
+                            Value divisor, Value mask);
   void widenLoad(OpBuilder &b, memref::LoadOp op, Value mask);
   void widenStore(OpBuilder &b, memref::StoreOp op, Value mask);
   void widenReduction(OpBuilder &b, vector::ReductionOp op);
@@ -770,6 +792,11 @@ void LaneVectorizer::widenElementwise(OpBuilder &b, Operation *op, Value mask) {
       }
       operands.push_back(lanes);
     }
+    if (dividesThroughDouble(op)) {
+      wide.parts.push_back(
+          divideThroughDouble(b, op, operands[0], operands[1], mask));
+      continue;
+    }
     OperationState state(loc, op->getName());
     state.addOperands(operands);
     state.addTypes(laneType(resultScalar));
@@ -777,6 +804,88 @@ void LaneVectorizer::widenElementwise(OpBuilder &b, Operation *op, Value mask) {
     wide.parts.push_back(b.create(state)->getResult(0));
   }
   values[result] = wide;
+}
+
+Value LaneVectorizer::divideThroughDouble(OpBuilder &b, Operation *op,
+                                          Value dividend, Value divisor,
+                                          Value mask) {
+  bool isSigned = isa<arith::DivSIOp, arith::RemSIOp>(op);
+  bool isRemainder = isa<arith::RemSIOp, arith::RemUIOp>(op);
+  if (elementType(dividend.getType()).isIndex()) {
+    // As 64-bit integers (what index lowers to), and back.
+    VectorType words = laneType(b.getI64Type());
+    auto toWords = [&](Value value) -> Value {
+      if (isSigned)
+        return arith::IndexCastOp::create(b, loc, words, value);
+      return arith::IndexCastUIOp::create(b, loc, words, value);
+    };
+    Value result =
+        divideThroughDouble(b, op, toWords(dividend), toWords(divisor), mask);
+    if (isSigned)
+      return arith::IndexCastOp::create(b, loc, dividend.getType(), result);
+    return arith::IndexCastUIOp::create(b, loc, dividend.getType(), result);
+  }
+  auto intType = cast<VectorType>(dividend.getType());
+  VectorType doubles = laneType(b.getF64Type());
+  auto inDoubles = [&](OpBuilder &at) -> Value {
+    auto toDouble = [&](Value value) -> Value {
+      if (isSigned)
+        return arith::SIToFPOp::create(at, loc, doubles, value);
+      return arith::UIToFPOp::create(at, loc, doubles, value);
+    };
+    Value ratio =
+        arith::DivFOp::create(at, loc, toDouble(dividend), toDouble(divisor));
+    // fptosi and fptoui truncate toward zero, as divsi and divui do.
+    Value quotient =
+        isSigned ? Value(arith::FPToSIOp::create(at, loc, intType, ratio))
+                 : Value(arith::FPToUIOp::create(at, loc, intType, ratio));
+    if (!isRemainder)
+      return quotient;
+    return arith::SubIOp::create(
+        at, loc, dividend, arith::MulIOp::create(at, loc, quotient, divisor));
+  };
+  if (elementType(intType).isInteger(32))
+    return inDoubles(b);
+
+  // 64 bits: |x| < 2^53 (x < 2^53 unsigned) in every lane that runs.
+  auto splat = [&](int64_t value) -> Value {
+    return arith::ConstantOp::create(
+        b, loc, intType,
+        DenseElementsAttr::get(intType, b.getI64IntegerAttr(value)));
+  };
+  int64_t limit = int64_t(1) << 53;
+  auto inRange = [&](Value value) -> Value {
+    if (!isSigned)
+      return arith::CmpIOp::create(b, loc, arith::CmpIPredicate::ult, value,
+                                   splat(limit));
+    // -2^53 < x < 2^53 <=> x + (2^53 - 1) <u 2^54 - 1 (a wrapped sum is
+    // large).
+    Value shifted = arith::AddIOp::create(b, loc, value, splat(limit - 1));
+    return arith::CmpIOp::create(b, loc, arith::CmpIPredicate::ult, shifted,
+                                 splat(2 * limit - 1));
+  };
+  Value lanesInRange =
+      arith::AndIOp::create(b, loc, inRange(dividend), inRange(divisor));
+  if (mask) {
+    // Lanes that do not run this division may hold anything.
+    VectorType flags = laneType(b.getI1Type());
+    Value all = arith::ConstantOp::create(
+        b, loc, flags, DenseElementsAttr::get(flags, b.getBoolAttr(true)));
+    lanesInRange = arith::SelectOp::create(b, loc, mask, lanesInRange, all);
+  }
+  Value chunkInRange = vector::ReductionOp::create(
+      b, loc, vector::CombiningKind::AND, lanesInRange);
+  auto choice = scf::IfOp::create(b, loc, TypeRange{intType}, chunkInRange,
+                                  /*withElseRegion=*/true);
+  OpBuilder fast = emptyBody(choice.thenBlock());
+  scf::YieldOp::create(fast, loc, inDoubles(fast));
+  OpBuilder slow = emptyBody(choice.elseBlock());
+  OperationState state(loc, op->getName());
+  state.addOperands({dividend, divisor});
+  state.addTypes(intType);
+  state.addAttributes(op->getAttrs());
+  scf::YieldOp::create(slow, loc, slow.create(state)->getResult(0));
+  return choice.getResult(0);
 }
 
 Value LaneVectorizer::remainderByHalves(OpBuilder &b, Value lanes,

@@ -170,6 +170,63 @@ func.func @division(%d: memref<?xi64>, %out: memref<?xi64>, %g: index) {
 
 // -----
 
+// Divisions by divisors that are not constants go through f64 where that is
+// exact: 32-bit operands always; 64-bit and index ones where every lane of
+// the chunk is within 2^53 of zero, else the integer division.
+// CHECK-LABEL: func.func @division_through_double
+// CHECK:         scf.for
+// CHECK:           %[[X32:.*]] = arith.sitofp %{{.*}} : vector<8xi32> to vector<8xf64>
+// CHECK:           %[[D32:.*]] = arith.sitofp %{{.*}} : vector<8xi32> to vector<8xf64>
+// CHECK:           %[[R32:.*]] = arith.divf %[[X32]], %[[D32]] : vector<8xf64>
+// CHECK:           %[[Q32:.*]] = arith.fptosi %[[R32]] : vector<8xf64> to vector<8xi32>
+// CHECK:           %[[QD32:.*]] = arith.muli %[[Q32]], %{{.*}} : vector<8xi32>
+// CHECK:           arith.subi %{{.*}}, %[[QD32]] : vector<8xi32>
+// CHECK:           %[[LIMIT:.*]] = arith.constant dense<9007199254740992> : vector<8xi64>
+// CHECK:           %[[XOK:.*]] = arith.cmpi ult, %{{.*}}, %[[LIMIT]] : vector<8xi64>
+// CHECK:           %[[LANES:.*]] = arith.andi %[[XOK]], %{{.*}} : vector<8xi1>
+// CHECK:           %[[CHUNK:.*]] = vector.reduction <and>, %[[LANES]] : vector<8xi1> into i1
+// CHECK:           scf.if %[[CHUNK]] -> (vector<8xi64>) {
+// CHECK:             arith.uitofp
+// CHECK:             arith.divf %{{.*}} : vector<8xf64>
+// CHECK:             arith.fptoui %{{.*}} : vector<8xf64> to vector<8xi64>
+// CHECK:           } else {
+// CHECK:             arith.divui %{{.*}} : vector<8xi64>
+// CHECK:           }
+// CHECK:           arith.index_cast %{{.*}} : vector<8xindex> to vector<8xi64>
+// CHECK:           %[[SHIFT:.*]] = arith.constant dense<9007199254740991> : vector<8xi64>
+// CHECK:           arith.addi %{{.*}}, %[[SHIFT]] : vector<8xi64>
+// CHECK:           scf.if %{{.*}} -> (vector<8xi64>) {
+// CHECK:             arith.sitofp
+// CHECK:             arith.fptosi
+// CHECK:           } else {
+// CHECK:             arith.remsi %{{.*}} : vector<8xi64>
+// CHECK:           }
+// CHECK:           arith.index_cast %{{.*}} : vector<8xi64> to vector<8xindex>
+// CHECK-NOT:       arith.remsi %{{.*}} : vector<8xi32>
+func.func @division_through_double(%d32: memref<?xi32>, %d64: memref<?xi64>,
+                                   %out32: memref<?xi32>, %out64: memref<?xi64>,
+                                   %outi: memref<?xi64>, %g: index,
+                                   %uniform: i64, %n: index) {
+  %c0 = arith.constant 0 : index
+  %c1 = arith.constant 1 : index
+  // expected-remark @below {{lanes run 8 at a time}}
+  scf.for %lane = %c0 to %g step %c1 {
+    %x32 = memref.load %d32[%lane] : memref<?xi32>
+    %lane32 = arith.index_cast %lane : index to i32
+    %r32 = arith.remsi %x32, %lane32 : i32
+    memref.store %r32, %out32[%lane] : memref<?xi32>
+    %x64 = memref.load %d64[%lane] : memref<?xi64>
+    %q64 = arith.divui %x64, %uniform : i64
+    memref.store %q64, %out64[%lane] : memref<?xi64>
+    %wrapped = arith.remsi %lane, %n : index
+    %wrapped64 = arith.index_cast %wrapped : index to i64
+    memref.store %wrapped64, %outi[%lane] : memref<?xi64>
+  } {simplan.lanes}
+  return
+}
+
+// -----
+
 // A 64-bit remainder by a constant below 2^16 that is not a power of two is
 // computed from the 32-bit halves (x86 has no vector high half of a 64-bit
 // product, so LLVM would take the i64 remainder lane by lane):
@@ -262,7 +319,8 @@ func.func @constant_divisor(%d: memref<?xi64>, %out: memref<?xi64>, %g: index) {
 // CHECK-LABEL: func.func @uniform_select
 // CHECK:         scf.for
 // CHECK:           %[[KEY:.*]] = scf.if %{{.*}} -> (vector<8xindex>) {
-// CHECK:             arith.divui %{{.*}} : vector<8xindex>
+// CHECK:             arith.divf %{{.*}} : vector<8xf64>
+// CHECK:             arith.divui %{{.*}} : vector<8xi64>
 // CHECK:           } else {
 // CHECK-NEXT:        scf.yield
 // CHECK-NEXT:      }
