@@ -169,8 +169,10 @@ def SimVectorizeLanes : Pass<"sim-vectorize-lanes"> {
     truncated from the correctly rounded x / d is the integer quotient (a
     quotient that is not an integer lies at least 1 / |d| from the nearest
     one, further than the rounding error). 32-bit operands always qualify;
-    64-bit and `index` ones (the wrap of a window read) are checked per
-    chunk, and a chunk with a lane out of range divides as before. A
+    64-bit and `index` ones (the wrap of a window read) where every lane of
+    the chunk is within 2^51 of zero (they convert through the bits of
+    1.5 * 2^52, which needs no AVX-512; with `wide-int-conversions`, within
+    2^53, by the target's conversions), else the chunk divides as before. A
     64-bit remainder by a constant below 2^16 that is not a power of two
     is computed from 32-bit remainders of the two halves, which x86 has
     in vector form where it has no vector high half of a 64-bit product.
@@ -184,6 +186,10 @@ def SimVectorizeLanes : Pass<"sim-vectorize-lanes"> {
            "Lanes per SIMD chunk (a power of two from 2 to 64)">,
     Option<"report", "report", "bool", "false",
            "A remark at every lane loop: widened, or why it stays scalar">,
+    Option<"wideIntConversions", "wide-int-conversions", "bool", "false",
+           "The target converts vectors of 64-bit integers to and from f64 "
+           "(x86-64-v4, AVX-512DQ): 64-bit divisions in f64 lanes use "
+           "them, for lanes within 2^53 of zero">,
   ];
   let statistics = [
     Statistic<"numWidened", "widened-loops", "Lane loops run in SIMD chunks">,
@@ -192,8 +198,8 @@ def SimVectorizeLanes : Pass<"sim-vectorize-lanes"> {
   ];
   let dependentDialects = [
     "::mlir::arith::ArithDialect", "::mlir::LLVM::LLVMDialect",
-    "::mlir::memref::MemRefDialect", "::mlir::scf::SCFDialect",
-    "::mlir::vector::VectorDialect"
+    "::mlir::math::MathDialect", "::mlir::memref::MemRefDialect",
+    "::mlir::scf::SCFDialect", "::mlir::vector::VectorDialect"
   ];
 }
 

@@ -25,6 +25,7 @@
 #include "sim/Conversion/Passes.h"
 
 #include "mlir/Dialect/LLVMIR/LLVMDialect.h"
+#include "mlir/Dialect/Math/IR/Math.h"
 #include "mlir/Dialect/Vector/IR/VectorOps.h"
 #include "mlir/IR/Dominance.h"
 #include "mlir/IR/IRMapping.h"
@@ -152,9 +153,10 @@ static uint64_t narrowRemainderDivisor(Operation *op) {
 /// truncated from the correctly rounded f64 x / d is exact: one that is not
 /// an integer lies at least 1 / |d| from the nearest integer, further than
 /// the rounding error |x / d| 2^-53 (and an integer quotient is exact). So
-/// are 32-bit operands always, and 64-bit ones where a chunk's lanes are in
-/// range (checked; else the chunk divides as before), index ones (the wrap
-/// of a window read) as 64-bit ones. A constant divisor is left to LLVM,
+/// are 32-bit operands always, and 64-bit ones where a chunk's lanes are
+/// within 2^51 of zero (checked; else the chunk divides as before; 2^51 for
+/// the conversion, see divideThroughDouble), index ones (the wrap of a
+/// window read) as 64-bit ones. A constant divisor is left to LLVM,
 /// which multiplies by its reciprocal.
 static bool dividesThroughDouble(Operation *op) {
   if (!isa<arith::DivSIOp, arith::DivUIOp, arith::RemSIOp, arith::RemUIOp>(op))
@@ -174,7 +176,8 @@ static bool isElementwise(Operation *op) {
 
 class LaneVectorizer {
 public:
-  LaneVectorizer(scf::ForOp loop, int64_t width) : loop(loop), width(width) {}
+  LaneVectorizer(scf::ForOp loop, int64_t width, bool wideConversions)
+      : loop(loop), width(width), wideConversions(wideConversions) {}
 
   /// Finds the varying values and checks that every op can be widened; on
   /// failure `why` names the first op that cannot.
@@ -257,6 +260,8 @@ private:
 
   scf::ForOp loop;
   int64_t width;
+  /// The target converts vectors of i64 to and from f64 (AVX-512DQ).
+  bool wideConversions;
   Location loc = loop.getLoc();
   DenseSet<Value> varying;
   /// Values proven to be `uniform + lane` (consecutive items of the chunk).
@@ -827,6 +832,14 @@ Value LaneVectorizer::divideThroughDouble(OpBuilder &b, Operation *op,
   }
   auto intType = cast<VectorType>(dividend.getType());
   VectorType doubles = laneType(b.getF64Type());
+  auto remainderOf = [&](OpBuilder &at, Value quotient) -> Value {
+    if (!isRemainder)
+      return quotient;
+    return arith::SubIOp::create(
+        at, loc, dividend, arith::MulIOp::create(at, loc, quotient, divisor));
+  };
+  // The quotient by the target's conversions; fptosi and fptoui truncate
+  // toward zero, as divsi and divui do.
   auto inDoubles = [&](OpBuilder &at) -> Value {
     auto toDouble = [&](Value value) -> Value {
       if (isSigned)
@@ -835,50 +848,79 @@ Value LaneVectorizer::divideThroughDouble(OpBuilder &b, Operation *op,
     };
     Value ratio =
         arith::DivFOp::create(at, loc, toDouble(dividend), toDouble(divisor));
-    // fptosi and fptoui truncate toward zero, as divsi and divui do.
-    Value quotient =
-        isSigned ? Value(arith::FPToSIOp::create(at, loc, intType, ratio))
-                 : Value(arith::FPToUIOp::create(at, loc, intType, ratio));
-    if (!isRemainder)
-      return quotient;
-    return arith::SubIOp::create(
-        at, loc, dividend, arith::MulIOp::create(at, loc, quotient, divisor));
+    if (isSigned)
+      return arith::FPToSIOp::create(at, loc, intType, ratio);
+    return arith::FPToUIOp::create(at, loc, intType, ratio);
   };
+  // Every 32-bit integer is a double, and x86 converts vectors of them both
+  // ways.
   if (elementType(intType).isInteger(32))
-    return inDoubles(b);
+    return remainderOf(b, inDoubles(b));
 
-  // 64 bits: |x| < 2^53 (x < 2^53 unsigned) in every lane that runs.
-  auto splat = [&](int64_t value) -> Value {
-    return arith::ConstantOp::create(
-        b, loc, intType,
-        DenseElementsAttr::get(intType, b.getI64IntegerAttr(value)));
+  // 64 bits: with AVX-512DQ (wideConversions) x86 converts vectors of them
+  // to and from doubles, for lanes within 2^53 of zero; elsewhere LLVM would
+  // convert lane by lane, so the lanes convert through the bits of
+  // 1.5 * 2^52, whose doubles have a unit in the last place of 1: for
+  // |v| < 2^51, bits(1.5 * 2^52) + v are the bits of 1.5 * 2^52 + v. Either
+  // needs every lane that runs in range.
+  auto splat = [&](VectorType type, Attribute value) -> Value {
+    return arith::ConstantOp::create(b, loc, type,
+                                     DenseElementsAttr::get(type, value));
   };
-  int64_t limit = int64_t(1) << 53;
+  // Made before the branch, whose builder `b` then stands after it.
+  Value magicBits, magicDouble;
+  if (!wideConversions) {
+    const double magic = 6755399441055744.0; // 1.5 * 2^52
+    magicBits = splat(intType, b.getI64IntegerAttr(0x4338000000000000));
+    magicDouble = splat(doubles, b.getF64FloatAttr(magic));
+  }
+  int64_t limit = int64_t(1) << (wideConversions ? 53 : 51);
   auto inRange = [&](Value value) -> Value {
     if (!isSigned)
       return arith::CmpIOp::create(b, loc, arith::CmpIPredicate::ult, value,
-                                   splat(limit));
-    // -2^53 < x < 2^53 <=> x + (2^53 - 1) <u 2^54 - 1 (a wrapped sum is
-    // large).
-    Value shifted = arith::AddIOp::create(b, loc, value, splat(limit - 1));
-    return arith::CmpIOp::create(b, loc, arith::CmpIPredicate::ult, shifted,
-                                 splat(2 * limit - 1));
+                                   splat(intType, b.getI64IntegerAttr(limit)));
+    // -limit < v < limit <=> v + (limit - 1) <u 2 limit - 1 (a wrapped sum
+    // is large).
+    Value shifted = arith::AddIOp::create(
+        b, loc, value, splat(intType, b.getI64IntegerAttr(limit - 1)));
+    return arith::CmpIOp::create(
+        b, loc, arith::CmpIPredicate::ult, shifted,
+        splat(intType, b.getI64IntegerAttr(2 * limit - 1)));
   };
   Value lanesInRange =
       arith::AndIOp::create(b, loc, inRange(dividend), inRange(divisor));
   if (mask) {
     // Lanes that do not run this division may hold anything.
     VectorType flags = laneType(b.getI1Type());
-    Value all = arith::ConstantOp::create(
-        b, loc, flags, DenseElementsAttr::get(flags, b.getBoolAttr(true)));
-    lanesInRange = arith::SelectOp::create(b, loc, mask, lanesInRange, all);
+    lanesInRange = arith::SelectOp::create(b, loc, mask, lanesInRange,
+                                           splat(flags, b.getBoolAttr(true)));
   }
   Value chunkInRange = vector::ReductionOp::create(
       b, loc, vector::CombiningKind::AND, lanesInRange);
   auto choice = scf::IfOp::create(b, loc, TypeRange{intType}, chunkInRange,
                                   /*withElseRegion=*/true);
   OpBuilder fast = emptyBody(choice.thenBlock());
-  scf::YieldOp::create(fast, loc, inDoubles(fast));
+  Value quotient;
+  if (wideConversions) {
+    quotient = inDoubles(fast);
+  } else {
+    auto toDouble = [&](Value value) -> Value {
+      Value bits = arith::AddIOp::create(fast, loc, value, magicBits);
+      return arith::SubFOp::create(
+          fast, loc, arith::BitcastOp::create(fast, loc, doubles, bits),
+          magicDouble);
+    };
+    Value ratio =
+        arith::DivFOp::create(fast, loc, toDouble(dividend), toDouble(divisor));
+    // |quotient| <= |dividend| < 2^51: truncated, then back through the
+    // bits.
+    Value truncated = math::TruncOp::create(fast, loc, ratio);
+    Value shiftedQuotient = arith::BitcastOp::create(
+        fast, loc, intType,
+        arith::AddFOp::create(fast, loc, truncated, magicDouble));
+    quotient = arith::SubIOp::create(fast, loc, shiftedQuotient, magicBits);
+  }
+  scf::YieldOp::create(fast, loc, remainderOf(fast, quotient));
   OpBuilder slow = emptyBody(choice.elseBlock());
   OperationState state(loc, op->getName());
   state.addOperands({dividend, divisor});
@@ -1350,11 +1392,11 @@ struct SimVectorizeLanesPass
     });
     for (scf::ForOp loop : loops) {
       std::optional<LaneVectorizer> vectorizer;
-      vectorizer.emplace(loop, width);
+      vectorizer.emplace(loop, width, wideIntConversions);
       std::string why;
       LogicalResult analyzed = vectorizer->analyze(why);
       if (succeeded(analyzed) && vectorizer->branchCostlySelects()) {
-        vectorizer.emplace(loop, width);
+        vectorizer.emplace(loop, width, wideIntConversions);
         analyzed = vectorizer->analyze(why);
       }
       if (failed(analyzed)) {

@@ -122,6 +122,8 @@ compileSharedObjects(OwningOpRef<ModuleOp> module, Location loc,
       // are still scf and vector ops.
       SimVectorizeLanesOptions lanes;
       lanes.width = lanesFor(isa);
+      // AVX-512DQ converts vectors of i64 to and from f64 (vcvtqq2pd).
+      lanes.wideIntConversions = isa == "x86-64-v4";
       pm.addPass(createSimVectorizeLanes(lanes));
       // f32 tanh as glibc computes it, in SIMD instructions instead of a
       // libm call per element (the same bits). Not in the reference

@@ -1,5 +1,6 @@
 // RUN: sim-opt %s --sim-vectorize-lanes=width=8 --split-input-file | FileCheck %s
 // RUN: sim-opt %s --sim-vectorize-lanes="width=8 report=true" --split-input-file --verify-diagnostics -o /dev/null
+// RUN: sim-opt %s --sim-vectorize-lanes="width=8 wide-int-conversions=true" --split-input-file | FileCheck %s --check-prefix=WIDE
 
 // Consecutive items of vec4 buffers: one wide load of 8 items; elementwise
 // math on the items' elements as loaded (interleaved: no shuffle); one wide
@@ -172,7 +173,8 @@ func.func @division(%d: memref<?xi64>, %out: memref<?xi64>, %g: index) {
 
 // Divisions by divisors that are not constants go through f64 where that is
 // exact: 32-bit operands always; 64-bit and index ones where every lane of
-// the chunk is within 2^53 of zero, else the integer division.
+// the chunk is within 2^51 of zero (converted through the bits of
+// 1.5 * 2^52), else the integer division.
 // CHECK-LABEL: func.func @division_through_double
 // CHECK:         scf.for
 // CHECK:           %[[X32:.*]] = arith.sitofp %{{.*}} : vector<8xi32> to vector<8xf64>
@@ -181,28 +183,56 @@ func.func @division(%d: memref<?xi64>, %out: memref<?xi64>, %g: index) {
 // CHECK:           %[[Q32:.*]] = arith.fptosi %[[R32]] : vector<8xf64> to vector<8xi32>
 // CHECK:           %[[QD32:.*]] = arith.muli %[[Q32]], %{{.*}} : vector<8xi32>
 // CHECK:           arith.subi %{{.*}}, %[[QD32]] : vector<8xi32>
-// CHECK:           %[[LIMIT:.*]] = arith.constant dense<9007199254740992> : vector<8xi64>
-// CHECK:           %[[XOK:.*]] = arith.cmpi ult, %{{.*}}, %[[LIMIT]] : vector<8xi64>
+// CHECK:           %[[X64:.*]] = llvm.load %{{.*}} -> vector<8xi64>
+// CHECK:           %[[D64:.*]] = vector.broadcast %{{.*}} : i64 to vector<8xi64>
+// CHECK:           %[[BITS:.*]] = arith.constant dense<4843621399236968448> : vector<8xi64>
+// CHECK:           %[[MAGIC:.*]] = arith.constant dense<0x4338000000000000> : vector<8xf64>
+// CHECK:           %[[LIMIT:.*]] = arith.constant dense<2251799813685248> : vector<8xi64>
+// CHECK:           %[[XOK:.*]] = arith.cmpi ult, %[[X64]], %[[LIMIT]] : vector<8xi64>
 // CHECK:           %[[LANES:.*]] = arith.andi %[[XOK]], %{{.*}} : vector<8xi1>
 // CHECK:           %[[CHUNK:.*]] = vector.reduction <and>, %[[LANES]] : vector<8xi1> into i1
 // CHECK:           scf.if %[[CHUNK]] -> (vector<8xi64>) {
-// CHECK:             arith.uitofp
-// CHECK:             arith.divf %{{.*}} : vector<8xf64>
-// CHECK:             arith.fptoui %{{.*}} : vector<8xf64> to vector<8xi64>
+// CHECK:             %[[XB:.*]] = arith.addi %[[X64]], %[[BITS]] : vector<8xi64>
+// CHECK:             %[[XS:.*]] = arith.bitcast %[[XB]] : vector<8xi64> to vector<8xf64>
+// CHECK:             %[[XF:.*]] = arith.subf %[[XS]], %[[MAGIC]] : vector<8xf64>
+// CHECK:             %[[RATIO:.*]] = arith.divf %[[XF]], %{{.*}} : vector<8xf64>
+// CHECK:             %[[TRUNC:.*]] = math.trunc %[[RATIO]] : vector<8xf64>
+// CHECK:             %[[QS:.*]] = arith.addf %[[TRUNC]], %[[MAGIC]] : vector<8xf64>
+// CHECK:             %[[QB:.*]] = arith.bitcast %[[QS]] : vector<8xf64> to vector<8xi64>
+// CHECK:             %[[Q:.*]] = arith.subi %[[QB]], %[[BITS]] : vector<8xi64>
+// CHECK:             scf.yield %[[Q]] : vector<8xi64>
 // CHECK:           } else {
-// CHECK:             arith.divui %{{.*}} : vector<8xi64>
+// CHECK:             arith.divui %[[X64]], %[[D64]] : vector<8xi64>
 // CHECK:           }
-// CHECK:           arith.index_cast %{{.*}} : vector<8xindex> to vector<8xi64>
-// CHECK:           %[[SHIFT:.*]] = arith.constant dense<9007199254740991> : vector<8xi64>
+// CHECK:           %[[SHIFT:.*]] = arith.constant dense<2251799813685247> : vector<8xi64>
 // CHECK:           arith.addi %{{.*}}, %[[SHIFT]] : vector<8xi64>
+// CHECK:           %[[RANGE:.*]] = arith.constant dense<4503599627370495> : vector<8xi64>
+// CHECK:           arith.cmpi ult, %{{.*}}, %[[RANGE]] : vector<8xi64>
 // CHECK:           scf.if %{{.*}} -> (vector<8xi64>) {
-// CHECK:             arith.sitofp
-// CHECK:             arith.fptosi
+// CHECK:             math.trunc
+// CHECK:             arith.muli
+// CHECK:             arith.subi
 // CHECK:           } else {
 // CHECK:             arith.remsi %{{.*}} : vector<8xi64>
 // CHECK:           }
 // CHECK:           arith.index_cast %{{.*}} : vector<8xi64> to vector<8xindex>
 // CHECK-NOT:       arith.remsi %{{.*}} : vector<8xi32>
+//
+// With the target's conversions (AVX-512DQ), within 2^53.
+// WIDE-LABEL: func.func @division_through_double
+// WIDE:         arith.sitofp %{{.*}} : vector<8xi32> to vector<8xf64>
+// WIDE:         %[[LIMIT:.*]] = arith.constant dense<9007199254740992> : vector<8xi64>
+// WIDE:         arith.cmpi ult, %{{.*}}, %[[LIMIT]] : vector<8xi64>
+// WIDE:         scf.if %{{.*}} -> (vector<8xi64>) {
+// WIDE-NEXT:      %[[X:.*]] = arith.uitofp %{{.*}} : vector<8xi64> to vector<8xf64>
+// WIDE-NEXT:      %[[D:.*]] = arith.uitofp %{{.*}} : vector<8xi64> to vector<8xf64>
+// WIDE-NEXT:      %[[R:.*]] = arith.divf %[[X]], %[[D]] : vector<8xf64>
+// WIDE-NEXT:      %[[Q:.*]] = arith.fptoui %[[R]] : vector<8xf64> to vector<8xi64>
+// WIDE-NEXT:      scf.yield %[[Q]] : vector<8xi64>
+// WIDE:         arith.constant dense<9007199254740991> : vector<8xi64>
+// WIDE:         arith.sitofp %{{.*}} : vector<8xi64> to vector<8xf64>
+// WIDE:         arith.fptosi %{{.*}} : vector<8xf64> to vector<8xi64>
+// WIDE-NOT:     math.trunc
 func.func @division_through_double(%d32: memref<?xi32>, %d64: memref<?xi64>,
                                    %out32: memref<?xi32>, %out64: memref<?xi64>,
                                    %outi: memref<?xi64>, %g: index,
