@@ -152,12 +152,12 @@ static uint64_t narrowRemainderDivisor(Operation *op) {
 /// tens of cycles each); but for |x| < 2^53 and 0 < |d| < 2^53 the quotient
 /// truncated from the correctly rounded f64 x / d is exact: one that is not
 /// an integer lies at least 1 / |d| from the nearest integer, further than
-/// the rounding error |x / d| 2^-53 (and an integer quotient is exact). So
-/// are 32-bit operands always, and 64-bit ones where a chunk's lanes are
-/// within 2^51 of zero (checked; else the chunk divides as before; 2^51 for
-/// the conversion, see divideThroughDouble), index ones (the wrap of a
-/// window read) as 64-bit ones. A constant divisor is left to LLVM,
-/// which multiplies by its reciprocal.
+/// the rounding error |x / d| 2^-53 (and an integer quotient is exact).
+/// 32-bit operands always qualify; 64-bit ones where every lane of a chunk
+/// is in range (checked; else the chunk divides as before; the range is
+/// 2^51 or 2^53 by how the lanes convert, see divideThroughDouble); index
+/// ones (the wrap of a window read) as 64-bit ones. A constant divisor is
+/// left to LLVM, which multiplies by its reciprocal.
 static bool dividesThroughDouble(Operation *op) {
   if (!isa<arith::DivSIOp, arith::DivUIOp, arith::RemSIOp, arith::RemUIOp>(op))
     return false;
