@@ -39,12 +39,25 @@ Value mlir::sim::applyBoundary(OpBuilder &builder, Location loc,
     return arith::MinSIOp::create(builder, loc, low, last);
   }
   case Boundary::wrap: {
+    // Nearly every read lies inside the range: only the others divide, in a
+    // branch that a GPU warp or a CPU chunk of lanes takes at the range's
+    // ends only (a remainder per read cost more than the evaluation on the
+    // CPU, and is a long sequence in PTX).
+    Value inside = arith::CmpIOp::create(
+        builder, loc, arith::CmpIPredicate::ult, index, range);
+    auto branch = scf::IfOp::create(builder, loc, TypeRange{index.getType()},
+                                    inside, /*withElseRegion=*/true);
+    OpBuilder inRange = OpBuilder::atBlockEnd(branch.thenBlock());
+    scf::YieldOp::create(inRange, loc, index);
+    OpBuilder outside = OpBuilder::atBlockEnd(branch.elseBlock());
     // remsi keeps the sign of the dividend: move negative remainders up.
-    Value rem = arith::RemSIOp::create(builder, loc, index, range);
+    Value rem = arith::RemSIOp::create(outside, loc, index, range);
     Value negative = arith::CmpIOp::create(
-        builder, loc, arith::CmpIPredicate::slt, rem, zero);
-    Value up = arith::AddIOp::create(builder, loc, rem, range);
-    return arith::SelectOp::create(builder, loc, negative, up, rem);
+        outside, loc, arith::CmpIPredicate::slt, rem, zero);
+    Value up = arith::AddIOp::create(outside, loc, rem, range);
+    Value wrapped = arith::SelectOp::create(outside, loc, negative, up, rem);
+    scf::YieldOp::create(outside, loc, wrapped);
+    return branch.getResult(0);
   }
   case Boundary::zero: {
     // One unsigned compare covers both ends (negative indices wrap high).
