@@ -66,12 +66,19 @@ sim.simulation @edges range(10) dt(1.0e-2 : f32) max_steps(1) {
 // CHECK:         %[[LOW:.*]] = arith.maxsi %[[J]], %c0
 // CHECK:         %[[CJ:.*]] = arith.minsi %[[LOW]], %[[LAST]]
 // CHECK:         memref.load %[[C]][%{{.*}}]
-//                wrap
-// CHECK:         %[[REM:.*]] = arith.remsi %[[J]], %[[N]]
-// CHECK:         %[[NEG:.*]] = arith.cmpi slt, %[[REM]], %c0
-// CHECK:         %[[UP:.*]] = arith.addi %[[REM]], %[[N]]
-// CHECK:         arith.select %[[NEG]], %[[UP]], %[[REM]]
-// CHECK:         memref.load %[[W]][%{{.*}}]
+//                wrap: a remainder only outside the range
+// CHECK:         %[[INSIDE:.*]] = arith.cmpi ult, %[[J]], %[[N]]
+// CHECK-NEXT:    %[[WJ:.*]] = scf.if %[[INSIDE]] -> (index) {
+// CHECK-NEXT:      scf.yield %[[J]] : index
+// CHECK-NEXT:    } else {
+// CHECK-NEXT:      %[[REM:.*]] = arith.remsi %[[J]], %[[N]]
+// CHECK-NEXT:      %[[NEG:.*]] = arith.cmpi slt, %[[REM]], %c0
+// CHECK-NEXT:      %[[UP:.*]] = arith.addi %[[REM]], %[[N]]
+// CHECK-NEXT:      %[[WRAPPED:.*]] = arith.select %[[NEG]], %[[UP]], %[[REM]]
+// CHECK-NEXT:      scf.yield %[[WRAPPED]] : index
+// CHECK-NEXT:    }
+// CHECK-NEXT:    %[[WAT:.*]] = arith.addi %{{.*}}, %[[WJ]] : index
+// CHECK-NEXT:    memref.load %[[W]][%[[WAT]]]
 //                zero: one unsigned compare, a safe index, then the zero
 // CHECK:         %[[IN:.*]] = arith.cmpi ult, %[[J]], %[[N]]
 // CHECK:         arith.select %[[IN]], %[[J]], %c0
