@@ -448,9 +448,9 @@ LogicalResult SimulationLowering::emitLocalSteps(ComponentOp component,
     Value exists = b.constant(b.getI1Type(), 1);
     switch (flux.getBoundary()) {
     case Boundary::wrap: {
-      Value rem = arith::RemSIOp::create(b, b.loc, reader, range);
-      reader = b.select(b.cmp(arith::CmpIPredicate::slt, rem, zero),
-                        b.add(rem, range), rem);
+      // As a window read wraps: a remainder only outside the range.
+      Value unused;
+      reader = applyBoundary(b, b.loc, flux, reader, range, unused);
       break;
     }
     case Boundary::clamp:
