@@ -60,14 +60,15 @@ Session::Session(std::shared_ptr<const Bundle> bundleIn,
   std::string name = strategyName(strategy);
   plan_ = bundle->plan(strategy);
   if (!plan_) {
-    std::vector<std::string> present;
-    for (Strategy s : bundle->strategies())
-      present.push_back(strategyName(s));
     // A distributed bundle leaves lts out unless it is asked for (and then
     // its compile fails): say so rather than leave the user guessing.
-    bool distributedBundle = !present.empty();
-    for (Strategy s : bundle->strategies())
+    std::vector<std::string> present;
+    bool distributedBundle = true;
+    for (Strategy s : bundle->strategies()) {
+      present.push_back(strategyName(s));
       distributedBundle = distributedBundle && bundle->plan(s)->distributed;
+    }
+    distributedBundle = distributedBundle && !present.empty();
     std::string why =
         distributedBundle && strategy == Strategy::Lts
             ? "; sim-translate --sim-distributed leaves lts out: local time "

@@ -863,37 +863,34 @@ Value LaneVectorizer::divideThroughDouble(OpBuilder &b, Operation *op,
   // 1.5 * 2^52, whose doubles have a unit in the last place of 1: for
   // |v| < 2^51, bits(1.5 * 2^52) + v are the bits of 1.5 * 2^52 + v. Either
   // needs every lane that runs in range.
-  auto splat = [&](VectorType type, Attribute value) -> Value {
-    return arith::ConstantOp::create(b, loc, type,
-                                     DenseElementsAttr::get(type, value));
-  };
+  Type i64 = b.getI64Type();
   // Made before the branch, whose builder `b` then stands after it.
   Value magicBits, magicDouble;
   if (!wideConversions) {
     const double magic = 6755399441055744.0; // 1.5 * 2^52
-    magicBits = splat(intType, b.getI64IntegerAttr(0x4338000000000000));
-    magicDouble = splat(doubles, b.getF64FloatAttr(magic));
+    magicBits = splat(b, i64, b.getI64IntegerAttr(0x4338000000000000));
+    magicDouble = splat(b, b.getF64Type(), b.getF64FloatAttr(magic));
   }
   int64_t limit = int64_t(1) << (wideConversions ? 53 : 51);
   auto inRange = [&](Value value) -> Value {
     if (!isSigned)
       return arith::CmpIOp::create(b, loc, arith::CmpIPredicate::ult, value,
-                                   splat(intType, b.getI64IntegerAttr(limit)));
+                                   splat(b, i64, b.getI64IntegerAttr(limit)));
     // -limit < v < limit <=> v + (limit - 1) <u 2 limit - 1 (a wrapped sum
     // is large).
     Value shifted = arith::AddIOp::create(
-        b, loc, value, splat(intType, b.getI64IntegerAttr(limit - 1)));
+        b, loc, value, splat(b, i64, b.getI64IntegerAttr(limit - 1)));
     return arith::CmpIOp::create(
         b, loc, arith::CmpIPredicate::ult, shifted,
-        splat(intType, b.getI64IntegerAttr(2 * limit - 1)));
+        splat(b, i64, b.getI64IntegerAttr(2 * limit - 1)));
   };
   Value lanesInRange =
       arith::AndIOp::create(b, loc, inRange(dividend), inRange(divisor));
   if (mask) {
     // Lanes that do not run this division may hold anything.
-    VectorType flags = laneType(b.getI1Type());
-    lanesInRange = arith::SelectOp::create(b, loc, mask, lanesInRange,
-                                           splat(flags, b.getBoolAttr(true)));
+    lanesInRange =
+        arith::SelectOp::create(b, loc, mask, lanesInRange,
+                                splat(b, b.getI1Type(), b.getBoolAttr(true)));
   }
   Value chunkInRange = vector::ReductionOp::create(
       b, loc, vector::CombiningKind::AND, lanesInRange);
@@ -936,22 +933,20 @@ Value LaneVectorizer::remainderByHalves(OpBuilder &b, Value lanes,
   // with c < 2^16 every term fits in 32 bits.
   VectorType wide = laneType(b.getI64Type());
   VectorType narrow = laneType(b.getI32Type());
-  auto splat = [&](VectorType type, uint64_t value) -> Value {
-    return arith::ConstantOp::create(
-        b, loc, type,
-        DenseElementsAttr::get(type,
-                               b.getIntegerAttr(type.getElementType(), value)));
-  };
-  Value c = splat(narrow, divisor);
+  Value c = splat(b, b.getI32Type(), b.getI32IntegerAttr(divisor));
   Value high = arith::TruncIOp::create(
-      b, loc, narrow, arith::ShRUIOp::create(b, loc, lanes, splat(wide, 32)));
+      b, loc, narrow,
+      arith::ShRUIOp::create(
+          b, loc, lanes, splat(b, b.getI64Type(), b.getI64IntegerAttr(32))));
   Value low = arith::TruncIOp::create(b, loc, narrow, lanes);
   Value highRemainder = arith::RemUIOp::create(b, loc, high, c);
   Value lowRemainder = arith::RemUIOp::create(b, loc, low, c);
   uint64_t scale = (uint64_t(1) << 32) % divisor;
-  Value scaled = scale == 1 ? highRemainder
-                            : Value(arith::MulIOp::create(
-                                  b, loc, highRemainder, splat(narrow, scale)));
+  Value scaled =
+      scale == 1 ? highRemainder
+                 : Value(arith::MulIOp::create(
+                       b, loc, highRemainder,
+                       splat(b, b.getI32Type(), b.getI32IntegerAttr(scale))));
   Value sum = arith::AddIOp::create(b, loc, scaled, lowRemainder);
   return arith::ExtUIOp::create(b, loc, wide,
                                 arith::RemUIOp::create(b, loc, sum, c));

@@ -70,7 +70,7 @@ struct Options {
   sim_backend backend = SIM_BACKEND_AUTO;
   sim_strategy strategy = SIM_STRATEGY_HIP;
   /// Whether --strategy was given (else a bundle without hip runs the
-  /// first of its plans in defaultStrategies).
+  /// first plan it has, defaultStrategy in sim-run.cpp).
   bool strategyGiven = false;
   int64_t steps = 100;
   int64_t repeat = 1;
@@ -128,7 +128,7 @@ std::optional<int64_t> parseInteger(std::string_view text, int64_t min,
 /// case; powers of 1024), at most INT64_MAX; nullopt otherwise.
 std::optional<int64_t> parseSize(std::string_view text);
 
-/// A positive finite number as strtod reads it (the whole text), or
+/// A finite number >= 0 as strtod reads it (the whole text; -0 as 0), or
 /// nullopt.
 std::optional<double> parseNonNegative(std::string_view text);
 
