@@ -668,53 +668,58 @@ LogicalResult SimulationLowering::emitLocalSteps(ComponentOp component,
       // from one value per block whether the items a block's items reach
       // (`below` before its first, `above` after its last, and, unless
       // `clipped` to the range, all inside it) have its own sub-step: then
-      // the code is that sub-step, else minus it (`ownLevels`) or minus the
-      // finest sub-step among them (a flux writer's interface takes that of
-      // its coarsest reader, a multiple of it).
+      // the code is that sub-step, else minus `mixed(g, first, last)`, the
+      // finest sub-step an item of the block takes (a slot that is not a
+      // multiple of it starts none of them).
       Value range = arith::IndexCastOp::create(b, b.loc, b.getI64Type(),
                                                kernel.values.range);
       Value blockItems = b.i64(kLevelBlock);
-      auto neighbourhoodCodes = [&](int64_t section, int64_t below,
-                                    int64_t above, bool clipped,
-                                    bool ownLevels) {
-        auto loop = scf::ForOp::create(b, b.loc, zero, blocks, one);
-        OpBuilder::InsertionGuard guard(b);
-        b.setInsertionPoint(loop.getBody()->getTerminator());
-        Value g = loop.getInductionVar();
-        Value own = levelAt(g);
-        Value firstItem = b.mul(g, blockItems);
-        Value lastItem =
-            b.min(b.add(firstItem, b.i64(kLevelBlock - 1)), b.sub(range, one));
-        Value low = b.sub(firstItem, b.i64(below));
-        Value high = b.add(lastItem, b.i64(above));
-        Value inside = b.constant(b.getI1Type(), 1);
-        if (!clipped)
-          inside = arith::AndIOp::create(
-              b, b.loc, b.cmp(arith::CmpIPredicate::sge, low, zero),
-              b.cmp(arith::CmpIPredicate::slt, high, range));
-        Value lowBlock =
-            arith::DivUIOp::create(b, b.loc, b.max(low, zero), blockItems);
-        Value highBlock = arith::DivUIOp::create(
-            b, b.loc, b.min(high, b.sub(range, one)), blockItems);
-        auto scan =
-            scf::ForOp::create(b, b.loc, lowBlock, b.add(highBlock, one), one,
-                               ValueRange{inside, own});
-        {
-          OpBuilder::InsertionGuard inner(b);
-          b.setInsertionPointToStart(scan.getBody());
-          Value level = levelAt(scan.getInductionVar());
-          Value same = b.cmp(arith::CmpIPredicate::eq, level, own);
-          scf::YieldOp::create(
-              b, b.loc,
-              ValueRange{arith::AndIOp::create(b, b.loc,
-                                               scan.getRegionIterArg(0), same),
-                         b.min(scan.getRegionIterArg(1), level)});
-        }
-        Value code = b.select(scan.getResult(0), own,
-                              b.sub(zero, ownLevels ? own : scan.getResult(1)));
-        b.store(code, levels,
-                b.toIndex(b.add(b.mul(b.i64(section), blocks), g)));
-      };
+      auto neighbourhoodCodes =
+          [&](int64_t section, int64_t below, int64_t above, bool clipped,
+              function_ref<Value(Value, Value, Value)> mixed) {
+            auto loop = scf::ForOp::create(b, b.loc, zero, blocks, one);
+            OpBuilder::InsertionGuard guard(b);
+            b.setInsertionPoint(loop.getBody()->getTerminator());
+            Value g = loop.getInductionVar();
+            Value own = levelAt(g);
+            Value firstItem = b.mul(g, blockItems);
+            Value lastItem = b.min(b.add(firstItem, b.i64(kLevelBlock - 1)),
+                                   b.sub(range, one));
+            Value low = b.sub(firstItem, b.i64(below));
+            Value high = b.add(lastItem, b.i64(above));
+            Value inside = b.constant(b.getI1Type(), 1);
+            if (!clipped)
+              inside = arith::AndIOp::create(
+                  b, b.loc, b.cmp(arith::CmpIPredicate::sge, low, zero),
+                  b.cmp(arith::CmpIPredicate::slt, high, range));
+            Value lowBlock =
+                arith::DivUIOp::create(b, b.loc, b.max(low, zero), blockItems);
+            Value highBlock = arith::DivUIOp::create(
+                b, b.loc, b.min(high, b.sub(range, one)), blockItems);
+            auto scan =
+                scf::ForOp::create(b, b.loc, lowBlock, b.add(highBlock, one),
+                                   one, ValueRange{inside});
+            {
+              OpBuilder::InsertionGuard inner(b);
+              b.setInsertionPointToStart(scan.getBody());
+              Value same = b.cmp(arith::CmpIPredicate::eq,
+                                 levelAt(scan.getInductionVar()), own);
+              scf::YieldOp::create(b, b.loc,
+                                   arith::AndIOp::create(
+                                       b, b.loc, scan.getRegionIterArg(0), same)
+                                       .getResult());
+            }
+            Value code =
+                b.ifThenElse(
+                     b.getI64Type(), scan.getResult(0),
+                     [&]() -> SmallVector<Value> { return {own}; },
+                     [&]() -> SmallVector<Value> {
+                       return {b.sub(zero, mixed(g, firstItem, lastItem))};
+                     })
+                    .getResult(0);
+            b.store(code, levels,
+                    b.toIndex(b.add(b.mul(b.i64(section), blocks), g)));
+          };
       // Where the run of equal codes that holds each block ends (the block
       // after its last), from the last block back.
       auto runEnds = [&](int64_t codeSection, int64_t runSection) {
@@ -742,12 +747,57 @@ LogicalResult SimulationLowering::emitLocalSteps(ComponentOp component,
                 .getResult(0);
         b.store(end, levels, elementOf(runSection, g));
       };
+      // Every item of a block of the component takes the block's sub-step.
       neighbourhoodCodes(kLevelStepCodes, reach, reach, /*clipped=*/!cyclic,
-                         /*ownLevels=*/true);
+                         [&](Value g, Value, Value) { return levelAt(g); });
       runEnds(kLevelStepCodes, kLevelStepRuns);
       if (fluxWriter) {
+        // An interface takes the sub-step of its coarsest reader (the whole
+        // big step when it has none), so a block next to a finer one is due
+        // only at its own sub-steps, not at every sub-step of the finer
+        // block its state reads reach. The interfaces whose readers all lie
+        // in the block take its sub-step; the others (at most the window's
+        // width at either end) are folded one by one.
+        ArrayRef<int64_t> offsets = fluxWriter.getFluxWindowAttr().asArrayRef();
+        auto interfaceLevel = [&](Value interface) {
+          Value coarsest = foldReaders(
+              kernel, b.toIndex(interface), zero,
+              [&](Value reader, Value exists, Value coarsest) {
+                Value block = arith::IndexCastOp::create(
+                    b, b.loc, b.getI64Type(),
+                    arith::DivUIOp::create(b, b.loc, reader,
+                                           b.index(kLevelBlock)));
+                return b.select(exists, b.max(coarsest, levelAt(block)),
+                                coarsest);
+              });
+          return b.select(b.cmp(arith::CmpIPredicate::eq, coarsest, zero), size,
+                          coarsest);
+        };
+        auto finestInterface = [&](Value g, Value first, Value last) {
+          // Interface j reads j - o, o in [offsets[0], offsets[1]]: all in
+          // the block for j in [first + offsets[1], last + offsets[0]].
+          Value end = b.add(last, one);
+          Value innerLow = b.max(first, b.add(first, b.i64(offsets[1])));
+          Value innerHigh = b.min(last, b.add(last, b.i64(offsets[0])));
+          Value hasInner =
+              b.cmp(arith::CmpIPredicate::sle, innerLow, innerHigh);
+          Value finest = b.select(hasInner, levelAt(g), size);
+          auto fold = [&](Value from, Value to, Value init) {
+            auto loop =
+                scf::ForOp::create(b, b.loc, from, to, one, ValueRange{init});
+            OpBuilder::InsertionGuard guard(b);
+            b.setInsertionPointToStart(loop.getBody());
+            scf::YieldOp::create(b, b.loc,
+                                 b.min(loop.getRegionIterArg(0),
+                                       interfaceLevel(loop.getInductionVar())));
+            return loop.getResult(0);
+          };
+          Value lowEnd = b.min(innerLow, end);
+          finest = fold(first, lowEnd, finest);
+          return fold(b.max(b.add(innerHigh, one), lowEnd), end, finest);
+        };
         neighbourhoodCodes(kLevelFluxCodes, fluxBelow, fluxAbove,
-                           /*clipped=*/false, /*ownLevels=*/false);
+                           /*clipped=*/false, finestInterface);
         runEnds(kLevelFluxCodes, kLevelFluxRuns);
       }
     });

@@ -257,6 +257,7 @@ private:
   SmallVector<Value> laneAddresses(OpBuilder &b, Value pointer, Type scalar,
                                    Value index, int64_t stride, int64_t count);
   Value contiguousCheck(OpBuilder &b, Value index, Value mask);
+  bool likelyUniform(Value index) const;
 
   scf::ForOp loop;
   int64_t width;
@@ -683,6 +684,44 @@ Value LaneVectorizer::contiguousCheck(OpBuilder &b, Value index, Value mask) {
   if (mask)
     all = arith::AndIOp::create(b, loc, all, allLanes(b, mask));
   return all;
+}
+
+/// True when `index` is an item divided by a constant of at least a chunk's
+/// lanes (a block's levels: item / 32), give or take uniform offsets and
+/// clamps: then most chunks read one element, which a scalar load and a
+/// broadcast serve at a fraction of a gather's cost.
+bool LaneVectorizer::likelyUniform(Value index) const {
+  auto constantAtLeast = [](Value value, int64_t bound) {
+    APInt constant;
+    return matchPattern(value, m_ConstantInt(&constant)) &&
+           constant.getActiveBits() < 63 && constant.getSExtValue() >= bound;
+  };
+  while (Operation *op = index.getDefiningOp()) {
+    if (isa<arith::IndexCastOp, arith::IndexCastUIOp, arith::ExtSIOp,
+            arith::ExtUIOp>(op)) {
+      index = op->getOperand(0);
+      continue;
+    }
+    if (isa<arith::DivUIOp, arith::DivSIOp>(op))
+      return constantAtLeast(op->getOperand(1), width);
+    if (isa<arith::ShRUIOp, arith::ShRSIOp>(op)) {
+      APInt shift;
+      return matchPattern(op->getOperand(1), m_ConstantInt(&shift)) &&
+             shift.getZExtValue() < 63 &&
+             (int64_t(1) << shift.getZExtValue()) >= width;
+    }
+    // A uniform offset or clamp keeps lanes that were equal equal.
+    if (isa<arith::AddIOp, arith::SubIOp, arith::MinSIOp, arith::MinUIOp,
+            arith::MaxSIOp, arith::MaxUIOp>(op)) {
+      Value lhs = op->getOperand(0), rhs = op->getOperand(1);
+      if (isVarying(lhs) == isVarying(rhs))
+        return false;
+      index = isVarying(lhs) ? lhs : rhs;
+      continue;
+    }
+    return false;
+  }
+  return false;
 }
 
 //===----------------------------------------------------------------------===//
@@ -1138,20 +1177,22 @@ void LaneVectorizer::widenLoad(OpBuilder &b, memref::LoadOp op, Value mask) {
     }
     return parts;
   };
-  // Gathers, one per element, at addresses every lane may read: lanes a
-  // branch does not take load from an active lane's element.
-  auto gather = [&](OpBuilder &at) {
-    Value safe = index;
-    if (mask) {
-      Value largest =
-          splat(at, at.getI64Type(),
-                at.getI64IntegerAttr(std::numeric_limits<int64_t>::max()));
-      Value active = arith::SelectOp::create(at, loc, mask, index, largest);
-      Value lowest = vector::ReductionOp::create(
-          at, loc, vector::CombiningKind::MINSI, active);
-      Value lowests = vector::BroadcastOp::create(at, loc, i64Lanes, lowest);
-      safe = arith::SelectOp::create(at, loc, mask, index, lowests);
-    }
+  // The lanes' indices where every lane may read: lanes a branch does not
+  // take read an active lane's element.
+  auto safeIndex = [&](OpBuilder &at) {
+    if (!mask)
+      return index;
+    Value largest =
+        splat(at, at.getI64Type(),
+              at.getI64IntegerAttr(std::numeric_limits<int64_t>::max()));
+    Value active = arith::SelectOp::create(at, loc, mask, index, largest);
+    Value lowest = vector::ReductionOp::create(
+        at, loc, vector::CombiningKind::MINSI, active);
+    Value lowests = vector::BroadcastOp::create(at, loc, i64Lanes, lowest);
+    return arith::SelectOp::create(at, loc, mask, index, lowests).getResult();
+  };
+  // Gathers, one per element, at the safe indices `safe`.
+  auto gatherAt = [&](OpBuilder &at, Value safe) {
     Value everyLane = splat(at, at.getI1Type(), at.getBoolAttr(true));
     Value zero =
         arith::ConstantOp::create(at, loc, lanes, at.getZeroAttr(lanes));
@@ -1163,6 +1204,38 @@ void LaneVectorizer::widenLoad(OpBuilder &b, memref::LoadOp op, Value mask) {
           at.getI32IntegerAttr(alignment)));
     }
     return parts;
+  };
+  auto gather = [&](OpBuilder &at) { return gatherAt(at, safeIndex(at)); };
+  // Where the index is likely the same in every lane (likelyUniform), the
+  // gathers only when it is not; else one scalar load per element, to every
+  // lane.
+  auto gatherUnlessUniform = [&](OpBuilder &at) -> SmallVector<Value> {
+    if (!likelyUniform(op.getIndices()[0]))
+      return gather(at);
+    Value safe = safeIndex(at);
+    Value first = vector::ExtractOp::create(at, loc, safe, 0);
+    Value firsts = vector::BroadcastOp::create(at, loc, i64Lanes, first);
+    Value uniform =
+        allLanes(at, arith::CmpIOp::create(at, loc, arith::CmpIPredicate::eq,
+                                           safe, firsts));
+    SmallVector<Type> types(count, lanes);
+    auto choice = scf::IfOp::create(at, loc, types, uniform, true);
+    OpBuilder one = emptyBody(choice.thenBlock());
+    Value address = firstAddress(one, pointer, scalar, safe, stride);
+    SmallVector<Value> broadcasts;
+    for (int64_t k = 0; k < count; ++k) {
+      Value element = address;
+      if (k != 0)
+        element = LLVM::GEPOp::create(
+            one, loc, LLVM::LLVMPointerType::get(one.getContext()), scalar,
+            address, ArrayRef<LLVM::GEPArg>{k});
+      Value value = LLVM::LoadOp::create(one, loc, scalar, element, alignment);
+      broadcasts.push_back(vector::BroadcastOp::create(one, loc, lanes, value));
+    }
+    scf::YieldOp::create(one, loc, broadcasts);
+    OpBuilder many = emptyBody(choice.elseBlock());
+    scf::YieldOp::create(many, loc, gatherAt(many, safe));
+    return SmallVector<Value>(choice.getResults());
   };
 
   // Elements of several scalars without padding are held interleaved, as
@@ -1203,7 +1276,7 @@ void LaneVectorizer::widenLoad(OpBuilder &b, memref::LoadOp op, Value mask) {
     OpBuilder fast = emptyBody(choice.thenBlock());
     scf::YieldOp::create(fast, loc, wideLoad(fast));
     OpBuilder slow = emptyBody(choice.elseBlock());
-    scf::YieldOp::create(slow, loc, gather(slow));
+    scf::YieldOp::create(slow, loc, gatherUnlessUniform(slow));
     parts = SmallVector<Value>(choice.getResults());
   }
   wide.parts.assign(parts.begin(), parts.end());

@@ -81,7 +81,24 @@ sim.simulation @rod range(100) dt(1.0e-2 : f32) max_steps(8) {
 // CHECK:           scf.for
 // CHECK:             scf.for
 // CHECK:               memref.atomic_rmw maxs
-// CHECK:       func.func @limit_levels_Cells(
+
+// A block whose interfaces reach another sub-step is due at the finest
+// sub-step among its interfaces (each that of its coarsest reader, j and
+// j + 1 here), not at that of the finest block its interfaces reach: the
+// interfaces whose readers all lie in the block take its own, those at its
+// two ends are folded over their readers.
+// CHECK-LABEL: func.func @limit_levels_Cells(
+// CHECK:         scf.if
+// CHECK:         } else {
+// CHECK:           scf.for
+// CHECK:             scf.for %{{.*}} = %c-1 to %c1
+// CHECK:               arith.maxsi
+// CHECK:             arith.minsi
+// CHECK:           scf.for
+// CHECK:             scf.for %{{.*}} = %c-1 to %c1
+// CHECK:               arith.maxsi
+// CHECK:             arith.minsi
+// CHECK:       func.func @local_flux_Flux(
 
 // ZERO-LABEL:  func.func @levels_Cells(
 // ZERO-COUNT-2: memref.atomic_rmw maxs

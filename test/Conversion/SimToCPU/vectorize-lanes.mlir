@@ -443,3 +443,45 @@ func.func @stays_scalar(%in: memref<?xindex>, %out: memref<?xf32>, %sum: memref<
   } {simplan.lanes}
   return
 }
+
+// -----
+
+// A load at an item divided by at least the lanes of a chunk (a block's
+// level: half + item / 32) is most often the same element in every lane:
+// one scalar load to every lane when all lanes agree, a gather only when
+// they do not. An index divided by less (item / 4) gathers as before.
+// CHECK-LABEL: func.func @block_index_loads
+// CHECK:         scf.for
+// CHECK:           %[[INDEX:.*]] = arith.index_cast %{{.*}} : vector<8xindex> to vector<8xi64>
+// CHECK:           } else {
+// CHECK:             %[[FIRST:.*]] = vector.extract %[[INDEX]][0] : i64 from vector<8xi64>
+// CHECK:             %[[FIRSTS:.*]] = vector.broadcast %[[FIRST]] : i64 to vector<8xi64>
+// CHECK:             %[[SAME:.*]] = arith.cmpi eq, %[[INDEX]], %[[FIRSTS]] : vector<8xi64>
+// CHECK:             %[[ALL:.*]] = vector.reduction <and>, %[[SAME]] : vector<8xi1> into i1
+// CHECK:             scf.if %[[ALL]] -> (vector<8xi64>) {
+// CHECK:               %[[ONE:.*]] = llvm.load %{{.*}} : !llvm.ptr -> i64
+// CHECK:               vector.broadcast %[[ONE]] : i64 to vector<8xi64>
+// CHECK:             } else {
+// CHECK:               llvm.intr.masked.gather
+// CHECK:           arith.divui %{{.*}}, %{{.*}} : vector<8xindex>
+// CHECK-NOT:       llvm.load %{{.*}} : !llvm.ptr -> i64
+// CHECK:           llvm.intr.masked.gather
+// CHECK:         return
+func.func @block_index_loads(%levels: memref<?xi64>, %out: memref<?xi64>, %half: index, %base: index, %g: index) {
+  %c0 = arith.constant 0 : index
+  %c1 = arith.constant 1 : index
+  %c4 = arith.constant 4 : index
+  %c32 = arith.constant 32 : index
+  // expected-remark @below {{lanes run 8 at a time}}
+  scf.for %lane = %c0 to %g step %c1 {
+    %item = arith.addi %base, %lane : index
+    %block = arith.divui %item, %c32 : index
+    %at = arith.addi %half, %block : index
+    %level = memref.load %levels[%at] : memref<?xi64>
+    %quarter = arith.divui %item, %c4 : index
+    %other = memref.load %levels[%quarter] : memref<?xi64>
+    %sum = arith.addi %level, %other : i64
+    memref.store %sum, %out[%item] : memref<?xi64>
+  } {simplan.lanes}
+  return
+}
