@@ -20,8 +20,9 @@
 //                    block starts a sub-step at q: its flux from C's state
 //                    at T + q, held until that block's next sub-step
 //     local_step_C   slot q of the big step: every item whose block's
-//                    sub-step divides q takes one sub-step from T + q
-//     local_advance_C  (one thread) the next slot: q + finest sub-step
+//                    sub-step divides q takes one sub-step from T + q; the
+//                    invocation that finishes last moves the clock to the
+//                    next slot, q + the finest sub-step
 //   local_parity_C   blocks that took an even number of sub-steps copy
 //                    their result into the target half
 //
@@ -38,7 +39,9 @@
 // identity); limit_levels_C turns the codes into sub-steps, clears half
 // 1 - p for the next big step and writes the codes and runs. The sub-step
 // clock of the component holds: Begin, the time T + q of the next slot
-// (advance resets it to T); Size, the finest sub-step. Which half of a
+// (advance resets it to T); Size, the finest sub-step; Done, the
+// invocations of local_step_C that finished the slot so far (0 between
+// launches). Which half of a
 // buffer holds a block's latest level follows from its sub-step and the
 // slot alone, so no flag is written during a slot and every reader can
 // tell (KernelBody.cpp, the `local` loads).
@@ -937,18 +940,16 @@ LogicalResult SimulationLowering::emitLocalSteps(ComponentOp component,
       target.reduceIntoClock(b, kernel, count, arith::AtomicRMWKind::addi,
                              evaluationSlots.lookup(component));
     });
+    // The next slot where a block starts a sub-step, set by the invocation
+    // that finishes the slot last (every other one has read `now`): no
+    // launch of its own. The sub-step clock's count slot, which `lts` does
+    // not otherwise use, counts the invocations.
+    target.afterLastInvocation(b, kernel, sub + kSubCount, [&] {
+      Value finest = b.load(kernel.clock, b.index(sub + kSubSize));
+      b.store(b.add(now, finest), kernel.clock, b.index(sub + kSubBegin));
+    });
     if (failed(endKernel(kernel, simplan::LaunchShape::items, slotLaunches,
                          component)))
-      return failure();
-  }
-
-  // local_advance_C: the next slot where a block starts a sub-step.
-  {
-    Kernel kernel = beginKernel(getKernelName(kernels, "local_advance", name));
-    Value now = b.load(kernel.clock, b.index(sub + kSubBegin));
-    Value finest = b.load(kernel.clock, b.index(sub + kSubSize));
-    b.store(b.add(now, finest), kernel.clock, b.index(sub + kSubBegin));
-    if (failed(endKernel(kernel, simplan::LaunchShape::single, slotLaunches)))
       return failure();
   }
 

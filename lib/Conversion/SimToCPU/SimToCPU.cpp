@@ -203,6 +203,31 @@ public:
              b.index(slot));
   }
 
+  /// An invocation runs groups `first` to `end` of the launch: it adds
+  /// them to the counter, and the one that completes the launch's groups
+  /// (the range in groups; a launch may come in several ranges) runs `body`.
+  void afterLastInvocation(KernelBuilder &b, Kernel &kernel, int64_t counter,
+                           function_ref<void()> body) override {
+    unsigned count = kernel.func.getNumArguments();
+    Value first = kernel.func.getArgument(count - 3);
+    Value end = kernel.func.getArgument(count - 2);
+    Value size = kernel.func.getArgument(count - 1);
+    Value mine = b.sub(end, first);
+    Value range = arith::IndexCastOp::create(b, b.loc, b.getI64Type(),
+                                             kernel.values.range);
+    Value groups = arith::DivUIOp::create(
+        b, b.loc, b.sub(b.add(range, size), b.i64(1)), size);
+    b.ifThen(b.cmp(arith::CmpIPredicate::sgt, mine, b.i64(0)), [&] {
+      Value before = b.atomic(arith::AtomicRMWKind::addi, mine, kernel.clock,
+                              b.index(counter));
+      b.ifThen(b.cmp(arith::CmpIPredicate::eq, b.add(before, mine), groups),
+               [&] {
+                 b.store(b.i64(0), kernel.clock, b.index(counter));
+                 body();
+               });
+    });
+  }
+
 private:
   static Value groupSize(Kernel &kernel) { return kernel.targetState[0]; }
 

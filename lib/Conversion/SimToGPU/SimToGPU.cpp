@@ -181,6 +181,26 @@ public:
     });
   }
 
+  /// Every thread group of the grid counts itself once all its threads are
+  /// done (a barrier); the group that completes the grid runs `body` in
+  /// one thread.
+  void afterLastInvocation(KernelBuilder &b, Kernel &kernel, int64_t counter,
+                           function_ref<void()> body) override {
+    gpu::BarrierOp::create(b, b.loc);
+    b.ifThen(isFirstThread(b), [&] {
+      Value groups = arith::IndexCastOp::create(
+          b, b.loc, b.getI64Type(),
+          gpu::GridDimOp::create(b, b.loc, gpu::Dimension::x));
+      Value before = b.atomic(arith::AtomicRMWKind::addi, b.i64(1),
+                              kernel.clock, b.index(counter));
+      b.ifThen(b.cmp(arith::CmpIPredicate::eq, b.add(before, b.i64(1)), groups),
+               [&] {
+                 b.store(b.i64(0), kernel.clock, b.index(counter));
+                 body();
+               });
+    });
+  }
+
   bool hasCaches() const override { return true; }
 
   Value groupSize(KernelBuilder &b, Kernel &) override {

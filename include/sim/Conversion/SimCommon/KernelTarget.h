@@ -198,6 +198,15 @@ public:
   /// reducesPerGroup, at group level once per group.
   virtual void reduceIntoClock(KernelBuilder &b, Kernel &kernel, LaneVar value,
                                arith::AtomicRMWKind kind, int64_t slot) = 0;
+  /// Runs `body` once per launch, in the invocation that gets there last,
+  /// when every invocation of the launch has got there: at the kernel's top
+  /// level, at its end. Invocations count themselves in clock slot
+  /// `counter`, which is 0 before the launch and left 0 (so the next
+  /// launch finds it so). What the invocations read before this point may
+  /// be changed by `body` (a single-thread launch after this one, saved).
+  virtual void afterLastInvocation(KernelBuilder &b, Kernel &kernel,
+                                   int64_t counter,
+                                   function_ref<void()> body) = 0;
   /// Whether a group may decide on its own, from a clock slot that other
   /// groups of the same launch change atomically, to skip its lanes, and
   /// then combine its lanes into that slot itself (reduceIntoClock at group
