@@ -206,6 +206,8 @@ public:
   /// An invocation runs groups `first` to `end` of the launch: it adds
   /// them to the counter, and the one that completes the launch's groups
   /// (the range in groups; a launch may come in several ranges) runs `body`.
+  /// Not for a distributed plan's kernels, whose launches cover a rank's
+  /// groups (lts, the only user, has no distributed plan).
   void afterLastInvocation(KernelBuilder &b, Kernel &kernel, int64_t counter,
                            function_ref<void()> body) override {
     unsigned count = kernel.func.getNumArguments();
