@@ -23,7 +23,8 @@ SimulationLowering::createCaches(Kernel &kernel, ComponentOp component) {
   SmallVector<FillCacheOp> fills(
       component.getEvaluate().front().getOps<FillCacheOp>());
   // The plan is the same for every target: the launch asks for the caches'
-  // bytes even where a target keeps none (the CPU runtime ignores them).
+  // bytes, which a CPU runtime ignores (its kernels keep the caches on the
+  // stack) and a target without caches does not need.
   for (FillCacheOp fill : fills) {
     kernel.sharedPerThread += stride(fill);
     kernel.sharedFixed += stride(fill) * (fill.getMaxOffsetAttr().getInt() -

@@ -17,6 +17,7 @@
 #include "sim/Dialect/Sim/IR/SimOps.h"
 
 #include "mlir/Dialect/Func/IR/FuncOps.h"
+#include "mlir/Dialect/MemRef/IR/MemRef.h"
 
 namespace mlir::sim {
 #define GEN_PASS_DEF_SIMLOWERTOCPU
@@ -195,6 +196,29 @@ public:
 
   bool reducesPerGroup() const override { return true; }
   bool evaluatesUnitBigStep() const override { return true; }
+
+  /// hip-cache's group caches on the stack of the invocation (created at
+  /// the kernel's top level, so once per call): the window's values
+  /// interpolated once per item and sub-step instead of at every read of
+  /// them, as in shared memory on a GPU.
+  bool hasCaches() const override { return true; }
+  Value createCache(KernelBuilder &b, Kernel &kernel, Type elementType, int64_t,
+                    int64_t halo) override {
+    Value count = b.add(groupSize(kernel), b.index(halo));
+    return memref::AllocaOp::create(
+        b, b.loc, MemRefType::get({ShapedType::kDynamic}, elementType),
+        ValueRange{count});
+  }
+  /// The slots as a loop of lanes (--sim-vectorize-lanes fills them in SIMD
+  /// chunks).
+  void forEachSlot(KernelBuilder &b, Kernel &kernel, Value count,
+                   function_ref<void(Value slot)> body) override {
+    auto loop = scf::ForOp::create(b, b.loc, b.index(0), count, b.index(1));
+    loop->setAttr(simplan::PlanDialect::getLanesAttrName(), b.getUnitAttr());
+    OpBuilder::InsertionGuard guard(b);
+    b.setInsertionPoint(loop.getBody()->getTerminator());
+    body(loop.getInductionVar());
+  }
 
   void reduceIntoClock(KernelBuilder &b, Kernel &kernel, LaneVar value,
                        arith::AtomicRMWKind kind, int64_t slot) override {

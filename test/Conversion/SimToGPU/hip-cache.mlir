@@ -105,10 +105,22 @@ sim.simulation @smooth range(10) dt(1.0e-1 : f32) max_steps(4) {
 // CHECK-LABEL: simplan.plan @smooth strategy("hip-cache")
 // CHECK:         simplan.launch @smooth_kernels::@substep_Smooth items [{{.*}}] for @Smooth shared(4, 8)
 
-// The CPU keeps no cache: the same reads compute the interpolation. The
-// plan is the same (the CPU runtime ignores the shared bytes).
+// The CPU keeps the cache on the stack of the call (the group size plus the
+// halo of 2 items): a loop of lanes fills it (once for a big step of 1, once
+// per sub-step otherwise) and the window reads load it. The plan is the
+// same (the CPU runtime ignores the shared bytes).
 // CPU-LABEL: func.func @substep_Smooth(
 // CPU-SAME:      attributes {simplan.clock_slots = 15 : i64, simplan.group_arguments = 3 : i64, simplan.shared = array<i64: 4, 8>}
 // CPU-NOT:     memref.view
+// CPU:         %[[COUNT:.*]] = arith.addi %{{.*}}, %c2 : index
+// CPU:         %[[CACHE:.*]] = memref.alloca(%[[COUNT]]) : memref<?xf32>
+// CPU:         scf.for %[[SLOT:.*]] = %c0 to %{{.*}} step %c1 {
+// CPU:           memref.store %{{.*}}, %[[CACHE]][%[[SLOT]]] : memref<?xf32>
+// CPU:         } {simplan.lanes}
+// CPU:         memref.load %[[CACHE]][%{{.*}}] : memref<?xf32>
+// CPU:         scf.while
+// CPU:         scf.for %[[SLOT2:.*]] = %c0 to %{{.*}} step %c1 {
+// CPU:           memref.store %{{.*}}, %[[CACHE]][%[[SLOT2]]] : memref<?xf32>
+// CPU:         } {simplan.lanes}
 // CPU-LABEL: simplan.plan @smooth strategy("hip-cache")
 // CPU:         simplan.launch @smooth_kernels::@substep_Smooth items [{{.*}}] for @Smooth shared(4, 8)
