@@ -654,18 +654,22 @@ LogicalResult SimulationLowering::emitLocalSteps(ComponentOp component,
         }
         scf::YieldOp::create(b, b.loc, changed);
       }
+      // The minimum of `init` and `valueAt(k)` for k in [from, to) (i64).
+      auto minOver = [&](Value from, Value to, Value init,
+                         function_ref<Value(Value)> valueAt) {
+        auto loop =
+            scf::ForOp::create(b, b.loc, from, to, one, ValueRange{init});
+        OpBuilder::InsertionGuard guard(b);
+        b.setInsertionPointToStart(loop.getBody());
+        scf::YieldOp::create(
+            b, b.loc,
+            b.min(loop.getRegionIterArg(0), valueAt(loop.getInductionVar())));
+        return loop.getResult(0);
+      };
       // The finest sub-step: the distance between slots where some block
       // starts one.
-      auto finest =
-          scf::ForOp::create(b, b.loc, zero, blocks, one, ValueRange{size});
-      {
-        OpBuilder::InsertionGuard guard(b);
-        b.setInsertionPointToStart(finest.getBody());
-        scf::YieldOp::create(b, b.loc,
-                             b.min(finest.getRegionIterArg(0),
-                                   levelAt(finest.getInductionVar())));
-      }
-      b.store(finest.getResult(0), kernel.clock, b.index(sub + kSubSize));
+      b.store(minOver(zero, blocks, size, levelAt), kernel.clock,
+              b.index(sub + kSubSize));
 
       // The neighbourhood codes of the big step, so that a slot kernel tells
       // from one value per block whether the items a block's items reach
@@ -785,19 +789,10 @@ LogicalResult SimulationLowering::emitLocalSteps(ComponentOp component,
           Value hasInner =
               b.cmp(arith::CmpIPredicate::sle, innerLow, innerHigh);
           Value finest = b.select(hasInner, levelAt(g), size);
-          auto fold = [&](Value from, Value to, Value init) {
-            auto loop =
-                scf::ForOp::create(b, b.loc, from, to, one, ValueRange{init});
-            OpBuilder::InsertionGuard guard(b);
-            b.setInsertionPointToStart(loop.getBody());
-            scf::YieldOp::create(b, b.loc,
-                                 b.min(loop.getRegionIterArg(0),
-                                       interfaceLevel(loop.getInductionVar())));
-            return loop.getResult(0);
-          };
           Value lowEnd = b.min(innerLow, end);
-          finest = fold(first, lowEnd, finest);
-          return fold(b.max(b.add(innerHigh, one), lowEnd), end, finest);
+          finest = minOver(first, lowEnd, finest, interfaceLevel);
+          return minOver(b.max(b.add(innerHigh, one), lowEnd), end, finest,
+                         interfaceLevel);
         };
         neighbourhoodCodes(kLevelFluxCodes, fluxBelow, fluxAbove,
                            /*clipped=*/false, finestInterface);
