@@ -1206,12 +1206,9 @@ void LaneVectorizer::widenLoad(OpBuilder &b, memref::LoadOp op, Value mask) {
     return parts;
   };
   auto gather = [&](OpBuilder &at) { return gatherAt(at, safeIndex(at)); };
-  // Where the index is likely the same in every lane (likelyUniform), the
-  // gathers only when it is not; else one scalar load per element, to every
-  // lane.
-  auto gatherUnlessUniform = [&](OpBuilder &at) -> SmallVector<Value> {
-    if (!likelyUniform(op.getIndices()[0]))
-      return gather(at);
+  // One scalar load per element, to every lane, when the lanes' indices are
+  // all the same; else the gathers.
+  auto uniformOrGather = [&](OpBuilder &at) -> SmallVector<Value> {
     Value safe = safeIndex(at);
     Value first = vector::ExtractOp::create(at, loc, safe, 0);
     Value firsts = vector::BroadcastOp::create(at, loc, i64Lanes, first);
@@ -1269,6 +1266,10 @@ void LaneVectorizer::widenLoad(OpBuilder &b, memref::LoadOp op, Value mask) {
   SmallVector<Value> parts;
   if (contiguous) {
     parts = wideLoad(b);
+  } else if (likelyUniform(op.getIndices()[0])) {
+    // An item divided by at least the lanes is never consecutive across a
+    // chunk wider than two lanes: no contiguity check.
+    parts = uniformOrGather(b);
   } else {
     SmallVector<Type> types(count, lanes);
     auto choice =
@@ -1276,7 +1277,7 @@ void LaneVectorizer::widenLoad(OpBuilder &b, memref::LoadOp op, Value mask) {
     OpBuilder fast = emptyBody(choice.thenBlock());
     scf::YieldOp::create(fast, loc, wideLoad(fast));
     OpBuilder slow = emptyBody(choice.elseBlock());
-    scf::YieldOp::create(slow, loc, gatherUnlessUniform(slow));
+    scf::YieldOp::create(slow, loc, gather(slow));
     parts = SmallVector<Value>(choice.getResults());
   }
   wide.parts.assign(parts.begin(), parts.end());

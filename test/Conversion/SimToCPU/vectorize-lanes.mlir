@@ -447,22 +447,23 @@ func.func @stays_scalar(%in: memref<?xindex>, %out: memref<?xf32>, %sum: memref<
 // -----
 
 // A load at an item divided by at least the lanes of a chunk (a block's
-// level: half + item / 32) is most often the same element in every lane:
-// one scalar load to every lane when all lanes agree, a gather only when
-// they do not. An index divided by less (item / 4) gathers as before.
+// level: half + item / 32) is most often the same element in every lane
+// and never consecutive: one scalar load to every lane when all lanes
+// agree, a gather only when they do not, and no contiguity check. An index
+// divided by less (item / 4) checks for consecutive lanes and gathers as
+// before.
 // CHECK-LABEL: func.func @block_index_loads
 // CHECK:         scf.for
 // CHECK:           %[[INDEX:.*]] = arith.index_cast %{{.*}} : vector<8xindex> to vector<8xi64>
+// CHECK-NEXT:      %[[FIRST:.*]] = vector.extract %[[INDEX]][0] : i64 from vector<8xi64>
+// CHECK-NEXT:      %[[FIRSTS:.*]] = vector.broadcast %[[FIRST]] : i64 to vector<8xi64>
+// CHECK-NEXT:      %[[SAME:.*]] = arith.cmpi eq, %[[INDEX]], %[[FIRSTS]] : vector<8xi64>
+// CHECK-NEXT:      %[[ALL:.*]] = vector.reduction <and>, %[[SAME]] : vector<8xi1> into i1
+// CHECK-NEXT:      scf.if %[[ALL]] -> (vector<8xi64>) {
+// CHECK:             %[[ONE:.*]] = llvm.load %{{.*}} : !llvm.ptr -> i64
+// CHECK:             vector.broadcast %[[ONE]] : i64 to vector<8xi64>
 // CHECK:           } else {
-// CHECK:             %[[FIRST:.*]] = vector.extract %[[INDEX]][0] : i64 from vector<8xi64>
-// CHECK:             %[[FIRSTS:.*]] = vector.broadcast %[[FIRST]] : i64 to vector<8xi64>
-// CHECK:             %[[SAME:.*]] = arith.cmpi eq, %[[INDEX]], %[[FIRSTS]] : vector<8xi64>
-// CHECK:             %[[ALL:.*]] = vector.reduction <and>, %[[SAME]] : vector<8xi1> into i1
-// CHECK:             scf.if %[[ALL]] -> (vector<8xi64>) {
-// CHECK:               %[[ONE:.*]] = llvm.load %{{.*}} : !llvm.ptr -> i64
-// CHECK:               vector.broadcast %[[ONE]] : i64 to vector<8xi64>
-// CHECK:             } else {
-// CHECK:               llvm.intr.masked.gather
+// CHECK:             llvm.intr.masked.gather
 // CHECK:           arith.divui %{{.*}}, %{{.*}} : vector<8xindex>
 // CHECK-NOT:       llvm.load %{{.*}} : !llvm.ptr -> i64
 // CHECK:           llvm.intr.masked.gather
