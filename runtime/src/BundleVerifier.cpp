@@ -17,7 +17,8 @@
 //   the plan's clock;
 // - phases unroll to a bounded number of launches;
 // - distributed plans: halos within the plan's, exchanges of buffers (and
-//   snapshots) the plan has, all-reduces of clock slots it has; First and
+//   snapshots) the plan has, all-reduces of clock slots it has and of the
+//   levels of LocalSteps components; First and
 //   Extent arguments, halos, replicated buffers, exchanges and all-reduces
 //   only there; no halo on a replicated buffer;
 // - the reference model resolves against the scene;
@@ -299,11 +300,6 @@ private:
         bad(what + ": " + about + " advances in an unknown way (" +
             std::to_string(int(component.advance)) + ")");
       claimSlots(component.evaluations, 1, about + "'s evaluation counter");
-      if ((component.advance == Advance::LocalSteps ||
-           component.advance == Advance::LocalFlux) &&
-          plan.distributed)
-        bad(about + " takes local time steps, which a distributed plan "
-                    "cannot run");
       if (component.advance == Advance::GridSubSteps ||
           component.advance == Advance::LocalSteps)
         claimSlots(component.sub_clock, uint64_t(schema::SubClockSlot::Slots),
@@ -470,10 +466,23 @@ private:
             ", but the kernel's parameter is " + typeName(have));
     }
     if (!plan.distributed &&
-        (!launch.reduce_min.empty() || !launch.exchange.empty()))
+        (!launch.reduce_min.empty() || !launch.exchange.empty() ||
+         !launch.reduce_max_levels.empty()))
       bad(about + " has " +
-          (launch.reduce_min.empty() ? "exchanges" : "all-reduces") +
+          (launch.exchange.empty() ? "all-reduces" : "exchanges") +
           ", but the plan is not distributed");
+    std::set<uint32_t> reducedLevels;
+    for (uint32_t c : launch.reduce_max_levels) {
+      checkIndex(c, plan.components.size(),
+                 about + ": a component whose levels it all-reduces");
+      if (plan.components[c]->advance != Advance::LocalSteps)
+        bad(about + " all-reduces the levels of component " +
+            quoted(plan.components[c]->name) +
+            ", which does not take local time steps");
+      if (!reducedLevels.insert(c).second)
+        bad(about + " all-reduces the levels of component " +
+            quoted(plan.components[c]->name) + " twice");
+    }
     std::set<uint32_t> reduced;
     for (uint32_t slot : launch.reduce_min) {
       if (slot >= plan.clock_slots)

@@ -60,23 +60,12 @@ Session::Session(std::shared_ptr<const Bundle> bundleIn,
   std::string name = strategyName(strategy);
   plan_ = bundle->plan(strategy);
   if (!plan_) {
-    // A distributed bundle leaves lts out unless it is asked for (and then
-    // its compile fails): say so rather than leave the user guessing.
     std::vector<std::string> present;
-    bool distributedBundle = true;
-    for (Strategy s : bundle->strategies()) {
+    for (Strategy s : bundle->strategies())
       present.push_back(strategyName(s));
-      distributedBundle = distributedBundle && bundle->plan(s)->distributed;
-    }
-    distributedBundle = distributedBundle && !present.empty();
-    std::string why =
-        distributedBundle && strategy == Strategy::Lts
-            ? "; sim-translate --sim-distributed leaves lts out: local time "
-              "steps do not run on many processes yet"
-            : "";
     fail(SIM_ERROR_BUNDLE, "bundle '" + bundle->name +
                                "' has no plan for strategy '" + name +
-                               "' (it has: " + listNames(present) + ")" + why);
+                               "' (it has: " + listNames(present) + ")");
   }
   bool hasPtx = !plan_->ptx.empty();
   const schema::CpuCodeT *cpu = bundle->cpuCode(*plan_);
@@ -1003,6 +992,35 @@ void Session::refreshAllGhosts() {
     refreshGhosts(refreshes, false);
 }
 
+void Session::reduceLevels(const std::vector<uint32_t> &components,
+                           bool counted) {
+  // The codes of this big step's blocks are half `parity` of each levels
+  // array; every rank has written those of its own items (0, the identity,
+  // elsewhere), so their maximum is what one process's atomics would have
+  // left. The communicator takes minima: of the negated codes.
+  int64_t clock[kSlotParity + 1];
+  backend->read(clock, clockMemory.pointer, sizeof clock);
+  const int64_t block = int64_t(schema::LocalStepBlock::Items);
+  int64_t blocks = (settings.range + block - 1) / block;
+  DevicePtr offset = DevicePtr(clock[kSlotParity] * blocks) * sizeof(int64_t);
+  std::vector<int64_t> values(size_t(blocks) * components.size());
+  for (size_t c = 0; c < components.size(); ++c)
+    backend->read(values.data() + c * size_t(blocks),
+                  levels[components[c]].pointer + offset,
+                  size_t(blocks) * sizeof(int64_t));
+  for (int64_t &value : values)
+    value = -value;
+  comm->minimum(values.data(), int32_t(values.size()));
+  for (int64_t &value : values)
+    value = -value;
+  for (size_t c = 0; c < components.size(); ++c)
+    backend->write(levels[components[c]].pointer + offset,
+                   values.data() + c * size_t(blocks),
+                   size_t(blocks) * sizeof(int64_t));
+  if (counted)
+    ++metrics.host_syncs;
+}
+
 void Session::launchDistributed(Prepared &p, bool counted, bool step) {
   const std::vector<uint32_t> &slots = p.launch->reduce_min;
   if (!slots.empty()) {
@@ -1020,6 +1038,8 @@ void Session::launchDistributed(Prepared &p, bool counted, bool step) {
     if (counted)
       ++metrics.host_syncs;
   }
+  if (!p.launch->reduce_max_levels.empty())
+    reduceLevels(p.launch->reduce_max_levels, counted);
   if (readsPendingGhosts(p))
     launchAroundExchange(p);
   else

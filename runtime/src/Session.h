@@ -207,6 +207,9 @@ private:
   size_t gatherReplicated(const std::vector<GhostRefresh> &refreshes);
   /// Every buffer's ghosts, both halves (after init and setBuffer).
   void refreshAllGhosts();
+  /// The all-reduce (maximum) of the codes of this big step's blocks in the
+  /// levels of `components` (a launch's `reduce_max_levels`).
+  void reduceLevels(const std::vector<uint32_t> &components, bool counted);
   /// A launch of a distributed plan: its all-reduces, the kernel, its
   /// exchanges (in the step phase, `step`, none past the run's end).
   void launchDistributed(Prepared &prepared, bool counted, bool step = false);

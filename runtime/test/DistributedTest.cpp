@@ -567,6 +567,14 @@ TEST(Distributed, VerifierChecksTheRecords) {
       schema::Exchange(0, true)};
   expectBad(std::move(contents), "exchanges the snapshot of buffer 'X', "
                                  "which has none");
+  contents = ringContents(Boundary::Wrap);
+  contents.plans[0]->phases[1]->body[1]->launch->reduce_max_levels = {7};
+  expectBad(std::move(contents), "a component whose levels it all-reduces "
+                                 "is 7, but there are only");
+  contents = ringContents(Boundary::Wrap);
+  contents.plans[0]->phases[1]->body[1]->launch->reduce_max_levels = {0};
+  expectBad(std::move(contents), "all-reduces the levels of component 'Mix', "
+                                 "which does not take local time steps");
 }
 
 /// mpirun -n N sim-run --distributed against sim-run on one process: the

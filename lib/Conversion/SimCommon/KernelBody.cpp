@@ -310,6 +310,18 @@ private:
     Value inBounds;
     Value item = applyBoundary(builder, loc, buffer, load.getIndex(),
                                values.range, inBounds);
+    // Where the item is stored: at the item on one process (and for a
+    // replicated buffer, whose halves are the range apart); in a
+    // distributed plan in the rank's block or its ghost items, found from
+    // the index before the boundary rule, as for any other read.
+    bool replicated = values.replicated.contains(name);
+    Value stored = item, halfSize = values.extent;
+    if (replicated) {
+      halfSize = values.range;
+    } else if (values.first) {
+      Value unused;
+      stored = lowerGhostIndex(builder, loc, buffer, load.getIndex(), unused);
+    }
     Value block = arith::DivUIOp::create(
         builder, loc, item,
         arith::ConstantIndexOp::create(builder, loc, kLevelBlock));
@@ -339,8 +351,8 @@ private:
           builder, loc,
           arith::IndexCastOp::create(builder, loc, builder.getIndexType(),
                                      parity),
-          values.extent);
-      return arith::AddIOp::create(builder, loc, half, item).getResult();
+          halfSize);
+      return arith::AddIOp::create(builder, loc, half, stored).getResult();
     };
     Value latest =
         memref::LoadOp::create(builder, loc, memory, elementOf(latestParity));

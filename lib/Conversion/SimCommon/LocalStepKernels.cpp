@@ -799,6 +799,11 @@ LogicalResult SimulationLowering::emitLocalSteps(ComponentOp component,
         runEnds(kLevelFluxCodes, kLevelFluxRuns);
       }
     });
+    // Distributed plans: every rank limits the levels of the whole range
+    // (one thread), from the codes of all ranks' items: their maximum, as
+    // levels_C's atomics take it on one process.
+    if (distributed)
+      pendingReduceLevels.push_back(FlatSymbolRefAttr::get(symbol));
     if (failed(endKernel(kernel, simplan::LaunchShape::single, launches)))
       return failure();
   }

@@ -93,11 +93,6 @@ LogicalResult SimulationLowering::checkFrontEnd() {
     if (component.getAdvance() != Advance::local_steps)
       continue;
     localSteps = true;
-    if (distributed)
-      return component.emitOpError()
-             << "advances in local_steps, which a distributed plan cannot "
-                "run yet; compile it for one process or with another "
-                "strategy";
   }
   return success();
 }
@@ -268,6 +263,8 @@ LogicalResult SimulationLowering::endKernel(Kernel &kernel,
   SmallVector<Attribute> exchangeSnapshots =
       std::move(pendingExchangeSnapshots);
   SmallVector<int64_t> reduce = std::move(pendingReduce);
+  SmallVector<Attribute> reduceLevels = std::move(pendingReduceLevels);
+  pendingReduceLevels.clear();
   pendingExchange.clear();
   pendingExchangeSnapshots.clear();
   pendingReduce.clear();
@@ -288,7 +285,8 @@ LogicalResult SimulationLowering::endKernel(Kernel &kernel,
                      : launches.getDenseI64ArrayAttr(reduce),
       exchange.empty() ? ArrayAttr() : launches.getArrayAttr(exchange),
       exchangeSnapshots.empty() ? ArrayAttr()
-                                : launches.getArrayAttr(exchangeSnapshots));
+                                : launches.getArrayAttr(exchangeSnapshots),
+      reduceLevels.empty() ? ArrayAttr() : launches.getArrayAttr(reduceLevels));
   return success();
 }
 

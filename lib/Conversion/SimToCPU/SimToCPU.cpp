@@ -228,10 +228,9 @@ public:
   }
 
   /// An invocation runs groups `first` to `end` of the launch: it adds
-  /// them to the counter, and the one that completes the launch's groups
-  /// (the range in groups; a launch may come in several ranges) runs `body`.
-  /// Not for a distributed plan's kernels, whose launches cover a rank's
-  /// groups (lts, the only user, has no distributed plan).
+  /// them (a distributed plan: their items) to the counter, and the one
+  /// that completes the launch (a launch may come in several ranges) runs
+  /// `body`.
   void afterLastInvocation(KernelBuilder &b, Kernel &kernel, int64_t counter,
                            function_ref<void()> body) override {
     unsigned count = kernel.func.getNumArguments();
@@ -239,14 +238,26 @@ public:
     Value end = kernel.func.getArgument(count - 2);
     Value size = kernel.func.getArgument(count - 1);
     Value mine = b.sub(end, first);
-    Value range = arith::IndexCastOp::create(b, b.loc, b.getI64Type(),
-                                             kernel.values.range);
-    Value groups = arith::DivUIOp::create(
-        b, b.loc, b.sub(b.add(range, size), b.i64(1)), size);
+    Value total;
+    if (kernel.values.first) {
+      // A distributed plan's launch covers the rank's block (its extent
+      // less the ghost items on each side): count its items, as the GPU's
+      // thread groups do (the kernels of both targets take the same
+      // arguments).
+      total = arith::IndexCastOp::create(
+          b, b.loc, b.getI64Type(),
+          b.sub(kernel.values.extent, b.index(2 * kernel.values.halo)));
+      mine = b.sub(b.min(b.mul(end, size), total), b.mul(first, size));
+    } else {
+      Value range = arith::IndexCastOp::create(b, b.loc, b.getI64Type(),
+                                               kernel.values.range);
+      total = arith::DivUIOp::create(b, b.loc,
+                                     b.sub(b.add(range, size), b.i64(1)), size);
+    }
     b.ifThen(b.cmp(arith::CmpIPredicate::sgt, mine, b.i64(0)), [&] {
       Value before = b.atomic(arith::AtomicRMWKind::addi, mine, kernel.clock,
                               b.index(counter));
-      b.ifThen(b.cmp(arith::CmpIPredicate::eq, b.add(before, mine), groups),
+      b.ifThen(b.cmp(arith::CmpIPredicate::eq, b.add(before, mine), total),
                [&] {
                  b.store(b.i64(0), kernel.clock, b.index(counter));
                  body();

@@ -183,17 +183,31 @@ public:
 
   /// Every thread group of the grid counts itself once all its threads are
   /// done (a barrier); the group that completes the grid runs `body` in
-  /// one thread.
+  /// one thread. In a distributed plan a group counts its items of the
+  /// rank's block instead, as the CPU's invocations do (the kernels of both
+  /// targets take the same arguments).
   void afterLastInvocation(KernelBuilder &b, Kernel &kernel, int64_t counter,
                            function_ref<void()> body) override {
     gpu::BarrierOp::create(b, b.loc);
     b.ifThen(isFirstThread(b), [&] {
-      Value groups = arith::IndexCastOp::create(
-          b, b.loc, b.getI64Type(),
-          gpu::GridDimOp::create(b, b.loc, gpu::Dimension::x));
-      Value before = b.atomic(arith::AtomicRMWKind::addi, b.i64(1),
-                              kernel.clock, b.index(counter));
-      b.ifThen(b.cmp(arith::CmpIPredicate::eq, b.add(before, b.i64(1)), groups),
+      auto toI64 = [&](Value value) {
+        return arith::IndexCastOp::create(b, b.loc, b.getI64Type(), value)
+            .getResult();
+      };
+      Value mine = b.i64(1);
+      Value total = toI64(gpu::GridDimOp::create(b, b.loc, gpu::Dimension::x));
+      if (kernel.values.first) {
+        Value size =
+            toI64(gpu::BlockDimOp::create(b, b.loc, gpu::Dimension::x));
+        Value base = b.mul(
+            toI64(gpu::BlockIdOp::create(b, b.loc, gpu::Dimension::x)), size);
+        total =
+            toI64(b.sub(kernel.values.extent, b.index(2 * kernel.values.halo)));
+        mine = b.min(size, b.sub(total, base));
+      }
+      Value before = b.atomic(arith::AtomicRMWKind::addi, mine, kernel.clock,
+                              b.index(counter));
+      b.ifThen(b.cmp(arith::CmpIPredicate::eq, b.add(before, mine), total),
                [&] {
                  b.store(b.i64(0), kernel.clock, b.index(counter));
                  body();

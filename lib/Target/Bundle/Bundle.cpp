@@ -505,6 +505,14 @@ PlanReader::readLaunch(simplan::LaunchOp launch) {
   if (failed(exchange(launch.getExchangeAttr(), false)) ||
       failed(exchange(launch.getExchangeSnapshotsAttr(), true)))
     return failure();
+  if (ArrayAttr names = launch.getReduceMaxLevelsAttr())
+    for (auto name : names.getAsRange<FlatSymbolRefAttr>()) {
+      auto found = components.find(name.getValue());
+      if (found == components.end())
+        return launch.emitOpError() << "all-reduces the levels of " << name
+                                    << ", which is not a component of the plan";
+      record->reduce_max_levels.push_back(found->second);
+    }
   return record;
 }
 

@@ -55,11 +55,6 @@ void mlir::sim::registerToBundleTranslation() {
         options.target = flags.getGPUTarget();
         options.flushSubnormals = flags.ftz;
         options.distributed = flags.distributed;
-        // Local time steps do not run on many processes yet: a distributed
-        // bundle leaves lts out unless it is asked for (then the lowering
-        // says why it cannot).
-        if (options.distributed && flags.strategies.empty())
-          llvm::erase(options.strategies, Strategy::lts);
         if (!flags.cpuIsas.empty())
           options.cpuIsas.assign(flags.cpuIsas.begin(), flags.cpuIsas.end());
         return writeBundle(*module, options, os);

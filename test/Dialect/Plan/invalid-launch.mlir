@@ -305,3 +305,38 @@ module attributes {gpu.container_module} {
     }
   }
 }
+
+// -----
+
+module attributes {gpu.container_module} {
+  simplan.plan @p strategy("lts") kernels(@k) range(4) dt(1.0e-2 : f32) max_steps(1) step_cap(1) group_size(32) clock_slots(10) histogram(8) distributed halo(1) {
+    simplan.phase step {
+      // expected-error @+1 {{'simplan.launch' op all-reduces the levels of @C, which is not a component of the plan}}
+      simplan.launch @k::@limit_levels_C single [#simplan.arg<clock>] reduce_max_levels [@C]
+    }
+  }
+}
+
+// -----
+
+module attributes {gpu.container_module} {
+  simplan.plan @p strategy("lts") kernels(@k) range(4) dt(1.0e-2 : f32) max_steps(1) step_cap(1) group_size(32) clock_slots(10) histogram(8) distributed halo(1) {
+    simplan.component @C writes [] evaluations(8) advance whole_step
+    simplan.phase step {
+      // expected-error @+1 {{'simplan.launch' op all-reduces the levels of @C, which advances in whole_step; only local_steps components have levels}}
+      simplan.launch @k::@limit_levels_C single [#simplan.arg<clock>] reduce_max_levels [@C]
+    }
+  }
+}
+
+// -----
+
+module attributes {gpu.container_module} {
+  simplan.plan @p strategy("lts") kernels(@k) range(4) dt(1.0e-2 : f32) max_steps(1) step_cap(1) group_size(32) clock_slots(14) histogram(12) {
+    simplan.component @C writes [] evaluations(8) advance local_steps sub_clock(9)
+    simplan.phase step {
+      // expected-error @+1 {{'simplan.launch' op communicates between ranks in a plan that is not distributed}}
+      simplan.launch @k::@limit_levels_C single [#simplan.arg<clock>] reduce_max_levels [@C]
+    }
+  }
+}

@@ -191,6 +191,9 @@ private:
   /// it).
   SmallVector<int64_t> pendingReduce;
   SmallVector<Attribute> pendingExchange, pendingExchangeSnapshots;
+  /// Components whose levels every rank replaces by their maximum over the
+  /// ranks before the next launch (`reduce_max_levels`).
+  SmallVector<Attribute> pendingReduceLevels;
 
   Operation *kernels;
   simplan::PlanOp plan;

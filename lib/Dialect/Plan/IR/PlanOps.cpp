@@ -269,8 +269,8 @@ LaunchOp::verifyCommunication(PlanOp plan, SymbolTableCollection &symbolTable) {
         !distributed)
       return emitOpError() << "passes " << arg
                            << ", which only a distributed plan has";
-  if (!distributed &&
-      (getReduceMin() || getExchange() || getExchangeSnapshots()))
+  if (!distributed && (getReduceMin() || getExchange() ||
+                       getExchangeSnapshots() || getReduceMaxLevels()))
     return emitOpError() << "communicates between ranks in a plan that is not "
                             "distributed";
   if (std::optional<ArrayRef<int64_t>> slots = getReduceMin())
@@ -294,6 +294,19 @@ LaunchOp::verifyCommunication(PlanOp plan, SymbolTableCollection &symbolTable) {
                << "exchanges the snapshot of " << name << ", which has none";
     }
   }
+  if (ArrayAttr names = getReduceMaxLevelsAttr())
+    for (auto name : names.getAsRange<FlatSymbolRefAttr>()) {
+      auto component =
+          dyn_cast_or_null<ComponentOp>(symbolTable.lookupSymbolIn(plan, name));
+      if (!component)
+        return emitOpError() << "all-reduces the levels of " << name
+                             << ", which is not a component of the plan";
+      if (component.getAdvance() != mlir::sim::Advance::local_steps)
+        return emitOpError()
+               << "all-reduces the levels of " << name << ", which advances in "
+               << mlir::sim::stringifyAdvance(component.getAdvance())
+               << "; only local_steps components have levels";
+    }
   return success();
 }
 

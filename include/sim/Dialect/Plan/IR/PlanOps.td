@@ -341,11 +341,16 @@ def Plan_LaunchOp : Plan_Op<"launch", [
     consumes it); `exchange` lists buffers whose ghost items (both halves)
     travel after the launch, and `exchange_snapshots` buffers whose
     snapshot's ghost items do: the buffers the launch writes that some read
-    reaches at other items.
+    reaches at other items. `reduce_max_levels` lists components that take
+    local time steps whose blocks' sub-step codes of the big step (half
+    `parity` of their `levels`, written by `levels_C`) every rank replaces
+    by their maximum over all ranks before the launch, so that every rank
+    limits the same levels (`limit_levels_C`).
 
     ```mlir
     simplan.launch @k::@advance single [#simplan.arg<clock>] reduce_min [4]
     simplan.launch @k::@step_C0 items [...] for @C0 exchange [@B0]
+    simplan.launch @k::@limit_levels_C single [...] reduce_max_levels [@C]
     ```
   }];
   let arguments = (ins SymbolRefAttr:$kernel, Plan_LaunchShapeAttr:$shape,
@@ -355,12 +360,14 @@ def Plan_LaunchOp : Plan_Op<"launch", [
                        DefaultValuedAttr<I64Attr, "0">:$shared_fixed,
                        OptionalAttr<DenseI64ArrayAttr>:$reduce_min,
                        OptionalAttr<FlatSymbolRefArrayAttr>:$exchange,
-                       OptionalAttr<FlatSymbolRefArrayAttr>:$exchange_snapshots);
+                       OptionalAttr<FlatSymbolRefArrayAttr>:$exchange_snapshots,
+                       OptionalAttr<FlatSymbolRefArrayAttr>:$reduce_max_levels);
   let assemblyFormat = [{
     $kernel custom<EnumKeyword>($shape) $args (`for` $component^)?
     (`shared` `(` $shared_per_thread^ `,` $shared_fixed `)`)?
     (`reduce_min` $reduce_min^)? (`exchange` $exchange^)?
-    (`exchange_snapshots` $exchange_snapshots^)? attr-dict
+    (`exchange_snapshots` $exchange_snapshots^)?
+    (`reduce_max_levels` $reduce_max_levels^)? attr-dict
   }];
   let extraClassDeclaration = [{
     ::mlir::LogicalResult
