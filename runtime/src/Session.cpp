@@ -16,8 +16,10 @@
 #include <chrono>
 #include <cmath>
 #include <cstring>
+#include <functional>
 #include <limits>
 #include <map>
+#include <set>
 
 namespace sim::rt {
 
@@ -284,12 +286,35 @@ void Session::prepare() {
   std::map<const schema::LaunchT *, uint32_t> index;
   for (int phase = 0; phase < kNumPhases; ++phase)
     phases[phase].clear();
+  // The launches of each repeat, and the component whose sub-step clock
+  // runs it (the one that takes grid-wide or local sub-steps).
+  std::map<const schema::LaunchT *, int> roundOf;
+  for (const auto &phase : plan_->phases)
+    for (const auto &step : phase->body) {
+      if (!step->repeat)
+        continue;
+      int clockOf = -1;
+      for (const auto &inner : step->repeat->body)
+        if (inner->launch && inner->launch->component >= 0) {
+          Advance advance =
+              plan_->components[size_t(inner->launch->component)]->advance;
+          if (advance == Advance::GridSubSteps ||
+              advance == Advance::LocalSteps)
+            clockOf = inner->launch->component;
+        }
+      for (const auto &inner : step->repeat->body)
+        if (inner->launch)
+          roundOf[inner->launch.get()] = clockOf;
+    }
   for (const auto &phase : plan_->phases) {
     std::vector<uint32_t> &order = phases[int(phase->kind)];
     for (const schema::LaunchT *launch : unrollPhase(*phase)) {
       auto [it, inserted] = index.try_emplace(launch, launches.size());
-      if (inserted)
+      if (inserted) {
         launches.push_back(prepareLaunch(*launch));
+        if (auto found = roundOf.find(launch); found != roundOf.end())
+          launches.back().roundOf = found->second;
+      }
       order.push_back(it->second);
     }
   }
@@ -1021,6 +1046,25 @@ void Session::reduceLevels(const std::vector<uint32_t> &components,
     ++metrics.host_syncs;
 }
 
+bool Session::idleRound(const Prepared &p) {
+  const schema::ComponentT &component = *plan_->components[size_t(p.roundOf)];
+  int64_t fixed[kSlotSize + 1];
+  backend->read(fixed, clockMemory.pointer, sizeof fixed);
+  int64_t sub[2];
+  backend->read(sub,
+                clockMemory.pointer + component.sub_clock * sizeof(int64_t),
+                sizeof sub);
+  int64_t subBegin = sub[int(schema::SubClockSlot::Begin)];
+  int64_t subSize = sub[int(schema::SubClockSlot::Size)];
+  if (component.advance == Advance::GridSubSteps)
+    // substep_C takes the sub-step substep_advance decided: none at 0.
+    return p.launch->shape == LaunchShape::Items && subSize == 0;
+  // A slot kernel runs while its slot (the sub-step clock's Begin less T)
+  // lies inside the big step.
+  return !(fixed[kSlotSize] > 0 &&
+           subBegin - fixed[kSlotBegin] < fixed[kSlotSize]);
+}
+
 void Session::launchDistributed(Prepared &p, bool counted, bool step) {
   const std::vector<uint32_t> &slots = p.launch->reduce_min;
   if (!slots.empty()) {
@@ -1040,6 +1084,11 @@ void Session::launchDistributed(Prepared &p, bool counted, bool step) {
   }
   if (!p.launch->reduce_max_levels.empty())
     reduceLevels(p.launch->reduce_max_levels, counted);
+  // A round or slot that takes no sub-step (a round after the last
+  // sub-step, a slot past the big step) writes nothing, so its exchanges
+  // carry nothing new: a buffer travels once per sub-step its writer
+  // takes. Every rank holds the same sub-step clock, so all skip alike.
+  bool idle = p.roundOf >= 0 && !p.exchanges.empty() && idleRound(p);
   if (readsPendingGhosts(p))
     launchAroundExchange(p);
   else
@@ -1048,6 +1097,8 @@ void Session::launchDistributed(Prepared &p, bool counted, bool step) {
   if (counted)
     ++metrics.launches;
   if (p.exchanges.empty())
+    return;
+  if (idle)
     return;
   if (step) {
     // A step phase launched past the end of the run (T at the end, no big

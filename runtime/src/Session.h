@@ -132,6 +132,11 @@ private:
     std::vector<size_t> timeValues;
     /// Distributed plans: the ghosts to refresh after the launch.
     std::vector<GhostRefresh> exchanges;
+    /// A launch inside a repeat (a grid-wide sub-step round or a local
+    /// time step's slot): the plan component whose sub-step clock says,
+    /// the same on every rank, whether the round or slot takes a sub-step
+    /// at all; -1 outside repeats.
+    int roundOf = -1;
   };
 
   int bufferIndex(const std::string &name) const;
@@ -207,6 +212,10 @@ private:
   size_t gatherReplicated(const std::vector<GhostRefresh> &refreshes);
   /// Every buffer's ghosts, both halves (after init and setBuffer).
   void refreshAllGhosts();
+  /// Whether the round or slot `p` is about to launch takes no sub-step
+  /// (its kernels then write nothing), from the sub-step clock of
+  /// `p.roundOf` as every rank holds it.
+  bool idleRound(const Prepared &p);
   /// The all-reduce (maximum) of the codes of this big step's blocks in the
   /// levels of `components` (a launch's `reduce_max_levels`).
   void reduceLevels(const std::vector<uint32_t> &components, bool counted);
