@@ -1035,7 +1035,12 @@ void Session::reduceLevels(const std::vector<uint32_t> &components,
                   size_t(blocks) * sizeof(int64_t));
   for (int64_t &value : values)
     value = -value;
-  comm->minimum(values.data(), int32_t(values.size()));
+  // The communicator counts in int32: a range of more than 2^36 items
+  // takes several all-reduces.
+  const size_t most = size_t(std::numeric_limits<int32_t>::max());
+  for (size_t from = 0; from < values.size(); from += most)
+    comm->minimum(values.data() + from,
+                  int32_t(std::min(most, values.size() - from)));
   for (int64_t &value : values)
     value = -value;
   for (size_t c = 0; c < components.size(); ++c)
