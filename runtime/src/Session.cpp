@@ -1027,7 +1027,12 @@ void Session::reduceLevels(const std::vector<uint32_t> &components,
   backend->read(clock, clockMemory.pointer, sizeof clock);
   const int64_t block = int64_t(schema::LocalStepBlock::Items);
   int64_t blocks = (settings.range + block - 1) / block;
-  DevicePtr offset = DevicePtr(clock[kSlotParity] * blocks) * sizeof(int64_t);
+  int64_t parity = clock[kSlotParity];
+  if (parity != 0 && parity != 1)
+    fail(SIM_ERROR_CLOCK, "the clock's parity is " + std::to_string(parity) +
+                              ", not 0 or 1, before the all-reduce of the "
+                              "levels");
+  DevicePtr offset = DevicePtr(parity * blocks) * sizeof(int64_t);
   std::vector<int64_t> values(size_t(blocks) * components.size());
   for (size_t c = 0; c < components.size(); ++c)
     backend->read(values.data() + c * size_t(blocks),
