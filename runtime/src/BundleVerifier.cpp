@@ -467,9 +467,11 @@ private:
     }
     if (!plan.distributed &&
         (!launch.reduce_min.empty() || !launch.exchange.empty() ||
-         !launch.reduce_max_levels.empty()))
+         !launch.exchange_targets.empty() || !launch.reduce_max_levels.empty()))
       bad(about + " has " +
-          (launch.exchange.empty() ? "all-reduces" : "exchanges") +
+          (launch.exchange.empty() && launch.exchange_targets.empty()
+               ? "all-reduces"
+               : "exchanges") +
           ", but the plan is not distributed");
     std::set<uint32_t> reducedLevels;
     for (uint32_t c : launch.reduce_max_levels) {
@@ -504,6 +506,12 @@ private:
         bad(about + " exchanges " +
             (entry.snapshot() ? "the snapshot of buffer " : "buffer ") +
             quoted(bufferName(entry.buffer())) + " twice");
+    }
+    for (uint32_t b : launch.exchange_targets) {
+      checkIndex(b, plan.buffers.size(),
+                 about + ": a buffer whose target half it exchanges");
+      if (!exchanged.insert({b, false}).second)
+        bad(about + " exchanges buffer " + quoted(bufferName(b)) + " twice");
     }
   }
 

@@ -384,9 +384,14 @@ Session::Prepared Session::prepareLaunch(const schema::LaunchT &launch) {
       break;
     }
   }
-  if (distributed())
+  if (distributed()) {
     for (const schema::Exchange &entry : launch.exchange)
       p.exchanges.push_back(refreshOf(entry.buffer(), entry.snapshot()));
+    for (uint32_t buffer : launch.exchange_targets) {
+      p.exchanges.push_back(refreshOf(buffer, false));
+      p.exchanges.back().targetOnly = true;
+    }
+  }
   return p;
 }
 
@@ -1122,8 +1127,27 @@ void Session::launchDistributed(Prepared &p, bool counted, bool step) {
   }
   // The items travel while the next launches compute what needs none of
   // them (launchAroundExchange); endGhosts puts them in place before
-  // anything else looks.
-  beginGhosts(p.exchanges, counted);
+  // anything else looks. Of a buffer the launch wrote in its target half
+  // only, that half travels (the other, the big step's source, is
+  // unchanged since it travelled as the previous big step's target).
+  bool anyTarget =
+      std::any_of(p.exchanges.begin(), p.exchanges.end(),
+                  [](const GhostRefresh &r) { return r.targetOnly; });
+  if (!anyTarget)
+    return beginGhosts(p.exchanges, counted);
+  int64_t parity = 0;
+  backend->read(&parity, clockMemory.pointer + kSlotParity * sizeof(int64_t),
+                sizeof parity);
+  if (parity != 0 && parity != 1)
+    fail(SIM_ERROR_CLOCK, "the clock's parity is " + std::to_string(parity) +
+                              ", not 0 or 1, after a launch");
+  std::vector<GhostRefresh> refreshes = p.exchanges;
+  for (GhostRefresh &r : refreshes)
+    if (r.targetOnly) {
+      r.base = r.element(int(1 - parity), 0);
+      r.halves = 1;
+    }
+  beginGhosts(refreshes, counted);
 }
 
 void Session::gatherItems(DevicePtr array, int64_t own, size_t stride,

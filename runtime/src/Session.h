@@ -116,6 +116,9 @@ private:
     const GhostLists *lists;
     /// The plan buffer.
     size_t buffer;
+    /// Only the target half (1 - parity) travels (`exchange_targets`);
+    /// beginGhosts' copy points `base` at it and has one half.
+    bool targetOnly = false;
     /// Where element `e` of half `half` lies.
     DevicePtr element(int half, int64_t e) const {
       return base + DevicePtr(half * elements + e) * stride;

@@ -568,6 +568,14 @@ TEST(Distributed, VerifierChecksTheRecords) {
   expectBad(std::move(contents), "exchanges the snapshot of buffer 'X', "
                                  "which has none");
   contents = ringContents(Boundary::Wrap);
+  contents.plans[0]->phases[1]->body[2]->launch->exchange_targets = {5};
+  expectBad(std::move(contents), "a buffer whose target half it exchanges is "
+                                 "5, but there are only");
+  contents = ringContents(Boundary::Wrap);
+  contents.plans[0]->phases[1]->body[2]->launch->exchange.clear();
+  contents.plans[0]->phases[1]->body[2]->launch->exchange_targets = {0, 0};
+  expectBad(std::move(contents), "exchanges buffer 'X' twice");
+  contents = ringContents(Boundary::Wrap);
   contents.plans[0]->phases[1]->body[1]->launch->reduce_max_levels = {7};
   expectBad(std::move(contents), "a component whose levels it all-reduces "
                                  "is 7, but there are only");

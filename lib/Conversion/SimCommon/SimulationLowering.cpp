@@ -268,11 +268,19 @@ LogicalResult SimulationLowering::endKernel(Kernel &kernel,
   pendingExchange.clear();
   pendingExchangeSnapshots.clear();
   pendingReduce.clear();
-  if (distributed && component)
+  // A component that advances by whole_step or group_substeps writes the
+  // target half only (the source half holds T for its readers), so only
+  // that half's ghosts travel; the others write both halves (sub-steps that
+  // ping-pong, parity copies, local time levels).
+  SmallVector<Attribute> exchangeTargets;
+  if (distributed && component) {
+    bool targetOnly = component.getAdvance() == Advance::whole_step ||
+                      component.getAdvance() == Advance::group_substeps;
     for (FlatSymbolRefAttr write :
          component.getWrites().getAsRange<FlatSymbolRefAttr>())
       if (travels(simulation.lookupBuffer(write)))
-        exchange.push_back(write);
+        (targetOnly ? exchangeTargets : exchange).push_back(write);
+  }
   simplan::LaunchOp::create(
       launches, b.loc, kernelRef,
       simplan::LaunchShapeAttr::get(b.getContext(), shape),
@@ -286,7 +294,9 @@ LogicalResult SimulationLowering::endKernel(Kernel &kernel,
       exchange.empty() ? ArrayAttr() : launches.getArrayAttr(exchange),
       exchangeSnapshots.empty() ? ArrayAttr()
                                 : launches.getArrayAttr(exchangeSnapshots),
-      reduceLevels.empty() ? ArrayAttr() : launches.getArrayAttr(reduceLevels));
+      reduceLevels.empty() ? ArrayAttr() : launches.getArrayAttr(reduceLevels),
+      exchangeTargets.empty() ? ArrayAttr()
+                              : launches.getArrayAttr(exchangeTargets));
   return success();
 }
 

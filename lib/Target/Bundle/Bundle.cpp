@@ -490,7 +490,8 @@ PlanReader::readLaunch(simplan::LaunchOp launch) {
   if (std::optional<ArrayRef<int64_t>> slots = launch.getReduceMin())
     for (int64_t slot : *slots)
       record->reduce_min.push_back(uint32_t(slot));
-  auto exchange = [&](ArrayAttr names, bool snapshot) -> LogicalResult {
+  auto exchange = [&](ArrayAttr names, bool snapshot,
+                      bool target = false) -> LogicalResult {
     if (!names)
       return success();
     for (auto name : names.getAsRange<FlatSymbolRefAttr>()) {
@@ -498,12 +499,16 @@ PlanReader::readLaunch(simplan::LaunchOp launch) {
       if (found == buffers.end())
         return launch.emitOpError()
                << "exchanges " << name << ", which is not a buffer of the plan";
-      record->exchange.emplace_back(found->second, snapshot);
+      if (target)
+        record->exchange_targets.push_back(found->second);
+      else
+        record->exchange.emplace_back(found->second, snapshot);
     }
     return success();
   };
   if (failed(exchange(launch.getExchangeAttr(), false)) ||
-      failed(exchange(launch.getExchangeSnapshotsAttr(), true)))
+      failed(exchange(launch.getExchangeSnapshotsAttr(), true)) ||
+      failed(exchange(launch.getExchangeTargetsAttr(), false, true)))
     return failure();
   if (ArrayAttr names = launch.getReduceMaxLevelsAttr())
     for (auto name : names.getAsRange<FlatSymbolRefAttr>()) {

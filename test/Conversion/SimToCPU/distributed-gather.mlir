@@ -2,7 +2,8 @@
 // holds all of it, so the kernels address it as on one process (item i at
 // element i, halves `range` apart, the boundary rule on every read of
 // another item) while the buffers with ghost items keep the block's
-// addressing; its writer's launch records the exchange (an all-gather).
+// addressing; its writer's launch records the exchange of the half it
+// writes (an all-gather of every rank's block of the target half).
 //
 // RUN: sim-opt %s --sim-front-end="strategy=simple distributed=true" --sim-lower-to-cpu 2>/dev/null | FileCheck %s
 
@@ -58,5 +59,5 @@ sim.simulation @pairs range(100) dt(1.0e-2 : f32) max_steps(1) {
 // CHECK:         simplan.buffer @X : f32 stride(4) replicated
 // CHECK:         simplan.buffer @Y : f32 stride(4) observed{{$}}
 // CHECK:         simplan.launch @pairs_kernels::@init_X items {{.*}} exchange [@X]
-// CHECK:         simplan.launch @pairs_kernels::@evaluate_Move items {{.*}} for @Move exchange [@X]
+// CHECK:         simplan.launch @pairs_kernels::@evaluate_Move items {{.*}} for @Move exchange_targets [@X]
 // CHECK:         simplan.launch @pairs_kernels::@evaluate_Pick items {{.*}} for @Pick{{$}}

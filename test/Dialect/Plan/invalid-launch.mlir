@@ -340,3 +340,26 @@ module attributes {gpu.container_module} {
     }
   }
 }
+
+// -----
+
+module attributes {gpu.container_module} {
+  simplan.plan @p strategy("simple") kernels(@k) range(4) dt(1.0e-2 : f32) max_steps(1) step_cap(1) group_size(32) clock_slots(10) histogram(8) distributed halo(1) {
+    simplan.buffer @X : f32 stride(4) halo [1, 1]
+    simplan.phase step {
+      // expected-error @+1 {{'simplan.launch' op exchanges @X both whole and by its target half}}
+      simplan.launch @k::@evaluate_C items [#simplan.arg<buffer @X>, #simplan.arg<first>] exchange [@X] exchange_targets [@X]
+    }
+  }
+}
+
+// -----
+
+module attributes {gpu.container_module} {
+  simplan.plan @p strategy("simple") kernels(@k) range(4) dt(1.0e-2 : f32) max_steps(1) step_cap(1) group_size(32) clock_slots(10) histogram(8) distributed halo(1) {
+    simplan.phase step {
+      // expected-error @+1 {{'simplan.launch' op exchanges @Y, which is not a buffer of the plan}}
+      simplan.launch @k::@evaluate_C items [#simplan.arg<first>] exchange_targets [@Y]
+    }
+  }
+}

@@ -269,8 +269,9 @@ LaunchOp::verifyCommunication(PlanOp plan, SymbolTableCollection &symbolTable) {
         !distributed)
       return emitOpError() << "passes " << arg
                            << ", which only a distributed plan has";
-  if (!distributed && (getReduceMin() || getExchange() ||
-                       getExchangeSnapshots() || getReduceMaxLevels()))
+  if (!distributed &&
+      (getReduceMin() || getExchange() || getExchangeSnapshots() ||
+       getReduceMaxLevels() || getExchangeTargets()))
     return emitOpError() << "communicates between ranks in a plan that is not "
                             "distributed";
   if (std::optional<ArrayRef<int64_t>> slots = getReduceMin())
@@ -280,6 +281,7 @@ LaunchOp::verifyCommunication(PlanOp plan, SymbolTableCollection &symbolTable) {
                << "all-reduces clock slot " << slot << ", but the clock has "
                << plan.getClockSlots() << " slots";
   for (auto [names, snapshot] : {std::pair(getExchangeAttr(), false),
+                                 std::pair(getExchangeTargetsAttr(), false),
                                  std::pair(getExchangeSnapshotsAttr(), true)}) {
     if (!names)
       continue;
@@ -294,6 +296,12 @@ LaunchOp::verifyCommunication(PlanOp plan, SymbolTableCollection &symbolTable) {
                << "exchanges the snapshot of " << name << ", which has none";
     }
   }
+  if (ArrayAttr both = getExchangeAttr(), targets = getExchangeTargetsAttr();
+      both && targets)
+    for (Attribute name : targets)
+      if (llvm::is_contained(both, name))
+        return emitOpError()
+               << "exchanges " << name << " both whole and by its target half";
   if (ArrayAttr names = getReduceMaxLevelsAttr())
     for (auto name : names.getAsRange<FlatSymbolRefAttr>()) {
       auto component =

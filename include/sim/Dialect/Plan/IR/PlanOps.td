@@ -341,7 +341,11 @@ def Plan_LaunchOp : Plan_Op<"launch", [
     consumes it); `exchange` lists buffers whose ghost items (both halves)
     travel after the launch, and `exchange_snapshots` buffers whose
     snapshot's ghost items do: the buffers the launch writes that some read
-    reaches at other items. `reduce_max_levels` lists components that take
+    reaches at other items. `exchange_targets` lists buffers of which only
+    the target half's ghost items travel (half `1 - parity`): those written
+    by a component that advances by `whole_step` or `group_substeps`, whose
+    launch writes the target half and leaves the source half, which every
+    rank already holds, as it was. `reduce_max_levels` lists components that take
     local time steps whose blocks' sub-step codes of the big step (half
     `parity` of their `levels`, written by `levels_C`) every rank replaces
     by their maximum over all ranks before the launch, so that every rank
@@ -349,7 +353,7 @@ def Plan_LaunchOp : Plan_Op<"launch", [
 
     ```mlir
     simplan.launch @k::@advance single [#simplan.arg<clock>] reduce_min [4]
-    simplan.launch @k::@step_C0 items [...] for @C0 exchange [@B0]
+    simplan.launch @k::@step_C0 items [...] for @C0 exchange_targets [@B0]
     simplan.launch @k::@limit_levels_C single [...] reduce_max_levels [@C]
     ```
   }];
@@ -361,13 +365,15 @@ def Plan_LaunchOp : Plan_Op<"launch", [
                        OptionalAttr<DenseI64ArrayAttr>:$reduce_min,
                        OptionalAttr<FlatSymbolRefArrayAttr>:$exchange,
                        OptionalAttr<FlatSymbolRefArrayAttr>:$exchange_snapshots,
-                       OptionalAttr<FlatSymbolRefArrayAttr>:$reduce_max_levels);
+                       OptionalAttr<FlatSymbolRefArrayAttr>:$reduce_max_levels,
+                       OptionalAttr<FlatSymbolRefArrayAttr>:$exchange_targets);
   let assemblyFormat = [{
     $kernel custom<EnumKeyword>($shape) $args (`for` $component^)?
     (`shared` `(` $shared_per_thread^ `,` $shared_fixed `)`)?
     (`reduce_min` $reduce_min^)? (`exchange` $exchange^)?
     (`exchange_snapshots` $exchange_snapshots^)?
-    (`reduce_max_levels` $reduce_max_levels^)? attr-dict
+    (`reduce_max_levels` $reduce_max_levels^)?
+    (`exchange_targets` $exchange_targets^)? attr-dict
   }];
   let extraClassDeclaration = [{
     ::mlir::LogicalResult
