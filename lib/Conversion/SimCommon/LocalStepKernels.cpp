@@ -285,7 +285,8 @@ LogicalResult SimulationLowering::emitLocalSteps(ComponentOp component,
           Value slot, Value parity, int64_t countSlot,
           function_ref<void(const Lane &, Value, Value, bool)> inStep,
           function_ref<void(const Lane &)> general,
-          function_ref<void(const Lane &, Value, Value)> repair) {
+          function_ref<void(const Lane &, Value, Value)> repair,
+          int64_t interiorBelow = -1, int64_t interiorAbove = -1) {
         Value blocks = blocksOf(kernel);
         Value range = kernel.values.range;
         auto forPart = [&](const Part &part, Value same, Value code,
@@ -411,6 +412,71 @@ LogicalResult SimulationLowering::emitLocalSteps(ComponentOp component,
                        [&] { repairLanes(b.sub(part.count, edge)); });
               b.setInsertionPointToStart(split.elseBlock());
               countingLanes(general);
+            });
+            return;
+          }
+          if (origin && interiorBelow >= 0 &&
+              interiorBelow + interiorAbove < kLevelBlock) {
+            // A run of a flux writer's interfaces whose neighbourhood is
+            // not in step: the interfaces of a block whose readers and
+            // state lie in the block (all but `interiorBelow` at its start
+            // and `interiorAbove` at its end) take the block's sub-step and
+            // read it in step, so they run as SIMD chunks at the slots
+            // where the block starts one; the others take the general
+            // path, which finds each one's sub-step. The same evaluations
+            // as the general path for every interface.
+            b.ifThen(startsAt(slot, b.sub(b.i64(0), code)), [&] {
+              Value half = b.mul(b.toIndex(parity), blocks);
+              Value end = b.add(part.base, part.count);
+              auto generalLanes = [&](Value from, Value to) {
+                b.ifThen(b.cmp(arith::CmpIPredicate::ult, from, to), [&] {
+                  piecesOf(kernel,
+                           Part{from, b.index(0), b.sub(to, from),
+                                /*whole=*/false},
+                           origin,
+                           [&](const Part &piece) { lanesOf(piece, general); });
+                });
+              };
+              whileIndex(
+                  part.base,
+                  [&](Value start) {
+                    return b.cmp(arith::CmpIPredicate::ult, start, end);
+                  },
+                  [&](Value start) {
+                    Value block = blockOf(start);
+                    Value blockStart = b.mul(block, b.index(kLevelBlock));
+                    Value blockEnd =
+                        b.min(b.add(blockStart, b.index(kLevelBlock)), range);
+                    Value stop = b.min(blockEnd, end);
+                    Value low = b.min(
+                        b.max(start, b.add(blockStart, b.index(interiorBelow))),
+                        stop);
+                    // blockEnd - interiorAbove, not below `low`.
+                    Value high = b.max(
+                        low, b.min(stop, b.sub(b.max(blockEnd,
+                                                     b.index(interiorAbove)),
+                                               b.index(interiorAbove))));
+                    Value level = b.load(levels, b.add(half, block));
+                    Value interior = arith::AndIOp::create(
+                        b, b.loc, b.cmp(arith::CmpIPredicate::ult, low, high),
+                        startsAt(slot, level));
+                    b.ifThen(interior, [&] {
+                      Value readParity = readParityOf(parity, slot, level);
+                      lanesOf(Part{low, b.index(0), b.sub(high, low),
+                                   /*whole=*/false},
+                              [&](const Lane &lane) {
+                                inStep(lane, level, readParity,
+                                       /*counted=*/false);
+                              });
+                      b.atomic(arith::AtomicRMWKind::addi,
+                               arith::IndexCastOp::create(
+                                   b, b.loc, b.getI64Type(), b.sub(high, low)),
+                               kernel.clock, b.index(countSlot));
+                    });
+                    generalLanes(start, low);
+                    generalLanes(high, stop);
+                    return stop;
+                  });
             });
             return;
           }
@@ -875,7 +941,7 @@ LogicalResult SimulationLowering::emitLocalSteps(ComponentOp component,
             b.ifThen(startsAt(slot, level),
                      [&] { evaluateLane(lane, level, false, Value()); });
           },
-          nullptr);
+          nullptr, fluxBelow, fluxAbove);
       target.reduceIntoClock(b, kernel, count, arith::AtomicRMWKind::addi,
                              evaluationSlots.lookup(fluxWriter));
     });
