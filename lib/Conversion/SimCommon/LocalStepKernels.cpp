@@ -34,9 +34,11 @@
 // that a slot kernel decides from one value per run which blocks start at
 // the slot and which of those read their neighbours in step (wide loads on
 // a CPU) or through their time levels. levels_C combines its items into
-// half p with an atomic maximum of kLevelCode - sub-step (0, what the
-// runtime and limit_levels_C of the previous big step leave there, is the
-// identity); limit_levels_C turns the codes into sub-steps, clears half
+// half p with an atomic maximum of kLevelCode - min(num_steps, m) (0, what
+// the runtime and limit_levels_C of the previous big step leave there, is
+// the identity); limit_levels_C turns the codes into sub-steps (the largest
+// power of two not above the block's minimum, once per block rather than
+// per item: rounding down commutes with the minimum), clears half
 // 1 - p for the next big step and writes the codes and runs. The sub-step
 // clock of the component holds: Begin, the time T + q of the next slot
 // (advance resets it to T); Size, the finest sub-step; Done, the
@@ -563,7 +565,7 @@ LogicalResult SimulationLowering::emitLocalSteps(ComponentOp component,
         values.item = lane.item;
         Value steps = b.extend(
             estimate(kernel, writer, lane.item, begin, values), b.getI64Type());
-        return b.sub(b.i64(kLevelCode), b.floorPowerOfTwo(b.min(steps, size)));
+        return b.sub(b.i64(kLevelCode), b.min(steps, size));
       };
       target.forEachGroup(b, kernel, [&](Value base) {
         target.forEachLane(b, kernel, base, [&](const Lane &lane) {
@@ -644,15 +646,17 @@ LogicalResult SimulationLowering::emitLocalSteps(ComponentOp component,
           b, b.loc, b.getI64Type(), b.mul(b.toIndex(parity), blocksOf(kernel)));
       auto at = [&](Value block) { return b.toIndex(b.add(half, block)); };
       auto levelAt = [&](Value block) { return b.load(levels, at(block)); };
-      // The codes of levels_C to sub-steps; the other half, the previous
-      // big step's, cleared for the next (0 is the identity of its codes).
+      // The codes of levels_C to sub-steps (the block's minimum num_steps
+      // rounded down to a power of two); the other half, the previous big
+      // step's, cleared for the next (0 is the identity of its codes).
       {
         Value other = b.mul(b.xorOne(parity), blocks);
         auto decode = scf::ForOp::create(b, b.loc, zero, blocks, one);
         OpBuilder::InsertionGuard guard(b);
         b.setInsertionPoint(decode.getBody()->getTerminator());
         Value k = decode.getInductionVar();
-        b.store(b.sub(b.i64(kLevelCode), levelAt(k)), levels, at(k));
+        b.store(b.floorPowerOfTwo(b.sub(b.i64(kLevelCode), levelAt(k))), levels,
+                at(k));
         b.store(zero, levels, b.toIndex(b.add(other, k)));
       }
       // Lowers block `g` to twice its finest neighbour; returns whether it
