@@ -78,6 +78,15 @@ Value KernelBuilder::atomic(arith::AtomicRMWKind kind, Value value,
   return memref::AtomicRMWOp::create(*this, loc, kind, value, memref, index);
 }
 
+void KernelBuilder::addAndRunLast(Value count, Value total, Value memref,
+                                  Value index, function_ref<void()> body) {
+  Value before = atomic(arith::AtomicRMWKind::addi, count, memref, index);
+  ifThen(cmp(arith::CmpIPredicate::eq, add(before, count), total), [&] {
+    store(i64(0), memref, index);
+    body();
+  });
+}
+
 scf::IfOp
 KernelBuilder::ifThenElse(TypeRange types, Value cond,
                           function_ref<SmallVector<Value>()> thenBuilder,

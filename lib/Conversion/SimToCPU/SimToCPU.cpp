@@ -255,13 +255,7 @@ public:
                                      b.sub(b.add(range, size), b.i64(1)), size);
     }
     b.ifThen(b.cmp(arith::CmpIPredicate::sgt, mine, b.i64(0)), [&] {
-      Value before = b.atomic(arith::AtomicRMWKind::addi, mine, kernel.clock,
-                              b.index(counter));
-      b.ifThen(b.cmp(arith::CmpIPredicate::eq, b.add(before, mine), total),
-               [&] {
-                 b.store(b.i64(0), kernel.clock, b.index(counter));
-                 body();
-               });
+      b.addAndRunLast(mine, total, kernel.clock, b.index(counter), body);
     });
   }
 

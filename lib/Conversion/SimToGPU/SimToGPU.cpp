@@ -205,13 +205,7 @@ public:
             toI64(b.sub(kernel.values.extent, b.index(2 * kernel.values.halo)));
         mine = b.min(size, b.sub(total, base));
       }
-      Value before = b.atomic(arith::AtomicRMWKind::addi, mine, kernel.clock,
-                              b.index(counter));
-      b.ifThen(b.cmp(arith::CmpIPredicate::eq, b.add(before, mine), total),
-               [&] {
-                 b.store(b.i64(0), kernel.clock, b.index(counter));
-                 body();
-               });
+      b.addAndRunLast(mine, total, kernel.clock, b.index(counter), body);
     });
   }
 

@@ -59,6 +59,10 @@ struct KernelBuilder : OpBuilder {
   /// An atomic read-modify-write; returns the value before it.
   Value atomic(arith::AtomicRMWKind kind, Value value, Value memref,
                Value index);
+  /// Adds `count` (i64) to the counter at `memref[index]`; the caller whose
+  /// addition brings it to `total` resets it to 0 and runs `body`.
+  void addAndRunLast(Value count, Value total, Value memref, Value index,
+                     function_ref<void()> body);
 
   /// scf.if with results; the callbacks build each branch and return what
   /// it yields.
