@@ -126,7 +126,7 @@ private:
   void runBlock(Block &block) {
     for (Operation &op : block) {
       if (auto repeat = dyn_cast<simplan::RepeatOp>(op)) {
-        for (int64_t i = 0; i < repeat.getCount(); ++i)
+        for (uint64_t i = 0; i < repeat.getCount(); ++i)
           runBlock(repeat.getBody().front());
       } else if (auto launch = dyn_cast<simplan::LaunchOp>(op)) {
         this->launch(launch);

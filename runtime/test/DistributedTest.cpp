@@ -649,10 +649,13 @@ TEST(Distributed, SimRunWithMpirun) {
   int status = run(mpirun + "3", "bad", "--distributed --group-size 32");
   EXPECT_NE(status, 0);
   log = readFile(dir + "/bad.log");
-  EXPECT_NE(log.find("3 ranks for a range of 2 groups of 32 items: use at "
-                     "most 2 ranks or a smaller group size"),
+  // Rank 0 says it, once.
+  EXPECT_NE(log.find("sim-run: rank 0: 3 ranks for a range of 2 groups of 32 "
+                     "items: use at most 2 ranks or a smaller group size"),
             std::string::npos)
       << log;
+  EXPECT_EQ(log.find("sim-run: rank 1:"), std::string::npos) << log;
+  EXPECT_EQ(log.find("sim-run: rank 2:"), std::string::npos) << log;
 
   // A bundle made for one process.
   writeFile(dir + "/decay.simb", decayBundle());

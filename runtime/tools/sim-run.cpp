@@ -54,6 +54,7 @@
 #include <string>
 #include <sys/stat.h>
 #include <sys/wait.h>
+#include <thread>
 #include <unistd.h>
 #include <vector>
 
@@ -1119,6 +1120,10 @@ std::string selfDirectory() {
   return path.substr(0, path.rfind('/'));
 }
 
+/// How long a failing rank other than 0 waits before it reports and ends
+/// every rank (runDistributed).
+constexpr std::chrono::seconds kRankErrorDelay{2};
+
 /// --distributed: run on every rank of MPI_COMM_WORLD, through the MPI
 /// plugin next to the runtime's libraries (opened only here, so that
 /// sim-run runs without MPI's libraries otherwise).
@@ -1155,6 +1160,12 @@ int runDistributed(Options options, int &argc, char **&argv) {
     close(mpi);
     return status;
   } catch (const Exit &exit) {
+    // Most errors stop every rank alike (a bad option or bundle, too many
+    // ranks, ranks that disagree): the others give rank 0 time to print
+    // the message once and end them all. A rank that fails alone still
+    // says so after the wait.
+    if (worldRank != 0)
+      std::this_thread::sleep_for(kRankErrorDelay);
     if (!exit.message.empty())
       std::fprintf(stderr, "sim-run: rank %d: %s\n", worldRank,
                    exit.message.c_str());
