@@ -1080,9 +1080,33 @@ bool Session::idleRound(const Prepared &p) {
            subBegin - fixed[kSlotBegin] < fixed[kSlotSize]);
 }
 
+bool Session::settledRound(const Prepared &p) {
+  if (p.roundOf < 0 || p.launch->shape != LaunchShape::Single)
+    return false;
+  const schema::ComponentT &component = *plan_->components[size_t(p.roundOf)];
+  if (component.advance != Advance::GridSubSteps)
+    return false;
+  int64_t fixed[kSlotSize + 1];
+  backend->read(fixed, clockMemory.pointer, sizeof fixed);
+  int64_t sub[2];
+  backend->read(sub,
+                clockMemory.pointer + component.sub_clock * sizeof(int64_t),
+                sizeof sub);
+  // substep_advance commits the sub-step in progress and takes the
+  // estimate only while the big step has base steps left after it.
+  int64_t end = fixed[kSlotBegin] + fixed[kSlotSize];
+  int64_t now = sub[int(schema::SubClockSlot::Begin)] +
+                sub[int(schema::SubClockSlot::Size)];
+  return end - now <= 0;
+}
+
 void Session::launchDistributed(Prepared &p, bool counted, bool step) {
   const std::vector<uint32_t> &slots = p.launch->reduce_min;
-  if (!slots.empty()) {
+  // A round's estimate decides nothing once its component has reached the
+  // end of the big step (every round after the last sub-step): no
+  // all-reduce for it. Every rank holds the same sub-step clock, so all
+  // skip alike.
+  if (!slots.empty() && !settledRound(p)) {
     // The decisions every rank must share (the big step): their minimum
     // over the ranks, in one all-reduce.
     std::vector<int64_t> values(slots.size());

@@ -219,6 +219,10 @@ private:
   /// (its kernels then write nothing), from the sub-step clock of
   /// `p.roundOf` as every rank holds it.
   bool idleRound(const Prepared &p);
+  /// Whether `p` decides the next sub-step of a grid round whose component
+  /// has already reached the end of the big step (so its all-reduce of the
+  /// estimate would decide nothing).
+  bool settledRound(const Prepared &p);
   /// The all-reduce (maximum) of the codes of this big step's blocks in the
   /// levels of `components` (a launch's `reduce_max_levels`).
   void reduceLevels(const std::vector<uint32_t> &components, bool counted);
