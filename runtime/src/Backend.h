@@ -57,6 +57,11 @@ public:
   virtual void launch(int kernel, void **params, int64_t groups,
                       int64_t groupSize, int64_t sharedBytes) = 0;
 
+  /// Whether `launch` returns only once the kernel has finished and `read`
+  /// is a plain copy (the CPU), so that looking at the clock between two
+  /// launches costs no synchronisation.
+  virtual bool launchesSynchronously() const { return false; }
+
   /// Whether launchGroups runs a part of a launch's groups (the CPU).
   virtual bool launchesGroupRanges() const { return false; }
   /// Runs the groups `firstGroup .. firstGroup + groups` of a launch of

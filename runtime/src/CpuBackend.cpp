@@ -285,6 +285,7 @@ public:
     kernelTime += std::chrono::steady_clock::now() - start;
   }
 
+  bool launchesSynchronously() const override { return true; }
   bool launchesGroupRanges() const override { return true; }
   void launchGroups(int kernel, void **params, int64_t firstGroup,
                     int64_t groups, int64_t groupSize) override {

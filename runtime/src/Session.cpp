@@ -467,8 +467,15 @@ void Session::runStepPhase() {
     ++metrics.graph_launches;
     return;
   }
-  for (uint32_t index : step)
-    launch(launches[index]);
+  // Where the host sees the clock for free, the rounds and slots that
+  // would change nothing (those after a component's last sub-step of the
+  // big step) are not launched.
+  bool skipNoOps = backend->launchesSynchronously();
+  for (uint32_t index : step) {
+    Prepared &p = launches[index];
+    if (!skipNoOps || !noOpLaunch(p))
+      launch(p);
+  }
 }
 
 void Session::readClock(size_t slots) {
@@ -1061,7 +1068,9 @@ void Session::reduceLevels(const std::vector<uint32_t> &components,
     ++metrics.host_syncs;
 }
 
-bool Session::idleRound(const Prepared &p) {
+bool Session::noOpLaunch(const Prepared &p) {
+  if (p.roundOf < 0)
+    return false;
   const schema::ComponentT &component = *plan_->components[size_t(p.roundOf)];
   int64_t fixed[kSlotSize + 1];
   backend->read(fixed, clockMemory.pointer, sizeof fixed);
@@ -1069,15 +1078,17 @@ bool Session::idleRound(const Prepared &p) {
   backend->read(sub,
                 clockMemory.pointer + component.sub_clock * sizeof(int64_t),
                 sizeof sub);
+  int64_t begin = fixed[kSlotBegin], size = fixed[kSlotSize];
   int64_t subBegin = sub[int(schema::SubClockSlot::Begin)];
   int64_t subSize = sub[int(schema::SubClockSlot::Size)];
   if (component.advance == Advance::GridSubSteps)
-    // substep_C takes the sub-step substep_advance decided: none at 0.
-    return p.launch->shape == LaunchShape::Items && subSize == 0;
-  // A slot kernel runs while its slot (the sub-step clock's Begin less T)
-  // lies inside the big step.
-  return !(fixed[kSlotSize] > 0 &&
-           subBegin - fixed[kSlotBegin] < fixed[kSlotSize]);
+    // The component has committed its last sub-step (docs/Plan.md): the
+    // estimate finds no time left, substep_advance decides none and
+    // rewrites the clock as it is, substep_C takes none.
+    return subSize == 0 && subBegin >= begin + size;
+  // A slot kernel does something (and moves the clock on) only while its
+  // slot, the sub-step clock's Begin less T, lies inside the big step.
+  return !(size > 0 && subBegin - begin < size);
 }
 
 bool Session::settledRound(const Prepared &p) {
@@ -1101,6 +1112,12 @@ bool Session::settledRound(const Prepared &p) {
 }
 
 void Session::launchDistributed(Prepared &p, bool counted, bool step) {
+  // A round or slot that takes no sub-step (a round after the last
+  // sub-step, a slot past the big step) changes nothing: no launch, no
+  // all-reduce, no exchange (a buffer travels once per sub-step its writer
+  // takes). Every rank holds the same sub-step clock, so all skip alike.
+  if (noOpLaunch(p))
+    return;
   const std::vector<uint32_t> &slots = p.launch->reduce_min;
   // A round's estimate decides nothing once its component has reached the
   // end of the big step (every round after the last sub-step): no
@@ -1123,11 +1140,6 @@ void Session::launchDistributed(Prepared &p, bool counted, bool step) {
   }
   if (!p.launch->reduce_max_levels.empty())
     reduceLevels(p.launch->reduce_max_levels, counted);
-  // A round or slot that takes no sub-step (a round after the last
-  // sub-step, a slot past the big step) writes nothing, so its exchanges
-  // carry nothing new: a buffer travels once per sub-step its writer
-  // takes. Every rank holds the same sub-step clock, so all skip alike.
-  bool idle = p.roundOf >= 0 && !p.exchanges.empty() && idleRound(p);
   if (readsPendingGhosts(p))
     launchAroundExchange(p);
   else
@@ -1136,8 +1148,6 @@ void Session::launchDistributed(Prepared &p, bool counted, bool step) {
   if (counted)
     ++metrics.launches;
   if (p.exchanges.empty())
-    return;
-  if (idle)
     return;
   if (step) {
     // A step phase launched past the end of the run (T at the end, no big

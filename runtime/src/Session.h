@@ -215,10 +215,11 @@ private:
   size_t gatherReplicated(const std::vector<GhostRefresh> &refreshes);
   /// Every buffer's ghosts, both halves (after init and setBuffer).
   void refreshAllGhosts();
-  /// Whether the round or slot `p` is about to launch takes no sub-step
-  /// (its kernels then write nothing), from the sub-step clock of
-  /// `p.roundOf` as every rank holds it.
-  bool idleRound(const Prepared &p);
+  /// Whether `p`, a launch of a round or slot of the component
+  /// `p.roundOf`, would change nothing because that component has taken
+  /// its last sub-step of the big step (docs/Plan.md), from the clock as
+  /// every rank holds it.
+  bool noOpLaunch(const Prepared &p);
   /// Whether `p` decides the next sub-step of a grid round whose component
   /// has already reached the end of the big step (so its all-reduce of the
   /// estimate would decide nothing).

@@ -1013,10 +1013,14 @@ LogicalResult SimulationLowering::emitLocalSteps(ComponentOp component,
     // The next slot where a block starts a sub-step, set by the invocation
     // that finishes the slot last (every other one has read `now`): no
     // launch of its own. The sub-step clock's count slot, which `lts` does
-    // not otherwise use, counts the invocations.
-    target.afterLastInvocation(b, kernel, sub + kSubCount, [&] {
-      Value finest = b.load(kernel.clock, b.index(sub + kSubSize));
-      b.store(b.add(now, finest), kernel.clock, b.index(sub + kSubBegin));
+    // not otherwise use, counts the invocations. A slot past the big step
+    // leaves the clock at T + m, so that its launch changes nothing at all
+    // (a host that reads the clock may skip it: docs/Plan.md).
+    b.ifThen(state.running, [&] {
+      target.afterLastInvocation(b, kernel, sub + kSubCount, [&] {
+        Value finest = b.load(kernel.clock, b.index(sub + kSubSize));
+        b.store(b.add(now, finest), kernel.clock, b.index(sub + kSubBegin));
+      });
     });
     if (failed(endKernel(kernel, simplan::LaunchShape::items, slotLaunches,
                          component)))
