@@ -1103,12 +1103,14 @@ bool Session::settledRound(const Prepared &p) {
   backend->read(sub,
                 clockMemory.pointer + component.sub_clock * sizeof(int64_t),
                 sizeof sub);
-  // substep_advance commits the sub-step in progress and takes the
-  // estimate only while the big step has base steps left after it.
+  // substep_advance commits the sub-step in progress and decides the
+  // next from the estimate only while the big step has more than one base
+  // step left after it (with one left the next sub-step is 1, and
+  // substep_estimate_C estimated nothing).
   int64_t end = fixed[kSlotBegin] + fixed[kSlotSize];
   int64_t now = sub[int(schema::SubClockSlot::Begin)] +
                 sub[int(schema::SubClockSlot::Size)];
-  return end - now <= 0;
+  return end - now <= 1;
 }
 
 void Session::launchDistributed(Prepared &p, bool counted, bool step) {
@@ -1119,9 +1121,9 @@ void Session::launchDistributed(Prepared &p, bool counted, bool step) {
   if (noOpLaunch(p))
     return;
   const std::vector<uint32_t> &slots = p.launch->reduce_min;
-  // A round's estimate decides nothing once its component has reached the
-  // end of the big step (every round after the last sub-step): no
-  // all-reduce for it. Every rank holds the same sub-step clock, so all
+  // A round's estimate decides nothing once its component has at most one
+  // base step of the big step left (the next sub-step is then 1 or none):
+  // no all-reduce for it. Every rank holds the same sub-step clock, so all
   // skip alike.
   if (!slots.empty() && !settledRound(p)) {
     // The decisions every rank must share (the big step): their minimum

@@ -221,8 +221,8 @@ private:
   /// every rank holds it.
   bool noOpLaunch(const Prepared &p);
   /// Whether `p` decides the next sub-step of a grid round whose component
-  /// has already reached the end of the big step (so its all-reduce of the
-  /// estimate would decide nothing).
+  /// has at most one base step of the big step left (so its all-reduce of
+  /// the estimate would decide nothing).
   bool settledRound(const Prepared &p);
   /// The all-reduce (maximum) of the codes of this big step's blocks in the
   /// levels of `components` (a launch's `reduce_max_levels`).

@@ -109,9 +109,15 @@ LogicalResult SimulationLowering::emitRounds(ComponentOp component,
     setHalves(kernel, parity, readParity);
     kernel.values.bigStepBegin = begin;
     kernel.values.bigStepSize = size;
-    b.ifThen(b.cmp(arith::CmpIPredicate::slt, now, b.add(begin, size)), [&] {
-      estimateInto(kernel, component, minimum, now, sub + kSubEstimate);
-    });
+    // With one base step left (or none) the next sub-step is 1 (or none)
+    // whatever the estimate says, none being below 1: no estimate. That
+    // is every big step of 1 and the last sub-step of many others.
+    b.ifThen(b.cmp(arith::CmpIPredicate::sgt, b.sub(b.add(begin, size), now),
+                   b.i64(1)),
+             [&] {
+               estimateInto(kernel, component, minimum, now,
+                            sub + kSubEstimate);
+             });
     if (failed(endKernel(kernel, simplan::LaunchShape::items, roundLaunches)))
       return failure();
   }

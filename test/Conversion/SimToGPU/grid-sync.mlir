@@ -52,6 +52,17 @@ sim.simulation @diffuse range(100) dt(1.0e-2 : f32) max_steps(3) {
 // CHECK:         %[[V:.*]] = memref.load %[[U]]
 // CHECK:         memref.store %[[V]], %[[SNAP]]
 // CHECK-LABEL: gpu.func @substep_estimate_Diffuse(
+//                Estimates only with more than one base step left after the
+//                pending sub-step (T + m - (t + n) > 1).
+// CHECK:         %[[T:.*]] = memref.load %{{.*}}[%c0]
+// CHECK:         %[[M:.*]] = memref.load %{{.*}}[%c1]
+// CHECK:         %[[SUB_T:.*]] = memref.load %{{.*}}[%c10]
+// CHECK:         %[[SUB_N:.*]] = memref.load %{{.*}}[%c11]
+// CHECK:         %[[NOW:.*]] = arith.addi %[[SUB_T]], %[[SUB_N]]
+// CHECK:         %[[END:.*]] = arith.addi %[[T]], %[[M]]
+// CHECK:         %[[LEFT:.*]] = arith.subi %[[END]], %[[NOW]]
+// CHECK:         %[[MORE:.*]] = arith.cmpi sgt, %[[LEFT]], %c1_i64
+// CHECK:         scf.if %[[MORE]]
 // CHECK:         gpu.subgroup_reduce minsi
 // CHECK:         memref.atomic_rmw mins %{{.*}}, %{{.*}}[%c13] : (i64, memref<?xi64>) -> i64
 // CHECK-LABEL: gpu.func @substep_advance_Diffuse(
