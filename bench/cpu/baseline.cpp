@@ -438,6 +438,8 @@ struct Options {
   /// Flush subnormals to zero (MXCSR FTZ and DAZ on every thread), as a
   /// bundle compiled with sim-translate --sim-ftz computes.
   bool ftz = false;
+  /// --fma-peak: measure the f32 FMA peak instead of running a scene.
+  bool fmaPeak = false;
   Params params{65536, 1.0e-3f, 8, 0, 32, kMaxSteps, 0};
 };
 
@@ -773,6 +775,10 @@ OPTIONS:
                        for a bundle compiled with sim-translate --sim-ftz
   --dump DIR           write the observed buffer as DIR/<buffer>.npy
   --json FILE          write the metrics as JSON (sim-run's keys)
+  --fma-peak           instead of a scene, measure the f32 fused multiply-add
+                       peak of --threads threads (what bench/run's "of peak"
+                       column divides by) and print it (--json: as
+                       fma_peak_flops)
   --help               this text
 
 Kernel and wall time are the same here: the run's parallel region. Launches
@@ -833,6 +839,8 @@ Options parseOptions(int argc, char **argv) {
         usageError("--interp expects linear or cubic");
     } else if (name == "--ftz") {
       o.ftz = true;
+    } else if (name == "--fma-peak") {
+      o.fmaPeak = true;
     } else if (name == "--dump") {
       o.dumpDir = value();
     } else if (name == "--json") {
@@ -913,6 +921,72 @@ const char *isaName() {
 #else
   return "generic";
 #endif
+}
+
+/// The f32 fused multiply-add peak of the threads OpenMP runs, in flop/s:
+/// every thread runs independent chains of FMAs on the widest vectors the
+/// compiler targets, enough of them to hide the FMA latency on both FMA
+/// units and few enough to stay in registers; the best of a few trials.
+/// x := x * a + b converges to 1 (no overflow, no subnormal).
+double measureFmaPeak() {
+#if defined(__AVX512F__)
+  constexpr int kWidth = 16, kChains = 16; // 32 zmm registers
+#elif defined(__AVX__)
+  constexpr int kWidth = 8, kChains = 12; // 16 ymm registers
+#else
+  constexpr int kWidth = 4, kChains = 12; // 16 xmm registers
+#endif
+  typedef float Vector __attribute__((vector_size(kWidth * sizeof(float))));
+  constexpr long long kIterations = 1 << 25;
+  double best = 0;
+  for (int trial = 0; trial < 3; ++trial) {
+    double start = omp_get_wtime();
+    float sink = 0;
+#pragma omp parallel reduction(+ : sink)
+    {
+      Vector x[kChains], a, b;
+      for (int lane = 0; lane < kWidth; ++lane) {
+        a[lane] = 1.0f - 0x1p-20f;
+        b[lane] = 0x1p-20f;
+      }
+      for (int c = 0; c < kChains; ++c)
+        for (int lane = 0; lane < kWidth; ++lane)
+          x[c][lane] = float(c + lane) * 0x1p-8f;
+      for (long long i = 0; i < kIterations; ++i)
+        for (int c = 0; c < kChains; ++c)
+          x[c] = __builtin_elementwise_fma(x[c], a, b);
+      for (int c = 0; c < kChains; ++c)
+        for (int lane = 0; lane < kWidth; ++lane)
+          sink += x[c][lane];
+    }
+    double seconds = omp_get_wtime() - start;
+    if (!(sink > 0))
+      std::fprintf(stderr, "warning: the FMA chains ended at %g\n", sink);
+    double flops = 2.0 * kWidth * kChains * double(kIterations) *
+                   double(omp_get_max_threads());
+    best = std::max(best, flops / seconds);
+  }
+  return best;
+}
+
+int runFmaPeak(const Options &o) {
+  if (o.threads > 0)
+    omp_set_num_threads(o.threads);
+  int threads = omp_get_max_threads();
+  double peak = measureFmaPeak();
+  std::printf("f32 FMA peak: %.1f GFLOP/s (%d %s, %s)\n", peak * 1e-9, threads,
+              threads == 1 ? "thread" : "threads", isaName());
+  if (!o.jsonPath.empty()) {
+    std::ofstream out(o.jsonPath);
+    out << "{\n  \"fma_peak_flops\": " << jsonNumber(peak)
+        << ",\n  \"threads\": " << threads << ",\n  \"isa\": \"" << isaName()
+        << "\"\n}\n";
+    if (!out) {
+      std::fprintf(stderr, "error: cannot write %s\n", o.jsonPath.c_str());
+      return 1;
+    }
+  }
+  return 0;
 }
 
 template <typename Scene> int runScene(const Options &o) {
@@ -1011,6 +1085,8 @@ template <typename Scene> int runScene(const Options &o) {
 
 int main(int argc, char **argv) {
   Options options = parseOptions(argc, argv);
+  if (options.fmaPeak)
+    return runFmaPeak(options);
   if (options.scene == "gravity_like")
     return runScene<GravityLike>(options);
   return runScene<PbdLike>(options);
