@@ -48,9 +48,37 @@ public:
   virtual DevicePtr allocate(size_t bytes) = 0;
   virtual void release(DevicePtr memory) = 0;
   virtual void zero(DevicePtr memory, size_t bytes) = 0;
+  /// Copies to the device after everything issued before. `from` may be
+  /// reused when the call returns, unless it is memory of allocateHost:
+  /// that one only after finishCopies().
   virtual void write(DevicePtr to, const void *from, size_t bytes) = 0;
   /// Waits for everything issued before, then copies.
   virtual void read(void *to, DevicePtr from, size_t bytes) = 0;
+
+  /// Host memory that `readAsync` and `write` move to and from the device
+  /// fastest (page-locked on CUDA: no staging copy, and the copies run on
+  /// the device's copy engine while the host goes on). The staging memory
+  /// of a distributed session's exchanges.
+  virtual void *allocateHost(size_t bytes) {
+    return ::operator new(bytes ? bytes : 1);
+  }
+  virtual void releaseHost(void *memory) { ::operator delete(memory); }
+  /// Starts copying `bytes` from the device into memory of allocateHost,
+  /// after everything issued before; `to` holds them once finishCopies()
+  /// returns.
+  virtual void readAsync(void *to, DevicePtr from, size_t bytes) {
+    read(to, from, bytes);
+  }
+  /// Waits for every copy issued before: those of readAsync, and writes
+  /// from memory of allocateHost, which may read it until then.
+  virtual void finishCopies() {}
+  /// Copies `bytes` between two places of device memory (which do not
+  /// overlap), after everything issued before.
+  virtual void copy(DevicePtr to, DevicePtr from, size_t bytes) {
+    std::vector<uint8_t> staged(bytes);
+    read(staged.data(), from, bytes);
+    write(to, staged.data(), bytes);
+  }
 
   /// Runs `groups` groups of `groupSize` threads of a kernel; `params` is
   /// the cuLaunchKernel array of pointers to each parameter value.

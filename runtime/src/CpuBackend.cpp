@@ -270,6 +270,10 @@ public:
   void read(void *to, DevicePtr from, size_t bytes) override {
     std::memcpy(to, reinterpret_cast<const void *>(from), bytes);
   }
+  void copy(DevicePtr to, DevicePtr from, size_t bytes) override {
+    std::memcpy(reinterpret_cast<void *>(to),
+                reinterpret_cast<const void *>(from), bytes);
+  }
 
   void launch(int kernel, void **params, int64_t groups, int64_t groupSize,
               int64_t) override {

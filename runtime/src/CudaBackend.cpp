@@ -330,6 +330,37 @@ public:
     cu.check(cu.cuStreamSynchronize(stream), "cuStreamSynchronize");
   }
 
+  // The staging memory of a distributed session's exchanges: page-locked,
+  // so that its copies are the device's DMA transfers, queued on the
+  // stream without a synchronisation each (readAsync) and without the
+  // driver's own staging copy.
+  void *allocateHost(size_t bytes) override {
+    void *memory = nullptr;
+    CUresult result = cu.cuMemHostAlloc(&memory, std::max<size_t>(bytes, 1),
+                                        CU_MEMHOSTALLOC_PORTABLE);
+    if (result != CUDA_SUCCESS)
+      fail(SIM_ERROR_BACKEND, cu.message(result, "cuMemHostAlloc") + " for " +
+                                  std::to_string(bytes) +
+                                  " bytes of page-locked host memory");
+    return memory;
+  }
+  void releaseHost(void *memory) override {
+    // Nothing may still be copying from or into it.
+    cu.cuStreamSynchronize(stream);
+    cu.cuMemFreeHost(memory);
+  }
+  void readAsync(void *to, DevicePtr from, size_t bytes) override {
+    cu.check(cu.cuMemcpyDtoHAsync(to, from, bytes, stream),
+             "cuMemcpyDtoHAsync");
+  }
+  void finishCopies() override {
+    cu.check(cu.cuStreamSynchronize(stream), "cuStreamSynchronize");
+  }
+  void copy(DevicePtr to, DevicePtr from, size_t bytes) override {
+    cu.check(cu.cuMemcpyDtoDAsync(to, from, bytes, stream),
+             "cuMemcpyDtoDAsync");
+  }
+
   void launch(int kernel, void **params, int64_t groups, int64_t groupSize,
               int64_t sharedBytes) override {
     Kernel &k = kernels[kernel];

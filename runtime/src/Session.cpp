@@ -878,35 +878,32 @@ void Session::beginGhosts(const std::vector<GhostRefresh> &refreshes,
       p.sendBytes[peer] += r.lists->send[peer].size() * r.stride * r.halves;
       p.recvBytes[peer] += r.lists->recv[peer].size() * r.stride * r.halves;
     }
+  // The previous exchange's writes from the receive memory are done
+  // before it is written again (finishCopies below), and so are the
+  // copies into the send memory before it travels.
   sendStore.resize(ranks);
   recvStore.resize(ranks);
   p.send.assign(ranks, nullptr);
   p.recv.assign(ranks, nullptr);
   for (size_t peer = 0; peer < ranks; ++peer) {
-    sendStore[peer].resize(p.sendBytes[peer]);
-    recvStore[peer].resize(p.recvBytes[peer]);
-    p.send[peer] = sendStore[peer].data();
-    p.recv[peer] = recvStore[peer].data();
+    uint8_t *out = sendStore[peer].ensure(*backend, p.sendBytes[peer]);
+    p.send[peer] = out;
+    p.recv[peer] = recvStore[peer].ensure(*backend, p.recvBytes[peer]);
     p.bytes += p.sendBytes[peer];
-  }
-  for (size_t peer = 0; peer < ranks; ++peer) {
-    uint8_t *out = sendStore[peer].data();
     for (const GhostRefresh &r : p.ghosts)
       for (int half = 0; half < r.halves; ++half)
         forEachRun(r.lists->send[peer], [&](int64_t e, int64_t n) {
-          backend->read(out, r.element(half, e), size_t(n) * r.stride);
+          backend->readAsync(out, r.element(half, e), size_t(n) * r.stride);
           out += size_t(n) * r.stride;
         });
   }
-  std::vector<uint8_t> item;
-  for (const GhostRefresh &r : p.ghosts) {
-    item.resize(r.stride);
+  // Ghosts of this rank's own items (a wrap or clamp around a range on
+  // one rank): copied on the device.
+  for (const GhostRefresh &r : p.ghosts)
     for (int half = 0; half < r.halves; ++half)
-      for (auto [from, to] : r.lists->local) {
-        backend->read(item.data(), r.element(half, from), r.stride);
-        backend->write(r.element(half, to), item.data(), r.stride);
-      }
-  }
+      for (auto [from, to] : r.lists->local)
+        backend->copy(r.element(half, to), r.element(half, from), r.stride);
+  backend->finishCopies();
   comm->exchangeBegin(p.send.data(), p.sendBytes.data(), p.recv.data(),
                       p.recvBytes.data());
 }
@@ -919,7 +916,7 @@ void Session::endGhosts() {
   if (!p.ghosts.empty()) {
     comm->exchangeEnd();
     for (size_t peer = 0; peer < size_t(comm->size()); ++peer) {
-      const uint8_t *in = recvStore[peer].data();
+      const uint8_t *in = static_cast<const uint8_t *>(p.recv[peer]);
       for (const GhostRefresh &r : p.ghosts)
         for (int half = 0; half < r.halves; ++half)
           forEachRun(r.lists->recv[peer], [&](int64_t e, int64_t n) {

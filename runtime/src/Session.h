@@ -272,7 +272,44 @@ private:
   std::unique_ptr<Decomposition> decomposition;
   /// Per (below, above, boundary): the ghost lists of the decomposition.
   std::map<std::tuple<uint32_t, uint32_t, int>, GhostLists> ghostCache;
-  std::vector<std::vector<uint8_t>> sendStore, recvStore;
+  /// Host memory of the backend's allocateHost (page-locked on CUDA),
+  /// grown as needed: per peer, what this rank sends and receives.
+  class Staging {
+  public:
+    Staging() = default;
+    Staging(Staging &&other) noexcept
+        : backend(other.backend), memory(other.memory),
+          capacity(other.capacity) {
+      other.memory = nullptr;
+      other.capacity = 0;
+    }
+    Staging(const Staging &) = delete;
+    Staging &operator=(const Staging &) = delete;
+    Staging &operator=(Staging &&) = delete;
+    ~Staging() { release(); }
+    /// At least `bytes` of it (its contents are lost when it grows).
+    uint8_t *ensure(Backend &owner, size_t bytes) {
+      if (!memory || bytes > capacity) {
+        release();
+        backend = &owner;
+        memory = owner.allocateHost(bytes);
+        capacity = bytes;
+      }
+      return static_cast<uint8_t *>(memory);
+    }
+    void release() {
+      if (memory)
+        backend->releaseHost(memory);
+      memory = nullptr;
+      capacity = 0;
+    }
+
+  private:
+    Backend *backend = nullptr;
+    void *memory = nullptr;
+    size_t capacity = 0;
+  };
+  std::vector<Staging> sendStore, recvStore;
   /// The exchange under way (beginGhosts to endGhosts): its ghost entries,
   /// the arrays the communicator holds, and what it counts once done.
   struct PendingGhosts {
