@@ -467,9 +467,12 @@ private:
     }
     if (!plan.distributed &&
         (!launch.reduce_min.empty() || !launch.exchange.empty() ||
-         !launch.exchange_targets.empty() || !launch.reduce_max_levels.empty()))
+         !launch.exchange_targets.empty() ||
+         !launch.exchange_sub_step.empty() ||
+         !launch.reduce_max_levels.empty()))
       bad(about + " has " +
-          (launch.exchange.empty() && launch.exchange_targets.empty()
+          (launch.exchange.empty() && launch.exchange_targets.empty() &&
+                   launch.exchange_sub_step.empty()
                ? "all-reduces"
                : "exchanges") +
           ", but the plan is not distributed");
@@ -510,6 +513,21 @@ private:
     for (uint32_t b : launch.exchange_targets) {
       checkIndex(b, plan.buffers.size(),
                  about + ": a buffer whose target half it exchanges");
+      if (!exchanged.insert({b, false}).second)
+        bad(about + " exchanges buffer " + quoted(bufferName(b)) + " twice");
+    }
+    if (!launch.exchange_sub_step.empty() &&
+        (launch.component < 0 ||
+         size_t(launch.component) >= plan.components.size() ||
+         plan.components[size_t(launch.component)]->advance !=
+             Advance::GridSubSteps))
+      bad(about +
+          " exchanges the half a sub-step wrote, but it is not a launch of a "
+          "component that takes grid-wide sub-steps (whose sub-step clock "
+          "says which half)");
+    for (uint32_t b : launch.exchange_sub_step) {
+      checkIndex(b, plan.buffers.size(),
+                 about + ": a buffer whose sub-step's half it exchanges");
       if (!exchanged.insert({b, false}).second)
         bad(about + " exchanges buffer " + quoted(bufferName(b)) + " twice");
     }

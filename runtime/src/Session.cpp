@@ -389,7 +389,11 @@ Session::Prepared Session::prepareLaunch(const schema::LaunchT &launch) {
       p.exchanges.push_back(refreshOf(entry.buffer(), entry.snapshot()));
     for (uint32_t buffer : launch.exchange_targets) {
       p.exchanges.push_back(refreshOf(buffer, false));
-      p.exchanges.back().targetOnly = true;
+      p.exchanges.back().half = GhostRefresh::Half::Target;
+    }
+    for (uint32_t buffer : launch.exchange_sub_step) {
+      p.exchanges.push_back(refreshOf(buffer, false));
+      p.exchanges.back().half = GhostRefresh::Half::SubStep;
     }
   }
   return p;
@@ -1160,13 +1164,16 @@ void Session::launchDistributed(Prepared &p, bool counted, bool step) {
   }
   // The items travel while the next launches compute what needs none of
   // them (launchAroundExchange); endGhosts puts them in place before
-  // anything else looks. Of a buffer the launch wrote in its target half
-  // only, that half travels (the other, the big step's source, is
-  // unchanged since it travelled as the previous big step's target).
-  bool anyTarget =
-      std::any_of(p.exchanges.begin(), p.exchanges.end(),
-                  [](const GhostRefresh &r) { return r.targetOnly; });
-  if (!anyTarget)
+  // anything else looks. Of a buffer the launch wrote in one half only,
+  // that half travels: the target half of a whole_step or group_substeps
+  // writer and of a parity copy (the other, the big step's source, is
+  // unchanged since it travelled as the previous big step's target), the
+  // half a grid-wide sub-step wrote (the other holds what the previous
+  // sub-step read, which travelled before it).
+  bool anyOneHalf = std::any_of(
+      p.exchanges.begin(), p.exchanges.end(),
+      [](const GhostRefresh &r) { return r.half != GhostRefresh::Half::Both; });
+  if (!anyOneHalf)
     return beginGhosts(p.exchanges, counted);
   int64_t parity = 0;
   backend->read(&parity, clockMemory.pointer + kSlotParity * sizeof(int64_t),
@@ -1174,12 +1181,30 @@ void Session::launchDistributed(Prepared &p, bool counted, bool step) {
   if (parity != 0 && parity != 1)
     fail(SIM_ERROR_CLOCK, "the clock's parity is " + std::to_string(parity) +
                               ", not 0 or 1, after a launch");
+  int64_t written = 1 - parity;
+  if (std::any_of(p.exchanges.begin(), p.exchanges.end(),
+                  [](const GhostRefresh &r) {
+                    return r.half == GhostRefresh::Half::SubStep;
+                  })) {
+    // substep_C reads half parity xor (done mod 2) and writes the other.
+    const schema::ComponentT &component =
+        *plan_->components[size_t(p.launch->component)];
+    int64_t done = 0;
+    backend->read(&done,
+                  clockMemory.pointer + (component.sub_clock +
+                                         int64_t(schema::SubClockSlot::Done)) *
+                                            sizeof(int64_t),
+                  sizeof done);
+    written = 1 - (parity ^ (done & 1));
+  }
   std::vector<GhostRefresh> refreshes = p.exchanges;
-  for (GhostRefresh &r : refreshes)
-    if (r.targetOnly) {
-      r.base = r.element(int(1 - parity), 0);
-      r.halves = 1;
-    }
+  for (GhostRefresh &r : refreshes) {
+    if (r.half == GhostRefresh::Half::Both)
+      continue;
+    r.base = r.element(
+        int(r.half == GhostRefresh::Half::Target ? 1 - parity : written), 0);
+    r.halves = 1;
+  }
   beginGhosts(refreshes, counted);
 }
 

@@ -116,9 +116,11 @@ private:
     const GhostLists *lists;
     /// The plan buffer.
     size_t buffer;
-    /// Only the target half (1 - parity) travels (`exchange_targets`);
-    /// beginGhosts' copy points `base` at it and has one half.
-    bool targetOnly = false;
+    /// Which half travels: both, only the target half (1 - parity,
+    /// `exchange_targets`) or only the half the launch's grid-wide sub-step
+    /// wrote (`exchange_sub_step`); launchDistributed points a copy's
+    /// `base` at the one half and gives it `halves` 1.
+    enum class Half { Both, Target, SubStep } half = Half::Both;
     /// Where element `e` of half `half` lies.
     DevicePtr element(int half, int64_t e) const {
       return base + DevicePtr(half * elements + e) * stride;

@@ -583,6 +583,13 @@ TEST(Distributed, VerifierChecksTheRecords) {
   contents.plans[0]->phases[1]->body[1]->launch->reduce_max_levels = {0};
   expectBad(std::move(contents), "all-reduces the levels of component 'Mix', "
                                  "which does not take local time steps");
+  // The half a sub-step wrote: only a grid-wide sub-step's launch has one.
+  contents = ringContents(Boundary::Wrap);
+  contents.plans[0]->phases[1]->body[2]->launch->exchange.clear();
+  contents.plans[0]->phases[1]->body[2]->launch->exchange_sub_step = {0};
+  expectBad(std::move(contents),
+            "exchanges the half a sub-step wrote, but it is not a launch of a "
+            "component that takes grid-wide sub-steps");
 }
 
 /// mpirun -n N sim-run --distributed against sim-run on one process: the

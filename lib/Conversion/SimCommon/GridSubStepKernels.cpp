@@ -171,6 +171,7 @@ LogicalResult SimulationLowering::emitRounds(ComponentOp component,
       target.reduceIntoClock(b, kernel, count, arith::AtomicRMWKind::addi,
                              evaluationSlots.lookup(component));
     });
+    pendingWrittenHalf = WrittenHalf::SubStep;
     if (failed(endKernel(kernel, simplan::LaunchShape::items, roundLaunches,
                          component)))
       return failure();
@@ -193,5 +194,6 @@ LogicalResult SimulationLowering::emitRounds(ComponentOp component,
       b.ifThen(lane.active, [&] { copyToTarget(kernel, writes, lane.item); });
     });
   });
+  pendingWrittenHalf = WrittenHalf::Target;
   return endKernel(kernel, simplan::LaunchShape::items, launches, component);
 }

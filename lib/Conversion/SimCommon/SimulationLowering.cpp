@@ -269,17 +269,27 @@ LogicalResult SimulationLowering::endKernel(Kernel &kernel,
   pendingExchangeSnapshots.clear();
   pendingReduce.clear();
   // A component that advances by whole_step or group_substeps writes the
-  // target half only (the source half holds T for its readers), so only
-  // that half's ghosts travel; the others write both halves (sub-steps that
-  // ping-pong, parity copies, local time levels).
-  SmallVector<Attribute> exchangeTargets;
+  // target half only (the source half holds T for its readers), and so
+  // does a parity copy: only that half's ghosts travel. A grid-wide
+  // sub-step writes the half its sub-step count selects, and only that one
+  // travels; local time levels write either half, block by block, so both
+  // travel.
+  SmallVector<Attribute> exchangeTargets, exchangeSubStep;
+  WrittenHalf written = pendingWrittenHalf;
+  pendingWrittenHalf = WrittenHalf::Advance;
   if (distributed && component) {
-    bool targetOnly = component.getAdvance() == Advance::whole_step ||
-                      component.getAdvance() == Advance::group_substeps;
+    SmallVector<Attribute> *list = &exchange;
+    if (written == WrittenHalf::Target ||
+        (written == WrittenHalf::Advance &&
+         (component.getAdvance() == Advance::whole_step ||
+          component.getAdvance() == Advance::group_substeps)))
+      list = &exchangeTargets;
+    else if (written == WrittenHalf::SubStep)
+      list = &exchangeSubStep;
     for (FlatSymbolRefAttr write :
          component.getWrites().getAsRange<FlatSymbolRefAttr>())
       if (travels(simulation.lookupBuffer(write)))
-        (targetOnly ? exchangeTargets : exchange).push_back(write);
+        list->push_back(write);
   }
   simplan::LaunchOp::create(
       launches, b.loc, kernelRef,
@@ -296,7 +306,9 @@ LogicalResult SimulationLowering::endKernel(Kernel &kernel,
                                 : launches.getArrayAttr(exchangeSnapshots),
       reduceLevels.empty() ? ArrayAttr() : launches.getArrayAttr(reduceLevels),
       exchangeTargets.empty() ? ArrayAttr()
-                              : launches.getArrayAttr(exchangeTargets));
+                              : launches.getArrayAttr(exchangeTargets),
+      exchangeSubStep.empty() ? ArrayAttr()
+                              : launches.getArrayAttr(exchangeSubStep));
   return success();
 }
 

@@ -490,8 +490,11 @@ PlanReader::readLaunch(simplan::LaunchOp launch) {
   if (std::optional<ArrayRef<int64_t>> slots = launch.getReduceMin())
     for (int64_t slot : *slots)
       record->reduce_min.push_back(uint32_t(slot));
+  // Where a buffer's ghost items travel: both halves (or its snapshot),
+  // the target half, or the half the sub-step wrote.
+  enum class Half { Both, Target, SubStep };
   auto exchange = [&](ArrayAttr names, bool snapshot,
-                      bool target = false) -> LogicalResult {
+                      Half half = Half::Both) -> LogicalResult {
     if (!names)
       return success();
     for (auto name : names.getAsRange<FlatSymbolRefAttr>()) {
@@ -499,8 +502,10 @@ PlanReader::readLaunch(simplan::LaunchOp launch) {
       if (found == buffers.end())
         return launch.emitOpError()
                << "exchanges " << name << ", which is not a buffer of the plan";
-      if (target)
+      if (half == Half::Target)
         record->exchange_targets.push_back(found->second);
+      else if (half == Half::SubStep)
+        record->exchange_sub_step.push_back(found->second);
       else
         record->exchange.emplace_back(found->second, snapshot);
     }
@@ -508,7 +513,8 @@ PlanReader::readLaunch(simplan::LaunchOp launch) {
   };
   if (failed(exchange(launch.getExchangeAttr(), false)) ||
       failed(exchange(launch.getExchangeSnapshotsAttr(), true)) ||
-      failed(exchange(launch.getExchangeTargetsAttr(), false, true)))
+      failed(exchange(launch.getExchangeTargetsAttr(), false, Half::Target)) ||
+      failed(exchange(launch.getExchangeSubStepAttr(), false, Half::SubStep)))
     return failure();
   if (ArrayAttr names = launch.getReduceMaxLevelsAttr())
     for (auto name : names.getAsRange<FlatSymbolRefAttr>()) {

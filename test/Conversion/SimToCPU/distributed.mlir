@@ -76,8 +76,10 @@ sim.simulation @diffuse range(100) dt(1.0e-2 : f32) max_steps(3) {
 // CHECK:         simplan.launch @diffuse_kernels::@snapshot_U items {{.*}} exchange_snapshots [@U]
 // CHECK:         simplan.repeat 3 {
 // CHECK:           simplan.launch @diffuse_kernels::@substep_advance_Diffuse single [#simplan.arg<clock>] reduce_min [13]
-// CHECK:           simplan.launch @diffuse_kernels::@substep_Diffuse items {{.*}} for @Diffuse exchange [@U]
-// CHECK:         simplan.launch @diffuse_kernels::@parity_Diffuse items {{.*}} for @Diffuse exchange [@U]
+//                  A sub-step sends the half it wrote, the parity copy the
+//                  target half.
+// CHECK:           simplan.launch @diffuse_kernels::@substep_Diffuse items {{.*}} for @Diffuse exchange_sub_step [@U]{{$}}
+// CHECK:         simplan.launch @diffuse_kernels::@parity_Diffuse items {{.*}} for @Diffuse exchange_targets [@U]{{$}}
 // CHECK:         simplan.launch @diffuse_kernels::@evaluate_Watch items {{.*}} for @Watch{{$}}
 
 // The GPU kernels take the same arguments; a block's grid runs once.

@@ -363,3 +363,41 @@ module attributes {gpu.container_module} {
     }
   }
 }
+
+// -----
+
+module attributes {gpu.container_module} {
+  simplan.plan @p strategy("hip") kernels(@k) range(4) dt(1.0e-2 : f32) max_steps(2) step_cap(2) group_size(32) clock_slots(16) histogram(13) distributed halo(1) {
+    simplan.buffer @X : f32 stride(4) halo [1, 1]
+    simplan.component @C writes [@X] evaluations(8) advance grid_substeps sub_clock(9)
+    simplan.phase step {
+      // expected-error @+1 {{'simplan.launch' op exchanges @X both by its target half and by the half its sub-step wrote}}
+      simplan.launch @k::@substep_C items [#simplan.arg<buffer @X>, #simplan.arg<first>] for @C exchange_targets [@X] exchange_sub_step [@X]
+    }
+  }
+}
+
+// -----
+
+module attributes {gpu.container_module} {
+  simplan.plan @p strategy("hip") kernels(@k) range(4) dt(1.0e-2 : f32) max_steps(2) step_cap(2) group_size(32) clock_slots(12) histogram(9) distributed halo(1) {
+    simplan.buffer @X : f32 stride(4) halo [1, 1]
+    simplan.component @C writes [@X] evaluations(8) advance whole_step
+    simplan.phase step {
+      // expected-error @+1 {{'simplan.launch' op exchanges @X by the half its sub-step wrote, but the launch is not for a grid_substeps component, whose sub-step clock says which}}
+      simplan.launch @k::@evaluate_C items [#simplan.arg<buffer @X>, #simplan.arg<first>] for @C exchange_sub_step [@X]
+    }
+  }
+}
+
+// -----
+
+module attributes {gpu.container_module} {
+  simplan.plan @p strategy("hip") kernels(@k) range(4) dt(1.0e-2 : f32) max_steps(2) step_cap(2) group_size(32) clock_slots(11) histogram(8) distributed halo(1) {
+    simplan.buffer @X : f32 stride(4) halo [1, 1]
+    simplan.phase step {
+      // expected-error @+1 {{'simplan.launch' op exchanges @X by the half its sub-step wrote, but the launch is not for a grid_substeps component, whose sub-step clock says which}}
+      simplan.launch @k::@evaluate_C items [#simplan.arg<buffer @X>, #simplan.arg<first>] exchange_sub_step [@X]
+    }
+  }
+}

@@ -167,21 +167,26 @@ module attributes {gpu.container_module} {
 // the communication around launches.
 
 // CHECK-LABEL: simplan.plan @spread
-// CHECK-SAME: histogram(8) distributed halo(2) {
+// CHECK-SAME: histogram(13) distributed halo(2) {
 // CHECK: simplan.buffer @X : f32 stride(4) snapshot halo [1, 2]
 // CHECK: simplan.launch @k::@init_X items [#simplan.arg<buffer @X>, #simplan.arg<range>, #simplan.arg<first>] exchange [@X]
 // CHECK: simplan.launch @k::@advance single [#simplan.arg<clock>] reduce_min [4]
 // CHECK: simplan.launch @k::@snapshot_X items [#simplan.arg<clock>, #simplan.arg<buffer @X>, #simplan.arg<snapshot @X>, #simplan.arg<range>, #simplan.arg<first>, #simplan.arg<extent>] exchange_snapshots [@X]
+// CHECK: simplan.launch @k::@substep_C items [#simplan.arg<clock>, #simplan.arg<buffer @X>, #simplan.arg<range>, #simplan.arg<first>, #simplan.arg<extent>] for @C exchange_sub_step [@X]
+// CHECK: simplan.launch @k::@parity_C items [#simplan.arg<clock>, #simplan.arg<buffer @X>, #simplan.arg<range>, #simplan.arg<first>, #simplan.arg<extent>] for @C exchange_targets [@X]
 module attributes {gpu.container_module} {
   gpu.binary @k [#gpu.object<#nvvm.target, "">]
-  simplan.plan @spread strategy("hip") kernels(@k) range(100) dt(1.0e-2 : f32) max_steps(4) step_cap(4) group_size(32) clock_slots(13) histogram(8) distributed halo(2) {
+  simplan.plan @spread strategy("hip") kernels(@k) range(100) dt(1.0e-2 : f32) max_steps(4) step_cap(4) group_size(32) clock_slots(18) histogram(13) distributed halo(2) {
     simplan.buffer @X : f32 stride(4) snapshot halo [1, 2]
+    simplan.component @C writes [@X] evaluations(8) advance grid_substeps sub_clock(9)
     simplan.phase init {
       simplan.launch @k::@init_X items [#simplan.arg<buffer @X>, #simplan.arg<range>, #simplan.arg<first>] exchange [@X]
     }
     simplan.phase step {
       simplan.launch @k::@advance single [#simplan.arg<clock>] reduce_min [4]
       simplan.launch @k::@snapshot_X items [#simplan.arg<clock>, #simplan.arg<buffer @X>, #simplan.arg<snapshot @X>, #simplan.arg<range>, #simplan.arg<first>, #simplan.arg<extent>] exchange_snapshots [@X]
+      simplan.launch @k::@substep_C items [#simplan.arg<clock>, #simplan.arg<buffer @X>, #simplan.arg<range>, #simplan.arg<first>, #simplan.arg<extent>] for @C exchange_sub_step [@X]
+      simplan.launch @k::@parity_C items [#simplan.arg<clock>, #simplan.arg<buffer @X>, #simplan.arg<range>, #simplan.arg<first>, #simplan.arg<extent>] for @C exchange_targets [@X]
     }
   }
 }

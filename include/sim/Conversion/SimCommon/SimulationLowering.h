@@ -194,6 +194,13 @@ private:
   /// Components whose levels every rank replaces by their maximum over the
   /// ranks before the next launch (`reduce_max_levels`).
   SmallVector<Attribute> pendingReduceLevels;
+  /// Which half of its component's buffers the next endKernel's launch
+  /// writes, so which half of them travels: `Advance` by the component's
+  /// advance (the target half for whole_step and group_substeps, both
+  /// otherwise), `Target` the target half (a parity copy), `SubStep` the
+  /// half a grid-wide sub-step writes (`exchange_sub_step`).
+  enum class WrittenHalf { Advance, Target, SubStep };
+  WrittenHalf pendingWrittenHalf = WrittenHalf::Advance;
 
   Operation *kernels;
   simplan::PlanOp plan;

@@ -271,7 +271,7 @@ LaunchOp::verifyCommunication(PlanOp plan, SymbolTableCollection &symbolTable) {
                            << ", which only a distributed plan has";
   if (!distributed &&
       (getReduceMin() || getExchange() || getExchangeSnapshots() ||
-       getReduceMaxLevels() || getExchangeTargets()))
+       getReduceMaxLevels() || getExchangeTargets() || getExchangeSubStep()))
     return emitOpError() << "communicates between ranks in a plan that is not "
                             "distributed";
   if (std::optional<ArrayRef<int64_t>> slots = getReduceMin())
@@ -282,6 +282,7 @@ LaunchOp::verifyCommunication(PlanOp plan, SymbolTableCollection &symbolTable) {
                << plan.getClockSlots() << " slots";
   for (auto [names, snapshot] : {std::pair(getExchangeAttr(), false),
                                  std::pair(getExchangeTargetsAttr(), false),
+                                 std::pair(getExchangeSubStepAttr(), false),
                                  std::pair(getExchangeSnapshotsAttr(), true)}) {
     if (!names)
       continue;
@@ -296,12 +297,32 @@ LaunchOp::verifyCommunication(PlanOp plan, SymbolTableCollection &symbolTable) {
                << "exchanges the snapshot of " << name << ", which has none";
     }
   }
-  if (ArrayAttr both = getExchangeAttr(), targets = getExchangeTargetsAttr();
-      both && targets)
-    for (Attribute name : targets)
-      if (llvm::is_contained(both, name))
-        return emitOpError()
-               << "exchanges " << name << " both whole and by its target half";
+  // A buffer travels one way after a launch.
+  ArrayAttr ways[] = {getExchangeAttr(), getExchangeTargetsAttr(),
+                      getExchangeSubStepAttr()};
+  const char *wayNames[] = {"whole", "by its target half",
+                            "by the half its sub-step wrote"};
+  for (int one = 0; one < 3; ++one)
+    for (int other = one + 1; other < 3; ++other)
+      if (ways[one] && ways[other])
+        for (Attribute name : ways[other])
+          if (llvm::is_contained(ways[one], name))
+            return emitOpError() << "exchanges " << name << " both "
+                                 << wayNames[one] << " and " << wayNames[other];
+  if (ArrayAttr names = getExchangeSubStepAttr()) {
+    // The half comes from the sub-step clock of the launch's component.
+    auto component =
+        getComponentAttr()
+            ? dyn_cast_or_null<ComponentOp>(
+                  symbolTable.lookupSymbolIn(plan, getComponentAttr()))
+            : ComponentOp();
+    if (!component ||
+        component.getAdvance() != mlir::sim::Advance::grid_substeps)
+      return emitOpError()
+             << "exchanges " << names[0]
+             << " by the half its sub-step wrote, but the launch is not for a "
+                "grid_substeps component, whose sub-step clock says which";
+  }
   if (ArrayAttr names = getReduceMaxLevelsAttr())
     for (auto name : names.getAsRange<FlatSymbolRefAttr>()) {
       auto component =

@@ -345,7 +345,12 @@ def Plan_LaunchOp : Plan_Op<"launch", [
     the target half's ghost items travel (half `1 - parity`): those written
     by a component that advances by `whole_step` or `group_substeps`, whose
     launch writes the target half and leaves the source half, which every
-    rank already holds, as it was. `reduce_max_levels` lists components that take
+    rank already holds, as it was (and those of a parity copy, which
+    copies into the target half). `exchange_sub_step` lists buffers of a
+    `grid_substeps` component (the launch's) of which only the half its
+    sub-step wrote travels: half `1 - (parity xor (d mod 2))` with `d` the
+    sub-steps done that the component's sub-step clock holds (its `Done`
+    slot) when the launch ends. `reduce_max_levels` lists components that take
     local time steps whose blocks' sub-step codes of the big step (half
     `parity` of their `levels`, written by `levels_C`) every rank replaces
     by their maximum over all ranks before the launch, so that every rank
@@ -355,6 +360,7 @@ def Plan_LaunchOp : Plan_Op<"launch", [
     simplan.launch @k::@advance single [#simplan.arg<clock>] reduce_min [4]
     simplan.launch @k::@step_C0 items [...] for @C0 exchange_targets [@B0]
     simplan.launch @k::@limit_levels_C single [...] reduce_max_levels [@C]
+    simplan.launch @k::@substep_C items [...] for @C exchange_sub_step [@U]
     ```
   }];
   let arguments = (ins SymbolRefAttr:$kernel, Plan_LaunchShapeAttr:$shape,
@@ -366,14 +372,16 @@ def Plan_LaunchOp : Plan_Op<"launch", [
                        OptionalAttr<FlatSymbolRefArrayAttr>:$exchange,
                        OptionalAttr<FlatSymbolRefArrayAttr>:$exchange_snapshots,
                        OptionalAttr<FlatSymbolRefArrayAttr>:$reduce_max_levels,
-                       OptionalAttr<FlatSymbolRefArrayAttr>:$exchange_targets);
+                       OptionalAttr<FlatSymbolRefArrayAttr>:$exchange_targets,
+                       OptionalAttr<FlatSymbolRefArrayAttr>:$exchange_sub_step);
   let assemblyFormat = [{
     $kernel custom<EnumKeyword>($shape) $args (`for` $component^)?
     (`shared` `(` $shared_per_thread^ `,` $shared_fixed `)`)?
     (`reduce_min` $reduce_min^)? (`exchange` $exchange^)?
     (`exchange_snapshots` $exchange_snapshots^)?
     (`reduce_max_levels` $reduce_max_levels^)?
-    (`exchange_targets` $exchange_targets^)? attr-dict
+    (`exchange_targets` $exchange_targets^)?
+    (`exchange_sub_step` $exchange_sub_step^)? attr-dict
   }];
   let extraClassDeclaration = [{
     ::mlir::LogicalResult
