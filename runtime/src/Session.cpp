@@ -1069,49 +1069,44 @@ void Session::reduceLevels(const std::vector<uint32_t> &components,
     ++metrics.host_syncs;
 }
 
+Session::SubStepTimes Session::subStepTimes(int component) {
+  int64_t fixed[kSlotSize + 1];
+  backend->read(fixed, clockMemory.pointer, sizeof fixed);
+  int64_t sub[2];
+  backend->read(sub,
+                clockMemory.pointer +
+                    plan_->components[size_t(component)]->sub_clock *
+                        sizeof(int64_t),
+                sizeof sub);
+  return {fixed[kSlotBegin], fixed[kSlotSize],
+          sub[int(schema::SubClockSlot::Begin)],
+          sub[int(schema::SubClockSlot::Size)]};
+}
+
 bool Session::noOpLaunch(const Prepared &p) {
   if (p.roundOf < 0)
     return false;
-  const schema::ComponentT &component = *plan_->components[size_t(p.roundOf)];
-  int64_t fixed[kSlotSize + 1];
-  backend->read(fixed, clockMemory.pointer, sizeof fixed);
-  int64_t sub[2];
-  backend->read(sub,
-                clockMemory.pointer + component.sub_clock * sizeof(int64_t),
-                sizeof sub);
-  int64_t begin = fixed[kSlotBegin], size = fixed[kSlotSize];
-  int64_t subBegin = sub[int(schema::SubClockSlot::Begin)];
-  int64_t subSize = sub[int(schema::SubClockSlot::Size)];
-  if (component.advance == Advance::GridSubSteps)
+  SubStepTimes t = subStepTimes(p.roundOf);
+  if (plan_->components[size_t(p.roundOf)]->advance == Advance::GridSubSteps)
     // The component has committed its last sub-step (docs/Plan.md): the
     // estimate finds no time left, substep_advance decides none and
     // rewrites the clock as it is, substep_C takes none.
-    return subSize == 0 && subBegin >= begin + size;
+    return t.subSize == 0 && t.subBegin >= t.begin + t.size;
   // A slot kernel does something (and moves the clock on) only while its
   // slot, the sub-step clock's Begin less T, lies inside the big step.
-  return !(size > 0 && subBegin - begin < size);
+  return !(t.size > 0 && t.subBegin - t.begin < t.size);
 }
 
 bool Session::settledRound(const Prepared &p) {
-  if (p.roundOf < 0 || p.launch->shape != LaunchShape::Single)
+  if (p.roundOf < 0 || p.launch->shape != LaunchShape::Single ||
+      plan_->components[size_t(p.roundOf)]->advance != Advance::GridSubSteps)
     return false;
-  const schema::ComponentT &component = *plan_->components[size_t(p.roundOf)];
-  if (component.advance != Advance::GridSubSteps)
-    return false;
-  int64_t fixed[kSlotSize + 1];
-  backend->read(fixed, clockMemory.pointer, sizeof fixed);
-  int64_t sub[2];
-  backend->read(sub,
-                clockMemory.pointer + component.sub_clock * sizeof(int64_t),
-                sizeof sub);
+  SubStepTimes t = subStepTimes(p.roundOf);
   // substep_advance commits the sub-step in progress and decides the
   // next from the estimate only while the big step has more than one base
   // step left after it (with one left the next sub-step is 1, and
   // substep_estimate_C estimated nothing).
-  int64_t end = fixed[kSlotBegin] + fixed[kSlotSize];
-  int64_t now = sub[int(schema::SubClockSlot::Begin)] +
-                sub[int(schema::SubClockSlot::Size)];
-  return end - now <= 1;
+  return t.begin + t.size - (t.subBegin + t.subSize) <= 1;
 }
 
 void Session::launchDistributed(Prepared &p, bool counted, bool step) {

@@ -222,6 +222,12 @@ private:
   /// its last sub-step of the big step (docs/Plan.md), from the clock as
   /// every rank holds it.
   bool noOpLaunch(const Prepared &p);
+  /// The big step (T, m) and the sub-step clock's Begin and Size of
+  /// `component`, as the clock holds them now.
+  struct SubStepTimes {
+    int64_t begin, size, subBegin, subSize;
+  };
+  SubStepTimes subStepTimes(int component);
   /// Whether `p` decides the next sub-step of a grid round whose component
   /// has at most one base step of the big step left (so its all-reduce of
   /// the estimate would decide nothing).
