@@ -648,15 +648,19 @@ LogicalResult SimulationLowering::emitLocalSteps(ComponentOp component,
       auto levelAt = [&](Value block) { return b.load(levels, at(block)); };
       // The codes of levels_C to sub-steps (the block's minimum num_steps
       // rounded down to a power of two); the other half, the previous big
-      // step's, cleared for the next (0 is the identity of its codes).
+      // step's, cleared for the next (0 is the identity of its codes). A
+      // code of 0 (a block no item of this process wrote: another rank's,
+      // when the host did not all-reduce the codes because the big step
+      // is 1) decodes to the big step, which every code is within.
       {
         Value other = b.mul(b.xorOne(parity), blocks);
         auto decode = scf::ForOp::create(b, b.loc, zero, blocks, one);
         OpBuilder::InsertionGuard guard(b);
         b.setInsertionPoint(decode.getBody()->getTerminator());
         Value k = decode.getInductionVar();
-        b.store(b.floorPowerOfTwo(b.sub(b.i64(kLevelCode), levelAt(k))), levels,
-                at(k));
+        b.store(b.floorPowerOfTwo(
+                    b.min(b.sub(b.i64(kLevelCode), levelAt(k)), size)),
+                levels, at(k));
         b.store(zero, levels, b.toIndex(b.add(other, k)));
       }
       // Lowers block `g` to twice its finest neighbour; returns whether it
