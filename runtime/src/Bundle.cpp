@@ -436,10 +436,12 @@ std::shared_ptr<const Bundle> Bundle::parse(const uint8_t *data, size_t size,
   schema::Header header = schema::decodeHeader(data);
   if (header.version != schema::kFormatVersion)
     error("format version " + std::to_string(header.version) +
-          (header.version == 1
-               ? " is no longer supported: this runtime reads version 2; "
-                 "recompile the scene with sim-translate --sim-to-bundle"
-               : " is not supported (this runtime reads version 2)"));
+          (header.version < schema::kFormatVersion
+               ? " is no longer supported: this runtime reads version " +
+                     std::to_string(schema::kFormatVersion) +
+                     "; recompile the scene with sim-translate --sim-to-bundle"
+               : " is not supported (this runtime reads version " +
+                     std::to_string(schema::kFormatVersion) + ")"));
   if (header.size != size)
     error("the header gives a file size of " + std::to_string(header.size) +
           " bytes but the file has " + std::to_string(size) +

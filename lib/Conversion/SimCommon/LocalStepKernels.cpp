@@ -11,9 +11,13 @@
 //   snapshot_B       the value at T of buffers later components read
 //   levels_C         each block's sub-step: the largest power of two not
 //                    above m and its items' minimum num_steps at T
-//   limit_levels_C   (one thread) lowers sub-steps until no block's is
-//                    more than twice a neighbour's; records the finest
-//                    and each block's neighbourhood codes
+//   limit_levels_C   (one lane per block) each block's sub-step: the
+//                    largest with none more than twice a neighbour's, a
+//                    minimum over the blocks within ceil(log2 max_steps)
+//                    neighbour steps; the finest by an atomic minimum
+//   level_codes_C    (one lane per block) each block's neighbourhood
+//                    codes; on a CPU the invocation that finishes last
+//                    then finds where each run of equal codes ends
 //   max_steps times:
 //     local_flux_E   (a flux pair, docs/Model.md "Conservation") every
 //                    interface of the flux writer E whose coarsest reading
@@ -26,24 +30,28 @@
 //   local_parity_C   blocks that took an even number of sub-steps copy
 //                    their result into the target half
 //
-// `levels @C` has six sections of one i64 per block: two halves of
-// sub-steps (the big step of clock parity p uses half p), two of
+// `levels @C` has seven sections of one i64 per block: two halves of
+// codes (the big step of clock parity p uses half p), two of
 // neighbourhood codes (kLevelStepCodes, kLevelFluxCodes: the block's
 // sub-step when every block its items reach has it, else minus it (step)
-// or 0 (flux)) and two of where each block's run of equal codes ends, so
+// or 0 (flux)), two of where each block's run of equal codes ends, so
 // that a slot kernel decides from one value per run which blocks start at
 // the slot and which of those read their neighbours in step (wide loads on
-// a CPU) or through their time levels. levels_C combines its items into
-// half p with an atomic maximum of kLevelCode - min(num_steps, m) (0, what
-// the runtime and limit_levels_C of the previous big step leave there, is
-// the identity); limit_levels_C turns the codes into sub-steps (the largest
-// power of two not above the block's minimum, once per block rather than
-// per item: rounding down commutes with the minimum), clears half
-// 1 - p for the next big step and writes the codes and runs. The sub-step
-// clock of the component holds: Begin, the time T + q of the next slot
-// (advance resets it to T); Size, the finest sub-step; Done, the
-// invocations of local_step_C that finished the slot so far (0 between
-// launches). Which half of a
+// a CPU) or through their time levels, and the blocks' sub-steps
+// (kLevelSteps). levels_C combines its items into half p with an atomic
+// maximum of kLevelCode - min(num_steps, m) (0, what the runtime and
+// limit_levels_C of the previous big step leave there, is the identity);
+// limit_levels_C turns the codes into sub-steps (the largest power of two
+// not above the block's minimum, once per block rather than per item:
+// rounding down commutes with the minimum), limits them and clears half
+// 1 - p for the next big step; level_codes_C writes the codes and runs.
+// Every block's work is its own, so both spread the blocks over the lanes
+// of an items launch: no kernel walks the blocks in one thread, which on
+// a GPU would cost a dependent load per block and sweep per big step. The
+// sub-step clock of the component holds: Begin, the time T + q of the
+// next slot (advance resets it to T); Size, the finest sub-step; Done, the
+// invocations of local_step_C (and of level_codes_C) that finished the
+// launch so far (0 between launches). Which half of a
 // buffer holds a block's latest level follows from its sub-step and the
 // slot alone, so no flag is written during a slot and every reader can
 // tell (KernelBody.cpp, the `local` loads).
@@ -356,7 +364,7 @@ LogicalResult SimulationLowering::emitLocalSteps(ComponentOp component,
               // around the range, the part's first (last) `reach` items
               // are repaired. (A part may start or end inside a run, at a
               // group's edge: its neighbours there are then in step.)
-              Value half = b.mul(b.toIndex(parity), blocks);
+              Value half = b.mul(b.index(kLevelSteps), blocks);
               auto otherLevel = [&](Value item) {
                 return b.cmp(arith::CmpIPredicate::ne,
                              b.load(levels, b.add(half, blockOf(item))), level);
@@ -428,7 +436,7 @@ LogicalResult SimulationLowering::emitLocalSteps(ComponentOp component,
             // path, which finds each one's sub-step. The same evaluations
             // as the general path for every interface.
             b.ifThen(startsAt(slot, b.sub(b.i64(0), code)), [&] {
-              Value half = b.mul(b.toIndex(parity), blocks);
+              Value half = b.mul(b.index(kLevelSteps), blocks);
               Value end = b.add(part.base, part.count);
               auto generalLanes = [&](Value from, Value to) {
                 b.ifThen(b.cmp(arith::CmpIPredicate::ult, from, to), [&] {
@@ -567,11 +575,20 @@ LogicalResult SimulationLowering::emitLocalSteps(ComponentOp component,
             estimate(kernel, writer, lane.item, begin, values), b.getI64Type());
         return b.sub(b.i64(kLevelCode), b.min(steps, size));
       };
+      // limit_levels_C takes the finest sub-step by an atomic minimum from
+      // m, set here (a launch earlier) by the lane of the launch's first
+      // item.
+      Value firstItem = kernel.values.first ? kernel.values.first : b.index(0);
       target.forEachGroup(b, kernel, [&](Value base) {
         target.forEachLane(b, kernel, base, [&](const Lane &lane) {
           b.ifThen(lane.active, [&] {
             target.laneStore(b, codeAt(component, lane), code, lane);
           });
+          b.ifThen(
+              arith::AndIOp::create(
+                  b, b.loc, lane.active,
+                  b.cmp(arith::CmpIPredicate::eq, lane.item, firstItem)),
+              [&] { b.store(size, kernel.clock, b.index(sub + kSubSize)); });
         });
         target.maxPerBlock(b, kernel, base, code, kLevelBlock, levels, half);
         // A flux writer's estimate at interface j bounds every block that
@@ -632,253 +649,318 @@ LogicalResult SimulationLowering::emitLocalSteps(ComponentOp component,
       return failure();
   }
 
-  // limit_levels_C: no block more than twice as coarse as a neighbour.
+  // The sub-steps of the big step (section kLevelSteps of `levels @C`)
+  // from the codes levels_C left in half `parity`. Block g's sub-step is
+  // the largest assignment with s_g <= its own decoded code and
+  // s_g <= 2 s_h for every neighbour h (docs/Model.md, "Levels"), which is
+  //   s_g = min over blocks h of decode(h) * 2^hops(g, h),
+  // hops(g, h) = ceil(distance(g, h) / radius), the fewest neighbour steps
+  // from g to h (around the range when it wraps). A block with
+  // 2^hops >= m bounds nothing (every code decodes to at most m), so only
+  // the blocks within radius * ceil(log2 max_steps) count: a window
+  // minimum per block, which every block computes on its own, at once
+  // where lanes run side by side, instead of sweeping to a fixpoint in one
+  // thread. The reference executor sweeps (runtime/src/Reference.cpp); the
+  // two agree because the largest such assignment is unique.
+  int64_t hops = radius == 0 ? 0 : int64_t(llvm::Log2_64_Ceil(maxSteps));
+  auto toI64 = [&](Value index) {
+    return arith::IndexCastOp::create(b, b.loc, b.getI64Type(), index)
+        .getResult();
+  };
+  auto stepsOf = [&](Kernel &kernel) {
+    return b.mul(b.index(kLevelSteps), blocksOf(kernel));
+  };
+  auto limitedLevel = [&](Kernel &kernel, Value levels, Value parity,
+                          Value size, Value g) -> Value {
+    Value one = b.i64(1), zero = b.i64(0);
+    Value blocks = toI64(blocksOf(kernel));
+    Value codes = b.mul(parity, blocks);
+    // A code of 0 (a block no item of this process wrote: another rank's,
+    // when the host did not all-reduce the codes because the big step is
+    // 1) decodes to the big step, which every code is within.
+    auto decode = [&](Value h) {
+      Value code = b.load(levels, b.toIndex(b.add(codes, h)));
+      return b.floorPowerOfTwo(b.min(b.sub(b.i64(kLevelCode), code), size));
+    };
+    Value level = decode(g);
+    if (hops == 0)
+      return level;
+    auto outer = scf::ForOp::create(b, b.loc, one, b.i64(hops + 1), one,
+                                    ValueRange{level});
+    OpBuilder::InsertionGuard guard(b);
+    b.setInsertionPointToStart(outer.getBody());
+    Value d = outer.getInductionVar();
+    Value nearest = b.add(b.mul(b.sub(d, one), b.i64(radius)), one);
+    auto inner =
+        scf::ForOp::create(b, b.loc, nearest, b.add(nearest, b.i64(radius)),
+                           one, ValueRange{outer.getRegionIterArg(0)});
+    {
+      OpBuilder::InsertionGuard innerGuard(b);
+      b.setInsertionPointToStart(inner.getBody());
+      Value distance = inner.getInductionVar();
+      Value bound = inner.getRegionIterArg(0);
+      for (bool below : {true, false}) {
+        Value h = below ? b.sub(g, distance) : b.add(g, distance);
+        Value valid;
+        if (cyclic) {
+          // h mod blocks; the distance may exceed the blocks.
+          Value rem = arith::RemSIOp::create(b, b.loc, h, blocks);
+          h = b.select(b.cmp(arith::CmpIPredicate::slt, rem, zero),
+                       b.add(rem, blocks), rem);
+          valid = b.constant(b.getI1Type(), 1);
+        } else {
+          valid = arith::AndIOp::create(
+              b, b.loc, b.cmp(arith::CmpIPredicate::sge, h, zero),
+              b.cmp(arith::CmpIPredicate::slt, h, blocks));
+          h = b.min(b.max(h, zero), b.sub(blocks, one));
+        }
+        Value reached = arith::ShLIOp::create(b, b.loc, decode(h), d);
+        bound = b.select(valid, b.min(bound, reached), bound);
+      }
+      scf::YieldOp::create(b, b.loc, bound);
+    }
+    scf::YieldOp::create(b, b.loc, inner.getResult(0));
+    return outer.getResult(0);
+  };
+  // Block g's sub-step into section kLevelSteps, and half 1 - parity,
+  // the previous big step's codes, cleared for the next (0 is the
+  // identity of the codes). Returns the sub-step.
+  auto limitBlock = [&](Kernel &kernel, Value levels, Value parity, Value size,
+                        Value g) {
+    Value level = limitedLevel(kernel, levels, parity, size, g);
+    b.store(level, levels, b.add(stepsOf(kernel), b.toIndex(g)));
+    Value other = b.mul(b.toIndex(b.xorOne(parity)), blocksOf(kernel));
+    b.store(b.i64(0), levels, b.add(other, b.toIndex(g)));
+    return level;
+  };
+  // Runs `body(g)` (i64) for every block of the range, spread over the
+  // lanes of an items launch: lane k of its `count` lanes takes blocks k,
+  // k + count, ... On one process `count` is the range, so every block
+  // has a lane of its own; a rank's launch covers its own items only but
+  // limits and codes every block of the range, as one process does.
+  auto forEachBlockOfLanes = [&](Kernel &kernel,
+                                 function_ref<void(Value)> body) {
+    Value first = kernel.values.first ? kernel.values.first : b.index(0);
+    Value count = kernel.values.first ? b.sub(kernel.values.extent,
+                                              b.index(2 * kernel.values.halo))
+                                      : kernel.values.range;
+    Value blocks = blocksOf(kernel);
+    auto blocksFrom = [&](Value lane) {
+      auto loop = scf::ForOp::create(b, b.loc, lane, blocks, count);
+      OpBuilder::InsertionGuard guard(b);
+      b.setInsertionPoint(loop.getBody()->getTerminator());
+      body(toI64(loop.getInductionVar()));
+    };
+    target.forEachGroup(b, kernel, [&](Value base) {
+      // A group whose lanes all lie past the blocks has none to take.
+      Value low = b.sub(base, first);
+      b.ifThen(b.cmp(arith::CmpIPredicate::ult, low, blocks), [&] {
+        if (target.splitsGroups()) {
+          // One thread runs the group's lanes: a plain loop, not a lanes
+          // loop to widen, since a lane's work is a whole block's.
+          Value high = b.min(b.add(low, target.groupSize(b, kernel)), count);
+          auto lanes = scf::ForOp::create(b, b.loc, low, high, b.index(1));
+          OpBuilder::InsertionGuard guard(b);
+          b.setInsertionPoint(lanes.getBody()->getTerminator());
+          blocksFrom(lanes.getInductionVar());
+          return;
+        }
+        target.forEachLane(b, kernel, base, [&](const Lane &lane) {
+          b.ifThen(lane.active, [&] { blocksFrom(b.sub(lane.item, first)); });
+        });
+      });
+    });
+  };
+
+  // The neighbourhood codes of block g for the big step, so that a slot
+  // kernel tells from one value per block whether the items a block's
+  // items reach have its own sub-step (section kLevelStepCodes; and, for a
+  // flux pair, whether its interfaces' readers do: kLevelFluxCodes).
+  auto codesOfBlock = [&](Kernel &kernel, Value levels, Value size, Value g) {
+    Value one = b.i64(1), zero = b.i64(0);
+    Value blocks = toI64(blocksOf(kernel));
+    Value steps = toI64(stepsOf(kernel));
+    auto levelAt = [&](Value block) {
+      return b.load(levels, b.toIndex(b.add(steps, block)));
+    };
+    // The minimum of `init` and `valueAt(k)` for k in [from, to) (i64).
+    auto minOver = [&](Value from, Value to, Value init,
+                       function_ref<Value(Value)> valueAt) {
+      auto loop = scf::ForOp::create(b, b.loc, from, to, one, ValueRange{init});
+      OpBuilder::InsertionGuard guard(b);
+      b.setInsertionPointToStart(loop.getBody());
+      scf::YieldOp::create(
+          b, b.loc,
+          b.min(loop.getRegionIterArg(0), valueAt(loop.getInductionVar())));
+      return loop.getResult(0);
+    };
+    Value range = toI64(kernel.values.range);
+    Value blockItems = b.i64(kLevelBlock);
+    // Whether the items a block's items reach (`below` before its first,
+    // `above` after its last, and, unless `clipped` to the range, all
+    // inside it) have its own sub-step: then the code is that sub-step,
+    // else minus `mixed(g, first, last)`, the finest sub-step an item of
+    // the block takes (a slot that is not a multiple of it starts none of
+    // them).
+    auto neighbourhoodCode =
+        [&](int64_t section, int64_t below, int64_t above, bool clipped,
+            function_ref<Value(Value, Value, Value)> mixed) {
+          Value own = levelAt(g);
+          Value firstItem = b.mul(g, blockItems);
+          Value lastItem = b.min(b.add(firstItem, b.i64(kLevelBlock - 1)),
+                                 b.sub(range, one));
+          Value low = b.sub(firstItem, b.i64(below));
+          Value high = b.add(lastItem, b.i64(above));
+          Value inside = b.constant(b.getI1Type(), 1);
+          if (!clipped)
+            inside = arith::AndIOp::create(
+                b, b.loc, b.cmp(arith::CmpIPredicate::sge, low, zero),
+                b.cmp(arith::CmpIPredicate::slt, high, range));
+          Value lowBlock =
+              arith::DivUIOp::create(b, b.loc, b.max(low, zero), blockItems);
+          Value highBlock = arith::DivUIOp::create(
+              b, b.loc, b.min(high, b.sub(range, one)), blockItems);
+          auto scan =
+              scf::ForOp::create(b, b.loc, lowBlock, b.add(highBlock, one), one,
+                                 ValueRange{inside});
+          {
+            OpBuilder::InsertionGuard inner(b);
+            b.setInsertionPointToStart(scan.getBody());
+            Value same = b.cmp(arith::CmpIPredicate::eq,
+                               levelAt(scan.getInductionVar()), own);
+            scf::YieldOp::create(
+                b, b.loc,
+                arith::AndIOp::create(b, b.loc, scan.getRegionIterArg(0), same)
+                    .getResult());
+          }
+          Value code =
+              b.ifThenElse(
+                   b.getI64Type(), scan.getResult(0),
+                   [&]() -> SmallVector<Value> { return {own}; },
+                   [&]() -> SmallVector<Value> {
+                     return {b.sub(zero, mixed(g, firstItem, lastItem))};
+                   })
+                  .getResult(0);
+          b.store(code, levels,
+                  b.toIndex(b.add(b.mul(b.i64(section), blocks), g)));
+        };
+    // Every item of a block of the component takes the block's sub-step.
+    neighbourhoodCode(kLevelStepCodes, reach, reach, /*clipped=*/!cyclic,
+                      [&](Value g, Value, Value) { return levelAt(g); });
+    if (!fluxWriter)
+      return;
+    // An interface takes the sub-step of its coarsest reader (the whole
+    // big step when it has none), so a block next to a finer one is due
+    // only at its own sub-steps, not at every sub-step of the finer block
+    // its state reads reach. The interfaces whose readers all lie in the
+    // block take its sub-step; the others (at most the window's width at
+    // either end) are folded one by one.
+    ArrayRef<int64_t> offsets = fluxWriter.getFluxWindowAttr().asArrayRef();
+    auto interfaceLevel = [&](Value interface) {
+      Value coarsest = foldReaders(
+          kernel, b.toIndex(interface), zero,
+          [&](Value reader, Value exists, Value coarsest) {
+            Value block = toI64(
+                arith::DivUIOp::create(b, b.loc, reader, b.index(kLevelBlock)));
+            return b.select(exists, b.max(coarsest, levelAt(block)), coarsest);
+          });
+      return b.select(b.cmp(arith::CmpIPredicate::eq, coarsest, zero), size,
+                      coarsest);
+    };
+    auto finestInterface = [&](Value g, Value first, Value last) {
+      // Interface j reads j - o, o in [offsets[0], offsets[1]]: all in the
+      // block for j in [first + offsets[1], last + offsets[0]].
+      Value end = b.add(last, one);
+      Value innerLow = b.max(first, b.add(first, b.i64(offsets[1])));
+      Value innerHigh = b.min(last, b.add(last, b.i64(offsets[0])));
+      Value hasInner = b.cmp(arith::CmpIPredicate::sle, innerLow, innerHigh);
+      Value finest = b.select(hasInner, levelAt(g), size);
+      Value lowEnd = b.min(innerLow, end);
+      finest = minOver(first, lowEnd, finest, interfaceLevel);
+      return minOver(b.max(b.add(innerHigh, one), lowEnd), end, finest,
+                     interfaceLevel);
+    };
+    neighbourhoodCode(kLevelFluxCodes, fluxBelow, fluxAbove,
+                      /*clipped=*/false, finestInterface);
+  };
+
+  // Where the run of equal codes of `codeSection` that holds each block
+  // ends (the block after its last), from the last block back: what a
+  // slot kernel walks where one thread runs a group's lanes (splitsGroups).
+  auto runEnds = [&](Kernel &kernel, Value levels, int64_t codeSection,
+                     int64_t runSection) {
+    Value one = b.i64(1), zero = b.i64(0);
+    Value blocks = toI64(blocksOf(kernel));
+    auto elementOf = [&](int64_t section, Value block) {
+      return b.toIndex(b.add(b.mul(b.i64(section), blocks), block));
+    };
+    auto loop = scf::ForOp::create(b, b.loc, zero, blocks, one);
+    OpBuilder::InsertionGuard guard(b);
+    b.setInsertionPoint(loop.getBody()->getTerminator());
+    Value g = b.sub(b.sub(blocks, one), loop.getInductionVar());
+    Value next = b.add(g, one);
+    Value end =
+        b.ifThenElse(
+             b.getI64Type(), b.cmp(arith::CmpIPredicate::slt, next, blocks),
+             [&]() -> SmallVector<Value> {
+               Value same = b.cmp(arith::CmpIPredicate::eq,
+                                  b.load(levels, elementOf(codeSection, next)),
+                                  b.load(levels, elementOf(codeSection, g)));
+               return {b.select(
+                   same, b.load(levels, elementOf(runSection, next)), next)};
+             },
+             [&]() -> SmallVector<Value> { return {next}; })
+            .getResult(0);
+    b.store(end, levels, elementOf(runSection, g));
+  };
+
+  // limit_levels_C: every block's sub-step, no more than twice as coarse
+  // as a neighbour, one lane per block, and the finest of them by an
+  // atomic minimum from m, which levels_C set (the sub-step clock's Size:
+  // the distance between slots where some block starts one).
   {
     Kernel kernel = beginKernel(getKernelName(kernels, "limit_levels", name));
     Value begin, size, parity;
     readClock(kernel, begin, size, parity);
     Value levels = kernel.levels.lookup(symbol);
     b.ifThen(b.cmp(arith::CmpIPredicate::sgt, size, b.i64(0)), [&] {
-      Value one = b.i64(1), zero = b.i64(0);
-      Value blocks = arith::IndexCastOp::create(b, b.loc, b.getI64Type(),
-                                                blocksOf(kernel));
-      Value half = arith::IndexCastOp::create(
-          b, b.loc, b.getI64Type(), b.mul(b.toIndex(parity), blocksOf(kernel)));
-      auto at = [&](Value block) { return b.toIndex(b.add(half, block)); };
-      auto levelAt = [&](Value block) { return b.load(levels, at(block)); };
-      // The codes of levels_C to sub-steps (the block's minimum num_steps
-      // rounded down to a power of two); the other half, the previous big
-      // step's, cleared for the next (0 is the identity of its codes). A
-      // code of 0 (a block no item of this process wrote: another rank's,
-      // when the host did not all-reduce the codes because the big step
-      // is 1) decodes to the big step, which every code is within.
-      {
-        Value other = b.mul(b.xorOne(parity), blocks);
-        auto decode = scf::ForOp::create(b, b.loc, zero, blocks, one);
-        OpBuilder::InsertionGuard guard(b);
-        b.setInsertionPoint(decode.getBody()->getTerminator());
-        Value k = decode.getInductionVar();
-        b.store(b.floorPowerOfTwo(
-                    b.min(b.sub(b.i64(kLevelCode), levelAt(k)), size)),
-                levels, at(k));
-        b.store(zero, levels, b.toIndex(b.add(other, k)));
-      }
-      // Lowers block `g` to twice its finest neighbour; returns whether it
-      // changed.
-      auto relax = [&](Value g) -> Value {
-        Value own = levelAt(g);
-        Value bound = own;
-        if (radius > 0) {
-          auto loop = scf::ForOp::create(b, b.loc, one, b.i64(radius + 1), one,
-                                         ValueRange{own});
-          OpBuilder::InsertionGuard guard(b);
-          b.setInsertionPointToStart(loop.getBody());
-          Value d = loop.getInductionVar();
-          Value finest = loop.getRegionIterArg(0);
-          for (bool below : {true, false}) {
-            Value h = below ? b.sub(g, d) : b.add(g, d);
-            Value valid;
-            if (cyclic) {
-              // h mod blocks; d <= radius may exceed the blocks.
-              Value rem = arith::RemSIOp::create(b, b.loc, h, blocks);
-              h = b.select(b.cmp(arith::CmpIPredicate::slt, rem, zero),
-                           b.add(rem, blocks), rem);
-              valid = b.constant(b.getI1Type(), 1);
-            } else {
-              valid = arith::AndIOp::create(
-                  b, b.loc, b.cmp(arith::CmpIPredicate::sge, h, zero),
-                  b.cmp(arith::CmpIPredicate::slt, h, blocks));
-              h = b.min(b.max(h, zero), b.sub(blocks, one));
-            }
-            Value twice = arith::ShLIOp::create(b, b.loc, levelAt(h), one);
-            finest = b.select(valid, b.min(finest, twice), finest);
-          }
-          scf::YieldOp::create(b, b.loc, finest);
-          b.setInsertionPointAfter(loop);
-          bound = loop.getResult(0);
-        }
-        b.store(bound, levels, at(g));
-        return b.cmp(arith::CmpIPredicate::slt, bound, own);
-      };
-      // Forward and backward sweeps until nothing changes: the levels only
-      // go down, each at most log2(m) times, and the result is the largest
-      // assignment that meets the rule, whatever the order.
-      auto sweeps = scf::WhileOp::create(
-          b, b.loc, b.getI1Type(), ValueRange{b.constant(b.getI1Type(), 1)});
-      {
-        OpBuilder::InsertionGuard guard(b);
-        Block *before =
-            b.createBlock(&sweeps.getBefore(), {}, b.getI1Type(), b.loc);
-        scf::ConditionOp::create(b, b.loc, before->getArgument(0),
-                                 before->getArguments());
-        b.createBlock(&sweeps.getAfter(), {}, b.getI1Type(), b.loc);
-        Value changed = b.constant(b.getI1Type(), 0);
-        for (bool forward : {true, false}) {
-          auto pass = scf::ForOp::create(b, b.loc, zero, blocks, one,
-                                         ValueRange{changed});
-          OpBuilder::InsertionGuard inner(b);
-          b.setInsertionPointToStart(pass.getBody());
-          Value k = pass.getInductionVar();
-          Value g = forward ? k : b.sub(b.sub(blocks, one), k);
-          Value any = arith::OrIOp::create(b, b.loc, pass.getRegionIterArg(0),
-                                           relax(g));
-          scf::YieldOp::create(b, b.loc, any);
-          b.setInsertionPointAfter(pass);
-          changed = pass.getResult(0);
-        }
-        scf::YieldOp::create(b, b.loc, changed);
-      }
-      // The minimum of `init` and `valueAt(k)` for k in [from, to) (i64).
-      auto minOver = [&](Value from, Value to, Value init,
-                         function_ref<Value(Value)> valueAt) {
-        auto loop =
-            scf::ForOp::create(b, b.loc, from, to, one, ValueRange{init});
-        OpBuilder::InsertionGuard guard(b);
-        b.setInsertionPointToStart(loop.getBody());
-        scf::YieldOp::create(
-            b, b.loc,
-            b.min(loop.getRegionIterArg(0), valueAt(loop.getInductionVar())));
-        return loop.getResult(0);
-      };
-      // The finest sub-step: the distance between slots where some block
-      // starts one.
-      b.store(minOver(zero, blocks, size, levelAt), kernel.clock,
-              b.index(sub + kSubSize));
-
-      // The neighbourhood codes of the big step, so that a slot kernel tells
-      // from one value per block whether the items a block's items reach
-      // (`below` before its first, `above` after its last, and, unless
-      // `clipped` to the range, all inside it) have its own sub-step: then
-      // the code is that sub-step, else minus `mixed(g, first, last)`, the
-      // finest sub-step an item of the block takes (a slot that is not a
-      // multiple of it starts none of them).
-      Value range = arith::IndexCastOp::create(b, b.loc, b.getI64Type(),
-                                               kernel.values.range);
-      Value blockItems = b.i64(kLevelBlock);
-      auto neighbourhoodCodes =
-          [&](int64_t section, int64_t below, int64_t above, bool clipped,
-              function_ref<Value(Value, Value, Value)> mixed) {
-            auto loop = scf::ForOp::create(b, b.loc, zero, blocks, one);
-            OpBuilder::InsertionGuard guard(b);
-            b.setInsertionPoint(loop.getBody()->getTerminator());
-            Value g = loop.getInductionVar();
-            Value own = levelAt(g);
-            Value firstItem = b.mul(g, blockItems);
-            Value lastItem = b.min(b.add(firstItem, b.i64(kLevelBlock - 1)),
-                                   b.sub(range, one));
-            Value low = b.sub(firstItem, b.i64(below));
-            Value high = b.add(lastItem, b.i64(above));
-            Value inside = b.constant(b.getI1Type(), 1);
-            if (!clipped)
-              inside = arith::AndIOp::create(
-                  b, b.loc, b.cmp(arith::CmpIPredicate::sge, low, zero),
-                  b.cmp(arith::CmpIPredicate::slt, high, range));
-            Value lowBlock =
-                arith::DivUIOp::create(b, b.loc, b.max(low, zero), blockItems);
-            Value highBlock = arith::DivUIOp::create(
-                b, b.loc, b.min(high, b.sub(range, one)), blockItems);
-            auto scan =
-                scf::ForOp::create(b, b.loc, lowBlock, b.add(highBlock, one),
-                                   one, ValueRange{inside});
-            {
-              OpBuilder::InsertionGuard inner(b);
-              b.setInsertionPointToStart(scan.getBody());
-              Value same = b.cmp(arith::CmpIPredicate::eq,
-                                 levelAt(scan.getInductionVar()), own);
-              scf::YieldOp::create(b, b.loc,
-                                   arith::AndIOp::create(
-                                       b, b.loc, scan.getRegionIterArg(0), same)
-                                       .getResult());
-            }
-            Value code =
-                b.ifThenElse(
-                     b.getI64Type(), scan.getResult(0),
-                     [&]() -> SmallVector<Value> { return {own}; },
-                     [&]() -> SmallVector<Value> {
-                       return {b.sub(zero, mixed(g, firstItem, lastItem))};
-                     })
-                    .getResult(0);
-            b.store(code, levels,
-                    b.toIndex(b.add(b.mul(b.i64(section), blocks), g)));
-          };
-      // Where the run of equal codes that holds each block ends (the block
-      // after its last), from the last block back.
-      auto runEnds = [&](int64_t codeSection, int64_t runSection) {
-        auto elementOf = [&](int64_t section, Value block) {
-          return b.toIndex(b.add(b.mul(b.i64(section), blocks), block));
-        };
-        auto loop = scf::ForOp::create(b, b.loc, zero, blocks, one);
-        OpBuilder::InsertionGuard guard(b);
-        b.setInsertionPoint(loop.getBody()->getTerminator());
-        Value g = b.sub(b.sub(blocks, one), loop.getInductionVar());
-        Value next = b.add(g, one);
-        Value end =
-            b.ifThenElse(
-                 b.getI64Type(), b.cmp(arith::CmpIPredicate::slt, next, blocks),
-                 [&]() -> SmallVector<Value> {
-                   Value same =
-                       b.cmp(arith::CmpIPredicate::eq,
-                             b.load(levels, elementOf(codeSection, next)),
-                             b.load(levels, elementOf(codeSection, g)));
-                   return {b.select(same,
-                                    b.load(levels, elementOf(runSection, next)),
-                                    next)};
-                 },
-                 [&]() -> SmallVector<Value> { return {next}; })
-                .getResult(0);
-        b.store(end, levels, elementOf(runSection, g));
-      };
-      // Every item of a block of the component takes the block's sub-step.
-      neighbourhoodCodes(kLevelStepCodes, reach, reach, /*clipped=*/!cyclic,
-                         [&](Value g, Value, Value) { return levelAt(g); });
-      runEnds(kLevelStepCodes, kLevelStepRuns);
-      if (fluxWriter) {
-        // An interface takes the sub-step of its coarsest reader (the whole
-        // big step when it has none), so a block next to a finer one is due
-        // only at its own sub-steps, not at every sub-step of the finer
-        // block its state reads reach. The interfaces whose readers all lie
-        // in the block take its sub-step; the others (at most the window's
-        // width at either end) are folded one by one.
-        ArrayRef<int64_t> offsets = fluxWriter.getFluxWindowAttr().asArrayRef();
-        auto interfaceLevel = [&](Value interface) {
-          Value coarsest = foldReaders(
-              kernel, b.toIndex(interface), zero,
-              [&](Value reader, Value exists, Value coarsest) {
-                Value block = arith::IndexCastOp::create(
-                    b, b.loc, b.getI64Type(),
-                    arith::DivUIOp::create(b, b.loc, reader,
-                                           b.index(kLevelBlock)));
-                return b.select(exists, b.max(coarsest, levelAt(block)),
-                                coarsest);
-              });
-          return b.select(b.cmp(arith::CmpIPredicate::eq, coarsest, zero), size,
-                          coarsest);
-        };
-        auto finestInterface = [&](Value g, Value first, Value last) {
-          // Interface j reads j - o, o in [offsets[0], offsets[1]]: all in
-          // the block for j in [first + offsets[1], last + offsets[0]].
-          Value end = b.add(last, one);
-          Value innerLow = b.max(first, b.add(first, b.i64(offsets[1])));
-          Value innerHigh = b.min(last, b.add(last, b.i64(offsets[0])));
-          Value hasInner =
-              b.cmp(arith::CmpIPredicate::sle, innerLow, innerHigh);
-          Value finest = b.select(hasInner, levelAt(g), size);
-          Value lowEnd = b.min(innerLow, end);
-          finest = minOver(first, lowEnd, finest, interfaceLevel);
-          return minOver(b.max(b.add(innerHigh, one), lowEnd), end, finest,
-                         interfaceLevel);
-        };
-        neighbourhoodCodes(kLevelFluxCodes, fluxBelow, fluxAbove,
-                           /*clipped=*/false, finestInterface);
-        runEnds(kLevelFluxCodes, kLevelFluxRuns);
-      }
+      forEachBlockOfLanes(kernel, [&](Value g) {
+        Value level = limitBlock(kernel, levels, parity, size, g);
+        b.atomic(arith::AtomicRMWKind::mins, level, kernel.clock,
+                 b.index(sub + kSubSize));
+      });
     });
-    // Distributed plans: every rank limits the levels of the whole range
-    // (one thread), from the codes of all ranks' items: their maximum, as
-    // levels_C's atomics take it on one process.
+    // Distributed plans: every rank limits the levels of the whole range,
+    // from the codes of all ranks' items: their maximum, as levels_C's
+    // atomics take it on one process.
     if (distributed)
       pendingReduceLevels.push_back(FlatSymbolRefAttr::get(symbol));
-    if (failed(endKernel(kernel, simplan::LaunchShape::single, launches)))
+    if (failed(endKernel(kernel, simplan::LaunchShape::items, launches)))
+      return failure();
+  }
+  // level_codes_C: every block's neighbourhood codes from the sub-steps,
+  // one lane per block; where one thread runs a group's lanes (a CPU,
+  // whose slot kernels walk runs of equal codes), the invocation that
+  // finishes last then finds where each run ends, in one pass.
+  {
+    Kernel kernel = beginKernel(getKernelName(kernels, "level_codes", name));
+    Value begin, size, parity;
+    readClock(kernel, begin, size, parity);
+    Value levels = kernel.levels.lookup(symbol);
+    Value running = b.cmp(arith::CmpIPredicate::sgt, size, b.i64(0));
+    b.ifThen(running, [&] {
+      forEachBlockOfLanes(
+          kernel, [&](Value g) { codesOfBlock(kernel, levels, size, g); });
+    });
+    if (target.splitsGroups())
+      b.ifThen(running, [&] {
+        target.afterLastInvocation(b, kernel, sub + kSubCount, [&] {
+          runEnds(kernel, levels, kLevelStepCodes, kLevelStepRuns);
+          if (fluxWriter)
+            runEnds(kernel, levels, kLevelFluxCodes, kLevelFluxRuns);
+        });
+      });
+    if (failed(endKernel(kernel, simplan::LaunchShape::items, launches)))
       return failure();
   }
 
@@ -900,7 +982,7 @@ LogicalResult SimulationLowering::emitLocalSteps(ComponentOp component,
     Value size = state.size, parity = state.parity, levels = state.levels,
           dt = state.dt, now = state.now, slot = state.slot;
     b.ifThen(state.running, [&] {
-      Value half = b.mul(b.toIndex(parity), blocksOf(kernel));
+      Value half = stepsOf(kernel);
       // One evaluation of interface `lane.item` over `level` from T +
       // slot; reads the reader's state from its time levels, or (`uniform`:
       // every block it reaches at `level`, all in step) from the half
@@ -966,7 +1048,7 @@ LogicalResult SimulationLowering::emitLocalSteps(ComponentOp component,
     Value parity = state.parity, levels = state.levels, dt = state.dt,
           now = state.now, slot = state.slot;
     b.ifThen(state.running, [&] {
-      Value half = b.mul(b.toIndex(parity), blocksOf(kernel));
+      Value half = stepsOf(kernel);
       // One evaluation of a lane's item from T + slot over `level` base
       // steps, reading its own buffers at `readParity`, and through
       // `levels` at other items unless the group's neighbourhood is
@@ -1039,7 +1121,7 @@ LogicalResult SimulationLowering::emitLocalSteps(ComponentOp component,
   setHalves(kernel, parity, parity);
   Value levels = kernel.levels.lookup(symbol);
   b.ifThen(b.cmp(arith::CmpIPredicate::sgt, size, b.i64(0)), [&] {
-    Value half = b.mul(b.toIndex(parity), blocksOf(kernel));
+    Value half = stepsOf(kernel);
     // m / level sub-steps (both powers of two): even unless equal. A part
     // of one sub-step (its step codes are it or minus it) copies all its
     // items or none.

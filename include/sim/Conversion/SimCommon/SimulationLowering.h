@@ -12,8 +12,8 @@
 //   SubStepKernels.cpp       substep_C: group sub-steps in one kernel
 //   GridSubStepKernels.cpp   snapshot_B, the rounds of grid-wide sub-steps,
 //                            parity_C
-//   LocalStepKernels.cpp     levels_C, limit_levels_C, the slots of local
-//                            time steps, local_parity_C
+//   LocalStepKernels.cpp     levels_C, limit_levels_C, level_codes_C, the
+//                            slots of local time steps, local_parity_C
 //
 // Everything here decides *how* to run what the front end recorded: the
 // strategy, the schedule, how each component advances (`advance`,
@@ -59,13 +59,13 @@ constexpr int64_t kLevelCode = int64_t(1) << 62;
 static_assert(kLevelBlock == int64_t(::sim::bundle::LocalStepBlock::Items),
               "the kernels' level blocks and the bundle schema's differ");
 /// The sections of `levels @C`, each one i64 per block: the two halves of
-/// the sub-steps, then, for the big step, the neighbourhood codes for
-/// local_step_C and for a flux writer's local_flux_E, and the ends of their
-/// runs of equal codes (LocalStepKernels.cpp).
+/// levels_C's codes, then, for the big step, the neighbourhood codes for
+/// local_step_C and for a flux writer's local_flux_E, the ends of their
+/// runs of equal codes, and the blocks' sub-steps (LocalStepKernels.cpp).
 constexpr int64_t kLevelStepCodes = 2, kLevelFluxCodes = 3, kLevelStepRuns = 4,
-                  kLevelFluxRuns = 5;
+                  kLevelFluxRuns = 5, kLevelSteps = 6;
 static_assert(int64_t(::sim::bundle::LocalStepLevels::Sections) ==
-                  kLevelFluxRuns + 1,
+                  kLevelSteps + 1,
               "the kernels' level sections and the bundle schema's differ");
 
 /// No estimate yet: the identity of the minimum.

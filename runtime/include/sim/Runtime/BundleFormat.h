@@ -28,8 +28,11 @@
 namespace sim::bundle {
 
 constexpr char kMagic[8] = {'S', 'I', 'M', 'B', 'N', 'D', 'L', '\0'};
-/// Version 1 held text sections; version 2 is the FlatBuffer.
-constexpr uint32_t kFormatVersion = 2;
+/// Version 1 held text sections; version 2 is the FlatBuffer; version 3
+/// gives `levels @C` a seventh section, the blocks' sub-steps (kernels of
+/// version 2 decoded them in place and would find too little memory
+/// under a version 3 runtime's layout contract, and the reverse).
+constexpr uint32_t kFormatVersion = 3;
 constexpr size_t kHeaderSize = 32;
 /// The largest bundle a runtime reads (a bundle of every strategy of the
 /// paper's scenes takes well under 1 MiB).

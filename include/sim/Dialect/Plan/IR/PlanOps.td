@@ -359,7 +359,7 @@ def Plan_LaunchOp : Plan_Op<"launch", [
     ```mlir
     simplan.launch @k::@advance single [#simplan.arg<clock>] reduce_min [4]
     simplan.launch @k::@step_C0 items [...] for @C0 exchange_targets [@B0]
-    simplan.launch @k::@limit_levels_C single [...] reduce_max_levels [@C]
+    simplan.launch @k::@limit_levels_C items [...] reduce_max_levels [@C]
     simplan.launch @k::@substep_C items [...] for @C exchange_sub_step [@U]
     ```
   }];
