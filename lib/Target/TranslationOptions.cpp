@@ -91,7 +91,14 @@ TranslationOptions::TranslationOptions()
                          "holds a block of the range plus the ghost items "
                          "the scene's read windows reach; gathers are "
                          "refused (docs/Distributed.md)"),
-          llvm::cl::init(false), llvm::cl::cat(category)) {}
+          llvm::cl::init(false), llvm::cl::cat(category)),
+      cpuLevelsPerLane(
+          "sim-cpu-levels-per-lane",
+          llvm::cl::desc("--sim-to-bundle: the CPU kernels limit lts levels "
+                         "one lane per block, as the GPU kernels do, "
+                         "instead of in one pass (the same results; for "
+                         "testing the GPU's algorithm on the CPU)"),
+          llvm::cl::init(false), llvm::cl::Hidden, llvm::cl::cat(category)) {}
 
 GPUTargetOptions TranslationOptions::getGPUTarget() const {
   GPUTargetOptions target;

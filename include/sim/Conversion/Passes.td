@@ -91,6 +91,11 @@ def SimLowerToCPU : Pass<"sim-lower-to-cpu", "::mlir::ModuleOp"> {
   let options = [
     Option<"groupSize", "group-size", "int64_t", "256",
            "Items per group the plan is made for">,
+    Option<"levelsPerLane", "levels-per-lane", "bool", "false",
+           "lts: limit each block's sub-step in a lane of its own, as the "
+           "GPU kernels do, instead of in one pass by one lane "
+           "(the same results; for testing the GPU's algorithm "
+           "on the CPU)">,
   ];
   let dependentDialects = [
     "::mlir::arith::ArithDialect", "::mlir::func::FuncDialect",

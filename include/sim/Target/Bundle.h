@@ -49,6 +49,9 @@ struct BundleOptions {
   /// the front end records every buffer's ghost items and the kernels
   /// address one rank's block.
   bool distributed = false;
+  /// The CPU kernels limit lts levels one lane per block, as the GPU
+  /// kernels do (--sim-lower-to-cpu=levels-per-lane), for tests.
+  bool cpuLevelsPerLane = false;
 };
 
 /// Compiles the one sim.simulation in `module` for every strategy of

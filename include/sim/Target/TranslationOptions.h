@@ -55,6 +55,9 @@ struct TranslationOptions {
   llvm::cl::opt<bool> ftz;
   /// --sim-distributed: plans for many processes.
   llvm::cl::opt<bool> distributed;
+  /// --sim-cpu-levels-per-lane (hidden): the CPU kernels limit lts levels
+  /// as the GPU kernels do, so that tests run the GPU's algorithm.
+  llvm::cl::opt<bool> cpuLevelsPerLane;
 
   /// The GPU back end's target the flags describe.
   GPUTargetOptions getGPUTarget() const;

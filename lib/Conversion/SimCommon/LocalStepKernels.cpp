@@ -11,13 +11,13 @@
 //   snapshot_B       the value at T of buffers later components read
 //   levels_C         each block's sub-step: the largest power of two not
 //                    above m and its items' minimum num_steps at T
-//   limit_levels_C   (one lane per block) each block's sub-step: the
-//                    largest with none more than twice a neighbour's, a
+//   limit_levels_C   each block's sub-step: the largest with none more
+//                    than twice a neighbour's; the finest; each block's
+//                    neighbourhood codes. On a GPU one lane per block (a
 //                    minimum over the blocks within ceil(log2 max_steps)
-//                    neighbour steps; the finest by an atomic minimum
-//   level_codes_C    (one lane per block) each block's neighbourhood
-//                    codes; on a CPU the invocation that finishes last
-//                    then finds where each run of equal codes ends
+//                    neighbour steps, the finest by an atomic minimum); on
+//                    a CPU one lane in one pass of sweeps, which also
+//                    finds where each run of equal codes ends
 //   max_steps times:
 //     local_flux_E   (a flux pair, docs/Model.md "Conservation") every
 //                    interface of the flux writer E whose coarsest reading
@@ -43,15 +43,14 @@
 // limit_levels_C of the previous big step leave there, is the identity);
 // limit_levels_C turns the codes into sub-steps (the largest power of two
 // not above the block's minimum, once per block rather than per item:
-// rounding down commutes with the minimum), limits them and clears half
-// 1 - p for the next big step; level_codes_C writes the codes and runs.
-// Every block's work is its own, so both spread the blocks over the lanes
-// of an items launch: no kernel walks the blocks in one thread, which on
-// a GPU would cost a dependent load per block and sweep per big step. The
-// sub-step clock of the component holds: Begin, the time T + q of the
-// next slot (advance resets it to T); Size, the finest sub-step; Done, the
-// invocations of local_step_C (and of level_codes_C) that finished the
-// launch so far (0 between launches). Which half of a
+// rounding down commutes with the minimum), limits them, clears half
+// 1 - p for the next big step and writes the codes and runs. On a GPU
+// every block's work is its own, spread over the lanes of an items
+// launch: one thread walking the blocks would cost a dependent load per
+// block and sweep per big step. The sub-step clock of the component
+// holds: Begin, the time T + q of the next slot (advance resets it to T);
+// Size, the finest sub-step; Done, the invocations of local_step_C that
+// finished the slot so far (0 between launches). Which half of a
 // buffer holds a block's latest level follows from its sub-step and the
 // slot alone, so no flag is written during a slot and every reader can
 // tell (KernelBody.cpp, the `local` loads).
@@ -575,20 +574,21 @@ LogicalResult SimulationLowering::emitLocalSteps(ComponentOp component,
             estimate(kernel, writer, lane.item, begin, values), b.getI64Type());
         return b.sub(b.i64(kLevelCode), b.min(steps, size));
       };
-      // limit_levels_C takes the finest sub-step by an atomic minimum from
-      // m, set here (a launch earlier) by the lane of the launch's first
-      // item.
+      // Where limit_levels_C takes the finest sub-step by an atomic
+      // minimum (one lane per block), it starts from m, set here (a launch
+      // earlier) by the lane of the launch's first item.
       Value firstItem = kernel.values.first ? kernel.values.first : b.index(0);
       target.forEachGroup(b, kernel, [&](Value base) {
         target.forEachLane(b, kernel, base, [&](const Lane &lane) {
           b.ifThen(lane.active, [&] {
             target.laneStore(b, codeAt(component, lane), code, lane);
           });
-          b.ifThen(
-              arith::AndIOp::create(
-                  b, b.loc, lane.active,
-                  b.cmp(arith::CmpIPredicate::eq, lane.item, firstItem)),
-              [&] { b.store(size, kernel.clock, b.index(sub + kSubSize)); });
+          if (target.limitsLevelsPerLane())
+            b.ifThen(
+                arith::AndIOp::create(
+                    b, b.loc, lane.active,
+                    b.cmp(arith::CmpIPredicate::eq, lane.item, firstItem)),
+                [&] { b.store(size, kernel.clock, b.index(sub + kSubSize)); });
         });
         target.maxPerBlock(b, kernel, base, code, kLevelBlock, levels, half);
         // A flux writer's estimate at interface j bounds every block that
@@ -670,9 +670,27 @@ LogicalResult SimulationLowering::emitLocalSteps(ComponentOp component,
   auto stepsOf = [&](Kernel &kernel) {
     return b.mul(b.index(kLevelSteps), blocksOf(kernel));
   };
+  // The block `distance` blocks below (or above) block g (i64 values) and
+  // whether it is one: around the range when a buffer the component writes
+  // wraps (the distance may exceed the blocks), else clamped into it.
+  auto neighbourOf = [&](Value g, Value distance, bool below,
+                         Value blocks) -> std::pair<Value, Value> {
+    Value zero = b.i64(0), one = b.i64(1);
+    Value h = below ? b.sub(g, distance) : b.add(g, distance);
+    if (cyclic) {
+      Value rem = arith::RemSIOp::create(b, b.loc, h, blocks);
+      return {b.select(b.cmp(arith::CmpIPredicate::slt, rem, zero),
+                       b.add(rem, blocks), rem),
+              b.constant(b.getI1Type(), 1)};
+    }
+    Value valid = arith::AndIOp::create(
+        b, b.loc, b.cmp(arith::CmpIPredicate::sge, h, zero),
+        b.cmp(arith::CmpIPredicate::slt, h, blocks));
+    return {b.min(b.max(h, zero), b.sub(blocks, one)), valid};
+  };
   auto limitedLevel = [&](Kernel &kernel, Value levels, Value parity,
                           Value size, Value g) -> Value {
-    Value one = b.i64(1), zero = b.i64(0);
+    Value one = b.i64(1);
     Value blocks = toI64(blocksOf(kernel));
     Value codes = b.mul(parity, blocks);
     // A code of 0 (a block no item of this process wrote: another rank's,
@@ -700,20 +718,7 @@ LogicalResult SimulationLowering::emitLocalSteps(ComponentOp component,
       Value distance = inner.getInductionVar();
       Value bound = inner.getRegionIterArg(0);
       for (bool below : {true, false}) {
-        Value h = below ? b.sub(g, distance) : b.add(g, distance);
-        Value valid;
-        if (cyclic) {
-          // h mod blocks; the distance may exceed the blocks.
-          Value rem = arith::RemSIOp::create(b, b.loc, h, blocks);
-          h = b.select(b.cmp(arith::CmpIPredicate::slt, rem, zero),
-                       b.add(rem, blocks), rem);
-          valid = b.constant(b.getI1Type(), 1);
-        } else {
-          valid = arith::AndIOp::create(
-              b, b.loc, b.cmp(arith::CmpIPredicate::sge, h, zero),
-              b.cmp(arith::CmpIPredicate::slt, h, blocks));
-          h = b.min(b.max(h, zero), b.sub(blocks, one));
-        }
+        auto [h, valid] = neighbourOf(g, distance, below, blocks);
         Value reached = arith::ShLIOp::create(b, b.loc, decode(h), d);
         bound = b.select(valid, b.min(bound, reached), bound);
       }
@@ -775,14 +780,12 @@ LogicalResult SimulationLowering::emitLocalSteps(ComponentOp component,
   // The neighbourhood codes of block g for the big step, so that a slot
   // kernel tells from one value per block whether the items a block's
   // items reach have its own sub-step (section kLevelStepCodes; and, for a
-  // flux pair, whether its interfaces' readers do: kLevelFluxCodes).
-  auto codesOfBlock = [&](Kernel &kernel, Value levels, Value size, Value g) {
+  // flux pair, whether its interfaces' readers do: kLevelFluxCodes), from
+  // `levelAt(h)`, the sub-step of block h (i64).
+  auto codesOfBlock = [&](Kernel &kernel, Value levels, Value size, Value g,
+                          function_ref<Value(Value)> levelAt) {
     Value one = b.i64(1), zero = b.i64(0);
     Value blocks = toI64(blocksOf(kernel));
-    Value steps = toI64(stepsOf(kernel));
-    auto levelAt = [&](Value block) {
-      return b.load(levels, b.toIndex(b.add(steps, block)));
-    };
     // The minimum of `init` and `valueAt(k)` for k in [from, to) (i64).
     auto minOver = [&](Value from, Value to, Value init,
                        function_ref<Value(Value)> valueAt) {
@@ -914,52 +917,148 @@ LogicalResult SimulationLowering::emitLocalSteps(ComponentOp component,
     b.store(end, levels, elementOf(runSection, g));
   };
 
+  // Where one thread runs a group's lanes (a CPU): the same sub-steps and
+  // codes in one pass of one thread, which costs less than every lane's
+  // window minima: each block's code decoded into its sub-step, then
+  // forward and backward sweeps that lower a block to twice its finest
+  // neighbour until nothing changes (the levels only go down, each at most
+  // log2(m) times, and the result is the largest assignment that meets the
+  // rule, whatever the order: the window minimum above), the finest, the
+  // codes and the ends of their runs.
+  auto limitInOnePass = [&](Kernel &kernel, Value levels, Value parity,
+                            Value size) {
+    Value one = b.i64(1), zero = b.i64(0);
+    Value blocks = toI64(blocksOf(kernel));
+    Value steps = toI64(stepsOf(kernel));
+    auto at = [&](Value block) { return b.toIndex(b.add(steps, block)); };
+    auto levelAt = [&](Value block) { return b.load(levels, at(block)); };
+    {
+      Value codes = b.mul(parity, blocks);
+      Value other = b.mul(b.xorOne(parity), blocks);
+      auto decode = scf::ForOp::create(b, b.loc, zero, blocks, one);
+      OpBuilder::InsertionGuard guard(b);
+      b.setInsertionPoint(decode.getBody()->getTerminator());
+      Value k = decode.getInductionVar();
+      Value code = b.load(levels, b.toIndex(b.add(codes, k)));
+      b.store(b.floorPowerOfTwo(b.min(b.sub(b.i64(kLevelCode), code), size)),
+              levels, at(k));
+      b.store(zero, levels, b.toIndex(b.add(other, k)));
+    }
+    // Lowers block `g` to twice its finest neighbour; returns whether it
+    // changed.
+    auto relax = [&](Value g) -> Value {
+      Value own = levelAt(g);
+      Value bound = own;
+      if (radius > 0) {
+        auto loop = scf::ForOp::create(b, b.loc, one, b.i64(radius + 1), one,
+                                       ValueRange{own});
+        OpBuilder::InsertionGuard guard(b);
+        b.setInsertionPointToStart(loop.getBody());
+        Value d = loop.getInductionVar();
+        Value finest = loop.getRegionIterArg(0);
+        for (bool below : {true, false}) {
+          auto [h, valid] = neighbourOf(g, d, below, blocks);
+          Value twice = arith::ShLIOp::create(b, b.loc, levelAt(h), one);
+          finest = b.select(valid, b.min(finest, twice), finest);
+        }
+        scf::YieldOp::create(b, b.loc, finest);
+        b.setInsertionPointAfter(loop);
+        bound = loop.getResult(0);
+      }
+      b.store(bound, levels, at(g));
+      return b.cmp(arith::CmpIPredicate::slt, bound, own);
+    };
+    auto sweeps = scf::WhileOp::create(
+        b, b.loc, b.getI1Type(), ValueRange{b.constant(b.getI1Type(), 1)});
+    {
+      OpBuilder::InsertionGuard guard(b);
+      Block *before =
+          b.createBlock(&sweeps.getBefore(), {}, b.getI1Type(), b.loc);
+      scf::ConditionOp::create(b, b.loc, before->getArgument(0),
+                               before->getArguments());
+      b.createBlock(&sweeps.getAfter(), {}, b.getI1Type(), b.loc);
+      Value changed = b.constant(b.getI1Type(), 0);
+      for (bool forward : {true, false}) {
+        auto pass = scf::ForOp::create(b, b.loc, zero, blocks, one,
+                                       ValueRange{changed});
+        OpBuilder::InsertionGuard inner(b);
+        b.setInsertionPointToStart(pass.getBody());
+        Value k = pass.getInductionVar();
+        Value g = forward ? k : b.sub(b.sub(blocks, one), k);
+        Value any =
+            arith::OrIOp::create(b, b.loc, pass.getRegionIterArg(0), relax(g));
+        scf::YieldOp::create(b, b.loc, any);
+        b.setInsertionPointAfter(pass);
+        changed = pass.getResult(0);
+      }
+      scf::YieldOp::create(b, b.loc, changed);
+    }
+    auto finest =
+        scf::ForOp::create(b, b.loc, zero, blocks, one, ValueRange{size});
+    {
+      OpBuilder::InsertionGuard guard(b);
+      b.setInsertionPointToStart(finest.getBody());
+      Value g = finest.getInductionVar();
+      codesOfBlock(kernel, levels, size, g, levelAt);
+      scf::YieldOp::create(b, b.loc,
+                           b.min(finest.getRegionIterArg(0), levelAt(g)));
+    }
+    b.store(finest.getResult(0), kernel.clock, b.index(sub + kSubSize));
+    runEnds(kernel, levels, kLevelStepCodes, kLevelStepRuns);
+    if (fluxWriter)
+      runEnds(kernel, levels, kLevelFluxCodes, kLevelFluxRuns);
+  };
+
   // limit_levels_C: every block's sub-step, no more than twice as coarse
-  // as a neighbour, one lane per block, and the finest of them by an
-  // atomic minimum from m, which levels_C set (the sub-step clock's Size:
-  // the distance between slots where some block starts one).
+  // as a neighbour; the finest of them (the sub-step clock's Size: the
+  // distance between slots where some block starts one); and each block's
+  // neighbourhood codes. Where lanes run side by side (a GPU) one lane per
+  // block, the finest by an atomic minimum from m (which levels_C set) and
+  // the codes from the neighbours' sub-steps, which the lane computes again
+  // (a few window minima) rather than wait for their lanes in a launch of
+  // its own. Else one pass by one lane, which also finds where each run of
+  // equal codes ends (limitInOnePass).
   {
     Kernel kernel = beginKernel(getKernelName(kernels, "limit_levels", name));
     Value begin, size, parity;
     readClock(kernel, begin, size, parity);
     Value levels = kernel.levels.lookup(symbol);
-    b.ifThen(b.cmp(arith::CmpIPredicate::sgt, size, b.i64(0)), [&] {
-      forEachBlockOfLanes(kernel, [&](Value g) {
-        Value level = limitBlock(kernel, levels, parity, size, g);
-        b.atomic(arith::AtomicRMWKind::mins, level, kernel.clock,
-                 b.index(sub + kSubSize));
+    Value running = b.cmp(arith::CmpIPredicate::sgt, size, b.i64(0));
+    if (target.limitsLevelsPerLane()) {
+      b.ifThen(running, [&] {
+        forEachBlockOfLanes(kernel, [&](Value g) {
+          Value level = limitBlock(kernel, levels, parity, size, g);
+          b.atomic(arith::AtomicRMWKind::mins, level, kernel.clock,
+                   b.index(sub + kSubSize));
+          codesOfBlock(kernel, levels, size, g, [&](Value h) {
+            return b.select(b.cmp(arith::CmpIPredicate::eq, h, g), level,
+                            limitedLevel(kernel, levels, parity, size, h));
+          });
+        });
       });
-    });
+      if (target.splitsGroups())
+        b.ifThen(running, [&] {
+          target.afterLastInvocation(b, kernel, sub + kSubCount, [&] {
+            runEnds(kernel, levels, kLevelStepCodes, kLevelStepRuns);
+            if (fluxWriter)
+              runEnds(kernel, levels, kLevelFluxCodes, kLevelFluxRuns);
+          });
+        });
+    } else {
+      // The lane of block 0 takes every block (a launch with the same
+      // arguments as the GPU's: the plan is one for both).
+      b.ifThen(running, [&] {
+        forEachBlockOfLanes(kernel, [&](Value g) {
+          b.ifThen(b.cmp(arith::CmpIPredicate::eq, g, b.i64(0)),
+                   [&] { limitInOnePass(kernel, levels, parity, size); });
+        });
+      });
+    }
     // Distributed plans: every rank limits the levels of the whole range,
     // from the codes of all ranks' items: their maximum, as levels_C's
     // atomics take it on one process.
     if (distributed)
       pendingReduceLevels.push_back(FlatSymbolRefAttr::get(symbol));
-    if (failed(endKernel(kernel, simplan::LaunchShape::items, launches)))
-      return failure();
-  }
-  // level_codes_C: every block's neighbourhood codes from the sub-steps,
-  // one lane per block; where one thread runs a group's lanes (a CPU,
-  // whose slot kernels walk runs of equal codes), the invocation that
-  // finishes last then finds where each run ends, in one pass.
-  {
-    Kernel kernel = beginKernel(getKernelName(kernels, "level_codes", name));
-    Value begin, size, parity;
-    readClock(kernel, begin, size, parity);
-    Value levels = kernel.levels.lookup(symbol);
-    Value running = b.cmp(arith::CmpIPredicate::sgt, size, b.i64(0));
-    b.ifThen(running, [&] {
-      forEachBlockOfLanes(
-          kernel, [&](Value g) { codesOfBlock(kernel, levels, size, g); });
-    });
-    if (target.splitsGroups())
-      b.ifThen(running, [&] {
-        target.afterLastInvocation(b, kernel, sub + kSubCount, [&] {
-          runEnds(kernel, levels, kLevelStepCodes, kLevelStepRuns);
-          if (fluxWriter)
-            runEnds(kernel, levels, kLevelFluxCodes, kLevelFluxRuns);
-        });
-      });
     if (failed(endKernel(kernel, simplan::LaunchShape::items, launches)))
       return failure();
   }

@@ -31,6 +31,15 @@ namespace {
 
 class CPUKernelTarget : public KernelTarget {
 public:
+  /// --sim-lower-to-cpu=levels-per-lane: the GPU's way of limiting lts
+  /// levels, so that tests run it.
+  explicit CPUKernelTarget(bool levelsPerLane) : levelsPerLane(levelsPerLane) {}
+  bool limitsLevelsPerLane() const override { return levelsPerLane; }
+
+private:
+  bool levelsPerLane;
+
+public:
   Operation *createContainer(OpBuilder &b, Location loc,
                              StringRef name) override {
     auto module = ModuleOp::create(b, loc, name);
@@ -291,7 +300,7 @@ struct SimLowerToCPUPass
                          << static_cast<int64_t>(groupSize);
       return signalPassFailure();
     }
-    CPUKernelTarget target;
+    CPUKernelTarget target(levelsPerLane);
     SmallVector<SimulationOp> simulations(module.getOps<SimulationOp>());
     for (SimulationOp simulation : simulations)
       if (failed(lowerSimulation(simulation, target, groupSize)))

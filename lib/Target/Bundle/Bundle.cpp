@@ -837,6 +837,7 @@ public:
       PassManager pm(context, ModuleOp::getOperationName());
       SimLowerToCPUOptions lowering;
       lowering.groupSize = options.groupSize;
+      lowering.levelsPerLane = options.cpuLevelsPerLane;
       pm.addPass(createSimLowerToCPU(lowering));
       if (failed(runPipeline(pm, *cpu)))
         return failure();

@@ -55,6 +55,7 @@ void mlir::sim::registerToBundleTranslation() {
         options.target = flags.getGPUTarget();
         options.flushSubnormals = flags.ftz;
         options.distributed = flags.distributed;
+        options.cpuLevelsPerLane = flags.cpuLevelsPerLane;
         if (!flags.cpuIsas.empty())
           options.cpuIsas.assign(flags.cpuIsas.begin(), flags.cpuIsas.end());
         return writeBundle(*module, options, os);

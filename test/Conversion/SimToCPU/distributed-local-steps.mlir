@@ -56,14 +56,13 @@ sim.simulation @rod range(100) dt(1.0e-2 : f32) max_steps(4) {
 // CHECK:         %[[AFTER:.*]] = arith.addi %[[BEFORE]], %[[MINE]] : i64
 // CHECK:         arith.cmpi eq, %[[AFTER]], %[[TOTAL]] : i64
 
-// The plan: the all-reduce of the levels before limit_levels_Rod (which,
-// like level_codes_Rod, every rank runs over the blocks of the whole
-// range, spread over the lanes of its block), the exchange of @U after
+// The plan: the all-reduce of the levels before limit_levels_Rod (which
+// every rank runs over the blocks of the whole range, spread over the
+// lanes of its block), the exchange of @U after
 // every slot launch and after the parity copy.
 // CHECK-LABEL: simplan.plan
 // CHECK:       simplan.launch @rod_kernels::@levels_Rod items [#simplan.arg<clock>, #simplan.arg<levels @Rod>, #simplan.arg<range>, #simplan.arg<first>]{{$}}
 // CHECK-NEXT:  simplan.launch @rod_kernels::@limit_levels_Rod items [#simplan.arg<clock>, #simplan.arg<levels @Rod>, #simplan.arg<range>, #simplan.arg<first>, #simplan.arg<extent>] reduce_max_levels [@Rod]
-// CHECK-NEXT:  simplan.launch @rod_kernels::@level_codes_Rod items [#simplan.arg<clock>, #simplan.arg<levels @Rod>, #simplan.arg<range>, #simplan.arg<first>, #simplan.arg<extent>]{{$}}
 // CHECK-NEXT:  simplan.repeat 4 {
 // CHECK-NEXT:    simplan.launch @rod_kernels::@local_step_Rod items [#simplan.arg<clock>, #simplan.arg<buffer @U>, #simplan.arg<levels @Rod>, #simplan.arg<range>, #simplan.arg<first>, #simplan.arg<extent>] for @Rod exchange [@U]
 // CHECK-NEXT:  }
@@ -84,5 +83,5 @@ sim.simulation @rod range(100) dt(1.0e-2 : f32) max_steps(4) {
 // GPU:         memref.atomic_rmw addi %[[MINE]]
 // GPU-LABEL: simplan.plan
 // GPU:         simplan.launch @rod_kernels::@limit_levels_Rod items [#simplan.arg<clock>, #simplan.arg<levels @Rod>, #simplan.arg<range>, #simplan.arg<first>, #simplan.arg<extent>] reduce_max_levels [@Rod]
-// GPU-NEXT:    simplan.launch @rod_kernels::@level_codes_Rod items
+// GPU-NEXT:    simplan.repeat
 // GPU:         simplan.launch @rod_kernels::@local_step_Rod items [#simplan.arg<clock>, #simplan.arg<buffer @U>, #simplan.arg<levels @Rod>, #simplan.arg<range>, #simplan.arg<first>, #simplan.arg<extent>] for @Rod exchange [@U]

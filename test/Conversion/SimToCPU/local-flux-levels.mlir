@@ -86,9 +86,9 @@ sim.simulation @rod range(100) dt(1.0e-2 : f32) max_steps(8) {
 // sub-step among its interfaces (each that of its coarsest reader, j and
 // j + 1 here), not at that of the finest block its interfaces reach: the
 // interfaces whose readers all lie in the block take its own, those at its
-// two ends are folded over their readers (level_codes_C, one lane per
+// two ends are folded over their readers (limit_levels_C, one lane per
 // block).
-// CHECK-LABEL: func.func @level_codes_Cells(
+// CHECK-LABEL: func.func @limit_levels_Cells(
 // CHECK:         scf.if
 // CHECK:         } else {
 // CHECK:           scf.for

@@ -159,6 +159,12 @@ public:
   /// has one sub-step) rather than for the whole group; where lanes run
   /// side by side (a GPU) a part is the whole group.
   virtual bool splitsGroups() const { return false; }
+  /// Whether limit_levels_C (lts) limits each block's sub-step in a lane of
+  /// its own (a window minimum per block, all at once: a GPU) or in one
+  /// pass over the blocks by one lane (sweeps to
+  /// the same fixpoint: a CPU, where a pass costs less than the lanes'
+  /// repeated window minima). Both give the same sub-steps and codes.
+  virtual bool limitsLevelsPerLane() const { return !splitsGroups(); }
   /// Runs `body(begin, end)` for spans of the items of consecutive groups
   /// this invocation handles, in order, `end` at most the range: where one
   /// thread runs its groups one after another (a CPU, splitsGroups), one

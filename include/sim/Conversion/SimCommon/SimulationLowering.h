@@ -12,8 +12,8 @@
 //   SubStepKernels.cpp       substep_C: group sub-steps in one kernel
 //   GridSubStepKernels.cpp   snapshot_B, the rounds of grid-wide sub-steps,
 //                            parity_C
-//   LocalStepKernels.cpp     levels_C, limit_levels_C, level_codes_C, the
-//                            slots of local time steps, local_parity_C
+//   LocalStepKernels.cpp     levels_C, limit_levels_C, the slots of local
+//                            time steps, local_parity_C
 //
 // Everything here decides *how* to run what the front end recorded: the
 // strategy, the schedule, how each component advances (`advance`,
