@@ -660,8 +660,9 @@ LogicalResult SimulationLowering::emitLocalSteps(ComponentOp component,
   // the blocks within radius * ceil(log2 max_steps) count: a window
   // minimum per block, which every block computes on its own, at once
   // where lanes run side by side, instead of sweeping to a fixpoint in one
-  // thread. The reference executor sweeps (runtime/src/Reference.cpp); the
-  // two agree because the largest such assignment is unique.
+  // thread. A CPU sweeps (limitInOnePass below), as the reference executor
+  // does (runtime/src/Reference.cpp); all agree because the largest such
+  // assignment is unique.
   int64_t hops = radius == 0 ? 0 : int64_t(llvm::Log2_64_Ceil(maxSteps));
   auto toI64 = [&](Value index) {
     return arith::IndexCastOp::create(b, b.loc, b.getI64Type(), index)
