@@ -689,17 +689,32 @@ LogicalResult SimulationLowering::emitLocalSteps(ComponentOp component,
         b.cmp(arith::CmpIPredicate::slt, h, blocks));
     return {b.min(b.max(h, zero), b.sub(blocks, one)), valid};
   };
+  // Block h's own power of two, from the code levels_C left in half
+  // `parity` (i64 values). A code of 0 (a block no item of this process
+  // wrote: another rank's, when the host did not all-reduce the codes
+  // because the big step is 1) decodes to the big step, which every code
+  // is within.
+  auto decodedLevel = [&](Kernel &kernel, Value levels, Value parity,
+                          Value size, Value h) {
+    Value codes = b.mul(parity, toI64(blocksOf(kernel)));
+    Value code = b.load(levels, b.toIndex(b.add(codes, h)));
+    return b.floorPowerOfTwo(b.min(b.sub(b.i64(kLevelCode), code), size));
+  };
+  // Block g's sub-step into section kLevelSteps, and its code in half
+  // 1 - parity, the previous big step's, cleared for the next (0 is the
+  // identity of the codes).
+  auto storeLevel = [&](Kernel &kernel, Value levels, Value parity, Value g,
+                        Value level) {
+    b.store(level, levels, b.add(stepsOf(kernel), b.toIndex(g)));
+    Value other = b.mul(b.toIndex(b.xorOne(parity)), blocksOf(kernel));
+    b.store(b.i64(0), levels, b.add(other, b.toIndex(g)));
+  };
   auto limitedLevel = [&](Kernel &kernel, Value levels, Value parity,
                           Value size, Value g) -> Value {
     Value one = b.i64(1);
     Value blocks = toI64(blocksOf(kernel));
-    Value codes = b.mul(parity, blocks);
-    // A code of 0 (a block no item of this process wrote: another rank's,
-    // when the host did not all-reduce the codes because the big step is
-    // 1) decodes to the big step, which every code is within.
     auto decode = [&](Value h) {
-      Value code = b.load(levels, b.toIndex(b.add(codes, h)));
-      return b.floorPowerOfTwo(b.min(b.sub(b.i64(kLevelCode), code), size));
+      return decodedLevel(kernel, levels, parity, size, h);
     };
     Value level = decode(g);
     if (hops == 0)
@@ -728,15 +743,11 @@ LogicalResult SimulationLowering::emitLocalSteps(ComponentOp component,
     scf::YieldOp::create(b, b.loc, inner.getResult(0));
     return outer.getResult(0);
   };
-  // Block g's sub-step into section kLevelSteps, and half 1 - parity,
-  // the previous big step's codes, cleared for the next (0 is the
-  // identity of the codes). Returns the sub-step.
+  // Block g's limited sub-step, stored (storeLevel) and returned.
   auto limitBlock = [&](Kernel &kernel, Value levels, Value parity, Value size,
                         Value g) {
     Value level = limitedLevel(kernel, levels, parity, size, g);
-    b.store(level, levels, b.add(stepsOf(kernel), b.toIndex(g)));
-    Value other = b.mul(b.toIndex(b.xorOne(parity)), blocksOf(kernel));
-    b.store(b.i64(0), levels, b.add(other, b.toIndex(g)));
+    storeLevel(kernel, levels, parity, g, level);
     return level;
   };
   // Runs `body(g)` (i64) for every block of the range, spread over the
@@ -934,16 +945,12 @@ LogicalResult SimulationLowering::emitLocalSteps(ComponentOp component,
     auto at = [&](Value block) { return b.toIndex(b.add(steps, block)); };
     auto levelAt = [&](Value block) { return b.load(levels, at(block)); };
     {
-      Value codes = b.mul(parity, blocks);
-      Value other = b.mul(b.xorOne(parity), blocks);
       auto decode = scf::ForOp::create(b, b.loc, zero, blocks, one);
       OpBuilder::InsertionGuard guard(b);
       b.setInsertionPoint(decode.getBody()->getTerminator());
       Value k = decode.getInductionVar();
-      Value code = b.load(levels, b.toIndex(b.add(codes, k)));
-      b.store(b.floorPowerOfTwo(b.min(b.sub(b.i64(kLevelCode), code), size)),
-              levels, at(k));
-      b.store(zero, levels, b.toIndex(b.add(other, k)));
+      storeLevel(kernel, levels, parity, k,
+                 decodedLevel(kernel, levels, parity, size, k));
     }
     // Lowers block `g` to twice its finest neighbour; returns whether it
     // changed.
