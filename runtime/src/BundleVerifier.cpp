@@ -469,10 +469,12 @@ private:
         (!launch.reduce_min.empty() || !launch.exchange.empty() ||
          !launch.exchange_targets.empty() ||
          !launch.exchange_sub_step.empty() ||
+         !launch.exchange_local_step.empty() ||
          !launch.reduce_max_levels.empty()))
       bad(about + " has " +
           (launch.exchange.empty() && launch.exchange_targets.empty() &&
-                   launch.exchange_sub_step.empty()
+                   launch.exchange_sub_step.empty() &&
+                   launch.exchange_local_step.empty()
                ? "all-reduces"
                : "exchanges") +
           ", but the plan is not distributed");
@@ -531,6 +533,30 @@ private:
       if (!exchanged.insert({b, false}).second)
         bad(about + " exchanges buffer " + quoted(bufferName(b)) + " twice");
     }
+    if (!launch.exchange_local_step.empty()) {
+      // The runtime reads the slot from the component's sub-step clock
+      // (a repeat's) and the blocks' sub-steps from its levels.
+      bool localSteps = launch.component >= 0 &&
+                        size_t(launch.component) < plan.components.size() &&
+                        plan.components[size_t(launch.component)]->advance ==
+                            Advance::LocalSteps;
+      bool passesLevels = std::any_of(
+          launch.args.begin(), launch.args.end(), [&](const schema::Arg &a) {
+            return a.kind() == ArgKind::Levels &&
+                   int64_t(a.index()) == int64_t(launch.component);
+          });
+      if (!localSteps || !passesLevels || !insideRepeat)
+        bad(about +
+            " exchanges the blocks a slot wrote, but it is not a slot launch "
+            "(in a repeat) of a component that takes local time steps, "
+            "passing its levels (which say which blocks and halves)");
+    }
+    for (uint32_t b : launch.exchange_local_step) {
+      checkIndex(b, plan.buffers.size(),
+                 about + ": a buffer whose slot's blocks it exchanges");
+      if (!exchanged.insert({b, false}).second)
+        bad(about + " exchanges buffer " + quoted(bufferName(b)) + " twice");
+    }
   }
 
   /// Verifies `steps` and counts the launches they unroll to into `count`.
@@ -550,7 +576,10 @@ private:
         if (inner > uint64_t(kMaxPhaseLaunches))
           bad(where + " repeats its launches more than " +
               std::to_string(kMaxPhaseLaunches) + " times");
+        bool outer = insideRepeat;
+        insideRepeat = true;
         verifySteps(step->repeat->body, where, inner, count);
+        insideRepeat = outer;
       }
       if (count > uint64_t(kMaxPhaseLaunches))
         bad(where + " unrolls to more than " +
@@ -595,6 +624,8 @@ private:
   const schema::PlanT &plan;
   std::string what;
   std::set<uint64_t> claimed;
+  /// Whether verifySteps is inside a repeat (a slot or a round).
+  bool insideRepeat = false;
 };
 
 //===----------------------------------------------------------------------===//

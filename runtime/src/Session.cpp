@@ -270,6 +270,7 @@ void Session::releaseAll() {
   }
   clock.clear();
   ghostCache.clear();
+  slotSelections.clear();
   allocated = initialized = prepared = false;
 }
 
@@ -394,6 +395,12 @@ Session::Prepared Session::prepareLaunch(const schema::LaunchT &launch) {
     for (uint32_t buffer : launch.exchange_sub_step) {
       p.exchanges.push_back(refreshOf(buffer, false));
       p.exchanges.back().half = GhostRefresh::Half::SubStep;
+    }
+    for (uint32_t buffer : launch.exchange_local_step) {
+      p.exchanges.push_back(refreshOf(buffer, false));
+      // A replicated buffer travels whole (an all-gather of both halves).
+      if (!p.exchanges.back().replicated)
+        p.exchanges.back().half = GhostRefresh::Half::LocalStep;
     }
   }
   return p;
@@ -767,6 +774,7 @@ void Session::run(int64_t steps, int64_t pause) {
 
 void Session::layout() {
   ghostCache.clear();
+  slotSelections.clear();
   if (!distributed()) {
     first = 0;
     count = extent = settings.range;
@@ -856,7 +864,7 @@ void Session::refreshGhosts(const std::vector<GhostRefresh> &refreshes,
 }
 
 void Session::beginGhosts(const std::vector<GhostRefresh> &refreshes,
-                          bool counted) {
+                          bool counted, std::optional<size_t> entries) {
   endGhosts();
   // Ghost items move through the backend's reads and writes (runs of
   // consecutive elements each), which wait for the launches before them:
@@ -865,7 +873,7 @@ void Session::beginGhosts(const std::vector<GhostRefresh> &refreshes,
   // alike). Replicated buffers are all-gathered at once.
   PendingGhosts &p = pendingGhosts;
   p.counted = counted;
-  p.entries = refreshes.size();
+  p.entries = entries.value_or(refreshes.size());
   p.bytes = gatherReplicated(refreshes);
   p.ghosts.clear();
   for (const GhostRefresh &r : refreshes)
@@ -1122,6 +1130,13 @@ void Session::launchDistributed(Prepared &p, bool counted, bool step) {
   // takes). Every rank holds the same sub-step clock, so all skip alike.
   if (noOpLaunch(p))
     return;
+  // A slot launch whose blocks' items travel (exchange_local_step): its
+  // slot, the sub-step clock's Begin less T, before the launch moves it on.
+  int64_t slot = -1;
+  if (!p.launch->exchange_local_step.empty()) {
+    SubStepTimes t = subStepTimes(int(p.launch->component));
+    slot = t.subBegin - t.begin;
+  }
   const std::vector<uint32_t> &slots = p.launch->reduce_min;
   // A round's estimate decides nothing once its component has at most one
   // base step of the big step left (the next sub-step is then 1 or none):
@@ -1198,15 +1213,130 @@ void Session::launchDistributed(Prepared &p, bool counted, bool step) {
                   sizeof done);
     written = 1 - (parity ^ (done & 1));
   }
-  std::vector<GhostRefresh> refreshes = p.exchanges;
-  for (GhostRefresh &r : refreshes) {
-    if (r.half == GhostRefresh::Half::Both)
+  // The lists of a slot's refreshes are refilled below: the exchange that
+  // still uses them ends first.
+  endGhosts();
+  std::vector<GhostRefresh> refreshes;
+  size_t entries = 0;
+  for (const GhostRefresh &entry : p.exchanges) {
+    if (entry.half == GhostRefresh::Half::LocalStep) {
+      // Counted where items of the blocks the slot started travel.
+      entries += slotRefreshes(entry, int(p.launch->component), slot, parity,
+                               refreshes);
       continue;
-    r.base = r.element(
-        int(r.half == GhostRefresh::Half::Target ? 1 - parity : written), 0);
-    r.halves = 1;
+    }
+    ++entries;
+    GhostRefresh r = entry;
+    if (r.half != GhostRefresh::Half::Both) {
+      r.base = r.element(
+          int(r.half == GhostRefresh::Half::Target ? 1 - parity : written), 0);
+      r.halves = 1;
+    }
+    refreshes.push_back(r);
   }
-  beginGhosts(refreshes, counted);
+  beginGhosts(refreshes, counted, entries);
+}
+
+bool Session::slotRefreshes(const GhostRefresh &r, int component, int64_t slot,
+                            int64_t parity, std::vector<GhostRefresh> &out) {
+  // Every rank holds every block's sub-step of the big step
+  // (limit_levels_C limits the whole range on each), so sender and
+  // receiver select the same items, in the order the lists have.
+  const int64_t blockItems = int64_t(schema::LocalStepBlock::Items);
+  auto [found, fresh] = slotSelections.try_emplace({r.lists, r.buffer});
+  SlotSelection &selection = found->second;
+  size_t ranks = r.lists->send.size();
+  if (fresh) {
+    // Which block each element's item lies in: its own item, or the
+    // source item of a ghost this rank receives.
+    Boundary boundary = sceneBuffer(r.buffer).boundary;
+    auto ownBlock = [&](int64_t e) { return (first - halo + e) / blockItems; };
+    auto sourceBlock = [&](int64_t e) {
+      return ghostSource(first - halo + e, settings.range, boundary) /
+             blockItems;
+    };
+    std::map<int64_t, uint32_t> indexOf;
+    for (const std::vector<int64_t> &list : r.lists->send)
+      for (int64_t e : list)
+        indexOf.try_emplace(ownBlock(e));
+    for (const std::vector<int64_t> &list : r.lists->recv)
+      for (int64_t e : list)
+        indexOf.try_emplace(sourceBlock(e));
+    for (auto [from, to] : r.lists->local)
+      indexOf.try_emplace(ownBlock(from));
+    for (auto &[block, index] : indexOf) {
+      index = uint32_t(selection.blocks.size());
+      selection.blocks.push_back(block);
+    }
+    selection.sendBlock.resize(ranks);
+    selection.recvBlock.resize(ranks);
+    for (size_t peer = 0; peer < ranks; ++peer) {
+      for (int64_t e : r.lists->send[peer])
+        selection.sendBlock[peer].push_back(indexOf.at(ownBlock(e)));
+      for (int64_t e : r.lists->recv[peer])
+        selection.recvBlock[peer].push_back(indexOf.at(sourceBlock(e)));
+    }
+    for (auto [from, to] : r.lists->local)
+      selection.localBlock.push_back(indexOf.at(ownBlock(from)));
+    for (GhostLists &lists : selection.selected) {
+      lists.send.resize(ranks);
+      lists.recv.resize(ranks);
+    }
+  }
+  // The half each block wrote at the slot, or -1 when it did not start a
+  // sub-step there.
+  const int64_t blocks = (settings.range + blockItems - 1) / blockItems;
+  DevicePtr steps =
+      levels[size_t(component)].pointer +
+      DevicePtr(int64_t(schema::LocalStepLevels::Steps) * blocks) *
+          sizeof(int64_t);
+  selection.halfOfBlock.assign(selection.blocks.size(), -1);
+  for (size_t i = 0; i < selection.blocks.size(); ++i) {
+    int64_t step = 0;
+    backend->read(&step,
+                  steps + DevicePtr(selection.blocks[i]) * sizeof(int64_t),
+                  sizeof step);
+    if (step < 1 || (step & (step - 1)) != 0)
+      fail(SIM_ERROR_CLOCK,
+           "block " + std::to_string(selection.blocks[i]) + " of component '" +
+               plan_->components[size_t(component)]->name +
+               "' has the sub-step " + std::to_string(step) +
+               ", not a power of two, at slot " + std::to_string(slot));
+    if (slot % step == 0)
+      selection.halfOfBlock[i] = int(1 - (parity ^ ((slot / step) & 1)));
+  }
+  bool any = false;
+  for (int h = 0; h < 2; ++h) {
+    GhostLists &lists = selection.selected[h];
+    bool some = false;
+    auto select = [&](const std::vector<int64_t> &all,
+                      const std::vector<uint32_t> &blockOf,
+                      std::vector<int64_t> &into) {
+      into.clear();
+      for (size_t k = 0; k < all.size(); ++k)
+        if (selection.halfOfBlock[blockOf[k]] == h)
+          into.push_back(all[k]);
+      some = some || !into.empty();
+    };
+    for (size_t peer = 0; peer < ranks; ++peer) {
+      select(r.lists->send[peer], selection.sendBlock[peer], lists.send[peer]);
+      select(r.lists->recv[peer], selection.recvBlock[peer], lists.recv[peer]);
+    }
+    lists.local.clear();
+    for (size_t k = 0; k < r.lists->local.size(); ++k)
+      if (selection.halfOfBlock[selection.localBlock[k]] == h)
+        lists.local.push_back(r.lists->local[k]);
+    some = some || !lists.local.empty();
+    if (!some)
+      continue;
+    GhostRefresh one = r;
+    one.base = r.element(h, 0);
+    one.halves = 1;
+    one.lists = &lists;
+    out.push_back(one);
+    any = true;
+  }
+  return any;
 }
 
 void Session::gatherItems(DevicePtr array, int64_t own, size_t stride,

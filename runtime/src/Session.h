@@ -20,6 +20,7 @@
 
 #include <map>
 #include <memory>
+#include <optional>
 #include <string>
 #include <tuple>
 #include <vector>
@@ -117,10 +118,13 @@ private:
     /// The plan buffer.
     size_t buffer;
     /// Which half travels: both, only the target half (1 - parity,
-    /// `exchange_targets`) or only the half the launch's grid-wide sub-step
-    /// wrote (`exchange_sub_step`); launchDistributed points a copy's
-    /// `base` at the one half and gives it `halves` 1.
-    enum class Half { Both, Target, SubStep } half = Half::Both;
+    /// `exchange_targets`), only the half the launch's grid-wide sub-step
+    /// wrote (`exchange_sub_step`), or only the items of the blocks a local
+    /// time step's slot started, in the halves they wrote
+    /// (`exchange_local_step`); launchDistributed points a copy's `base`
+    /// at one half and gives it `halves` 1 (and, for a slot, `lists` of
+    /// the items of that half).
+    enum class Half { Both, Target, SubStep, LocalStep } half = Half::Both;
     /// Where element `e` of half `half` lies.
     DevicePtr element(int half, int64_t e) const {
       return base + DevicePtr(half * elements + e) * stride;
@@ -203,8 +207,17 @@ private:
   /// refreshGhosts in two halves: beginGhosts sends the ghost items (after
   /// ending the exchange under way, if any), endGhosts waits for them and
   /// puts them in place; the launches between compute what needs none.
-  void beginGhosts(const std::vector<GhostRefresh> &refreshes, bool counted);
+  /// `entries` is what the exchange counts (default: one per refresh).
+  void beginGhosts(const std::vector<GhostRefresh> &refreshes, bool counted,
+                   std::optional<size_t> entries = std::nullopt);
   void endGhosts();
+  /// Of a `local_steps` component's buffer `r` (Half::LocalStep), after
+  /// the launch of slot `slot`: the refreshes of the items of the blocks
+  /// that started a sub-step at the slot, one per half they wrote
+  /// (appended to `out`, their lists in `slotSelections`); whether any
+  /// item travels to, from or within this rank.
+  bool slotRefreshes(const GhostRefresh &r, int component, int64_t slot,
+                     int64_t parity, std::vector<GhostRefresh> &out);
   /// Launches `p` while the exchange under way travels: its groups whose
   /// items' windows stay inside the block first, then (the ghost items in
   /// place) the others; or, where that cannot be, after the exchange.
@@ -280,6 +293,19 @@ private:
   std::unique_ptr<Decomposition> decomposition;
   /// Per (below, above, boundary): the ghost lists of the decomposition.
   std::map<std::tuple<uint32_t, uint32_t, int>, GhostLists> ghostCache;
+  /// Per (ghost lists, plan buffer) of a slot's exchange: the level
+  /// blocks its elements' items lie in (each once, and per element its
+  /// index among them), and the lists of the items a slot selects in each
+  /// half, refilled per slot (slotRefreshes) and kept until the exchange
+  /// ends.
+  struct SlotSelection {
+    std::vector<int64_t> blocks;
+    std::vector<std::vector<uint32_t>> sendBlock, recvBlock;
+    std::vector<uint32_t> localBlock;
+    std::vector<int> halfOfBlock;
+    GhostLists selected[2];
+  };
+  std::map<std::pair<const GhostLists *, size_t>, SlotSelection> slotSelections;
   /// Host memory of the backend's allocateHost (page-locked on CUDA),
   /// grown as needed: per peer, what this rank sends and receives.
   class Staging {

@@ -590,6 +590,14 @@ TEST(Distributed, VerifierChecksTheRecords) {
   expectBad(std::move(contents),
             "exchanges the half a sub-step wrote, but it is not a launch of a "
             "component that takes grid-wide sub-steps");
+  // The blocks a slot wrote: only a local time step's slot launch, in a
+  // repeat, passing its component's levels, has them.
+  contents = ringContents(Boundary::Wrap);
+  contents.plans[0]->phases[1]->body[2]->launch->exchange.clear();
+  contents.plans[0]->phases[1]->body[2]->launch->exchange_local_step = {0};
+  expectBad(std::move(contents),
+            "exchanges the blocks a slot wrote, but it is not a slot launch "
+            "(in a repeat) of a component that takes local time steps");
 }
 
 /// mpirun -n N sim-run --distributed against sim-run on one process: the

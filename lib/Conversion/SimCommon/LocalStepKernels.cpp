@@ -1215,6 +1215,7 @@ LogicalResult SimulationLowering::emitLocalSteps(ComponentOp component,
         b.store(b.add(now, finest), kernel.clock, b.index(sub + kSubBegin));
       });
     });
+    pendingWrittenHalf = WrittenHalf::LocalStep;
     if (failed(endKernel(kernel, simplan::LaunchShape::items, slotLaunches,
                          component)))
       return failure();
@@ -1262,5 +1263,8 @@ LogicalResult SimulationLowering::emitLocalSteps(ComponentOp component,
           });
         });
   });
+  // It writes the target half only; the source half travelled with the
+  // slot that wrote it.
+  pendingWrittenHalf = WrittenHalf::Target;
   return endKernel(kernel, simplan::LaunchShape::items, launches, component);
 }

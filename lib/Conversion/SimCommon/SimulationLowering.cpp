@@ -272,9 +272,10 @@ LogicalResult SimulationLowering::endKernel(Kernel &kernel,
   // target half only (the source half holds T for its readers), and so
   // does a parity copy: only that half's ghosts travel. A grid-wide
   // sub-step writes the half its sub-step count selects, and only that one
-  // travels; local time levels write either half, block by block, so both
-  // travel.
-  SmallVector<Attribute> exchangeTargets, exchangeSubStep;
+  // travels; a local time step's slot writes the blocks that start a
+  // sub-step at it, each into the half its sub-step count selects, and
+  // only those travel.
+  SmallVector<Attribute> exchangeTargets, exchangeSubStep, exchangeLocalStep;
   WrittenHalf written = pendingWrittenHalf;
   pendingWrittenHalf = WrittenHalf::Advance;
   if (distributed && component) {
@@ -286,6 +287,8 @@ LogicalResult SimulationLowering::endKernel(Kernel &kernel,
       list = &exchangeTargets;
     else if (written == WrittenHalf::SubStep)
       list = &exchangeSubStep;
+    else if (written == WrittenHalf::LocalStep)
+      list = &exchangeLocalStep;
     for (FlatSymbolRefAttr write :
          component.getWrites().getAsRange<FlatSymbolRefAttr>())
       if (travels(simulation.lookupBuffer(write)))
@@ -308,7 +311,9 @@ LogicalResult SimulationLowering::endKernel(Kernel &kernel,
       exchangeTargets.empty() ? ArrayAttr()
                               : launches.getArrayAttr(exchangeTargets),
       exchangeSubStep.empty() ? ArrayAttr()
-                              : launches.getArrayAttr(exchangeSubStep));
+                              : launches.getArrayAttr(exchangeSubStep),
+      exchangeLocalStep.empty() ? ArrayAttr()
+                                : launches.getArrayAttr(exchangeLocalStep));
   return success();
 }
 

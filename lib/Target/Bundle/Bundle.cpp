@@ -491,8 +491,9 @@ PlanReader::readLaunch(simplan::LaunchOp launch) {
     for (int64_t slot : *slots)
       record->reduce_min.push_back(uint32_t(slot));
   // Where a buffer's ghost items travel: both halves (or its snapshot),
-  // the target half, or the half the sub-step wrote.
-  enum class Half { Both, Target, SubStep };
+  // the target half, the half the sub-step wrote, or the blocks a local
+  // time step's slot started in the halves they wrote.
+  enum class Half { Both, Target, SubStep, LocalStep };
   auto exchange = [&](ArrayAttr names, bool snapshot,
                       Half half = Half::Both) -> LogicalResult {
     if (!names)
@@ -506,6 +507,8 @@ PlanReader::readLaunch(simplan::LaunchOp launch) {
         record->exchange_targets.push_back(found->second);
       else if (half == Half::SubStep)
         record->exchange_sub_step.push_back(found->second);
+      else if (half == Half::LocalStep)
+        record->exchange_local_step.push_back(found->second);
       else
         record->exchange.emplace_back(found->second, snapshot);
     }
@@ -514,7 +517,9 @@ PlanReader::readLaunch(simplan::LaunchOp launch) {
   if (failed(exchange(launch.getExchangeAttr(), false)) ||
       failed(exchange(launch.getExchangeSnapshotsAttr(), true)) ||
       failed(exchange(launch.getExchangeTargetsAttr(), false, Half::Target)) ||
-      failed(exchange(launch.getExchangeSubStepAttr(), false, Half::SubStep)))
+      failed(exchange(launch.getExchangeSubStepAttr(), false, Half::SubStep)) ||
+      failed(exchange(launch.getExchangeLocalStepAttr(), false,
+                      Half::LocalStep)))
     return failure();
   if (ArrayAttr names = launch.getReduceMaxLevelsAttr())
     for (auto name : names.getAsRange<FlatSymbolRefAttr>()) {

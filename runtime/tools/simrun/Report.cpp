@@ -147,11 +147,13 @@ void printMetrics(const MainRun &main) {
                     formatBytes(main.memoryLimit) + ")");
   row("big steps", std::to_string(metrics.big_steps));
   if (main.ranks > 0) {
-    // Rank 0's: every rank exchanges as often, its own bytes.
+    // Rank 0's: its exchanges and bytes (under lts a slot exchanges only
+    // where a block whose items cross the rank's boundary starts a
+    // sub-step, so ranks may differ).
     row("ranks", std::to_string(main.ranks));
     row("halo exchanges", std::to_string(metrics.halo_exchanges) + " (" +
                               formatBytes(metrics.exchanged_bytes) +
-                              " sent by rank 0)");
+                              " sent, rank 0's)");
     row("all-reduces", std::to_string(metrics.allreduces));
   }
   std::string sizes;

@@ -1,12 +1,14 @@
 // A plan for many processes under lts (--sim-front-end="strategy=lts
 // distributed=true"): every rank limits the levels of the whole range from
 // the maximum of all ranks' codes (reduce_max_levels on limit_levels_C),
-// the buffers of the local_steps component travel after every slot launch
-// and after local_parity_C, a read through the time levels of another
-// item finds it in the rank's block or its ghost items (item - first +
-// halo, clamped into the rank's storage), and the slot kernel's last
-// invocation counts the rank's items (extent - 2 * halo) on both targets,
-// which therefore take the same arguments.
+// the ghost items of the local_steps component's buffers travel after
+// every slot launch (those of the blocks that started a sub-step at the
+// slot, in the half each wrote) and after local_parity_C (the target
+// half), a read through the time levels of another item finds it in the
+// rank's block or its ghost items (item - first + halo, clamped into the
+// rank's storage), and the slot kernel's last invocation counts the
+// rank's items (extent - 2 * halo) on both targets, which therefore take
+// the same arguments.
 //
 // RUN: sim-opt %s --sim-front-end="strategy=lts distributed=true" --sim-lower-to-cpu | FileCheck %s
 // RUN: sim-opt %s --sim-front-end="strategy=lts distributed=true" --sim-lower-to-gpu | FileCheck %s --check-prefix=GPU
@@ -59,14 +61,15 @@ sim.simulation @rod range(100) dt(1.0e-2 : f32) max_steps(4) {
 // The plan: the all-reduce of the levels before limit_levels_Rod (which
 // every rank runs over the blocks of the whole range, spread over the
 // lanes of its block), the exchange of @U after
-// every slot launch and after the parity copy.
+// every slot launch (the blocks the slot started, exchange_local_step) and
+// after the parity copy (its target half).
 // CHECK-LABEL: simplan.plan
 // CHECK:       simplan.launch @rod_kernels::@levels_Rod items [#simplan.arg<clock>, #simplan.arg<levels @Rod>, #simplan.arg<range>, #simplan.arg<first>]{{$}}
 // CHECK-NEXT:  simplan.launch @rod_kernels::@limit_levels_Rod items [#simplan.arg<clock>, #simplan.arg<levels @Rod>, #simplan.arg<range>, #simplan.arg<first>, #simplan.arg<extent>] reduce_max_levels [@Rod]
 // CHECK-NEXT:  simplan.repeat 4 {
-// CHECK-NEXT:    simplan.launch @rod_kernels::@local_step_Rod items [#simplan.arg<clock>, #simplan.arg<buffer @U>, #simplan.arg<levels @Rod>, #simplan.arg<range>, #simplan.arg<first>, #simplan.arg<extent>] for @Rod exchange [@U]
+// CHECK-NEXT:    simplan.launch @rod_kernels::@local_step_Rod items [#simplan.arg<clock>, #simplan.arg<buffer @U>, #simplan.arg<levels @Rod>, #simplan.arg<range>, #simplan.arg<first>, #simplan.arg<extent>] for @Rod exchange_local_step [@U]
 // CHECK-NEXT:  }
-// CHECK-NEXT:  simplan.launch @rod_kernels::@local_parity_Rod items [{{.*}}] for @Rod exchange [@U]
+// CHECK-NEXT:  simplan.launch @rod_kernels::@local_parity_Rod items [{{.*}}] for @Rod exchange_targets [@U]
 
 // On the GPU a thread group counts its items of the rank's block (the
 // block's items from its base, at most the group size), so the kernels of
@@ -84,4 +87,4 @@ sim.simulation @rod range(100) dt(1.0e-2 : f32) max_steps(4) {
 // GPU-LABEL: simplan.plan
 // GPU:         simplan.launch @rod_kernels::@limit_levels_Rod items [#simplan.arg<clock>, #simplan.arg<levels @Rod>, #simplan.arg<range>, #simplan.arg<first>, #simplan.arg<extent>] reduce_max_levels [@Rod]
 // GPU-NEXT:    simplan.repeat
-// GPU:         simplan.launch @rod_kernels::@local_step_Rod items [#simplan.arg<clock>, #simplan.arg<buffer @U>, #simplan.arg<levels @Rod>, #simplan.arg<range>, #simplan.arg<first>, #simplan.arg<extent>] for @Rod exchange [@U]
+// GPU:         simplan.launch @rod_kernels::@local_step_Rod items [#simplan.arg<clock>, #simplan.arg<buffer @U>, #simplan.arg<levels @Rod>, #simplan.arg<range>, #simplan.arg<first>, #simplan.arg<extent>] for @Rod exchange_local_step [@U]

@@ -401,3 +401,42 @@ module attributes {gpu.container_module} {
     }
   }
 }
+
+// -----
+
+module attributes {gpu.container_module} {
+  simplan.plan @p strategy("lts") kernels(@k) range(4) dt(1.0e-2 : f32) max_steps(2) step_cap(2) group_size(32) clock_slots(13) histogram(9) distributed halo(1) {
+    simplan.buffer @X : f32 stride(4) halo [1, 1]
+    simplan.component @C writes [@X] evaluations(8) advance grid_substeps sub_clock(9)
+    simplan.phase step {
+      // expected-error @+1 {{'simplan.launch' op exchanges @X by the blocks and halves its slot wrote, but the launch is not for a local_steps component, whose levels say which}}
+      simplan.launch @k::@substep_C items [#simplan.arg<buffer @X>, #simplan.arg<first>] for @C exchange_local_step [@X]
+    }
+  }
+}
+
+// -----
+
+module attributes {gpu.container_module} {
+  simplan.plan @p strategy("lts") kernels(@k) range(4) dt(1.0e-2 : f32) max_steps(2) step_cap(2) group_size(32) clock_slots(13) histogram(9) distributed halo(1) {
+    simplan.buffer @X : f32 stride(4) halo [1, 1]
+    simplan.component @C writes [@X] evaluations(8) advance local_steps sub_clock(9)
+    simplan.phase step {
+      // expected-error @+1 {{'simplan.launch' op exchanges @X by the blocks and halves its slot wrote, but does not pass the levels of @C, which say which}}
+      simplan.launch @k::@local_step_C items [#simplan.arg<buffer @X>, #simplan.arg<first>] for @C exchange_local_step [@X]
+    }
+  }
+}
+
+// -----
+
+module attributes {gpu.container_module} {
+  simplan.plan @p strategy("lts") kernels(@k) range(4) dt(1.0e-2 : f32) max_steps(2) step_cap(2) group_size(32) clock_slots(13) histogram(9) distributed halo(1) {
+    simplan.buffer @X : f32 stride(4) halo [1, 1]
+    simplan.component @C writes [@X] evaluations(8) advance local_steps sub_clock(9)
+    simplan.phase step {
+      // expected-error @+1 {{'simplan.launch' op exchanges @X both whole and by the blocks and halves its slot wrote}}
+      simplan.launch @k::@local_step_C items [#simplan.arg<buffer @X>, #simplan.arg<levels @C>, #simplan.arg<first>] for @C exchange [@X] exchange_local_step [@X]
+    }
+  }
+}

@@ -198,8 +198,10 @@ private:
   /// writes, so which half of them travels: `Advance` by the component's
   /// advance (the target half for whole_step and group_substeps, both
   /// otherwise), `Target` the target half (a parity copy), `SubStep` the
-  /// half a grid-wide sub-step writes (`exchange_sub_step`).
-  enum class WrittenHalf { Advance, Target, SubStep };
+  /// half a grid-wide sub-step writes (`exchange_sub_step`), `LocalStep`
+  /// the blocks a local time step's slot starts and the halves they write
+  /// (`exchange_local_step`).
+  enum class WrittenHalf { Advance, Target, SubStep, LocalStep };
   WrittenHalf pendingWrittenHalf = WrittenHalf::Advance;
 
   Operation *kernels;

@@ -271,7 +271,8 @@ LaunchOp::verifyCommunication(PlanOp plan, SymbolTableCollection &symbolTable) {
                            << ", which only a distributed plan has";
   if (!distributed &&
       (getReduceMin() || getExchange() || getExchangeSnapshots() ||
-       getReduceMaxLevels() || getExchangeTargets() || getExchangeSubStep()))
+       getReduceMaxLevels() || getExchangeTargets() || getExchangeSubStep() ||
+       getExchangeLocalStep()))
     return emitOpError() << "communicates between ranks in a plan that is not "
                             "distributed";
   if (std::optional<ArrayRef<int64_t>> slots = getReduceMin())
@@ -283,6 +284,7 @@ LaunchOp::verifyCommunication(PlanOp plan, SymbolTableCollection &symbolTable) {
   for (auto [names, snapshot] : {std::pair(getExchangeAttr(), false),
                                  std::pair(getExchangeTargetsAttr(), false),
                                  std::pair(getExchangeSubStepAttr(), false),
+                                 std::pair(getExchangeLocalStepAttr(), false),
                                  std::pair(getExchangeSnapshotsAttr(), true)}) {
     if (!names)
       continue;
@@ -299,11 +301,13 @@ LaunchOp::verifyCommunication(PlanOp plan, SymbolTableCollection &symbolTable) {
   }
   // A buffer travels one way after a launch.
   ArrayAttr ways[] = {getExchangeAttr(), getExchangeTargetsAttr(),
-                      getExchangeSubStepAttr()};
+                      getExchangeSubStepAttr(), getExchangeLocalStepAttr()};
   const char *wayNames[] = {"whole", "by its target half",
-                            "by the half its sub-step wrote"};
-  for (int one = 0; one < 3; ++one)
-    for (int other = one + 1; other < 3; ++other)
+                            "by the half its sub-step wrote",
+                            "by the blocks and halves its slot wrote"};
+  constexpr int kWays = std::size(ways);
+  for (int one = 0; one < kWays; ++one)
+    for (int other = one + 1; other < kWays; ++other)
       if (ways[one] && ways[other])
         for (Attribute name : ways[other])
           if (llvm::is_contained(ways[one], name))
@@ -322,6 +326,30 @@ LaunchOp::verifyCommunication(PlanOp plan, SymbolTableCollection &symbolTable) {
              << "exchanges " << names[0]
              << " by the half its sub-step wrote, but the launch is not for a "
                 "grid_substeps component, whose sub-step clock says which";
+  }
+  if (ArrayAttr names = getExchangeLocalStepAttr()) {
+    // The blocks and halves come from the levels and the sub-step clock of
+    // the launch's component, which the launch must pass.
+    auto component =
+        getComponentAttr()
+            ? dyn_cast_or_null<ComponentOp>(
+                  symbolTable.lookupSymbolIn(plan, getComponentAttr()))
+            : ComponentOp();
+    if (!component || component.getAdvance() != mlir::sim::Advance::local_steps)
+      return emitOpError()
+             << "exchanges " << names[0]
+             << " by the blocks and halves its slot wrote, but the launch is "
+                "not for a local_steps component, whose levels say which";
+    bool passesLevels = llvm::any_of(
+        getArgs().getAsRange<ArgAttr>(), [&](ArgAttr arg) {
+          return arg.getKind() == ArgKind::levels &&
+                 arg.getName() == getComponentAttr();
+        });
+    if (!passesLevels)
+      return emitOpError() << "exchanges " << names[0]
+                           << " by the blocks and halves its slot wrote, but "
+                              "does not pass the levels of "
+                           << getComponentAttr() << ", which say which";
   }
   if (ArrayAttr names = getReduceMaxLevelsAttr())
     for (auto name : names.getAsRange<FlatSymbolRefAttr>()) {

@@ -31,8 +31,10 @@ constexpr char kMagic[8] = {'S', 'I', 'M', 'B', 'N', 'D', 'L', '\0'};
 /// Version 1 held text sections; version 2 is the FlatBuffer; version 3
 /// gives `levels @C` a seventh section, the blocks' sub-steps (kernels of
 /// version 2 decoded them in place and would find too little memory
-/// under a version 3 runtime's layout contract, and the reverse).
-constexpr uint32_t kFormatVersion = 3;
+/// under a version 3 runtime's layout contract, and the reverse); version
+/// 4 adds `exchange_local_step` (a version 3 runtime would not send those
+/// ghost items at all).
+constexpr uint32_t kFormatVersion = 4;
 constexpr size_t kHeaderSize = 32;
 /// The largest bundle a runtime reads (a bundle of every strategy of the
 /// paper's scenes takes well under 1 MiB).

@@ -350,7 +350,15 @@ def Plan_LaunchOp : Plan_Op<"launch", [
     `grid_substeps` component (the launch's) of which only the half its
     sub-step wrote travels: half `1 - (parity xor (d mod 2))` with `d` the
     sub-steps done that the component's sub-step clock holds (its `Done`
-    slot) when the launch ends. `reduce_max_levels` lists components that take
+    slot) when the launch ends. `exchange_local_step` lists buffers of a
+    `local_steps` component (the launch's slot kernel's) of which only the
+    ghost items of blocks that start a sub-step at the launch's slot travel,
+    each in the half it wrote: with `q` the slot (the sub-step clock's
+    `Begin` less `T` before the launch) and `s` a block's sub-step (the
+    `Steps` section of the component's `levels`), the blocks with
+    `q mod s = 0`, half `1 - (parity xor ((q / s) mod 2))`; the other
+    blocks' items, and the other half, are as they travelled before.
+    `reduce_max_levels` lists components that take
     local time steps whose blocks' sub-step codes of the big step (half
     `parity` of their `levels`, written by `levels_C`) every rank replaces
     by their maximum over all ranks before the launch, so that every rank
@@ -361,6 +369,7 @@ def Plan_LaunchOp : Plan_Op<"launch", [
     simplan.launch @k::@step_C0 items [...] for @C0 exchange_targets [@B0]
     simplan.launch @k::@limit_levels_C items [...] reduce_max_levels [@C]
     simplan.launch @k::@substep_C items [...] for @C exchange_sub_step [@U]
+    simplan.launch @k::@local_step_C items [...] for @C exchange_local_step [@U]
     ```
   }];
   let arguments = (ins SymbolRefAttr:$kernel, Plan_LaunchShapeAttr:$shape,
@@ -373,7 +382,8 @@ def Plan_LaunchOp : Plan_Op<"launch", [
                        OptionalAttr<FlatSymbolRefArrayAttr>:$exchange_snapshots,
                        OptionalAttr<FlatSymbolRefArrayAttr>:$reduce_max_levels,
                        OptionalAttr<FlatSymbolRefArrayAttr>:$exchange_targets,
-                       OptionalAttr<FlatSymbolRefArrayAttr>:$exchange_sub_step);
+                       OptionalAttr<FlatSymbolRefArrayAttr>:$exchange_sub_step,
+                       OptionalAttr<FlatSymbolRefArrayAttr>:$exchange_local_step);
   let assemblyFormat = [{
     $kernel custom<EnumKeyword>($shape) $args (`for` $component^)?
     (`shared` `(` $shared_per_thread^ `,` $shared_fixed `)`)?
@@ -381,7 +391,8 @@ def Plan_LaunchOp : Plan_Op<"launch", [
     (`exchange_snapshots` $exchange_snapshots^)?
     (`reduce_max_levels` $reduce_max_levels^)?
     (`exchange_targets` $exchange_targets^)?
-    (`exchange_sub_step` $exchange_sub_step^)? attr-dict
+    (`exchange_sub_step` $exchange_sub_step^)?
+    (`exchange_local_step` $exchange_local_step^)? attr-dict
   }];
   let extraClassDeclaration = [{
     ::mlir::LogicalResult
