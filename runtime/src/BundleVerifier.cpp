@@ -304,6 +304,11 @@ private:
           component.advance == Advance::LocalSteps)
         claimSlots(component.sub_clock, uint64_t(schema::SubClockSlot::Slots),
                    about + "'s sub-step clock");
+      if (component.level_reach != 0 &&
+          (component.advance != Advance::LocalSteps || !plan.distributed))
+        bad(what + ": " + about +
+            " has a level reach, but only a component that takes local time "
+            "steps in a distributed plan has one");
     }
   }
 
@@ -486,6 +491,15 @@ private:
         bad(about + " all-reduces the levels of component " +
             quoted(plan.components[c]->name) +
             ", which does not take local time steps");
+      else if (plan.components[c]->level_reach == 0)
+        bad(about + " all-reduces the levels of component " +
+            quoted(plan.components[c]->name) +
+            ", which has no level reach to say which blocks");
+      else if (plan.components[c]->level_reach > (uint64_t(1) << 62))
+        bad(about + " all-reduces the levels of component " +
+            quoted(plan.components[c]->name) + ", whose level reach " +
+            std::to_string(plan.components[c]->level_reach) +
+            " is out of range");
       if (!reducedLevels.insert(c).second)
         bad(about + " all-reduces the levels of component " +
             quoted(plan.components[c]->name) + " twice");

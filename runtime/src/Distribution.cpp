@@ -213,4 +213,37 @@ GhostLists ghostLists(const Decomposition &d, int32_t rank, int64_t halo,
   return lists;
 }
 
+std::vector<int64_t> levelBlocksFor(const Decomposition &d, int32_t sender,
+                                    int32_t receiver, int64_t reach,
+                                    int64_t blockItems) {
+  std::vector<int64_t> blocks;
+  if (d.count(sender) == 0)
+    return blocks;
+  int64_t range = d.range();
+  int64_t own0 = d.first(sender) / blockItems,
+          own1 = (d.end(sender) - 1) / blockItems;
+  // The receiver's items and `reach` more on each side, as item intervals
+  // inside the range (two where they wrap around it).
+  int64_t lo = d.first(receiver) - reach, hi = d.end(receiver) + reach;
+  std::vector<std::pair<int64_t, int64_t>> near;
+  if (hi - lo >= range)
+    near.emplace_back(0, range);
+  else if (lo < 0)
+    near = {{0, hi}, {lo + range, range}};
+  else if (hi > range)
+    near = {{0, hi - range}, {lo, range}};
+  else
+    near.emplace_back(lo, hi);
+  for (auto [from, to] : near) {
+    if (from >= to)
+      continue;
+    int64_t first = std::max(own0, from / blockItems);
+    int64_t last = std::min(own1, (to - 1) / blockItems);
+    for (int64_t block = first; block <= last; ++block)
+      if (blocks.empty() || block > blocks.back())
+        blocks.push_back(block);
+  }
+  return blocks;
+}
+
 } // namespace sim::rt

@@ -124,6 +124,14 @@ struct GhostLists {
 /// the range: the kernels select 0 themselves).
 int64_t ghostSource(int64_t item, int64_t range, Boundary boundary);
 
+/// Local time steps: the level blocks (of `blockItems` items, ascending)
+/// that hold items of rank `sender` and lie within `reach` items of rank
+/// `receiver`'s block, around the range: the blocks whose codes `sender`
+/// contributes to `receiver`'s levels. Empty when `sender` holds no item.
+std::vector<int64_t> levelBlocksFor(const Decomposition &decomposition,
+                                    int32_t sender, int32_t receiver,
+                                    int64_t reach, int64_t blockItems);
+
 /// The lists of rank `rank` (every rank's ghosts are computed, to know
 /// what it must send).
 GhostLists ghostLists(const Decomposition &decomposition, int32_t rank,

@@ -271,6 +271,7 @@ void Session::releaseAll() {
   clock.clear();
   ghostCache.clear();
   slotSelections.clear();
+  levelListsCache.clear();
   allocated = initialized = prepared = false;
 }
 
@@ -775,6 +776,7 @@ void Session::run(int64_t steps, int64_t pause) {
 void Session::layout() {
   ghostCache.clear();
   slotSelections.clear();
+  levelListsCache.clear();
   if (!distributed()) {
     first = 0;
     count = extent = settings.range;
@@ -1042,16 +1044,21 @@ void Session::reduceLevels(const std::vector<uint32_t> &components,
                            bool counted) {
   // The codes of this big step's blocks are half `parity` of each levels
   // array; every rank has written those of its own items (0, the identity,
-  // elsewhere), so their maximum is what one process's atomics would have
-  // left. The communicator takes minima: of the negated codes.
+  // elsewhere), so a block's maximum over the ranks that hold items of it
+  // is what one process's atomics would have left. A rank's kernels read
+  // the levels of the blocks near its own only, and those depend on the
+  // codes within the component's level reach (docs/Distributed.md): only
+  // those travel, from the ranks that hold them. Blocks further away keep
+  // the code 0, which limit_levels_C decodes as the big step; their
+  // levels come out no finer than one process's and nothing reads them.
   int64_t clock[kSlotParity + 1];
   backend->read(clock, clockMemory.pointer, sizeof clock);
-  const int64_t block = int64_t(schema::LocalStepBlock::Items);
-  int64_t blocks = (settings.range + block - 1) / block;
+  const int64_t blockItems = int64_t(schema::LocalStepBlock::Items);
+  int64_t blocks = (settings.range + blockItems - 1) / blockItems;
   int64_t parity = clock[kSlotParity];
   if (parity != 0 && parity != 1)
     fail(SIM_ERROR_CLOCK, "the clock's parity is " + std::to_string(parity) +
-                              ", not 0 or 1, before the all-reduce of the "
+                              ", not 0 or 1, before the reduction of the "
                               "levels");
   // With a big step of one base step (or none) every block's sub-step is
   // 1 whatever the codes say, and limit_levels_C decodes a code this rank
@@ -1059,28 +1066,119 @@ void Session::reduceLevels(const std::vector<uint32_t> &components,
   // the same big step, so all skip alike.
   if (clock[kSlotSize] <= 1)
     return;
+  endGhosts();
+  int32_t me = comm->rank(), ranks = comm->size();
   DevicePtr offset = DevicePtr(parity * blocks) * sizeof(int64_t);
-  std::vector<int64_t> values(size_t(blocks) * components.size());
-  for (size_t c = 0; c < components.size(); ++c)
-    backend->read(values.data() + c * size_t(blocks),
-                  levels[components[c]].pointer + offset,
-                  size_t(blocks) * sizeof(int64_t));
-  for (int64_t &value : values)
-    value = -value;
-  // The communicator counts in int32: a range of more than 2^36 items
-  // takes several all-reduces.
-  const size_t most = size_t(std::numeric_limits<int32_t>::max());
-  for (size_t from = 0; from < values.size(); from += most)
-    comm->minimum(values.data() + from,
-                  int32_t(std::min(most, values.size() - from)));
-  for (int64_t &value : values)
-    value = -value;
-  for (size_t c = 0; c < components.size(); ++c)
-    backend->write(levels[components[c]].pointer + offset,
-                   values.data() + c * size_t(blocks),
-                   size_t(blocks) * sizeof(int64_t));
-  if (counted)
+  // This rank's own blocks' codes, per component.
+  int64_t own0 = first / blockItems, own1 = (first + count - 1) / blockItems;
+  std::vector<std::vector<int64_t>> own(components.size());
+  for (size_t c = 0; c < components.size(); ++c) {
+    own[c].resize(size_t(own1 - own0 + 1));
+    backend->read(own[c].data(),
+                  levels[components[c]].pointer + offset +
+                      DevicePtr(own0) * sizeof(int64_t),
+                  own[c].size() * sizeof(int64_t));
+  }
+  // What travels to and from each rank, component after component.
+  auto listsOf = [&](uint32_t component) -> const LevelLists & {
+    int64_t reach = int64_t(plan_->components[component]->level_reach);
+    auto [found, fresh] = levelListsCache.try_emplace(reach);
+    if (fresh) {
+      found->second.send.resize(size_t(ranks));
+      found->second.recv.resize(size_t(ranks));
+      for (int32_t peer = 0; peer < ranks; ++peer) {
+        if (peer == me)
+          continue;
+        found->second.send[size_t(peer)] =
+            levelBlocksFor(*decomposition, me, peer, reach, blockItems);
+        found->second.recv[size_t(peer)] =
+            levelBlocksFor(*decomposition, peer, me, reach, blockItems);
+      }
+    }
+    return found->second;
+  };
+  const size_t peers = size_t(ranks);
+  std::vector<std::vector<int64_t>> out(peers), in(peers);
+  std::vector<const void *> sendPointers(peers);
+  std::vector<void *> recvPointers(peers);
+  std::vector<size_t> sendBytes(peers), recvBytes(peers);
+  size_t sent = 0;
+  for (int32_t peer = 0; peer < ranks; ++peer) {
+    size_t incoming = 0;
+    for (size_t c = 0; c < components.size(); ++c) {
+      const LevelLists &lists = listsOf(components[c]);
+      for (int64_t block : lists.send[size_t(peer)])
+        out[size_t(peer)].push_back(own[c][size_t(block - own0)]);
+      incoming += lists.recv[size_t(peer)].size();
+    }
+    in[size_t(peer)].resize(incoming);
+    sendPointers[size_t(peer)] = out[size_t(peer)].data();
+    recvPointers[size_t(peer)] = in[size_t(peer)].data();
+    sendBytes[size_t(peer)] = out[size_t(peer)].size() * sizeof(int64_t);
+    recvBytes[size_t(peer)] = incoming * sizeof(int64_t);
+    sent += sendBytes[size_t(peer)];
+  }
+  comm->exchangeBegin(sendPointers.data(), sendBytes.data(),
+                      recvPointers.data(), recvBytes.data());
+  comm->exchangeEnd();
+  // Each block's maximum, written back in runs of consecutive blocks.
+  for (size_t c = 0; c < components.size(); ++c) {
+    std::map<int64_t, int64_t> merged;
+    for (int32_t peer = 0; peer < ranks; ++peer) {
+      const std::vector<int64_t> &from =
+          listsOf(components[c]).recv[size_t(peer)];
+      size_t at = 0;
+      for (size_t p = 0; p < c; ++p)
+        at += listsOf(components[p]).recv[size_t(peer)].size();
+      for (size_t k = 0; k < from.size(); ++k) {
+        int64_t block = from[k];
+        int64_t mine =
+            block >= own0 && block <= own1 ? own[c][size_t(block - own0)] : 0;
+        auto [it, fresh] = merged.try_emplace(block, mine);
+        it->second = std::max(it->second, in[size_t(peer)][at + k]);
+      }
+    }
+    for (auto it = merged.begin(); it != merged.end();) {
+      int64_t start = it->first;
+      std::vector<int64_t> run;
+      while (it != merged.end() && it->first == start + int64_t(run.size()))
+        run.push_back((it++)->second);
+      backend->write(levels[components[c]].pointer + offset +
+                         DevicePtr(start) * sizeof(int64_t),
+                     run.data(), run.size() * sizeof(int64_t));
+    }
+  }
+  if (counted) {
     ++metrics.host_syncs;
+    exchangedBytes += int64_t(sent);
+  }
+}
+
+void Session::reduceFinest(const std::vector<uint32_t> &components) {
+  // Each rank's limit_levels_C took the finest sub-step over the blocks
+  // whose codes it holds, among them its own; every block is some rank's
+  // own, so the minimum over the ranks is one process's, and every rank
+  // takes the same slots.
+  int64_t size = 0;
+  backend->read(&size, clockMemory.pointer + kSlotSize * sizeof(int64_t),
+                sizeof size);
+  if (size <= 1)
+    return;
+  std::vector<int64_t> finest(components.size());
+  for (size_t c = 0; c < components.size(); ++c)
+    backend->read(&finest[c],
+                  clockMemory.pointer +
+                      (plan_->components[components[c]]->sub_clock +
+                       int64_t(schema::SubClockSlot::Size)) *
+                          sizeof(int64_t),
+                  sizeof(int64_t));
+  comm->minimum(finest.data(), int32_t(finest.size()));
+  for (size_t c = 0; c < components.size(); ++c)
+    backend->write(clockMemory.pointer +
+                       (plan_->components[components[c]]->sub_clock +
+                        int64_t(schema::SubClockSlot::Size)) *
+                           sizeof(int64_t),
+                   &finest[c], sizeof(int64_t));
 }
 
 Session::SubStepTimes Session::subStepTimes(int component) {
@@ -1166,6 +1264,8 @@ void Session::launchDistributed(Prepared &p, bool counted, bool step) {
                     p.sharedBytes);
   if (counted)
     ++metrics.launches;
+  if (!p.launch->reduce_max_levels.empty())
+    reduceFinest(p.launch->reduce_max_levels);
   if (p.exchanges.empty())
     return;
   if (step) {

@@ -245,9 +245,15 @@ private:
   /// has at most one base step of the big step left (so its all-reduce of
   /// the estimate would decide nothing).
   bool settledRound(const Prepared &p);
-  /// The all-reduce (maximum) of the codes of this big step's blocks in the
-  /// levels of `components` (a launch's `reduce_max_levels`).
+  /// The maximum over the ranks that hold items of them of the codes of
+  /// this big step's blocks within each component's level reach of this
+  /// rank's block, in the levels of `components` (a launch's
+  /// `reduce_max_levels`): one exchange with those ranks.
   void reduceLevels(const std::vector<uint32_t> &components, bool counted);
+  /// After that launch (limit_levels_C): the finest sub-step of each of
+  /// `components` (its sub-step clock's Size) by its minimum over all
+  /// ranks, one all-reduce.
+  void reduceFinest(const std::vector<uint32_t> &components);
   /// A launch of a distributed plan: its all-reduces, the kernel, its
   /// exchanges (in the step phase, `step`, none past the run's end).
   void launchDistributed(Prepared &prepared, bool counted, bool step = false);
@@ -306,6 +312,12 @@ private:
     GhostLists selected[2];
   };
   std::map<std::pair<const GhostLists *, size_t>, SlotSelection> slotSelections;
+  /// Per level reach: the level blocks whose codes this rank sends to and
+  /// receives from each rank (reduceLevels).
+  struct LevelLists {
+    std::vector<std::vector<int64_t>> send, recv;
+  };
+  std::map<int64_t, LevelLists> levelListsCache;
   /// Host memory of the backend's allocateHost (page-locked on CUDA),
   /// grown as needed: per peer, what this rank sends and receives.
   class Staging {

@@ -583,6 +583,12 @@ TEST(Distributed, VerifierChecksTheRecords) {
   contents.plans[0]->phases[1]->body[1]->launch->reduce_max_levels = {0};
   expectBad(std::move(contents), "all-reduces the levels of component 'Mix', "
                                  "which does not take local time steps");
+  // A level reach: only a component with levels has one.
+  contents = ringContents(Boundary::Wrap);
+  contents.plans[0]->components[0]->level_reach = 5;
+  expectBad(std::move(contents),
+            "component 'Mix' has a level reach, but only a component that "
+            "takes local time steps in a distributed plan has one");
   // The half a sub-step wrote: only a grid-wide sub-step's launch has one.
   contents = ringContents(Boundary::Wrap);
   contents.plans[0]->phases[1]->body[2]->launch->exchange.clear();

@@ -20,6 +20,44 @@ using namespace sim::rt;
 
 namespace {
 
+TEST(Distribution, LevelBlocksAreTheSendersBlocksNearTheReceiver) {
+  // Against the definition, item by item: the level blocks of 32 items
+  // that hold an item of the sender and an item within `reach` of the
+  // receiver's block, around the range; ranks of fewer items than a
+  // block, reaches past either end and past the whole range.
+  for (int64_t range : {37, 200, 1003})
+    for (int64_t group : {7, 32})
+      for (int32_t ranks : {2, 3, 5}) {
+        Decomposition d(range, group, ranks);
+        if (!d.fits())
+          continue;
+        for (int64_t reach : {1, 33, 161, 600})
+          for (int32_t sender = 0; sender < ranks; ++sender)
+            for (int32_t receiver = 0; receiver < ranks; ++receiver) {
+              std::vector<bool> near(size_t(range), false);
+              for (int64_t k = d.first(receiver) - reach;
+                   k < d.end(receiver) + reach; ++k)
+                near[size_t(((k % range) + range) % range)] = true;
+              std::vector<int64_t> expected;
+              for (int64_t block = 0; block * 32 < range; ++block) {
+                bool holds = false, reached = false;
+                for (int64_t i = block * 32;
+                     i < std::min(range, block * 32 + 32); ++i) {
+                  holds = holds || d.owner(i) == sender;
+                  reached = reached || near[size_t(i)];
+                }
+                if (holds && reached)
+                  expected.push_back(block);
+              }
+              EXPECT_EQ(levelBlocksFor(d, sender, receiver, reach, 32),
+                        expected)
+                  << "range " << range << " group " << group << " ranks "
+                  << ranks << " reach " << reach << " from " << sender << " to "
+                  << receiver;
+            }
+      }
+}
+
 TEST(Distribution, BlocksAreWholeGroupsThatDifferByAtMostOne) {
   // 10 groups of 4 (the last one of 2 items) over 3 ranks: 3, 3, 4 groups.
   Decomposition d(38, 4, 3);

@@ -664,6 +664,20 @@ LogicalResult SimulationLowering::emitLocalSteps(ComponentOp component,
   // does (runtime/src/Reference.cpp); all agree because the largest such
   // assignment is unique.
   int64_t hops = radius == 0 ? 0 : int64_t(llvm::Log2_64_Ceil(maxSteps));
+  // A distributed rank reads the levels of the blocks its items, their
+  // ghost items and its interfaces' readers lie in (and, for the
+  // neighbourhood codes, those within `radius` of them); each is limited
+  // by the codes within `hops * radius` blocks. Every rank gathers the
+  // codes of those blocks only (reduce_max_levels), a block more on each
+  // side for the blocks its block's ends cut.
+  if (distributed) {
+    int64_t window = std::max({distributedHalo, reach, fluxBelow, fluxAbove});
+    int64_t levelReach = window + kLevelBlock * (hops * radius + radius + 2);
+    auto planComponent = cast<simplan::ComponentOp>(
+        SymbolTable::lookupSymbolIn(plan, component.getSymNameAttr()));
+    planComponent.setLevelReachAttr(
+        Builder(plan.getContext()).getI64IntegerAttr(levelReach));
+  }
   auto toI64 = [&](Value index) {
     return arith::IndexCastOp::create(b, b.loc, b.getI64Type(), index)
         .getResult();

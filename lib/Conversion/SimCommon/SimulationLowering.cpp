@@ -482,7 +482,8 @@ LogicalResult SimulationLowering::run() {
         component.getAdvanceAttr(), unitIf(component.getEstimates()),
         subClock == subClockSlots.end()
             ? IntegerAttr()
-            : planBuilder.getI64IntegerAttr(subClock->second));
+            : planBuilder.getI64IntegerAttr(subClock->second),
+        /*level_reach=*/IntegerAttr());
   }
 
   for (TotalOp total : simulation.getTotals())

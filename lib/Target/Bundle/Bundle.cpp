@@ -409,6 +409,7 @@ FailureOr<std::unique_ptr<fb::PlanT>> PlanReader::read(simplan::PlanOp op) {
       record->advance = getAdvance(component.getAdvance());
       record->estimates = component.getEstimates();
       record->sub_clock = component.getSubClock().value_or(0);
+      record->level_reach = uint64_t(component.getLevelReach().value_or(0));
       plan->components.push_back(std::move(record));
     } else if (auto total = dyn_cast<simplan::TotalOp>(child)) {
       auto found = scene.totals.find(total.getSymName());
@@ -518,8 +519,8 @@ PlanReader::readLaunch(simplan::LaunchOp launch) {
       failed(exchange(launch.getExchangeSnapshotsAttr(), true)) ||
       failed(exchange(launch.getExchangeTargetsAttr(), false, Half::Target)) ||
       failed(exchange(launch.getExchangeSubStepAttr(), false, Half::SubStep)) ||
-      failed(exchange(launch.getExchangeLocalStepAttr(), false,
-                      Half::LocalStep)))
+      failed(
+          exchange(launch.getExchangeLocalStepAttr(), false, Half::LocalStep)))
     return failure();
   if (ArrayAttr names = launch.getReduceMaxLevelsAttr())
     for (auto name : names.getAsRange<FlatSymbolRefAttr>()) {

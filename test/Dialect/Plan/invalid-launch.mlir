@@ -440,3 +440,15 @@ module attributes {gpu.container_module} {
     }
   }
 }
+
+// -----
+
+module attributes {gpu.container_module} {
+  simplan.plan @p strategy("lts") kernels(@k) range(4) dt(1.0e-2 : f32) max_steps(2) step_cap(2) group_size(32) clock_slots(13) histogram(9) distributed halo(1) {
+    simplan.component @C writes [] evaluations(8) advance local_steps sub_clock(9)
+    simplan.phase step {
+      // expected-error @+1 {{'simplan.launch' op reduces the levels of @C, which has no level_reach to say which blocks}}
+      simplan.launch @k::@limit_levels_C single [#simplan.arg<clock>] reduce_max_levels [@C]
+    }
+  }
+}

@@ -73,6 +73,27 @@ simplan.plan @p strategy("hip") kernels(@k) range(4) dt(1.0e-2 : f32) max_steps(
 
 // -----
 
+simplan.plan @p strategy("lts") kernels(@k) range(4) dt(1.0e-2 : f32) max_steps(2) step_cap(2) group_size(32) clock_slots(16) histogram(13) distributed halo(1) {
+  // expected-error @+1 {{'simplan.component' op has a level_reach but advances in grid_substeps; only local_steps components have levels}}
+  simplan.component @C writes [] evaluations(8) advance grid_substeps sub_clock(9) level_reach(40)
+}
+
+// -----
+
+simplan.plan @p strategy("lts") kernels(@k) range(4) dt(1.0e-2 : f32) max_steps(2) step_cap(2) group_size(32) clock_slots(16) histogram(13) distributed halo(1) {
+  // expected-error @+1 {{'simplan.component' op has a level_reach of 0; it must be at least 1}}
+  simplan.component @C writes [] evaluations(8) advance local_steps sub_clock(9) level_reach(0)
+}
+
+// -----
+
+simplan.plan @p strategy("lts") kernels(@k) range(4) dt(1.0e-2 : f32) max_steps(2) step_cap(2) group_size(32) clock_slots(16) histogram(13) {
+  // expected-error @+1 {{'simplan.component' op has a level_reach in a plan that is not distributed}}
+  simplan.component @C writes [] evaluations(8) advance local_steps sub_clock(9) level_reach(40)
+}
+
+// -----
+
 simplan.plan @p strategy("hip") kernels(@k) range(4) dt(1.0e-2 : f32) max_steps(2) step_cap(2) group_size(32) clock_slots(12) histogram(9) {
   // expected-error @+1 {{custom op 'simplan.component' unknown keyword 'sideways'}}
   simplan.component @C writes [] evaluations(8) advance sideways

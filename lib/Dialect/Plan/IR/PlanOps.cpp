@@ -256,6 +256,18 @@ LogicalResult ComponentOp::verify() {
                          << mlir::sim::stringifyAdvance(getAdvance())
                          << "; only grid_substeps and local_steps components "
                             "have one";
+  if (std::optional<int64_t> reach = getLevelReach()) {
+    if (getAdvance() != mlir::sim::Advance::local_steps)
+      return emitOpError() << "has a level_reach but advances in "
+                           << mlir::sim::stringifyAdvance(getAdvance())
+                           << "; only local_steps components have levels";
+    if (*reach < 1)
+      return emitOpError() << "has a level_reach of " << *reach
+                           << "; it must be at least 1";
+    if (!(*this)->getParentOfType<PlanOp>().getDistributedHalo())
+      return emitOpError() << "has a level_reach in a plan that is not "
+                              "distributed";
+  }
   return success();
 }
 
@@ -340,8 +352,8 @@ LaunchOp::verifyCommunication(PlanOp plan, SymbolTableCollection &symbolTable) {
              << "exchanges " << names[0]
              << " by the blocks and halves its slot wrote, but the launch is "
                 "not for a local_steps component, whose levels say which";
-    bool passesLevels = llvm::any_of(
-        getArgs().getAsRange<ArgAttr>(), [&](ArgAttr arg) {
+    bool passesLevels =
+        llvm::any_of(getArgs().getAsRange<ArgAttr>(), [&](ArgAttr arg) {
           return arg.getKind() == ArgKind::levels &&
                  arg.getName() == getComponentAttr();
         });
@@ -363,6 +375,10 @@ LaunchOp::verifyCommunication(PlanOp plan, SymbolTableCollection &symbolTable) {
                << "all-reduces the levels of " << name << ", which advances in "
                << mlir::sim::stringifyAdvance(component.getAdvance())
                << "; only local_steps components have levels";
+      if (!component.getLevelReach())
+        return emitOpError()
+               << "reduces the levels of " << name
+               << ", which has no level_reach to say which blocks";
     }
   return success();
 }

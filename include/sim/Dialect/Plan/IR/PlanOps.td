@@ -237,20 +237,28 @@ def Plan_ComponentOp : Plan_Op<"component", [Symbol, HasParent<"PlanOp">]> {
     size of the big step (an `estimate_C` launch before `advance`). A
     `grid_substeps` component has a sub-step clock of four slots from
     `sub_clock` (docs/Plan.md, "The clock"); no other component has one.
+    In a distributed plan a `local_steps` component records `level_reach`:
+    how many items beyond a rank's block the level blocks lie whose codes
+    the levels its kernels read depend on (the limit's reach, its windows,
+    the ghost items), so that `reduce_max_levels` gathers the codes of
+    those blocks only.
 
     ```mlir
     simplan.component @C0 writes [@B0] evaluations(8) advance whole_step estimates
     simplan.component @C1 writes [@B1] evaluations(9) advance grid_substeps sub_clock(10)
+    simplan.component @C2 writes [@B2] evaluations(11) advance local_steps sub_clock(12) level_reach(161)
     ```
   }];
   let arguments = (ins SymbolNameAttr:$sym_name,
                        FlatSymbolRefArrayAttr:$writes, I64Attr:$evaluations,
                        Plan_AdvanceAttr:$advance, UnitAttr:$estimates,
-                       OptionalAttr<I64Attr>:$sub_clock);
+                       OptionalAttr<I64Attr>:$sub_clock,
+                       OptionalAttr<I64Attr>:$level_reach);
   let assemblyFormat = [{
     $sym_name `writes` $writes `evaluations` `(` $evaluations `)`
     `advance` custom<EnumKeyword>($advance) (`estimates` $estimates^)?
-    (`sub_clock` `(` $sub_clock^ `)`)? attr-dict
+    (`sub_clock` `(` $sub_clock^ `)`)?
+    (`level_reach` `(` $level_reach^ `)`)? attr-dict
   }];
   let hasVerifier = 1;
 }
@@ -360,9 +368,14 @@ def Plan_LaunchOp : Plan_Op<"launch", [
     blocks' items, and the other half, are as they travelled before.
     `reduce_max_levels` lists components that take
     local time steps whose blocks' sub-step codes of the big step (half
-    `parity` of their `levels`, written by `levels_C`) every rank replaces
-    by their maximum over all ranks before the launch, so that every rank
-    limits the same levels (`limit_levels_C`).
+    `parity` of their `levels`, written by `levels_C`) every rank replaces,
+    for the blocks within the component's `level_reach` items of its
+    block, by their maximum over the ranks that hold items of them before
+    the launch (one exchange with those ranks), so that every rank limits
+    the levels it reads as one process would (`limit_levels_C`), and whose
+    finest sub-step (`Size` of the sub-step clock, which `limit_levels_C`
+    writes) every rank replaces by its minimum over all ranks after the
+    launch (one all-reduce), so that every rank takes the same slots.
 
     ```mlir
     simplan.launch @k::@advance single [#simplan.arg<clock>] reduce_min [4]
