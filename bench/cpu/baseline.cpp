@@ -36,6 +36,7 @@
 //
 //===----------------------------------------------------------------------===//
 
+#include "../common/RunJson.h"
 #include "../common/Scenes.h"
 #include "GlibcTanh.h"
 
@@ -53,7 +54,6 @@
 #include <cstring>
 #include <fstream>
 #include <memory>
-#include <sstream>
 #include <string>
 #include <tuple>
 #include <utility>
@@ -902,12 +902,6 @@ double median(std::vector<double> values) {
   return n % 2 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
 }
 
-std::string jsonNumber(double value) {
-  char text[40];
-  std::snprintf(text, sizeof text, "%.17g", value);
-  return text;
-}
-
 /// The instruction set the compiler targeted, as sim-run names ISA levels.
 const char *isaName() {
 #if defined(__AVX512F__) && defined(__AVX512BW__) && defined(__AVX512VL__)
@@ -977,14 +971,10 @@ int runFmaPeak(const Options &o) {
   std::printf("f32 FMA peak: %.1f GFLOP/s (%d %s, %s)\n", peak * 1e-9, threads,
               threads == 1 ? "thread" : "threads", isaName());
   if (!o.jsonPath.empty()) {
-    std::ofstream out(o.jsonPath);
-    out << "{\n  \"fma_peak_flops\": " << jsonNumber(peak)
-        << ",\n  \"threads\": " << threads << ",\n  \"isa\": \"" << isaName()
-        << "\"\n}\n";
-    if (!out) {
-      std::fprintf(stderr, "error: cannot write %s\n", o.jsonPath.c_str());
+    nlohmann::ordered_json json = {
+        {"fma_peak_flops", peak}, {"threads", threads}, {"isa", isaName()}};
+    if (!sim::bench::writeJson(o.jsonPath, json))
       return 1;
-    }
   }
   return 0;
 }
@@ -1008,9 +998,6 @@ template <typename Scene> int runScene(const Options &o) {
     last = metrics;
   }
   const Clock &clock = last.clock;
-  unsigned long long evaluations = 0;
-  for (int c = 0; c < numComponents<Scene>; ++c)
-    evaluations += clock.evaluations[c];
 
   std::printf("%s %s (hand-written, cpu): range %lld, group size %d, %lld "
               "base steps",
@@ -1033,50 +1020,33 @@ template <typename Scene> int runScene(const Options &o) {
     writeNpy(o.dumpDir + "/B" + std::to_string(Scene::observed) + ".npy",
              simulation.observed(), o.params.range);
   if (!o.jsonPath.empty()) {
-    std::ostringstream json;
-    auto list = [&](const std::vector<double> &values) {
-      std::string text = "[";
-      for (size_t i = 0; i < values.size(); ++i)
-        text += (i ? ", " : "") + jsonNumber(values[i]);
-      return text + "]";
-    };
-    json << "{\n  \"scene\": \"" << Scene::name << "\",\n"
-         << "  \"strategy\": \"" << strategyName(o.strategy) << "\",\n"
-         << "  \"implementation\": \"hand-written\",\n"
-         << "  \"backend\": \"cpu\",\n"
-         << "  \"device\": \"" << device << "\",\n"
-         << "  \"threads\": " << threads << ",\n"
-         << "  \"m_on_host\": false,\n"
-         << "  \"subnormals\": \"" << (o.ftz ? "flush-to-zero" : "ieee")
-         << "\",\n"
-         << "  \"interp\": \"" << o.interp << "\",\n"
-         << "  \"range\": " << o.params.range << ",\n"
-         << "  \"dt\": " << jsonNumber(o.params.dt) << ",\n"
-         << "  \"L\": " << o.params.rounds << ",\n"
-         << "  \"dist\": " << o.params.dist << ",\n"
-         << "  \"group_size\": " << o.groupSize << ",\n"
-         << "  \"steps\": " << o.steps << ",\n"
-         << "  \"repeat\": " << o.repeat << ",\n"
-         << "  \"wall_seconds\": " << jsonNumber(median(times)) << ",\n"
-         << "  \"kernel_seconds\": " << jsonNumber(median(times)) << ",\n"
-         << "  \"wall_seconds_runs\": " << list(times) << ",\n"
-         << "  \"kernel_seconds_runs\": " << list(times) << ",\n"
-         << "  \"launches\": " << last.launches << ",\n"
-         << "  \"host_syncs\": 0,\n"
-         << "  \"big_steps\": " << clock.bigSteps << ",\n"
-         << "  \"big_step_histogram\": {";
-    for (int m = 1; m <= kMaxSteps; ++m)
-      json << (m > 1 ? ", " : "") << "\"" << m << "\": " << clock.histogram[m];
-    json << "},\n  \"evaluations\": {";
-    for (int c = 0; c < numComponents<Scene>; ++c)
-      json << (c ? ", " : "") << "\"C" << c << "\": " << clock.evaluations[c];
-    json << "},\n  \"total_evaluations\": " << evaluations << "\n}\n";
-    std::ofstream out(o.jsonPath);
-    out << json.str();
-    if (!out) {
-      std::fprintf(stderr, "error: cannot write %s\n", o.jsonPath.c_str());
+    nlohmann::ordered_json json = {
+        {"scene", Scene::name},
+        {"strategy", strategyName(o.strategy)},
+        {"implementation", "hand-written"},
+        {"backend", "cpu"},
+        {"device", device},
+        {"threads", threads},
+        {"m_on_host", false},
+        {"subnormals", o.ftz ? "flush-to-zero" : "ieee"},
+        {"interp", o.interp},
+        {"range", o.params.range},
+        {"dt", o.params.dt},
+        {"L", o.params.rounds},
+        {"dist", o.params.dist},
+        {"group_size", o.groupSize},
+        {"steps", o.steps},
+        {"repeat", o.repeat},
+        {"wall_seconds", median(times)},
+        {"kernel_seconds", median(times)},
+        {"wall_seconds_runs", times},
+        {"kernel_seconds_runs", times},
+        {"launches", last.launches},
+        {"host_syncs", 0},
+        {"big_steps", clock.bigSteps}};
+    sim::bench::addCounts(json, clock, kMaxSteps, numComponents<Scene>);
+    if (!sim::bench::writeJson(o.jsonPath, json))
       return 1;
-    }
   }
   return 0;
 }

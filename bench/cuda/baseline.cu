@@ -20,6 +20,7 @@
 
 #include "cuda_compat.h"
 
+#include "../common/RunJson.h"
 #include "../common/Scenes.h"
 
 #include <algorithm>
@@ -28,7 +29,6 @@
 #include <climits>
 #include <cmath>
 #include <fstream>
-#include <sstream>
 #include <string>
 #include <tuple>
 #include <utility>
@@ -756,12 +756,6 @@ double median(std::vector<double> values) {
   return n % 2 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
 }
 
-std::string jsonNumber(double value) {
-  char text[40];
-  std::snprintf(text, sizeof text, "%.17g", value);
-  return text;
-}
-
 template <typename Scene> int runScene(const Options &o) {
   std::string device = compat::deviceName();
   Simulation<Scene> simulation(o);
@@ -777,9 +771,6 @@ template <typename Scene> int runScene(const Options &o) {
     last = metrics;
   }
   const Clock &clock = last.clock;
-  unsigned long long evaluations = 0;
-  for (int c = 0; c < numComponents<Scene>; ++c)
-    evaluations += clock.evaluations[c];
 
   std::printf("%s %s (hand-written, %s%s): range %lld, group size %d, %lld "
               "base steps",
@@ -805,47 +796,30 @@ template <typename Scene> int runScene(const Options &o) {
     writeNpy(o.dumpDir + "/B" + std::to_string(Scene::observed) + ".npy",
              simulation.observed(), o.params.range);
   if (!o.jsonPath.empty()) {
-    std::ostringstream json;
-    auto list = [&](const std::vector<double> &values) {
-      std::string text = "[";
-      for (size_t i = 0; i < values.size(); ++i)
-        text += (i ? ", " : "") + jsonNumber(values[i]);
-      return text + "]";
-    };
-    json << "{\n  \"scene\": \"" << Scene::name << "\",\n"
-         << "  \"strategy\": \"" << strategyName(o.strategy) << "\",\n"
-         << "  \"implementation\": \"hand-written\",\n"
-         << "  \"backend\": \"" << compat::backendName() << "\",\n"
-         << "  \"device\": \"" << device << "\",\n"
-         << "  \"m_on_host\": " << (o.mOnHost ? "true" : "false") << ",\n"
-         << "  \"interp\": \"" << o.interp << "\",\n"
-         << "  \"range\": " << o.params.range << ",\n"
-         << "  \"dt\": " << jsonNumber(o.params.dt) << ",\n"
-         << "  \"L\": " << o.params.rounds << ",\n"
-         << "  \"dist\": " << o.params.dist << ",\n"
-         << "  \"group_size\": " << o.groupSize << ",\n"
-         << "  \"steps\": " << o.steps << ",\n"
-         << "  \"repeat\": " << o.repeat << ",\n"
-         << "  \"wall_seconds\": " << jsonNumber(median(walls)) << ",\n"
-         << "  \"kernel_seconds\": " << jsonNumber(median(kernels)) << ",\n"
-         << "  \"wall_seconds_runs\": " << list(walls) << ",\n"
-         << "  \"kernel_seconds_runs\": " << list(kernels) << ",\n"
-         << "  \"launches\": " << last.launches << ",\n"
-         << "  \"host_syncs\": " << last.hostSyncs << ",\n"
-         << "  \"big_steps\": " << clock.bigSteps << ",\n"
-         << "  \"big_step_histogram\": {";
-    for (int m = 1; m <= kMaxSteps; ++m)
-      json << (m > 1 ? ", " : "") << "\"" << m << "\": " << clock.histogram[m];
-    json << "},\n  \"evaluations\": {";
-    for (int c = 0; c < numComponents<Scene>; ++c)
-      json << (c ? ", " : "") << "\"C" << c << "\": " << clock.evaluations[c];
-    json << "},\n  \"total_evaluations\": " << evaluations << "\n}\n";
-    std::ofstream out(o.jsonPath);
-    out << json.str();
-    if (!out) {
-      std::fprintf(stderr, "error: cannot write %s\n", o.jsonPath.c_str());
+    nlohmann::ordered_json json = {{"scene", Scene::name},
+                                   {"strategy", strategyName(o.strategy)},
+                                   {"implementation", "hand-written"},
+                                   {"backend", compat::backendName()},
+                                   {"device", device},
+                                   {"m_on_host", o.mOnHost},
+                                   {"interp", o.interp},
+                                   {"range", o.params.range},
+                                   {"dt", o.params.dt},
+                                   {"L", o.params.rounds},
+                                   {"dist", o.params.dist},
+                                   {"group_size", o.groupSize},
+                                   {"steps", o.steps},
+                                   {"repeat", o.repeat},
+                                   {"wall_seconds", median(walls)},
+                                   {"kernel_seconds", median(kernels)},
+                                   {"wall_seconds_runs", walls},
+                                   {"kernel_seconds_runs", kernels},
+                                   {"launches", last.launches},
+                                   {"host_syncs", last.hostSyncs},
+                                   {"big_steps", clock.bigSteps}};
+    sim::bench::addCounts(json, clock, kMaxSteps, numComponents<Scene>);
+    if (!sim::bench::writeJson(o.jsonPath, json))
       return 1;
-    }
   }
   return 0;
 }
