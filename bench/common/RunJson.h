@@ -15,8 +15,66 @@
 #include <cstdio>
 #include <fstream>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace sim::bench {
+
+/// What every baseline reports of a run, under sim-run's keys.
+struct RunRecord {
+  std::string scene, strategy, backend, device, interp;
+  bool mOnHost = false;
+  long long range = 0, steps = 0;
+  double dt = 0;
+  int rounds = 0, dist = 0, groupSize = 0, repeat = 0;
+  /// Every measured run's wall and kernel time, and their medians.
+  std::vector<double> walls, kernels;
+  double wall = 0, kernel = 0;
+  unsigned long long launches = 0, hostSyncs = 0, bigSteps = 0;
+};
+
+/// A run's record with the settings of a baseline's options `o` (their
+/// fields have the same names in every baseline).
+template <typename Options>
+RunRecord recordOf(const Options &o, std::string scene, std::string strategy) {
+  RunRecord run;
+  run.scene = std::move(scene);
+  run.strategy = std::move(strategy);
+  run.interp = o.interp;
+  run.range = o.params.range;
+  run.steps = o.steps;
+  run.dt = o.params.dt;
+  run.rounds = o.params.rounds;
+  run.dist = o.params.dist;
+  run.groupSize = o.groupSize;
+  run.repeat = o.repeat;
+  return run;
+}
+
+/// `run` as JSON (implementation "hand-written").
+inline nlohmann::ordered_json runJson(const RunRecord &run) {
+  return {{"scene", run.scene},
+          {"strategy", run.strategy},
+          {"implementation", "hand-written"},
+          {"backend", run.backend},
+          {"device", run.device},
+          {"m_on_host", run.mOnHost},
+          {"interp", run.interp},
+          {"range", run.range},
+          {"dt", run.dt},
+          {"L", run.rounds},
+          {"dist", run.dist},
+          {"group_size", run.groupSize},
+          {"steps", run.steps},
+          {"repeat", run.repeat},
+          {"wall_seconds", run.wall},
+          {"kernel_seconds", run.kernel},
+          {"wall_seconds_runs", run.walls},
+          {"kernel_seconds_runs", run.kernels},
+          {"launches", run.launches},
+          {"host_syncs", run.hostSyncs},
+          {"big_steps", run.bigSteps}};
+}
 
 /// Adds the big-step histogram (sizes 1 to `maxSteps`), the evaluations of
 /// `components` components and their total from `clock` to `json`.

@@ -1020,30 +1020,18 @@ template <typename Scene> int runScene(const Options &o) {
     writeNpy(o.dumpDir + "/B" + std::to_string(Scene::observed) + ".npy",
              simulation.observed(), o.params.range);
   if (!o.jsonPath.empty()) {
-    nlohmann::ordered_json json = {
-        {"scene", Scene::name},
-        {"strategy", strategyName(o.strategy)},
-        {"implementation", "hand-written"},
-        {"backend", "cpu"},
-        {"device", device},
-        {"threads", threads},
-        {"m_on_host", false},
-        {"subnormals", o.ftz ? "flush-to-zero" : "ieee"},
-        {"interp", o.interp},
-        {"range", o.params.range},
-        {"dt", o.params.dt},
-        {"L", o.params.rounds},
-        {"dist", o.params.dist},
-        {"group_size", o.groupSize},
-        {"steps", o.steps},
-        {"repeat", o.repeat},
-        {"wall_seconds", median(times)},
-        {"kernel_seconds", median(times)},
-        {"wall_seconds_runs", times},
-        {"kernel_seconds_runs", times},
-        {"launches", last.launches},
-        {"host_syncs", 0},
-        {"big_steps", clock.bigSteps}};
+    sim::bench::RunRecord run =
+        sim::bench::recordOf(o, Scene::name, strategyName(o.strategy));
+    run.backend = "cpu";
+    run.device = device;
+    // Kernel and wall time are the same here: the run's parallel region.
+    run.walls = run.kernels = times;
+    run.wall = run.kernel = median(times);
+    run.launches = last.launches;
+    run.bigSteps = clock.bigSteps;
+    nlohmann::ordered_json json = sim::bench::runJson(run);
+    json["threads"] = threads;
+    json["subnormals"] = o.ftz ? "flush-to-zero" : "ieee";
     sim::bench::addCounts(json, clock, kMaxSteps, numComponents<Scene>);
     if (!sim::bench::writeJson(o.jsonPath, json))
       return 1;

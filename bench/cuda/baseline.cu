@@ -796,27 +796,19 @@ template <typename Scene> int runScene(const Options &o) {
     writeNpy(o.dumpDir + "/B" + std::to_string(Scene::observed) + ".npy",
              simulation.observed(), o.params.range);
   if (!o.jsonPath.empty()) {
-    nlohmann::ordered_json json = {{"scene", Scene::name},
-                                   {"strategy", strategyName(o.strategy)},
-                                   {"implementation", "hand-written"},
-                                   {"backend", compat::backendName()},
-                                   {"device", device},
-                                   {"m_on_host", o.mOnHost},
-                                   {"interp", o.interp},
-                                   {"range", o.params.range},
-                                   {"dt", o.params.dt},
-                                   {"L", o.params.rounds},
-                                   {"dist", o.params.dist},
-                                   {"group_size", o.groupSize},
-                                   {"steps", o.steps},
-                                   {"repeat", o.repeat},
-                                   {"wall_seconds", median(walls)},
-                                   {"kernel_seconds", median(kernels)},
-                                   {"wall_seconds_runs", walls},
-                                   {"kernel_seconds_runs", kernels},
-                                   {"launches", last.launches},
-                                   {"host_syncs", last.hostSyncs},
-                                   {"big_steps", clock.bigSteps}};
+    sim::bench::RunRecord run =
+        sim::bench::recordOf(o, Scene::name, strategyName(o.strategy));
+    run.backend = compat::backendName();
+    run.device = device;
+    run.mOnHost = o.mOnHost;
+    run.walls = walls;
+    run.kernels = kernels;
+    run.wall = median(walls);
+    run.kernel = median(kernels);
+    run.launches = last.launches;
+    run.hostSyncs = last.hostSyncs;
+    run.bigSteps = clock.bigSteps;
+    nlohmann::ordered_json json = sim::bench::runJson(run);
     sim::bench::addCounts(json, clock, kMaxSteps, numComponents<Scene>);
     if (!sim::bench::writeJson(o.jsonPath, json))
       return 1;

@@ -526,12 +526,17 @@ private:
             (entry.snapshot() ? "the snapshot of buffer " : "buffer ") +
             quoted(bufferName(entry.buffer())) + " twice");
     }
-    for (uint32_t b : launch.exchange_targets) {
-      checkIndex(b, plan.buffers.size(),
-                 about + ": a buffer whose target half it exchanges");
-      if (!exchanged.insert({b, false}).second)
-        bad(about + " exchanges buffer " + quoted(bufferName(b)) + " twice");
-    }
+    // Buffers whose ghost items travel one half (or part) of them: each
+    // the plan has, and each once after the launch.
+    auto checkExchanged = [&](const std::vector<uint32_t> &list,
+                              const std::string &what) {
+      for (uint32_t b : list) {
+        checkIndex(b, plan.buffers.size(), about + ": a buffer " + what);
+        if (!exchanged.insert({b, false}).second)
+          bad(about + " exchanges buffer " + quoted(bufferName(b)) + " twice");
+      }
+    };
+    checkExchanged(launch.exchange_targets, "whose target half it exchanges");
     if (!launch.exchange_sub_step.empty() &&
         (launch.component < 0 ||
          size_t(launch.component) >= plan.components.size() ||
@@ -541,12 +546,8 @@ private:
           " exchanges the half a sub-step wrote, but it is not a launch of a "
           "component that takes grid-wide sub-steps (whose sub-step clock "
           "says which half)");
-    for (uint32_t b : launch.exchange_sub_step) {
-      checkIndex(b, plan.buffers.size(),
-                 about + ": a buffer whose sub-step's half it exchanges");
-      if (!exchanged.insert({b, false}).second)
-        bad(about + " exchanges buffer " + quoted(bufferName(b)) + " twice");
-    }
+    checkExchanged(launch.exchange_sub_step,
+                   "whose sub-step's half it exchanges");
     if (!launch.exchange_local_step.empty()) {
       // The runtime reads the slot from the component's sub-step clock
       // (a repeat's) and the blocks' sub-steps from its levels.
@@ -565,12 +566,8 @@ private:
             "(in a repeat) of a component that takes local time steps, "
             "passing its levels (which say which blocks and halves)");
     }
-    for (uint32_t b : launch.exchange_local_step) {
-      checkIndex(b, plan.buffers.size(),
-                 about + ": a buffer whose slot's blocks it exchanges");
-      if (!exchanged.insert({b, false}).second)
-        bad(about + " exchanges buffer " + quoted(bufferName(b)) + " twice");
-    }
+    checkExchanged(launch.exchange_local_step,
+                   "whose slot's blocks it exchanges");
   }
 
   /// Verifies `steps` and counts the launches they unroll to into `count`.

@@ -325,15 +325,19 @@ LaunchOp::verifyCommunication(PlanOp plan, SymbolTableCollection &symbolTable) {
           if (llvm::is_contained(ways[one], name))
             return emitOpError() << "exchanges " << name << " both "
                                  << wayNames[one] << " and " << wayNames[other];
-  if (ArrayAttr names = getExchangeSubStepAttr()) {
-    // The half comes from the sub-step clock of the launch's component.
+  // The launch's component advancing by `advance`, or null.
+  auto componentAdvancing = [&](mlir::sim::Advance advance) {
     auto component =
         getComponentAttr()
             ? dyn_cast_or_null<ComponentOp>(
                   symbolTable.lookupSymbolIn(plan, getComponentAttr()))
             : ComponentOp();
-    if (!component ||
-        component.getAdvance() != mlir::sim::Advance::grid_substeps)
+    return component && component.getAdvance() == advance ? component
+                                                          : ComponentOp();
+  };
+  if (ArrayAttr names = getExchangeSubStepAttr()) {
+    // The half comes from the sub-step clock of the launch's component.
+    if (!componentAdvancing(mlir::sim::Advance::grid_substeps))
       return emitOpError()
              << "exchanges " << names[0]
              << " by the half its sub-step wrote, but the launch is not for a "
@@ -342,12 +346,7 @@ LaunchOp::verifyCommunication(PlanOp plan, SymbolTableCollection &symbolTable) {
   if (ArrayAttr names = getExchangeLocalStepAttr()) {
     // The blocks and halves come from the levels and the sub-step clock of
     // the launch's component, which the launch must pass.
-    auto component =
-        getComponentAttr()
-            ? dyn_cast_or_null<ComponentOp>(
-                  symbolTable.lookupSymbolIn(plan, getComponentAttr()))
-            : ComponentOp();
-    if (!component || component.getAdvance() != mlir::sim::Advance::local_steps)
+    if (!componentAdvancing(mlir::sim::Advance::local_steps))
       return emitOpError()
              << "exchanges " << names[0]
              << " by the blocks and halves its slot wrote, but the launch is "
