@@ -703,6 +703,25 @@ LogicalResult SimulationLowering::emitLocalSteps(ComponentOp component,
         b.cmp(arith::CmpIPredicate::slt, h, blocks));
     return {b.min(b.max(h, zero), b.sub(blocks, one)), valid};
   };
+  // The minimum of `initial` and `valueOf(h)` over the blocks h
+  // `distance` blocks below and above block g, for distance in [first,
+  // end) (an scf.for; blocks past a range end that does not wrap count not).
+  auto minOverNeighbours = [&](Value g, Value first, Value end, Value initial,
+                               Value blocks,
+                               function_ref<Value(Value h)> valueOf) -> Value {
+    auto loop =
+        scf::ForOp::create(b, b.loc, first, end, b.i64(1), ValueRange{initial});
+    OpBuilder::InsertionGuard guard(b);
+    b.setInsertionPointToStart(loop.getBody());
+    Value distance = loop.getInductionVar();
+    Value bound = loop.getRegionIterArg(0);
+    for (bool below : {true, false}) {
+      auto [h, valid] = neighbourOf(g, distance, below, blocks);
+      bound = b.select(valid, b.min(bound, valueOf(h)), bound);
+    }
+    scf::YieldOp::create(b, b.loc, bound);
+    return loop.getResult(0);
+  };
   // Block h's own power of two, from the code levels_C left in half
   // `parity` (i64 values). A code of 0 (a block no item of this process
   // wrote: another rank's, when the host did not all-reduce the codes
@@ -739,22 +758,12 @@ LogicalResult SimulationLowering::emitLocalSteps(ComponentOp component,
     b.setInsertionPointToStart(outer.getBody());
     Value d = outer.getInductionVar();
     Value nearest = b.add(b.mul(b.sub(d, one), b.i64(radius)), one);
-    auto inner =
-        scf::ForOp::create(b, b.loc, nearest, b.add(nearest, b.i64(radius)),
-                           one, ValueRange{outer.getRegionIterArg(0)});
-    {
-      OpBuilder::InsertionGuard innerGuard(b);
-      b.setInsertionPointToStart(inner.getBody());
-      Value distance = inner.getInductionVar();
-      Value bound = inner.getRegionIterArg(0);
-      for (bool below : {true, false}) {
-        auto [h, valid] = neighbourOf(g, distance, below, blocks);
-        Value reached = arith::ShLIOp::create(b, b.loc, decode(h), d);
-        bound = b.select(valid, b.min(bound, reached), bound);
-      }
-      scf::YieldOp::create(b, b.loc, bound);
-    }
-    scf::YieldOp::create(b, b.loc, inner.getResult(0));
+    Value bound = minOverNeighbours(
+        g, nearest, b.add(nearest, b.i64(radius)), outer.getRegionIterArg(0),
+        blocks, [&](Value h) {
+          return arith::ShLIOp::create(b, b.loc, decode(h), d).getResult();
+        });
+    scf::YieldOp::create(b, b.loc, bound);
     return outer.getResult(0);
   };
   // Block g's limited sub-step, stored (storeLevel) and returned.
@@ -971,22 +980,12 @@ LogicalResult SimulationLowering::emitLocalSteps(ComponentOp component,
     auto relax = [&](Value g) -> Value {
       Value own = levelAt(g);
       Value bound = own;
-      if (radius > 0) {
-        auto loop = scf::ForOp::create(b, b.loc, one, b.i64(radius + 1), one,
-                                       ValueRange{own});
-        OpBuilder::InsertionGuard guard(b);
-        b.setInsertionPointToStart(loop.getBody());
-        Value d = loop.getInductionVar();
-        Value finest = loop.getRegionIterArg(0);
-        for (bool below : {true, false}) {
-          auto [h, valid] = neighbourOf(g, d, below, blocks);
-          Value twice = arith::ShLIOp::create(b, b.loc, levelAt(h), one);
-          finest = b.select(valid, b.min(finest, twice), finest);
-        }
-        scf::YieldOp::create(b, b.loc, finest);
-        b.setInsertionPointAfter(loop);
-        bound = loop.getResult(0);
-      }
+      if (radius > 0)
+        bound = minOverNeighbours(
+            g, one, b.i64(radius + 1), own, blocks, [&](Value h) {
+              return arith::ShLIOp::create(b, b.loc, levelAt(h), one)
+                  .getResult();
+            });
       b.store(bound, levels, at(g));
       return b.cmp(arith::CmpIPredicate::slt, bound, own);
     };
