@@ -20,8 +20,22 @@ namespace sim::mpi {
 
 namespace {
 
-/// Byte counts of one message: MPI counts are ints.
-constexpr size_t kMaxMessage = size_t(INT_MAX);
+/// The most bytes one MPI message carries: MPI counts are ints, so a
+/// longer transfer goes as several messages of at most this many bytes.
+/// SIM_MPI_MAX_MESSAGE lowers it (tests split small transfers with it).
+size_t maxMessage() {
+  static const size_t limit = [] {
+    size_t bytes = size_t(INT_MAX);
+    if (const char *text = std::getenv("SIM_MPI_MAX_MESSAGE"); text && *text) {
+      char *end = nullptr;
+      unsigned long long value = std::strtoull(text, &end, 10);
+      if (*end == '\0' && value > 0 && value < bytes)
+        bytes = size_t(value);
+    }
+    return bytes;
+  }();
+  return limit;
+}
 
 int allreduce(int64_t *values, int32_t count, MPI_Op op) {
   return MPI_Allreduce(MPI_IN_PLACE, values, count, MPI_INT64_T, op,
@@ -41,6 +55,23 @@ int allreduceSum(void *, int64_t *values, int32_t count) {
 /// The requests of the exchange under way (exchangeBegin to exchangeEnd).
 std::vector<MPI_Request> pending;
 
+/// Posts one transfer with a peer as messages of at most maxMessage()
+/// bytes. Both sides split the same byte count alike, and MPI matches
+/// messages between two ranks with one tag in the order they were posted,
+/// so the i-th piece sent is the i-th piece received.
+template <typename Buffer, typename Post>
+int postPieces(Buffer data, size_t bytes, int peer,
+               std::vector<MPI_Request> &requests, Post post) {
+  const size_t limit = maxMessage();
+  for (size_t done = 0; done < bytes; done += limit) {
+    size_t piece = std::min(limit, bytes - done);
+    requests.emplace_back();
+    if (post(data + done, int(piece), peer, &requests.back()) != MPI_SUCCESS)
+      return 1;
+  }
+  return 0;
+}
+
 /// Posts the receives, then the sends, of one exchange into `requests`.
 int post(const void *const *send, const size_t *sendBytes, void *const *recv,
          const size_t *recvBytes, std::vector<MPI_Request> &requests) {
@@ -48,27 +79,21 @@ int post(const void *const *send, const size_t *sendBytes, void *const *recv,
   MPI_Comm_size(MPI_COMM_WORLD, &size);
   requests.clear();
   requests.reserve(2 * size_t(size));
+  auto receive = [](char *at, int bytes, int peer, MPI_Request *request) {
+    return MPI_Irecv(at, bytes, MPI_BYTE, peer, 0, MPI_COMM_WORLD, request);
+  };
+  auto sendTo = [](const char *at, int bytes, int peer, MPI_Request *request) {
+    return MPI_Isend(at, bytes, MPI_BYTE, peer, 0, MPI_COMM_WORLD, request);
+  };
   // Receives first, so that every send finds its receive posted.
-  for (int r = 0; r < size; ++r) {
-    if (!recvBytes[r])
-      continue;
-    if (recvBytes[r] > kMaxMessage)
+  for (int r = 0; r < size; ++r)
+    if (postPieces(static_cast<char *>(recv[r]), recvBytes[r], r, requests,
+                   receive) != 0)
       return 1;
-    requests.emplace_back();
-    if (MPI_Irecv(recv[r], int(recvBytes[r]), MPI_BYTE, r, 0, MPI_COMM_WORLD,
-                  &requests.back()) != MPI_SUCCESS)
+  for (int r = 0; r < size; ++r)
+    if (postPieces(static_cast<const char *>(send[r]), sendBytes[r], r,
+                   requests, sendTo) != 0)
       return 1;
-  }
-  for (int r = 0; r < size; ++r) {
-    if (!sendBytes[r])
-      continue;
-    if (sendBytes[r] > kMaxMessage)
-      return 1;
-    requests.emplace_back();
-    if (MPI_Isend(send[r], int(sendBytes[r]), MPI_BYTE, r, 0, MPI_COMM_WORLD,
-                  &requests.back()) != MPI_SUCCESS)
-      return 1;
-  }
   return 0;
 }
 
@@ -107,16 +132,17 @@ int allgather(void *, const void *data, const size_t *bytes, void *out) {
   size_t offset = 0;
   for (int r = 0; r < size; ++r) {
     // MPI_Allgatherv takes int counts and displacements: a gathered array
-    // of 2 GiB or more goes as MPI_Bcasts of each rank's share instead.
-    if (offset + bytes[r] > kMaxMessage) {
+    // longer than maxMessage() goes as MPI_Bcasts of each rank's share,
+    // in pieces of at most maxMessage() bytes, instead.
+    if (offset + bytes[r] > maxMessage()) {
       size_t at = 0;
       for (int from = 0; from < size; ++from) {
         char *target = static_cast<char *>(out) + at;
         if (from == rank && bytes[from])
           std::copy(static_cast<const char *>(data),
                     static_cast<const char *>(data) + bytes[from], target);
-        for (size_t done = 0; done < bytes[from]; done += kMaxMessage) {
-          size_t chunk = std::min(kMaxMessage, bytes[from] - done);
+        for (size_t done = 0; done < bytes[from]; done += maxMessage()) {
+          size_t chunk = std::min(maxMessage(), bytes[from] - done);
           if (MPI_Bcast(target + done, int(chunk), MPI_BYTE, from,
                         MPI_COMM_WORLD) != MPI_SUCCESS)
             return 1;

@@ -221,6 +221,9 @@ ENVIRONMENT:
   SIM_CPU_ISA                 the highest CPU instruction-set level to run
                               (x86-64, x86-64-v2, x86-64-v3, x86-64-v4; default:
                               the highest the CPU has and the bundle carries)
+  SIM_MPI_MAX_MESSAGE         --distributed: the most bytes one MPI message
+                              carries (default and cap 2147483647); longer
+                              transfers go as several messages
 
 WARNINGS: before the runs, a buffer whose init disagrees with its writer
 evaluated with n = 0 at t = 0 (hip interpolates from the init); after the
