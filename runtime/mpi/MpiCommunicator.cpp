@@ -55,20 +55,17 @@ int allreduceSum(void *, int64_t *values, int32_t count) {
 /// The requests of the exchange under way (exchangeBegin to exchangeEnd).
 std::vector<MPI_Request> pending;
 
-/// Posts one transfer with a peer as messages of at most maxMessage()
-/// bytes. Both sides split the same byte count alike, and MPI matches
-/// messages between two ranks with one tag in the order they were posted,
-/// so the i-th piece sent is the i-th piece received.
-template <typename Buffer, typename Post>
-int postPieces(Buffer data, size_t bytes, int peer,
-               std::vector<MPI_Request> &requests, Post post) {
+/// Calls `send(offset, bytes)` for each piece of at most maxMessage()
+/// bytes of a transfer of `total` bytes, in order; stops at the first
+/// MPI error. Both sides of a transfer split the same byte count alike, and
+/// MPI matches the messages of two ranks on one tag (and the broadcasts of
+/// one root) in the order they were posted, so the i-th piece sent is the
+/// i-th piece received.
+template <typename Send> int inPieces(size_t total, Send send) {
   const size_t limit = maxMessage();
-  for (size_t done = 0; done < bytes; done += limit) {
-    size_t piece = std::min(limit, bytes - done);
-    requests.emplace_back();
-    if (post(data + done, int(piece), peer, &requests.back()) != MPI_SUCCESS)
+  for (size_t done = 0; done < total; done += limit)
+    if (send(done, int(std::min(limit, total - done))) != MPI_SUCCESS)
       return 1;
-  }
   return 0;
 }
 
@@ -79,20 +76,20 @@ int post(const void *const *send, const size_t *sendBytes, void *const *recv,
   MPI_Comm_size(MPI_COMM_WORLD, &size);
   requests.clear();
   requests.reserve(2 * size_t(size));
-  auto receive = [](char *at, int bytes, int peer, MPI_Request *request) {
-    return MPI_Irecv(at, bytes, MPI_BYTE, peer, 0, MPI_COMM_WORLD, request);
-  };
-  auto sendTo = [](const char *at, int bytes, int peer, MPI_Request *request) {
-    return MPI_Isend(at, bytes, MPI_BYTE, peer, 0, MPI_COMM_WORLD, request);
-  };
   // Receives first, so that every send finds its receive posted.
   for (int r = 0; r < size; ++r)
-    if (postPieces(static_cast<char *>(recv[r]), recvBytes[r], r, requests,
-                   receive) != 0)
+    if (inPieces(recvBytes[r], [&](size_t at, int bytes) {
+          requests.emplace_back();
+          return MPI_Irecv(static_cast<char *>(recv[r]) + at, bytes, MPI_BYTE,
+                           r, 0, MPI_COMM_WORLD, &requests.back());
+        }) != 0)
       return 1;
   for (int r = 0; r < size; ++r)
-    if (postPieces(static_cast<const char *>(send[r]), sendBytes[r], r,
-                   requests, sendTo) != 0)
+    if (inPieces(sendBytes[r], [&](size_t at, int bytes) {
+          requests.emplace_back();
+          return MPI_Isend(static_cast<const char *>(send[r]) + at, bytes,
+                           MPI_BYTE, r, 0, MPI_COMM_WORLD, &requests.back());
+        }) != 0)
       return 1;
   return 0;
 }
@@ -141,12 +138,11 @@ int allgather(void *, const void *data, const size_t *bytes, void *out) {
         if (from == rank && bytes[from])
           std::copy(static_cast<const char *>(data),
                     static_cast<const char *>(data) + bytes[from], target);
-        for (size_t done = 0; done < bytes[from]; done += maxMessage()) {
-          size_t chunk = std::min(maxMessage(), bytes[from] - done);
-          if (MPI_Bcast(target + done, int(chunk), MPI_BYTE, from,
-                        MPI_COMM_WORLD) != MPI_SUCCESS)
-            return 1;
-        }
+        if (inPieces(bytes[from], [&](size_t done, int piece) {
+              return MPI_Bcast(target + done, piece, MPI_BYTE, from,
+                               MPI_COMM_WORLD);
+            }) != 0)
+          return 1;
         at += bytes[from];
       }
       return 0;
