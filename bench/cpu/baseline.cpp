@@ -36,6 +36,7 @@
 //
 //===----------------------------------------------------------------------===//
 
+#include "../common/BaselineOptions.h"
 #include "../common/RunJson.h"
 #include "../common/Scenes.h"
 #include "GlibcTanh.h"
@@ -44,7 +45,6 @@
 #include <xmmintrin.h>
 
 #include <algorithm>
-#include <cerrno>
 #include <chrono>
 #include <climits>
 #include <cmath>
@@ -418,29 +418,16 @@ inline void storeChunk(const Half &half, long long i0, int count,
 // Lts: the scenes here read no buffer of their own at other items, so no
 // component takes local time steps and lts plans what hip plans (docs/
 // Model.md, "Local time stepping"): it runs as Hip.
-enum class Strategy { Simple, Traditional, Hip, HipCache, Lts };
+using sim::bench::Strategy;
+using sim::bench::strategyName;
 
-// Indexed by Strategy: the names sim-run takes.
-const char *const kStrategyNames[] = {"simple", "traditional", "hip",
-                                      "hip-cache", "lts"};
-
-const char *strategyName(Strategy s) { return kStrategyNames[(int)s]; }
-
-struct Options {
-  std::string scene = "gravity_like";
-  Strategy strategy = Strategy::Hip;
-  long long steps = 100;
-  int repeat = 1;
-  int groupSize = 256;
+struct Options : sim::bench::SceneOptions {
   int threads = 0; // 0: OpenMP's default (every core)
-  std::string interp = "linear";
-  std::string dumpDir, jsonPath;
   /// Flush subnormals to zero (MXCSR FTZ and DAZ on every thread), as a
   /// bundle compiled with sim-translate --sim-ftz computes.
   bool ftz = false;
   /// --fma-peak: measure the f32 FMA peak instead of running a scene.
   bool fmaPeak = false;
-  Params params{65536, 1.0e-3f, 8, 0, 32, kMaxSteps, 0};
 };
 
 struct RunMetrics {
@@ -744,134 +731,50 @@ private:
 // Command line, output
 //===----------------------------------------------------------------------===//
 
-const char *kUsage =
-    R"(OVERVIEW: hand-written CPU code of the paper's scenes (sim's benchmark baseline)
+const char *kOverview =
+    "hand-written CPU code of the paper's scenes (sim's benchmark baseline)";
 
-USAGE: sim-baseline-cpu [options]
-
-Runs the gravity-like or PBD-like scene of examples/paper with one of the
+const char *kIntro =
+    R"(Runs the gravity-like or PBD-like scene of examples/paper with one of the
 four algorithms, written by hand in C++ (OpenMP threads over groups, SIMD
 across the items of a group), and reports the same metrics as
 `sim-run --json` (bench/run compares the two). It computes what sim's CPU
 backend computes, bit for bit.
-
-OPTIONS:
-  --scene S            gravity_like or pbd_like (default gravity_like)
-  --strategy S         simple, traditional, hip, hip-cache or lts (as hip:
-                       no scene here takes local time steps; default hip)
-  --steps N            base steps per run (default 100)
-  --repeat K           measured runs from the initial state, median reported;
-                       with K > 1 one more warm-up run comes first (default 1)
-  --set NAME=VALUE     range, dt, L, dist or group, as for sim-run --set
-                       (defaults 65536, 1e-3, 8, 0, 32)
-  --group-size G       items per group: the hip sub-step group, 1 to 4096
-                       (default 256)
-  --threads N          OpenMP threads, 1 to 1024 (default: OpenMP's, every
-                       core unless OMP_NUM_THREADS says otherwise)
-  --interp I           linear: the scene as checked in (pbd_like keeps B3 and
-                       B4 cubic); cubic: every buffer cubic, as bench/run
-                       substitutes it (default linear)
-  --ftz                flush subnormals to zero (FTZ and DAZ), as sim-run does
-                       for a bundle compiled with sim-translate --sim-ftz
-  --dump DIR           write the observed buffer as DIR/<buffer>.npy
-  --json FILE          write the metrics as JSON (sim-run's keys)
-  --fma-peak           instead of a scene, measure the f32 fused multiply-add
-                       peak of --threads threads (what bench/run's "of peak"
-                       column divides by) and print it (--json: as
-                       fma_peak_flops)
-  --help               this text
-
-Kernel and wall time are the same here: the run's parallel region. Launches
-counts the phases sim launches a kernel for (the step decision, the
-estimate, one per component); there are no host syncs.
 )";
 
-[[noreturn]] void usageError(const std::string &message) {
-  std::fprintf(stderr, "error: %s (see --help)\n", message.c_str());
-  std::exit(2);
-}
+const char *kFooter =
+    R"(Kernel and wall time are the same here: the run's parallel region. Launches
+counts the phases sim launches a kernel for (the step decision, the
+estimate, one per component); there are no host syncs.
 
-long long parseInteger(const std::string &name, const std::string &text,
-                       long long low, long long high) {
-  char *end = nullptr;
-  errno = 0;
-  long long value = std::strtoll(text.c_str(), &end, 10);
-  if (text.empty() || *end || errno || value < low || value > high)
-    usageError(name + " expects an integer in [" + std::to_string(low) + ", " +
-               std::to_string(high) + "], got '" + text + "'");
-  return value;
-}
+EXIT STATUS: 0 on success, 1 when the run fails, 2 on a usage error.
+)";
 
 Options parseOptions(int argc, char **argv) {
   Options o;
-  for (int a = 1; a < argc; ++a) {
-    std::string name = argv[a];
-    auto value = [&]() -> std::string {
-      if (a + 1 >= argc)
-        usageError(name + " expects a value");
-      return argv[++a];
-    };
-    if (name == "--help" || name == "-h") {
-      std::fputs(kUsage, stdout);
-      std::exit(0);
-    } else if (name == "--scene") {
-      o.scene = value();
-      if (o.scene != "gravity_like" && o.scene != "pbd_like")
-        usageError("unknown scene '" + o.scene + "'");
-    } else if (name == "--strategy") {
-      std::string s = value();
-      auto *known =
-          std::find(std::begin(kStrategyNames), std::end(kStrategyNames), s);
-      if (known == std::end(kStrategyNames))
-        usageError("unknown strategy '" + s + "'");
-      o.strategy = Strategy(known - std::begin(kStrategyNames));
-    } else if (name == "--steps") {
-      o.steps = parseInteger(name, value(), 0, LLONG_MAX / 2);
-    } else if (name == "--repeat") {
-      o.repeat = (int)parseInteger(name, value(), 1, 100000);
-    } else if (name == "--group-size") {
-      o.groupSize = (int)parseInteger(name, value(), 1, 4096);
-    } else if (name == "--threads") {
-      o.threads = (int)parseInteger(name, value(), 1, 1024);
-    } else if (name == "--interp") {
-      o.interp = value();
-      if (o.interp != "linear" && o.interp != "cubic")
-        usageError("--interp expects linear or cubic");
-    } else if (name == "--ftz") {
-      o.ftz = true;
-    } else if (name == "--fma-peak") {
-      o.fmaPeak = true;
-    } else if (name == "--dump") {
-      o.dumpDir = value();
-    } else if (name == "--json") {
-      o.jsonPath = value();
-    } else if (name == "--set") {
-      std::string pair = value();
-      size_t eq = pair.find('=');
-      if (eq == std::string::npos)
-        usageError("--set expects NAME=VALUE");
-      std::string key = pair.substr(0, eq), text = pair.substr(eq + 1);
-      if (key == "range")
-        o.params.range = parseInteger(key, text, 1, 1ll << 31);
-      else if (key == "L")
-        o.params.rounds = (int)parseInteger(key, text, 0, INT_MAX);
-      else if (key == "dist")
-        o.params.dist = (int)parseInteger(key, text, INT_MIN, INT_MAX);
-      else if (key == "group")
-        o.params.group = (int)parseInteger(key, text, INT_MIN, INT_MAX);
-      else if (key == "dt") {
-        char *end = nullptr;
-        o.params.dt = std::strtof(text.c_str(), &end);
-        if (text.empty() || *end)
-          usageError("dt expects a number, got '" + text + "'");
-      } else {
-        usageError("unknown parameter '" + key +
-                   "' (range, dt, L, dist or group)");
-      }
-    } else {
-      usageError("unknown option '" + name + "'");
-    }
-  }
+  sim::bench::BaselineCommandLine commandLine(
+      "sim-baseline-cpu", kOverview, kIntro, kFooter, o,
+      {1, 4096, 1,
+       "items per group: the hip sub-step group, 1 to 4096\n"
+       "(default 256)"});
+  CLI::App &app = commandLine.app;
+  app.add_option("--threads", o.threads,
+                 "OpenMP threads, 1 to 1024 (default: OpenMP's,\n"
+                 "every core unless OMP_NUM_THREADS says otherwise)")
+      ->option_text("N")
+      ->transform(simcli::integerIn(1, 1024, "an integer from 1 to 1024"));
+  app.add_flag("--ftz", o.ftz,
+               "flush subnormals to zero (FTZ and DAZ), as\n"
+               "sim-run does for a bundle compiled with\n"
+               "sim-translate --sim-ftz")
+      ->disable_flag_override();
+  app.add_flag("--fma-peak", o.fmaPeak,
+               "instead of a scene, measure the f32 fused\n"
+               "multiply-add peak of --threads threads (what\n"
+               "bench/run's \"of peak\" column divides by) and\n"
+               "print it (--json: as fma_peak_flops)")
+      ->disable_flag_override();
+  commandLine.parse(argc, argv);
   return o;
 }
 

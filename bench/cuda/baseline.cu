@@ -20,11 +20,11 @@
 
 #include "cuda_compat.h"
 
+#include "../common/BaselineOptions.h"
 #include "../common/RunJson.h"
 #include "../common/Scenes.h"
 
 #include <algorithm>
-#include <cerrno>
 #include <chrono>
 #include <climits>
 #include <cmath>
@@ -437,24 +437,12 @@ __global__ void substepKernel(Clock *clock, Buffers buffers, Params p) {
 // Lts: the scenes here read no buffer of their own at other items, so no
 // component takes local time steps and lts plans what hip plans (docs/
 // Model.md, "Local time stepping"): it runs as Hip.
-enum class Strategy { Simple, Traditional, Hip, HipCache, Lts };
+using sim::bench::Strategy;
+using sim::bench::strategyName;
 
-// Indexed by Strategy: the names sim-run takes.
-const char *const kStrategyNames[] = {"simple", "traditional", "hip",
-                                      "hip-cache", "lts"};
-
-const char *strategyName(Strategy s) { return kStrategyNames[(int)s]; }
-
-struct Options {
-  std::string scene = "gravity_like";
-  Strategy strategy = Strategy::Hip;
-  long long steps = 100;
-  int repeat = 1;
-  int groupSize = 256;
-  std::string interp = "linear";
+struct Options : sim::bench::SceneOptions {
+  /// Read the clock after every big step, as the paper's implementation.
   bool mOnHost = false;
-  std::string dumpDir, jsonPath;
-  Params params{65536, 1.0e-3f, 8, 0, 32, kMaxSteps, 0};
 };
 
 struct RunMetrics {
@@ -612,120 +600,33 @@ private:
 // Command line, output
 //===----------------------------------------------------------------------===//
 
-const char *kUsage =
-    R"(OVERVIEW: hand-written CUDA of the paper's scenes (sim's benchmark baseline)
+const char *kOverview = "hand-written CUDA of the paper's scenes (sim's "
+                        "benchmark baseline)";
 
-USAGE: sim-baseline-cuda [options]    (sim-baseline-host: the same kernels
-                                      emulated on the CPU, for checking)
-
-Runs the gravity-like or PBD-like scene of examples/paper with one of the
+const char *kIntro =
+    R"(Runs the gravity-like or PBD-like scene of examples/paper with one of the
 four algorithms, written by hand, and reports the same metrics as
-`sim-run --json` (bench/run compares the two).
-
-OPTIONS:
-  --scene S            gravity_like or pbd_like (default gravity_like)
-  --strategy S         simple, traditional, hip, hip-cache or lts (as hip:
-                       no scene here takes local time steps; default hip)
-  --steps N            base steps per run (default 100)
-  --repeat K           measured runs from the initial state, median reported;
-                       with K > 1 one more warm-up run comes first (default 1)
-  --set NAME=VALUE     range, dt, L, dist or group, as for sim-run --set
-                       (defaults 65536, 1e-3, 8, 0, 32)
-  --group-size G       threads per group: the hip sub-step group (default 256)
-  --interp I           linear: the scene as checked in (pbd_like keeps B3 and
-                       B4 cubic); cubic: every buffer cubic, as bench/run
-                       substitutes it (default linear)
-  --m-on-host          read the clock after every big step (the paper's
-                       implementation) instead of once per batch
-  --dump DIR           write the observed buffer as DIR/<buffer>.npy
-  --json FILE          write the metrics as JSON (sim-run's keys)
-  --help               this text
+`sim-run --json` (bench/run compares the two). sim-baseline-host runs the
+same kernels emulated on the CPU, for checking.
 )";
 
-[[noreturn]] void usageError(const std::string &message) {
-  std::fprintf(stderr, "error: %s (see --help)\n", message.c_str());
-  std::exit(2);
-}
-
-long long parseInteger(const std::string &name, const std::string &text,
-                       long long low, long long high) {
-  char *end = nullptr;
-  errno = 0;
-  long long value = std::strtoll(text.c_str(), &end, 10);
-  if (text.empty() || *end || errno || value < low || value > high)
-    usageError(name + " expects an integer in [" + std::to_string(low) + ", " +
-               std::to_string(high) + "], got '" + text + "'");
-  return value;
-}
+const char *kFooter =
+    R"(EXIT STATUS: 0 on success, 1 when the run fails, 2 on a usage error.
+)";
 
 Options parseOptions(int argc, char **argv) {
   Options o;
-  for (int a = 1; a < argc; ++a) {
-    std::string name = argv[a];
-    auto value = [&]() -> std::string {
-      if (a + 1 >= argc)
-        usageError(name + " expects a value");
-      return argv[++a];
-    };
-    if (name == "--help" || name == "-h") {
-      std::fputs(kUsage, stdout);
-      std::exit(0);
-    } else if (name == "--scene") {
-      o.scene = value();
-      if (o.scene != "gravity_like" && o.scene != "pbd_like")
-        usageError("unknown scene '" + o.scene + "'");
-    } else if (name == "--strategy") {
-      std::string s = value();
-      auto *known =
-          std::find(std::begin(kStrategyNames), std::end(kStrategyNames), s);
-      if (known == std::end(kStrategyNames))
-        usageError("unknown strategy '" + s + "'");
-      o.strategy = Strategy(known - std::begin(kStrategyNames));
-    } else if (name == "--steps") {
-      o.steps = parseInteger(name, value(), 0, LLONG_MAX / 2);
-    } else if (name == "--repeat") {
-      o.repeat = (int)parseInteger(name, value(), 1, 100000);
-    } else if (name == "--group-size") {
-      o.groupSize = (int)parseInteger(name, value(), 32, 1024);
-      if (o.groupSize % 32)
-        usageError("--group-size must be a multiple of 32");
-    } else if (name == "--interp") {
-      o.interp = value();
-      if (o.interp != "linear" && o.interp != "cubic")
-        usageError("--interp expects linear or cubic");
-    } else if (name == "--m-on-host") {
-      o.mOnHost = true;
-    } else if (name == "--dump") {
-      o.dumpDir = value();
-    } else if (name == "--json") {
-      o.jsonPath = value();
-    } else if (name == "--set") {
-      std::string pair = value();
-      size_t eq = pair.find('=');
-      if (eq == std::string::npos)
-        usageError("--set expects NAME=VALUE");
-      std::string key = pair.substr(0, eq), text = pair.substr(eq + 1);
-      if (key == "range")
-        o.params.range = parseInteger(key, text, 1, 1ll << 31);
-      else if (key == "L")
-        o.params.rounds = (int)parseInteger(key, text, 0, INT_MAX);
-      else if (key == "dist")
-        o.params.dist = (int)parseInteger(key, text, INT_MIN, INT_MAX);
-      else if (key == "group")
-        o.params.group = (int)parseInteger(key, text, INT_MIN, INT_MAX);
-      else if (key == "dt") {
-        char *end = nullptr;
-        o.params.dt = std::strtof(text.c_str(), &end);
-        if (text.empty() || *end)
-          usageError("dt expects a number, got '" + text + "'");
-      } else {
-        usageError("unknown parameter '" + key +
-                   "' (range, dt, L, dist or group)");
-      }
-    } else {
-      usageError("unknown option '" + name + "'");
-    }
-  }
+  sim::bench::BaselineCommandLine commandLine(
+      compat::programName(), kOverview, kIntro, kFooter, o,
+      {32, 1024, 32,
+       "threads per group: the hip sub-step group, a\n"
+       "multiple of 32 from 32 to 1024 (default 256)"});
+  commandLine.app
+      .add_flag("--m-on-host", o.mOnHost,
+                "read the clock after every big step (the paper's\n"
+                "implementation) instead of once per batch")
+      ->disable_flag_override();
+  commandLine.parse(argc, argv);
   return o;
 }
 

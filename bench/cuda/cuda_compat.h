@@ -38,6 +38,7 @@
 namespace compat {
 
 inline const char *backendName() { return "cuda"; }
+inline const char *programName() { return "sim-baseline-cuda"; }
 
 inline std::string deviceName() {
   int count = 0;
@@ -178,6 +179,7 @@ inline unsigned long long atomicAdd(unsigned long long *address,
 namespace compat {
 
 inline const char *backendName() { return "host"; }
+inline const char *programName() { return "sim-baseline-host"; }
 inline std::string deviceName() { return "host emulation of the CUDA kernels"; }
 
 template <typename T> T *deviceAlloc(size_t count) {

@@ -127,10 +127,15 @@ sim_status sim_strategy_parse(const char *name, sim_strategy *out) {
   SIM_REQUIRE(name);
   SIM_REQUIRE(out);
   std::optional<Strategy> strategy = parseStrategy(name);
-  if (!strategy)
-    return failWith(SIM_ERROR_INVALID_ARGUMENT,
-                    "unknown strategy '" + std::string(name) +
-                        "' (simple, traditional, hip, hip-cache)");
+  if (!strategy) {
+    // Every name the runtime knows, so that a new strategy is listed too.
+    std::string known;
+    for (int index = 0; index < kNumStrategies; ++index)
+      known += (index ? ", " : "") + std::string(strategyName(Strategy(index)));
+    return failWith(SIM_ERROR_INVALID_ARGUMENT, "unknown strategy '" +
+                                                    std::string(name) + "' (" +
+                                                    known + ")");
+  }
   *out = sim_strategy(*strategy);
   lastError.clear();
   return SIM_OK;

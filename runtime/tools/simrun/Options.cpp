@@ -3,14 +3,15 @@
 // The options are declared once, with CLI11: name, value name, help text
 // and a transform that checks the value's domain and writes it back in
 // canonical decimal (so that CLI11's own conversion, which reads "010" as
-// octal, never sees anything but plain digits). A custom formatter prints
-// the help in the layout of LLVM's tools, which docs/Runtime.md shows.
+// octal, never sees anything but plain digits). The generic validators and
+// the help layout of LLVM's tools (which docs/Runtime.md shows) are
+// CommandLine.h's, which the hand-written baselines share.
 //
 //===----------------------------------------------------------------------===//
 
 #include "Options.h"
 
-#include <CLI/CLI.hpp>
+#include "CommandLine.h"
 
 #include <cerrno>
 #include <cmath>
@@ -36,28 +37,7 @@ bool isCompileTimeSetting(const std::string &name) {
 
 std::optional<int64_t> parseInteger(std::string_view text, int64_t min,
                                     int64_t max) {
-  bool negative = !text.empty() && text.front() == '-';
-  std::string_view digits = negative ? text.substr(1) : text;
-  if (digits.empty())
-    return std::nullopt;
-  // Accumulate the magnitude as unsigned, so that INT64_MIN parses too.
-  uint64_t magnitude = 0;
-  for (char c : digits) {
-    if (c < '0' || c > '9')
-      return std::nullopt;
-    uint64_t digit = uint64_t(c - '0');
-    if (magnitude > (std::numeric_limits<uint64_t>::max() - digit) / 10)
-      return std::nullopt;
-    magnitude = magnitude * 10 + digit;
-  }
-  uint64_t limit = negative ? uint64_t(std::numeric_limits<int64_t>::max()) + 1
-                            : uint64_t(std::numeric_limits<int64_t>::max());
-  if (magnitude > limit)
-    return std::nullopt;
-  int64_t value = negative ? int64_t(0 - magnitude) : int64_t(magnitude);
-  if (value < min || value > max)
-    return std::nullopt;
-  return value;
+  return simcli::parseInteger(text, min, max);
 }
 
 std::optional<int64_t> parseSize(std::string_view text) {
@@ -107,25 +87,16 @@ std::optional<double> parseNonNegative(std::string_view text) {
 
 namespace {
 
+using simcli::assignment;
+using simcli::describe;
+using simcli::inQuotes;
+using simcli::integerIn;
+using simcli::oneOf;
+using simcli::path;
+
 //===----------------------------------------------------------------------===//
 // Validators: check a value's domain, rewrite it in canonical form
 //===----------------------------------------------------------------------===//
-
-/// "'<text>'": the value as the user wrote it, quoted.
-std::string inQuotes(const std::string &text) { return "'" + text + "'"; }
-
-/// An integer option in [min, max]; `domain` describes the range in words.
-CLI::Validator integerIn(int64_t min, int64_t max, const std::string &domain) {
-  return CLI::Validator(
-      [=](std::string &text) -> std::string {
-        std::optional<int64_t> value = parseInteger(text, min, max);
-        if (!value)
-          return inQuotes(text) + " is not " + domain;
-        text = std::to_string(*value);
-        return "";
-      },
-      "", "integer");
-}
 
 CLI::Validator size() {
   return CLI::Validator(
@@ -162,38 +133,6 @@ CLI::Validator knownName(sim_status (*parse)(const char *, T *)) {
         return "";
       },
       "", "name");
-}
-
-CLI::Validator oneOf(std::vector<std::string> names, const std::string &list) {
-  return CLI::Validator(
-      [=](std::string &text) -> std::string {
-        for (const std::string &name : names)
-          if (text == name)
-            return "";
-        return inQuotes(text) + " is not " + list;
-      },
-      "", "one of");
-}
-
-CLI::Validator assignment() {
-  return CLI::Validator(
-      [](std::string &text) -> std::string {
-        size_t equals = text.find('=');
-        if (equals == 0 || equals == std::string::npos)
-          return inQuotes(text) + " is not NAME=VALUE";
-        return "";
-      },
-      "", "assignment");
-}
-
-CLI::Validator path() {
-  return CLI::Validator(
-      [](std::string &text) -> std::string {
-        if (text.empty())
-          return "expects a path, not ''";
-        return "";
-      },
-      "", "path");
 }
 
 //===----------------------------------------------------------------------===//
@@ -235,36 +174,6 @@ ended with NaN or infinite values, 130 or 143 when SIGINT or SIGTERM
 stopped it.
 )";
 
-/// The layout of LLVM's tools: overview, usage, options with their value
-/// names ("--steps N"), -h last, then the footer.
-class HelpFormatter : public CLI::Formatter {
-public:
-  HelpFormatter() { column_width(30); }
-
-  std::string make_help(const CLI::App *app, std::string,
-                        CLI::AppFormatMode) const override {
-    std::ostringstream out;
-    out << "OVERVIEW: " << app->get_description() << "\n\n"
-        << "USAGE: sim-run <scene.simb | scene.mlir> [options]\n\n"
-        << kIntro << "\nOPTIONS:\n";
-    const CLI::Option *help = app->get_help_ptr();
-    for (const CLI::Option *option : app->get_options())
-      if (option->nonpositional() && option != help)
-        out << make_option(option, false);
-    out << make_option(help, false) << "\n" << app->get_footer();
-    return out.str();
-  }
-
-  std::string make_option_name(const CLI::Option *option, bool) const override {
-    std::string names;
-    for (const std::string &name : option->get_snames())
-      names += (names.empty() ? "-" : ", -") + name;
-    for (const std::string &name : option->get_lnames())
-      names += (names.empty() ? "--" : ", --") + name;
-    return names;
-  }
-};
-
 //===----------------------------------------------------------------------===//
 // The options
 //===----------------------------------------------------------------------===//
@@ -274,7 +183,8 @@ public:
 void declareOptions(CLI::App &app, Options &options, std::string &backend,
                     std::string &strategy, std::vector<std::string> &sets,
                     int64_t &reportEvery) {
-  app.formatter(std::make_shared<HelpFormatter>());
+  app.formatter(std::make_shared<simcli::HelpFormatter>(
+      "sim-run <scene.simb | scene.mlir> [options]", kIntro));
   app.footer(kFooter);
   app.set_help_flag("-h,--help", "print this help");
   // A repeated option takes its last value, as in most tools; --set
@@ -432,26 +342,6 @@ void declareOptions(CLI::App &app, Options &options, std::string &backend,
                  "(default 0: three quarters of its memory)")
       ->option_text("SIZE")
       ->transform(size());
-}
-
-/// CLI11's message for a parse error, in sim-run's words where CLI11's are
-/// unclear.
-std::string describe(const CLI::ParseError &error) {
-  std::string message = error.what();
-  // "--steps: 1 required N missing"
-  const std::string missing = " missing";
-  size_t colon = message.find(": ");
-  if (error.get_name() == "ArgumentMismatch" && colon != std::string::npos &&
-      message.size() > missing.size() &&
-      message.compare(message.size() - missing.size(), missing.size(),
-                      missing) == 0)
-    return message.substr(0, colon) + " expects a value";
-  // "check-finite was given a disallowed flag override"
-  const std::string override = " was given a disallowed flag override";
-  size_t at = message.find(override);
-  if (at != std::string::npos && at + override.size() == message.size())
-    return "--" + message.substr(0, at) + " takes no value";
-  return message;
 }
 
 } // namespace

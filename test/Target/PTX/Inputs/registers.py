@@ -112,8 +112,13 @@ def hand_written(args):
     flags = ["-O3", "-arch=" + args.arch, "-fmad=false", "-std=c++17",
              "-diag-suppress", "177"]
     host = find_host_compiler()
+    # bench/common/BaselineOptions.h includes runtime/tools/CommandLine.h,
+    # as bench/cuda/CMakeLists.txt says.
+    tools = os.path.join(os.path.dirname(os.path.abspath(args.source)),
+                         os.pardir, os.pardir, "runtime", "tools")
     with tempfile.TemporaryDirectory() as scratch:
         command = [nvcc] + flags + (["-ccbin", host] if host else []) + [
+            "-I", os.path.normpath(tools),
             "-Xptxas", "-v", "-c", args.source,
             "-o", os.path.join(scratch, "baseline.o")]
         result = subprocess.run(command, stdout=subprocess.PIPE,
