@@ -37,6 +37,7 @@
 //===----------------------------------------------------------------------===//
 
 #include "../common/BaselineOptions.h"
+#include "../common/Outputs.h"
 #include "../common/RunJson.h"
 #include "../common/Scenes.h"
 #include "GlibcTanh.h"
@@ -418,8 +419,10 @@ inline void storeChunk(const Half &half, long long i0, int count,
 // Lts: the scenes here read no buffer of their own at other items, so no
 // component takes local time steps and lts plans what hip plans (docs/
 // Model.md, "Local time stepping"): it runs as Hip.
+using sim::bench::median;
 using sim::bench::Strategy;
 using sim::bench::strategyName;
+using sim::bench::writeNpy;
 
 struct Options : sim::bench::SceneOptions {
   int threads = 0; // 0: OpenMP's default (every core)
@@ -776,33 +779,6 @@ Options parseOptions(int argc, char **argv) {
       ->disable_flag_override();
   commandLine.parse(argc, argv);
   return o;
-}
-
-void writeNpy(const std::string &path, const std::vector<float> &values,
-              long long range) {
-  std::string header = "{'descr': '<f4', 'fortran_order': False, 'shape': (" +
-                       std::to_string(range) + ", 4), }";
-  size_t total = 10 + header.size() + 1;
-  header += std::string((64 - total % 64) % 64, ' ') + "\n";
-  std::string temporary = path + ".tmp";
-  std::ofstream out(temporary, std::ios::binary);
-  out.write("\x93NUMPY\x01\x00", 8);
-  unsigned short length = (unsigned short)header.size();
-  out.put((char)(length & 0xff)).put((char)(length >> 8));
-  out << header;
-  out.write(reinterpret_cast<const char *>(values.data()),
-            values.size() * sizeof(float));
-  out.close();
-  if (!out || std::rename(temporary.c_str(), path.c_str()) != 0) {
-    std::fprintf(stderr, "error: cannot write %s\n", path.c_str());
-    std::exit(1);
-  }
-}
-
-double median(std::vector<double> values) {
-  std::sort(values.begin(), values.end());
-  size_t n = values.size();
-  return n % 2 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
 }
 
 /// The instruction set the compiler targeted, as sim-run names ISA levels.

@@ -21,6 +21,7 @@
 #include "cuda_compat.h"
 
 #include "../common/BaselineOptions.h"
+#include "../common/Outputs.h"
 #include "../common/RunJson.h"
 #include "../common/Scenes.h"
 
@@ -437,8 +438,10 @@ __global__ void substepKernel(Clock *clock, Buffers buffers, Params p) {
 // Lts: the scenes here read no buffer of their own at other items, so no
 // component takes local time steps and lts plans what hip plans (docs/
 // Model.md, "Local time stepping"): it runs as Hip.
+using sim::bench::median;
 using sim::bench::Strategy;
 using sim::bench::strategyName;
+using sim::bench::writeNpy;
 
 struct Options : sim::bench::SceneOptions {
   /// Read the clock after every big step, as the paper's implementation.
@@ -628,33 +631,6 @@ Options parseOptions(int argc, char **argv) {
       ->disable_flag_override();
   commandLine.parse(argc, argv);
   return o;
-}
-
-void writeNpy(const std::string &path, const std::vector<float> &values,
-              long long range) {
-  std::string header = "{'descr': '<f4', 'fortran_order': False, 'shape': (" +
-                       std::to_string(range) + ", 4), }";
-  size_t total = 10 + header.size() + 1;
-  header += std::string((64 - total % 64) % 64, ' ') + "\n";
-  std::string temporary = path + ".tmp";
-  std::ofstream out(temporary, std::ios::binary);
-  out.write("\x93NUMPY\x01\x00", 8);
-  unsigned short length = (unsigned short)header.size();
-  out.put((char)(length & 0xff)).put((char)(length >> 8));
-  out << header;
-  out.write(reinterpret_cast<const char *>(values.data()),
-            values.size() * sizeof(float));
-  out.close();
-  if (!out || std::rename(temporary.c_str(), path.c_str()) != 0) {
-    std::fprintf(stderr, "error: cannot write %s\n", path.c_str());
-    std::exit(1);
-  }
-}
-
-double median(std::vector<double> values) {
-  std::sort(values.begin(), values.end());
-  size_t n = values.size();
-  return n % 2 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
 }
 
 template <typename Scene> int runScene(const Options &o) {
