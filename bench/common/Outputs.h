@@ -1,5 +1,4 @@
-//===- Outputs.h - What the hand-written baselines write --------*- C++
-//-*-===//
+//===- Outputs.h - What the hand-written baselines write --------*- C++ -*-===//
 //
 // The observed buffer as a .npy file (--dump; numpy.load reads it, as it
 // reads sim-run's) and the median of the measured runs, shared by
