@@ -475,11 +475,13 @@ private:
          !launch.exchange_targets.empty() ||
          !launch.exchange_sub_step.empty() ||
          !launch.exchange_local_step.empty() ||
+         !launch.exchange_local_flux.empty() ||
          !launch.reduce_max_levels.empty()))
       bad(about + " has " +
           (launch.exchange.empty() && launch.exchange_targets.empty() &&
                    launch.exchange_sub_step.empty() &&
-                   launch.exchange_local_step.empty()
+                   launch.exchange_local_step.empty() &&
+                   launch.exchange_local_flux.empty()
                ? "all-reduces"
                : "exchanges") +
           ", but the plan is not distributed");
@@ -568,6 +570,32 @@ private:
     }
     checkExchanged(launch.exchange_local_step,
                    "whose slot's blocks it exchanges");
+    if (!launch.exchange_local_flux.empty()) {
+      // The runtime reads the slot from the sub-step clock of the flux
+      // pair's reader and its blocks' sub-steps from its levels: the one
+      // Levels argument of the writer's slot launch.
+      bool fluxWriter = launch.component >= 0 &&
+                        size_t(launch.component) < plan.components.size() &&
+                        plan.components[size_t(launch.component)]->advance ==
+                            Advance::LocalFlux;
+      int levels = 0;
+      bool readerTakesLocalSteps = true;
+      for (const schema::Arg &a : launch.args)
+        if (a.kind() == ArgKind::Levels) {
+          ++levels;
+          readerTakesLocalSteps =
+              readerTakesLocalSteps && a.index() < plan.components.size() &&
+              plan.components[a.index()]->advance == Advance::LocalSteps;
+        }
+      if (!fluxWriter || levels != 1 || !readerTakesLocalSteps || !insideRepeat)
+        bad(about +
+            " exchanges the blocks a slot's fluxes are due in, but it is not "
+            "a slot launch (in a repeat) of a flux writer passing the levels "
+            "of one component that takes local time steps (which say which "
+            "blocks)");
+    }
+    checkExchanged(launch.exchange_local_flux,
+                   "whose slot's due fluxes it exchanges");
   }
 
   /// Verifies `steps` and counts the launches they unroll to into `count`.

@@ -403,6 +403,11 @@ Session::Prepared Session::prepareLaunch(const schema::LaunchT &launch) {
       if (!p.exchanges.back().replicated)
         p.exchanges.back().half = GhostRefresh::Half::LocalStep;
     }
+    for (uint32_t buffer : launch.exchange_local_flux) {
+      p.exchanges.push_back(refreshOf(buffer, false));
+      if (!p.exchanges.back().replicated)
+        p.exchanges.back().half = GhostRefresh::Half::LocalFlux;
+    }
   }
   return p;
 }
@@ -1228,11 +1233,13 @@ void Session::launchDistributed(Prepared &p, bool counted, bool step) {
   // takes). Every rank holds the same sub-step clock, so all skip alike.
   if (noOpLaunch(p))
     return;
-  // A slot launch whose blocks' items travel (exchange_local_step): its
-  // slot, the sub-step clock's Begin less T, before the launch moves it on.
+  // A slot launch whose blocks' items travel (exchange_local_step,
+  // exchange_local_flux): its slot, the sub-step clock's Begin less T,
+  // before the launch moves it on.
   int64_t slot = -1;
-  if (!p.launch->exchange_local_step.empty()) {
-    SubStepTimes t = subStepTimes(int(p.launch->component));
+  int stepping = slotComponent(*p.launch);
+  if (stepping >= 0) {
+    SubStepTimes t = subStepTimes(stepping);
     slot = t.subBegin - t.begin;
   }
   const std::vector<uint32_t> &slots = p.launch->reduce_min;
@@ -1319,9 +1326,10 @@ void Session::launchDistributed(Prepared &p, bool counted, bool step) {
   std::vector<GhostRefresh> refreshes;
   size_t entries = 0;
   for (const GhostRefresh &entry : p.exchanges) {
-    if (entry.half == GhostRefresh::Half::LocalStep) {
+    if (entry.half == GhostRefresh::Half::LocalStep ||
+        entry.half == GhostRefresh::Half::LocalFlux) {
       // Counted where items of the blocks the slot started travel.
-      entries += slotRefreshes(entry, int(p.launch->component), slot, parity,
+      entries += slotRefreshes(entry, slotComponent(*p.launch), slot, parity,
                                refreshes);
       continue;
     }
@@ -1335,6 +1343,18 @@ void Session::launchDistributed(Prepared &p, bool counted, bool step) {
     refreshes.push_back(r);
   }
   beginGhosts(refreshes, counted, entries);
+}
+
+int Session::slotComponent(const schema::LaunchT &launch) const {
+  if (!launch.exchange_local_step.empty())
+    return int(launch.component);
+  // A flux writer's slot: its one Levels argument is the flux pair's
+  // reader (BundleVerifier checks), whose clock and levels say which.
+  if (!launch.exchange_local_flux.empty())
+    for (const schema::Arg &arg : launch.args)
+      if (arg.kind() == schema::ArgKind::Levels)
+        return int(arg.index());
+  return -1;
 }
 
 bool Session::slotRefreshes(const GhostRefresh &r, int component, int64_t slot,
@@ -1403,7 +1423,9 @@ bool Session::slotRefreshes(const GhostRefresh &r, int component, int64_t slot,
                "' has the sub-step " + std::to_string(step) +
                ", not a power of two, at slot " + std::to_string(slot));
     if (slot % step == 0)
-      selection.halfOfBlock[i] = int(1 - (parity ^ ((slot / step) & 1)));
+      selection.halfOfBlock[i] = r.half == GhostRefresh::Half::LocalFlux
+                                     ? int(1 - parity)
+                                     : int(1 - (parity ^ ((slot / step) & 1)));
   }
   bool any = false;
   for (int h = 0; h < 2; ++h) {

@@ -121,10 +121,18 @@ private:
     /// `exchange_targets`), only the half the launch's grid-wide sub-step
     /// wrote (`exchange_sub_step`), or only the items of the blocks a local
     /// time step's slot started, in the halves they wrote
-    /// (`exchange_local_step`); launchDistributed points a copy's `base`
+    /// (`exchange_local_step`), or only the target half's items of the
+    /// blocks where a flux pair's reader starts a sub-step at the slot
+    /// (`exchange_local_flux`); launchDistributed points a copy's `base`
     /// at one half and gives it `halves` 1 (and, for a slot, `lists` of
     /// the items of that half).
-    enum class Half { Both, Target, SubStep, LocalStep } half = Half::Both;
+    enum class Half {
+      Both,
+      Target,
+      SubStep,
+      LocalStep,
+      LocalFlux
+    } half = Half::Both;
     /// Where element `e` of half `half` lies.
     DevicePtr element(int half, int64_t e) const {
       return base + DevicePtr(half * elements + e) * stride;
@@ -213,11 +221,17 @@ private:
   void endGhosts();
   /// Of a `local_steps` component's buffer `r` (Half::LocalStep), after
   /// the launch of slot `slot`: the refreshes of the items of the blocks
-  /// that started a sub-step at the slot, one per half they wrote
-  /// (appended to `out`, their lists in `slotSelections`); whether any
-  /// item travels to, from or within this rank.
+  /// of `component` that started a sub-step at the slot, one per half they
+  /// wrote (appended to `out`, their lists in `slotSelections`); of a flux
+  /// writer's buffer (Half::LocalFlux, `component` the flux pair's reader),
+  /// the target half's items of those blocks. Returns whether any item
+  /// travels to, from or within this rank.
   bool slotRefreshes(const GhostRefresh &r, int component, int64_t slot,
                      int64_t parity, std::vector<GhostRefresh> &out);
+  /// The component whose slot a launch's selective exchange follows: its
+  /// own (`exchange_local_step`), the flux pair's reader
+  /// (`exchange_local_flux`), or -1.
+  int slotComponent(const schema::LaunchT &launch) const;
   /// Launches `p` while the exchange under way travels: its groups whose
   /// items' windows stay inside the block first, then (the ghost items in
   /// place) the others; or, where that cannot be, after the exchange.

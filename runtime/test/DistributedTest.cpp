@@ -604,6 +604,15 @@ TEST(Distributed, VerifierChecksTheRecords) {
   expectBad(std::move(contents),
             "exchanges the blocks a slot wrote, but it is not a slot launch "
             "(in a repeat) of a component that takes local time steps");
+  // The blocks a slot's fluxes are due in: only a flux writer's slot
+  // launch, in a repeat, passing the levels of its reader, has them.
+  contents = ringContents(Boundary::Wrap);
+  contents.plans[0]->phases[1]->body[2]->launch->exchange.clear();
+  contents.plans[0]->phases[1]->body[2]->launch->exchange_local_flux = {0};
+  expectBad(std::move(contents),
+            "exchanges the blocks a slot's fluxes are due in, but it is not a "
+            "slot launch (in a repeat) of a flux writer passing the levels of "
+            "one component that takes local time steps");
 }
 
 /// mpirun -n N sim-run --distributed against sim-run on one process: the

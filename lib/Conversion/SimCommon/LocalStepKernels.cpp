@@ -1155,6 +1155,17 @@ LogicalResult SimulationLowering::emitLocalSteps(ComponentOp component,
       target.reduceIntoClock(b, kernel, count, arith::AtomicRMWKind::addi,
                              evaluationSlots.lookup(fluxWriter));
     });
+    // It writes the target half, and only the interfaces due at the slot.
+    // Interface j is due where its coarsest reader starts a sub-step; when
+    // the readers' window holds offset 0, item j is one of them, and its
+    // block's sub-step divides the coarsest one (powers of two): the
+    // interfaces of the blocks that start a sub-step at the slot are a
+    // superset of those due, and only they travel. Otherwise the whole
+    // target half does.
+    ArrayRef<int64_t> readers = fluxWriter.getFluxWindowAttr().asArrayRef();
+    pendingWrittenHalf = readers[0] <= 0 && readers[1] >= 0
+                             ? WrittenHalf::LocalFlux
+                             : WrittenHalf::Target;
     if (failed(endKernel(kernel, simplan::LaunchShape::items, slotLaunches,
                          fluxWriter)))
       return failure();

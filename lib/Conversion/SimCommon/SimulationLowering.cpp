@@ -274,8 +274,11 @@ LogicalResult SimulationLowering::endKernel(Kernel &kernel,
   // sub-step writes the half its sub-step count selects, and only that one
   // travels; a local time step's slot writes the blocks that start a
   // sub-step at it, each into the half its sub-step count selects, and
-  // only those travel.
-  SmallVector<Attribute> exchangeTargets, exchangeSubStep, exchangeLocalStep;
+  // only those travel; a flux pair's slot writes the target half of the
+  // interfaces due at it, and those of the blocks where the pair's reader
+  // starts a sub-step travel.
+  SmallVector<Attribute> exchangeTargets, exchangeSubStep, exchangeLocalStep,
+      exchangeLocalFlux;
   WrittenHalf written = pendingWrittenHalf;
   pendingWrittenHalf = WrittenHalf::Advance;
   if (distributed && component) {
@@ -289,6 +292,8 @@ LogicalResult SimulationLowering::endKernel(Kernel &kernel,
       list = &exchangeSubStep;
     else if (written == WrittenHalf::LocalStep)
       list = &exchangeLocalStep;
+    else if (written == WrittenHalf::LocalFlux)
+      list = &exchangeLocalFlux;
     for (FlatSymbolRefAttr write :
          component.getWrites().getAsRange<FlatSymbolRefAttr>())
       if (travels(simulation.lookupBuffer(write)))
@@ -313,7 +318,9 @@ LogicalResult SimulationLowering::endKernel(Kernel &kernel,
       exchangeSubStep.empty() ? ArrayAttr()
                               : launches.getArrayAttr(exchangeSubStep),
       exchangeLocalStep.empty() ? ArrayAttr()
-                                : launches.getArrayAttr(exchangeLocalStep));
+                                : launches.getArrayAttr(exchangeLocalStep),
+      exchangeLocalFlux.empty() ? ArrayAttr()
+                                : launches.getArrayAttr(exchangeLocalFlux));
   return success();
 }
 

@@ -492,9 +492,10 @@ PlanReader::readLaunch(simplan::LaunchOp launch) {
     for (int64_t slot : *slots)
       record->reduce_min.push_back(uint32_t(slot));
   // Where a buffer's ghost items travel: both halves (or its snapshot),
-  // the target half, the half the sub-step wrote, or the blocks a local
-  // time step's slot started in the halves they wrote.
-  enum class Half { Both, Target, SubStep, LocalStep };
+  // the target half, the half the sub-step wrote, the blocks a local time
+  // step's slot started in the halves they wrote, or the target half of
+  // the blocks where a flux pair's fluxes may be due at the slot.
+  enum class Half { Both, Target, SubStep, LocalStep, LocalFlux };
   auto exchange = [&](ArrayAttr names, bool snapshot,
                       Half half = Half::Both) -> LogicalResult {
     if (!names)
@@ -510,6 +511,8 @@ PlanReader::readLaunch(simplan::LaunchOp launch) {
         record->exchange_sub_step.push_back(found->second);
       else if (half == Half::LocalStep)
         record->exchange_local_step.push_back(found->second);
+      else if (half == Half::LocalFlux)
+        record->exchange_local_flux.push_back(found->second);
       else
         record->exchange.emplace_back(found->second, snapshot);
     }
@@ -519,8 +522,10 @@ PlanReader::readLaunch(simplan::LaunchOp launch) {
       failed(exchange(launch.getExchangeSnapshotsAttr(), true)) ||
       failed(exchange(launch.getExchangeTargetsAttr(), false, Half::Target)) ||
       failed(exchange(launch.getExchangeSubStepAttr(), false, Half::SubStep)) ||
+      failed(exchange(launch.getExchangeLocalStepAttr(), false,
+                      Half::LocalStep)) ||
       failed(
-          exchange(launch.getExchangeLocalStepAttr(), false, Half::LocalStep)))
+          exchange(launch.getExchangeLocalFluxAttr(), false, Half::LocalFlux)))
     return failure();
   if (ArrayAttr names = launch.getReduceMaxLevelsAttr())
     for (auto name : names.getAsRange<FlatSymbolRefAttr>()) {

@@ -452,3 +452,56 @@ module attributes {gpu.container_module} {
     }
   }
 }
+
+// -----
+
+module attributes {gpu.container_module} {
+  simplan.plan @p strategy("lts") kernels(@k) range(4) dt(1.0e-2 : f32) max_steps(2) step_cap(2) group_size(32) clock_slots(13) histogram(9) distributed halo(1) {
+    simplan.buffer @F : f32 stride(4) halo [1, 1]
+    simplan.component @C writes [] evaluations(8) advance local_steps sub_clock(9) level_reach(40)
+    simplan.component @E writes [@F] evaluations(10) advance whole_step
+    simplan.phase step {
+      // expected-error @+1 {{'simplan.launch' op exchanges @F by the blocks its slot's fluxes are due in, but the launch is not for a local_flux component}}
+      simplan.launch @k::@local_flux_E items [#simplan.arg<buffer @F>, #simplan.arg<levels @C>, #simplan.arg<first>] for @E exchange_local_flux [@F]
+    }
+  }
+}
+
+// -----
+
+module attributes {gpu.container_module} {
+  simplan.plan @p strategy("lts") kernels(@k) range(4) dt(1.0e-2 : f32) max_steps(2) step_cap(2) group_size(32) clock_slots(13) histogram(9) distributed halo(1) {
+    simplan.buffer @F : f32 stride(4) halo [1, 1]
+    simplan.component @E writes [@F] evaluations(10) advance local_flux
+    simplan.phase step {
+      // expected-error @+1 {{'simplan.launch' op exchanges @F by the blocks its slot's fluxes are due in, but passes the levels of 0 components instead of those of the flux pair's reader}}
+      simplan.launch @k::@local_flux_E items [#simplan.arg<buffer @F>, #simplan.arg<first>] for @E exchange_local_flux [@F]
+    }
+  }
+}
+
+// -----
+
+module attributes {gpu.container_module} {
+  simplan.plan @p strategy("lts") kernels(@k) range(4) dt(1.0e-2 : f32) max_steps(2) step_cap(2) group_size(32) clock_slots(13) histogram(9) distributed halo(1) {
+    simplan.buffer @F : f32 stride(4) halo [1, 1]
+    simplan.component @E writes [@F] evaluations(10) advance local_flux
+    simplan.phase step {
+      // expected-error @+1 {{'simplan.launch' op exchanges @F both by its target half and by the blocks its slot's fluxes are due in}}
+      simplan.launch @k::@local_flux_E items [#simplan.arg<buffer @F>, #simplan.arg<first>] for @E exchange_targets [@F] exchange_local_flux [@F]
+    }
+  }
+}
+
+// -----
+
+module attributes {gpu.container_module} {
+  simplan.plan @p strategy("lts") kernels(@k) range(4) dt(1.0e-2 : f32) max_steps(2) step_cap(2) group_size(32) clock_slots(13) histogram(9) {
+    simplan.buffer @F : f32 stride(4)
+    simplan.component @E writes [@F] evaluations(10) advance local_flux
+    simplan.phase step {
+      // expected-error @+1 {{'simplan.launch' op communicates between ranks in a plan that is not distributed}}
+      simplan.launch @k::@local_flux_E items [#simplan.arg<buffer @F>] for @E exchange_local_flux [@F]
+    }
+  }
+}

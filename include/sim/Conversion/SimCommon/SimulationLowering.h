@@ -201,7 +201,7 @@ private:
   /// half a grid-wide sub-step writes (`exchange_sub_step`), `LocalStep`
   /// the blocks a local time step's slot starts and the halves they write
   /// (`exchange_local_step`).
-  enum class WrittenHalf { Advance, Target, SubStep, LocalStep };
+  enum class WrittenHalf { Advance, Target, SubStep, LocalStep, LocalFlux };
   WrittenHalf pendingWrittenHalf = WrittenHalf::Advance;
 
   Operation *kernels;

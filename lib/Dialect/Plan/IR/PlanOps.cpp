@@ -284,7 +284,7 @@ LaunchOp::verifyCommunication(PlanOp plan, SymbolTableCollection &symbolTable) {
   if (!distributed &&
       (getReduceMin() || getExchange() || getExchangeSnapshots() ||
        getReduceMaxLevels() || getExchangeTargets() || getExchangeSubStep() ||
-       getExchangeLocalStep()))
+       getExchangeLocalStep() || getExchangeLocalFlux()))
     return emitOpError() << "communicates between ranks in a plan that is not "
                             "distributed";
   if (std::optional<ArrayRef<int64_t>> slots = getReduceMin())
@@ -297,6 +297,7 @@ LaunchOp::verifyCommunication(PlanOp plan, SymbolTableCollection &symbolTable) {
                                  std::pair(getExchangeTargetsAttr(), false),
                                  std::pair(getExchangeSubStepAttr(), false),
                                  std::pair(getExchangeLocalStepAttr(), false),
+                                 std::pair(getExchangeLocalFluxAttr(), false),
                                  std::pair(getExchangeSnapshotsAttr(), true)}) {
     if (!names)
       continue;
@@ -313,10 +314,12 @@ LaunchOp::verifyCommunication(PlanOp plan, SymbolTableCollection &symbolTable) {
   }
   // A buffer travels one way after a launch.
   ArrayAttr ways[] = {getExchangeAttr(), getExchangeTargetsAttr(),
-                      getExchangeSubStepAttr(), getExchangeLocalStepAttr()};
+                      getExchangeSubStepAttr(), getExchangeLocalStepAttr(),
+                      getExchangeLocalFluxAttr()};
   const char *wayNames[] = {"whole", "by its target half",
                             "by the half its sub-step wrote",
-                            "by the blocks and halves its slot wrote"};
+                            "by the blocks and halves its slot wrote",
+                            "by the blocks its slot's fluxes are due in"};
   constexpr int kWays = std::size(ways);
   for (int one = 0; one < kWays; ++one)
     for (int other = one + 1; other < kWays; ++other)
@@ -361,6 +364,26 @@ LaunchOp::verifyCommunication(PlanOp plan, SymbolTableCollection &symbolTable) {
                            << " by the blocks and halves its slot wrote, but "
                               "does not pass the levels of "
                            << getComponentAttr() << ", which say which";
+  }
+  if (ArrayAttr names = getExchangeLocalFluxAttr()) {
+    // The blocks come from the levels and the sub-step clock of the flux
+    // pair's reader, the one component whose levels the launch passes.
+    if (!componentAdvancing(mlir::sim::Advance::local_flux))
+      return emitOpError()
+             << "exchanges " << names[0]
+             << " by the blocks its slot's fluxes are due in, but the launch "
+                "is not for a local_flux component";
+    SmallVector<FlatSymbolRefAttr> levels;
+    for (auto arg : getArgs().getAsRange<ArgAttr>())
+      if (arg.getKind() == ArgKind::levels)
+        levels.push_back(arg.getName());
+    if (levels.size() != 1)
+      return emitOpError()
+             << "exchanges " << names[0]
+             << " by the blocks its slot's fluxes are due in, but passes the "
+                "levels of "
+             << levels.size()
+             << " components instead of those of the flux pair's reader";
   }
   if (ArrayAttr names = getReduceMaxLevelsAttr())
     for (auto name : names.getAsRange<FlatSymbolRefAttr>()) {

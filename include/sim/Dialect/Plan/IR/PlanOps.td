@@ -366,6 +366,14 @@ def Plan_LaunchOp : Plan_Op<"launch", [
     `Steps` section of the component's `levels`), the blocks with
     `q mod s = 0`, half `1 - (parity xor ((q / s) mod 2))`; the other
     blocks' items, and the other half, are as they travelled before.
+    `exchange_local_flux` lists buffers of a flux pair's `local_flux`
+    writer (the launch's slot kernel, which passes the `levels` of the
+    pair's `local_steps` reader) of which only the target half's ghost
+    items of blocks where the reader starts a sub-step at the slot travel:
+    the blocks with `q mod s = 0`, `s` the sub-step of the reader's block
+    (an interface is due only where its coarsest reader starts a sub-step,
+    and an interface read by its own item has a reader in its block whose
+    sub-step divides that one's).
     `reduce_max_levels` lists components that take
     local time steps whose blocks' sub-step codes of the big step (half
     `parity` of their `levels`, written by `levels_C`) every rank replaces,
@@ -383,6 +391,7 @@ def Plan_LaunchOp : Plan_Op<"launch", [
     simplan.launch @k::@limit_levels_C items [...] reduce_max_levels [@C]
     simplan.launch @k::@substep_C items [...] for @C exchange_sub_step [@U]
     simplan.launch @k::@local_step_C items [...] for @C exchange_local_step [@U]
+    simplan.launch @k::@local_flux_E items [...] for @E exchange_local_flux [@F]
     ```
   }];
   let arguments = (ins SymbolRefAttr:$kernel, Plan_LaunchShapeAttr:$shape,
@@ -396,7 +405,8 @@ def Plan_LaunchOp : Plan_Op<"launch", [
                        OptionalAttr<FlatSymbolRefArrayAttr>:$reduce_max_levels,
                        OptionalAttr<FlatSymbolRefArrayAttr>:$exchange_targets,
                        OptionalAttr<FlatSymbolRefArrayAttr>:$exchange_sub_step,
-                       OptionalAttr<FlatSymbolRefArrayAttr>:$exchange_local_step);
+                       OptionalAttr<FlatSymbolRefArrayAttr>:$exchange_local_step,
+                       OptionalAttr<FlatSymbolRefArrayAttr>:$exchange_local_flux);
   let assemblyFormat = [{
     $kernel custom<EnumKeyword>($shape) $args (`for` $component^)?
     (`shared` `(` $shared_per_thread^ `,` $shared_fixed `)`)?
@@ -405,7 +415,8 @@ def Plan_LaunchOp : Plan_Op<"launch", [
     (`reduce_max_levels` $reduce_max_levels^)?
     (`exchange_targets` $exchange_targets^)?
     (`exchange_sub_step` $exchange_sub_step^)?
-    (`exchange_local_step` $exchange_local_step^)? attr-dict
+    (`exchange_local_step` $exchange_local_step^)?
+    (`exchange_local_flux` $exchange_local_flux^)? attr-dict
   }];
   let extraClassDeclaration = [{
     ::mlir::LogicalResult
