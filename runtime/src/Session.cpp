@@ -1359,9 +1359,10 @@ int Session::slotComponent(const schema::LaunchT &launch) const {
 
 bool Session::slotRefreshes(const GhostRefresh &r, int component, int64_t slot,
                             int64_t parity, std::vector<GhostRefresh> &out) {
-  // Every rank holds every block's sub-step of the big step
-  // (limit_levels_C limits the whole range on each), so sender and
-  // receiver select the same items, in the order the lists have.
+  // Every rank holds the sub-step of every block within its level reach
+  // (limit_levels_C limits those on each), those of its own and its
+  // ghost items among them, so sender and receiver select the same items,
+  // in the order the lists have.
   const int64_t blockItems = int64_t(schema::LocalStepBlock::Items);
   auto [found, fresh] = slotSelections.try_emplace({r.lists, r.buffer});
   SlotSelection &selection = found->second;

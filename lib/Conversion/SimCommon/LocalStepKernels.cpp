@@ -670,9 +670,10 @@ LogicalResult SimulationLowering::emitLocalSteps(ComponentOp component,
   // by the codes within `hops * radius` blocks. Every rank gathers the
   // codes of those blocks only (reduce_max_levels), a block more on each
   // side for the blocks its block's ends cut.
+  int64_t levelReach = 0;
   if (distributed) {
     int64_t window = std::max({distributedHalo, reach, fluxBelow, fluxAbove});
-    int64_t levelReach = window + kLevelBlock * (hops * radius + radius + 2);
+    levelReach = window + kLevelBlock * (hops * radius + radius + 2);
     auto planComponent = cast<simplan::ComponentOp>(
         SymbolTable::lookupSymbolIn(plan, component.getSymNameAttr()));
     planComponent.setLevelReachAttr(
@@ -684,6 +685,77 @@ LogicalResult SimulationLowering::emitLocalSteps(ComponentOp component,
   };
   auto stepsOf = [&](Kernel &kernel) {
     return b.mul(b.index(kLevelSteps), blocksOf(kernel));
+  };
+  // The blocks whose levels limit_levels_C limits: on one process every
+  // block; on a rank those with items within the level reach of its own,
+  // around the range, as the runtime's levelBlocksFor takes them. The
+  // codes the runtime gathers lie there (and levels_C writes no others),
+  // and the levels the rank's kernels read depend on no others; blocks
+  // further away keep the code 0 and levels nothing reads, so the work
+  // grows with the rank's block, not with the range. Two runs of blocks,
+  // [first[k], first[k] + count[k]) (index values), that share none.
+  struct BlockWindow {
+    Value first[2], count[2];
+  };
+  auto orI = [&](Value x, Value y) {
+    return arith::OrIOp::create(b, b.loc, x, y).getResult();
+  };
+  auto windowOf = [&](Kernel &kernel) -> BlockWindow {
+    Value blocks = blocksOf(kernel);
+    if (!distributed || !kernel.values.first)
+      return {{b.index(0), b.index(0)}, {blocks, b.index(0)}};
+    // In i64 items: the window may start below 0 or end past the range.
+    Value zero = b.i64(0), range = toI64(kernel.values.range);
+    Value first = toI64(kernel.values.first);
+    Value own =
+        b.sub(toI64(kernel.values.extent), b.i64(2 * kernel.values.halo));
+    Value low = b.sub(first, b.i64(levelReach));
+    Value high = b.add(b.add(first, own), b.i64(levelReach));
+    // Within two blocks of the whole range it is the whole range, so that
+    // the two runs never share a block.
+    Value whole = b.cmp(arith::CmpIPredicate::sge,
+                        b.add(b.sub(high, low), b.i64(2 * kLevelBlock)), range);
+    Value below = b.cmp(arith::CmpIPredicate::slt, low, zero);
+    Value above = b.cmp(arith::CmpIPredicate::sgt, high, range);
+    // [0, high) and [low + range, range) when it starts below 0, [0, high -
+    // range) and [low, range) when it ends past the range, else [low,
+    // high) alone.
+    Value aLow = b.select(orI(below, above), zero, low);
+    Value aHigh = b.select(above, b.sub(high, range), high);
+    Value bLow = b.select(below, b.add(low, range), b.select(above, low, zero));
+    Value bHigh = b.select(orI(below, above), range, zero);
+    aLow = b.select(whole, zero, aLow);
+    aHigh = b.select(whole, range, aHigh);
+    bLow = b.select(whole, zero, bLow);
+    bHigh = b.select(whole, zero, bHigh);
+    BlockWindow window;
+    int k = 0;
+    for (auto [from, to] : {std::pair(aLow, aHigh), std::pair(bLow, bHigh)}) {
+      Value firstBlock = blockOf(b.toIndex(from));
+      Value lastBlock =
+          blockOf(b.toIndex(b.sub(b.max(to, b.i64(1)), b.i64(1))));
+      Value count = b.add(b.sub(lastBlock, firstBlock), b.index(1));
+      window.first[k] = firstBlock;
+      window.count[k] = b.select(b.cmp(arith::CmpIPredicate::sgt, to, from),
+                                 count, b.index(0));
+      ++k;
+    }
+    return window;
+  };
+  // Block `w` of `window` (index), as an i64 block of the range.
+  auto windowBlock = [&](const BlockWindow &window, Value w) {
+    Value inFirst = b.cmp(arith::CmpIPredicate::ult, w, window.count[0]);
+    return toI64(b.select(inFirst, b.add(window.first[0], w),
+                          b.add(window.first[1], b.sub(w, window.count[0]))));
+  };
+  // Whether block `h` (i64) lies in `window`.
+  auto inWindow = [&](const BlockWindow &window, Value h) {
+    Value inside = b.constant(b.getI1Type(), 0);
+    for (int k = 0; k < 2; ++k)
+      inside = orI(inside, b.cmp(arith::CmpIPredicate::ult,
+                                 b.sub(h, toI64(window.first[k])),
+                                 toI64(window.count[k])));
+    return inside;
   };
   // The block `distance` blocks below (or above) block g (i64 values) and
   // whether it is one: around the range when a buffer the component writes
@@ -773,23 +845,25 @@ LogicalResult SimulationLowering::emitLocalSteps(ComponentOp component,
     storeLevel(kernel, levels, parity, g, level);
     return level;
   };
-  // Runs `body(g)` (i64) for every block of the range, spread over the
-  // lanes of an items launch: lane k of its `count` lanes takes blocks k,
-  // k + count, ... On one process `count` is the range, so every block
-  // has a lane of its own; a rank's launch covers its own items only but
-  // limits and codes every block of the range, as one process does.
+  // Runs `body(g)` (i64) for every block of the window (windowOf),
+  // spread over the lanes of an items launch: lane k of its `count` lanes
+  // takes the window's blocks k, k + count, ... On one process `count` is
+  // the range, so every block has a lane of its own; a rank's launch
+  // covers its own items, fewer than the window's blocks take only where
+  // the level reach is wide.
   auto forEachBlockOfLanes = [&](Kernel &kernel,
                                  function_ref<void(Value)> body) {
     Value first = kernel.values.first ? kernel.values.first : b.index(0);
     Value count = kernel.values.first ? b.sub(kernel.values.extent,
                                               b.index(2 * kernel.values.halo))
                                       : kernel.values.range;
-    Value blocks = blocksOf(kernel);
+    BlockWindow window = windowOf(kernel);
+    Value blocks = b.add(window.count[0], window.count[1]);
     auto blocksFrom = [&](Value lane) {
       auto loop = scf::ForOp::create(b, b.loc, lane, blocks, count);
       OpBuilder::InsertionGuard guard(b);
       b.setInsertionPoint(loop.getBody()->getTerminator());
-      body(toI64(loop.getInductionVar()));
+      body(windowBlock(window, loop.getInductionVar()));
     };
     target.forEachGroup(b, kernel, [&](Value base) {
       // A group whose lanes all lie past the blocks has none to take.
@@ -925,6 +999,8 @@ LogicalResult SimulationLowering::emitLocalSteps(ComponentOp component,
   // Where the run of equal codes of `codeSection` that holds each block
   // ends (the block after its last), from the last block back: what a
   // slot kernel walks where one thread runs a group's lanes (splitsGroups).
+  // Each run of the window (windowOf) on its own: a run of codes ends
+  // where the window's run does.
   auto runEnds = [&](Kernel &kernel, Value levels, int64_t codeSection,
                      int64_t runSection) {
     Value one = b.i64(1), zero = b.i64(0);
@@ -932,24 +1008,31 @@ LogicalResult SimulationLowering::emitLocalSteps(ComponentOp component,
     auto elementOf = [&](int64_t section, Value block) {
       return b.toIndex(b.add(b.mul(b.i64(section), blocks), block));
     };
-    auto loop = scf::ForOp::create(b, b.loc, zero, blocks, one);
-    OpBuilder::InsertionGuard guard(b);
-    b.setInsertionPoint(loop.getBody()->getTerminator());
-    Value g = b.sub(b.sub(blocks, one), loop.getInductionVar());
-    Value next = b.add(g, one);
-    Value end =
-        b.ifThenElse(
-             b.getI64Type(), b.cmp(arith::CmpIPredicate::slt, next, blocks),
-             [&]() -> SmallVector<Value> {
-               Value same = b.cmp(arith::CmpIPredicate::eq,
-                                  b.load(levels, elementOf(codeSection, next)),
-                                  b.load(levels, elementOf(codeSection, g)));
-               return {b.select(
-                   same, b.load(levels, elementOf(runSection, next)), next)};
-             },
-             [&]() -> SmallVector<Value> { return {next}; })
-            .getResult(0);
-    b.store(end, levels, elementOf(runSection, g));
+    BlockWindow window = windowOf(kernel);
+    for (int k = 0; k < 2; ++k) {
+      Value start = toI64(window.first[k]);
+      Value stop = b.add(start, toI64(window.count[k]));
+      auto loop =
+          scf::ForOp::create(b, b.loc, zero, toI64(window.count[k]), one);
+      OpBuilder::InsertionGuard guard(b);
+      b.setInsertionPoint(loop.getBody()->getTerminator());
+      Value g = b.sub(b.sub(stop, one), loop.getInductionVar());
+      Value next = b.add(g, one);
+      Value end =
+          b.ifThenElse(
+               b.getI64Type(), b.cmp(arith::CmpIPredicate::slt, next, stop),
+               [&]() -> SmallVector<Value> {
+                 Value same =
+                     b.cmp(arith::CmpIPredicate::eq,
+                           b.load(levels, elementOf(codeSection, next)),
+                           b.load(levels, elementOf(codeSection, g)));
+                 return {b.select(
+                     same, b.load(levels, elementOf(runSection, next)), next)};
+               },
+               [&]() -> SmallVector<Value> { return {next}; })
+              .getResult(0);
+      b.store(end, levels, elementOf(runSection, g));
+    }
   };
 
   // Where one thread runs a group's lanes (a CPU): the same sub-steps and
@@ -965,13 +1048,20 @@ LogicalResult SimulationLowering::emitLocalSteps(ComponentOp component,
     Value one = b.i64(1), zero = b.i64(0);
     Value blocks = toI64(blocksOf(kernel));
     Value steps = toI64(stepsOf(kernel));
+    // The window's blocks (windowOf), walked as 0 .. count - 1; a block
+    // outside it bounds nothing (its level reads as the big step).
+    BlockWindow window = windowOf(kernel);
+    Value count = toI64(b.add(window.count[0], window.count[1]));
+    auto blockAt = [&](Value w) { return windowBlock(window, b.toIndex(w)); };
     auto at = [&](Value block) { return b.toIndex(b.add(steps, block)); };
-    auto levelAt = [&](Value block) { return b.load(levels, at(block)); };
+    auto levelAt = [&](Value block) {
+      return b.select(inWindow(window, block), b.load(levels, at(block)), size);
+    };
     {
-      auto decode = scf::ForOp::create(b, b.loc, zero, blocks, one);
+      auto decode = scf::ForOp::create(b, b.loc, zero, count, one);
       OpBuilder::InsertionGuard guard(b);
       b.setInsertionPoint(decode.getBody()->getTerminator());
-      Value k = decode.getInductionVar();
+      Value k = blockAt(decode.getInductionVar());
       storeLevel(kernel, levels, parity, k,
                  decodedLevel(kernel, levels, parity, size, k));
     }
@@ -1000,12 +1090,12 @@ LogicalResult SimulationLowering::emitLocalSteps(ComponentOp component,
       b.createBlock(&sweeps.getAfter(), {}, b.getI1Type(), b.loc);
       Value changed = b.constant(b.getI1Type(), 0);
       for (bool forward : {true, false}) {
-        auto pass = scf::ForOp::create(b, b.loc, zero, blocks, one,
-                                       ValueRange{changed});
+        auto pass =
+            scf::ForOp::create(b, b.loc, zero, count, one, ValueRange{changed});
         OpBuilder::InsertionGuard inner(b);
         b.setInsertionPointToStart(pass.getBody());
         Value k = pass.getInductionVar();
-        Value g = forward ? k : b.sub(b.sub(blocks, one), k);
+        Value g = blockAt(forward ? k : b.sub(b.sub(count, one), k));
         Value any =
             arith::OrIOp::create(b, b.loc, pass.getRegionIterArg(0), relax(g));
         scf::YieldOp::create(b, b.loc, any);
@@ -1015,11 +1105,11 @@ LogicalResult SimulationLowering::emitLocalSteps(ComponentOp component,
       scf::YieldOp::create(b, b.loc, changed);
     }
     auto finest =
-        scf::ForOp::create(b, b.loc, zero, blocks, one, ValueRange{size});
+        scf::ForOp::create(b, b.loc, zero, count, one, ValueRange{size});
     {
       OpBuilder::InsertionGuard guard(b);
       b.setInsertionPointToStart(finest.getBody());
-      Value g = finest.getInductionVar();
+      Value g = blockAt(finest.getInductionVar());
       codesOfBlock(kernel, levels, size, g, levelAt);
       scf::YieldOp::create(b, b.loc,
                            b.min(finest.getRegionIterArg(0), levelAt(g)));
@@ -1066,18 +1156,20 @@ LogicalResult SimulationLowering::emitLocalSteps(ComponentOp component,
           });
         });
     } else {
-      // The lane of block 0 takes every block (a launch with the same
-      // arguments as the GPU's: the plan is one for both).
+      // The lane of the window's first block takes every block of the
+      // window (a launch with the same arguments as the GPU's: the plan is
+      // one for both).
       b.ifThen(running, [&] {
+        Value firstBlock = toI64(windowOf(kernel).first[0]);
         forEachBlockOfLanes(kernel, [&](Value g) {
-          b.ifThen(b.cmp(arith::CmpIPredicate::eq, g, b.i64(0)),
+          b.ifThen(b.cmp(arith::CmpIPredicate::eq, g, firstBlock),
                    [&] { limitInOnePass(kernel, levels, parity, size); });
         });
       });
     }
-    // Distributed plans: every rank limits the levels of the whole range,
-    // from the codes of all ranks' items: their maximum, as levels_C's
-    // atomics take it on one process.
+    // Distributed plans: every rank limits the levels of the blocks within
+    // its level reach, from the codes of the ranks' items there: their
+    // maximum, as levels_C's atomics take it on one process.
     if (distributed)
       pendingReduceLevels.push_back(FlatSymbolRefAttr::get(symbol));
     if (failed(endKernel(kernel, simplan::LaunchShape::items, launches)))

@@ -1,6 +1,7 @@
 // A plan for many processes under lts (--sim-front-end="strategy=lts
-// distributed=true"): every rank limits the levels of the whole range from
-// the maximum of all ranks' codes (reduce_max_levels on limit_levels_C),
+// distributed=true"): every rank limits the levels of the blocks within its
+// level reach from the maximum of the ranks' codes there (reduce_max_levels
+// on limit_levels_C),
 // the ghost items of the local_steps component's buffers travel after
 // every slot launch (those of the blocks that started a sub-step at the
 // slot, in the half each wrote) and after local_parity_C (the target
@@ -59,8 +60,8 @@ sim.simulation @rod range(100) dt(1.0e-2 : f32) max_steps(4) {
 // CHECK:         arith.cmpi eq, %[[AFTER]], %[[TOTAL]] : i64
 
 // The plan: the all-reduce of the levels before limit_levels_Rod (which
-// every rank runs over the blocks of the whole range, spread over the
-// lanes of its block), the exchange of @U after
+// every rank runs over the blocks within its level reach, spread over
+// the lanes of its block), the exchange of @U after
 // every slot launch (the blocks the slot started, exchange_local_step) and
 // after the parity copy (its target half).
 // Its codes come from the blocks within 161 items of a rank's block: the
