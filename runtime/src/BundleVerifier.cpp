@@ -32,6 +32,7 @@
 #include "Bundle.h"
 #include "Error.h"
 #include "SharedObject.h"
+#include "sim/Runtime/BundleFormat.h"
 
 #include <cmath>
 #include <set>
@@ -48,8 +49,6 @@ constexpr uint32_t kMaxLanes = 64;
 constexpr uint32_t kMaxStride = 1 << 16;
 /// The largest group size a plan may be made for.
 constexpr uint32_t kMaxGroupSize = 1 << 16;
-/// The widest halo of a distributed plan (ghost items on each side).
-constexpr uint32_t kMaxHalo = 1 << 20;
 
 [[noreturn]] void bad(const std::string &message) {
   fail(SIM_ERROR_BUNDLE, message);
@@ -217,10 +216,10 @@ private:
     if (plan.clock_slots > kMaxClockSlots)
       bad(what + " asks for a clock of " + std::to_string(plan.clock_slots) +
           " slots, more than " + std::to_string(kMaxClockSlots));
-    if (plan.distributed && plan.distributed->halo > kMaxHalo)
+    if (plan.distributed && plan.distributed->halo > bundle::kMaxHalo)
       bad(what + " is distributed with a halo of " +
           std::to_string(plan.distributed->halo) + " items, more than " +
-          std::to_string(kMaxHalo));
+          std::to_string(bundle::kMaxHalo));
     if (plan.histogram < kFirstFreeSlot ||
         uint64_t(plan.histogram) + uint64_t(scene.max_steps) + 1 >
             plan.clock_slots)

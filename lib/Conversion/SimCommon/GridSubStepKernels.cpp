@@ -41,7 +41,9 @@ LogicalResult SimulationLowering::emitSnapshots(ComponentOp component,
         });
       });
     });
-    if (distributed && travels(buffer))
+    // Only a later component reads the snapshot, and only where it reads
+    // other items do its ghosts travel (--sim-plan-halos decided).
+    if (distributed && travels(buffer) && buffer.getSnapshotGhosts())
       pendingExchangeSnapshots.push_back(write);
     if (failed(endKernel(kernel, simplan::LaunchShape::items, launches)))
       return failure();

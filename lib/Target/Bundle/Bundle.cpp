@@ -370,6 +370,20 @@ FailureOr<std::unique_ptr<fb::PlanT>> PlanReader::read(simplan::PlanOp op) {
   plan->clock_slots = op.getClockSlots();
   plan->histogram = op.getHistogramSlot();
   if (std::optional<int64_t> halo = op.getDistributedHalo()) {
+    // The plan's halo is the largest of its buffers', whose check (below)
+    // names the buffer; this one catches a plan written by hand.
+    bool buffersFit = llvm::all_of(
+        op.getBlock().getOps<simplan::BufferOp>(), [](simplan::BufferOp b) {
+          std::optional<ArrayRef<int64_t>> widths = b.getHalo();
+          return !widths || llvm::all_of(*widths, [](int64_t width) {
+            return width >= 0 && width <= int64_t(::sim::bundle::kMaxHalo);
+          });
+        });
+    if (buffersFit && (*halo < 0 || *halo > int64_t(::sim::bundle::kMaxHalo)))
+      return op.emitOpError()
+             << "is distributed with a halo of " << *halo
+             << " items; a rank holds at most " << ::sim::bundle::kMaxHalo
+             << " ghost items on each side of its block";
     plan->distributed = std::make_unique<fb::DistributionT>();
     plan->distributed->halo = uint32_t(*halo);
   }
@@ -388,6 +402,15 @@ FailureOr<std::unique_ptr<fb::PlanT>> PlanReader::read(simplan::PlanOp op) {
       record->snapshot = buffer.getSnapshot();
       if (std::optional<ArrayRef<int64_t>> halo = buffer.getHalo();
           halo && halo->size() == 2) {
+        for (int64_t width : *halo)
+          if (width < 0 || width > int64_t(::sim::bundle::kMaxHalo))
+            return emitError(buffer.getLoc())
+                   << "@" << buffer.getSymName() << " is read " << width
+                   << " items away from the reading item, and a distributed "
+                      "run holds at most "
+                   << ::sim::bundle::kMaxHalo
+                   << " ghost items on each side of a rank's block: narrow "
+                      "the window, or compile without --sim-distributed";
         record->halo_below = uint32_t((*halo)[0]);
         record->halo_above = uint32_t((*halo)[1]);
       }

@@ -40,6 +40,9 @@ struct PlanHalosPass : public sim::impl::SimPlanHalosBase<PlanHalosPass> {
     // and whether a gather reads it.
     llvm::MapVector<Operation *, std::pair<int64_t, int64_t>> halos;
     llvm::SetVector<Operation *> replicated;
+    // Buffers whose snapshot (their value at T) some interpolating read
+    // takes at other items; the snapshots of the others need no ghosts.
+    llvm::SetVector<Operation *> snapshotGhosts;
     auto record =
         [&](ReadOp read, const AccessPattern &pattern, StringRef body) {
           BufferOp buffer = simulation.lookupBuffer(read.getBufferAttr());
@@ -48,11 +51,21 @@ struct PlanHalosPass : public sim::impl::SimPlanHalosBase<PlanHalosPass> {
           // An interpolated read reads the auxiliary buffers of its
           // interpolation (a Hermite derivative) at the same items.
           SmallVector<BufferOp> reached = {buffer};
-          if (read.getRoleAttr() && read.getRole() == ReadRole::interpolate)
+          bool interpolates =
+              read.getRoleAttr() && read.getRole() == ReadRole::interpolate;
+          if (interpolates)
             for (FlatSymbolRefAttr aux :
                  buffer.getInterpolation().getAuxiliaryBuffers())
               if (BufferOp auxBuffer = simulation.lookupBuffer(aux))
                 reached.push_back(auxBuffer);
+          // An interpolated read at other items reads their snapshots
+          // there too (those that have one).
+          if (interpolates &&
+              (pattern.isGather() || pattern.getMinOffset() != 0 ||
+               pattern.getMaxOffset() != 0))
+            for (BufferOp target : reached)
+              if (target.getSnapshot())
+                snapshotGhosts.insert(target);
           if (pattern.isGather()) {
             read.emitRemark()
                 << "reads " << read.getBufferAttr() << " in " << body
@@ -90,6 +103,8 @@ struct PlanHalosPass : public sim::impl::SimPlanHalosBase<PlanHalosPass> {
     Builder builder(&getContext());
     for (Operation *op : replicated)
       cast<BufferOp>(op).setReplicatedAttr(builder.getUnitAttr());
+    for (Operation *op : snapshotGhosts)
+      cast<BufferOp>(op).setSnapshotGhostsAttr(builder.getUnitAttr());
     // A replicated buffer holds every item: it needs no ghosts.
     for (auto [op, halo] : halos) {
       if (replicated.contains(op))

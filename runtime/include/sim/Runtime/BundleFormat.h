@@ -39,6 +39,10 @@ constexpr size_t kHeaderSize = 32;
 /// The largest bundle a runtime reads (a bundle of every strategy of the
 /// paper's scenes takes well under 1 MiB).
 constexpr uint64_t kMaxBundleBytes = uint64_t(1) << 30;
+/// The widest halo of a distributed plan: the ghost items a rank holds on
+/// each side of its block. The compiler refuses a scene whose windows reach
+/// further, and the runtime a bundle that records more.
+constexpr uint32_t kMaxHalo = uint32_t(1) << 20;
 
 struct Header {
   uint32_t version = kFormatVersion;

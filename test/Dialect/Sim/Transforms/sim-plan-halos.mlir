@@ -136,3 +136,53 @@ sim.simulation @local range(64) dt(1.0e-2 : f32) max_steps(4) {
   sim.schedule [@Decay]
   sim.observe [@X]
 }
+
+// -----
+
+// The snapshot of a grid_sync component's buffer needs ghosts only where a
+// later component interpolates it at other items: @U's (read at i+1 by
+// @Watch) records snapshot_ghosts, @V's (read at its own item) does not.
+
+// CHECK-LABEL: sim.simulation @snapshots
+// CHECK: sim.buffer @U : f32 attributes {halo = array<i64: 1, 1>, snapshot, snapshot_ghosts} init
+// CHECK: sim.buffer @V : f32 attributes {halo = array<i64: 1, 0>, snapshot} init
+sim.simulation @snapshots range(64) dt(1.0e-2 : f32) max_steps(4) {
+  sim.buffer @U : f32 init {
+  ^bb0(%i: index):
+    %c = arith.constant 1.0 : f32
+    sim.yield %c : f32
+  }
+  sim.buffer @V : f32 init {
+  ^bb0(%i: index):
+    %c = arith.constant 1.0 : f32
+    sim.yield %c : f32
+  }
+  sim.buffer @W : f32 init {
+  ^bb0(%i: index):
+    %c = arith.constant 0.0 : f32
+    sim.yield %c : f32
+  }
+  sim.component @Diffuse writes(@U, @V) num_steps {
+  ^bb0(%i: index, %t: i64):
+    %c2 = arith.constant 2 : i32
+    sim.yield %c2 : i32
+  } evaluate {
+  ^bb0(%i: index, %t: i64, %n: i32, %dt: f32):
+    %c1 = arith.constant 1 : index
+    %l = arith.subi %i, %c1 : index
+    %ul = sim.read @U[%l] : f32
+    %vl = sim.read @V[%l] : f32
+    sim.yield %vl, %ul : f32, f32
+  }
+  sim.component @Watch writes(@W) evaluate {
+  ^bb0(%i: index, %t: i64, %n: i32, %dt: f32):
+    %c1 = arith.constant 1 : index
+    %r = arith.addi %i, %c1 : index
+    %u = sim.read @U[%r] : f32
+    %v = sim.read @V[%i] : f32
+    %s = arith.addf %u, %v : f32
+    sim.yield %s : f32
+  }
+  sim.schedule [@Diffuse, @Watch]
+  sim.observe [@W]
+}

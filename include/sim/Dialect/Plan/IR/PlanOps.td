@@ -349,7 +349,8 @@ def Plan_LaunchOp : Plan_Op<"launch", [
     consumes it); `exchange` lists buffers whose ghost items (both halves)
     travel after the launch, and `exchange_snapshots` buffers whose
     snapshot's ghost items do: the buffers the launch writes that some read
-    reaches at other items. `exchange_targets` lists buffers of which only
+    reaches at other items (for a snapshot, a later component's read:
+    `snapshot_ghosts` on the `sim.buffer`). `exchange_targets` lists buffers of which only
     the target half's ghost items travel (half `1 - parity`): those written
     by a component that advances by `whole_step` or `group_substeps`, whose
     launch writes the target half and leaves the source half, which every

@@ -240,6 +240,12 @@ def Sim_BufferOp : Sim_Op<"buffer", [
     - `replicated` (set by `--sim-plan-halos`, distributed scenes only): a
       gather reads the buffer, so every rank holds all of it and the blocks
       its writer computes are all-gathered after each write.
+    - `snapshot_ghosts` (set by `--sim-plan-halos`, distributed scenes
+      only, on a buffer with a `snapshot`): a later component reads other
+      items of the buffer between `T` and `T + m` (a window or a gather),
+      so the snapshot's ghost items (all of it when `replicated`) travel
+      after the snapshot is taken. Without it only the writer reads other
+      items, of its own halves, and the snapshot stays on its rank.
 
     ```mlir
     sim.buffer @X : f64 interp(#sim.hermite<@V>) boundary(wrap) init {
@@ -260,7 +266,7 @@ def Sim_BufferOp : Sim_Op<"buffer", [
                                          "::mlir::sim::Boundary::clamp">:$boundary,
                        UnitAttr:$snapshot,
                        OptionalAttr<DenseI64ArrayAttr>:$halo,
-                       UnitAttr:$replicated);
+                       UnitAttr:$replicated, UnitAttr:$snapshot_ghosts);
   let regions = (region SizedRegion<1>:$init, MaxSizedRegion<1>:$exact);
   let assemblyFormat = [{
     $sym_name `:` $element_type `` custom<InterpClause>($interp)
