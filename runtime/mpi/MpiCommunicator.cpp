@@ -10,8 +10,11 @@
 #include "MpiCommunicator.h"
 
 #include <algorithm>
+#include <cctype>
+#include <cerrno>
 #include <climits>
 #include <cstdint>
+#include <cstdio>
 #include <cstdlib>
 #include <mpi.h>
 #include <vector>
@@ -27,9 +30,28 @@ size_t maxMessage() {
   static const size_t limit = [] {
     size_t bytes = size_t(INT_MAX);
     if (const char *text = std::getenv("SIM_MPI_MAX_MESSAGE"); text && *text) {
+      // A value that is not a byte count from 1 up would be ignored
+      // silently: refuse it.
       char *end = nullptr;
+      errno = 0;
       unsigned long long value = std::strtoull(text, &end, 10);
-      if (*end == '\0' && value > 0 && value < bytes)
+      if (*end != '\0' || errno == ERANGE || value == 0 || *text == '-' ||
+          *text == '+' || std::isspace((unsigned char)*text)) {
+        // Every rank reads the same environment (mpirun passes it on):
+        // rank 0 says so once, then all stop.
+        int rank = 0;
+        MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+        if (rank == 0)
+          std::fprintf(stderr,
+                       "sim-run: error: SIM_MPI_MAX_MESSAGE='%s' is not a "
+                       "number of bytes from 1 to %d\n",
+                       text, INT_MAX);
+        std::fflush(stderr);
+        MPI_Barrier(MPI_COMM_WORLD);
+        MPI_Abort(MPI_COMM_WORLD, 2);
+        std::exit(2);
+      }
+      if (value < bytes)
         bytes = size_t(value);
     }
     return bytes;
@@ -206,6 +228,8 @@ extern "C" {
 __attribute__((visibility("default"))) void *
 sim_mpi_open(int *argc, char ***argv, sim_mpi_world_info *info) {
   auto *world = new sim::mpi::World(argc, argv);
+  // Read (and checked) now, on every rank alike, not at the first exchange.
+  sim::mpi::maxMessage();
   info->communicator = world->communicator();
   info->rank = world->rank();
   info->size = world->size();

@@ -285,7 +285,7 @@ Value parseValue(ScalarType type, std::string_view text,
   // strtoll and strtod skip leading blanks and accept an empty string; a
   // value is one token.
   if (copy.empty() || std::isspace((unsigned char)copy.front()))
-    bad("is not a " + typeName + " value");
+    bad("is not an " + typeName + " value");
   Value value;
   value.type = type;
   char *end = nullptr;
@@ -294,7 +294,7 @@ Value parseValue(ScalarType type, std::string_view text,
     value.f = type == ScalarType::F32 ? double(std::strtof(copy.c_str(), &end))
                                       : std::strtod(copy.c_str(), &end);
     if (*end)
-      bad("is not a " + typeName + " value");
+      bad("is not an " + typeName + " value");
     if (errno == ERANGE && std::isinf(value.f))
       bad("is out of range for " + typeName);
     return value;

@@ -119,9 +119,9 @@ std::string Decomposition::tooManyRanks() const {
   int64_t n = groups();
   return std::to_string(ranks()) + " ranks for a range of " +
          std::to_string(n) + (n == 1 ? " group" : " groups") + " of " +
-         std::to_string(groupSize_) + " items: use at most " +
-         std::to_string(n) + (n == 1 ? " rank" : " ranks") +
-         " or a smaller group size";
+         std::to_string(groupSize_) + (groupSize_ == 1 ? " item" : " items") +
+         ": use at most " + std::to_string(n) + (n == 1 ? " rank" : " ranks") +
+         (groupSize_ == 1 ? "" : " or a smaller group size");
 }
 
 int32_t Decomposition::owner(int64_t item) const {

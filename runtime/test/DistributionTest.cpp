@@ -106,6 +106,8 @@ TEST(Distribution, TooManyRanks) {
   EXPECT_EQ(Decomposition(5, 8, 2).tooManyRanks(),
             "2 ranks for a range of 1 group of 8 items: use at most 1 rank "
             "or a smaller group size");
+  EXPECT_EQ(Decomposition(3, 1, 4).tooManyRanks(),
+            "4 ranks for a range of 3 groups of 1 item: use at most 3 ranks");
 }
 
 TEST(Distribution, GhostSource) {

@@ -1057,7 +1057,64 @@ sim_strategy defaultStrategy(const sim_bundle *bundle, sim_strategy preferred) {
   return preferred; // No plan at all: the session says so.
 }
 
+/// --distributed: every rank must run the same steps and the same stops,
+/// checks and outputs, since each of them makes collective calls (a
+/// gather for --dump, an all-reduce per big step); a rank that ran fewer
+/// would leave the others waiting. Before anything else, so that it is the
+/// first collective call on every rank whatever the options. The session
+/// checks the bundle, strategy, group size, range, dt and parameters.
+void agreeOnRunOptions(const Options &options) {
+  if (!world)
+    return;
+  struct Named {
+    const char *what;
+    int64_t value;
+  };
+  auto given = [](const std::string &text) { return int64_t(!text.empty()); };
+  int64_t reference = options.reference.empty()       ? 0
+                      : options.reference == "simple" ? 1
+                                                      : 2;
+  const Named values[] = {
+      {"--steps", options.steps},
+      {"--repeat", options.repeat},
+      {"--output-every", options.outputEvery},
+      {"--output (given or not)", given(options.output)},
+      {"--checkpoint (given or not)", given(options.checkpoint)},
+      {"--checkpoint-every", options.checkpointEvery},
+      {"--restart (given or not)", given(options.restart)},
+      {"--reference (none, simple or exact)", reference},
+      {"--check", int64_t(options.check)},
+      {"--dump (given or not)", given(options.dump)},
+      {"--json (given or not)", given(options.json)},
+      {"--check-finite", int64_t(options.checkFinite)},
+      {"--progress", int64_t(options.progress)},
+      {"--no-init-check", int64_t(options.noInitCheck)},
+      {"--backend", int64_t(options.backend)},
+      {"--cuda-graph", int64_t(options.cudaGraph)},
+  };
+  // Each value's minimum and the minimum of its negation: the ranks agree
+  // when both give it back.
+  constexpr size_t n = std::size(values);
+  int64_t both[2 * n];
+  for (size_t i = 0; i < n; ++i) {
+    both[i] = values[i].value;
+    both[n + i] = -values[i].value;
+  }
+  if (world->allreduce_min_i64(world->user, both, int32_t(2 * n)) != 0)
+    runError("rank " + std::to_string(worldRank) +
+             ": the all-reduce that compares the ranks' options failed");
+  for (size_t i = 0; i < n; ++i)
+    if (both[i] != -both[n + i])
+      usageError("the ranks were given different " +
+                 std::string(values[i].what) + " (from " +
+                 std::to_string(both[i]) + " to " +
+                 std::to_string(-both[n + i]) + " over the " +
+                 std::to_string(worldSize) +
+                 " ranks): give every rank the same options");
+}
+
 int run(Options options) {
+  agreeOnRunOptions(options);
   // Before anything runs: the paths, the bundle, every session and every
   // --set, the dump files.
   OutputPlan outputs = planOutputs(options);
