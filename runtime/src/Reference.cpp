@@ -881,7 +881,9 @@ void ReferenceSession::localSteps(int32_t component, int64_t m) {
   // No block more than twice as coarse as a block within reach of its
   // window (ceil(reach / block) blocks, around the range under wrap).
   int64_t reach = std::max(-info.local_window[0], info.local_window[1]);
-  int64_t radius = (reach + group - 1) / group;
+  // A distance of `groups` or more reaches no other block than a shorter
+  // one does: a window wider than the range costs the range.
+  int64_t radius = std::min((reach + group - 1) / group, groups - 1);
   bool cyclic = false;
   for (uint32_t buffer : info.writes)
     cyclic |= buffers_[buffer].info->boundary == schema::Boundary::Wrap;

@@ -778,11 +778,14 @@ LogicalResult SimulationLowering::emitLocalSteps(ComponentOp component,
   // The minimum of `initial` and `valueOf(h)` over the blocks h
   // `distance` blocks below and above block g, for distance in [first,
   // end) (an scf.for; blocks past a range end that does not wrap count not).
+  // Distances of `blocks` or more reach no block (or, around the range, one
+  // already reached at a shorter distance, which bounds more): the loop
+  // stops there, so a window far wider than the range costs the range.
   auto minOverNeighbours = [&](Value g, Value first, Value end, Value initial,
                                Value blocks,
                                function_ref<Value(Value h)> valueOf) -> Value {
-    auto loop =
-        scf::ForOp::create(b, b.loc, first, end, b.i64(1), ValueRange{initial});
+    auto loop = scf::ForOp::create(b, b.loc, first, b.min(end, blocks),
+                                   b.i64(1), ValueRange{initial});
     OpBuilder::InsertionGuard guard(b);
     b.setInsertionPointToStart(loop.getBody());
     Value distance = loop.getInductionVar();
