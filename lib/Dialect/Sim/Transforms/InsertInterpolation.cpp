@@ -296,6 +296,17 @@ struct InsertInterpolationPass
     for (FlatSymbolRefAttr aux : interp.getAuxiliaryBuffers()) {
       BufferOp auxBuffer = simulation.lookupBuffer(aux);
       ComponentOp writer = simulation.getWriter(auxBuffer);
+      if (writer == component)
+        return read.emitOpError()
+               << "interpolates @" << buffer.getSymName() << " with " << interp
+               << ", which needs @" << auxBuffer.getSymName()
+               << " at the end of the big step, but @" << component.getSymName()
+               << " writes @" << auxBuffer.getSymName()
+               << " itself, so it is not there while @"
+               << component.getSymName()
+               << " runs; use #sim.linear or #sim.cubic for @"
+               << buffer.getSymName() << ", or write @"
+               << auxBuffer.getSymName() << " in a component that runs before";
       if (*simulation.getSchedulePosition(writer) >=
           *simulation.getSchedulePosition(component))
         return read.emitOpError()

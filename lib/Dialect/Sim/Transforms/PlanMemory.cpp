@@ -80,11 +80,12 @@ struct PlanMemoryPass : public sim::impl::SimPlanMemoryBase<PlanMemoryPass> {
           return component.getAdvance() == Advance::local_steps;
         }))
       simulation.emitRemark()
-          << "strategy lts: no component takes local time steps (none with "
-             "num_steps reads its own buffers at other items through a "
-             "window), so the plan is hip's; a stencil component with "
-             "num_steps that reads @B[%i + c] of a buffer it writes would take "
-             "them";
+          << "strategy lts: no component takes local time steps, so the "
+             "plan is hip's; a component takes them when it has num_steps, "
+             "reads a buffer it writes at other items through a window "
+             "(@B[%i + c]) and does not bound the big step (read through the "
+             "back edge); the remarks of --sim-substep-legality say why each "
+             "such component does not";
     simulation.setStrategyAttr(StrategyAttr::get(context, strategy));
     simulation.setStepCapAttr(IntegerAttr::get(
         IntegerType::get(context, 32), getStepCap(simulation, strategy)));

@@ -59,16 +59,16 @@ struct SubstepLegalityPass
           << "@" << component.getSymName()
           << " needs a grid-wide barrier between sub-steps: its "
           << stringifyBodyKind(hazard->body) << " body reads @"
-          << hazard->buffer.getSymName() << ", which it writes, at "
-          << hazard->pattern.str()
+          << hazard->buffer.getSymName() << ", which it writes, "
+          << describeWhere(hazard->pattern)
           << ", so a thread could read another item while that item is "
              "between sub-steps";
       ReadOp offending = *llvm::find_if(hazard->reads, [&](ReadOp read) {
         return !analysis.getPattern(read).isOwn();
       });
       remark.attachNote(offending.getLoc())
-          << "reads @" << hazard->buffer.getSymName() << " at "
-          << analysis.getPattern(offending).str();
+          << "reads @" << hazard->buffer.getSymName() << " "
+          << describeWhere(analysis.getPattern(offending));
       recordLocalWindow(analysis, component, offending, remark);
     }
     for (ComponentOp component : analysis.getComponents())
@@ -76,6 +76,11 @@ struct SubstepLegalityPass
     for (ComponentOp component : analysis.getComponents())
       recordFluxPair(analysis, component);
     markAllAnalysesPreserved();
+  }
+
+  /// "at i-1..i+1", or "through a gather".
+  static std::string describeWhere(const AccessPattern &pattern) {
+    return pattern.isGather() ? "through a gather" : "at " + pattern.str();
   }
 
   /// Records `flux_window` on `writer` and widens its reader's
@@ -255,9 +260,9 @@ struct SubstepLegalityPass
         });
         remark << "; under lts it cannot take local time steps: its "
                << stringifyBodyKind(access.body) << " body reads @" << name
-               << " through a gather, so the groups it reads are not known; "
+               << " through a gather, so the blocks it reads are not known; "
                   "a window (%i plus a bounded offset) lets the levels of "
-                  "neighbouring groups be limited";
+                  "neighbouring blocks be limited";
         if (gather != noted)
           remark.attachNote(gather.getLoc()) << "the gather of @" << name;
         return;
@@ -283,9 +288,27 @@ struct SubstepLegalityPass
       }
       window = window.join(access.pattern);
     }
+    // A component that bounds the big step (it reads through the back
+    // edge) takes it in one evaluation under lts too.
+    // (Without a schedule, run before --sim-schedule, nothing bounds it.)
+    ScheduleOp schedule =
+        component->getParentOfType<SimulationOp>().getScheduleOp();
+    ArrayAttr bounds = schedule ? schedule.getBoundedByAttr() : ArrayAttr();
+    if (bounds && llvm::is_contained(
+                      bounds.getAsRange<FlatSymbolRefAttr>(),
+                      FlatSymbolRefAttr::get(component.getSymNameAttr()))) {
+      remark << "; under lts it still takes the big step whole: it reads "
+                "through the back edge, so its num_steps bounds the big step "
+                "of the whole scene (per-region big steps are not built, "
+                "docs/Model.md); a component that does not bound it takes "
+                "local time steps";
+      return;
+    }
     component.setLocalWindowAttr(DenseI64ArrayAttr::get(
         &getContext(), {window.getMinOffset(), window.getMaxOffset()}));
-    remark << "; under lts its thread groups take local time steps (window "
+    // Blocks of 32 items: the bundle schema's LocalStepBlock.
+    remark << "; under lts its blocks of 32 items take local time steps "
+              "(window "
            << window.str() << ")";
   }
 };

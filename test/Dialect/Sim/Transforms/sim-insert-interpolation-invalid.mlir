@@ -74,7 +74,7 @@ sim.simulation @derivative_too_late range(16) dt(1.0e-2 : f32) max_steps(2) attr
   }
   sim.component @Reader writes(@V) evaluate {
   ^bb0(%i: index, %t: i64, %n: i32, %dt: f32):
-    // expected-error @+1 {{'sim.read' op interpolates @X with #sim.hermite<@V>, which needs @V at the end of the big step, but its writer @Reader does not run before @Reader in the step}}
+    // expected-error @+1 {{'sim.read' op interpolates @X with #sim.hermite<@V>, which needs @V at the end of the big step, but @Reader writes @V itself, so it is not there while @Reader runs; use #sim.linear or #sim.cubic for @X, or write @V in a component that runs before}}
     %x = sim.read @X[%i] interpolate : f32
     sim.yield %x : f32
   }

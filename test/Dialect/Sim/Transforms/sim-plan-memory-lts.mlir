@@ -20,7 +20,7 @@ sim.simulation @stencil range(64) dt(1.0e-2 : f32) max_steps(4) {
     %c = arith.constant 0.0 : f32
     sim.yield %c : f32
   }
-  // expected-remark @+1 {{under lts its thread groups take local time steps (window i-1..i+1)}}
+  // expected-remark @+1 {{under lts its blocks of 32 items take local time steps (window i-1..i+1)}}
   sim.component @Diffuse writes(@U) num_steps {
   ^bb0(%i: index, %t: i64):
     %c2 = arith.constant 2 : i32
@@ -52,7 +52,7 @@ sim.simulation @stencil range(64) dt(1.0e-2 : f32) max_steps(4) {
 
 // CHECK-LABEL: sim.simulation @pointwise
 // CHECK: sim.component @Decay writes(@U) attributes {advance = #sim<advance group_substeps>
-// expected-remark @+1 {{strategy lts: no component takes local time steps (none with num_steps reads its own buffers at other items through a window), so the plan is hip's}}
+// expected-remark @+1 {{strategy lts: no component takes local time steps, so the plan is hip's; a component takes them when it has num_steps, reads a buffer it writes at other items through a window}}
 sim.simulation @pointwise range(64) dt(1.0e-2 : f32) max_steps(4) {
   sim.buffer @U : f32 init {
   ^bb0(%i: index):

@@ -15,7 +15,7 @@
 //   buffer at its own item); @Tail reads its own buffer at i+1, so it
 //   sub-steps grid-wide; @Plain has no num_steps and takes the step whole.
 // - lts: as hip, but @Tail's own read is a window (local_window [0, 1]), so
-//   its thread groups take local time steps.
+//   its blocks of 32 items take local time steps.
 
 // CHECK-LABEL: sim.simulation @stepping
 // SIMPLE-SAME: attributes {step_cap = 1 : i32, strategy = #sim<strategy simple>}

@@ -167,8 +167,8 @@ sim.simulation @grid_sync_one_evaluation range(1024) dt(1.0e-2 : f32) max_steps(
 
 // CHECK-LABEL: sim.simulation @grid_sync_bounding
 // CHECK-NOT: snapshot
-// SIMPLE: sim.component @Lead writes(@U) attributes {advance = #sim<advance whole_step>, local_window = array<i64: -1, 0>, parity = #sim<parity none>, sub_stepping = #sim<sub_stepping grid_sync>}
-// HIP: sim.component @Lead writes(@U) attributes {advance = #sim<advance whole_step>, estimates, local_window = array<i64: -1, 0>, parity = #sim<parity none>, sub_stepping = #sim<sub_stepping grid_sync>}
+// SIMPLE: sim.component @Lead writes(@U) attributes {advance = #sim<advance whole_step>, parity = #sim<parity none>, sub_stepping = #sim<sub_stepping grid_sync>}
+// HIP: sim.component @Lead writes(@U) attributes {advance = #sim<advance whole_step>, estimates, parity = #sim<parity none>, sub_stepping = #sim<sub_stepping grid_sync>}
 // CHECK-NOT: snapshot
 // CHECK-NOT: copy_if_even
 // CHECK: sim.schedule [@Lead, @Follow] bounded_by [@Lead]

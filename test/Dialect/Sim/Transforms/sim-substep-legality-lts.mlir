@@ -14,7 +14,7 @@ sim.simulation @window range(64) dt(1.0e-2 : f32) max_steps(4) {
     %c = arith.constant 0.0 : f32
     sim.yield %c : f32
   }
-  // expected-remark @+1 {{@Diffuse needs a grid-wide barrier between sub-steps: its num_steps body reads @U, which it writes, at i+3, so a thread could read another item while that item is between sub-steps; under lts its thread groups take local time steps (window i-2..i+3)}}
+  // expected-remark @+1 {{@Diffuse needs a grid-wide barrier between sub-steps: its num_steps body reads @U, which it writes, at i+3, so a thread could read another item while that item is between sub-steps; under lts its blocks of 32 items take local time steps (window i-2..i+3)}}
   sim.component @Diffuse writes(@U) num_steps {
   ^bb0(%i: index, %t: i64):
     %c3 = arith.constant 3 : index
@@ -47,7 +47,7 @@ sim.simulation @gather range(64) dt(1.0e-2 : f32) max_steps(4) {
     %c = arith.constant 0.0 : f32
     sim.yield %c : f32
   }
-  // expected-remark @+1 {{under lts it cannot take local time steps: its evaluate body reads @U through a gather, so the groups it reads are not known; a window (%i plus a bounded offset) lets the levels of neighbouring groups be limited}}
+  // expected-remark @+1 {{under lts it cannot take local time steps: its evaluate body reads @U through a gather, so the blocks it reads are not known; a window (%i plus a bounded offset) lets the levels of neighbouring blocks be limited}}
   sim.component @Scatter writes(@U) num_steps {
   ^bb0(%i: index, %t: i64):
     %c2 = arith.constant 2 : i32
@@ -56,7 +56,7 @@ sim.simulation @gather range(64) dt(1.0e-2 : f32) max_steps(4) {
   ^bb0(%i: index, %t: i64, %n: i32, %dt: f32):
     %c7 = arith.constant 7 : index
     %j = arith.muli %i, %c7 : index
-    // expected-note @+1 {{reads @U at gather}}
+    // expected-note @+1 {{reads @U through a gather}}
     %g = sim.read @U[%j] : f32
     sim.yield %g : f32
   }
@@ -124,4 +124,46 @@ sim.simulation @hermite range(64) dt(1.0e-2 : f32) max_steps(4) {
     sim.yield %x1, %v : f32, f32
   }
   sim.observe [@X]
+}
+
+// -----
+
+// A component that bounds the big step (it reads @W through the back edge)
+// takes it whole under lts too: no local_window, and the remark says why.
+
+// CHECK-LABEL: sim.simulation @bounding
+// CHECK: sim.component @Lead writes(@U) attributes {sub_stepping = #sim<sub_stepping grid_sync>}
+sim.simulation @bounding range(64) dt(1.0e-2 : f32) max_steps(4) {
+  sim.buffer @U : f32 init {
+  ^bb0(%i: index):
+    %c = arith.constant 0.0 : f32
+    sim.yield %c : f32
+  }
+  sim.buffer @W : f32 init {
+  ^bb0(%i: index):
+    %c = arith.constant 0.0 : f32
+    sim.yield %c : f32
+  }
+  // expected-remark @+1 {{@Lead needs a grid-wide barrier between sub-steps: its evaluate body reads @U, which it writes, at i-1, so a thread could read another item while that item is between sub-steps; under lts it still takes the big step whole: it reads through the back edge, so its num_steps bounds the big step of the whole scene (per-region big steps are not built, docs/Model.md); a component that does not bound it takes local time steps}}
+  sim.component @Lead writes(@U) num_steps {
+  ^bb0(%i: index, %t: i64):
+    %c = arith.constant 2 : i32
+    sim.yield %c : i32
+  } evaluate {
+  ^bb0(%i: index, %t: i64, %n: i32, %dt: f32):
+    %c1 = arith.constant 1 : index
+    %l = arith.subi %i, %c1 : index
+    // expected-note @+1 {{reads @U at i-1}}
+    %ul = sim.read @U[%l] : f32
+    %w = sim.read @W[%i] : f32
+    %s = arith.addf %ul, %w : f32
+    sim.yield %s : f32
+  }
+  sim.component @Follow writes(@W) evaluate {
+  ^bb0(%i: index, %t: i64, %n: i32, %dt: f32):
+    %u = sim.read @U[%i] : f32
+    sim.yield %u : f32
+  }
+  sim.schedule [@Lead, @Follow] bounded_by [@Lead]
+  sim.observe [@W]
 }

@@ -87,12 +87,12 @@ sim.simulation @own_gather range(16) dt(1.0e-2 : f32) max_steps(2) {
     %c = arith.constant 0.0 : f32
     sim.yield %c : f32
   }
-  // expected-remark @+1 {{@P needs a grid-wide barrier between sub-steps: its num_steps body reads @V, which it writes, at gather, so a thread could read another item while that item is between sub-steps}}
+  // expected-remark @+1 {{@P needs a grid-wide barrier between sub-steps: its num_steps body reads @V, which it writes, through a gather, so a thread could read another item while that item is between sub-steps}}
   sim.component @P writes(@X, @V) num_steps {
   ^bb0(%i: index, %t: i64):
     %c7 = arith.constant 7 : index
     %j = arith.muli %i, %c7 : index
-    // expected-note @+1 {{reads @V at gather}}
+    // expected-note @+1 {{reads @V through a gather}}
     %v = sim.read @V[%j] : f32
     %n = arith.fptosi %v : f32 to i32
     sim.yield %n : i32
