@@ -118,26 +118,29 @@ struct SetParamsPass : public sim::impl::SimSetParamsBase<SetParamsPass> {
              << type;
     };
     if (name == "range" || name == "max_steps") {
-      Type type = name == "range" ? builder.getI64Type() : builder.getI32Type();
-      FailureOr<TypedAttr> value =
-          parseScalar(builder, text, type, error, /*isSigned=*/true);
-      if (failed(value))
-        return invalid(type);
-      auto intValue = cast<IntegerAttr>(*value);
-      if (intValue.getInt() < 1)
-        return simulation.emitError()
-               << "cannot set parameter '" << name << "' to "
-               << intValue.getInt() << ": it must be at least 1";
+      // Parsed as i64 whatever the attribute's width, so that a value past
+      // the limit is told the limit, not the width.
       int64_t most = name == "range" ? SimulationOp::kMaxRange
                                      : SimulationOp::kMaxMaxSteps;
-      if (intValue.getInt() > most)
+      FailureOr<TypedAttr> value = parseScalar(
+          builder, text, builder.getI64Type(), error, /*isSigned=*/true);
+      if (failed(value))
         return simulation.emitError()
-               << "cannot set parameter '" << name << "' to "
-               << intValue.getInt() << ": it must be at most " << most;
+               << "cannot set parameter '" << name << "': '" << text.trim()
+               << "' is not an integer from 1 to " << most;
+      int64_t intValue = cast<IntegerAttr>(*value).getInt();
+      if (intValue < 1)
+        return simulation.emitError()
+               << "cannot set parameter '" << name << "' to " << intValue
+               << ": it must be at least 1";
+      if (intValue > most)
+        return simulation.emitError()
+               << "cannot set parameter '" << name << "' to " << intValue
+               << ": it must be at most " << most;
       if (name == "range")
-        simulation.setRangeAttr(intValue);
+        simulation.setRangeAttr(builder.getI64IntegerAttr(intValue));
       else
-        simulation.setMaxStepsAttr(intValue);
+        simulation.setMaxStepsAttr(builder.getI32IntegerAttr(intValue));
       return success();
     }
     if (name == "dt") {

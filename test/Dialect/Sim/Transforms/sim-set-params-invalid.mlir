@@ -231,7 +231,7 @@ sim.simulation @s range(16) dt(1.0 : f32) max_steps(1) {
 }
 
 //--- range-not-a-number.mlir
-// expected-error @+1 {{cannot set parameter 'range': '16k' is not a valid 'i64'}}
+// expected-error @+1 {{cannot set parameter 'range': '16k' is not an integer from 1 to 1099511627776}}
 sim.simulation @s range(16) dt(1.0 : f32) max_steps(1) {
   sim.param @L = 4 : i32
   sim.param @k = 2.5 : f32
@@ -293,7 +293,7 @@ sim.simulation @s range(16) dt(1.0 : f32) max_steps(1) {
 }
 
 //--- range-too-wide.mlir
-// expected-error @+1 {{cannot set parameter 'range': '18446744073709551615' is out of range for 'i64'}}
+// expected-error @+1 {{cannot set parameter 'range': '18446744073709551615' is not an integer from 1 to 1099511627776}}
 sim.simulation @s range(16) dt(1.0 : f32) max_steps(1) {
   sim.param @L = 4 : i32
   sim.param @k = 2.5 : f32
@@ -331,7 +331,7 @@ sim.simulation @s range(16) dt(1.0 : f32) max_steps(1) {
 }
 
 //--- max-steps-too-wide.mlir
-// expected-error @+1 {{cannot set parameter 'max_steps': '4294967295' is out of range for 'i32'}}
+// expected-error @+1 {{cannot set parameter 'max_steps' to 4294967295: it must be at most 1048576}}
 sim.simulation @s range(16) dt(1.0 : f32) max_steps(1) {
   sim.param @L = 4 : i32
   sim.param @k = 2.5 : f32
