@@ -19,7 +19,9 @@ from __future__ import annotations
 
 import ctypes
 import os
+import signal
 import sys
+import threading
 from typing import Callable, NamedTuple
 
 import numpy as np
@@ -356,8 +358,26 @@ class Session:
         lib = simrt.load_library()
         failure = []
         handle = self._rt._handle
-        if progress is not None:
+        # Ctrl-C: Python runs its signal handlers only between bytecodes,
+        # never inside the C run. In the main thread with Python's default
+        # SIGINT handler, a handler of ours asks the session to stop, and a
+        # progress callback (a no-op one when none was given) gives Python
+        # control at every host synchronisation, where that handler runs;
+        # the run stops at the next one and KeyboardInterrupt is raised here.
+        watch = (threading.current_thread() is threading.main_thread()
+                 and signal.getsignal(signal.SIGINT)
+                 is signal.default_int_handler)
+        previous = None
+        if watch:
+            def on_sigint(signum, frame):
+                failure.append(KeyboardInterrupt())
+                lib.sim_session_interrupt(handle)
+            previous = signal.signal(signal.SIGINT, on_sigint)
+        callback = None
+        if progress is not None or watch:
             def call(user, done, _):
+                if progress is None:
+                    return
                 try:
                     progress(offset + done, total)
                 except BaseException as error:  # also KeyboardInterrupt
@@ -373,9 +393,11 @@ class Session:
                 raise failure[0] from None
             raise
         finally:
-            if progress is not None:
+            if callback is not None:
                 lib.sim_session_set_progress(handle,
                                              simrt.ProgressFunction(), None)
+            if watch:
+                signal.signal(signal.SIGINT, previous)
         if failure:
             lib.sim_session_resume(handle)
             raise failure[0]

@@ -75,6 +75,33 @@ except KeyboardInterrupt:
 stopped.run(10)
 print("and runs on afterwards: T", stopped.time > 10)
 
+# Ctrl-C (SIGINT) during a long run without a progress callback stops it
+# at the next host synchronisation with KeyboardInterrupt, restores
+# Python's handler, and the session runs on. A watchdog ends the test
+# instead of letting a lost interrupt hang it.
+import signal  # noqa: E402
+import threading  # noqa: E402
+
+# (lit may start the test with SIGINT ignored; an interactive Python has
+# this handler.)
+signal.signal(signal.SIGINT, signal.default_int_handler)
+watchdog = threading.Timer(120, lambda: (print("SIGINT lost: still running"),
+                                         sys.stdout.flush(), os._exit(1)))
+watchdog.start()
+threading.Timer(0.5, lambda: os.kill(os.getpid(), signal.SIGINT)).start()
+long_run = bundle.session("hip", "cpu", range=16)
+try:
+    long_run.run(10**12)
+    print("SIGINT: the run ended on its own")
+except KeyboardInterrupt:
+    print("SIGINT stopped the run: T < 10^12", long_run.time < 10**12)
+watchdog.cancel()
+print("handler restored:",
+      signal.getsignal(signal.SIGINT) is signal.default_int_handler)
+before = long_run.time
+long_run.run(10)
+print("and runs on afterwards:", long_run.time == before + 10)
+
 # The strategy is the session's from its first run on.
 fresh = bundle.session("hip", "cpu")
 fresh.run(0, strategy="simple")
