@@ -335,8 +335,9 @@ class Session:
         if info is None:
             raise Error(1, "unknown buffer '%s'" % buffer)
         expected = {4: "f", 8: "d"}[info["scalar_bytes"]]
-        if typecode is not None and \
-                array.array(typecode).itemsize != info["scalar_bytes"]:
+        # The float typecode of the same size only: an integer array of the
+        # right size would still have its bits read as floats.
+        if typecode is not None and typecode != expected:
             raise ValueError("buffer %s holds %s scalars; typecode %r does "
                              "not match (use %r or leave it out)"
                              % (buffer, info["scalar_type"], typecode,

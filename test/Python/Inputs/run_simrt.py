@@ -16,6 +16,12 @@ with simrt.Bundle(sys.argv[1]) as bundle:
                 print("time", session.time)
                 print("evaluations", session.evaluations())
                 print("big steps", session.metrics()["big_steps"])
+                # Integers of the buffer's size would be read as floats.
+                import array
+                try:
+                    session.put("X", array.array("i", [1] * bundle.range))
+                except ValueError as error:
+                    print("put:", error)
     # simple takes 10 steps of 1: 0.99^10; hip three big steps of 4, 4 and 2
     # (the last one clamped to the end): 0.96^2 * 0.98.
     print("simple %.5f hip %.5f" % (results["simple"][0], results["hip"][0]))
