@@ -47,8 +47,6 @@ constexpr uint64_t kMaxClockSlots = uint64_t(1) << 24;
 /// The most lanes of a vector element, and the largest element stride.
 constexpr uint32_t kMaxLanes = 64;
 constexpr uint32_t kMaxStride = 1 << 16;
-/// The largest group size a plan may be made for.
-constexpr uint32_t kMaxGroupSize = 1 << 16;
 
 [[noreturn]] void bad(const std::string &message) {
   fail(SIM_ERROR_BUNDLE, message);
@@ -204,9 +202,9 @@ public:
 
 private:
   void verifyHeader() {
-    if (plan.group_size < 1 || plan.group_size > kMaxGroupSize)
+    if (plan.group_size < 1 || plan.group_size > bundle::kMaxGroupSize)
       bad(what + " is made for groups of " + std::to_string(plan.group_size) +
-          ", not 1 to " + std::to_string(kMaxGroupSize));
+          ", not 1 to " + std::to_string(bundle::kMaxGroupSize));
     // The cap is the front end's decision; a big step is still 1 to
     // max_steps base steps (the clock counts them up to max_steps).
     if (plan.step_cap < 1 || plan.step_cap > uint32_t(scene.max_steps))

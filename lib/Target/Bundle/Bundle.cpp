@@ -1077,9 +1077,11 @@ LogicalResult mlir::sim::writeBundle(ModuleOp module,
       return emitError(simulation.getLoc())
              << "strategy '" << stringifyStrategy(strategy)
              << "' is asked for twice";
-  if (options.groupSize <= 0)
+  if (options.groupSize <= 0 ||
+      options.groupSize > int64_t(::sim::bundle::kMaxGroupSize))
     return emitError(simulation.getLoc())
-           << "the group size must be positive, not " << options.groupSize;
+           << "the group size must be from 1 to "
+           << ::sim::bundle::kMaxGroupSize << ", not " << options.groupSize;
   if (options.cpuIsas.empty())
     return emitError(simulation.getLoc())
            << "a bundle needs CPU kernels for at least one instruction-set "

@@ -39,6 +39,9 @@ constexpr size_t kHeaderSize = 32;
 /// The largest bundle a runtime reads (a bundle of every strategy of the
 /// paper's scenes takes well under 1 MiB).
 constexpr uint64_t kMaxBundleBytes = uint64_t(1) << 30;
+/// The largest group size a plan may be made for (the compiler refuses a
+/// larger --sim-group-size, the runtime a bundle that records one).
+constexpr uint32_t kMaxGroupSize = uint32_t(1) << 16;
 /// The widest halo of a distributed plan: the ghost items a rank holds on
 /// each side of its block. The compiler refuses a scene whose windows reach
 /// further, and the runtime a bundle that records more.
