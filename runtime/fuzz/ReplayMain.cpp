@@ -35,8 +35,22 @@ int runFile(const std::filesystem::path &path) {
 } // namespace
 
 int main(int argc, char **argv) {
+  auto usage = [&](std::FILE *out) {
+    std::fprintf(out,
+                 "usage: %s FILE|DIR...\n\n"
+                 "Runs the fuzz target once per FILE (once per file of a DIR, "
+                 "in name order)\nwithout libFuzzer, and prints how many it "
+                 "ran: the kept corpus as a\nregression test "
+                 "(docs/Testing.md).\n",
+                 argv[0]);
+  };
+  if (argc == 2 &&
+      (std::string(argv[1]) == "--help" || std::string(argv[1]) == "-h")) {
+    usage(stdout);
+    return 0;
+  }
   if (argc < 2) {
-    std::fprintf(stderr, "usage: %s FILE|DIR...\n", argv[0]);
+    usage(stderr);
     return 2;
   }
   size_t count = 0;
