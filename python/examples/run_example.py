@@ -24,6 +24,15 @@ def main(scene, argv=None):
     parser.add_argument("--output-every", type=int, metavar="N")
     parser.add_argument("--output", metavar="FILE.npz")
     args = parser.parse_args(argv)
+    if args.run is not None and args.run < 0:
+        parser.error(f"--run takes a number of base steps >= 0, not "
+                     f"{args.run}")
+    if args.output_every is not None and args.output_every < 1:
+        parser.error(f"--output-every takes a number of base steps >= 1, "
+                     f"not {args.output_every}")
+    for item in args.set:
+        if "=" not in item or not item.split("=", 1)[0]:
+            parser.error(f"--set takes NAME=VALUE, not {item!r}")
     if args.run is None:
         text = scene.mlir()
         if args.mlir:
@@ -36,7 +45,10 @@ def main(scene, argv=None):
     print(f"compiled {scene.name} in {bundle.compile_seconds:.2f} s")
     values = dict(item.split("=", 1) for item in args.set)
     session = bundle.session(args.strategy, args.backend, **values)
-    out = session.run(args.run, output_every=args.output_every or args.run,
+    # One output at the end unless asked for more (a run of 0 steps has
+    # only the initial state).
+    out = session.run(args.run,
+                      output_every=args.output_every or max(args.run, 1),
                       errors=True)
     metrics = session.metrics()
     print(f"{args.strategy} on {metrics['device']}: {args.run} base steps in "

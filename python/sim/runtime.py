@@ -345,6 +345,10 @@ class Session:
 
         snapshot()
         self._metrics = None
+        if steps == 0:
+            # No chunk to run, but the metrics of a run of 0 steps.
+            self._chunk(0, progress, 0, 0)
+            self._ran = True
         done = 0
         while done < steps:
             chunk = min(output_every, steps - done)
