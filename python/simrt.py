@@ -25,6 +25,10 @@ __all__ = ["Error", "Bundle", "Session", "load_library", "strategies",
            "ProgressFunction"]
 
 
+# sim_status's SIM_ERROR_INVALID_ARGUMENT (sim_runtime.h).
+_INVALID_ARGUMENT = 1
+
+
 class Error(RuntimeError):
     """A failed runtime call: `status` is the sim_status code."""
 
@@ -193,8 +197,16 @@ class Bundle:
 
     def __init__(self, path, library=None):
         lib = load_library(library)
-        self._handle = ctypes.c_void_p()
-        _check(lib.sim_bundle_open(os.fsencode(path), ctypes.byref(self._handle)))
+        self._raw = ctypes.c_void_p()
+        _check(lib.sim_bundle_open(os.fsencode(path), ctypes.byref(self._raw)))
+
+    @property
+    def _handle(self):
+        # A closed bundle would answer with empty values (the C API takes a
+        # null handle as none): say so instead.
+        if not self._raw:
+            raise Error(_INVALID_ARGUMENT, "the bundle is closed")
+        return self._raw
 
     @property
     def name(self):
@@ -270,9 +282,9 @@ class Bundle:
             self._handle, _parse(lib.sim_strategy_parse, strategy)))
 
     def close(self):
-        if self._handle:
-            load_library().sim_bundle_close(self._handle)
-            self._handle = ctypes.c_void_p()
+        if self._raw:
+            load_library().sim_bundle_close(self._raw)
+            self._raw = ctypes.c_void_p()
 
     def __enter__(self):
         return self
@@ -296,9 +308,15 @@ class Session:
         options.cpu_threads = cpu_threads
         self._bundle = bundle  # keeps the bundle open as long as the session
         self._buffers = {b["name"]: b for b in bundle.buffers()}
-        self._handle = ctypes.c_void_p()
+        self._raw = ctypes.c_void_p()
         _check(lib.sim_session_create(bundle._handle, ctypes.byref(options),
-                                      ctypes.byref(self._handle)))
+                                      ctypes.byref(self._raw)))
+
+    @property
+    def _handle(self):
+        if not self._raw:
+            raise Error(_INVALID_ARGUMENT, "the session is closed")
+        return self._raw
 
     @property
     def device(self):
@@ -402,9 +420,9 @@ class Session:
                 for size in range(1, max_steps + 1)}
 
     def close(self):
-        if self._handle:
-            load_library().sim_session_destroy(self._handle)
-            self._handle = ctypes.c_void_p()
+        if self._raw:
+            load_library().sim_session_destroy(self._raw)
+            self._raw = ctypes.c_void_p()
 
     def __enter__(self):
         return self

@@ -137,6 +137,8 @@ class Bundle:
             pass
 
     def __repr__(self):
+        if not self._rt._raw:
+            return f"<sim.Bundle (closed) {self.path}>"
         return (f"<sim.Bundle {self.name} ({', '.join(self.strategies)}) "
                 f"{self.path}>")
 
@@ -472,6 +474,8 @@ class Session:
             pass
 
     def __repr__(self):
+        if not self._rt._raw:
+            return f"<sim.Session {self.strategy} (closed)>"
         return (f"<sim.Session {self.bundle.name} {self.strategy} on "
                 f"{self.backend}, T={self.time}>")
 

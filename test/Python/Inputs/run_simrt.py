@@ -30,6 +30,17 @@ with simrt.Bundle(sys.argv[1]) as bundle:
         session.run(10)
         print("reference", session.device, "%.5f" % session.get("X")[0],
               "evaluations", session.evaluations())
+# A closed session or bundle says so instead of answering with zeros.
+closed_bundle = simrt.Bundle(sys.argv[1])
+closed = simrt.Session(closed_bundle, strategy="hip", backend="cpu")
+closed.close()
+closed_bundle.close()
+for what, call in (("session time", lambda: closed.time),
+                   ("bundle range", lambda: closed_bundle.range)):
+    try:
+        print(what, call())
+    except simrt.Error as error:
+        print(what + ":", error)
 try:
     simrt.Bundle(sys.argv[1] + ".missing")
 except simrt.Error as error:
