@@ -85,8 +85,20 @@ def load_library(path=None):
     global _lib
     if _lib is not None:
         return _lib
-    candidates = [path, os.environ.get("SIM_RUNTIME_LIB"),
-                  os.path.join(os.path.dirname(os.path.abspath(__file__)),
+    # A library asked for by path (the argument or $SIM_RUNTIME_LIB) is
+    # that library: failing to load it is an error, not a reason to load
+    # another build's.
+    asked = path or os.environ.get("SIM_RUNTIME_LIB")
+    if asked:
+        try:
+            _lib = ctypes.CDLL(asked)
+        except OSError as error:
+            raise OSError(f"cannot load the runtime library {asked!r}"
+                          f"{'' if path else ' ($SIM_RUNTIME_LIB)'}: "
+                          f"{error}") from None
+        _declare(_lib)
+        return _lib
+    candidates = [os.path.join(os.path.dirname(os.path.abspath(__file__)),
                                "..", "build", "lib", "libsim_runtime.so"),
                   "libsim_runtime.so"]
     errors = []

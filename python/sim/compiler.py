@@ -32,8 +32,16 @@ _REPO = os.path.dirname(os.path.dirname(os.path.dirname(
 
 def find_tool(name: str) -> str:
     """The path of a sim tool (`sim-translate`, `sim-opt`, `sim-run`)."""
-    env = os.environ.get(name.upper().replace("-", "_"))
-    candidates = [env] if env else []
+    variable = name.upper().replace("-", "_")
+    env = os.environ.get(variable)
+    if env:
+        # A tool asked for by name is that tool: a wrong path is an error,
+        # not a reason to run another build's.
+        if os.path.isfile(env) and os.access(env, os.X_OK):
+            return os.path.normpath(env)
+        raise FileNotFoundError(f"${variable} is {env!r}, which is not an "
+                                f"executable file")
+    candidates = []
     lib = os.environ.get("SIM_RUNTIME_LIB")
     if lib:
         candidates.append(os.path.join(os.path.dirname(os.path.abspath(lib)),
