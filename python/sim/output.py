@@ -23,6 +23,9 @@ the exact solution is), as sim-run reports them.
 
 from __future__ import annotations
 
+import os
+import zipfile
+
 import numpy as np
 
 __all__ = ["Output", "error_norms"]
@@ -87,8 +90,19 @@ class Output:
     @classmethod
     def load(cls, path) -> "Output":
         """An Output from a `.npz` of this layout (ours or sim-run's)."""
-        with np.load(path, allow_pickle=False) as data:
-            arrays = {key: data[key] for key in data.files}
+        try:
+            with np.load(path, allow_pickle=False) as data:
+                arrays = {key: data[key] for key in data.files}
+        except (zipfile.BadZipFile, EOFError) as error:
+            # A truncated or corrupted file: numpy lets zipfile's errors
+            # through.
+            raise ValueError(f"{os.fspath(path)} is not a readable .npz "
+                             f"file ({error})") from None
+        if not isinstance(arrays, dict) or "t" not in arrays or \
+                "time" not in arrays:
+            raise ValueError(f"{os.fspath(path)} is not an output of sim "
+                             f"(no 't' and 'time' arrays; sim-run --output "
+                             f"and Output.save write them)")
         return cls.from_arrays(arrays)
 
     @classmethod

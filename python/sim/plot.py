@@ -76,6 +76,13 @@ def plot(source, out_dir: str | None = None, *, times=None, buffers=None,
         if name not in out.buffers:
             raise KeyError(f"the output has no buffer {name!r} (it has "
                            f"{', '.join(out.buffers) or 'none'})")
+        if lanes is not None:
+            have = _lanes(out.buffers[name])
+            bad = [lane for lane in lanes if not 0 <= lane < have]
+            if bad:
+                raise ValueError(f"buffer {name!r} has {have} lane"
+                                 f"{'' if have == 1 else 's'} (0 to "
+                                 f"{have - 1}), not {bad[0]}")
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
