@@ -18,6 +18,7 @@ call raises simrt.Error (also `sim.RunError`) with the runtime's message.
 from __future__ import annotations
 
 import ctypes
+import numbers
 import os
 import signal
 import sys
@@ -155,11 +156,25 @@ class Session:
     def __init__(self, bundle: Bundle, strategy: str = "hip",
                  backend: str = "auto", *, group_size: int = 0,
                  threads: int = 0, check_finite: bool = False, **values):
+        for what, value in (("strategy", strategy), ("backend", backend)):
+            if not isinstance(value, str):
+                raise TypeError(f"{what} must be a name (str), not "
+                                f"{value!r}")
+        for what, value in (("group_size", group_size),
+                            ("threads", threads)):
+            if isinstance(value, bool) or \
+                    not isinstance(value, numbers.Integral) or value < 0:
+                raise ValueError(f"{what} must be an int >= 0 (0: the "
+                                 f"default), not {value!r}")
+        if not isinstance(check_finite, (bool, np.bool_)):
+            raise TypeError(f"check_finite must be True or False, not "
+                            f"{check_finite!r}")
         self.bundle = bundle
         self.strategy = strategy
         self._backend_request = backend
-        self._options = dict(group_size=group_size, cpu_threads=threads,
-                             check_finite=check_finite)
+        self._options = dict(group_size=int(group_size),
+                             cpu_threads=int(threads),
+                             check_finite=bool(check_finite))
         self._values: dict[str, str] = {}
         self._initial: dict[str, np.ndarray] = {}
         self._ran = False
@@ -323,15 +338,20 @@ class Session:
         with `errors=True` also the exact solutions of the buffers that
         have one and the errors against them. Without it, returns None.
         """
-        if not isinstance(steps, int) or steps < 0:
+        # numpy's integers too; True is not a number of steps.
+        if isinstance(steps, bool) or not isinstance(steps, numbers.Integral) \
+                or steps < 0:
             raise ValueError(f"steps must be an int >= 0, not {steps!r}")
+        steps = int(steps)
         self._switch(strategy, backend)
         if output_every is None:
             self._metrics = None
             self._chunk(steps, progress, 0, steps)
             self._ran = True
             return None
-        if not isinstance(output_every, int) or output_every < 1:
+        if isinstance(output_every, bool) or \
+                not isinstance(output_every, numbers.Integral) or \
+                output_every < 1:
             raise ValueError(f"output_every must be an int >= 1, not "
                              f"{output_every!r}")
         names = list(record or self.bundle.observed)

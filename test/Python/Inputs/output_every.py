@@ -102,6 +102,16 @@ before = long_run.time
 long_run.run(10)
 print("and runs on afterwards:", long_run.time == before + 10)
 
+# Arguments of the wrong type are refused with what was expected.
+for call in (lambda: bundle.session(3), lambda: bundle.session(
+        "hip", "cpu", check_finite="no"), lambda: stopped.run(True)):
+    try:
+        call()
+    except (TypeError, ValueError) as error:
+        print(type(error).__name__ + ":", error)
+stopped.run(np.int64(2))
+print("numpy steps:", stopped.time)
+
 # The strategy is the session's from its first run on.
 fresh = bundle.session("hip", "cpu")
 fresh.run(0, strategy="simple")
