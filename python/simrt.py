@@ -309,7 +309,7 @@ class Session:
     """One strategy of a bundle on one backend, with its state."""
 
     def __init__(self, bundle, strategy="hip", backend="auto", group_size=0,
-                 check_finite=False, cpu_threads=0):
+                 check_finite=False, cpu_threads=0, max_memory=0):
         lib = load_library()
         options = _Options()
         lib.sim_session_options_init(ctypes.byref(options))
@@ -318,6 +318,9 @@ class Session:
         options.group_size = group_size
         options.check_finite = int(check_finite)
         options.cpu_threads = cpu_threads
+        # Bytes of device (or host) memory the session may use; 0: the
+        # runtime's default share (sim-run --max-memory).
+        options.max_memory = max_memory
         self._bundle = bundle  # keeps the bundle open as long as the session
         self._buffers = {b["name"]: b for b in bundle.buffers()}
         self._raw = ctypes.c_void_p()

@@ -148,20 +148,22 @@ class Session:
     """A bundle's state, run with one strategy on one backend.
 
     `group_size` (0: the plan's), `threads` (CPU threads, 0: all),
-    `check_finite` and scene values (`range=`, `dt=`, parameters) as keyword
+    `check_finite`, `max_memory` (bytes the session may allocate, 0: the
+    runtime's default share, as sim-run --max-memory) and scene values (`range=`, `dt=`, parameters) as keyword
     arguments. The strategy and backend can still be changed by `run` until
     the first run; after it a session's state belongs to them.
     """
 
     def __init__(self, bundle: Bundle, strategy: str = "hip",
                  backend: str = "auto", *, group_size: int = 0,
-                 threads: int = 0, check_finite: bool = False, **values):
+                 threads: int = 0, check_finite: bool = False,
+                 max_memory: int = 0, **values):
         for what, value in (("strategy", strategy), ("backend", backend)):
             if not isinstance(value, str):
                 raise TypeError(f"{what} must be a name (str), not "
                                 f"{value!r}")
         for what, value in (("group_size", group_size),
-                            ("threads", threads)):
+                            ("threads", threads), ("max_memory", max_memory)):
             if isinstance(value, bool) or \
                     not isinstance(value, numbers.Integral) or value < 0:
                 raise ValueError(f"{what} must be an int >= 0 (0: the "
@@ -174,7 +176,8 @@ class Session:
         self._backend_request = backend
         self._options = dict(group_size=int(group_size),
                              cpu_threads=int(threads),
-                             check_finite=bool(check_finite))
+                             check_finite=bool(check_finite),
+                             max_memory=int(max_memory))
         self._values: dict[str, str] = {}
         self._initial: dict[str, np.ndarray] = {}
         self._ran = False

@@ -112,6 +112,12 @@ for call in (lambda: bundle.session(3), lambda: bundle.session(
 stopped.run(np.int64(2))
 print("numpy steps:", stopped.time)
 
+# max_memory bounds what a session allocates, as sim-run --max-memory.
+try:
+    bundle.session("hip", "cpu", max_memory=1000, range=4096).run(1)
+except sim.RunError as error:
+    print("max_memory:", error)
+
 # The strategy is the session's from its first run on.
 fresh = bundle.session("hip", "cpu")
 fresh.run(0, strategy="simple")
