@@ -164,8 +164,7 @@ class Session:
                                 f"{value!r}")
         for what, value in (("group_size", group_size),
                             ("threads", threads), ("max_memory", max_memory)):
-            if isinstance(value, bool) or \
-                    not isinstance(value, numbers.Integral) or value < 0:
+            if not _is_count(value, 0):
                 raise ValueError(f"{what} must be an int >= 0 (0: the "
                                  f"default), not {value!r}")
         if not isinstance(check_finite, (bool, np.bool_)):
@@ -342,8 +341,7 @@ class Session:
         have one and the errors against them. Without it, returns None.
         """
         # numpy's integers too; True is not a number of steps.
-        if isinstance(steps, bool) or not isinstance(steps, numbers.Integral) \
-                or steps < 0:
+        if not _is_count(steps, 0):
             raise ValueError(f"steps must be an int >= 0, not {steps!r}")
         steps = int(steps)
         self._switch(strategy, backend)
@@ -352,9 +350,7 @@ class Session:
             self._chunk(steps, progress, 0, steps)
             self._ran = True
             return None
-        if isinstance(output_every, bool) or \
-                not isinstance(output_every, numbers.Integral) or \
-                output_every < 1:
+        if not _is_count(output_every, 1):
             raise ValueError(f"output_every must be an int >= 1, not "
                              f"{output_every!r}")
         names = list(record or self.bundle.observed)
@@ -501,6 +497,13 @@ class Session:
             return f"<sim.Session {self.strategy} (closed)>"
         return (f"<sim.Session {self.bundle.name} {self.strategy} on "
                 f"{self.backend}, T={self.time}>")
+
+
+def _is_count(value, least: int) -> bool:
+    """Whether `value` is an integer (Python's or numpy's, not a bool) of
+    at least `least`."""
+    return (not isinstance(value, bool) and
+            isinstance(value, numbers.Integral) and value >= least)
 
 
 def _put(rt, name, data: np.ndarray):
