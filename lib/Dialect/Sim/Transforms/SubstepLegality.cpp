@@ -232,6 +232,18 @@ struct SubstepLegalityPass
     writer.setFluxWindowAttr(
         DenseI64ArrayAttr::get(&getContext(), {fluxWindow->getMinOffset(),
                                                fluxWindow->getMaxOffset()}));
+    // Under clamp, an interface read past an end of the range is the last
+    // one again: a cell there takes a flux that no cell gives back, and the
+    // scene's totals drift under every strategy.
+    if (fluxes.front().getBoundary() == Boundary::clamp && !fluxWindow->isOwn())
+      fluxes.front().emitRemark()
+          << "@" << fluxes.front().getSymName() << " has boundary(clamp): @"
+          << readerName << "'s reads at " << fluxWindow->str()
+          << " past an end of the range take the last interface again, "
+             "which no cell gives back, so a total of @"
+          << readerName
+          << "'s state is not conserved; boundary(zero) closes the ends, "
+             "boundary(wrap) makes a ring";
     writer.emitRemark() << "@" << name << " and @" << readerName
                         << " form a flux pair: under lts every interface of "
                            "its fluxes steps with the coarsest block that "

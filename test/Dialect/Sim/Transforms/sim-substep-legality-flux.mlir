@@ -374,3 +374,53 @@ sim.simulation @boundaries range(64) dt(1.0e-2 : f32) max_steps(4) {
   sim.schedule [@Flux]
   sim.observe [@U]
 }
+
+// -----
+
+// Clamped fluxes still form a pair, with a remark: the interface read past
+// an end of the range repeats the last one, which does not conserve.
+
+// CHECK-LABEL: sim.simulation @clamped
+// CHECK: sim.component @Flux writes(@F) attributes {flux_window = array<i64: -1, 0>
+sim.simulation @clamped range(64) dt(1.0e-2 : f32) max_steps(4) {
+  sim.buffer @U : f32 init {
+  ^bb0(%i: index):
+    %c = arith.constant 1.0 : f32
+    sim.yield %c : f32
+  }
+  // expected-remark @+1 {{@F has boundary(clamp): @Cells's reads at i-1..i past an end of the range take the last interface again, which no cell gives back, so a total of @Cells's state is not conserved; boundary(zero) closes the ends, boundary(wrap) makes a ring}}
+  sim.buffer @F : f32 interp(#sim.flux) boundary(clamp) init {
+  ^bb0(%i: index):
+    %c = arith.constant 0.0 : f32
+    sim.yield %c : f32
+  }
+  // expected-remark @+1 {{@Flux and @Cells form a flux pair: under lts every interface of its fluxes steps with the coarsest block that reads it (at i-1..i), and @Cells's blocks take local time steps (window i-1..i+1)}}
+  sim.component @Flux writes(@F) evaluate {
+  ^bb0(%j: index, %t: i64, %n: i32, %dt: f32):
+    %c1 = arith.constant 1 : index
+    %jr = arith.addi %j, %c1 : index
+    %a = sim.read @U[%j] : f32
+    %b = sim.read @U[%jr] : f32
+    %d = arith.subf %b, %a : f32
+    sim.yield %d : f32
+  }
+  sim.component @Cells writes(@U) num_steps {
+  ^bb0(%i: index, %t: i64):
+    %c2 = arith.constant 2 : i32
+    sim.yield %c2 : i32
+  } evaluate {
+  ^bb0(%i: index, %t: i64, %n: i32, %dt: f32):
+    %c1 = arith.constant 1 : index
+    %il = arith.subi %i, %c1 : index
+    %fw = sim.read @F[%il] : f32
+    %fe = sim.read @F[%i] : f32
+    %u = sim.read @U[%i] : f32
+    %d = arith.subf %fe, %fw : f32
+    %s = arith.mulf %d, %dt : f32
+    %r = arith.addf %u, %s : f32
+    sim.yield %r : f32
+  }
+  sim.schedule [@Flux]
+  sim.observe [@U]
+}
+
