@@ -197,6 +197,9 @@ TEST(SimRunOptions, RejectsValuesOutsideTheirDomain) {
       {{"a", "--checkpoint-every", "5"},
        "--checkpoint-every requires --checkpoint"},
       {{"a", "--output", "o.npz"}, "--output needs --output-every"},
+      {{"a", "--backend", "reference", "--threads", "3"},
+       "--threads sets the CPU backend's threads; the reference executor "
+       "runs on one"},
       {{"a", "--output-every", "3", "--report-every", "4"},
        "--report-every 4 and --output-every 3 disagree"},
       {{"a", "--restart", ""}, "--restart: expects a path"},

@@ -407,6 +407,11 @@ Options parseOptions(int argc, const char *const *argv) {
     sim_strategy_parse(strategy.c_str(), &options.strategy);
     options.strategyGiven = true;
   }
+  // The reference executor runs on one thread: a thread count for it is a
+  // mistake, not a setting to ignore.
+  if (options.backend == SIM_BACKEND_REFERENCE && options.threads != 0)
+    usageError("--threads sets the CPU backend's threads; the reference "
+               "executor runs on one");
   if (options.distributed) {
     if (options.backend == SIM_BACKEND_REFERENCE)
       usageError("--distributed runs the plan executor, not the reference "
