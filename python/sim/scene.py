@@ -283,7 +283,9 @@ class Scene:
         sim.hermite(V). `boundary`: "clamp", "wrap" or "zero"."""
         loc = user_location(2)
         fn = None
-        if callable(dtype) and not isinstance(dtype, DType):
+        # A Python type (`int`, `float`, numpy's) is callable too, but it is
+        # a mistaken element type, not the init body.
+        if callable(dtype) and not isinstance(dtype, (DType, type)):
             fn, dtype = dtype, None
         dtype = self.precision if dtype is None else dtype
         if not isinstance(dtype, DType) or not dtype.is_float:

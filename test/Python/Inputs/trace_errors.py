@@ -171,6 +171,14 @@ def unsupported_buffer_type():
 
 
 @case
+def python_type_as_buffer_type():
+    s, _ = scene()
+    # A Python type is callable, but it is no init body.
+    # CHECK: python_type_as_buffer_type: trace_errors.py:[[@LINE+1]]:{{[0-9]+}}: unsupported buffer type <class 'float'>: a buffer holds f32, f64 or a vector of them
+    s.buffer(float, name="B")
+
+
+@case
 def unsupported_param_type():
     s, _ = scene()
     # CHECK: unsupported_param_type: trace_errors.py:[[@LINE+1]]:{{[0-9]+}}: unsupported parameter type sim.vector(2, sim.f32): i32, i64, index, f32 or f64
