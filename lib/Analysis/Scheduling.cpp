@@ -273,6 +273,15 @@ mlir::sim::computeSchedule(const DependencyAnalysis &analysis,
   return Schedule(std::move(order));
 }
 
+bool mlir::sim::boundsBigStep(ComponentOp component) {
+  ScheduleOp schedule =
+      component->getParentOfType<SimulationOp>().getScheduleOp();
+  ArrayAttr bounds = schedule ? schedule.getBoundedByAttr() : ArrayAttr();
+  return component.hasNumSteps() && bounds &&
+         llvm::is_contained(bounds.getAsRange<FlatSymbolRefAttr>(),
+                            FlatSymbolRefAttr::get(component.getSymNameAttr()));
+}
+
 FailureOr<Stepping> mlir::sim::decideStepping(ComponentOp component,
                                               Strategy strategy) {
   auto simulation = component->getParentOfType<SimulationOp>();
@@ -304,11 +313,7 @@ FailureOr<Stepping> mlir::sim::decideStepping(ComponentOp component,
   // its reader's slots, so its estimate no longer bounds the big step.
   if (strategy == Strategy::lts && component.getFluxWindowAttr())
     return Stepping{Advance::local_flux, false};
-  ArrayAttr bounds = schedule.getBoundedByAttr();
-  bool bounding =
-      hasNumSteps && bounds &&
-      llvm::is_contained(bounds.getAsRange<FlatSymbolRefAttr>(),
-                         FlatSymbolRefAttr::get(component.getSymNameAttr()));
+  bool bounding = boundsBigStep(component);
   if (!hasNumSteps || bounding)
     return Stepping{Advance::whole_step, bounding};
   if (!component.getSubSteppingAttr())

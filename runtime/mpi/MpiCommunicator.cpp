@@ -35,8 +35,9 @@ size_t maxMessage() {
       char *end = nullptr;
       errno = 0;
       unsigned long long value = std::strtoull(text, &end, 10);
-      if (*end != '\0' || errno == ERANGE || value == 0 || *text == '-' ||
-          *text == '+' || std::isspace((unsigned char)*text)) {
+      if (*end != '\0' || errno == ERANGE || value == 0 ||
+          value > (unsigned long long)INT_MAX || *text == '-' || *text == '+' ||
+          std::isspace((unsigned char)*text)) {
         // Every rank reads the same environment (mpirun passes it on):
         // rank 0 says so once, then all stop.
         int rank = 0;
@@ -51,8 +52,7 @@ size_t maxMessage() {
         MPI_Abort(MPI_COMM_WORLD, 2);
         std::exit(2);
       }
-      if (value < bytes)
-        bytes = size_t(value);
+      bytes = size_t(value);
     }
     return bytes;
   }();

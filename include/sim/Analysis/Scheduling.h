@@ -75,6 +75,11 @@ struct Stepping {
   bool estimates;
 };
 
+/// Whether `component` bounds the hip big step: it has num_steps and
+/// sim.schedule's `bounded_by` (recorded by --sim-schedule) names it. False
+/// before a schedule is recorded.
+bool boundsBigStep(ComponentOp component);
+
 /// Decides `component`'s stepping under `strategy` from what the front end
 /// recorded: the step bounds of sim.schedule (`bounded_by`, recorded by
 /// --sim-schedule) and, under hip and hip-cache, the component's

@@ -369,24 +369,6 @@ FailureOr<std::unique_ptr<fb::PlanT>> PlanReader::read(simplan::PlanOp op) {
   plan->step_cap = op.getStepCap();
   plan->clock_slots = op.getClockSlots();
   plan->histogram = op.getHistogramSlot();
-  if (std::optional<int64_t> halo = op.getDistributedHalo()) {
-    // The plan's halo is the largest of its buffers', whose check (below)
-    // names the buffer; this one catches a plan written by hand.
-    bool buffersFit = llvm::all_of(
-        op.getBlock().getOps<simplan::BufferOp>(), [](simplan::BufferOp b) {
-          std::optional<ArrayRef<int64_t>> widths = b.getHalo();
-          return !widths || llvm::all_of(*widths, [](int64_t width) {
-            return width >= 0 && width <= int64_t(::sim::bundle::kMaxHalo);
-          });
-        });
-    if (buffersFit && (*halo < 0 || *halo > int64_t(::sim::bundle::kMaxHalo)))
-      return op.emitOpError()
-             << "is distributed with a halo of " << *halo
-             << " items; a rank holds at most " << ::sim::bundle::kMaxHalo
-             << " ghost items on each side of its block";
-    plan->distributed = std::make_unique<fb::DistributionT>();
-    plan->distributed->halo = uint32_t(*halo);
-  }
 
   for (Operation &child : op.getBlock()) {
     if (isa<simplan::ParamOp>(child))
@@ -449,6 +431,17 @@ FailureOr<std::unique_ptr<fb::PlanT>> PlanReader::read(simplan::PlanOp op) {
     } else {
       return child.emitOpError("cannot be written to a bundle's plan");
     }
+  }
+  // The plan's halo is the largest of its buffers', checked above at the
+  // buffer; this catches a plan written by hand.
+  if (std::optional<int64_t> halo = op.getDistributedHalo()) {
+    if (*halo < 0 || *halo > int64_t(::sim::bundle::kMaxHalo))
+      return op.emitOpError()
+             << "is distributed with a halo of " << *halo
+             << " items; a rank holds at most " << ::sim::bundle::kMaxHalo
+             << " ghost items on each side of its block";
+    plan->distributed = std::make_unique<fb::DistributionT>();
+    plan->distributed->halo = uint32_t(*halo);
   }
   return result;
 }

@@ -25,6 +25,7 @@
 //===----------------------------------------------------------------------===//
 
 #include "sim/Analysis/DependencyAnalysis.h"
+#include "sim/Analysis/Scheduling.h"
 #include "sim/Dialect/Sim/IR/SimOps.h"
 #include "sim/Dialect/Sim/Transforms/Passes.h"
 
@@ -302,13 +303,7 @@ struct SubstepLegalityPass
     }
     // A component that bounds the big step (it reads through the back
     // edge) takes it in one evaluation under lts too.
-    // (Without a schedule, run before --sim-schedule, nothing bounds it.)
-    ScheduleOp schedule =
-        component->getParentOfType<SimulationOp>().getScheduleOp();
-    ArrayAttr bounds = schedule ? schedule.getBoundedByAttr() : ArrayAttr();
-    if (bounds && llvm::is_contained(
-                      bounds.getAsRange<FlatSymbolRefAttr>(),
-                      FlatSymbolRefAttr::get(component.getSymNameAttr()))) {
+    if (boundsBigStep(component)) {
       remark << "; under lts it still takes the big step whole: it reads "
                 "through the back edge, so its num_steps bounds the big step "
                 "of the whole scene (per-region big steps are not built, "
