@@ -16,11 +16,17 @@
 #   sizes       bench/run over every size, load and interpolation
 #               (long: give it a call of its own)
 #   profile     ncu of the hip kernels, sim's and the hand-written ones
-#   default: device crosscheck sanitize targets profile
+#   distributed sim-run --distributed on CUDA, 2 and 3 ranks on the one GPU,
+#               against one process, bit for bit (needs mpirun, or the pack's
+#               mpi/openmpi.tar and SIM_GPU_INSTALL_MPI=1 to install it)
+#   default: device crosscheck sanitize targets profile distributed
+#   SIM_GPU_STAGE_LIMIT  seconds a stage may run before it is stopped and
+#                        counted as failed (default: no limit)
+#   SIM_GPU_JOBS         sanitizer runs at a time (default: 8)
 set -uo pipefail
 
 if [[ $# -lt 1 || "$1" == "--help" || "$1" == "-h" ]]; then
-  sed -n '2,19p' "$0" | sed 's/^# \{0,1\}//'
+  sed -n '2,26p' "$0" | sed 's/^# \{0,1\}//'
   exit $([[ $# -lt 1 ]] && echo 2 || echo 0)
 fi
 
@@ -28,7 +34,7 @@ cd "$(dirname "$0")/.."
 pack="$1"
 shift
 stages=("$@")
-((${#stages[@]})) || stages=(device crosscheck sanitize targets profile)
+((${#stages[@]})) || stages=(device crosscheck sanitize targets profile distributed)
 out="${OUT:-gpu-results}"
 mkdir -p "$out"
 run="$pack/bin/sim-run"
@@ -41,8 +47,9 @@ stage() {
   local name="$1"
   shift
   echo "== $name" >&2
-  local start=$SECONDS
-  if "$@" > "$out/$name.log" 2>&1; then
+  local start=$SECONDS limit="${SIM_GPU_STAGE_LIMIT:-0}"
+  # The stage runs in a child shell so that `timeout` can stop all of it.
+  if timeout "$limit" bash -c "$*" > "$out/$name.log" 2>&1; then
     echo "   ok ($((SECONDS - start)) s): $out/$name.log" >&2
   else
     echo "   FAILED ($((SECONDS - start)) s): $out/$name.log" >&2
@@ -63,23 +70,23 @@ crosscheck() {
 }
 
 sanitize() {
-  local status=0 tool scene strategy
+  # One compute-sanitizer run per tool, scene, strategy and program, up to
+  # SIM_GPU_JOBS at a time on the one GPU; each writes its own log.
+  local tool scene strategy jobs="${SIM_GPU_JOBS:-8}" logs="$out/sanitize"
+  mkdir -p "$logs"
   for tool in racecheck memcheck; do
     for scene in gravity_like pbd_like; do
       for strategy in $(python3 python/simlists.py strategies); do
-        local settings=(--strategy "$strategy" --steps 6 --set range=1000
-                        --set L=8 --set dist=2 --group-size 256)
-        echo "-- $tool $scene $strategy (sim)"
-        compute-sanitizer --tool "$tool" --error-exitcode 3 \
-          "$run" "$pack/bench/$scene-linear-g256.simb" --backend cuda \
-          "${settings[@]}" | tail -3 || status=1
-        echo "-- $tool $scene $strategy (hand-written)"
-        compute-sanitizer --tool "$tool" --error-exitcode 3 \
-          "$baseline" --scene "$scene" "${settings[@]}" | tail -3 || status=1
+        local settings="--strategy $strategy --steps 6 --set range=1000 --set L=8 --set dist=2 --group-size 256"
+        echo "$tool $scene $strategy sim $run $pack/bench/$scene-linear-g256.simb --backend cuda $settings"
+        echo "$tool $scene $strategy hand-written $baseline --scene $scene $settings"
       done
     done
-  done
-  return $status
+  done | xargs -P "$jobs" -L 1 sh -c '
+    log="$0/$1-$2-$3-$4.log"; tool="$1"; shift 4
+    if compute-sanitizer --tool "$tool" --error-exitcode 3 "$@" > "$log" 2>&1
+    then echo "clean: $(basename "$log" .log)"
+    else echo "FOUND (exit $?): $(basename "$log" .log)"; tail -20 "$log"; exit 1; fi' "$logs"
 }
 
 study() {
@@ -114,9 +121,42 @@ profile() {
     "$out"/ncu-*.txt
 }
 
+distributed() {
+  [[ -f "$pack/lib/libsim_mpi.so" ]] || {
+    echo "the pack has no MPI plugin (sim-run was built without MPI)"
+    return 1
+  }
+  if ! command -v mpirun > /dev/null; then
+    [[ "${SIM_GPU_INSTALL_MPI:-0}" == 1 && -f "$pack/mpi/openmpi.tar" ]] || {
+      echo "no mpirun here (pack one with SIM_GPU_PACK_MPI=1 and install it" \
+        "with SIM_GPU_INSTALL_MPI=1)"
+      return 1
+    }
+    echo "installing the pack's Open MPI (files already here are kept)"
+    tar -xPf "$pack/mpi/openmpi.tar" --skip-old-files || return 1
+    ln -sf "$(cat "$pack/mpi/mpirun")" /usr/local/bin/mpirun
+    ldconfig
+  fi
+  export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 \
+    OMPI_MCA_rmaps_base_oversubscribe=1 OMPI_MCA_btl=self,vader \
+    OMPI_MCA_pml=ob1 OMPI_MCA_btl_vader_single_copy_mechanism=none \
+    OMPI_MCA_mca_base_component_show_load_errors=0
+  local status=0 scene
+  for scene in gravity_like pbd_like; do
+    python3 test/Integration/Inputs/distributed.py --sim-run "$run" \
+      --mpirun mpirun --backend cuda --bundle "$pack/distributed/$scene.simb" \
+      --out "$out/distributed/$scene" --steps 40 --set range=100000 \
+      --set dist=2 --group-size 256 \
+      --strategies simple traditional hip hip-cache lts || status=1
+  done
+  return $status
+}
+
+export -f device crosscheck sanitize study targets sizes profile distributed
+export run baseline pack out
 for name in "${stages[@]}"; do
   case "$name" in
-  device | crosscheck | sanitize | targets | sizes | profile)
+  device | crosscheck | sanitize | targets | sizes | profile | distributed)
     stage "$name" "$name" ;;
   *)
     echo "gpu-check: unknown stage '$name' (see --help)" >&2
