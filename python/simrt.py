@@ -65,7 +65,8 @@ class _BufferInfo(ctypes.Structure):
                 ("scalar_type", ctypes.c_char_p),
                 ("scalar_bytes", ctypes.c_int32), ("lanes", ctypes.c_int32),
                 ("interp", ctypes.c_char_p), ("boundary", ctypes.c_char_p),
-                ("observed", ctypes.c_int32), ("exact", ctypes.c_int32)]
+                ("observed", ctypes.c_int32), ("exact", ctypes.c_int32),
+                ("precision_bytes", ctypes.c_int32)]
 
 
 class _ParamInfo(ctypes.Structure):
@@ -251,7 +252,8 @@ class Bundle:
     def buffers(self):
         """Every buffer of the scene, in declaration order: a dict per
         buffer with name, element_type, scalar_type ("f32"/"f64"),
-        scalar_bytes, lanes, interp, boundary, observed and exact."""
+        scalar_bytes, lanes, interp, boundary, observed, exact and
+        precision_bytes (of the narrowest float its values derive from)."""
         lib = load_library()
         result = []
         for index in range(lib.sim_bundle_num_buffers(self._handle)):

@@ -69,6 +69,13 @@ bool isIdentifier(const std::string &name) {
   return true;
 }
 
+/// Buffer and Total precision_bytes: 0 (a bundle before the field), 4 or 8.
+void checkPrecision(int32_t bytes, const std::string &what) {
+  if (bytes != 0 && bytes != 4 && bytes != 8)
+    bad(what + " derives from floats of " + std::to_string(bytes) +
+        " bytes, not 4 or 8");
+}
+
 void checkElement(const schema::Element *element, const std::string &what) {
   if (!element)
     bad(what + " has no element type");
@@ -160,6 +167,7 @@ void verifyScene(const schema::SceneT &scene) {
       bad(about + " has boundary rule " +
           std::to_string(int(buffer->boundary)) +
           ", which is not clamp, wrap or zero");
+    checkPrecision(buffer->precision_bytes, about);
     if (buffer->interp != Interp::Hermite) {
       if (buffer->derivative != -1)
         bad(about + " names a derivative but is not interpolated by hermite");
@@ -174,10 +182,13 @@ void verifyScene(const schema::SceneT &scene) {
   }
 
   checkUniqueNames(scene.totals, what + ": total");
-  for (const auto &total : scene.totals)
+  for (const auto &total : scene.totals) {
     if (total->type != ScalarType::F32 && total->type != ScalarType::F64)
       bad(what + ": total " + quoted(total->name) + " has type " +
           std::to_string(int(total->type)) + ", not f32 or f64");
+    checkPrecision(total->precision_bytes,
+                   what + ": total " + quoted(total->name));
+  }
 }
 
 //===----------------------------------------------------------------------===//

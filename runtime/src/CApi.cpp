@@ -12,6 +12,7 @@
 
 #include "Bundle.h"
 #include "Checkpoint.h"
+#include "CudaDriver.h"
 #include "Error.h"
 #include "Reference.h"
 #include "Session.h"
@@ -170,6 +171,16 @@ sim_status sim_backend_parse(const char *name, sim_backend *out) {
                       "' (auto, cpu, cuda, reference)");
 }
 
+sim_status sim_cuda_device_count(int32_t *out) {
+  SIM_REQUIRE(out);
+  return guard([&] {
+    const cuda::Driver &cu = cuda::driver();
+    int count = 0;
+    cu.check(cu.cuDeviceGetCount(&count), "cuDeviceGetCount");
+    *out = count;
+  });
+}
+
 //===----------------------------------------------------------------------===//
 // Bundles
 //===----------------------------------------------------------------------===//
@@ -261,8 +272,22 @@ sim_status sim_bundle_buffer(const sim_bundle *bundle, int32_t index,
   out->boundary = boundaryName(buffer.boundary);
   out->observed = buffer.observed;
   out->exact = buffer.exact;
+  out->precision_bytes =
+      buffer.precision_bytes ? buffer.precision_bytes : out->scalar_bytes;
   lastError.clear();
   return SIM_OK;
+}
+
+int32_t sim_bundle_total_precision_bytes(const sim_bundle *bundle,
+                                         const char *name) {
+  if (!bundle || !name)
+    return 0;
+  for (const auto &total : bundle->bundle->scene().totals)
+    if (total->name == name)
+      return total->precision_bytes                   ? total->precision_bytes
+             : total->type == schema::ScalarType::F64 ? 8
+                                                      : 4;
+  return 0;
 }
 
 int32_t sim_bundle_num_params(const sim_bundle *bundle) {

@@ -12,10 +12,12 @@
 #include "CudaDriver.h"
 #include "Error.h"
 
+#include <cctype>
 #include <climits>
 #include <cstdlib>
 #include <dlfcn.h>
 #include <mutex>
+#include <optional>
 
 namespace sim::rt {
 namespace cuda {
@@ -111,6 +113,28 @@ const Driver &driver() {
   if (loaded.status != SIM_OK)
     fail(loaded.status, loaded.error);
   return loaded.table;
+}
+
+std::optional<size_t> entryParamCount(const std::string &ptx,
+                                      const std::string &name) {
+  const std::string entry = ".entry " + name;
+  for (size_t at = ptx.find(entry); at != std::string::npos;
+       at = ptx.find(entry, at + 1)) {
+    size_t open = at + entry.size();
+    while (open < ptx.size() && std::isspace((unsigned char)ptx[open]))
+      ++open;
+    if (open >= ptx.size() || ptx[open] != '(')
+      continue; // an entry whose name starts with `name`
+    size_t close = ptx.find(')', open);
+    if (close == std::string::npos)
+      return std::nullopt;
+    size_t count = 0;
+    for (size_t param = ptx.find(".param", open); param < close;
+         param = ptx.find(".param", param + 6))
+      ++count;
+    return count;
+  }
+  return std::nullopt;
 }
 
 } // namespace cuda
@@ -251,7 +275,7 @@ public:
         fail(SIM_ERROR_BACKEND,
              what + " has no kernel '" + kernel->name + "' (" +
                  cu.message(result, "cuModuleGetFunction") + ")");
-      checkParams(function, *kernel, what);
+      checkParams(function, plan.ptx, *kernel, what);
       int maxThreads = 0, registers = 0;
       if (cu.cuFuncGetAttribute) {
         cu.check(cu.cuFuncGetAttribute(&maxThreads,
@@ -267,13 +291,13 @@ public:
     }
   }
 
-  /// Where the driver can tell (cuFuncGetParamInfo, CUDA 12.4+), checks
-  /// that the PTX entry takes the parameters the kernel's record says: a
-  /// memref as five 8-byte values, a scalar as itself.
-  void checkParams(CUfunction function, const schema::KernelT &kernel,
-                   const std::string &what) {
-    if (!cu.cuFuncGetParamInfo)
-      return;
+  /// Checks that the PTX entry takes the parameters the kernel's record says:
+  /// a memref as five 8-byte values, a scalar as itself. The count comes from
+  /// the entry's declaration in the PTX and the sizes from the driver where
+  /// it can tell (cuFuncGetParamInfo, CUDA 12.4+), asked only for parameters
+  /// that exist (a failing call would be an API error to compute-sanitizer).
+  void checkParams(CUfunction function, const std::string &ptx,
+                   const schema::KernelT &kernel, const std::string &what) {
     std::vector<size_t> sizes;
     for (const schema::KernelParam &param : kernel.params) {
       if (param.type() == ParamType::Memref)
@@ -284,20 +308,25 @@ public:
                             ? 4
                             : 8);
     }
-    for (size_t i = 0; i <= sizes.size(); ++i) {
-      size_t offset = 0, size = 0;
-      CUresult result = cu.cuFuncGetParamInfo(function, i, &offset, &size);
-      bool exists = result == CUDA_SUCCESS;
-      if (i == sizes.size() ? !exists : exists && size == sizes[i])
-        continue;
+    auto mismatch = [&](const std::string &why) {
       fail(SIM_ERROR_BUNDLE,
            what + ": the PTX entry '" + kernel.name + "' does not take the " +
                std::to_string(sizes.size()) +
-               " parameter values its kernel record says (value " +
-               std::to_string(i) +
-               (exists ? " has " + std::to_string(size) + " bytes"
-                       : " is missing") +
-               ")");
+               " parameter values its kernel record says (" + why + ")");
+    };
+    std::optional<size_t> declared = cuda::entryParamCount(ptx, kernel.name);
+    if (declared && *declared != sizes.size())
+      mismatch("it declares " + std::to_string(*declared));
+    if (!cu.cuFuncGetParamInfo)
+      return;
+    for (size_t i = 0; i < sizes.size(); ++i) {
+      size_t offset = 0, size = 0;
+      CUresult result = cu.cuFuncGetParamInfo(function, i, &offset, &size);
+      if (result != CUDA_SUCCESS)
+        mismatch("value " + std::to_string(i) + " is missing");
+      if (size != sizes[i])
+        mismatch("value " + std::to_string(i) + " has " + std::to_string(size) +
+                 " bytes");
     }
   }
 

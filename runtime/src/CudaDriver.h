@@ -14,6 +14,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <string>
 
 namespace sim::rt::cuda {
@@ -138,6 +139,11 @@ struct Driver {
 /// Loads libcuda.so.1 (or $SIM_CUDA_DRIVER) and calls cuInit once per
 /// process; throws SIM_ERROR_NO_DRIVER or SIM_ERROR_NO_DEVICE.
 const Driver &driver();
+
+/// How many parameters the PTX entry `name` declares (the `.param`s between
+/// `.entry name(` and its `)`); nullopt where `ptx` has no such entry.
+std::optional<size_t> entryParamCount(const std::string &ptx,
+                                      const std::string &name);
 
 } // namespace sim::rt::cuda
 

@@ -1144,10 +1144,15 @@ std::vector<InitCheck> ReferenceSession::checkInit(double tolerance,
         row.buffer = buffers_[buffer].info->name;
         row.component = component.name;
         row.items = std::min(range, maxItems);
-        found[k].f64 = isF64(*buffers_[buffer].info->element);
-        row.tolerance = tolerance > 0  ? tolerance
-                        : found[k].f64 ? kInitToleranceF64
-                                       : kInitToleranceF32;
+        const schema::BufferT &info = *buffers_[buffer].info;
+        found[k].f64 = isF64(*info.element);
+        // The tolerance of the floats its values derive from: an f64
+        // buffer computed from f32 data is as exact as f32.
+        bool precise =
+            info.precision_bytes ? info.precision_bytes == 8 : found[k].f64;
+        row.tolerance = tolerance > 0 ? tolerance
+                        : precise     ? kInitToleranceF64
+                                      : kInitToleranceF32;
         // A later component reads it: interpolated under hip.
         for (size_t r = c + 1; r < model_->components.size(); ++r) {
           const auto &reads = model_->components[r]->reads;

@@ -283,6 +283,8 @@ TEST(BundleVerifier, ChecksTheScene) {
          c.scene->buffers[0]->derivative = 1;
        },
        "interpolates with the derivative 'V', whose element type differs"},
+      {[](auto &c) { c.scene->buffers[1]->precision_bytes = 2; },
+       "buffer 'V' derives from floats of 2 bytes, not 4 or 8"},
   };
   for (const Case &c : cases)
     EXPECT_TRUE(contains(errorAfter(c.edit), c.message)) << c.message;

@@ -9,6 +9,7 @@
 //===----------------------------------------------------------------------===//
 
 #include "Bundle.h"
+#include "CudaDriver.h"
 #include "Error.h"
 #include "Session.h"
 #include "TestBundle.h"
@@ -61,6 +62,21 @@ TEST(Cuda, WithoutADriverFailsWithOneClearLine) {
     EXPECT_EQ(error.status, SIM_ERROR_NO_DRIVER);
     EXPECT_STREQ(error.what(), "no CUDA driver (libcuda.so.1 not found)");
   }
+}
+
+TEST(Cuda, DeviceCountSaysWhyThereAreNone) {
+  int32_t count = -1;
+  sim_status status = sim_cuda_device_count(&count);
+  if (haveDriver()) {
+    if (status == SIM_OK)
+      EXPECT_GT(count, 0);
+    else
+      EXPECT_EQ(status, SIM_ERROR_NO_DEVICE) << sim_last_error();
+    return;
+  }
+  EXPECT_EQ(status, SIM_ERROR_NO_DRIVER);
+  EXPECT_STREQ(sim_last_error(), "no CUDA driver (libcuda.so.1 not found)");
+  EXPECT_EQ(count, -1);
 }
 
 TEST(Cuda, AutoFallsBackToTheCpuWithoutADriver) {
@@ -268,4 +284,24 @@ TEST(Cuda, ReportsAJitFailureWithTheDriversLog) {
         << message;
     EXPECT_NE(message.find("JIT log:"), std::string::npos) << message;
   }
+}
+
+// The runtime counts a kernel's parameters from the PTX entry's declaration
+// (asking the driver about a parameter past the last would be an API error
+// that compute-sanitizer reports); no GPU needed.
+TEST(Cuda, EntryParamCountReadsThePtxDeclaration) {
+  std::string ptx = ".visible .entry substep_C10(\n"
+                    "\t.param .u64 .ptr .align 1 substep_C10_param_0,\n"
+                    "\t.param .u32 substep_C10_param_1\n)\n{\n}\n"
+                    ".visible .entry substep_C1 (\n"
+                    "\t.param .f64 substep_C1_param_0,\n"
+                    "\t.param .u64 substep_C1_param_1,\n"
+                    "\t.param .u64 substep_C1_param_2\n)\n{\n"
+                    "\tld.param.f64 %fd1, [substep_C1_param_0];\n}\n"
+                    ".visible .entry evaluate_none()\n{\n}\n";
+  EXPECT_EQ(cuda::entryParamCount(ptx, "substep_C10"), 2u);
+  EXPECT_EQ(cuda::entryParamCount(ptx, "substep_C1"), 3u);
+  EXPECT_EQ(cuda::entryParamCount(ptx, "evaluate_none"), 0u);
+  EXPECT_EQ(cuda::entryParamCount(ptx, "substep_C"), std::nullopt);
+  EXPECT_EQ(cuda::entryParamCount(ptx + ".entry cut(", "cut"), std::nullopt);
 }

@@ -511,8 +511,8 @@ TEST(SimRunCheck, ToleranceZeroAsksForEqualValues) {
 TEST(SimRunCheck, FailsOnNonFiniteTotals) {
   std::vector<Check::TotalRow> rows;
   std::vector<std::string> failures;
-  compareTotals({"E", "P"}, 10, {NAN, INFINITY}, {NAN, INFINITY}, 1e-8, rows,
-                failures);
+  compareTotals({"E", "P"}, 10, {NAN, INFINITY}, {NAN, INFINITY}, {1e-8, 1e-8},
+                rows, failures);
   ASSERT_EQ(rows.size(), 2u);
   EXPECT_FALSE(rows[0].pass);
   EXPECT_FALSE(rows[1].pass);

@@ -395,6 +395,7 @@ Buffer readBuffer(sim_session *session, const sim_buffer_info &info,
   Buffer buffer;
   buffer.name = info.name;
   buffer.scalarBytes = info.scalar_bytes;
+  buffer.precisionBytes = info.precision_bytes;
   buffer.lanes = info.lanes;
   size_t bytes = 0;
   check(sim_session_buffer_bytes(session, info.name, &bytes));
@@ -672,6 +673,9 @@ void runMain(Results &results, Sessions &sessions, const sim_bundle *bundle,
   if (!main.checkpointFile.empty())
     writeCheckpoint(session, main);
   main.totalNames = totalNamesOf(session);
+  for (const std::string &name : main.totalNames)
+    main.totalPrecisionBytes.push_back(
+        sim_bundle_total_precision_bytes(bundle, name.c_str()));
   main.totals = totalsOf(session);
   main.values = readBuffers(session, observed);
 }
@@ -817,8 +821,11 @@ void runCheck(Results &results, Session &session,
   Check check =
       compareWithReference(main.values, results.checkValues, main.counts,
                            totals.counts, options.checkTolerance);
-  double totalTolerance =
-      options.checkTolerance >= 0 ? options.checkTolerance : kTotalTolerance;
+  std::vector<double> totalTolerance;
+  for (int32_t bytes : main.totalPrecisionBytes)
+    totalTolerance.push_back(options.checkTolerance >= 0
+                                 ? options.checkTolerance
+                                 : defaultTotalTolerance(bytes));
   compareTotals(main.totalNames, options.steps, main.totals,
                 totalsOf(reference), totalTolerance, check.totals,
                 check.failures);
@@ -1205,8 +1212,14 @@ int runDistributed(Options options, int &argc, char **&argv) {
   world = info.communicator;
   worldRank = info.rank;
   worldSize = info.size;
-  // One GPU per rank of a machine.
-  options.device += info.local_rank;
+  // The ranks of a machine take its GPUs in turn from --device on; where
+  // there are more ranks than GPUs, they share them round-robin (a --device
+  // past the last is left for the backend to refuse).
+  int32_t devices = 0;
+  if (options.backend != SIM_BACKEND_CPU &&
+      options.backend != SIM_BACKEND_REFERENCE &&
+      sim_cuda_device_count(&devices) == SIM_OK && options.device < devices)
+    options.device += info.local_rank % (devices - options.device);
   try {
     // Rank 0 prints the report and the output rows.
     if (!printing() && !std::freopen("/dev/null", "w", stdout))

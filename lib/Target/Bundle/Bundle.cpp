@@ -24,6 +24,7 @@
 //===----------------------------------------------------------------------===//
 
 #include "sim/Target/Bundle.h"
+#include "sim/Analysis/ValuePrecision.h"
 #include "sim/Conversion/Passes.h"
 #include "sim/Dialect/Plan/IR/PlanOps.h"
 #include "sim/Dialect/Sim/IR/SimDialect.h"
@@ -276,6 +277,7 @@ LogicalResult buildScene(SimulationOp simulation, fb::SceneT &scene,
   if (ObserveOp observe = simulation.getObserveOp())
     for (auto name : observe.getBuffers().getAsRange<FlatSymbolRefAttr>())
       observed.insert(name.getValue());
+  ValuePrecision precision(simulation);
   for (BufferOp buffer : simulation.getBuffers()) {
     auto record = std::make_unique<fb::BufferT>();
     record->name = buffer.getSymName().str();
@@ -312,6 +314,7 @@ LogicalResult buildScene(SimulationOp simulation, fb::SceneT &scene,
     record->boundary = getBoundary(buffer.getBoundary());
     record->observed = observed.contains(buffer.getSymName());
     record->exact = !buffer.getExact().empty();
+    record->precision_bytes = precision.getBits(buffer) <= 32 ? 4 : 8;
     scene.buffers.push_back(std::move(record));
   }
 
@@ -325,6 +328,7 @@ LogicalResult buildScene(SimulationOp simulation, fb::SceneT &scene,
     auto record = std::make_unique<fb::TotalT>();
     record->name = total.getSymName().str();
     record->type = *type;
+    record->precision_bytes = precision.getBits(total) <= 32 ? 4 : 8;
     scene.totals.push_back(std::move(record));
   }
   return success();

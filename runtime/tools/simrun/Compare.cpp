@@ -54,8 +54,12 @@ bool Check::evaluationsEqual() const {
       [](const CountRow &row) { return row.backend == row.reference; });
 }
 
-double defaultTolerance(int32_t scalarBytes) {
-  return scalarBytes == 8 ? 1e-10 : 1e-4;
+double defaultTolerance(int32_t precisionBytes) {
+  return precisionBytes == 8 ? 1e-10 : 1e-4;
+}
+
+double defaultTotalTolerance(int32_t precisionBytes) {
+  return precisionBytes == 8 ? 1e-8 : 1e-4;
 }
 
 std::string displayName(const std::string &name) {
@@ -107,8 +111,10 @@ Check::BufferRow checkBuffer(const Buffer &backend, const Buffer &reference,
   for (size_t v = 0; v < reference.values(); ++v)
     if (std::isfinite(reference.at(v)))
       row.maxReference = std::max(row.maxReference, std::fabs(reference.at(v)));
-  row.tolerance =
-      tolerance >= 0 ? tolerance : defaultTolerance(backend.scalarBytes);
+  row.tolerance = tolerance >= 0 ? tolerance
+                                 : defaultTolerance(backend.precisionBytes
+                                                        ? backend.precisionBytes
+                                                        : backend.scalarBytes);
   row.limit = row.tolerance * std::max(1.0, row.maxReference);
   row.nonFiniteBackend = backend.nonFinite();
   row.nonFiniteReference = reference.nonFinite();
@@ -181,13 +187,15 @@ Check compareWithReference(const std::vector<Buffer> &backend,
 
 void compareTotals(const std::vector<std::string> &names, int64_t time,
                    const std::vector<double> &backend,
-                   const std::vector<double> &reference, double tolerance,
+                   const std::vector<double> &reference,
+                   const std::vector<double> &tolerances,
                    std::vector<Check::TotalRow> &rows,
                    std::vector<std::string> &failures) {
-  for (size_t t = 0;
-       t < names.size() && t < backend.size() && t < reference.size(); ++t) {
+  for (size_t t = 0; t < names.size() && t < backend.size() &&
+                     t < reference.size() && t < tolerances.size();
+       ++t) {
     Check::TotalRow row{names[t], time, backend[t], reference[t], 0, false};
-    row.limit = tolerance * std::max(1.0, std::fabs(row.reference));
+    row.limit = tolerances[t] * std::max(1.0, std::fabs(row.reference));
     bool finite = std::isfinite(row.backend) && std::isfinite(row.reference);
     row.pass = finite && std::fabs(row.backend - row.reference) <= row.limit;
     if (!finite)

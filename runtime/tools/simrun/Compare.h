@@ -24,6 +24,10 @@ struct Buffer {
   std::string name;
   /// 4 (f32) or 8 (f64), and scalars per item.
   int32_t scalarBytes = 8;
+  /// Bytes of the narrowest float its values derive from (the bundle's
+  /// precision_bytes): an f64 buffer computed from f32 data is 4; 0: as
+  /// scalarBytes.
+  int32_t precisionBytes = 0;
   int32_t lanes = 1;
   std::vector<uint8_t> bytes;
 
@@ -85,9 +89,12 @@ struct Check {
   bool evaluationsEqual() const;
 };
 
-/// The default tolerance of a buffer of `scalarBytes`, and of totals.
-double defaultTolerance(int32_t scalarBytes);
-constexpr double kTotalTolerance = 1e-8;
+/// The default tolerance of a buffer whose values derive from floats of
+/// `precisionBytes`: 1e-4 for f32, 1e-10 for f64.
+double defaultTolerance(int32_t precisionBytes);
+/// The default tolerance of a total (summed in double, so looser than a
+/// buffer's for f64): 1e-4 for f32, 1e-8 for f64.
+double defaultTotalTolerance(int32_t precisionBytes);
 
 /// Compares buffers and counters. A buffer passes when it has no NaN or
 /// infinity on either side (a scene that blows up fails, even when both
@@ -99,11 +106,12 @@ Check compareWithReference(const std::vector<Buffer> &backend,
                            const RunCounts &referenceCounts, double tolerance);
 
 /// Compares the totals `names` at base step `time`; a total passes when
-/// both are finite and |a - b| <= tolerance * max(1, |b|). Appends rows to
+/// both are finite and |a - b| <= tolerances[t] * max(1, |b|). Appends rows to
 /// `rows` and failures to `failures`.
 void compareTotals(const std::vector<std::string> &names, int64_t time,
                    const std::vector<double> &backend,
-                   const std::vector<double> &reference, double tolerance,
+                   const std::vector<double> &reference,
+                   const std::vector<double> &tolerances,
                    std::vector<Check::TotalRow> &rows,
                    std::vector<std::string> &failures);
 

@@ -287,9 +287,10 @@ void declareOptions(CLI::App &app, Options &options, std::string &backend,
   check->disable_flag_override();
   app.add_option("--check-tolerance", options.checkTolerance,
                  "a buffer passes --check when max-abs <= X *\n"
-                 "max(1, max|reference|) (default 1e-4 for f32\n"
-                 "buffers, 1e-10 for f64; 1e-8 for totals); 0:\n"
-                 "the values must be equal")
+                 "max(1, max|reference|) (default by the floats\n"
+                 "its values derive from: 1e-4 for f32, 1e-10 for\n"
+                 "f64; totals 1e-4 and 1e-8); 0: the values must\n"
+                 "be equal")
       ->option_text("X")
       ->check(nonNegativeNumber())
       ->needs(check);

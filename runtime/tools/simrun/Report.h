@@ -80,6 +80,9 @@ struct MainRun {
   int64_t cutRun = 0;
 
   std::vector<std::string> totalNames;
+  /// Bytes of the narrowest float each total's values derive from (4 or
+  /// 8): --check's default tolerance for it.
+  std::vector<int32_t> totalPrecisionBytes;
   /// At the end of the run (the base step reached when cut).
   std::vector<double> totals;
   /// The observed buffers at the end of the run.

@@ -103,6 +103,9 @@ SIM_API sim_status sim_strategy_parse(const char *name, sim_strategy *out);
 /// "auto", "cpu", "cuda", "reference".
 SIM_API const char *sim_backend_name(sim_backend backend);
 SIM_API sim_status sim_backend_parse(const char *name, sim_backend *out);
+/// The CUDA devices of this machine; SIM_ERROR_NO_DRIVER or
+/// SIM_ERROR_NO_DEVICE where there are none to use.
+SIM_API sim_status sim_cuda_device_count(int32_t *out);
 
 //===----------------------------------------------------------------------===//
 // Bundles and scene metadata
@@ -155,12 +158,20 @@ typedef struct sim_buffer_info {
   int32_t observed;
   /// The scene declares its exact solution.
   int32_t exact;
+  /// Bytes of the narrowest float its values derive from (4 or 8): 4 for an
+  /// f64 buffer computed from f32 data. sim-run --check's default tolerance
+  /// follows it.
+  int32_t precision_bytes;
 } sim_buffer_info;
 
 SIM_API int32_t sim_bundle_num_buffers(const sim_bundle *bundle);
 /// Strings stay valid as long as the bundle.
 SIM_API sim_status sim_bundle_buffer(const sim_bundle *bundle, int32_t index,
                                      sim_buffer_info *out);
+/// Bytes of the narrowest float the values of total `name` derive from (4
+/// or 8, as sim_buffer_info.precision_bytes); 0 for no such total.
+SIM_API int32_t sim_bundle_total_precision_bytes(const sim_bundle *bundle,
+                                                 const char *name);
 
 typedef struct sim_param_info {
   const char *name;
@@ -371,7 +382,8 @@ typedef struct sim_init_check {
 /// read seeing the initial state, against the initial state of each buffer
 /// it writes. A model whose init is consistent gets its state back
 /// unchanged (n base steps of nothing). `tolerance` is relative to the
-/// buffer's largest value (0: 1e-5 for f32 buffers, 1e-12 for f64);
+/// buffer's largest value (0: 1e-5 for buffers whose values derive from
+/// f32 data, precision_bytes 4, 1e-12 for the others);
 /// `max_items` bounds the items evaluated (0: 65536; above it, the first
 /// and the last half of them). The session's range, dt and parameters
 /// apply; its state is not touched. `*count` gets the number of buffers

@@ -138,6 +138,16 @@ def value(v):
     return "%s %d" % (v["type"], v["int_value"])
 
 
+def precision(record, scalar):
+    """" from f32" where the values derive from narrower floats than their
+    own type (precision_bytes); "" where they do not."""
+    own = {"F32": 4, "F64": 8}[scalar]
+    bytes_ = record.get("precision_bytes", 0)
+    if bytes_ not in (0, 4, 8):
+        fail("precision_bytes %d is not 0, 4 or 8" % bytes_)
+    return " from f32" if bytes_ and bytes_ < own else ""
+
+
 def dump_scene(scene):
     print("scene %s range %d dt %s max_steps %d" % (
         name(scene["name"]), scene["range"], value(scene["dt"]),
@@ -154,12 +164,14 @@ def dump_scene(scene):
             interp += "(%s)" % name(buffers[d]["name"])
         elif b["derivative"] != -1:
             fail("buffer %d is not Hermite but has a derivative" % i)
-        print("buffer %d %s %s interp %s boundary %s%s%s" % (
+        print("buffer %d %s %s interp %s boundary %s%s%s%s" % (
             i, name(b["name"]), element(b["element"]), interp, b["boundary"],
             " observed" if b["observed"] else "",
-            " exact" if b["exact"] else ""))
+            " exact" if b["exact"] else "",
+            precision(b, b["element"]["scalar"])))
     for i, t in enumerate(scene.get("totals", [])):
-        print("total %d %s %s" % (i, name(t["name"]), t["type"]))
+        print("total %d %s %s%s" % (i, name(t["name"]), t["type"],
+                                    precision(t, t["type"])))
 
 
 def dump_steps(steps, plan, names, depth, launches):
