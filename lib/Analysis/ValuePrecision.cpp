@@ -7,7 +7,8 @@
 #include "sim/Analysis/ValuePrecision.h"
 
 #include "mlir/IR/BuiltinTypes.h"
-#include "llvm/ADT/SmallPtrSet.h"
+#include "llvm/ADT/STLExtras.h"
+#include "llvm/ADT/StringMap.h"
 
 #include <algorithm>
 #include <limits>

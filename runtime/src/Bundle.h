@@ -86,6 +86,17 @@ inline bool isF64(const schema::Element &element) {
 inline int64_t scalarBytes(const schema::Element &element) {
   return isF64(element) ? 8 : 4;
 }
+/// Bytes of the narrowest float a buffer's or total's values derive from
+/// (the compiler's precision_bytes; a bundle without it: its own type's).
+inline int32_t precisionBytes(const schema::BufferT &buffer) {
+  return buffer.precision_bytes ? buffer.precision_bytes
+                                : int32_t(scalarBytes(*buffer.element));
+}
+inline int32_t precisionBytes(const schema::TotalT &total) {
+  return total.precision_bytes                   ? total.precision_bytes
+         : total.type == schema::ScalarType::F64 ? 8
+                                                 : 4;
+}
 /// Bytes of one item in a host array (lanes packed, no padding).
 inline int64_t packedBytes(const schema::Element &element) {
   return int64_t(element.lanes()) * scalarBytes(element);

@@ -272,8 +272,7 @@ sim_status sim_bundle_buffer(const sim_bundle *bundle, int32_t index,
   out->boundary = boundaryName(buffer.boundary);
   out->observed = buffer.observed;
   out->exact = buffer.exact;
-  out->precision_bytes =
-      buffer.precision_bytes ? buffer.precision_bytes : out->scalar_bytes;
+  out->precision_bytes = precisionBytes(buffer);
   lastError.clear();
   return SIM_OK;
 }
@@ -284,9 +283,7 @@ int32_t sim_bundle_total_precision_bytes(const sim_bundle *bundle,
     return 0;
   for (const auto &total : bundle->bundle->scene().totals)
     if (total->name == name)
-      return total->precision_bytes                   ? total->precision_bytes
-             : total->type == schema::ScalarType::F64 ? 8
-                                                      : 4;
+      return precisionBytes(*total);
   return 0;
 }
 

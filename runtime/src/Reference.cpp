@@ -1148,11 +1148,9 @@ std::vector<InitCheck> ReferenceSession::checkInit(double tolerance,
         found[k].f64 = isF64(*info.element);
         // The tolerance of the floats its values derive from: an f64
         // buffer computed from f32 data is as exact as f32.
-        bool precise =
-            info.precision_bytes ? info.precision_bytes == 8 : found[k].f64;
-        row.tolerance = tolerance > 0 ? tolerance
-                        : precise     ? kInitToleranceF64
-                                      : kInitToleranceF32;
+        row.tolerance = tolerance > 0               ? tolerance
+                        : precisionBytes(info) == 8 ? kInitToleranceF64
+                                                    : kInitToleranceF32;
         // A later component reads it: interpolated under hip.
         for (size_t r = c + 1; r < model_->components.size(); ++r) {
           const auto &reads = model_->components[r]->reads;

@@ -278,6 +278,8 @@ LogicalResult buildScene(SimulationOp simulation, fb::SceneT &scene,
     for (auto name : observe.getBuffers().getAsRange<FlatSymbolRefAttr>())
       observed.insert(name.getValue());
   ValuePrecision precision(simulation);
+  // The bundle's precision_bytes: f32 and narrower floats count as f32.
+  auto precisionBytes = [](unsigned bits) { return bits <= 32 ? 4 : 8; };
   for (BufferOp buffer : simulation.getBuffers()) {
     auto record = std::make_unique<fb::BufferT>();
     record->name = buffer.getSymName().str();
@@ -314,7 +316,7 @@ LogicalResult buildScene(SimulationOp simulation, fb::SceneT &scene,
     record->boundary = getBoundary(buffer.getBoundary());
     record->observed = observed.contains(buffer.getSymName());
     record->exact = !buffer.getExact().empty();
-    record->precision_bytes = precision.getBits(buffer) <= 32 ? 4 : 8;
+    record->precision_bytes = precisionBytes(precision.getBits(buffer));
     scene.buffers.push_back(std::move(record));
   }
 
@@ -328,7 +330,7 @@ LogicalResult buildScene(SimulationOp simulation, fb::SceneT &scene,
     auto record = std::make_unique<fb::TotalT>();
     record->name = total.getSymName().str();
     record->type = *type;
-    record->precision_bytes = precision.getBits(total) <= 32 ? 4 : 8;
+    record->precision_bytes = precisionBytes(precision.getBits(total));
     scene.totals.push_back(std::move(record));
   }
   return success();
