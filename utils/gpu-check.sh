@@ -16,7 +16,7 @@
 #   sizes       bench/run over every size, load and interpolation
 #               (long: give it a call of its own)
 #   profile     ncu of the hip kernels, sim's and the hand-written ones
-#   distributed sim-run --distributed on CUDA, 2 and 3 ranks on the one GPU,
+#   distributed sim-run --distributed on CUDA, 2 and 3 ranks sharing the GPUs,
 #               against one process, bit for bit (needs mpirun, or the pack's
 #               mpi/openmpi.tar and SIM_GPU_INSTALL_MPI=1 to install it)
 #   default: device crosscheck sanitize targets profile distributed
@@ -26,7 +26,7 @@
 set -uo pipefail
 
 if [[ $# -lt 1 || "$1" == "--help" || "$1" == "-h" ]]; then
-  sed -n '2,26p' "$0" | sed 's/^# \{0,1\}//'
+  sed -n '2,25p' "$0" | sed 's/^# \{0,1\}//'
   exit $([[ $# -lt 1 ]] && echo 2 || echo 0)
 fi
 

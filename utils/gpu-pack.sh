@@ -14,7 +14,7 @@
 #                     sim-baseline-cuda (default: build)
 #   SIM_GPU_PACK      the folder to fill (default: gpu-pack)
 #   SIM_GPU_PACK_MPI  1: also pack this machine's Open MPI runtime (Debian's
-#                     packages, about 3 MiB) as mpi/openmpi.tar, for a GPU
+#                     packages, about 13 MiB) as mpi/openmpi.tar, for a GPU
 #                     machine without MPI (gpu-check.sh's distributed stage
 #                     installs it there when SIM_GPU_INSTALL_MPI=1)
 set -euo pipefail
