@@ -29,11 +29,18 @@ tools = [
     "sim-run",
     "sim-bundle-fuzz-replay",
     "sim-compile-fuzz-replay",
+    # Upstream's tools, for tests that run transformed IR on the CPU.
+    "mlir-opt",
+    "mlir-runner",
     ToolSubst("%python", config.python_executable, unresolved="fatal"),
 ]
 llvm_config.add_tool_substitutions(tools, tool_dirs)
 
 config.substitutions.append(("%sim_src_root", config.sim_src_root))
+# MLIR's runtime libraries (libmlir_c_runner_utils.so) for mlir-runner.
+config.substitutions.append(
+    ("%mlir_lib_dir",
+     os.path.join(os.path.dirname(config.llvm_tools_dir), "lib")))
 config.substitutions.append(("%sim_obj_root", config.sim_obj_root))
 config.substitutions.append(("%examples", os.path.join(config.sim_src_root,
                                                         "examples")))

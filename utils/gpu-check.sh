@@ -15,6 +15,10 @@
 #               0-2, linear, against sim-baseline-cuda
 #   sizes       bench/run over every size, load and interpolation
 #               (long: give it a call of its own)
+#   loops       the targets' dist 0 with 32-bit loop counters
+#               (sim-translate --sim-gpu-narrow-loops), and those unrolled
+#               twice (--sim-gpu-unroll=2), against the default, in
+#               alternating rounds; prints each strategy's time ratios
 #   profile     ncu of the hip kernels, sim's and the hand-written ones
 #   distributed sim-run --distributed on CUDA, 2 and 3 ranks sharing the GPUs,
 #               against one process, bit for bit (needs mpirun, or the pack's
@@ -26,7 +30,7 @@
 set -uo pipefail
 
 if [[ $# -lt 1 || "$1" == "--help" || "$1" == "-h" ]]; then
-  sed -n '2,25p' "$0" | sed 's/^# \{0,1\}//'
+  sed -n '2,29p' "$0" | sed 's/^# \{0,1\}//'
   exit $([[ $# -lt 1 ]] && echo 2 || echo 0)
 fi
 
@@ -99,6 +103,38 @@ targets() {
     --repeat 10 --out "$out/targets"
 }
 
+loops() {
+  local round variant status=0
+  for round in 1 2; do
+    for variant in default narrow narrow-u2; do
+      local flags=()
+      [[ "$variant" == default ]] || flags=(--variant "$variant")
+      study --sizes 65536 --loads 1024 --dists 0 --interps linear \
+        --algorithms simple,hip,hip-cache,lts --repeat 10 "${flags[@]}" \
+        --out "$out/loops/$variant-round$round" || status=1
+    done
+  done
+  python3 - "$out/loops" <<'PY' || status=1
+import json, statistics, sys
+from pathlib import Path
+times = {}
+for path in sorted(Path(sys.argv[1]).glob("*-round*/bench.json")):
+    variant = path.parent.name.rsplit("-round", 1)[0]
+    for row in json.load(open(path))["runs"]:
+        key = (row["scenario"], row["algorithm"])
+        times.setdefault(key, {}).setdefault(variant, []).append(
+            row["kernel_seconds"])
+print("scenario algorithm: ms (median of rounds) default, narrow, "
+      "narrow-u2; default over each")
+for (scenario, algorithm), by in sorted(times.items()):
+    ms = [1e3 * statistics.median(by.get(v, [float("nan")]))
+          for v in ("default", "narrow", "narrow-u2")]
+    print("%s %s: %.3f, %.3f, %.3f; %.3fx, %.3fx" % (
+        scenario, algorithm, *ms, ms[0] / ms[1], ms[0] / ms[2]))
+PY
+  return $status
+}
+
 sizes() {
   study --repeat 5 --out "$out/sizes"
 }
@@ -152,11 +188,11 @@ distributed() {
   return $status
 }
 
-export -f device crosscheck sanitize study targets sizes profile distributed
+export -f device crosscheck sanitize study targets loops sizes profile distributed
 export run baseline pack out
 for name in "${stages[@]}"; do
   case "$name" in
-  device | crosscheck | sanitize | targets | sizes | profile | distributed)
+  device | crosscheck | sanitize | targets | loops | sizes | profile | distributed)
     stage "$name" "$name" ;;
   *)
     echo "gpu-check: unknown stage '$name' (see --help)" >&2

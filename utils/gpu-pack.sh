@@ -51,6 +51,15 @@ python3 test/Integration/Inputs/crosscheck.py compile --backend cuda \
 # The benchmark study (group size 256, both interpolations).
 python3 bench/run --make-bundles --bundles "$pack/bench" \
   --sim-translate "$build/bin/sim-translate" 2>&1 | grep -v '^compiling' || true
+# The loop shapes that gpu-check.sh stage loops measures against the
+# default: 32-bit counters, and those unrolled twice.
+python3 bench/run --make-bundles --bundles "$pack/bench" --interps linear \
+  --variant narrow --translate-flag=--sim-gpu-narrow-loops \
+  --sim-translate "$build/bin/sim-translate" 2>&1 | grep -v '^compiling' || true
+python3 bench/run --make-bundles --bundles "$pack/bench" --interps linear \
+  --variant narrow-u2 --translate-flag=--sim-gpu-narrow-loops \
+  --translate-flag=--sim-gpu-unroll=2 \
+  --sim-translate "$build/bin/sim-translate" 2>&1 | grep -v '^compiling' || true
 rm -f "$pack"/bench/*.mlir
 
 # Distributed runs on CUDA (test/Integration/distributed-cuda.test at a

@@ -8,6 +8,10 @@
 //   gpu.module(
 //     sim-fused-multiply-add                vector.fma to llvm.intr.fma (one
 //                                           rounding on every backend)
+//     sim-gpu-narrow-loop-counters          only with narrow-loop-counters
+//                                           (--sim-gpu-narrow-loops)
+//     sim-gpu-unroll-loops{factor}          only with unroll > 1
+//                                           (--sim-gpu-unroll)
 //     convert-scf-to-cf                     loops and ifs to blocks
 //     expand-strided-metadata               subviews to reinterpret_casts
 //     convert-gpu-to-nvvm{has-redux}        gpu, arith, cf, memref, vector,
@@ -109,6 +113,13 @@ void mlir::sim::buildSimGPUToPTXPipeline(OpPassManager &pm,
 
   OpPassManager &kernels = pm.nest<gpu::GPUModuleOp>();
   kernels.addPass(createSimFusedMultiplyAdd());
+  if (target.narrowLoopCounters)
+    kernels.addPass(createSimGPUNarrowLoopCounters());
+  if (target.unroll > 1) {
+    SimGPUUnrollLoopsOptions unroll;
+    unroll.factor = target.unroll;
+    kernels.addPass(createSimGPUUnrollLoops(unroll));
+  }
   kernels.addPass(createSCFToControlFlowPass());
   kernels.addPass(memref::createExpandStridedMetadataPass());
   ConvertGpuOpsToNVVMOpsOptions toNVVM;

@@ -84,6 +84,21 @@ TranslationOptions::TranslationOptions()
                          "FTZ and DAZ on the CPU threads; recorded in the "
                          "bundle). Default: IEEE subnormals"),
           llvm::cl::init(false), llvm::cl::cat(category)),
+      gpuNarrowLoops(
+          "sim-gpu-narrow-loops",
+          llvm::cl::desc("--sim-to-ptx, --sim-to-bundle: count the GPU "
+                         "kernels' loops of unknown trip count (a scene's "
+                         "load loop) in 32 bits where their bounds allow; "
+                         "the same results. Default: off"),
+          llvm::cl::init(getTargetDefaults().narrowLoopCounters),
+          llvm::cl::cat(category)),
+      gpuUnroll("sim-gpu-unroll",
+                llvm::cl::desc("--sim-to-ptx, --sim-to-bundle: unroll the "
+                               "GPU kernels' innermost loops of unknown trip "
+                               "count (a scene's load loop) by this factor; "
+                               "the same results. Default 1: left to LLVM"),
+                llvm::cl::init(getTargetDefaults().unroll),
+                llvm::cl::cat(category)),
       distributed(
           "sim-distributed",
           llvm::cl::desc("--sim-to-bundle: plans for many processes "
@@ -107,6 +122,8 @@ GPUTargetOptions TranslationOptions::getGPUTarget() const {
   target.optLevel = optLevel.getValue();
   target.cudaPath = cudaPath.getValue();
   target.flushSubnormals = ftz.getValue();
+  target.narrowLoopCounters = gpuNarrowLoops.getValue();
+  target.unroll = gpuUnroll.getValue();
   return target;
 }
 

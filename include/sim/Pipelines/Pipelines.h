@@ -77,6 +77,13 @@ struct GPUTargetOptions {
   /// Flush subnormal f32 values to zero (`.ftz` instructions, libdevice's
   /// FTZ variants): sim-translate --sim-ftz. PTX has no f64 `.ftz`.
   bool flushSubnormals = false;
+  /// Count the kernels' loops of unknown trip count in 32 bits where their
+  /// bounds allow (sim-gpu-narrow-loop-counters). Off until a GPU has
+  /// measured it: ptxas gives one kernel more registers with it.
+  bool narrowLoopCounters = false;
+  /// Copies of the body per iteration of the kernels' innermost loops of
+  /// unknown trip count (sim-gpu-unroll-loops); 1: LLVM decides.
+  unsigned unroll = 1;
 };
 
 /// The pipeline options that set a GPUTargetOptions (`chip`, `features`,
@@ -111,6 +118,16 @@ struct GPUTargetPipelineOptions : public PassPipelineOptions<Derived> {
                    llvm::cl::desc("Flush subnormal f32 values to zero (.ftz "
                                   "instructions, libdevice's FTZ variants)"),
                    llvm::cl::init(GPUTargetOptions().flushSubnormals)};
+  Option<bool> narrowLoopCounters{
+      *this, "narrow-loop-counters",
+      llvm::cl::desc("Count the kernels' loops of unknown trip count in 32 "
+                     "bits where their bounds allow"),
+      llvm::cl::init(GPUTargetOptions().narrowLoopCounters)};
+  Option<unsigned> unroll{
+      *this, "unroll",
+      llvm::cl::desc("Unroll the kernels' innermost loops of unknown trip "
+                     "count by this factor (1: leave them to LLVM)"),
+      llvm::cl::init(GPUTargetOptions().unroll)};
 
   /// The target these options describe.
   GPUTargetOptions getTarget() const {
@@ -120,6 +137,8 @@ struct GPUTargetPipelineOptions : public PassPipelineOptions<Derived> {
     target.optLevel = optLevel;
     target.cudaPath = cudaPath;
     target.flushSubnormals = ftz;
+    target.narrowLoopCounters = narrowLoopCounters;
+    target.unroll = unroll;
     return target;
   }
 };

@@ -53,6 +53,10 @@ struct TranslationOptions {
   llvm::cl::list<std::string> cpuIsas;
   /// --sim-ftz: flush subnormals to zero on every backend.
   llvm::cl::opt<bool> ftz;
+  /// --sim-gpu-narrow-loops: 32-bit counters in the GPU kernels' loops.
+  llvm::cl::opt<bool> gpuNarrowLoops;
+  /// --sim-gpu-unroll: unroll factor of the GPU kernels' innermost loops.
+  llvm::cl::opt<unsigned> gpuUnroll;
   /// --sim-distributed: plans for many processes.
   llvm::cl::opt<bool> distributed;
   /// --sim-cpu-levels-per-lane (hidden): the CPU kernels limit lts levels

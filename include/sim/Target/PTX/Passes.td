@@ -1,9 +1,11 @@
 //===- Passes.td - passes of the PTX back end --------------*- tablegen -*-===//
 //
 // Passes that run inside the GPU-to-PTX pipeline (--sim-gpu-to-ptx) on
+// gpu.modules. Two shape the kernels' loops before upstream lowers them
+// (sim-gpu-narrow-loop-counters, sim-gpu-unroll-loops); the others run on
 // gpu.modules already lowered to the LLVM and NVVM dialects, just before
-// upstream's gpu-module-to-binary turns them into PTX. They fix or check what
-// the upstream lowering leaves behind; they do not lower anything themselves.
+// upstream's gpu-module-to-binary turns them into PTX, and fix or check what
+// the upstream lowering leaves behind. None lowers anything itself.
 // docs/PTXPasses.md is generated from this file.
 //
 //===----------------------------------------------------------------------===//
@@ -12,6 +14,80 @@
 #define SIM_TARGET_PTX_PASSES_TD
 
 include "mlir/Pass/PassBase.td"
+
+def SimGPUNarrowLoopCounters
+    : Pass<"sim-gpu-narrow-loop-counters"> {
+  let summary = "Count `scf.for` loops in 32 bits where their bounds allow";
+  let description = [{
+    `index` is 64 bits wide in the kernels, so a loop over `index` counts
+    with 64-bit adds and compares, which a GPU executes as two 32-bit
+    instructions each. A scene's loops are usually bounded by 32-bit
+    values (`arith.index_cast` of an `i32` parameter, a constant), and nvcc
+    counts such a loop of a hand-written kernel in 32 bits.
+
+    This pass gives an `scf.for` whose trip count is not a constant (LLVM
+    unrolls the others completely, so no counter is left) an `i32`
+    induction variable when every value of its lower bound, upper bound and
+    step provably fits: each is a
+    constant or an `arith.index_cast` (`arith.index_castui`) of an integer
+    of at most 32 (31) bits, the step is at least 1, and the largest upper
+    bound plus the largest step minus one is still a 32-bit value, so that
+    no increment of the counter can wrap. Uses of the induction variable
+    get it as `index` again through an `arith.index_cast`, so nothing else
+    changes and results are the same bit for bit. Loops that compare
+    unsigned, and loops whose bounds are not known to fit (a range, a
+    buffer's size), keep `index`. The pass runs on any operation; the GPU
+    pipeline runs it on every `gpu.module`.
+
+    ```mlir
+    // before
+    %n = arith.index_cast %rounds : i32 to index
+    %r = scf.for %k = %c0 to %n step %c1 iter_args(%x = %x0) -> (f32) {...}
+    // after
+    %r = scf.for %k = %c0_i32 to %rounds step %c1_i32 iter_args(%x = %x0) -> (f32) : i32 {...}
+    ```
+  }];
+  let dependentDialects = ["::mlir::arith::ArithDialect"];
+}
+
+def SimGPUUnrollLoops
+    : Pass<"sim-gpu-unroll-loops"> {
+  let summary = "Unroll the innermost `scf.for` loops of unknown trip count";
+  let description = [{
+    LLVM's NVPTX back end unrolls a loop whose trip count is not known at
+    compile time only when its body is small; the load loop of a scene
+    (say 64 fused multiply-adds per round) is not, so every round pays the
+    loop's counter, compare and branch, where nvcc unrolls the same loop of
+    a hand-written kernel by 2. This pass unrolls every innermost `scf.for`
+    with a constant step whose trip count is not a constant (LLVM unrolls
+    those itself) by `factor`: a main loop that runs `factor` copies of the
+    body per iteration over the largest multiple of `factor` iterations,
+    then the original loop for the rest. The copies run in the original
+    order, so results are the same bit for bit. The trip count is computed
+    in 64 bits, so a 32-bit counter (sim-gpu-narrow-loop-counters) cannot
+    wrap.
+
+    The pass runs on any operation. `sim-translate --sim-gpu-unroll=N`
+    (default 1: off) adds it to the GPU pipeline, on every `gpu.module`; `utils/gpu-check.sh` stage `unroll` measures it against the
+    default on a GPU.
+
+    ```mlir
+    // before
+    %r = scf.for %k = %c0 to %n step %c1 iter_args(%x = %x0) -> (f32) : i32 {
+      %y = "body"(%x) ...
+    }
+    // after (factor 2): the body twice per iteration, then the remainder
+    %main = scf.for %k = %c0 to %n_even step %c2 iter_args(%x = %x0) -> (f32) : i32 {...}
+    %r = scf.for %k = %n_even to %n step %c1 iter_args(%x = %main) -> (f32) : i32 {...}
+    ```
+  }];
+  let options = [
+    Option<"factor", "factor", "unsigned", /*default=*/"2",
+           "Copies of the body per iteration of the main loop (1: none)">,
+  ];
+  let dependentDialects = ["::mlir::arith::ArithDialect",
+                           "::mlir::scf::SCFDialect"];
+}
 
 def SimNVVMExternDynamicSharedMemory
     : Pass<"sim-nvvm-extern-dynamic-shared-memory", "::mlir::gpu::GPUModuleOp"> {
