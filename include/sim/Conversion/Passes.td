@@ -148,7 +148,12 @@ def SimVectorizeLanes : Pass<"sim-vectorize-lanes"> {
     values equal for all lanes stay scalars. Branches on a lane-dependent
     condition run under a mask and are skipped when no lane takes them;
     loads of consecutive items become one wide load, other loads gathers,
-    stores masked scatters. A loaded `vector<N x T>` (N a power of two)
+    stores masked scatters. A read through a boundary rule (clamp, zero or
+    wrap of `item + offset`, shifted by a uniform value) is consecutive
+    wherever the rule changes nothing: one wide load when the chunk's first
+    and last items lie inside, decided by two scalar compares, and the
+    gathers at the range's ends; under a branch's mask a consecutive access
+    is wide when every lane runs. A loaded `vector<N x T>` (N a power of two)
     stays interleaved as memory holds it while elementwise ops use it (a
     uniform operand is spread to match), and is de-interleaved by shuffles
     only where something needs its elements apart: an interpolation of two

@@ -256,8 +256,13 @@ private:
   /// vector of their addresses.
   SmallVector<Value> laneAddresses(OpBuilder &b, Value pointer, Type scalar,
                                    Value index, int64_t stride, int64_t count);
-  Value contiguousCheck(OpBuilder &b, Value index, Value mask);
+  /// Whether one wide access serves the chunk at the lanes' element
+  /// indices `index` (i64 lanes) of the original index `original`: from
+  /// two scalar compares when `original` is a bounded run of consecutive
+  /// indices, else by comparing every lane with the first lane's + lane.
+  Value contiguousCheck(OpBuilder &b, Value original, Value index, Value mask);
   bool likelyUniform(Value index) const;
+  void findBoundedRuns();
 
   scf::ForOp loop;
   int64_t width;
@@ -267,6 +272,15 @@ private:
   DenseSet<Value> varying;
   /// Values proven to be `uniform + lane` (consecutive items of the chunk).
   DenseSet<Value> consecutive;
+  /// A value equal to the consecutive value `run` (give or take a uniform
+  /// offset) wherever every lane of `run` lies in [low, high] (inclusive;
+  /// uniform, null for no bound): the boundary rules' clamp, wrap and zero
+  /// applied to `item + offset`. One wide access serves such an index
+  /// whenever the chunk's first and last lanes lie inside.
+  struct BoundedRun {
+    Value run, low, high;
+  };
+  DenseMap<Value, BoundedRun> boundedRuns;
   DenseMap<Value, Wide> values;
   DenseMap<Value, Value> pointers;
   Value iota;
@@ -339,8 +353,16 @@ LogicalResult LaneVectorizer::analyze(std::string &why) {
       if ((consecutive.contains(lhs) && !isVarying(rhs)) ||
           (consecutive.contains(rhs) && !isVarying(lhs)))
         consecutive.insert(add.getResult());
+    } else if (auto subtract = dyn_cast<arith::SubIOp>(op)) {
+      if (consecutive.contains(subtract.getLhs()) &&
+          !isVarying(subtract.getRhs()))
+        consecutive.insert(subtract.getResult());
+    } else if (isa<arith::IndexCastOp, arith::IndexCastUIOp>(op)) {
+      if (consecutive.contains(op->getOperand(0)))
+        consecutive.insert(op->getResult(0));
     }
   });
+  findBoundedRuns();
 
   WalkResult result = loop.getBody()->walk([&](Operation *op) {
     if (failed(check(op, why)))
@@ -348,6 +370,69 @@ LogicalResult LaneVectorizer::analyze(std::string &why) {
     return WalkResult::advance();
   });
   return failure(result.wasInterrupted());
+}
+
+/// The boundary rules (KernelBody.cpp, applyBoundary) on a consecutive
+/// `item + offset`, and uniform shifts of their results:
+///   clamp  minsi(maxsi(x, low), high)
+///   zero   select(cmpi ult(x, end), x, c)
+///   wrap   scf.if (cmpi ult(x, end)) { yield x } else { ... }
+void LaneVectorizer::findBoundedRuns() {
+  auto uniform = [&](Value value) { return !isVarying(value); };
+  // x < end, unsigned, with x consecutive and end uniform: the run of x
+  // within [0, end - 1] (as `end` exclusive, held as high = null + end).
+  auto unsignedBelow = [&](Value condition, Value &run, Value &end) {
+    auto compare = condition.getDefiningOp<arith::CmpIOp>();
+    if (!compare || compare.getPredicate() != arith::CmpIPredicate::ult ||
+        !consecutive.contains(compare.getLhs()) || !uniform(compare.getRhs()))
+      return false;
+    run = compare.getLhs();
+    end = compare.getRhs();
+    return true;
+  };
+  loop.getBody()->walk([&](Operation *op) {
+    if (auto minimum = dyn_cast<arith::MinSIOp>(op)) {
+      auto maximum = minimum.getLhs().getDefiningOp<arith::MaxSIOp>();
+      if (maximum && uniform(minimum.getRhs()) &&
+          consecutive.contains(maximum.getLhs()) && uniform(maximum.getRhs()))
+        boundedRuns[minimum.getResult()] = {maximum.getLhs(), maximum.getRhs(),
+                                            minimum.getRhs()};
+      return;
+    }
+    if (auto select = dyn_cast<arith::SelectOp>(op)) {
+      Value run, end;
+      if (unsignedBelow(select.getCondition(), run, end) &&
+          select.getTrueValue() == run && uniform(select.getFalseValue()))
+        boundedRuns[select.getResult()] = {run, Value(), end};
+      return;
+    }
+    if (auto branch = dyn_cast<scf::IfOp>(op)) {
+      Value run, end;
+      if (branch.getNumResults() == 1 && branch.elseBlock() &&
+          unsignedBelow(branch.getCondition(), run, end) &&
+          branch.thenYield().getOperand(0) == run)
+        boundedRuns[branch.getResult(0)] = {run, Value(), end};
+      return;
+    }
+    // Uniform shifts and casts keep the run and its bounds.
+    if (isa<arith::AddIOp, arith::SubIOp>(op)) {
+      Value lhs = op->getOperand(0), rhs = op->getOperand(1);
+      auto it = boundedRuns.find(lhs);
+      if (it != boundedRuns.end() && uniform(rhs)) {
+        boundedRuns[op->getResult(0)] = it->second;
+        return;
+      }
+      it = boundedRuns.find(rhs);
+      if (isa<arith::AddIOp>(op) && it != boundedRuns.end() && uniform(lhs))
+        boundedRuns[op->getResult(0)] = it->second;
+      return;
+    }
+    if (isa<arith::IndexCastOp, arith::IndexCastUIOp>(op)) {
+      auto it = boundedRuns.find(op->getOperand(0));
+      if (it != boundedRuns.end())
+        boundedRuns[op->getResult(0)] = it->second;
+    }
+  });
 }
 
 LogicalResult LaneVectorizer::check(Operation *op, std::string &why) {
@@ -673,7 +758,55 @@ SmallVector<Value> LaneVectorizer::laneAddresses(OpBuilder &b, Value pointer,
 
 /// True (i1) when the lanes of `index` (i64 lanes) are consecutive and every
 /// lane is active, so that one wide access serves the chunk.
-Value LaneVectorizer::contiguousCheck(OpBuilder &b, Value index, Value mask) {
+Value LaneVectorizer::contiguousCheck(OpBuilder &b, Value original, Value index,
+                                      Value mask) {
+  // Consecutive lanes (under a branch's mask): whether every lane runs.
+  if (mask && consecutive.contains(original))
+    return allLanes(b, mask);
+  auto bounded = boundedRuns.find(original);
+  if (bounded != boundedRuns.end()) {
+    // The run's first lane x0 and last x0 + width - 1 inside the bounds:
+    // then every lane's index is its run value shifted alike.
+    const BoundedRun &run = bounded->second;
+    // An index or integer value (scalar or lanes) as i64.
+    auto toI64 = [&](Value value) -> Value {
+      Type type = value.getType();
+      auto vector = dyn_cast<VectorType>(type);
+      Type element = vector ? vector.getElementType() : type;
+      Type i64 = vector ? Type(laneType(b.getI64Type())) : b.getI64Type();
+      if (element.isIndex())
+        return arith::IndexCastOp::create(b, loc, i64, value);
+      if (element.getIntOrFloatBitWidth() < 64)
+        return arith::ExtSIOp::create(b, loc, i64, value);
+      return value;
+    };
+    auto scalar = [&](Value uniformValue) {
+      return toI64(lookup(uniformValue).parts[0]);
+    };
+    Value runLanes = toI64(lookup(run.run).parts[0]);
+    Value first = vector::ExtractOp::create(b, loc, runLanes, 0);
+    Value last = arith::AddIOp::create(
+        b, loc, first,
+        arith::ConstantIntOp::create(b, loc, b.getI64Type(), width - 1));
+    Value inside;
+    if (run.low)
+      inside = arith::CmpIOp::create(b, loc, arith::CmpIPredicate::sge, first,
+                                     scalar(run.low));
+    else
+      inside = arith::CmpIOp::create(
+          b, loc, arith::CmpIPredicate::sge, first,
+          arith::ConstantIntOp::create(b, loc, b.getI64Type(), 0));
+    // A null low marks an exclusive end (x < end, unsigned: 0 <= x).
+    Value below = run.low
+                      ? arith::CmpIOp::create(b, loc, arith::CmpIPredicate::sle,
+                                              last, scalar(run.high))
+                      : arith::CmpIOp::create(b, loc, arith::CmpIPredicate::slt,
+                                              last, scalar(run.high));
+    inside = arith::AndIOp::create(b, loc, inside, below);
+    if (mask)
+      inside = arith::AndIOp::create(b, loc, inside, allLanes(b, mask));
+    return inside;
+  }
   Value first = vector::ExtractOp::create(b, loc, index, 0);
   Value firsts = vector::BroadcastOp::create(b, loc, index.getType(), first);
   Value iota64 = arith::IndexCastOp::create(b, loc, index.getType(), iota);
@@ -1250,7 +1383,7 @@ void LaneVectorizer::widenLoad(OpBuilder &b, memref::LoadOp op, Value mask) {
     } else {
       auto choice = scf::IfOp::create(
           b, loc, TypeRange{VectorType::get({width * stride}, scalar)},
-          contiguousCheck(b, index, mask), true);
+          contiguousCheck(b, op.getIndices()[0], index, mask), true);
       OpBuilder fast = emptyBody(choice.thenBlock());
       scf::YieldOp::create(fast, loc, ValueRange{raw(fast).getResult()});
       OpBuilder slow = emptyBody(choice.elseBlock());
@@ -1272,8 +1405,9 @@ void LaneVectorizer::widenLoad(OpBuilder &b, memref::LoadOp op, Value mask) {
     parts = uniformOrGather(b);
   } else {
     SmallVector<Type> types(count, lanes);
-    auto choice =
-        scf::IfOp::create(b, loc, types, contiguousCheck(b, index, mask), true);
+    auto choice = scf::IfOp::create(
+        b, loc, types, contiguousCheck(b, op.getIndices()[0], index, mask),
+        true);
     OpBuilder fast = emptyBody(choice.thenBlock());
     scf::YieldOp::create(fast, loc, wideLoad(fast));
     OpBuilder slow = emptyBody(choice.elseBlock());
@@ -1332,8 +1466,9 @@ void LaneVectorizer::widenStore(OpBuilder &b, memref::StoreOp op, Value mask) {
     scatter(b);
     return;
   }
-  auto choice = scf::IfOp::create(b, loc, TypeRange{},
-                                  contiguousCheck(b, index, mask), true);
+  auto choice = scf::IfOp::create(
+      b, loc, TypeRange{}, contiguousCheck(b, op.getIndices()[0], index, mask),
+      true);
   OpBuilder fast = OpBuilder::atBlockBegin(choice.thenBlock());
   if (!choice.thenBlock()->empty() && choice.thenBlock()->mightHaveTerminator())
     fast.setInsertionPoint(choice.thenBlock()->getTerminator());

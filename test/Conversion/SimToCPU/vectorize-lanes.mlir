@@ -486,3 +486,105 @@ func.func @block_index_loads(%levels: memref<?xi64>, %out: memref<?xi64>, %half:
   } {simplan.lanes}
   return
 }
+
+// -----
+
+// The boundary rules on item + offset (clamp: minsi(maxsi(x, 0), last);
+// zero: select(x < range, x, 0); wrap: scf.if (x < range) { x } else
+// {...}), shifted by a uniform offset: one wide load when the chunk's first
+// and last lanes lie inside, decided by two scalar compares on the first
+// lane instead of comparing every lane; else the gathers. An item shifted
+// by a uniform value (minus the block's first item) stays consecutive: its
+// store is wide without a check.
+// CHECK-LABEL: func.func @bounded_runs
+// CHECK:         scf.for %[[CHUNK:.*]] =
+// CHECK:           arith.maxsi %[[X:[0-9a-z_]+]], %{{.*}} : vector<8xindex>
+// CHECK:           %[[XI64:.*]] = arith.index_cast %[[X]] : vector<8xindex> to vector<8xi64>
+// CHECK:           %[[FIRST:.*]] = vector.extract %[[XI64]][0] : i64 from vector<8xi64>
+// CHECK:           %[[LAST:.*]] = arith.addi %[[FIRST]], %{{.*}} : i64
+// CHECK:           %[[ABOVE:.*]] = arith.cmpi sge, %[[FIRST]], %{{.*}} : i64
+// CHECK:           %[[BELOW:.*]] = arith.cmpi sle, %[[LAST]], %{{.*}} : i64
+// CHECK:           %[[INSIDE:.*]] = arith.andi %[[ABOVE]], %[[BELOW]] : i1
+// CHECK:           scf.if %[[INSIDE]] -> (vector<8xf32>) {
+// CHECK:             llvm.load %{{.*}} : !llvm.ptr -> vector<8xf32>
+// CHECK:           } else {
+// CHECK:             llvm.intr.masked.gather
+// CHECK:           }
+// CHECK:           arith.cmpi slt, %{{.*}}, %{{.*}} : i64
+// CHECK:           scf.if %{{.*}} -> (vector<8xf32>) {
+// CHECK:             llvm.load
+// CHECK:           } else {
+// CHECK:             llvm.intr.masked.gather
+// CHECK:           }
+// CHECK:           arith.cmpi slt, %{{.*}}, %{{.*}} : i64
+// CHECK:           scf.if %{{.*}} -> (vector<8xf32>) {
+// CHECK:             llvm.load
+// CHECK:           } else {
+// CHECK:             llvm.intr.masked.gather
+// CHECK:           }
+// CHECK:           llvm.store %{{.*}}, %{{.*}} {alignment = 4 : i64} : vector<8xf32>, !llvm.ptr
+// CHECK-NEXT:    }
+func.func @bounded_runs(%clamped: memref<?xf32>, %zeroed: memref<?xf32>, %wrapped: memref<?xf32>,
+                        %out: memref<?xf32>, %base: index, %first: index, %range: index, %g: index) {
+  %c0 = arith.constant 0 : index
+  %c1 = arith.constant 1 : index
+  %cm1 = arith.constant -1 : index
+  %last = arith.subi %range, %c1 : index
+  // expected-remark @below {{lanes run 8 at a time}}
+  scf.for %lane = %c0 to %g step %c1 {
+    %item = arith.addi %base, %lane : index
+    %x = arith.addi %item, %cm1 : index
+    %low = arith.maxsi %x, %c0 : index
+    %clamp = arith.minsi %low, %last : index
+    %ci = arith.subi %clamp, %first : index
+    %a = memref.load %clamped[%ci] : memref<?xf32>
+    %in = arith.cmpi ult, %x, %range : index
+    %zero = arith.select %in, %x, %c0 : index
+    %b = memref.load %zeroed[%zero] : memref<?xf32>
+    %wrap = scf.if %in -> (index) {
+      scf.yield %x : index
+    } else {
+      %rem = arith.remsi %x, %range : index
+      %neg = arith.cmpi slt, %rem, %c0 : index
+      %up = arith.addi %rem, %range : index
+      %w = arith.select %neg, %up, %rem : index
+      scf.yield %w : index
+    }
+    %c = memref.load %wrapped[%wrap] : memref<?xf32>
+    %ab = arith.addf %a, %b : f32
+    %abc = arith.addf %ab, %c : f32
+    %own = arith.subi %item, %first : index
+    memref.store %abc, %out[%own] : memref<?xf32>
+  } {simplan.lanes}
+  return
+}
+
+// -----
+
+// Consecutive lanes under a branch's mask (a partial group's range check):
+// the wide load needs only every lane to run, not a lane-by-lane compare
+// of the indices.
+// CHECK-LABEL: func.func @masked_consecutive
+// CHECK:         scf.for
+// CHECK:           %[[ACTIVE:.*]] = arith.cmpi ult, %{{.*}}, %{{.*}} : vector<8xindex>
+// CHECK:           scf.if %{{.*}} {
+// CHECK-NEXT:        arith.index_cast
+// CHECK-NEXT:        %[[ALL:.*]] = vector.reduction <and>, %[[ACTIVE]] : vector<8xi1> into i1
+// CHECK-NEXT:        scf.if %[[ALL]] -> (vector<8xf32>) {
+// CHECK-NEXT:          vector.extract
+// CHECK-NEXT:          llvm.getelementptr
+// CHECK-NEXT:          llvm.load %{{.*}} : !llvm.ptr -> vector<8xf32>
+func.func @masked_consecutive(%in: memref<?xf32>, %out: memref<?xf32>, %base: index, %range: index, %g: index) {
+  %c0 = arith.constant 0 : index
+  %c1 = arith.constant 1 : index
+  // expected-remark @below {{lanes run 8 at a time}}
+  scf.for %lane = %c0 to %g step %c1 {
+    %item = arith.addi %base, %lane : index
+    %active = arith.cmpi ult, %item, %range : index
+    scf.if %active {
+      %v = memref.load %in[%item] : memref<?xf32>
+      memref.store %v, %out[%item] : memref<?xf32>
+    }
+  } {simplan.lanes}
+  return
+}
