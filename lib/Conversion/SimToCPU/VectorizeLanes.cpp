@@ -273,12 +273,13 @@ private:
   /// Values proven to be `uniform + lane` (consecutive items of the chunk).
   DenseSet<Value> consecutive;
   /// A value equal to the consecutive value `run` (give or take a uniform
-  /// offset) wherever every lane of `run` lies in [low, high] (inclusive;
-  /// uniform, null for no bound): the boundary rules' clamp, wrap and zero
-  /// applied to `item + offset`. One wide access serves such an index
-  /// whenever the chunk's first and last lanes lie inside.
+  /// offset) wherever every lane of `run` lies between `low` (uniform; null:
+  /// 0) and `high` (uniform; inclusive or not): the boundary rules' clamp,
+  /// wrap and zero applied to `item + offset`. One wide access serves such
+  /// an index whenever the chunk's first and last lanes lie inside.
   struct BoundedRun {
     Value run, low, high;
+    bool highInclusive;
   };
   DenseMap<Value, BoundedRun> boundedRuns;
   DenseMap<Value, Wide> values;
@@ -380,7 +381,7 @@ LogicalResult LaneVectorizer::analyze(std::string &why) {
 void LaneVectorizer::findBoundedRuns() {
   auto uniform = [&](Value value) { return !isVarying(value); };
   // x < end, unsigned, with x consecutive and end uniform: the run of x
-  // within [0, end - 1] (as `end` exclusive, held as high = null + end).
+  // within [0, end).
   auto unsignedBelow = [&](Value condition, Value &run, Value &end) {
     auto compare = condition.getDefiningOp<arith::CmpIOp>();
     if (!compare || compare.getPredicate() != arith::CmpIPredicate::ult ||
@@ -396,14 +397,16 @@ void LaneVectorizer::findBoundedRuns() {
       if (maximum && uniform(minimum.getRhs()) &&
           consecutive.contains(maximum.getLhs()) && uniform(maximum.getRhs()))
         boundedRuns[minimum.getResult()] = {maximum.getLhs(), maximum.getRhs(),
-                                            minimum.getRhs()};
+                                            minimum.getRhs(),
+                                            /*highInclusive=*/true};
       return;
     }
     if (auto select = dyn_cast<arith::SelectOp>(op)) {
       Value run, end;
       if (unsignedBelow(select.getCondition(), run, end) &&
           select.getTrueValue() == run && uniform(select.getFalseValue()))
-        boundedRuns[select.getResult()] = {run, Value(), end};
+        boundedRuns[select.getResult()] = {run, Value(), end,
+                                           /*highInclusive=*/false};
       return;
     }
     if (auto branch = dyn_cast<scf::IfOp>(op)) {
@@ -411,7 +414,8 @@ void LaneVectorizer::findBoundedRuns() {
       if (branch.getNumResults() == 1 && branch.elseBlock() &&
           unsignedBelow(branch.getCondition(), run, end) &&
           branch.thenYield().getOperand(0) == run)
-        boundedRuns[branch.getResult(0)] = {run, Value(), end};
+        boundedRuns[branch.getResult(0)] = {run, Value(), end,
+                                            /*highInclusive=*/false};
       return;
     }
     // Uniform shifts and casts keep the run and its bounds.
@@ -788,21 +792,18 @@ Value LaneVectorizer::contiguousCheck(OpBuilder &b, Value original, Value index,
     Value last = arith::AddIOp::create(
         b, loc, first,
         arith::ConstantIntOp::create(b, loc, b.getI64Type(), width - 1));
-    Value inside;
-    if (run.low)
-      inside = arith::CmpIOp::create(b, loc, arith::CmpIPredicate::sge, first,
-                                     scalar(run.low));
-    else
-      inside = arith::CmpIOp::create(
-          b, loc, arith::CmpIPredicate::sge, first,
-          arith::ConstantIntOp::create(b, loc, b.getI64Type(), 0));
-    // A null low marks an exclusive end (x < end, unsigned: 0 <= x).
-    Value below = run.low
-                      ? arith::CmpIOp::create(b, loc, arith::CmpIPredicate::sle,
-                                              last, scalar(run.high))
-                      : arith::CmpIOp::create(b, loc, arith::CmpIPredicate::slt,
-                                              last, scalar(run.high));
-    inside = arith::AndIOp::create(b, loc, inside, below);
+    Value low = run.low
+                    ? scalar(run.low)
+                    : arith::ConstantIntOp::create(b, loc, b.getI64Type(), 0)
+                          .getResult();
+    Value above =
+        arith::CmpIOp::create(b, loc, arith::CmpIPredicate::sge, first, low);
+    Value below =
+        arith::CmpIOp::create(b, loc,
+                              run.highInclusive ? arith::CmpIPredicate::sle
+                                                : arith::CmpIPredicate::slt,
+                              last, scalar(run.high));
+    Value inside = arith::AndIOp::create(b, loc, above, below);
     if (mask)
       inside = arith::AndIOp::create(b, loc, inside, allLanes(b, mask));
     return inside;
