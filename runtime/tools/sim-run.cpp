@@ -1234,8 +1234,16 @@ int runDistributed(Options options, int &argc, char **&argv) {
     // ranks, ranks that disagree): the others give rank 0 time to print
     // the message once and end them all. A rank that fails alone still
     // says so after the wait.
-    if (worldRank != 0)
-      std::this_thread::sleep_for(kRankErrorDelay);
+    // mpirun answers rank 0's abort with SIGTERM, which the handler only
+    // records (Signals.h): a rank that gets it while it waits ends without
+    // repeating the message, whatever the scheduler does to the wait.
+    if (worldRank != 0) {
+      auto until = std::chrono::steady_clock::now() + kRankErrorDelay;
+      while (!interrupted() && std::chrono::steady_clock::now() < until)
+        std::this_thread::sleep_for(std::chrono::milliseconds(10));
+      if (interrupted())
+        std::_Exit(kExitSignalBase + receivedSignal());
+    }
     if (!exit.message.empty())
       std::fprintf(stderr, "sim-run: rank %d: %s\n", worldRank,
                    exit.message.c_str());
