@@ -26,7 +26,12 @@ void mlir::sim::buildFrontEndPipeline(OpPassManager &pm,
   if (options.prune)
     simulation.addPass(createSimPrune());
   simulation.addPass(createSimSchedule());
-  simulation.addPass(createSimSubstepLegality());
+  // Strategies without sub-steps record the verdicts (the plan checks
+  // them) but need no explanation of them.
+  SimSubstepLegalityOptions legalityOptions;
+  legalityOptions.remarks = options.strategy != Strategy::simple &&
+                            options.strategy != Strategy::traditional;
+  simulation.addPass(createSimSubstepLegality(legalityOptions));
   SimPlanMemoryOptions planOptions;
   planOptions.strategy = options.strategy;
   planOptions.groupSize = options.groupSize;
@@ -42,7 +47,9 @@ void mlir::sim::buildReferencePipeline(OpPassManager &pm,
   if (options.prune)
     simulation.addPass(createSimPrune());
   simulation.addPass(createSimSchedule());
-  simulation.addPass(createSimSubstepLegality());
+  SimSubstepLegalityOptions legalityOptions;
+  legalityOptions.remarks = options.remarks;
+  simulation.addPass(createSimSubstepLegality(legalityOptions));
   pm.addPass(createSimLowerToReference());
 }
 

@@ -1373,6 +1373,37 @@ TEST_F(SimRun, TakesMaxStepsOnlyWhereItCanBeCompiledIn) {
   EXPECT_FALSE(contains(readFile(args), "--sim-set-params")) << readFile(args);
 }
 
+TEST_F(SimRun, TranslatesOnlyTheStrategiesItRuns) {
+  // A stand-in sim-translate records its arguments and copies the bundle.
+  std::string tools = dir + "/strategies";
+  ASSERT_EQ(mkdir(tools.c_str(), 0755), 0);
+  std::string simRun = tools + "/sim-run";
+  ASSERT_EQ(shell("cp " + std::string(SIM_RUN_PATH) + " " + simRun).status, 0);
+  std::string scene = tools + "/decay.mlir", args = tools + "/args";
+  writeFile(scene, "// not read by the stand-in sim-translate\n");
+  std::string translate = tools + "/sim-translate";
+  writeFile(translate, "#!/bin/sh\necho \"$@\" > '" + args + "'\n/bin/cp '" +
+                           bundle + "' \"$4\"\n");
+  chmod(translate.c_str(), 0755);
+  auto translatedFor = [&](const std::string &options) {
+    Result result = shell("PATH=/nonexistent " + simRun + " " + scene +
+                          " --backend cpu --steps 4 " + options);
+    EXPECT_EQ(result.status, 0) << options << "\n" << result.output;
+    return readFile(args);
+  };
+  // --strategy names the one strategy to compile.
+  std::string given = translatedFor("--strategy hip");
+  EXPECT_TRUE(contains(given, " --sim-strategies=hip\n")) << given;
+  // --reference simple runs simple too.
+  given = translatedFor("--strategy hip --reference simple");
+  EXPECT_TRUE(contains(given, " --sim-strategies=simple,hip\n")) << given;
+  given = translatedFor("--strategy simple --reference simple");
+  EXPECT_TRUE(contains(given, " --sim-strategies=simple\n")) << given;
+  // Without --strategy the bundle decides: every strategy is compiled.
+  given = translatedFor("");
+  EXPECT_FALSE(contains(given, "--sim-strategies")) << given;
+}
+
 TEST(Dependencies, NoMlirLlvmOrCuda) {
   // The runtime must run where only libc and libstdc++ are installed.
   for (const char *binary : {SIM_RUN_PATH, SIM_RUNTIME_LIBRARY}) {

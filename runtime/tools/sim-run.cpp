@@ -157,9 +157,11 @@ void stopIfInterrupted(const std::string &what) {
 
 /// Translates a .mlir scene into the temporary bundle `bundle`, with the
 /// compile-time settings `compiled` (NAME=VALUE) applied by
-/// --sim-set-params.
+/// --sim-set-params, for the strategies `strategies` (sim-translate's
+/// --sim-strategies; empty: its default, every strategy).
 void translate(const std::string &scene, TemporaryFile &bundle,
-               const std::vector<std::string> &compiled) {
+               const std::vector<std::string> &compiled,
+               const std::vector<sim_strategy> &strategies) {
   std::string searched;
   std::optional<std::string> tool = findTranslate(searched);
   if (!tool)
@@ -175,6 +177,13 @@ void translate(const std::string &scene, TemporaryFile &bundle,
                                    bundle.path()};
   if (world)
     args.push_back("--sim-distributed");
+  if (!strategies.empty()) {
+    std::string names;
+    for (sim_strategy strategy : strategies)
+      names += (names.empty() ? "" : ",") +
+               std::string(sim_strategy_name(strategy));
+    args.push_back("--sim-strategies=" + names);
+  }
   if (!compiled.empty()) {
     std::string values;
     for (const std::string &value : compiled)
@@ -221,12 +230,14 @@ bool isScene(const std::string &path) {
 }
 
 /// The bundle that runs: the input itself, or its translation with the
-/// compile-time settings `compiled`.
+/// compile-time settings `compiled` for the strategies `strategies` (empty:
+/// every strategy).
 class Input {
 public:
-  Input(const std::string &path, const std::vector<std::string> &compiled) {
+  Input(const std::string &path, const std::vector<std::string> &compiled,
+        const std::vector<sim_strategy> &strategies) {
     if (isScene(path)) {
-      translate(path, translated, compiled);
+      translate(path, translated, compiled, strategies);
       check(sim_bundle_open(translated.path().c_str(), &handle));
     } else {
       check(sim_bundle_open(path.c_str(), &handle));
@@ -1120,13 +1131,28 @@ void agreeOnRunOptions(const Options &options) {
                  " ranks): give every rank the same options");
 }
 
+/// The strategies a .mlir scene is translated for: the one --strategy
+/// names, and simple for --reference simple; every strategy when the bundle
+/// decides (no --strategy). Compiling one strategy instead of five is faster
+/// and leaves out the other strategies' remarks.
+std::vector<sim_strategy> translatedStrategies(const Options &options) {
+  if (!options.strategyGiven)
+    return {};
+  std::vector<sim_strategy> strategies;
+  if (options.reference == "simple" &&
+      options.strategy != SIM_STRATEGY_SIMPLE)
+    strategies.push_back(SIM_STRATEGY_SIMPLE);
+  strategies.push_back(options.strategy);
+  return strategies;
+}
+
 int run(Options options) {
   agreeOnRunOptions(options);
   // Before anything runs: the paths, the bundle, every session and every
   // --set, the dump files.
   OutputPlan outputs = planOutputs(options);
   std::vector<std::string> compiled = takeCompileTimeSettings(options);
-  Input input(options.input, compiled);
+  Input input(options.input, compiled, translatedStrategies(options));
   const sim_bundle *bundle = input.bundle();
   if (!options.strategyGiven)
     options.strategy = defaultStrategy(bundle, options.strategy);

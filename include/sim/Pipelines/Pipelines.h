@@ -50,6 +50,11 @@ struct ReferenceOptions : public PassPipelineOptions<ReferenceOptions> {
       *this, "prune",
       llvm::cl::desc("Remove what no observed buffer depends on"),
       llvm::cl::init(true)};
+  PassOptions::Option<bool> remarks{
+      *this, "remarks",
+      llvm::cl::desc("Explain the sub-stepping verdicts in remarks (a "
+                     "bundle leaves that to its strategies' front ends)"),
+      llvm::cl::init(true)};
 };
 
 /// The scheduled IR (prune, schedule, sub-stepping verdicts) lowered to the

@@ -922,7 +922,10 @@ public:
     });
     OwningOpRef<ModuleOp> scheduled(module.clone());
     PassManager pm(context, ModuleOp::getOperationName());
-    buildReferencePipeline(pm, ReferenceOptions());
+    // The strategies' front ends explain the verdicts where they matter.
+    ReferenceOptions referenceOptions;
+    referenceOptions.remarks = false;
+    buildReferencePipeline(pm, referenceOptions);
     if (failed(runPipeline(pm, *scheduled)))
       return failure();
     auto modules = scheduled->getOps<ModuleOp>();

@@ -144,7 +144,8 @@ constexpr const char *kOverview =
 
 constexpr const char *kIntro =
     R"(A .mlir scene is first translated with `sim-translate --sim-to-bundle`
-(looked up next to sim-run, then on PATH) into a temporary bundle.
+(looked up next to sim-run, then on PATH) into a temporary bundle, for
+the --strategy given (and simple for --reference simple), else for all.
 )";
 
 constexpr const char *kFooter =

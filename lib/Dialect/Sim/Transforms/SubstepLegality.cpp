@@ -41,6 +41,17 @@ namespace {
 
 struct SubstepLegalityPass
     : public sim::impl::SimSubstepLegalityBase<SubstepLegalityPass> {
+  using Base::Base;
+
+  /// A remark that explains a verdict: emitted with `remarks`, else built
+  /// (notes and all) and dropped, so that every path records the same.
+  InFlightDiagnostic explain(Operation *op) {
+    InFlightDiagnostic remark = op->emitRemark();
+    if (!remarks)
+      remark.abandon();
+    return remark;
+  }
+
   void runOnOperation() override {
     if (failed(checkBeforeInterpolation(getOperation(), getArgument(),
                                         "its sub-stepping verdicts are")))
@@ -56,7 +67,7 @@ struct SubstepLegalityPass
       if (!hazard)
         continue;
       InFlightDiagnostic remark =
-          component.emitRemark()
+          explain(component)
           << "@" << component.getSymName()
           << " needs a grid-wide barrier between sub-steps: its "
           << stringifyBodyKind(hazard->body) << " body reads @"
@@ -96,7 +107,7 @@ struct SubstepLegalityPass
       return;
     StringRef name = writer.getSymName();
     auto refuse = [&]() {
-      return writer.emitRemark()
+      return explain(writer)
              << "under lts @" << name
              << " and the readers of its fluxes take the big step as under "
                 "hip: ";
@@ -245,13 +256,13 @@ struct SubstepLegalityPass
           << readerName
           << "'s state is not conserved; boundary(zero) closes the ends, "
              "boundary(wrap) makes a ring";
-    writer.emitRemark() << "@" << name << " and @" << readerName
-                        << " form a flux pair: under lts every interface of "
-                           "its fluxes steps with the coarsest block that "
-                           "reads it (at "
-                        << fluxWindow->str() << "), and @" << readerName
-                        << "'s blocks take local time steps (window "
-                        << window.str() << ")";
+    explain(writer) << "@" << name << " and @" << readerName
+                    << " form a flux pair: under lts every interface of "
+                       "its fluxes steps with the coarsest block that "
+                       "reads it (at "
+                    << fluxWindow->str() << "), and @" << readerName
+                    << "'s blocks take local time steps (window "
+                    << window.str() << ")";
   }
 
   /// Records `local_window` on a grid_sync component whose reads of its own

@@ -109,7 +109,18 @@ def SimSubstepLegality
     Records `sub_stepping = #sim<sub_stepping in_kernel>` or `grid_sync` on
     every component and emits a remark that says why for every `grid_sync`
     verdict.
+
+    With `remarks=false` the verdicts are recorded the same, and only the
+    remarks that hold under every strategy are emitted (a flux buffer whose
+    clamp boundary breaks conservation): the front end of `simple` and
+    `traditional`, which take no sub-steps, and the reference lowering of a
+    bundle, whose strategies' front ends explain their own verdicts, run it
+    so.
   }];
+  let options = [
+    Option<"remarks", "remarks", "bool", /*default=*/"true",
+           "Explain every grid_sync verdict and flux pair in a remark">,
+  ];
 }
 
 def SimPrune : Pass<"sim-prune", "::mlir::sim::SimulationOp"> {
