@@ -566,29 +566,35 @@ LogicalResult SimulationLowering::emitLocalSteps(ComponentOp component,
     Value levels = kernel.levels.lookup(symbol);
     b.ifThen(b.cmp(arith::CmpIPredicate::sgt, size, b.i64(0)), [&] {
       Value half = b.mul(b.toIndex(parity), blocksOf(kernel));
-      // The code of `writer`'s num_steps at T at a lane's item.
+      // The code of `writer`'s num_steps at T at a lane's item, capped at
+      // max_steps rather than at m: limit_levels_C caps what it decodes at
+      // m, so the codes hold for any big step (and can be kept, below).
       auto codeAt = [&](ComponentOp writer, const Lane &lane) {
         KernelValues values = kernel.values;
         values.item = lane.item;
         Value steps = b.extend(
             estimate(kernel, writer, lane.item, begin, values), b.getI64Type());
-        return b.sub(b.i64(kLevelCode), b.min(steps, size));
+        return b.sub(b.i64(kLevelCode), b.min(steps, b.i64(maxSteps)));
       };
       // Where limit_levels_C takes the finest sub-step by an atomic
       // minimum (one lane per block), it starts from m, set here (a launch
       // earlier) by the lane of the launch's first item.
       Value firstItem = kernel.values.first ? kernel.values.first : b.index(0);
-      target.forEachGroup(b, kernel, [&](Value base) {
+      auto startFinest = [&](const Lane &lane) {
+        if (target.limitsLevelsPerLane())
+          b.ifThen(
+              arith::AndIOp::create(
+                  b, b.loc, lane.active,
+                  b.cmp(arith::CmpIPredicate::eq, lane.item, firstItem)),
+              [&] { b.store(size, kernel.clock, b.index(sub + kSubSize)); });
+      };
+      // Every lane's codes, combined per block into half `parity`.
+      auto computeCodes = [&](Value base) {
         target.forEachLane(b, kernel, base, [&](const Lane &lane) {
           b.ifThen(lane.active, [&] {
             target.laneStore(b, codeAt(component, lane), code, lane);
           });
-          if (target.limitsLevelsPerLane())
-            b.ifThen(
-                arith::AndIOp::create(
-                    b, b.loc, lane.active,
-                    b.cmp(arith::CmpIPredicate::eq, lane.item, firstItem)),
-                [&] { b.store(size, kernel.clock, b.index(sub + kSubSize)); });
+          startFinest(lane);
         });
         target.maxPerBlock(b, kernel, base, code, kLevelBlock, levels, half);
         // A flux writer's estimate at interface j bounds every block that
@@ -643,6 +649,24 @@ LogicalResult SimulationLowering::emitLocalSteps(ComponentOp component,
             });
           });
         });
+      };
+      target.forEachGroup(b, kernel, [&](Value base) {
+        // With invariant_levels, limit_levels_C keeps the codes of every
+        // block once they are complete, all in one launch: a group whose
+        // first block has its code kept has nothing to compute (the kept
+        // codes are read instead of half `parity`, which stays 0).
+        if (component.getInvariantLevels()) {
+          Value kept = b.load(
+              levels, b.add(b.mul(b.index(kLevelCached), blocksOf(kernel)),
+                            blockOf(base)));
+          Value isKept = b.cmp(arith::CmpIPredicate::ne, kept, b.i64(0));
+          if (target.limitsLevelsPerLane())
+            b.ifThen(isKept,
+                     [&] { target.forEachLane(b, kernel, base, startFinest); });
+          b.ifThen(b.xorOne(isKept), [&] { computeCodes(base); });
+          return;
+        }
+        computeCodes(base);
       });
     });
     if (failed(endKernel(kernel, simplan::LaunchShape::items, launches)))
@@ -802,20 +826,46 @@ LogicalResult SimulationLowering::emitLocalSteps(ComponentOp component,
   // wrote: another rank's, when the host did not all-reduce the codes
   // because the big step is 1) decodes to the big step, which every code
   // is within.
-  auto decodedLevel = [&](Kernel &kernel, Value levels, Value parity,
-                          Value size, Value h) {
+  // With invariant_levels, a block's code kept in section kLevelCached
+  // (when not 0) stands for the one in half `parity`, which levels_C no
+  // longer writes.
+  bool keepsCodes = component.getInvariantLevels();
+  auto keptAt = [&](Kernel &kernel, Value h) {
+    return b.toIndex(
+        b.add(b.mul(b.i64(kLevelCached), toI64(blocksOf(kernel))), h));
+  };
+  auto codeOf = [&](Kernel &kernel, Value levels, Value parity, Value h) {
     Value codes = b.mul(parity, toI64(blocksOf(kernel)));
     Value code = b.load(levels, b.toIndex(b.add(codes, h)));
+    if (!keepsCodes)
+      return code;
+    Value kept = b.load(levels, keptAt(kernel, h));
+    return b.select(b.cmp(arith::CmpIPredicate::ne, kept, b.i64(0)), kept,
+                    code);
+  };
+  auto decodedLevel = [&](Kernel &kernel, Value levels, Value parity,
+                          Value size, Value h) {
+    Value code = codeOf(kernel, levels, parity, h);
     return b.floorPowerOfTwo(b.min(b.sub(b.i64(kLevelCode), code), size));
   };
   // Block g's sub-step into section kLevelSteps, and its code in half
   // 1 - parity, the previous big step's, cleared for the next (0 is the
-  // identity of the codes).
-  auto storeLevel = [&](Kernel &kernel, Value levels, Value parity, Value g,
-                        Value level) {
+  // identity of the codes). With invariant_levels, the block's code is
+  // kept once the codes are complete: after a big step longer than one
+  // base step, whose codes a distributed run all-reduced (it shares none
+  // for a big step of 1). Every block of the window is kept in the same
+  // launch, so levels_C finds all or none of a group's blocks kept; the
+  // value kept is the one every lane of this launch decodes (kept or in
+  // half `parity`), whichever it reads.
+  auto storeLevel = [&](Kernel &kernel, Value levels, Value parity, Value size,
+                        Value g, Value level) {
     b.store(level, levels, b.add(stepsOf(kernel), b.toIndex(g)));
     Value other = b.mul(b.toIndex(b.xorOne(parity)), blocksOf(kernel));
     b.store(b.i64(0), levels, b.add(other, b.toIndex(g)));
+    if (keepsCodes)
+      b.ifThen(b.cmp(arith::CmpIPredicate::sgt, size, b.i64(1)), [&] {
+        b.store(codeOf(kernel, levels, parity, g), levels, keptAt(kernel, g));
+      });
   };
   auto limitedLevel = [&](Kernel &kernel, Value levels, Value parity,
                           Value size, Value g) -> Value {
@@ -845,7 +895,7 @@ LogicalResult SimulationLowering::emitLocalSteps(ComponentOp component,
   auto limitBlock = [&](Kernel &kernel, Value levels, Value parity, Value size,
                         Value g) {
     Value level = limitedLevel(kernel, levels, parity, size, g);
-    storeLevel(kernel, levels, parity, g, level);
+    storeLevel(kernel, levels, parity, size, g, level);
     return level;
   };
   // Runs `body(g)` (i64) for every block of the window (windowOf),
@@ -1065,7 +1115,7 @@ LogicalResult SimulationLowering::emitLocalSteps(ComponentOp component,
       OpBuilder::InsertionGuard guard(b);
       b.setInsertionPoint(decode.getBody()->getTerminator());
       Value k = blockAt(decode.getInductionVar());
-      storeLevel(kernel, levels, parity, k,
+      storeLevel(kernel, levels, parity, size, k,
                  decodedLevel(kernel, levels, parity, size, k));
     }
     // Lowers block `g` to twice its finest neighbour; returns whether it

@@ -61,11 +61,15 @@ static_assert(kLevelBlock == int64_t(::sim::bundle::LocalStepBlock::Items),
 /// The sections of `levels @C`, each one i64 per block: the two halves of
 /// levels_C's codes, then, for the big step, the neighbourhood codes for
 /// local_step_C and for a flux writer's local_flux_E, the ends of their
-/// runs of equal codes, and the blocks' sub-steps (LocalStepKernels.cpp).
+/// runs of equal codes, the blocks' sub-steps and the codes kept when the
+/// levels do not change (LocalStepKernels.cpp).
 constexpr int64_t kLevelStepCodes = 2, kLevelFluxCodes = 3, kLevelStepRuns = 4,
-                  kLevelFluxRuns = 5, kLevelSteps = 6;
-static_assert(int64_t(::sim::bundle::LocalStepLevels::Sections) ==
-                  kLevelSteps + 1,
+                  kLevelFluxRuns = 5, kLevelSteps = 6, kLevelCached = 7;
+static_assert(int64_t(::sim::bundle::LocalStepLevels::Steps) == kLevelSteps &&
+                  int64_t(::sim::bundle::LocalStepLevels::Cached) ==
+                      kLevelCached &&
+                  int64_t(::sim::bundle::LocalStepLevels::Sections) ==
+                      kLevelCached + 1,
               "the kernels' level sections and the bundle schema's differ");
 
 /// No estimate yet: the identity of the minimum.

@@ -809,6 +809,24 @@ LogicalResult ComponentOp::verify() {
       (!getLocalWindowAttr() || simulation.getStrategy() != Strategy::lts))
     return emitOpError() << "advances in local_steps, which needs a "
                             "local_window and the lts strategy";
+  if (getInvariantLevels()) {
+    if (getAdvance() != Advance::local_steps)
+      return emitOpError() << "has invariant_levels but does not advance in "
+                              "local_steps";
+    // The kernels keep the levels on this word: a num_steps that reads
+    // the time or a buffer would give other levels later.
+    if (!getNumStepsTime().use_empty())
+      return emitOpError() << "has invariant_levels, but its num_steps "
+                              "reads its local time";
+    ReadOp read;
+    getNumSteps().walk([&](ReadOp found) {
+      read = found;
+      return WalkResult::interrupt();
+    });
+    if (read)
+      return emitOpError() << "has invariant_levels, but its num_steps reads "
+                           << read.getBufferAttr();
+  }
   if (DenseI64ArrayAttr window = getFluxWindowAttr()) {
     if (window.size() != 2 || window[0] > window[1])
       return emitOpError() << "has a flux_window that is not [lo, hi] with "

@@ -73,6 +73,10 @@ struct PlanMemoryPass : public sim::impl::SimPlanMemoryBase<PlanMemoryPass> {
       component.setAdvanceAttr(AdvanceAttr::get(context, stepping->advance));
       component.setEstimates(stepping->estimates);
     }
+    for (ComponentOp component : analysis.getComponents())
+      component.setInvariantLevels(component.getAdvance() ==
+                                       Advance::local_steps &&
+                                   hasInvariantLevels(analysis, component));
     // An lts request that no component can use plans what hip plans: say
     // so (the sub-stepping remarks say why for each grid_sync component).
     if (strategy == Strategy::lts &&
@@ -121,6 +125,33 @@ struct PlanMemoryPass : public sim::impl::SimPlanMemoryBase<PlanMemoryPass> {
     for (Operation *buffer : snapshots)
       cast<BufferOp>(buffer).setSnapshot(true);
     markAnalysesPreserved<DependencyAnalysis>();
+  }
+
+  /// True when the levels of `reader`'s blocks cannot change from one big
+  /// step to the next: its num_steps, and that of every flux writer whose
+  /// fluxes it reads (their estimates bound its blocks too), depends on
+  /// the item and the parameters only. It reads neither its local time nor
+  /// a buffer (every buffer has a writer, so any buffer may change).
+  static bool hasInvariantLevels(const DependencyAnalysis &analysis,
+                                 ComponentOp reader) {
+    auto invariant = [&](ComponentOp component) {
+      if (!component.hasNumSteps())
+        return true;
+      if (!component.getNumStepsTime().use_empty())
+        return false;
+      return llvm::none_of(analysis.getAccesses(component),
+                           [&](const BufferAccess &access) {
+                             return access.body == BodyKind::NumSteps;
+                           });
+    };
+    if (!reader.hasNumSteps() || !invariant(reader))
+      return false;
+    for (const BufferAccess &access : analysis.getAccesses(reader))
+      if (ComponentOp writer = analysis.getWriter(access.buffer);
+          writer && writer != reader &&
+          writer.getAdvance() == Advance::local_flux && !invariant(writer))
+        return false;
+    return true;
   }
 
   /// hip-cache keeps, per thread group, the interpolated values that

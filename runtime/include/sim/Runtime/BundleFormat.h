@@ -33,8 +33,11 @@ constexpr char kMagic[8] = {'S', 'I', 'M', 'B', 'N', 'D', 'L', '\0'};
 /// version 2 decoded them in place and would find too little memory
 /// under a version 3 runtime's layout contract, and the reverse); version
 /// 4 adds `exchange_local_step` (a version 3 runtime would not send those
-/// ghost items at all); version 5 adds `exchange_local_flux` (likewise).
-constexpr uint32_t kFormatVersion = 5;
+/// ghost items at all); version 5 adds `exchange_local_flux` (likewise);
+/// version 6 gives `levels @C` an eighth section, the codes kept for a
+/// component with `invariant_levels` (a version 5 runtime would allocate
+/// too little memory for them).
+constexpr uint32_t kFormatVersion = 6;
 constexpr size_t kHeaderSize = 32;
 /// The largest bundle a runtime reads (a bundle of every strategy of the
 /// paper's scenes takes well under 1 MiB).

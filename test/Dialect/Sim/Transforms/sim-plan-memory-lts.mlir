@@ -7,7 +7,7 @@
 // CHECK-LABEL: sim.simulation @stencil
 // CHECK-SAME: strategy = #sim<strategy lts>
 // CHECK: sim.buffer @U : f32 attributes {snapshot}
-// CHECK: sim.component @Diffuse writes(@U) attributes {advance = #sim<advance local_steps>, local_window = array<i64: -1, 1>, parity = #sim<parity copy_if_even>, sub_stepping = #sim<sub_stepping grid_sync>}
+// CHECK: sim.component @Diffuse writes(@U) attributes {advance = #sim<advance local_steps>, invariant_levels, local_window = array<i64: -1, 1>, parity = #sim<parity copy_if_even>, sub_stepping = #sim<sub_stepping grid_sync>}
 // CHECK: sim.component @Follow writes(@Q) attributes {advance = #sim<advance whole_step>, parity = #sim<parity none>
 sim.simulation @stencil range(64) dt(1.0e-2 : f32) max_steps(4) {
   sim.buffer @U : f32 init {

@@ -33,7 +33,7 @@
 // SIMPLE: sim.component @Tail writes(@T) attributes {advance = #sim<advance whole_step>, local_window = array<i64: 0, 1>, parity = #sim<parity none>
 // TRAD: sim.component @Tail writes(@T) attributes {advance = #sim<advance whole_step>, estimates, local_window = array<i64: 0, 1>, parity = #sim<parity none>
 // HIP: sim.component @Tail writes(@T) attributes {advance = #sim<advance grid_substeps>, local_window = array<i64: 0, 1>, parity = #sim<parity copy_if_even>
-// LTS: sim.component @Tail writes(@T) attributes {advance = #sim<advance local_steps>, local_window = array<i64: 0, 1>, parity = #sim<parity copy_if_even>
+// LTS: sim.component @Tail writes(@T) attributes {advance = #sim<advance local_steps>, invariant_levels, local_window = array<i64: 0, 1>, parity = #sim<parity copy_if_even>
 // CHECK: sim.component @Plain writes(@P) attributes {advance = #sim<advance whole_step>, parity = #sim<parity none>
 // CHECK: sim.schedule [@Lead, @Middle, @Tail, @Plain] bounded_by [@Lead]
 sim.simulation @stepping range(64) dt(1.0e-2 : f32) max_steps(3) {

@@ -381,7 +381,10 @@ def Sim_ComponentOp : Sim_Op<"component", [
     reads its `#sim.flux` buffers, with `local_window` the offsets at which
     it reads the reader's state (`--sim-substep-legality`);
     `advance` (how the component advances through a big step), `estimates`
-    (its `num_steps` decides the size of the big step), `parity` and, under
+    (its `num_steps` decides the size of the big step), `invariant_levels`
+    (under `lts`, on a `local_steps` component whose `num_steps`, and its
+    flux writer's, read neither `%t` nor a buffer: its blocks' levels are
+    computed once per run and kept), `parity` and, under
     `hip-cache`, `caches` (a `#sim.cache<@B, lo, hi>` for each buffer whose
     interpolated values in the window `i+lo..i+hi` the component caches in
     shared memory), all by `--sim-plan-memory` for its strategy.
@@ -408,6 +411,7 @@ def Sim_ComponentOp : Sim_Op<"component", [
                        OptionalAttr<DenseI64ArrayAttr>:$flux_window,
                        OptionalAttr<Sim_AdvanceAttr>:$advance,
                        UnitAttr:$estimates,
+                       UnitAttr:$invariant_levels,
                        OptionalAttr<Sim_ParityAttr>:$parity,
                        OptionalAttr<TypedArrayAttrBase<Sim_CacheAttr,
                            "array of #sim.cache">>:$caches);
