@@ -231,6 +231,27 @@ protected:
   }
   static void TearDownTestSuite() { shell("rm -rf '" + dir + "'"); }
 
+  /// A copy of sim-run in folder `name` of `dir`, next to a stand-in
+  /// sim-translate that records its arguments in `args` and copies
+  /// `bundle` to the output, and a `scene` it does not read.
+  struct StandIn {
+    std::string simRun, scene, args;
+  };
+  static StandIn standInTranslate(const std::string &name) {
+    std::string tools = dir + "/" + name;
+    EXPECT_EQ(mkdir(tools.c_str(), 0755), 0) << tools;
+    StandIn standIn{tools + "/sim-run", tools + "/decay.mlir", tools + "/args"};
+    EXPECT_EQ(
+        shell("cp " + std::string(SIM_RUN_PATH) + " " + standIn.simRun).status,
+        0);
+    writeFile(standIn.scene, "// not read by the stand-in sim-translate\n");
+    std::string translate = tools + "/sim-translate";
+    writeFile(translate, "#!/bin/sh\necho \"$@\" > '" + standIn.args +
+                             "'\n/bin/cp '" + bundle + "' \"$4\"\n");
+    chmod(translate.c_str(), 0755);
+    return standIn;
+  }
+
   static std::string dir, bundle;
 };
 
@@ -1349,16 +1370,7 @@ TEST_F(SimRun, TakesMaxStepsOnlyWhereItCanBeCompiledIn) {
   // A .mlir scene is compiled with it: a stand-in sim-translate records
   // its arguments (the bundle it copies has max_steps 4, which a session
   // given max_steps=6 would refuse).
-  std::string tools = dir + "/compile-time";
-  ASSERT_EQ(mkdir(tools.c_str(), 0755), 0);
-  std::string simRun = tools + "/sim-run";
-  ASSERT_EQ(shell("cp " + std::string(SIM_RUN_PATH) + " " + simRun).status, 0);
-  std::string scene = tools + "/decay.mlir", args = tools + "/args";
-  writeFile(scene, "// not read by the stand-in sim-translate\n");
-  std::string translate = tools + "/sim-translate";
-  writeFile(translate, "#!/bin/sh\necho \"$@\" > '" + args + "'\n/bin/cp '" +
-                           bundle + "' \"$4\"\n");
-  chmod(translate.c_str(), 0755);
+  auto [simRun, scene, args] = standInTranslate("compile-time");
   result = shell("PATH=/nonexistent " + simRun + " " + scene +
                  " --backend cpu --steps 4 --set max_steps=6 --set k=1");
   EXPECT_EQ(result.status, 0) << result.output;
@@ -1374,17 +1386,7 @@ TEST_F(SimRun, TakesMaxStepsOnlyWhereItCanBeCompiledIn) {
 }
 
 TEST_F(SimRun, TranslatesOnlyTheStrategiesItRuns) {
-  // A stand-in sim-translate records its arguments and copies the bundle.
-  std::string tools = dir + "/strategies";
-  ASSERT_EQ(mkdir(tools.c_str(), 0755), 0);
-  std::string simRun = tools + "/sim-run";
-  ASSERT_EQ(shell("cp " + std::string(SIM_RUN_PATH) + " " + simRun).status, 0);
-  std::string scene = tools + "/decay.mlir", args = tools + "/args";
-  writeFile(scene, "// not read by the stand-in sim-translate\n");
-  std::string translate = tools + "/sim-translate";
-  writeFile(translate, "#!/bin/sh\necho \"$@\" > '" + args + "'\n/bin/cp '" +
-                           bundle + "' \"$4\"\n");
-  chmod(translate.c_str(), 0755);
+  auto [simRun, scene, args] = standInTranslate("strategies");
   auto translatedFor = [&](const std::string &options) {
     Result result = shell("PATH=/nonexistent " + simRun + " " + scene +
                           " --backend cpu --steps 4 " + options);
