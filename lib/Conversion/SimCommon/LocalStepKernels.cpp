@@ -30,7 +30,7 @@
 //   local_parity_C   blocks that took an even number of sub-steps copy
 //                    their result into the target half
 //
-// `levels @C` has seven sections of one i64 per block: two halves of
+// `levels @C` has eight sections of one i64 per block: two halves of
 // codes (the big step of clock parity p uses half p), two of
 // neighbourhood codes (kLevelStepCodes, kLevelFluxCodes: the block's
 // sub-step when every block its items reach has it, else minus it (step)
@@ -38,20 +38,21 @@
 // that a slot kernel decides from one value per run which blocks start at
 // the slot and which of those read their neighbours in step (wide loads on
 // a CPU) or through their time levels, and the blocks' sub-steps
-// (kLevelSteps). levels_C combines its items into half p with an atomic
-// maximum of kLevelCode - min(num_steps, m) (0, what the runtime and
+// (kLevelSteps), and the codes kept for a component whose levels cannot
+// change (kLevelCached, invariant_levels: levels_C then stops computing
+// them). levels_C combines its items into half p with an atomic
+// maximum of kLevelCode - min(num_steps, max_steps) (0, what the runtime and
 // limit_levels_C of the previous big step leave there, is the identity);
 // limit_levels_C turns the codes into sub-steps (the largest power of two
-// not above the block's minimum, once per block rather than per item:
-// rounding down commutes with the minimum), limits them, clears half
-// 1 - p for the next big step and writes the codes and runs. On a GPU
-// every block's work is its own, spread over the lanes of an items
-// launch: one thread walking the blocks would cost a dependent load per
-// block and sweep per big step. The sub-step clock of the component
-// holds: Begin, the time T + q of the next slot (advance resets it to T);
-// Size, the finest sub-step; Done, the invocations of local_step_C that
-// finished the slot so far (0 between launches). Which half of a
-// buffer holds a block's latest level follows from its sub-step and the
+// not above the block's minimum, capped at m, once per block rather than per
+// item: rounding down commutes with the minimum), limits them, clears half 1 -
+// p for the next big step and writes the codes and runs. On a GPU every block's
+// work is its own, spread over the lanes of an items launch: one thread walking
+// the blocks would cost a dependent load per block and sweep per big step. The
+// sub-step clock of the component holds: Begin, the time T + q of the next slot
+// (advance resets it to T); Size, the finest sub-step; Done, the invocations of
+// local_step_C that finished the slot so far (0 between launches). Which half
+// of a buffer holds a block's latest level follows from its sub-step and the
 // slot alone, so no flag is written during a slot and every reader can
 // tell (KernelBody.cpp, the `local` loads).
 //
