@@ -180,8 +180,8 @@ void translate(const std::string &scene, TemporaryFile &bundle,
   if (!strategies.empty()) {
     std::string names;
     for (sim_strategy strategy : strategies)
-      names += (names.empty() ? "" : ",") +
-               std::string(sim_strategy_name(strategy));
+      names +=
+          (names.empty() ? "" : ",") + std::string(sim_strategy_name(strategy));
     args.push_back("--sim-strategies=" + names);
   }
   if (!compiled.empty()) {
@@ -1139,8 +1139,7 @@ std::vector<sim_strategy> translatedStrategies(const Options &options) {
   if (!options.strategyGiven)
     return {};
   std::vector<sim_strategy> strategies;
-  if (options.reference == "simple" &&
-      options.strategy != SIM_STRATEGY_SIMPLE)
+  if (options.reference == "simple" && options.strategy != SIM_STRATEGY_SIMPLE)
     strategies.push_back(SIM_STRATEGY_SIMPLE);
   strategies.push_back(options.strategy);
   return strategies;
