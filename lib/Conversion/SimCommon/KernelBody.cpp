@@ -296,7 +296,9 @@ private:
   /// at `b = c s` after `T` (in the half `source parity xor (c & 1)`) and
   /// its previous one at `b - s` (the other half). In step (`b = slot`):
   /// the latest level; a coarser block ahead in time: the buffer's
-  /// interpolation between the two at `(slot - (b - s)) / s`.
+  /// interpolation between the two at `(slot - (b - s)) / s`. Where lanes
+  /// run side by side the item is loaded from both halves and the levels
+  /// selected (KernelValues::levelsFromBothHalves).
   FailureOr<Value> lowerLevelLoad(OpBuilder &builder, LoadOp load,
                                   BufferOp buffer) {
     Location loc = load.getLoc();
@@ -339,13 +341,9 @@ private:
         arith::XOrIOp::create(
             builder, loc, mask,
             arith::ConstantIntOp::create(builder, loc, -1, 64)));
-    Value odd = arith::ExtUIOp::create(
-        builder, loc, builder.getI64Type(),
-        arith::CmpIOp::create(
-            builder, loc, arith::CmpIPredicate::ne,
-            arith::AndIOp::create(builder, loc, latestTime, level), zero64));
-    Value latestParity =
-        arith::XOrIOp::create(builder, loc, values.sourceParity, odd);
+    Value isOdd = arith::CmpIOp::create(
+        builder, loc, arith::CmpIPredicate::ne,
+        arith::AndIOp::create(builder, loc, latestTime, level), zero64);
     auto elementOf = [&](Value parity) {
       Value half = arith::MulIOp::create(
           builder, loc,
@@ -354,8 +352,31 @@ private:
           halfSize);
       return arith::AddIOp::create(builder, loc, half, stored).getResult();
     };
-    Value latest =
-        memref::LoadOp::create(builder, loc, memory, elementOf(latestParity));
+    // The latest level, and a way to the previous one. Where lanes run side
+    // by side (levelsFromBothHalves), both halves at the item, both at
+    // halves that every lane shares, so that consecutive items load as
+    // wide loads whatever their blocks' parities, and a select per lane;
+    // else one load from the half the block says.
+    Value latest, latestParity, previousLevel;
+    if (values.levelsFromBothHalves) {
+      Value sourceHalf = memref::LoadOp::create(builder, loc, memory,
+                                                elementOf(values.sourceParity));
+      Value otherHalf =
+          memref::LoadOp::create(builder, loc, memory,
+                                 elementOf(arith::XOrIOp::create(
+                                     builder, loc, values.sourceParity, one)));
+      latest =
+          arith::SelectOp::create(builder, loc, isOdd, otherHalf, sourceHalf);
+      previousLevel =
+          arith::SelectOp::create(builder, loc, isOdd, sourceHalf, otherHalf);
+    } else {
+      Value odd =
+          arith::ExtUIOp::create(builder, loc, builder.getI64Type(), isOdd);
+      latestParity =
+          arith::XOrIOp::create(builder, loc, values.sourceParity, odd);
+      latest =
+          memref::LoadOp::create(builder, loc, memory, elementOf(latestParity));
+    }
     Value inStep = arith::CmpIOp::create(builder, loc, arith::CmpIPredicate::eq,
                                          latestTime, slot);
     auto select = scf::IfOp::create(builder, loc, TypeRange{type}, inStep,
@@ -365,10 +386,11 @@ private:
       builder.setInsertionPointToStart(select.thenBlock());
       scf::YieldOp::create(builder, loc, latest);
       builder.setInsertionPointToStart(select.elseBlock());
-      Value previousParity =
-          arith::XOrIOp::create(builder, loc, latestParity, one);
-      Value previous = memref::LoadOp::create(builder, loc, memory,
-                                              elementOf(previousParity));
+      Value previous = previousLevel;
+      if (!previous)
+        previous = memref::LoadOp::create(
+            builder, loc, memory,
+            elementOf(arith::XOrIOp::create(builder, loc, latestParity, one)));
       Value behind = arith::SubIOp::create(
           builder, loc, slot,
           arith::SubIOp::create(builder, loc, latestTime, level));

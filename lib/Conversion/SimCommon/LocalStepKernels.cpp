@@ -1265,6 +1265,7 @@ LogicalResult SimulationLowering::emitLocalSteps(ComponentOp component,
           values.levelSlot = slot;
           values.levelBase = half;
           values.levelsAtItem = true;
+          values.levelsFromBothHalves = target.readsLevelsFromBothHalves();
         }
         SmallVector<Value> results = inline_(
             fluxWriter.getEvaluate(),
@@ -1342,6 +1343,7 @@ LogicalResult SimulationLowering::emitLocalSteps(ComponentOp component,
           values.levels = levels;
           values.levelSlot = slot;
           values.levelBase = half;
+          values.levelsFromBothHalves = target.readsLevelsFromBothHalves();
         }
         SmallVector<Value> results = inline_(
             component.getEvaluate(),

@@ -84,6 +84,10 @@ struct KernelValues {
   /// The flux writer of a flux pair reads its reader's state from the time
   /// levels at every item, its own included (it writes none of it).
   bool levelsAtItem = false;
+  /// Such a read loads the item from both halves and selects per item
+  /// (KernelTarget::readsLevelsFromBothHalves) instead of loading from the
+  /// half that the item's block says.
+  bool levelsFromBothHalves = false;
 };
 
 /// Local time steps: the items of a block that chooses one level (the

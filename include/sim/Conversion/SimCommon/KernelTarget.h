@@ -165,6 +165,13 @@ public:
   /// the same fixpoint: a CPU, where a pass costs less than the lanes'
   /// repeated window minima). Both give the same sub-steps and codes.
   virtual bool limitsLevelsPerLane() const { return !splitsGroups(); }
+  /// Whether a read through the time levels (lts) loads the item from both
+  /// halves and selects its latest level per lane (a CPU: lanes side by
+  /// side in SIMD registers, where two wide loads and a select serve a
+  /// chunk whose blocks keep their latest levels in different halves, and
+  /// one load at a per-lane half is a gather), or loads only the half that
+  /// holds it (a GPU: a thread loads one element).
+  virtual bool readsLevelsFromBothHalves() const { return splitsGroups(); }
   /// Runs `body(begin, end)` for spans of the items of consecutive groups
   /// this invocation handles, in order, `end` at most the range: where one
   /// thread runs its groups one after another (a CPU, splitsGroups), one
