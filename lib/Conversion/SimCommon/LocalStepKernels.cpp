@@ -289,7 +289,10 @@ LogicalResult SimulationLowering::emitLocalSteps(ComponentOp component,
   // that does not start at the slot has nothing to do. A part is a run of
   // blocks of one code where the target splits groups (KernelTarget::
   // splitsGroups: one test skips the run, one loop of SIMD chunks runs it),
-  // else the whole group.
+  // else the whole group. Where a part is a run, `repair(lane, level,
+  // readParity)` (unless null) evaluates a lane of a run whose blocks all
+  // take the sub-step `level` (a negative step code) through the time
+  // levels, uncounted, instead of `general`, which finds each lane's own.
   auto forEachPartAtSlot =
       [&](Kernel &kernel, Value levels, int64_t codeSection, int64_t runSection,
           Value slot, Value parity, int64_t countSlot,
@@ -339,18 +342,34 @@ LogicalResult SimulationLowering::emitLocalSteps(ComponentOp component,
           b.ifThen(startsAt(slot, code),
                    [&] { allInStep(code, readParityOf(parity, slot, code)); });
           b.setInsertionPointToStart(branch.elseBlock());
-          if (origin && repair && reach <= kLevelBlock) {
-            // A run of one sub-step whose neighbourhood is not: only its
-            // first and last `reach` items read another block. The whole
-            // run takes its sub-step in step (SIMD chunks), then `repair`
-            // evaluates again, through the time levels, the items at an
-            // end whose next block has another sub-step (or that wrap
-            // around the range). Nothing reads the half a block writes in
-            // its own slot (its readers' latest level of it is the other
-            // half), so the first results are never seen.
+          if (origin && repair) {
+            // A run of one sub-step whose neighbourhood is not. Its lanes
+            // share the sub-step and the half they read and write, so only
+            // their reads of other items need the time levels. With a
+            // window of at most a block only its first and last `reach`
+            // items read another block: the whole run takes its sub-step
+            // in step (SIMD chunks), then `repair` evaluates again,
+            // through the time levels, the items at an end whose next
+            // block has another sub-step (or that wrap around the range).
+            // Nothing reads the half a block writes in its own slot (its
+            // readers' latest level of it is the other half), so the first
+            // results are never seen. A wider window, or a run shorter
+            // than two windows, evaluates every lane once through the time
+            // levels (`repair`, counted at once).
             Value level = b.sub(b.i64(0), code);
             b.ifThen(startsAt(slot, level), [&] {
               Value readParity = readParityOf(parity, slot, level);
+              auto throughLevels = [&] {
+                lanesOf(part, [&](const Lane &lane) {
+                  repair(lane, level, readParity);
+                });
+                b.atomic(arith::AtomicRMWKind::addi,
+                         arith::IndexCastOp::create(b, b.loc, b.getI64Type(),
+                                                    part.count),
+                         kernel.clock, b.index(countSlot));
+              };
+              if (reach > kLevelBlock)
+                return throughLevels();
               Value wide = b.cmp(arith::CmpIPredicate::uge, part.count,
                                  b.index(2 * reach));
               auto split = scf::IfOp::create(b, b.loc, TypeRange{}, wide,
@@ -421,7 +440,7 @@ LogicalResult SimulationLowering::emitLocalSteps(ComponentOp component,
               b.ifThen(repairLast,
                        [&] { repairLanes(b.sub(part.count, edge)); });
               b.setInsertionPointToStart(split.elseBlock());
-              countingLanes(general);
+              throughLevels();
             });
             return;
           }
@@ -1321,7 +1340,11 @@ LogicalResult SimulationLowering::emitLocalSteps(ComponentOp component,
   // local_step_C: the items whose block's sub-step starts at slot q.
   {
     Kernel kernel = beginKernel(getKernelName(kernels, "local_step", name));
-    LaneVar count = target.createLaneVar(b, kernel, b.getI32Type(), b.i32(0));
+    // Evaluations counted per lane where a part is the whole group; a run
+    // (splitsGroups) counts its lanes at once.
+    std::optional<LaneVar> count;
+    if (!target.splitsGroups())
+      count = target.createLaneVar(b, kernel, b.getI32Type(), b.i32(0));
     Slot state = readSlot(kernel);
     Value parity = state.parity, levels = state.levels, dt = state.dt,
           now = state.now, slot = state.slot;
@@ -1348,8 +1371,9 @@ LogicalResult SimulationLowering::emitLocalSteps(ComponentOp component,
         SmallVector<Value> results = inline_(
             component.getEvaluate(),
             {lane.item, now, b.truncate(level, b.getI32Type()), dt}, values);
+        assert((!counted || count) && "a run counts its lanes at once");
         storeResults(kernel, lane, writes, results, writeBase, writeParity,
-                     counted ? &count : nullptr);
+                     counted ? &*count : nullptr);
       };
       // A part whose window reaches blocks of one sub-step only (its step
       // codes say so): every lane reads its neighbours in step from one
@@ -1372,8 +1396,9 @@ LogicalResult SimulationLowering::emitLocalSteps(ComponentOp component,
           [&](const Lane &lane, Value level, Value readParity) {
             evaluateLane(lane, level, readParity, false, /*counted=*/false);
           });
-      target.reduceIntoClock(b, kernel, count, arith::AtomicRMWKind::addi,
-                             evaluationSlots.lookup(component));
+      if (count)
+        target.reduceIntoClock(b, kernel, *count, arith::AtomicRMWKind::addi,
+                               evaluationSlots.lookup(component));
     });
     // The next slot where a block starts a sub-step, set by the invocation
     // that finishes the slot last (every other one has read `now`): no

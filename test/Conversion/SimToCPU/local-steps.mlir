@@ -70,11 +70,15 @@ sim.simulation @rod range(100) dt(1.0e-2 : f32) max_steps(8) {
 // CHECK:                   scf.for
 // CHECK:       return
 
-// local_step_C: runs across groups, then each run group by group.
+// local_step_C: runs across groups, each run's lanes as one loop (those of
+// a run next to another sub-step through the time levels), counted at once:
+// no evaluation count per lane.
 // CHECK-LABEL: func.func @local_step_Diffuse(
+// CHECK-NOT:     memref.alloca
 // CHECK:         scf.while
-// CHECK:           scf.while
 // CHECK:             } {simplan.lanes}
+// CHECK:             memref.atomic_rmw addi
+// CHECK-NOT:     memref.alloca
 // CHECK:       return
 
 // CHECK-LABEL: func.func @local_parity_Diffuse(
