@@ -317,6 +317,10 @@ private:
         bad(what + ": " + about +
             " has a level reach, but only a component that takes local time "
             "steps in a distributed plan has one");
+      if (component.keeps_levels && component.advance != Advance::LocalSteps)
+        bad(what + ": " + about +
+            " keeps its levels, but only a component that takes local time "
+            "steps has levels");
     }
   }
 

@@ -613,6 +613,8 @@ void Session::init() {
         if (memory.pointer)
           backend->zero(memory.pointer, memory.bytes);
   }
+  // The levels were zeroed (or just allocated), kept codes included.
+  levelsKept.assign(plan_->components.size(), false);
   prepare();
   runUncounted(PhaseKind::Init);
   // Whatever the init phase's own exchanges refreshed, every ghost holds
@@ -1058,8 +1060,6 @@ void Session::reduceLevels(const std::vector<uint32_t> &components,
   // levels come out no finer than one process's and nothing reads them.
   int64_t clock[kSlotParity + 1];
   backend->read(clock, clockMemory.pointer, sizeof clock);
-  const int64_t blockItems = int64_t(schema::LocalStepBlock::Items);
-  int64_t blocks = (settings.range + blockItems - 1) / blockItems;
   int64_t parity = clock[kSlotParity];
   if (parity != 0 && parity != 1)
     fail(SIM_ERROR_CLOCK, "the clock's parity is " + std::to_string(parity) +
@@ -1071,6 +1071,27 @@ void Session::reduceLevels(const std::vector<uint32_t> &components,
   // the same big step, so all skip alike.
   if (clock[kSlotSize] <= 1)
     return;
+  // A component that keeps its codes (keeps_levels) kept them in the
+  // limit_levels_C after its first gathering, complete for every block
+  // within its reach; from then on its kernels read the kept codes and
+  // levels_C writes none, so nothing is left to gather. Every rank takes
+  // the same big steps, so all skip alike.
+  std::vector<uint32_t> gathered;
+  for (uint32_t c : components)
+    if (!levelsKept[c])
+      gathered.push_back(c);
+  if (gathered.empty())
+    return;
+  for (uint32_t c : gathered)
+    if (plan_->components[c]->keeps_levels)
+      levelsKept[c] = true;
+  reduceLevelCodes(gathered, counted, parity);
+}
+
+void Session::reduceLevelCodes(const std::vector<uint32_t> &components,
+                               bool counted, int64_t parity) {
+  const int64_t blockItems = int64_t(schema::LocalStepBlock::Items);
+  int64_t blocks = (settings.range + blockItems - 1) / blockItems;
   endGhosts();
   int32_t me = comm->rank(), ranks = comm->size();
   DevicePtr offset = DevicePtr(parity * blocks) * sizeof(int64_t);

@@ -264,6 +264,10 @@ private:
   /// rank's block, in the levels of `components` (a launch's
   /// `reduce_max_levels`): one exchange with those ranks.
   void reduceLevels(const std::vector<uint32_t> &components, bool counted);
+  /// The exchange of reduceLevels for `components`, whose codes are in
+  /// half `parity` of their levels.
+  void reduceLevelCodes(const std::vector<uint32_t> &components, bool counted,
+                        int64_t parity);
   /// After that launch (limit_levels_C): the finest sub-step of each of
   /// `components` (its sub-step clock's Size) by its minimum over all
   /// ranks, one all-reduce.
@@ -332,6 +336,11 @@ private:
     std::vector<std::vector<int64_t>> send, recv;
   };
   std::map<int64_t, LevelLists> levelListsCache;
+  /// Per component: its kernels keep its codes (keeps_levels) and have kept
+  /// them since reduceLevels gathered them last, so later big steps need
+  /// no gathering. Cleared at every run from the initial state (init), as
+  /// the kept codes are.
+  std::vector<bool> levelsKept;
   /// Host memory of the backend's allocateHost (page-locked on CUDA),
   /// grown as needed: per peer, what this rank sends and receives.
   class Staging {

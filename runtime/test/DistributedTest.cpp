@@ -589,6 +589,12 @@ TEST(Distributed, VerifierChecksTheRecords) {
   expectBad(std::move(contents),
             "component 'Mix' has a level reach, but only a component that "
             "takes local time steps in a distributed plan has one");
+  // Kept levels: only a component with levels keeps them.
+  contents = ringContents(Boundary::Wrap);
+  contents.plans[0]->components[0]->keeps_levels = true;
+  expectBad(std::move(contents),
+            "component 'Mix' keeps its levels, but only a component that "
+            "takes local time steps has levels");
   // The half a sub-step wrote: only a grid-wide sub-step's launch has one.
   contents = ringContents(Boundary::Wrap);
   contents.plans[0]->phases[1]->body[2]->launch->exchange.clear();

@@ -715,14 +715,18 @@ LogicalResult SimulationLowering::emitLocalSteps(ComponentOp component,
   // codes of those blocks only (reduce_max_levels), a block more on each
   // side for the blocks its block's ends cut.
   int64_t levelReach = 0;
+  auto planComponent = cast<simplan::ComponentOp>(
+      SymbolTable::lookupSymbolIn(plan, component.getSymNameAttr()));
   if (distributed) {
     int64_t window = std::max({distributedHalo, reach, fluxBelow, fluxAbove});
     levelReach = window + kLevelBlock * (hops * radius + radius + 2);
-    auto planComponent = cast<simplan::ComponentOp>(
-        SymbolTable::lookupSymbolIn(plan, component.getSymNameAttr()));
     planComponent.setLevelReachAttr(
         Builder(plan.getContext()).getI64IntegerAttr(levelReach));
   }
+  // The kernels below keep the codes of an invariant_levels component
+  // (limit_levels_C), which the plan says so that a distributed run gathers
+  // them once.
+  planComponent.setKeepsLevels(component.getInvariantLevels());
   auto toI64 = [&](Value index) {
     return arith::IndexCastOp::create(b, b.loc, b.getI64Type(), index)
         .getResult();

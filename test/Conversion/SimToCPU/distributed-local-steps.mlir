@@ -67,9 +67,11 @@ sim.simulation @rod range(100) dt(1.0e-2 : f32) max_steps(4) {
 // Its codes come from the blocks within 161 items of a rank's block: the
 // ghost items (1), the window's radius (1 block) and the limit's reach
 // (2 neighbour steps of 1 block for max_steps 4), a block more on each
-// side: 1 + 32 * (2 + 1 + 2).
+// side: 1 + 32 * (2 + 1 + 2). Its num_steps reads the item only, so its
+// kernels keep the codes (keeps_levels), which the ranks then gather for
+// one big step.
 // CHECK-LABEL: simplan.plan
-// CHECK:       simplan.component @Rod writes [@U] evaluations({{[0-9]+}}) advance local_steps sub_clock({{[0-9]+}}) level_reach(161)
+// CHECK:       simplan.component @Rod writes [@U] evaluations({{[0-9]+}}) advance local_steps sub_clock({{[0-9]+}}) level_reach(161) keeps_levels{{$}}
 // CHECK:       simplan.launch @rod_kernels::@levels_Rod items [#simplan.arg<clock>, #simplan.arg<levels @Rod>, #simplan.arg<range>, #simplan.arg<first>]{{$}}
 // CHECK-NEXT:  simplan.launch @rod_kernels::@limit_levels_Rod items [#simplan.arg<clock>, #simplan.arg<levels @Rod>, #simplan.arg<range>, #simplan.arg<first>, #simplan.arg<extent>] reduce_max_levels [@Rod]
 // CHECK-NEXT:  simplan.repeat 4 {

@@ -94,6 +94,13 @@ simplan.plan @p strategy("lts") kernels(@k) range(4) dt(1.0e-2 : f32) max_steps(
 
 // -----
 
+simplan.plan @p strategy("lts") kernels(@k) range(4) dt(1.0e-2 : f32) max_steps(2) step_cap(2) group_size(32) clock_slots(16) histogram(13) {
+  // expected-error @+1 {{'simplan.component' op keeps levels but advances in grid_substeps; only local_steps components have levels}}
+  simplan.component @C writes [] evaluations(8) advance grid_substeps sub_clock(9) keeps_levels
+}
+
+// -----
+
 simplan.plan @p strategy("hip") kernels(@k) range(4) dt(1.0e-2 : f32) max_steps(2) step_cap(2) group_size(32) clock_slots(12) histogram(9) {
   // expected-error @+1 {{custom op 'simplan.component' unknown keyword 'sideways'}}
   simplan.component @C writes [] evaluations(8) advance sideways

@@ -268,6 +268,10 @@ LogicalResult ComponentOp::verify() {
       return emitOpError() << "has a level_reach in a plan that is not "
                               "distributed";
   }
+  if (getKeepsLevels() && getAdvance() != mlir::sim::Advance::local_steps)
+    return emitOpError() << "keeps levels but advances in "
+                         << mlir::sim::stringifyAdvance(getAdvance())
+                         << "; only local_steps components have levels";
   return success();
 }
 

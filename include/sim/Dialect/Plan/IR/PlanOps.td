@@ -241,24 +241,31 @@ def Plan_ComponentOp : Plan_Op<"component", [Symbol, HasParent<"PlanOp">]> {
     how many items beyond a rank's block the level blocks lie whose codes
     the levels its kernels read depend on (the limit's reach, its windows,
     the ghost items), so that `reduce_max_levels` gathers the codes of
-    those blocks only.
+    those blocks only. A `local_steps` component whose levels cannot change
+    (the sim dialect's `invariant_levels`) records `keeps_levels`: its
+    kernels keep every block's code from the first big step longer than
+    one base step on, so a distributed run gathers its codes for that big
+    step only.
 
     ```mlir
     simplan.component @C0 writes [@B0] evaluations(8) advance whole_step estimates
     simplan.component @C1 writes [@B1] evaluations(9) advance grid_substeps sub_clock(10)
     simplan.component @C2 writes [@B2] evaluations(11) advance local_steps sub_clock(12) level_reach(161)
+    simplan.component @C3 writes [@B3] evaluations(13) advance local_steps sub_clock(14) level_reach(97) keeps_levels
     ```
   }];
   let arguments = (ins SymbolNameAttr:$sym_name,
                        FlatSymbolRefArrayAttr:$writes, I64Attr:$evaluations,
                        Plan_AdvanceAttr:$advance, UnitAttr:$estimates,
                        OptionalAttr<I64Attr>:$sub_clock,
-                       OptionalAttr<I64Attr>:$level_reach);
+                       OptionalAttr<I64Attr>:$level_reach,
+                       UnitAttr:$keeps_levels);
   let assemblyFormat = [{
     $sym_name `writes` $writes `evaluations` `(` $evaluations `)`
     `advance` custom<EnumKeyword>($advance) (`estimates` $estimates^)?
     (`sub_clock` `(` $sub_clock^ `)`)?
-    (`level_reach` `(` $level_reach^ `)`)? attr-dict
+    (`level_reach` `(` $level_reach^ `)`)?
+    (`keeps_levels` $keeps_levels^)? attr-dict
   }];
   let hasVerifier = 1;
 }
