@@ -1386,12 +1386,13 @@ TEST_F(SimRun, TakesMaxStepsOnlyWhereItCanBeCompiledIn) {
 }
 
 TEST_F(SimRun, TranslatesOnlyTheStrategiesItRuns) {
-  auto [simRun, scene, args] = standInTranslate("strategies");
+  StandIn standIn = standInTranslate("strategies");
   auto translatedFor = [&](const std::string &options) {
-    Result result = shell("PATH=/nonexistent " + simRun + " " + scene +
-                          " --backend cpu --steps 4 " + options);
+    Result result =
+        shell("PATH=/nonexistent " + standIn.simRun + " " + standIn.scene +
+              " --backend cpu --steps 4 " + options);
     EXPECT_EQ(result.status, 0) << options << "\n" << result.output;
-    return readFile(args);
+    return readFile(standIn.args);
   };
   // --strategy names the one strategy to compile.
   std::string given = translatedFor("--strategy hip");
