@@ -823,7 +823,9 @@ Value LaneVectorizer::contiguousCheck(OpBuilder &b, Value original, Value index,
 /// True when `index` is an item divided by a constant of at least a chunk's
 /// lanes (a block's levels: item / 32), give or take uniform offsets and
 /// clamps: then most chunks read one element, which a scalar load and a
-/// broadcast serve at a fraction of a gather's cost.
+/// broadcast serve at a fraction of a gather's cost, and the others two
+/// (a chunk crosses at most one multiple of the divisor), which two such
+/// loads and a select serve.
 bool LaneVectorizer::likelyUniform(Value index) const {
   auto constantAtLeast = [](Value value, int64_t bound) {
     APInt constant;
@@ -1340,32 +1342,64 @@ void LaneVectorizer::widenLoad(OpBuilder &b, memref::LoadOp op, Value mask) {
     return parts;
   };
   auto gather = [&](OpBuilder &at) { return gatherAt(at, safeIndex(at)); };
+  // The elements of the item at element index `at` (i64), each loaded once
+  // and broadcast to every lane.
+  auto broadcastItem = [&](OpBuilder &at, Value itemIndex) {
+    Value offset = itemIndex;
+    if (stride != 1)
+      offset = arith::MulIOp::create(
+          at, loc, offset,
+          arith::ConstantIntOp::create(at, loc, at.getI64Type(), stride));
+    SmallVector<Value> broadcasts;
+    for (int64_t k = 0; k < count; ++k) {
+      Value element = LLVM::GEPOp::create(
+          at, loc, LLVM::LLVMPointerType::get(at.getContext()), scalar, pointer,
+          ValueRange{offset});
+      if (k != 0)
+        element = LLVM::GEPOp::create(
+            at, loc, LLVM::LLVMPointerType::get(at.getContext()), scalar,
+            element, ArrayRef<LLVM::GEPArg>{k});
+      Value value = LLVM::LoadOp::create(at, loc, scalar, element, alignment);
+      broadcasts.push_back(vector::BroadcastOp::create(at, loc, lanes, value));
+    }
+    return broadcasts;
+  };
   // One scalar load per element, to every lane, when the lanes' indices are
-  // all the same; else the gathers.
+  // all the same; two and a select per lane when they are those of the
+  // first and the last lane (an item divided by the items of a block, read
+  // at an offset, crosses a block at most once in a chunk); else the
+  // gathers.
   auto uniformOrGather = [&](OpBuilder &at) -> SmallVector<Value> {
     Value safe = safeIndex(at);
     Value first = vector::ExtractOp::create(at, loc, safe, 0);
     Value firsts = vector::BroadcastOp::create(at, loc, i64Lanes, first);
-    Value uniform =
-        allLanes(at, arith::CmpIOp::create(at, loc, arith::CmpIPredicate::eq,
-                                           safe, firsts));
+    Value isFirst =
+        arith::CmpIOp::create(at, loc, arith::CmpIPredicate::eq, safe, firsts);
     SmallVector<Type> types(count, lanes);
-    auto choice = scf::IfOp::create(at, loc, types, uniform, true);
+    auto choice =
+        scf::IfOp::create(at, loc, types, allLanes(at, isFirst), true);
     OpBuilder one = emptyBody(choice.thenBlock());
-    Value address = firstAddress(one, pointer, scalar, safe, stride);
-    SmallVector<Value> broadcasts;
-    for (int64_t k = 0; k < count; ++k) {
-      Value element = address;
-      if (k != 0)
-        element = LLVM::GEPOp::create(
-            one, loc, LLVM::LLVMPointerType::get(one.getContext()), scalar,
-            address, ArrayRef<LLVM::GEPArg>{k});
-      Value value = LLVM::LoadOp::create(one, loc, scalar, element, alignment);
-      broadcasts.push_back(vector::BroadcastOp::create(one, loc, lanes, value));
-    }
-    scf::YieldOp::create(one, loc, broadcasts);
+    scf::YieldOp::create(one, loc, broadcastItem(one, first));
     OpBuilder many = emptyBody(choice.elseBlock());
-    scf::YieldOp::create(many, loc, gatherAt(many, safe));
+    Value last = vector::ExtractOp::create(many, loc, safe, width - 1);
+    Value lasts = vector::BroadcastOp::create(many, loc, i64Lanes, last);
+    Value firstOrLast = arith::OrIOp::create(
+        many, loc, isFirst,
+        arith::CmpIOp::create(many, loc, arith::CmpIPredicate::eq, safe,
+                              lasts));
+    auto pair =
+        scf::IfOp::create(many, loc, types, allLanes(many, firstOrLast), true);
+    OpBuilder two = emptyBody(pair.thenBlock());
+    SmallVector<Value> ofFirst = broadcastItem(two, first);
+    SmallVector<Value> ofLast = broadcastItem(two, last);
+    SmallVector<Value> selected;
+    for (int64_t k = 0; k < count; ++k)
+      selected.push_back(
+          arith::SelectOp::create(two, loc, isFirst, ofFirst[k], ofLast[k]));
+    scf::YieldOp::create(two, loc, selected);
+    OpBuilder other = emptyBody(pair.elseBlock());
+    scf::YieldOp::create(other, loc, gatherAt(other, safe));
+    scf::YieldOp::create(many, loc, pair.getResults());
     return SmallVector<Value>(choice.getResults());
   };
 

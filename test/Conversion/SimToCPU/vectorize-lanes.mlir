@@ -449,9 +449,11 @@ func.func @stays_scalar(%in: memref<?xindex>, %out: memref<?xf32>, %sum: memref<
 // A load at an item divided by at least the lanes of a chunk (a block's
 // level: half + item / 32) is most often the same element in every lane
 // and never consecutive: one scalar load to every lane when all lanes
-// agree, a gather only when they do not, and no contiguity check. An index
-// divided by less (item / 4) checks for consecutive lanes and gathers as
-// before.
+// agree; else, when every lane's index is the first lane's or the last
+// lane's (the chunk crosses one block boundary), two scalar loads and a
+// select per lane; a gather only when neither holds; and no contiguity
+// check. An index divided by less (item / 4) checks for consecutive lanes
+// and gathers as before.
 // CHECK-LABEL: func.func @block_index_loads
 // CHECK:         scf.for
 // CHECK:           %[[INDEX:.*]] = arith.index_cast %{{.*}} : vector<8xindex> to vector<8xi64>
@@ -463,7 +465,19 @@ func.func @stays_scalar(%in: memref<?xindex>, %out: memref<?xf32>, %sum: memref<
 // CHECK:             %[[ONE:.*]] = llvm.load %{{.*}} : !llvm.ptr -> i64
 // CHECK:             vector.broadcast %[[ONE]] : i64 to vector<8xi64>
 // CHECK:           } else {
-// CHECK:             llvm.intr.masked.gather
+// CHECK-NEXT:        %[[LAST:.*]] = vector.extract %[[INDEX]][7] : i64 from vector<8xi64>
+// CHECK-NEXT:        %[[LASTS:.*]] = vector.broadcast %[[LAST]] : i64 to vector<8xi64>
+// CHECK-NEXT:        %[[IS_LAST:.*]] = arith.cmpi eq, %[[INDEX]], %[[LASTS]] : vector<8xi64>
+// CHECK-NEXT:        %[[EITHER:.*]] = arith.ori %[[SAME]], %[[IS_LAST]] : vector<8xi1>
+// CHECK-NEXT:        %[[BOTH:.*]] = vector.reduction <and>, %[[EITHER]] : vector<8xi1> into i1
+// CHECK-NEXT:        scf.if %[[BOTH]] -> (vector<8xi64>) {
+// CHECK:               %[[AT_FIRST:.*]] = llvm.load %{{.*}} : !llvm.ptr -> i64
+// CHECK:               %[[FROM_FIRST:.*]] = vector.broadcast %[[AT_FIRST]] : i64 to vector<8xi64>
+// CHECK:               %[[AT_LAST:.*]] = llvm.load %{{.*}} : !llvm.ptr -> i64
+// CHECK:               %[[FROM_LAST:.*]] = vector.broadcast %[[AT_LAST]] : i64 to vector<8xi64>
+// CHECK:               arith.select %[[SAME]], %[[FROM_FIRST]], %[[FROM_LAST]] : vector<8xi1>, vector<8xi64>
+// CHECK:             } else {
+// CHECK:               llvm.intr.masked.gather
 // CHECK:           arith.divui %{{.*}}, %{{.*}} : vector<8xindex>
 // CHECK-NOT:       llvm.load %{{.*}} : !llvm.ptr -> i64
 // CHECK:           llvm.intr.masked.gather
