@@ -1342,8 +1342,8 @@ void LaneVectorizer::widenLoad(OpBuilder &b, memref::LoadOp op, Value mask) {
     return parts;
   };
   auto gather = [&](OpBuilder &at) { return gatherAt(at, safeIndex(at)); };
-  // The elements of the item at element index `at` (i64), each loaded once
-  // and broadcast to every lane.
+  // The elements of the item at element index `itemIndex` (i64), each loaded
+  // once and broadcast to every lane.
   auto broadcastItem = [&](OpBuilder &at, Value itemIndex) {
     Value offset = itemIndex;
     if (stride != 1)
