@@ -40,7 +40,9 @@
 // a CPU) or through their time levels, and the blocks' sub-steps
 // (kLevelSteps), and the codes kept for a component whose levels cannot
 // change (kLevelCached, invariant_levels: levels_C then stops computing
-// them). levels_C combines its items into half p with an atomic
+// them, and the CPU's limit_levels_C limits them again only when m changes,
+// keeping that m and the finest sub-step in the code halves, which nothing
+// else uses then). levels_C combines its items into half p with an atomic
 // maximum of kLevelCode - min(num_steps, max_steps) (0, what the runtime and
 // limit_levels_C of the previous big step leave there, is the identity);
 // limit_levels_C turns the codes into sub-steps (the largest power of two
@@ -1196,6 +1198,41 @@ LogicalResult SimulationLowering::emitLocalSteps(ComponentOp component,
     if (fluxWriter)
       runEnds(kernel, levels, kLevelFluxCodes, kLevelFluxRuns);
   };
+  // With invariant_levels, what limitInOnePass computes (every block's
+  // sub-step, the codes, their runs and the finest) depends on the kept
+  // codes and m alone, so once the codes are kept it is computed again only
+  // when m changes (the end of the run, a bounding component's estimate).
+  // The two code halves are no longer read or written then (levels_C
+  // writes no codes, and a distributed run gathers none), so block g's
+  // entries there hold the m of the last computation (half 0) and its
+  // finest sub-step (half 1); a code left there is above any m.
+  auto limitUnlessKept = [&](Kernel &kernel, Value levels, Value parity,
+                             Value size, Value g) {
+    if (!keepsCodes) {
+      limitInOnePass(kernel, levels, parity, size);
+      return;
+    }
+    Value limitedAt = b.toIndex(g);
+    Value finestAt = b.toIndex(b.add(toI64(blocksOf(kernel)), g));
+    auto isKept = [&] {
+      return b.cmp(arith::CmpIPredicate::ne, b.load(levels, keptAt(kernel, g)),
+                   b.i64(0));
+    };
+    Value same = arith::AndIOp::create(
+        b, b.loc, isKept(),
+        b.cmp(arith::CmpIPredicate::eq, b.load(levels, limitedAt), size));
+    auto branch = scf::IfOp::create(b, b.loc, TypeRange{}, same,
+                                    /*withElseRegion=*/true);
+    OpBuilder::InsertionGuard guard(b);
+    b.setInsertionPointToStart(branch.thenBlock());
+    b.store(b.load(levels, finestAt), kernel.clock, b.index(sub + kSubSize));
+    b.setInsertionPointToStart(branch.elseBlock());
+    limitInOnePass(kernel, levels, parity, size);
+    b.ifThen(isKept(), [&] {
+      b.store(size, levels, limitedAt);
+      b.store(b.load(kernel.clock, b.index(sub + kSubSize)), levels, finestAt);
+    });
+  };
 
   // limit_levels_C: every block's sub-step, no more than twice as coarse
   // as a neighbour; the finest of them (the sub-step clock's Size: the
@@ -1240,7 +1277,7 @@ LogicalResult SimulationLowering::emitLocalSteps(ComponentOp component,
         Value firstBlock = toI64(windowOf(kernel).first[0]);
         forEachBlockOfLanes(kernel, [&](Value g) {
           b.ifThen(b.cmp(arith::CmpIPredicate::eq, g, firstBlock),
-                   [&] { limitInOnePass(kernel, levels, parity, size); });
+                   [&] { limitUnlessKept(kernel, levels, parity, size, g); });
         });
       });
     }

@@ -59,10 +59,23 @@ sim.simulation @rod range(100) dt(1.0e-2 : f32) max_steps(8) {
 
 // limit_levels_C: on the CPU one lane (block 0's) takes every block in one
 // pass: decode, the sweeps to the fixpoint, the finest with the codes, the
-// runs (from the last block back).
+// runs (from the last block back). @Diffuse's levels never change
+// (invariant_levels): once its codes are kept and while m is the m of the
+// last pass (block 0's entry of code half 0), the pass is not repeated and
+// the finest sub-step kept in half 1 goes to the sub-step clock's Size.
 // CHECK-LABEL: func.func @limit_levels_Diffuse(
+// CHECK-SAME:      %[[CLOCK:arg0]]: memref<?xi64>, %[[LEVELS:arg1]]: memref<?xi64>
+// CHECK:           %[[M:.*]] = memref.load %[[CLOCK]][%c1] : memref<?xi64>
 // CHECK:               scf.for %{{.*}} = %arg{{[0-9]+}} to %{{.*}} step %{{[0-9]+}} {
 // CHECK:                 scf.if
+// CHECK:                   %[[KEPT:.*]] = arith.cmpi ne, %{{.*}}, %c0_i64 : i64
+// CHECK:                   %[[LAST:.*]] = memref.load %[[LEVELS]][%{{.*}}] : memref<?xi64>
+// CHECK:                   %[[SAME_M:.*]] = arith.cmpi eq, %[[LAST]], %[[M]] : i64
+// CHECK:                   %[[REUSE:.*]] = arith.andi %[[KEPT]], %[[SAME_M]] : i1
+// CHECK:                   scf.if %[[REUSE]] {
+// CHECK-NEXT:                %[[FINEST:.*]] = memref.load %[[LEVELS]][%{{.*}}] : memref<?xi64>
+// CHECK-NEXT:                memref.store %[[FINEST]], %[[CLOCK]][%{{.*}}] : memref<?xi64>
+// CHECK-NEXT:              } else {
 // CHECK:                   scf.for
 // CHECK:                   scf.while
 // CHECK:                   scf.for {{.*}} iter_args
