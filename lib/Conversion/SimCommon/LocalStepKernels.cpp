@@ -357,14 +357,89 @@ LogicalResult SimulationLowering::emitLocalSteps(ComponentOp component,
             // readers' latest level of it is the other half), so the first
             // results are never seen. A wider window, or a run shorter
             // than two windows, evaluates every lane once through the time
-            // levels (`repair`, counted at once).
+            // levels (`repair`, counted at once), block by block. Either
+            // way a neighbour block that is aligned at the slot (`aligned`
+            // below) reads as in step: at slot 0 every block is.
             Value level = b.sub(b.i64(0), code);
             b.ifThen(startsAt(slot, level), [&] {
               Value readParity = readParityOf(parity, slot, level);
+              Value half = b.mul(b.index(kLevelSteps), blocks);
+              // Whether block h's latest level is at the slot and in the
+              // half the run reads: then a read of it through the time
+              // levels returns that half's value as is (docs/Model.md,
+              // "What a read returns", t = b), so a plain read gives the
+              // same bits. At slot 0 every block is; a coarser block is
+              // at every other slot of its own.
+              auto aligned = [&](Value h) {
+                Value other = b.load(levels, b.add(half, h));
+                return arith::AndIOp::create(
+                           b, b.loc, startsAt(slot, other),
+                           b.cmp(arith::CmpIPredicate::eq,
+                                 readParityOf(parity, slot, other), readParity))
+                    .getResult();
+              };
+              auto both = [&](Value x, Value y) {
+                return arith::AndIOp::create(b, b.loc, x, y).getResult();
+              };
+              // Every lane once through the time levels, counted at once;
+              // but a block whose window reaches only aligned blocks
+              // inside the range (or clamped into it) reads in step.
               auto throughLevels = [&] {
-                lanesOf(part, [&](const Lane &lane) {
-                  repair(lane, level, readParity);
-                });
+                Value end = b.add(part.base, part.count);
+                whileIndex(
+                    part.base,
+                    [&](Value start) {
+                      return b.cmp(arith::CmpIPredicate::ult, start, end);
+                    },
+                    [&](Value start) {
+                      Value block = blockOf(start);
+                      Value firstItem = b.mul(block, b.index(kLevelBlock));
+                      Value stop =
+                          b.min(b.add(firstItem, b.index(kLevelBlock)), end);
+                      Value zero = b.index(0), last = b.sub(range, b.index(1));
+                      Value below = b.index(std::max<int64_t>(-window[0], 0));
+                      Value above = b.index(std::max<int64_t>(window[1], 0));
+                      Value lastItem = b.min(
+                          b.add(firstItem, b.index(kLevelBlock - 1)), last);
+                      Value inside = b.constant(b.getI1Type(), 1);
+                      if (cyclic)
+                        inside = both(
+                            b.cmp(arith::CmpIPredicate::uge, firstItem, below),
+                            b.cmp(arith::CmpIPredicate::ult,
+                                  b.add(lastItem, above), range));
+                      Value low = b.select(
+                          b.cmp(arith::CmpIPredicate::uge, firstItem, below),
+                          b.sub(firstItem, below), zero);
+                      Value high = b.min(b.add(lastItem, above), last);
+                      auto scan =
+                          scf::ForOp::create(b, b.loc, blockOf(low),
+                                             b.add(blockOf(high), b.index(1)),
+                                             b.index(1), ValueRange{inside});
+                      {
+                        OpBuilder::InsertionGuard inner(b);
+                        b.setInsertionPointToStart(scan.getBody());
+                        scf::YieldOp::create(
+                            b, b.loc,
+                            both(scan.getRegionIterArg(0),
+                                 aligned(scan.getInductionVar())));
+                      }
+                      Part piece{start,
+                                 b.add(part.first, b.sub(start, part.base)),
+                                 b.sub(stop, start), /*whole=*/false};
+                      auto branch = scf::IfOp::create(b, b.loc, TypeRange{},
+                                                      scan.getResult(0),
+                                                      /*withElseRegion=*/true);
+                      OpBuilder::InsertionGuard inner(b);
+                      b.setInsertionPointToStart(branch.thenBlock());
+                      lanesOf(piece, [&](const Lane &lane) {
+                        inStep(lane, level, readParity, /*counted=*/false);
+                      });
+                      b.setInsertionPointToStart(branch.elseBlock());
+                      lanesOf(piece, [&](const Lane &lane) {
+                        repair(lane, level, readParity);
+                      });
+                      return stop;
+                    });
                 b.atomic(arith::AtomicRMWKind::addi,
                          arith::IndexCastOp::create(b, b.loc, b.getI64Type(),
                                                     part.count),
@@ -385,10 +460,9 @@ LogicalResult SimulationLowering::emitLocalSteps(ComponentOp component,
               // around the range, the part's first (last) `reach` items
               // are repaired. (A part may start or end inside a run, at a
               // group's edge: its neighbours there are then in step.)
-              Value half = b.mul(b.index(kLevelSteps), blocks);
+              // An item of an aligned block reads as in step.
               auto otherLevel = [&](Value item) {
-                return b.cmp(arith::CmpIPredicate::ne,
-                             b.load(levels, b.add(half, blockOf(item))), level);
+                return b.xorOne(aligned(blockOf(item)));
               };
               auto either = [&](Value x, Value y) {
                 return arith::OrIOp::create(b, b.loc, x, y).getResult();
