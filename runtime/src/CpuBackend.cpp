@@ -18,6 +18,7 @@
 #include "Error.h"
 #include "Executor.h"
 #include "FloatMode.h"
+#include "LaunchSplit.h"
 #include "SharedObject.h"
 
 #include <algorithm>
@@ -337,31 +338,45 @@ public:
               int64_t) override {
     // Workgroup memory is the object's business on the CPU: the ABI passes
     // no shared-memory size.
-    uint64_t start = clock.ticks();
-    if (groups == 1) {
-      SubnormalScope mode(flushSubnormals);
-      kernels[kernel](params, 0, 1, groupSize);
-    } else {
-      pool.run(kernels[kernel], params, groups, groupSize, flushSubnormals);
-    }
-    kernelTicks += clock.ticks() - start;
+    run(kernel, params, 0, groups, groupSize);
   }
 
   bool launchesSynchronously() const override { return true; }
   bool launchesGroupRanges() const override { return true; }
   void launchGroups(int kernel, void **params, int64_t firstGroup,
                     int64_t groups, int64_t groupSize) override {
-    uint64_t start = clock.ticks();
-    pool.run(kernels[kernel], params, groups, groupSize, flushSubnormals,
-             firstGroup);
-    kernelTicks += clock.ticks() - start;
+    run(kernel, params, firstGroup, groups, groupSize);
   }
 
   void startTimer() override { kernelTicks = 0; }
   double stopTimer() override { return clock.seconds(kernelTicks); }
 
 private:
+  /// Groups `first` to `first + groups` of a launch: on the calling
+  /// thread alone when there is one group or one thread, or when the
+  /// kernel's launches have run faster that way (LaunchSplit); else split
+  /// over the pool.
+  void run(int kernel, void **params, int64_t first, int64_t groups,
+           int64_t groupSize) {
+    uint64_t start = clock.ticks();
+    LaunchSplit::Mode mode = LaunchSplit::Alone;
+    if (groups > 1 && pool.size() > 1)
+      mode = split.choose(size_t(kernel));
+    if (mode == LaunchSplit::Alone) {
+      SubnormalScope scope(flushSubnormals);
+      kernels[kernel](params, first, first + groups, groupSize);
+    } else {
+      pool.run(kernels[kernel], params, groups, groupSize, flushSubnormals,
+               first);
+    }
+    uint64_t ticks = clock.ticks() - start;
+    if (groups > 1 && pool.size() > 1)
+      split.record(size_t(kernel), mode, ticks, groups);
+    kernelTicks += ticks;
+  }
+
   ThreadPool pool;
+  LaunchSplit split;
   std::unique_ptr<SharedObject> library;
   /// The instruction-set level of the loaded kernels ("x86-64-v3", ...).
   std::string isa;

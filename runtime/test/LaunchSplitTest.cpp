@@ -1,0 +1,124 @@
+//===- LaunchSplitTest.cpp - when the CPU backend splits a launch ---------===//
+//
+// LaunchSplit.h with made-up launch times: the trials, the choice of the
+// faster way, launches long enough that alone is not tried, probes of the
+// other way that notice a change of the work, and the first launch after a
+// change of mode (which pays for waking threads) not counted.
+//
+//===----------------------------------------------------------------------===//
+
+#include "LaunchSplit.h"
+
+#include <gtest/gtest.h>
+
+using namespace sim::rt;
+
+namespace {
+
+/// Runs `launches` launches of kernel 0 of 16 groups, each taking
+/// `ticksOf(mode)`; returns how many ran alone.
+template <typename Ticks>
+int runLaunches(LaunchSplit &split, int launches, Ticks ticksOf) {
+  int alone = 0;
+  for (int i = 0; i < launches; ++i) {
+    LaunchSplit::Mode mode = split.choose(0);
+    alone += mode == LaunchSplit::Alone;
+    split.record(0, mode, ticksOf(mode), 16);
+  }
+  return alone;
+}
+
+TEST(LaunchSplit, TriesBothThenRunsTheFaster) {
+  LaunchSplit split;
+  // Shared launches cost 3000 ticks, alone 1000: after 5 shared and 5
+  // alone trials every launch but the probes runs alone.
+  auto ticks = [](LaunchSplit::Mode mode) {
+    return mode == LaunchSplit::Shared ? 3000 : 1000;
+  };
+  int trials = 2 * (LaunchSplit::kTrials + 1);
+  for (int i = 0; i < trials; ++i) {
+    LaunchSplit::Mode mode = split.choose(0);
+    EXPECT_EQ(mode, i <= int(LaunchSplit::kTrials) ? LaunchSplit::Shared
+                                                   : LaunchSplit::Alone)
+        << "launch " << i;
+    split.record(0, mode, ticks(mode), 16);
+  }
+  EXPECT_EQ(split.chosen(0), LaunchSplit::Alone);
+  int alone = runLaunches(split, 10000, ticks);
+  // Probes of kBurst shared launches every kProbeEvery at most, fewer as
+  // shared stays far behind.
+  EXPECT_GE(alone, 10000 - 10000 / int(LaunchSplit::kProbeEvery) *
+                               int(LaunchSplit::kBurst));
+  EXPECT_EQ(split.chosen(0), LaunchSplit::Alone);
+}
+
+TEST(LaunchSplit, SharedWhenFaster) {
+  LaunchSplit split;
+  int alone = runLaunches(split, 10000, [](LaunchSplit::Mode mode) {
+    return mode == LaunchSplit::Shared ? 1000 : 1900;
+  });
+  EXPECT_EQ(split.chosen(0), LaunchSplit::Shared);
+  EXPECT_LT(alone,
+            10000 / int(LaunchSplit::kProbeEvery) * int(LaunchSplit::kBurst) +
+                int(LaunchSplit::kTrials) + 1);
+}
+
+TEST(LaunchSplit, LongLaunchesAreNotTriedAlone) {
+  // Shared launches of kLongLaunch ticks: no alone trials, and alone is
+  // probed only kMaxBackOff times less often than otherwise.
+  LaunchSplit split;
+  int alone = runLaunches(split, 4000, [](LaunchSplit::Mode mode) {
+    return uint64_t(mode == LaunchSplit::Shared ? LaunchSplit::kLongLaunch
+                                                : 2 * LaunchSplit::kLongLaunch);
+  });
+  EXPECT_EQ(alone, 0);
+  EXPECT_EQ(split.chosen(0), LaunchSplit::Shared);
+}
+
+TEST(LaunchSplit, NoticesAChangeOfTheWork) {
+  // Alone is faster at first; then the work grows and shared is: the
+  // probes find it within a few windows.
+  LaunchSplit split;
+  runLaunches(split, 3000, [](LaunchSplit::Mode mode) {
+    return mode == LaunchSplit::Shared ? 2000 : 1000;
+  });
+  EXPECT_EQ(split.chosen(0), LaunchSplit::Alone);
+  runLaunches(split, 20 * int(LaunchSplit::kWindow),
+              [](LaunchSplit::Mode mode) {
+                return mode == LaunchSplit::Shared ? 5000 : 9000;
+              });
+  EXPECT_EQ(split.chosen(0), LaunchSplit::Shared);
+}
+
+TEST(LaunchSplit, TheFirstLaunchAfterAChangeIsNotCounted) {
+  // Every shared launch that follows an alone one costs 100 times more
+  // (threads woken from sleep); shared launches in a row cost half of an
+  // alone one. Counting the first would make alone look faster.
+  LaunchSplit split;
+  LaunchSplit::Mode last = LaunchSplit::Shared;
+  for (int i = 0; i < 5000; ++i) {
+    LaunchSplit::Mode mode = split.choose(0);
+    uint64_t ticks = mode == LaunchSplit::Alone   ? 1000
+                     : last == LaunchSplit::Alone ? 100000
+                                                  : 500;
+    split.record(0, mode, ticks, 16);
+    last = mode;
+  }
+  EXPECT_EQ(split.chosen(0), LaunchSplit::Shared);
+}
+
+TEST(LaunchSplit, KernelsAreTheirOwn) {
+  LaunchSplit split;
+  for (int i = 0; i < 2000; ++i)
+    for (size_t kernel : {0, 1}) {
+      LaunchSplit::Mode mode = split.choose(kernel);
+      bool sharedFaster = kernel == 1;
+      uint64_t ticks =
+          (mode == LaunchSplit::Shared) == sharedFaster ? 1000 : 3000;
+      split.record(kernel, mode, ticks, 16);
+    }
+  EXPECT_EQ(split.chosen(0), LaunchSplit::Alone);
+  EXPECT_EQ(split.chosen(1), LaunchSplit::Shared);
+}
+
+} // namespace
