@@ -883,16 +883,21 @@ LogicalResult SimulationLowering::emitLocalSteps(ComponentOp component,
   };
   // The block `distance` blocks below (or above) block g (i64 values) and
   // whether it is one: around the range when a buffer the component writes
-  // wraps (the distance may exceed the blocks), else clamped into it.
+  // wraps, else clamped into it. A distance is below the blocks
+  // (minOverNeighbours stops there), so going around takes one addition or
+  // subtraction of the blocks, not a remainder (an integer division per
+  // neighbour and sweep).
   auto neighbourOf = [&](Value g, Value distance, bool below,
                          Value blocks) -> std::pair<Value, Value> {
     Value zero = b.i64(0), one = b.i64(1);
     Value h = below ? b.sub(g, distance) : b.add(g, distance);
     if (cyclic) {
-      Value rem = arith::RemSIOp::create(b, b.loc, h, blocks);
-      return {b.select(b.cmp(arith::CmpIPredicate::slt, rem, zero),
-                       b.add(rem, blocks), rem),
-              b.constant(b.getI1Type(), 1)};
+      Value around = below
+                         ? b.select(b.cmp(arith::CmpIPredicate::slt, h, zero),
+                                    b.add(h, blocks), h)
+                         : b.select(b.cmp(arith::CmpIPredicate::sge, h, blocks),
+                                    b.sub(h, blocks), h);
+      return {around, b.constant(b.getI1Type(), 1)};
     }
     Value valid = arith::AndIOp::create(
         b, b.loc, b.cmp(arith::CmpIPredicate::sge, h, zero),
