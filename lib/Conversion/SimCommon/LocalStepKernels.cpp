@@ -207,6 +207,24 @@ LogicalResult SimulationLowering::emitLocalSteps(ComponentOp component,
     Block *after = b.createBlock(&loop.getAfter(), {}, b.getIndexType(), b.loc);
     scf::YieldOp::create(b, b.loc, body(after->getArgument(0)));
   };
+  // The items of `part` block by block: `body(start, block, stop)` for the
+  // items [start, stop) of the part in block `block` (index values).
+  auto forEachBlockOf = [&](const Part &part,
+                            function_ref<void(Value, Value, Value)> body) {
+    Value end = b.add(part.base, part.count);
+    whileIndex(
+        part.base,
+        [&](Value start) {
+          return b.cmp(arith::CmpIPredicate::ult, start, end);
+        },
+        [&](Value start) {
+          Value block = blockOf(start);
+          Value stop =
+              b.min(b.mul(b.add(block, b.index(1)), b.index(kLevelBlock)), end);
+          body(start, block, stop);
+          return stop;
+        });
+  };
   // The parts of the groups of a kernel with their codes of section
   // `codeSection` (partCode): `forPart(part, same, code, origin)`. Where the
   // target splits groups, a part is a run of blocks of one code (its end
@@ -385,61 +403,48 @@ LogicalResult SimulationLowering::emitLocalSteps(ComponentOp component,
               // but a block whose window reaches only aligned blocks
               // inside the range (or clamped into it) reads in step.
               auto throughLevels = [&] {
-                Value end = b.add(part.base, part.count);
-                whileIndex(
-                    part.base,
-                    [&](Value start) {
-                      return b.cmp(arith::CmpIPredicate::ult, start, end);
-                    },
-                    [&](Value start) {
-                      Value block = blockOf(start);
-                      Value firstItem = b.mul(block, b.index(kLevelBlock));
-                      Value stop =
-                          b.min(b.add(firstItem, b.index(kLevelBlock)), end);
-                      Value zero = b.index(0), last = b.sub(range, b.index(1));
-                      Value below = b.index(std::max<int64_t>(-window[0], 0));
-                      Value above = b.index(std::max<int64_t>(window[1], 0));
-                      Value lastItem = b.min(
-                          b.add(firstItem, b.index(kLevelBlock - 1)), last);
-                      Value inside = b.constant(b.getI1Type(), 1);
-                      if (cyclic)
-                        inside = both(
-                            b.cmp(arith::CmpIPredicate::uge, firstItem, below),
-                            b.cmp(arith::CmpIPredicate::ult,
-                                  b.add(lastItem, above), range));
-                      Value low = b.select(
-                          b.cmp(arith::CmpIPredicate::uge, firstItem, below),
-                          b.sub(firstItem, below), zero);
-                      Value high = b.min(b.add(lastItem, above), last);
-                      auto scan =
-                          scf::ForOp::create(b, b.loc, blockOf(low),
-                                             b.add(blockOf(high), b.index(1)),
-                                             b.index(1), ValueRange{inside});
-                      {
-                        OpBuilder::InsertionGuard inner(b);
-                        b.setInsertionPointToStart(scan.getBody());
-                        scf::YieldOp::create(
-                            b, b.loc,
-                            both(scan.getRegionIterArg(0),
-                                 aligned(scan.getInductionVar())));
-                      }
-                      Part piece{start,
-                                 b.add(part.first, b.sub(start, part.base)),
-                                 b.sub(stop, start), /*whole=*/false};
-                      auto branch = scf::IfOp::create(b, b.loc, TypeRange{},
-                                                      scan.getResult(0),
-                                                      /*withElseRegion=*/true);
-                      OpBuilder::InsertionGuard inner(b);
-                      b.setInsertionPointToStart(branch.thenBlock());
-                      lanesOf(piece, [&](const Lane &lane) {
-                        inStep(lane, level, readParity, /*counted=*/false);
-                      });
-                      b.setInsertionPointToStart(branch.elseBlock());
-                      lanesOf(piece, [&](const Lane &lane) {
-                        repair(lane, level, readParity);
-                      });
-                      return stop;
-                    });
+                forEachBlockOf(part, [&](Value start, Value block, Value stop) {
+                  Value firstItem = b.mul(block, b.index(kLevelBlock));
+                  Value zero = b.index(0), last = b.sub(range, b.index(1));
+                  Value below = b.index(std::max<int64_t>(-window[0], 0));
+                  Value above = b.index(std::max<int64_t>(window[1], 0));
+                  Value lastItem =
+                      b.min(b.add(firstItem, b.index(kLevelBlock - 1)), last);
+                  Value inside = b.constant(b.getI1Type(), 1);
+                  if (cyclic)
+                    inside =
+                        both(b.cmp(arith::CmpIPredicate::uge, firstItem, below),
+                             b.cmp(arith::CmpIPredicate::ult,
+                                   b.add(lastItem, above), range));
+                  Value low = b.select(
+                      b.cmp(arith::CmpIPredicate::uge, firstItem, below),
+                      b.sub(firstItem, below), zero);
+                  Value high = b.min(b.add(lastItem, above), last);
+                  auto scan = scf::ForOp::create(
+                      b, b.loc, blockOf(low), b.add(blockOf(high), b.index(1)),
+                      b.index(1), ValueRange{inside});
+                  {
+                    OpBuilder::InsertionGuard inner(b);
+                    b.setInsertionPointToStart(scan.getBody());
+                    scf::YieldOp::create(b, b.loc,
+                                         both(scan.getRegionIterArg(0),
+                                              aligned(scan.getInductionVar())));
+                  }
+                  Part piece{start, b.add(part.first, b.sub(start, part.base)),
+                             b.sub(stop, start), /*whole=*/false};
+                  auto branch = scf::IfOp::create(b, b.loc, TypeRange{},
+                                                  scan.getResult(0),
+                                                  /*withElseRegion=*/true);
+                  OpBuilder::InsertionGuard inner(b);
+                  b.setInsertionPointToStart(branch.thenBlock());
+                  lanesOf(piece, [&](const Lane &lane) {
+                    inStep(lane, level, readParity, /*counted=*/false);
+                  });
+                  b.setInsertionPointToStart(branch.elseBlock());
+                  lanesOf(piece, [&](const Lane &lane) {
+                    repair(lane, level, readParity);
+                  });
+                });
                 b.atomic(arith::AtomicRMWKind::addi,
                          arith::IndexCastOp::create(b, b.loc, b.getI64Type(),
                                                     part.count),
@@ -532,7 +537,6 @@ LogicalResult SimulationLowering::emitLocalSteps(ComponentOp component,
             // as the general path for every interface.
             b.ifThen(startsAt(slot, b.sub(b.i64(0), code)), [&] {
               Value half = b.mul(b.index(kLevelSteps), blocks);
-              Value end = b.add(part.base, part.count);
               auto generalLanes = [&](Value from, Value to) {
                 b.ifThen(b.cmp(arith::CmpIPredicate::ult, from, to), [&] {
                   piecesOf(kernel,
@@ -542,46 +546,38 @@ LogicalResult SimulationLowering::emitLocalSteps(ComponentOp component,
                            [&](const Part &piece) { lanesOf(piece, general); });
                 });
               };
-              whileIndex(
-                  part.base,
-                  [&](Value start) {
-                    return b.cmp(arith::CmpIPredicate::ult, start, end);
-                  },
-                  [&](Value start) {
-                    Value block = blockOf(start);
-                    Value blockStart = b.mul(block, b.index(kLevelBlock));
-                    Value blockEnd =
-                        b.min(b.add(blockStart, b.index(kLevelBlock)), range);
-                    Value stop = b.min(blockEnd, end);
-                    Value low = b.min(
-                        b.max(start, b.add(blockStart, b.index(interiorBelow))),
-                        stop);
-                    // blockEnd - interiorAbove, not below `low`.
-                    Value high = b.max(
-                        low, b.min(stop, b.sub(b.max(blockEnd,
-                                                     b.index(interiorAbove)),
-                                               b.index(interiorAbove))));
-                    Value level = b.load(levels, b.add(half, block));
-                    Value interior = arith::AndIOp::create(
-                        b, b.loc, b.cmp(arith::CmpIPredicate::ult, low, high),
-                        startsAt(slot, level));
-                    b.ifThen(interior, [&] {
-                      Value readParity = readParityOf(parity, slot, level);
-                      lanesOf(Part{low, b.index(0), b.sub(high, low),
-                                   /*whole=*/false},
-                              [&](const Lane &lane) {
-                                inStep(lane, level, readParity,
-                                       /*counted=*/false);
-                              });
-                      b.atomic(arith::AtomicRMWKind::addi,
-                               arith::IndexCastOp::create(
-                                   b, b.loc, b.getI64Type(), b.sub(high, low)),
-                               kernel.clock, b.index(countSlot));
-                    });
-                    generalLanes(start, low);
-                    generalLanes(high, stop);
-                    return stop;
-                  });
+              forEachBlockOf(part, [&](Value start, Value block, Value stop) {
+                Value blockStart = b.mul(block, b.index(kLevelBlock));
+                Value blockEnd =
+                    b.min(b.add(blockStart, b.index(kLevelBlock)), range);
+                Value low = b.min(
+                    b.max(start, b.add(blockStart, b.index(interiorBelow))),
+                    stop);
+                // blockEnd - interiorAbove, not below `low`.
+                Value high = b.max(
+                    low,
+                    b.min(stop, b.sub(b.max(blockEnd, b.index(interiorAbove)),
+                                      b.index(interiorAbove))));
+                Value level = b.load(levels, b.add(half, block));
+                Value interior = arith::AndIOp::create(
+                    b, b.loc, b.cmp(arith::CmpIPredicate::ult, low, high),
+                    startsAt(slot, level));
+                b.ifThen(interior, [&] {
+                  Value readParity = readParityOf(parity, slot, level);
+                  lanesOf(Part{low, b.index(0), b.sub(high, low),
+                               /*whole=*/false},
+                          [&](const Lane &lane) {
+                            inStep(lane, level, readParity,
+                                   /*counted=*/false);
+                          });
+                  b.atomic(arith::AtomicRMWKind::addi,
+                           arith::IndexCastOp::create(b, b.loc, b.getI64Type(),
+                                                      b.sub(high, low)),
+                           kernel.clock, b.index(countSlot));
+                });
+                generalLanes(start, low);
+                generalLanes(high, stop);
+              });
             });
             return;
           }
