@@ -1193,7 +1193,8 @@ LogicalResult SimulationLowering::emitLocalSteps(ComponentOp component,
   // codes in one pass of one thread, which costs less than every lane's
   // window minima: each block's code decoded into its sub-step, then
   // forward and backward sweeps that lower a block to twice its finest
-  // neighbour until nothing changes (the levels only go down, each at most
+  // neighbour (one each way, or around a wrapping range until nothing
+  // changes: below) (the levels only go down, each at most
   // log2(m) times, and the result is the largest assignment that meets the
   // rule, whatever the order: the window minimum above), the finest, the
   // codes and the ends of their runs.
@@ -1233,15 +1234,8 @@ LogicalResult SimulationLowering::emitLocalSteps(ComponentOp component,
       b.store(bound, levels, at(g));
       return b.cmp(arith::CmpIPredicate::slt, bound, own);
     };
-    auto sweeps = scf::WhileOp::create(
-        b, b.loc, b.getI1Type(), ValueRange{b.constant(b.getI1Type(), 1)});
-    {
-      OpBuilder::InsertionGuard guard(b);
-      Block *before =
-          b.createBlock(&sweeps.getBefore(), {}, b.getI1Type(), b.loc);
-      scf::ConditionOp::create(b, b.loc, before->getArgument(0),
-                               before->getArguments());
-      b.createBlock(&sweeps.getAfter(), {}, b.getI1Type(), b.loc);
+    // A forward and a backward sweep; whether they lowered a block.
+    auto sweep = [&]() -> Value {
       Value changed = b.constant(b.getI1Type(), 0);
       for (bool forward : {true, false}) {
         auto pass =
@@ -1256,7 +1250,26 @@ LogicalResult SimulationLowering::emitLocalSteps(ComponentOp component,
         b.setInsertionPointAfter(pass);
         changed = pass.getResult(0);
       }
-      scf::YieldOp::create(b, b.loc, changed);
+      return changed;
+    };
+    // Without a wrap the blocks are walked in the order of the range, and
+    // one sweep each way reaches the fixpoint: the forward sweep leaves
+    // each block the minimum over the blocks before it of c_h * 2^hops,
+    // the backward sweep adds those after it (a block lowered by a later
+    // one stays within twice of it). Around a range the shortest way from
+    // a block may wrap past the sweep's start: sweeps until none changes.
+    if (!cyclic) {
+      sweep();
+    } else {
+      auto sweeps = scf::WhileOp::create(
+          b, b.loc, b.getI1Type(), ValueRange{b.constant(b.getI1Type(), 1)});
+      OpBuilder::InsertionGuard guard(b);
+      Block *before =
+          b.createBlock(&sweeps.getBefore(), {}, b.getI1Type(), b.loc);
+      scf::ConditionOp::create(b, b.loc, before->getArgument(0),
+                               before->getArguments());
+      b.createBlock(&sweeps.getAfter(), {}, b.getI1Type(), b.loc);
+      scf::YieldOp::create(b, b.loc, sweep());
     }
     auto finest =
         scf::ForOp::create(b, b.loc, zero, count, one, ValueRange{size});

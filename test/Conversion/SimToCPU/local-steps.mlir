@@ -58,8 +58,8 @@ sim.simulation @rod range(100) dt(1.0e-2 : f32) max_steps(8) {
 // CHECK:       return
 
 // limit_levels_C: on the CPU one lane (block 0's) takes every block in one
-// pass: decode, the sweeps to the fixpoint, the finest with the codes, the
-// runs (from the last block back). @Diffuse's levels never change
+// pass: decode, the sweeps (one each way, as the rod does not wrap), the
+// finest with the codes, the runs (from the last block back). @Diffuse's levels never change
 // (invariant_levels): once its codes are kept and while m is the m of the
 // last pass (block 0's entry of code half 0), the pass is not repeated and
 // the finest sub-step kept in half 1 goes to the sub-step clock's Size.
@@ -77,7 +77,12 @@ sim.simulation @rod range(100) dt(1.0e-2 : f32) max_steps(8) {
 // CHECK-NEXT:                memref.store %[[FINEST]], %[[CLOCK]][%{{.*}}] : memref<?xi64>
 // CHECK-NEXT:              } else {
 // CHECK:                   scf.for
-// CHECK:                   scf.while
+// The rod does not wrap: one sweep forward, one backward, no fixpoint loop.
+// CHECK-NOT:               scf.while
+// CHECK:                   %[[FORWARD:.*]] = scf.for {{.*}} iter_args(%{{.*}} = %false) -> (i1)
+// CHECK-NOT:               scf.while
+// CHECK:                   scf.for {{.*}} iter_args(%{{.*}} = %[[FORWARD]]) -> (i1)
+// CHECK-NOT:               scf.while
 // CHECK:                   scf.for {{.*}} iter_args
 // CHECK:                   memref.store {{.*}} : memref<?xi64>
 // CHECK:                   scf.for
