@@ -73,7 +73,7 @@ public:
         k.phase = Phase::Running;
         k.cost[Shared] = window.ticks / window.groups;
         k.window[Shared] = Window();
-        k.probeEvery = kProbeEvery * kMaxBackOff;
+        k.probeEvery = kLongestProbeEvery;
         return;
       }
       k.phase = Phase::TrialAlone;
@@ -103,10 +103,12 @@ public:
   /// Counted launches of a kernel between two decisions.
   static constexpr uint64_t kWindow = 512;
   /// Every so many launches the mode not chosen runs kBurst times in a
-  /// row: a prime, so that a kernel whose work repeats with a period (the
-  /// slots of a big step, a power of two) is not always tried at the same
-  /// phase; up to kMaxBackOff times less often while it stays kFarBehind.
-  static constexpr uint64_t kProbeEvery = 67, kMaxBackOff = 64, kBurst = 4;
+  /// row: an odd number, so that a kernel whose work repeats with a period
+  /// (the slots of a big step, a power of two) is not always tried at the
+  /// same phase; while it stays kFarBehind, about twice as seldom after
+  /// each decision (2 n + 1, odd again), up to kLongestProbeEvery.
+  static constexpr uint64_t kProbeEvery = 67, kBurst = 4,
+                            kLongestProbeEvery = 64 * kProbeEvery - 1;
   static constexpr double kFarBehind = 1.5;
 
 private:
@@ -153,7 +155,7 @@ private:
     if (faster != k.chosen || behind < kFarBehind)
       k.probeEvery = kProbeEvery;
     else
-      k.probeEvery = std::min(k.probeEvery * 2, kProbeEvery * kMaxBackOff);
+      k.probeEvery = std::min(k.probeEvery * 2 + 1, kLongestProbeEvery);
     k.chosen = faster;
   }
 

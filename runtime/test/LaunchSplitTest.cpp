@@ -65,7 +65,7 @@ TEST(LaunchSplit, SharedWhenFaster) {
 
 TEST(LaunchSplit, LongLaunchesAreNotTriedAlone) {
   // Shared launches of kLongLaunch ticks: no alone trials, and alone is
-  // probed only kMaxBackOff times less often than otherwise.
+  // probed only every kLongestProbeEvery launches.
   LaunchSplit split;
   int alone = runLaunches(split, 4000, [](LaunchSplit::Mode mode) {
     return uint64_t(mode == LaunchSplit::Shared ? LaunchSplit::kLongLaunch
@@ -73,6 +73,23 @@ TEST(LaunchSplit, LongLaunchesAreNotTriedAlone) {
   });
   EXPECT_EQ(alone, 0);
   EXPECT_EQ(split.chosen(0), LaunchSplit::Shared);
+}
+
+TEST(LaunchSplit, ProbesFallAtEveryPhaseOfAPowerOfTwo) {
+  // Alone far behind: the probes grow rarer, but at odd intervals, so
+  // that a kernel whose work repeats every 8 launches (the slots of a big
+  // step) is not always probed at the same slot.
+  LaunchSplit split;
+  bool phases[8] = {};
+  for (int i = 0; i < 200000; ++i) {
+    LaunchSplit::Mode mode = split.choose(0);
+    if (mode == LaunchSplit::Alone && i > 1000)
+      phases[i % 8] = true;
+    split.record(0, mode, mode == LaunchSplit::Shared ? 1000 : 4000, 16);
+  }
+  EXPECT_EQ(split.chosen(0), LaunchSplit::Shared);
+  for (int phase = 0; phase < 8; ++phase)
+    EXPECT_TRUE(phases[phase]) << "no probe at phase " << phase;
 }
 
 TEST(LaunchSplit, NoticesAChangeOfTheWork) {
