@@ -265,6 +265,35 @@ struct SubstepLegalityPass
                     << window.str() << ")";
   }
 
+  /// A schedule that starts a step at another component and under which
+  /// `component` reads nothing through the back edge, so that it no longer
+  /// bounds the big step; the first such entry in the current order. The
+  /// rest of the order is the graph's, or else the current one's.
+  static std::optional<Schedule>
+  findScheduleWithoutBound(const DependencyAnalysis &analysis,
+                           ComponentOp component) {
+    SmallVector<ComponentOp> current = getUserOrder(analysis.getSimulation());
+    for (ComponentOp entry : current) {
+      if (entry == component)
+        continue;
+      SmallVector<ComponentOp> rotated{entry};
+      for (ComponentOp other : current)
+        if (other != entry)
+          rotated.push_back(other);
+      for (ArrayRef<ComponentOp> order :
+           {ArrayRef<ComponentOp>(rotated).take_front(),
+            ArrayRef<ComponentOp>(rotated)}) {
+        FailureOr<Schedule> schedule =
+            computeSchedule(analysis, order, /*emitDiagnostics=*/false);
+        if (succeeded(schedule) &&
+            !llvm::is_contained(schedule->getHipStepBounds(analysis),
+                                component))
+          return std::move(*schedule);
+      }
+    }
+    return std::nullopt;
+  }
+
   /// Records `local_window` on a grid_sync component whose reads of its own
   /// buffers allow local time steps, or completes `remark` with what does
   /// not and what to change (with a note at a gather unless it is the
@@ -320,6 +349,16 @@ struct SubstepLegalityPass
                 "of the whole scene (per-region big steps are not built, "
                 "docs/Model.md); a component that does not bound it takes "
                 "local time steps";
+      if (std::optional<Schedule> other =
+              findScheduleWithoutBound(analysis, component)) {
+        remark << ": 'sim.schedule [";
+        llvm::interleaveComma(other->getOrder(), remark, [&](ComponentOp c) {
+          remark << "@" << c.getSymName();
+        });
+        remark << "]' would start a step at @" << other->getEntry().getSymName()
+               << ", which then reads through the back edge, and @"
+               << component.getSymName() << " would not bound it";
+      }
       return;
     }
     component.setLocalWindowAttr(DenseI64ArrayAttr::get(

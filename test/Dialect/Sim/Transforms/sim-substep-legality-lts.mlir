@@ -129,7 +129,8 @@ sim.simulation @hermite range(64) dt(1.0e-2 : f32) max_steps(4) {
 // -----
 
 // A component that bounds the big step (it reads @W through the back edge)
-// takes it whole under lts too: no local_window, and the remark says why.
+// takes it whole under lts too: no local_window, and the remark says why and
+// which schedule would let it take local steps.
 
 // CHECK-LABEL: sim.simulation @bounding
 // CHECK: sim.component @Lead writes(@U) attributes {sub_stepping = #sim<sub_stepping grid_sync>}
@@ -144,7 +145,7 @@ sim.simulation @bounding range(64) dt(1.0e-2 : f32) max_steps(4) {
     %c = arith.constant 0.0 : f32
     sim.yield %c : f32
   }
-  // expected-remark @+1 {{@Lead needs a grid-wide barrier between sub-steps: its evaluate body reads @U, which it writes, at i-1, so a thread could read another item while that item is between sub-steps; under lts it still takes the big step whole: it reads through the back edge, so its num_steps bounds the big step of the whole scene (per-region big steps are not built, docs/Model.md); a component that does not bound it takes local time steps}}
+  // expected-remark @+1 {{@Lead needs a grid-wide barrier between sub-steps: its evaluate body reads @U, which it writes, at i-1, so a thread could read another item while that item is between sub-steps; under lts it still takes the big step whole: it reads through the back edge, so its num_steps bounds the big step of the whole scene (per-region big steps are not built, docs/Model.md); a component that does not bound it takes local time steps: 'sim.schedule [@Follow, @Lead]' would start a step at @Follow, which then reads through the back edge, and @Lead would not bound it}}
   sim.component @Lead writes(@U) num_steps {
   ^bb0(%i: index, %t: i64):
     %c = arith.constant 2 : i32
@@ -166,4 +167,59 @@ sim.simulation @bounding range(64) dt(1.0e-2 : f32) max_steps(4) {
   }
   sim.schedule [@Lead, @Follow] bounded_by [@Lead]
   sim.observe [@W]
+}
+
+// -----
+
+// No other entry lets @Hub take local steps: it reads what @Left and @Right
+// write, and both read what it writes, so a step that starts at either has a
+// cycle inside it. The remark names no schedule.
+
+// CHECK-LABEL: sim.simulation @hub
+// CHECK: sim.component @Hub writes(@U) attributes {sub_stepping = #sim<sub_stepping grid_sync>}
+sim.simulation @hub range(64) dt(1.0e-2 : f32) max_steps(4) {
+  sim.buffer @U : f32 init {
+  ^bb0(%i: index):
+    %c = arith.constant 0.0 : f32
+    sim.yield %c : f32
+  }
+  sim.buffer @X : f32 init {
+  ^bb0(%i: index):
+    %c = arith.constant 0.0 : f32
+    sim.yield %c : f32
+  }
+  sim.buffer @Y : f32 init {
+  ^bb0(%i: index):
+    %c = arith.constant 0.0 : f32
+    sim.yield %c : f32
+  }
+  // expected-remark-re @+1 {{@Hub needs a grid-wide barrier between sub-steps: {{.*}}; a component that does not bound it takes local time steps{{$}}}}
+  sim.component @Hub writes(@U) num_steps {
+  ^bb0(%i: index, %t: i64):
+    %c = arith.constant 2 : i32
+    sim.yield %c : i32
+  } evaluate {
+  ^bb0(%i: index, %t: i64, %n: i32, %dt: f32):
+    %c1 = arith.constant 1 : index
+    %l = arith.subi %i, %c1 : index
+    // expected-note @+1 {{reads @U at i-1}}
+    %ul = sim.read @U[%l] : f32
+    %x = sim.read @X[%i] : f32
+    %y = sim.read @Y[%i] : f32
+    %s = arith.addf %ul, %x : f32
+    %r = arith.addf %s, %y : f32
+    sim.yield %r : f32
+  }
+  sim.component @Left writes(@X) evaluate {
+  ^bb0(%i: index, %t: i64, %n: i32, %dt: f32):
+    %u = sim.read @U[%i] : f32
+    sim.yield %u : f32
+  }
+  sim.component @Right writes(@Y) evaluate {
+  ^bb0(%i: index, %t: i64, %n: i32, %dt: f32):
+    %u = sim.read @U[%i] : f32
+    sim.yield %u : f32
+  }
+  sim.schedule [@Hub, @Left, @Right] bounded_by [@Hub]
+  sim.observe [@U]
 }
