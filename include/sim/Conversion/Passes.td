@@ -186,6 +186,13 @@ def SimVectorizeLanes : Pass<"sim-vectorize-lanes"> {
     64-bit remainder by a constant below 2^16 that is not a power of two
     is computed from 32-bit remainders of the two halves, which x86 has
     in vector form where it has no vector high half of a 64-bit product.
+    A division or remainder of a consecutive dividend (the item plus a
+    uniform value: a 2-D grid's row and column, a ring's neighbour) by a
+    divisor every lane shares takes one scalar division of the chunk's
+    first lane where the divisor is at least the lanes and no lane wraps or
+    (signed) is below zero: the chunk then crosses at most one multiple of
+    the divisor, which a compare per lane finds; elsewhere it divides as
+    above (a constant divisor too, unless it is a power of two or 32-bit).
 
     ```
     sim-opt kernels.mlir --sim-vectorize-lanes=width=16

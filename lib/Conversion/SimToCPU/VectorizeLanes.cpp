@@ -211,6 +211,19 @@ private:
   /// `lanes % divisor` for a vector of i64 lanes and a divisor that
   /// narrowRemainderDivisor accepts, from 32-bit remainders.
   Value remainderByHalves(OpBuilder &b, Value lanes, uint64_t divisor);
+  /// Whether `op` divides a consecutive dividend (`uniform + lane`) by a
+  /// uniform divisor, which divideConsecutive computes from one scalar
+  /// division per chunk.
+  bool dividesConsecutive(Operation *op) const;
+  /// `op` (dividesConsecutive): where the divisor is at least the chunk's
+  /// lanes and the dividend's lanes neither wrap nor (signed) go below 0,
+  /// at most one multiple of the divisor lies among them, so one scalar
+  /// division of the first lane and a compare give every lane's quotient
+  /// and remainder; elsewhere the chunk divides as widenElementPart does.
+  Value divideConsecutive(OpBuilder &b, Operation *op, Value mask);
+  /// Part `k` of the elementwise `op` widened, masked by `mask` (null: all
+  /// lanes).
+  Value widenElementPart(OpBuilder &b, Operation *op, int64_t k, Value mask);
   /// `op` (dividesThroughDouble) on the lane vectors `dividend` and
   /// `divisor`; `mask`: the lanes that run it, or null for all.
   Value divideThroughDouble(OpBuilder &b, Operation *op, Value dividend,
@@ -939,51 +952,141 @@ void LaneVectorizer::widenOp(OpBuilder &b, Operation *op, Value mask) {
 void LaneVectorizer::widenElementwise(OpBuilder &b, Operation *op, Value mask) {
   Value result = op->getResult(0);
   int64_t count = elementCount(result.getType());
-  Type resultScalar = elementType(result.getType());
   Wide wide;
   wide.varying = true;
-  if (uint64_t divisor = narrowRemainderDivisor(op)) {
-    for (int64_t k = 0; k < count; ++k)
-      wide.parts.push_back(
-          remainderByHalves(b, lanePart(b, op->getOperand(0), k), divisor));
+  if (count == 1 && dividesConsecutive(op)) {
+    wide.parts.push_back(divideConsecutive(b, op, mask));
     values[result] = wide;
     return;
   }
-  if (widenInterleaved(b, op))
+  if (!narrowRemainderDivisor(op) && widenInterleaved(b, op))
     return;
-  for (int64_t k = 0; k < count; ++k) {
-    SmallVector<Value> operands;
-    for (auto [index, operand] : llvm::enumerate(op->getOperands())) {
-      if (isUniformCondition(op, index)) {
-        operands.push_back(lookup(operand).parts[0]);
-        continue;
-      }
-      Value lanes = lanePart(b, operand, k);
-      // Lanes that do not run this division divide by one: x86 traps on a
-      // division by zero (and on INT_MIN / -1), whichever lane it is in.
-      if (index == 1 && mask && isIntegerDivision(op) &&
-          !divisorCannotTrap(op, operand)) {
-        Type type = lanes.getType();
-        Value one = arith::ConstantOp::create(
-            b, loc, type,
-            DenseElementsAttr::get(cast<ShapedType>(type),
-                                   b.getIntegerAttr(elementType(type), 1)));
-        lanes = arith::SelectOp::create(b, loc, mask, lanes, one);
-      }
-      operands.push_back(lanes);
-    }
-    if (dividesThroughDouble(op)) {
-      wide.parts.push_back(
-          divideThroughDouble(b, op, operands[0], operands[1], mask));
+  for (int64_t k = 0; k < count; ++k)
+    wide.parts.push_back(widenElementPart(b, op, k, mask));
+  values[result] = wide;
+}
+
+Value LaneVectorizer::widenElementPart(OpBuilder &b, Operation *op, int64_t k,
+                                       Value mask) {
+  Type resultScalar = elementType(op->getResult(0).getType());
+  if (uint64_t divisor = narrowRemainderDivisor(op))
+    return remainderByHalves(b, lanePart(b, op->getOperand(0), k), divisor);
+  SmallVector<Value> operands;
+  for (auto [index, operand] : llvm::enumerate(op->getOperands())) {
+    if (isUniformCondition(op, index)) {
+      operands.push_back(lookup(operand).parts[0]);
       continue;
     }
-    OperationState state(loc, op->getName());
-    state.addOperands(operands);
-    state.addTypes(laneType(resultScalar));
-    state.addAttributes(op->getAttrs());
-    wide.parts.push_back(b.create(state)->getResult(0));
+    Value lanes = lanePart(b, operand, k);
+    // Lanes that do not run this division divide by one: x86 traps on a
+    // division by zero (and on INT_MIN / -1), whichever lane it is in.
+    if (index == 1 && mask && isIntegerDivision(op) &&
+        !divisorCannotTrap(op, operand)) {
+      Type type = lanes.getType();
+      Value one = arith::ConstantOp::create(
+          b, loc, type,
+          DenseElementsAttr::get(cast<ShapedType>(type),
+                                 b.getIntegerAttr(elementType(type), 1)));
+      lanes = arith::SelectOp::create(b, loc, mask, lanes, one);
+    }
+    operands.push_back(lanes);
   }
-  values[result] = wide;
+  if (dividesThroughDouble(op))
+    return divideThroughDouble(b, op, operands[0], operands[1], mask);
+  OperationState state(loc, op->getName());
+  state.addOperands(operands);
+  state.addTypes(laneType(resultScalar));
+  state.addAttributes(op->getAttrs());
+  return b.create(state)->getResult(0);
+}
+
+bool LaneVectorizer::dividesConsecutive(Operation *op) const {
+  if (!isa<arith::DivSIOp, arith::DivUIOp, arith::RemSIOp, arith::RemUIOp>(
+          op) ||
+      !consecutive.contains(op->getOperand(0)) || isVarying(op->getOperand(1)))
+    return false;
+  Type scalar = elementType(op->getResultTypes()[0]);
+  if (!scalar.isIndex() && !scalar.isInteger(32) && !scalar.isInteger(64))
+    return false;
+  // A constant divisor: LLVM shifts by a power of two and multiplies by the
+  // reciprocal of any other, which x86 does in vector lanes for 32 bits
+  // but lane by lane for 64; a constant below the lanes never qualifies.
+  APInt value;
+  if (matchPattern(op->getOperand(1), m_ConstantInt(&value)))
+    return !scalar.isInteger(32) && !value.isPowerOf2() &&
+           value.uge(static_cast<uint64_t>(width)) && !value.isNegative();
+  return true;
+}
+
+Value LaneVectorizer::divideConsecutive(OpBuilder &b, Operation *op,
+                                        Value mask) {
+  bool isSigned = isa<arith::DivSIOp, arith::RemSIOp>(op);
+  bool isRemainder = isa<arith::RemSIOp, arith::RemUIOp>(op);
+  Value dividend = lanePart(b, op->getOperand(0), 0);
+  Value divisor = lookup(op->getOperand(1)).parts[0];
+  auto type = cast<VectorType>(dividend.getType());
+  Type scalar = type.getElementType();
+  unsigned bits = scalar.isIndex() ? 64 : scalar.getIntOrFloatBitWidth();
+  auto constant = [&](OpBuilder &at, const APInt &value) -> Value {
+    return arith::ConstantOp::create(at, loc, scalar,
+                                     at.getIntegerAttr(scalar, value));
+  };
+  APInt lanesMinusOne(bits, width - 1);
+  // Lane k holds first + k: the last lane must not wrap, and for a signed
+  // division every lane must be at least 0, so that all of them divide
+  // alike; a divisor of at least the lanes is then crossed at most once.
+  Value first = vector::ExtractOp::create(b, loc, dividend, 0);
+  Value wideDivisor =
+      isSigned
+          ? arith::CmpIOp::create(b, loc, arith::CmpIPredicate::sge, divisor,
+                                  constant(b, APInt(bits, width)))
+          : arith::CmpIOp::create(b, loc, arith::CmpIPredicate::uge, divisor,
+                                  constant(b, APInt(bits, width)));
+  Value noWrap =
+      isSigned
+          ? arith::CmpIOp::create(
+                b, loc, arith::CmpIPredicate::sle, first,
+                constant(b, APInt::getSignedMaxValue(bits) - lanesMinusOne))
+          : arith::CmpIOp::create(
+                b, loc, arith::CmpIPredicate::ule, first,
+                constant(b, APInt::getMaxValue(bits) - lanesMinusOne));
+  Value fits = arith::AndIOp::create(b, loc, wideDivisor, noWrap);
+  if (isSigned)
+    fits = arith::AndIOp::create(
+        b, loc, fits,
+        arith::CmpIOp::create(b, loc, arith::CmpIPredicate::sge, first,
+                              constant(b, APInt(bits, 0))));
+  auto choice = scf::IfOp::create(b, loc, TypeRange{type}, fits,
+                                  /*withElseRegion=*/true);
+  OpBuilder fast = emptyBody(choice.thenBlock());
+  // Both operands are at least 0 here: an unsigned division is the signed
+  // one.
+  Value quotient = arith::DivUIOp::create(fast, loc, first, divisor);
+  Value base = arith::MulIOp::create(fast, loc, quotient, divisor);
+  auto spread = [&](Value value) -> Value {
+    return vector::BroadcastOp::create(fast, loc, type, value);
+  };
+  // first + k - quotient * divisor = (first % divisor) + k, below twice the
+  // divisor: one past it at most once.
+  Value remainders = arith::SubIOp::create(fast, loc, dividend, spread(base));
+  Value divisors = spread(divisor);
+  Value past = arith::CmpIOp::create(fast, loc, arith::CmpIPredicate::uge,
+                                     remainders, divisors);
+  Value fastResult;
+  if (isRemainder) {
+    fastResult = arith::SelectOp::create(
+        fast, loc, past, arith::SubIOp::create(fast, loc, remainders, divisors),
+        remainders);
+  } else {
+    Value next = arith::AddIOp::create(fast, loc, quotient,
+                                       constant(fast, APInt(bits, 1)));
+    fastResult = arith::SelectOp::create(fast, loc, past, spread(next),
+                                         spread(quotient));
+  }
+  scf::YieldOp::create(fast, loc, fastResult);
+  OpBuilder slow = emptyBody(choice.elseBlock());
+  scf::YieldOp::create(slow, loc, widenElementPart(slow, op, 0, mask));
+  return choice.getResult(0);
 }
 
 Value LaneVectorizer::divideThroughDouble(OpBuilder &b, Operation *op,

@@ -602,3 +602,87 @@ func.func @masked_consecutive(%in: memref<?xf32>, %out: memref<?xf32>, %base: in
   } {simplan.lanes}
   return
 }
+
+// -----
+
+// A consecutive dividend (the lane plus a uniform value) divided by a
+// uniform divisor: where the divisor is at least the lanes and the first
+// lane's value neither lets the last one wrap nor (signed) is below zero,
+// one scalar division of the first lane, and a compare per lane for the
+// one multiple of the divisor the chunk may cross; elsewhere the chunk
+// divides as before. A constant divisor takes the same path unless it is
+// a power of two (a shift) or the operands are 32-bit (LLVM multiplies by
+// its reciprocal in vector lanes).
+// CHECK-LABEL: func.func @consecutive_division
+// CHECK:         scf.for
+// CHECK:           %[[LANES:.*]] = arith.addi %{{.*}}, %{{.*}} : vector<8xindex>
+// CHECK:           %[[X:.*]] = arith.addi %{{.*}}, %{{.*}} : vector<8xi64>
+// CHECK:           %[[FIRST:.*]] = vector.extract %[[X]][0] : i64 from vector<8xi64>
+// CHECK:           arith.cmpi sge, %[[D:.*]], %{{.*}} : i64
+// CHECK:           %[[MAX:.*]] = arith.constant 9223372036854775800 : i64
+// CHECK:           arith.cmpi sle, %[[FIRST]], %[[MAX]] : i64
+// CHECK:           arith.cmpi sge, %[[FIRST]], %{{.*}} : i64
+// CHECK:           scf.if %{{.*}} -> (vector<8xi64>) {
+// CHECK-NEXT:        %[[Q:.*]] = arith.divui %[[FIRST]], %[[D]] : i64
+// CHECK-NEXT:        %[[BASE:.*]] = arith.muli %[[Q]], %[[D]] : i64
+// CHECK-NEXT:        %[[BASES:.*]] = vector.broadcast %[[BASE]] : i64 to vector<8xi64>
+// CHECK-NEXT:        %[[R:.*]] = arith.subi %[[X]], %[[BASES]] : vector<8xi64>
+// CHECK-NEXT:        %[[DS:.*]] = vector.broadcast %[[D]] : i64 to vector<8xi64>
+// CHECK-NEXT:        %[[PAST:.*]] = arith.cmpi uge, %[[R]], %[[DS]] : vector<8xi64>
+// CHECK-NEXT:        %[[ONE:.*]] = arith.constant 1 : i64
+// CHECK-NEXT:        %[[NEXT:.*]] = arith.addi %[[Q]], %[[ONE]] : i64
+// CHECK-NEXT:        %[[NEXTS:.*]] = vector.broadcast %[[NEXT]] : i64 to vector<8xi64>
+// CHECK-NEXT:        %[[QS:.*]] = vector.broadcast %[[Q]] : i64 to vector<8xi64>
+// CHECK-NEXT:        %[[QUOTIENT:.*]] = arith.select %[[PAST]], %[[NEXTS]], %[[QS]] : vector<8xi1>, vector<8xi64>
+// CHECK-NEXT:        scf.yield %[[QUOTIENT]] : vector<8xi64>
+// CHECK-NEXT:      } else {
+// CHECK:             arith.divf
+// CHECK:             arith.divsi %[[X]], %{{.*}} : vector<8xi64>
+// CHECK:           }
+// CHECK:           %[[IFIRST:.*]] = vector.extract %[[LANES]][0] : index from vector<8xindex>
+// CHECK:           arith.cmpi uge, %[[N:.*]], %{{.*}} : index
+// CHECK:           %[[IMAX:.*]] = arith.constant -8 : index
+// CHECK:           arith.cmpi ule, %[[IFIRST]], %[[IMAX]] : index
+// CHECK:           scf.if %{{.*}} -> (vector<8xindex>) {
+// CHECK-NEXT:        %[[IQ:.*]] = arith.divui %[[IFIRST]], %[[N]] : index
+// CHECK:             %[[IR:.*]] = arith.subi %[[LANES]], %{{.*}} : vector<8xindex>
+// CHECK-NEXT:        %[[NS:.*]] = vector.broadcast %[[N]] : index to vector<8xindex>
+// CHECK-NEXT:        %[[IPAST:.*]] = arith.cmpi uge, %[[IR]], %[[NS]] : vector<8xindex>
+// CHECK-NEXT:        %[[IRN:.*]] = arith.subi %[[IR]], %[[NS]] : vector<8xindex>
+// CHECK-NEXT:        %[[REM:.*]] = arith.select %[[IPAST]], %[[IRN]], %[[IR]] : vector<8xi1>, vector<8xindex>
+// CHECK-NEXT:        scf.yield %[[REM]] : vector<8xindex>
+// CHECK-NEXT:      } else {
+// CHECK:             arith.remui %{{.*}} : vector<8xi64>
+// CHECK:           }
+// CHECK:           arith.divui %{{.*}}, %[[C100:.*]] : i64
+// CHECK:           arith.remui %[[X]], %{{.*}} : vector<8xi64>
+// CHECK:           arith.remui %{{.*}}, %{{.*}} : vector<8xi32>
+// CHECK-NOT:       scf.if
+// CHECK:           llvm.store
+func.func @consecutive_division(%out: memref<?xi64>, %g: index, %base: i64,
+                                %d: i64, %n: index) {
+  %c0 = arith.constant 0 : index
+  %c1 = arith.constant 1 : index
+  %c64 = arith.constant 64 : i64
+  %c100 = arith.constant 100 : i64
+  %c100_i32 = arith.constant 100 : i32
+  // expected-remark @below {{lanes run 8 at a time}}
+  scf.for %lane = %c0 to %g step %c1 {
+    %lane64 = arith.index_cast %lane : index to i64
+    %x = arith.addi %lane64, %base : i64
+    %q = arith.divsi %x, %d : i64
+    %wrapped = arith.remui %lane, %n : index
+    %wrapped64 = arith.index_cast %wrapped : index to i64
+    %r100 = arith.remui %x, %c100 : i64
+    %r64 = arith.remui %x, %c64 : i64
+    %lane32 = arith.index_cast %lane : index to i32
+    %r32 = arith.remui %lane32, %c100_i32 : i32
+    %r32w = arith.extui %r32 : i32 to i64
+    %s0 = arith.addi %q, %wrapped64 : i64
+    %s1 = arith.addi %s0, %r100 : i64
+    %s2 = arith.addi %s1, %r64 : i64
+    %s3 = arith.addi %s2, %r32w : i64
+    memref.store %s3, %out[%lane] : memref<?xi64>
+  } {simplan.lanes}
+  return
+}
