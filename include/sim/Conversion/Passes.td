@@ -193,6 +193,7 @@ def SimVectorizeLanes : Pass<"sim-vectorize-lanes"> {
     (signed) is below zero: the chunk then crosses at most one multiple of
     the divisor, which a compare per lane finds; elsewhere it divides as
     above (a constant divisor too, unless it is a power of two or 32-bit).
+    A remainder and a division of the same operands share that branch.
 
     ```
     sim-opt kernels.mlir --sim-vectorize-lanes=width=16

@@ -32,6 +32,7 @@
 #include "mlir/Interfaces/SideEffectInterfaces.h"
 #include "mlir/Transforms/ControlFlowSinkUtils.h"
 
+#include "llvm/ADT/TypeSwitch.h"
 #include "llvm/Support/Debug.h"
 
 #define DEBUG_TYPE "sim-vectorize-lanes"
@@ -220,7 +221,11 @@ private:
   /// at most one multiple of the divisor lies among them, so one scalar
   /// division of the first lane and a compare give every lane's quotient
   /// and remainder; elsewhere the chunk divides as widenElementPart does.
-  Value divideConsecutive(OpBuilder &b, Operation *op, Value mask);
+  /// With `partner`, the division or remainder of the same operands later
+  /// in the block (a grid's row and column), computed in the same branch
+  /// from the same scalar division; its lanes are kept for when it widens.
+  Value divideConsecutive(OpBuilder &b, Operation *op, Operation *partner,
+                          Value mask);
   /// Part `k` of the elementwise `op` widened, masked by `mask` (null: all
   /// lanes).
   Value widenElementPart(OpBuilder &b, Operation *op, int64_t k, Value mask);
@@ -296,6 +301,8 @@ private:
   };
   DenseMap<Value, BoundedRun> boundedRuns;
   DenseMap<Value, Wide> values;
+  /// Lanes of a consecutive division's partner, computed with it.
+  DenseMap<Value, Value> partnerLanes;
   DenseMap<Value, Value> pointers;
   Value iota;
   OpBuilder::InsertPoint preheader;
@@ -955,7 +962,28 @@ void LaneVectorizer::widenElementwise(OpBuilder &b, Operation *op, Value mask) {
   Wide wide;
   wide.varying = true;
   if (count == 1 && dividesConsecutive(op)) {
-    wide.parts.push_back(divideConsecutive(b, op, mask));
+    if (Value lanes = partnerLanes.lookup(result)) {
+      wide.parts.push_back(lanes);
+      values[result] = wide;
+      return;
+    }
+    // The quotient's and the remainder's kinds: divui and remui, divsi and
+    // remsi.
+    auto partnerKind = [](Operation *of) -> StringRef {
+      return llvm::TypeSwitch<Operation *, StringRef>(of)
+          .Case([](arith::DivUIOp) { return "remui"; })
+          .Case([](arith::RemUIOp) { return "divui"; })
+          .Case([](arith::DivSIOp) { return "remsi"; })
+          .Case([](arith::RemSIOp) { return "divsi"; })
+          .Default([](Operation *) { return ""; });
+    };
+    Operation *partner = nullptr;
+    for (Operation *next = op->getNextNode(); next && !partner;
+         next = next->getNextNode())
+      if (next->getOperands() == op->getOperands() &&
+          next->getName().stripDialect() == partnerKind(op))
+        partner = next;
+    wide.parts.push_back(divideConsecutive(b, op, partner, mask));
     values[result] = wide;
     return;
   }
@@ -1019,7 +1047,7 @@ bool LaneVectorizer::dividesConsecutive(Operation *op) const {
 }
 
 Value LaneVectorizer::divideConsecutive(OpBuilder &b, Operation *op,
-                                        Value mask) {
+                                        Operation *partner, Value mask) {
   bool isSigned = isa<arith::DivSIOp, arith::RemSIOp>(op);
   bool isRemainder = isa<arith::RemSIOp, arith::RemUIOp>(op);
   Value dividend = lanePart(b, op->getOperand(0), 0);
@@ -1056,7 +1084,8 @@ Value LaneVectorizer::divideConsecutive(OpBuilder &b, Operation *op,
         b, loc, fits,
         arith::CmpIOp::create(b, loc, arith::CmpIPredicate::sge, first,
                               constant(b, APInt(bits, 0))));
-  auto choice = scf::IfOp::create(b, loc, TypeRange{type}, fits,
+  SmallVector<Type> types(partner ? 2 : 1, type);
+  auto choice = scf::IfOp::create(b, loc, types, fits,
                                   /*withElseRegion=*/true);
   OpBuilder fast = emptyBody(choice.thenBlock());
   // Both operands are at least 0 here: an unsigned division is the signed
@@ -1072,20 +1101,29 @@ Value LaneVectorizer::divideConsecutive(OpBuilder &b, Operation *op,
   Value divisors = spread(divisor);
   Value past = arith::CmpIOp::create(fast, loc, arith::CmpIPredicate::uge,
                                      remainders, divisors);
-  Value fastResult;
-  if (isRemainder) {
-    fastResult = arith::SelectOp::create(
+  auto remainderLanes = [&]() -> Value {
+    return arith::SelectOp::create(
         fast, loc, past, arith::SubIOp::create(fast, loc, remainders, divisors),
         remainders);
-  } else {
+  };
+  auto quotientLanes = [&]() -> Value {
     Value next = arith::AddIOp::create(fast, loc, quotient,
                                        constant(fast, APInt(bits, 1)));
-    fastResult = arith::SelectOp::create(fast, loc, past, spread(next),
-                                         spread(quotient));
-  }
-  scf::YieldOp::create(fast, loc, fastResult);
+    return arith::SelectOp::create(fast, loc, past, spread(next),
+                                   spread(quotient));
+  };
+  SmallVector<Value> fastResults{isRemainder ? remainderLanes()
+                                             : quotientLanes()};
+  if (partner)
+    fastResults.push_back(isRemainder ? quotientLanes() : remainderLanes());
+  scf::YieldOp::create(fast, loc, fastResults);
   OpBuilder slow = emptyBody(choice.elseBlock());
-  scf::YieldOp::create(slow, loc, widenElementPart(slow, op, 0, mask));
+  SmallVector<Value> slowResults{widenElementPart(slow, op, 0, mask)};
+  if (partner)
+    slowResults.push_back(widenElementPart(slow, partner, 0, mask));
+  scf::YieldOp::create(slow, loc, slowResults);
+  if (partner)
+    partnerLanes[partner->getResult(0)] = choice.getResult(1);
   return choice.getResult(0);
 }
 

@@ -610,9 +610,10 @@ func.func @masked_consecutive(%in: memref<?xf32>, %out: memref<?xf32>, %base: in
 // lane's value neither lets the last one wrap nor (signed) is below zero,
 // one scalar division of the first lane, and a compare per lane for the
 // one multiple of the divisor the chunk may cross; elsewhere the chunk
-// divides as before. A constant divisor takes the same path unless it is
-// a power of two (a shift) or the operands are 32-bit (LLVM multiplies by
-// its reciprocal in vector lanes).
+// divides as before. A remainder and a division of the same operands (a
+// row and a column) share the branch and its division. A constant divisor
+// takes the same path unless it is a power of two (a shift) or the
+// operands are 32-bit (LLVM multiplies by its reciprocal in vector lanes).
 // CHECK-LABEL: func.func @consecutive_division
 // CHECK:         scf.for
 // CHECK:           %[[LANES:.*]] = arith.addi %{{.*}}, %{{.*}} : vector<8xindex>
@@ -643,17 +644,22 @@ func.func @masked_consecutive(%in: memref<?xf32>, %out: memref<?xf32>, %base: in
 // CHECK:           arith.cmpi uge, %[[N:.*]], %{{.*}} : index
 // CHECK:           %[[IMAX:.*]] = arith.constant -8 : index
 // CHECK:           arith.cmpi ule, %[[IFIRST]], %[[IMAX]] : index
-// CHECK:           scf.if %{{.*}} -> (vector<8xindex>) {
+// CHECK:           %[[PAIR:.*]]:2 = scf.if %{{.*}} -> (vector<8xindex>, vector<8xindex>) {
 // CHECK-NEXT:        %[[IQ:.*]] = arith.divui %[[IFIRST]], %[[N]] : index
 // CHECK:             %[[IR:.*]] = arith.subi %[[LANES]], %{{.*}} : vector<8xindex>
 // CHECK-NEXT:        %[[NS:.*]] = vector.broadcast %[[N]] : index to vector<8xindex>
 // CHECK-NEXT:        %[[IPAST:.*]] = arith.cmpi uge, %[[IR]], %[[NS]] : vector<8xindex>
 // CHECK-NEXT:        %[[IRN:.*]] = arith.subi %[[IR]], %[[NS]] : vector<8xindex>
 // CHECK-NEXT:        %[[REM:.*]] = arith.select %[[IPAST]], %[[IRN]], %[[IR]] : vector<8xi1>, vector<8xindex>
-// CHECK-NEXT:        scf.yield %[[REM]] : vector<8xindex>
+// CHECK:             %[[TURNS:.*]] = arith.select %[[IPAST]], %{{.*}}, %{{.*}} : vector<8xi1>, vector<8xindex>
+// CHECK-NEXT:        scf.yield %[[REM]], %[[TURNS]] : vector<8xindex>, vector<8xindex>
 // CHECK-NEXT:      } else {
 // CHECK:             arith.remui %{{.*}} : vector<8xi64>
+// CHECK:             arith.divui %{{.*}} : vector<8xi64>
 // CHECK:           }
+// CHECK:           arith.index_cast %[[PAIR]]#0
+// CHECK-NOT:       arith.divui %{{.*}}, %[[N]] : index
+// CHECK:           arith.index_cast %[[PAIR]]#1
 // CHECK:           arith.divui %{{.*}}, %[[C100:.*]] : i64
 // CHECK:           arith.remui %[[X]], %{{.*}} : vector<8xi64>
 // CHECK:           arith.remui %{{.*}}, %{{.*}} : vector<8xi32>
@@ -673,13 +679,16 @@ func.func @consecutive_division(%out: memref<?xi64>, %g: index, %base: i64,
     %q = arith.divsi %x, %d : i64
     %wrapped = arith.remui %lane, %n : index
     %wrapped64 = arith.index_cast %wrapped : index to i64
+    %turns = arith.divui %lane, %n : index
+    %turns64 = arith.index_cast %turns : index to i64
     %r100 = arith.remui %x, %c100 : i64
     %r64 = arith.remui %x, %c64 : i64
     %lane32 = arith.index_cast %lane : index to i32
     %r32 = arith.remui %lane32, %c100_i32 : i32
     %r32w = arith.extui %r32 : i32 to i64
     %s0 = arith.addi %q, %wrapped64 : i64
-    %s1 = arith.addi %s0, %r100 : i64
+    %t0 = arith.addi %s0, %turns64 : i64
+    %s1 = arith.addi %t0, %r100 : i64
     %s2 = arith.addi %s1, %r64 : i64
     %s3 = arith.addi %s2, %r32w : i64
     memref.store %s3, %out[%lane] : memref<?xi64>
