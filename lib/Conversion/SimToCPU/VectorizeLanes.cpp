@@ -1510,8 +1510,8 @@ void LaneVectorizer::widenLoad(OpBuilder &b, memref::LoadOp op, Value mask) {
   // first and the last lane (an item divided by the items of a block, read
   // at an offset, crosses a block at most once in a chunk); else the
   // gathers.
-  auto uniformOrGather = [&](OpBuilder &at) -> SmallVector<Value> {
-    Value safe = safeIndex(at);
+  auto uniformOrGatherAt = [&](OpBuilder &at,
+                               Value safe) -> SmallVector<Value> {
     Value first = vector::ExtractOp::create(at, loc, safe, 0);
     Value firsts = vector::BroadcastOp::create(at, loc, i64Lanes, first);
     Value isFirst =
@@ -1541,6 +1541,20 @@ void LaneVectorizer::widenLoad(OpBuilder &b, memref::LoadOp op, Value mask) {
     OpBuilder other = emptyBody(pair.elseBlock());
     scf::YieldOp::create(other, loc, gatherAt(other, safe));
     scf::YieldOp::create(many, loc, pair.getResults());
+    return SmallVector<Value>(choice.getResults());
+  };
+  // Under a mask, a chunk whose every lane runs (all but the last of a
+  // range guarded by `item < range`) reads at its own indices; only the
+  // others pay for the safe ones (a reduction across the lanes).
+  auto uniformOrGather = [&](OpBuilder &at) -> SmallVector<Value> {
+    if (!mask)
+      return uniformOrGatherAt(at, index);
+    SmallVector<Type> types(count, lanes);
+    auto choice = scf::IfOp::create(at, loc, types, allLanes(at, mask), true);
+    OpBuilder every = emptyBody(choice.thenBlock());
+    scf::YieldOp::create(every, loc, uniformOrGatherAt(every, index));
+    OpBuilder some = emptyBody(choice.elseBlock());
+    scf::YieldOp::create(some, loc, uniformOrGatherAt(some, safeIndex(some)));
     return SmallVector<Value>(choice.getResults());
   };
 
