@@ -153,7 +153,11 @@ def SimVectorizeLanes : Pass<"sim-vectorize-lanes"> {
     wherever the rule changes nothing: one wide load when the chunk's first
     and last items lie inside, decided by two scalar compares, and the
     gathers at the range's ends; under a branch's mask a consecutive access
-    is wide when every lane runs. A loaded `vector<N x T>` (N a power of two)
+    is wide when every lane runs. A load at an item divided by at least the
+    lanes (a block's level) is one scalar load and a broadcast when every
+    lane reads the same element, two when they read two, gathers else;
+    under a mask only a chunk with a lane that does not run first moves
+    that lane's index to an active lane's. A loaded `vector<N x T>` (N a power of two)
     stays interleaved as memory holds it while elementwise ops use it (a
     uniform operand is spread to match), and is de-interleaved by shuffles
     only where something needs its elements apart: an interpolation of two

@@ -695,3 +695,41 @@ func.func @consecutive_division(%out: memref<?xi64>, %g: index, %base: i64,
   } {simplan.lanes}
   return
 }
+
+// -----
+
+// A block's level read under a mask (an item guarded by `item < range`):
+// a chunk whose every lane runs reads at its own indices; only a chunk
+// with a lane that does not run replaces that lane's index by an active
+// one's (the minimum across the lanes) before choosing between one load,
+// two and the gathers.
+// CHECK-LABEL: func.func @masked_block_index_loads
+// CHECK:         scf.for
+// CHECK:           %[[MASK:.*]] = arith.cmpi ult, %{{.*}}, %{{.*}} : vector<8xindex>
+// CHECK:           scf.if
+// CHECK:             %[[EVERY:.*]] = vector.reduction <and>, %[[MASK]] : vector<8xi1> into i1
+// CHECK-NEXT:        scf.if %[[EVERY]] -> (vector<8xi64>) {
+// CHECK-NOT:           vector.reduction <minsi>
+// CHECK:               %[[FIRST:.*]] = vector.extract %[[INDEX:.*]][0] : i64 from vector<8xi64>
+// CHECK:             } else {
+// CHECK:               %[[SAFE:.*]] = vector.reduction <minsi>, %{{.*}} : vector<8xi64> into i64
+// CHECK:               vector.extract %{{.*}}[0] : i64 from vector<8xi64>
+// CHECK:             }
+// CHECK:         return
+func.func @masked_block_index_loads(%levels: memref<?xi64>, %out: memref<?xi64>, %half: index, %base: index, %g: index, %n: index) {
+  %c0 = arith.constant 0 : index
+  %c1 = arith.constant 1 : index
+  %c32 = arith.constant 32 : index
+  // expected-remark @below {{lanes run 8 at a time}}
+  scf.for %lane = %c0 to %g step %c1 {
+    %item = arith.addi %base, %lane : index
+    %inside = arith.cmpi ult, %item, %n : index
+    scf.if %inside {
+      %block = arith.divui %item, %c32 : index
+      %at = arith.addi %half, %block : index
+      %level = memref.load %levels[%at] : memref<?xi64>
+      memref.store %level, %out[%item] : memref<?xi64>
+    }
+  } {simplan.lanes}
+  return
+}
