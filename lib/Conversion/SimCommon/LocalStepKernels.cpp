@@ -193,37 +193,33 @@ LogicalResult SimulationLowering::emitLocalSteps(ComponentOp component,
           target.laneStore(b, b.add(target.laneLoad(b, *count, lane), b.i32(1)),
                            *count, lane);
       };
-  // An scf.while over an index from `init` while `cond` holds, `body`
-  // returning the next.
-  auto whileIndex = [&](Value init, function_ref<Value(Value)> cond,
-                        function_ref<Value(Value)> body) {
+  // The index range [begin, end) piece by piece (an scf.while): `piece`
+  // takes the start of a piece and returns where it stops, the next start.
+  auto forEachPiece = [&](Value begin, Value end,
+                          function_ref<Value(Value)> piece) {
     auto loop =
-        scf::WhileOp::create(b, b.loc, b.getIndexType(), ValueRange{init});
+        scf::WhileOp::create(b, b.loc, b.getIndexType(), ValueRange{begin});
     OpBuilder::InsertionGuard guard(b);
     Block *before =
         b.createBlock(&loop.getBefore(), {}, b.getIndexType(), b.loc);
-    scf::ConditionOp::create(b, b.loc, cond(before->getArgument(0)),
-                             before->getArguments());
+    scf::ConditionOp::create(
+        b, b.loc, b.cmp(arith::CmpIPredicate::ult, before->getArgument(0), end),
+        before->getArguments());
     Block *after = b.createBlock(&loop.getAfter(), {}, b.getIndexType(), b.loc);
-    scf::YieldOp::create(b, b.loc, body(after->getArgument(0)));
+    scf::YieldOp::create(b, b.loc, piece(after->getArgument(0)));
   };
   // The items of `part` block by block: `body(start, block, stop)` for the
   // items [start, stop) of the part in block `block` (index values).
   auto forEachBlockOf = [&](const Part &part,
                             function_ref<void(Value, Value, Value)> body) {
     Value end = b.add(part.base, part.count);
-    whileIndex(
-        part.base,
-        [&](Value start) {
-          return b.cmp(arith::CmpIPredicate::ult, start, end);
-        },
-        [&](Value start) {
-          Value block = blockOf(start);
-          Value stop =
-              b.min(b.mul(b.add(block, b.index(1)), b.index(kLevelBlock)), end);
-          body(start, block, stop);
-          return stop;
-        });
+    forEachPiece(part.base, end, [&](Value start) {
+      Value block = blockOf(start);
+      Value stop =
+          b.min(b.mul(b.add(block, b.index(1)), b.index(kLevelBlock)), end);
+      body(start, block, stop);
+      return stop;
+    });
   };
   // The parts of the groups of a kernel with their codes of section
   // `codeSection` (partCode): `forPart(part, same, code, origin)`. Where the
@@ -255,25 +251,20 @@ LogicalResult SimulationLowering::emitLocalSteps(ComponentOp component,
           return;
         }
         target.forEachGroupSpan(b, kernel, [&](Value origin, Value spanEnd) {
-          whileIndex(
-              origin,
-              [&](Value start) {
-                return b.cmp(arith::CmpIPredicate::ult, start, spanEnd);
-              },
-              [&](Value start) {
-                Value block = blockOf(start);
-                Value code = b.load(levels, b.add(codes, block));
-                Value runEnd =
-                    b.min(b.mul(b.toIndex(b.load(levels, b.add(runs, block))),
-                                b.index(kLevelBlock)),
-                          spanEnd);
-                b.ifThen(due(code), [&] {
-                  forPart(Part{start, b.index(0), b.sub(runEnd, start),
-                               /*whole=*/false},
-                          b.constant(b.getI1Type(), 1), code, origin);
-                });
-                return runEnd;
-              });
+          forEachPiece(origin, spanEnd, [&](Value start) {
+            Value block = blockOf(start);
+            Value code = b.load(levels, b.add(codes, block));
+            Value runEnd =
+                b.min(b.mul(b.toIndex(b.load(levels, b.add(runs, block))),
+                            b.index(kLevelBlock)),
+                      spanEnd);
+            b.ifThen(due(code), [&] {
+              forPart(Part{start, b.index(0), b.sub(runEnd, start),
+                           /*whole=*/false},
+                      b.constant(b.getI1Type(), 1), code, origin);
+            });
+            return runEnd;
+          });
         });
       };
   // The pieces of a run (forEachCodePart) in each group, their lanes
@@ -282,21 +273,15 @@ LogicalResult SimulationLowering::emitLocalSteps(ComponentOp component,
                       function_ref<void(const Part &)> body) {
     Value size = target.groupSize(b, kernel);
     Value runEnd = b.add(run.base, run.count);
-    whileIndex(
-        run.base,
-        [&](Value piece) {
-          return b.cmp(arith::CmpIPredicate::ult, piece, runEnd);
-        },
-        [&](Value piece) {
-          Value offset = b.sub(piece, origin);
-          Value groupBase = b.add(
-              origin,
-              b.mul(arith::DivUIOp::create(b, b.loc, offset, size), size));
-          Value end = b.min(b.add(groupBase, size), runEnd);
-          body(Part{piece, b.sub(piece, groupBase), b.sub(end, piece),
-                    /*whole=*/false});
-          return end;
-        });
+    forEachPiece(run.base, runEnd, [&](Value piece) {
+      Value offset = b.sub(piece, origin);
+      Value groupBase = b.add(
+          origin, b.mul(arith::DivUIOp::create(b, b.loc, offset, size), size));
+      Value end = b.min(b.add(groupBase, size), runEnd);
+      body(Part{piece, b.sub(piece, groupBase), b.sub(end, piece),
+                /*whole=*/false});
+      return end;
+    });
   };
 
   // The lanes of a slot kernel, part by part: `inStep(lane, level,
