@@ -32,7 +32,6 @@
 #include "mlir/Interfaces/SideEffectInterfaces.h"
 #include "mlir/Transforms/ControlFlowSinkUtils.h"
 
-#include "llvm/ADT/TypeSwitch.h"
 #include "llvm/Support/Debug.h"
 
 #define DEBUG_TYPE "sim-vectorize-lanes"
@@ -967,21 +966,22 @@ void LaneVectorizer::widenElementwise(OpBuilder &b, Operation *op, Value mask) {
       values[result] = wide;
       return;
     }
-    // The quotient's and the remainder's kinds: divui and remui, divsi and
-    // remsi.
-    auto partnerKind = [](Operation *of) -> StringRef {
-      return llvm::TypeSwitch<Operation *, StringRef>(of)
-          .Case([](arith::DivUIOp) { return "remui"; })
-          .Case([](arith::RemUIOp) { return "divui"; })
-          .Case([](arith::DivSIOp) { return "remsi"; })
-          .Case([](arith::RemSIOp) { return "divsi"; })
-          .Default([](Operation *) { return ""; });
+    // The remainder of a division of the same operands, or the division of
+    // a remainder: the same signedness, the other kind.
+    auto isSigned = [](Operation *of) {
+      return isa<arith::DivSIOp, arith::RemSIOp>(of);
+    };
+    auto isRemainder = [](Operation *of) {
+      return isa<arith::RemSIOp, arith::RemUIOp>(of);
     };
     Operation *partner = nullptr;
     for (Operation *next = op->getNextNode(); next && !partner;
          next = next->getNextNode())
-      if (next->getOperands() == op->getOperands() &&
-          next->getName().stripDialect() == partnerKind(op))
+      if (isa<arith::DivSIOp, arith::DivUIOp, arith::RemSIOp, arith::RemUIOp>(
+              next) &&
+          next->getOperands() == op->getOperands() &&
+          isSigned(next) == isSigned(op) &&
+          isRemainder(next) != isRemainder(op))
         partner = next;
     wide.parts.push_back(divideConsecutive(b, op, partner, mask));
     values[result] = wide;
