@@ -593,6 +593,13 @@ void ReferenceSession::readInStep(int32_t buffer, int64_t item, uint8_t *out) {
     // A flux pair's writer reads its reader's state at its local time.
     readLevels(buffer, item, out);
     return;
+  } else if (writer == levels.fluxWriter &&
+             running.component == levels.component &&
+             running.body == Body::Evaluate) {
+    // The reader of a pair reads its writer's latest value: computed when
+    // its block started the sub-step, for an item pair; held over the
+    // interface's step, for a flux pair (docs/Model.md, "Item pairs").
+    from = state.end.data();
   } else if (writer > running.component) {
     // A back edge: the writer has not advanced yet.
     from = state.begin.data();

@@ -282,8 +282,12 @@ struct InsertInterpolationPass
                                                      : Version::source);
 
     // A flux holds its writer's value over the whole step, and evaluate
-    // reads at the end of its sub-step, after T: always the target.
-    if (isa<FluxInterpAttr>(buffer.getInterpolation()) &&
+    // reads at the end of its sub-step, after T: always the target. So does
+    // the reader of an item pair: its writer evaluated the item when the
+    // item's block started the sub-step (docs/Model.md, "Item pairs").
+    ComponentOp producer = simulation.getWriter(buffer);
+    if ((isa<FluxInterpAttr>(buffer.getInterpolation()) ||
+         (producer && producer.getAdvance() == Advance::local_flux)) &&
         kind == BodyKind::Evaluate)
       return load(buffer, Version::target);
 

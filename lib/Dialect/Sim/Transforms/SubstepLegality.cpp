@@ -14,13 +14,16 @@
 // two time levels is an interpolation of the two: the pass records the
 // joined window as `local_window`, or says in the remark what prevents it.
 //
-// A flux pair (docs/Model.md, "Conservation") is recognised here too: the
-// first component of the schedule writes only `#sim.flux` buffers, one
-// component reads them all through windows and writes every buffer the
-// first one reads. The pass records the reader's window of the fluxes as
-// `flux_window` on the writer and widens the reader's `local_window` by
-// the reads of its own buffers through the fluxes; a remark on the writer
-// says that the two form a pair, or why they cannot.
+// Pairs are recognised here too. A flux pair (docs/Model.md,
+// "Conservation"): the first component of the schedule writes only
+// `#sim.flux` buffers, one component reads them all through windows and
+// writes every buffer the first one reads. An item pair ("Item pairs"): the
+// first component bounds the big step and writes values that one component
+// reads only at its own items, from the state that component writes (the
+// forces and the integrator of particles). The pass records the reader's
+// window of the values as `flux_window` on the writer and widens the
+// reader's `local_window` by the reads of its own buffers through them; a
+// remark on the writer says that the two form a pair, or why they cannot.
 //
 //===----------------------------------------------------------------------===//
 
@@ -86,7 +89,7 @@ struct SubstepLegalityPass
     for (ComponentOp component : analysis.getComponents())
       component.removeFluxWindowAttr();
     for (ComponentOp component : analysis.getComponents())
-      recordFluxPair(analysis, component);
+      recordPair(analysis, component);
     markAllAnalysesPreserved();
   }
 
@@ -96,44 +99,80 @@ struct SubstepLegalityPass
   }
 
   /// Records `flux_window` on `writer` and widens its reader's
-  /// `local_window` when the two form a flux pair; emits a remark that says
-  /// so, or why not, when `writer` writes a `#sim.flux` buffer.
-  void recordFluxPair(const DependencyAnalysis &analysis, ComponentOp writer) {
-    SmallVector<BufferOp> fluxes = analysis.getWrittenBuffers(writer);
+  /// `local_window` when the two form a pair; emits a remark that says so,
+  /// or why not, when `writer` writes a `#sim.flux` buffer, or when it is an
+  /// entry that bounds the big step and whose values one component reads.
+  void recordPair(const DependencyAnalysis &analysis, ComponentOp writer) {
+    SmallVector<BufferOp> outputs = analysis.getWrittenBuffers(writer);
     auto isFlux = [](BufferOp buffer) {
       return isa<FluxInterpAttr>(buffer.getInterpolation());
     };
-    if (!llvm::any_of(fluxes, isFlux))
-      return;
+    // A flux pair (docs/Model.md, "Conservation") or an item pair ("Item
+    // pairs"): the writer's values are then read only at the reader's own
+    // items, so each item's value steps with its block.
+    bool fluxPair = llvm::any_of(outputs, isFlux);
     StringRef name = writer.getSymName();
-    auto refuse = [&]() {
-      return explain(writer)
-             << "under lts @" << name
-             << " and the readers of its fluxes take the big step as under "
-                "hip: ";
-    };
-    for (BufferOp buffer : fluxes)
-      if (!isFlux(buffer)) {
-        refuse() << "it also writes @" << buffer.getSymName()
-                 << ", which is not #sim.flux; a flux writer writes only "
-                    "fluxes (move @"
-                 << buffer.getSymName() << " to another component)";
-        return;
-      }
-    for (BufferOp buffer : fluxes)
-      if (buffer.getBoundary() != fluxes.front().getBoundary()) {
-        refuse() << "its fluxes @" << fluxes.front().getSymName() << " and @"
-                 << buffer.getSymName()
-                 << " have different boundary rules; give them one";
-        return;
-      }
-    // The one component that reads the fluxes, and the offsets it reads
-    // them at.
+    ScheduleOp schedule = analysis.getSimulation().getScheduleOp();
+    bool isEntry = schedule && !schedule.getOrder().empty() &&
+                   cast<FlatSymbolRefAttr>(schedule.getOrder()[0]).getAttr() ==
+                       writer.getSymNameAttr();
+    // The one component that reads the writer's values, if there is one.
     ComponentOp reader;
+    bool oneReader = true;
+    for (ComponentOp component : analysis.getComponents())
+      for (const BufferAccess &access : analysis.getAccesses(component))
+        if (llvm::is_contained(outputs, access.buffer)) {
+          if (component == writer || (reader && reader != component))
+            oneReader = false;
+          reader = component;
+        }
+    if (!fluxPair) {
+      // Only the shape of a pair is worth a remark: the entry, whose
+      // num_steps bounds the big step, computes values that one component
+      // reads from the state that component alone writes.
+      if (!isEntry || !boundsBigStep(writer) || !reader || !oneReader)
+        return;
+      for (const BufferAccess &access : analysis.getAccesses(writer)) {
+        ComponentOp producer = analysis.getWriter(access.buffer);
+        if (producer && producer != reader)
+          return;
+      }
+    }
+    StringRef readerName = reader ? reader.getSymName() : StringRef();
+    auto refuse = [&]() {
+      InFlightDiagnostic remark = explain(writer);
+      if (fluxPair)
+        remark << "under lts @" << name
+               << " and the readers of its fluxes take the big step as under "
+                  "hip: ";
+      else
+        remark << "under lts @" << name << " and @" << readerName
+               << " form no pair, and @" << name
+               << "'s num_steps bounds the big step as under hip: ";
+      return remark;
+    };
+    if (fluxPair) {
+      for (BufferOp buffer : outputs)
+        if (!isFlux(buffer)) {
+          refuse() << "it also writes @" << buffer.getSymName()
+                   << ", which is not #sim.flux; a flux writer writes only "
+                      "fluxes (move @"
+                   << buffer.getSymName() << " to another component)";
+          return;
+        }
+      for (BufferOp buffer : outputs)
+        if (buffer.getBoundary() != outputs.front().getBoundary()) {
+          refuse() << "its fluxes @" << outputs.front().getSymName() << " and @"
+                   << buffer.getSymName()
+                   << " have different boundary rules; give them one";
+          return;
+        }
+    }
+    // The offsets the reader reads the values at.
     std::optional<AccessPattern> fluxWindow;
     for (ComponentOp component : analysis.getComponents())
       for (const BufferAccess &access : analysis.getAccesses(component)) {
-        if (!llvm::is_contained(fluxes, access.buffer))
+        if (!llvm::is_contained(outputs, access.buffer))
           continue;
         if (component == writer) {
           refuse() << "it reads its own flux @" << access.buffer.getSymName()
@@ -141,20 +180,20 @@ struct SubstepLegalityPass
                       "the component that reads them";
           return;
         }
-        if (reader && reader != component) {
-          refuse() << "both @" << reader.getSymName() << " and @"
-                   << component.getSymName()
+        if (component != reader) {
+          refuse() << "both @" << component.getSymName() << " and @"
+                   << reader.getSymName()
                    << " read its fluxes; a flux "
                       "pair has one reader, which updates the conserved "
                       "state";
           return;
         }
-        reader = component;
         if (access.body != BodyKind::Evaluate) {
           refuse() << "@" << component.getSymName() << " reads @"
                    << access.buffer.getSymName() << " in its "
-                   << stringifyBodyKind(access.body)
-                   << " body; read fluxes only in evaluate";
+                   << stringifyBodyKind(access.body) << " body; read "
+                   << (fluxPair ? "fluxes" : "@" + name.str() + "'s values")
+                   << " only in evaluate";
           return;
         }
         if (access.pattern.isGather()) {
@@ -164,6 +203,15 @@ struct SubstepLegalityPass
                       "interface must be known: read it through a window";
           return;
         }
+        if (!fluxPair && !access.pattern.isOwn()) {
+          refuse() << "@" << component.getSymName() << " reads @"
+                   << access.buffer.getSymName() << " at "
+                   << access.pattern.str() << "; read @"
+                   << access.buffer.getSymName()
+                   << " only at the item's own index, or make it #sim.flux "
+                      "so that its value holds over its writer's step";
+          return;
+        }
         fluxWindow =
             fluxWindow ? fluxWindow->join(access.pattern) : access.pattern;
       }
@@ -171,11 +219,7 @@ struct SubstepLegalityPass
       refuse() << "no component reads its fluxes";
       return;
     }
-    StringRef readerName = reader.getSymName();
-    ScheduleOp schedule = analysis.getSimulation().getScheduleOp();
-    if (!schedule || schedule.getOrder().empty() ||
-        cast<FlatSymbolRefAttr>(schedule.getOrder()[0]).getAttr() !=
-            writer.getSymNameAttr()) {
+    if (!isEntry) {
       refuse() << "it is not the first component of the step; name it "
                   "first in sim.schedule so that it reads @"
                << readerName << "'s state through the back edge";
@@ -201,7 +245,9 @@ struct SubstepLegalityPass
       if (access.pattern.isGather()) {
         refuse() << "it reads @" << buffer
                  << " through a gather; read it through a window so that "
-                    "the blocks an interface reads are known";
+                    "the blocks "
+                 << (fluxPair ? "an interface" : "an item of @" + name.str())
+                 << " reads are known";
         return;
       }
       InterpolationAttrInterface interp = access.buffer.getInterpolation();
@@ -247,22 +293,33 @@ struct SubstepLegalityPass
     // Under clamp, an interface read past an end of the range is the last
     // one again: a cell there takes a flux that no cell gives back, and the
     // scene's totals drift under every strategy.
-    if (fluxes.front().getBoundary() == Boundary::clamp && !fluxWindow->isOwn())
-      fluxes.front().emitRemark()
-          << "@" << fluxes.front().getSymName() << " has boundary(clamp): @"
+    if (fluxPair && outputs.front().getBoundary() == Boundary::clamp &&
+        !fluxWindow->isOwn())
+      outputs.front().emitRemark()
+          << "@" << outputs.front().getSymName() << " has boundary(clamp): @"
           << readerName << "'s reads at " << fluxWindow->str()
           << " past an end of the range take the last interface again, "
              "which no cell gives back, so a total of @"
           << readerName
           << "'s state is not conserved; boundary(zero) closes the ends, "
              "boundary(wrap) makes a ring";
-    explain(writer) << "@" << name << " and @" << readerName
-                    << " form a flux pair: under lts every interface of "
-                       "its fluxes steps with the coarsest block that "
-                       "reads it (at "
-                    << fluxWindow->str() << "), and @" << readerName
-                    << "'s blocks take local time steps (window "
-                    << window.str() << ")";
+    if (fluxPair)
+      explain(writer) << "@" << name << " and @" << readerName
+                      << " form a flux pair: under lts every interface of "
+                         "its fluxes steps with the coarsest block that "
+                         "reads it (at "
+                      << fluxWindow->str() << "), and @" << readerName
+                      << "'s blocks take local time steps (window "
+                      << window.str() << ")";
+    else
+      explain(writer) << "@" << name << " and @" << readerName
+                      << " form an item pair: under lts @" << name
+                      << " evaluates an item whenever its block starts a "
+                         "sub-step, so its num_steps no longer bounds the big "
+                         "step, and @"
+                      << readerName
+                      << "'s blocks take local time steps (window "
+                      << window.str() << ")";
   }
 
   /// A schedule that starts a step at another component and under which

@@ -110,6 +110,17 @@ def SimSubstepLegality
     every component and emits a remark that says why for every `grid_sync`
     verdict.
 
+    For `lts` (docs/Model.md, "Local time stepping") it records
+    `local_window` on a `grid_sync` component whose reads of its own buffers
+    at other items are windows of interpolable buffers, and recognises
+    pairs: a flux pair (the first component writes `#sim.flux` buffers that
+    one component reads through windows) and an item pair (the first
+    component bounds the big step and writes values that one component reads
+    only at its own items, such as forces and an integrator). It records
+    `flux_window` on the pair's writer and widens its reader's
+    `local_window`; a remark on the writer says that the two form a pair, or
+    which rule fails and what to change.
+
     With `remarks=false` the verdicts are recorded the same, and only the
     remarks that hold under every strategy are emitted (a flux buffer whose
     clamp boundary breaks conservation): the front end of `simple` and
@@ -119,7 +130,7 @@ def SimSubstepLegality
   }];
   let options = [
     Option<"remarks", "remarks", "bool", /*default=*/"true",
-           "Explain every grid_sync verdict and flux pair in a remark">,
+           "Explain every grid_sync verdict and pair in a remark">,
   ];
 }
 

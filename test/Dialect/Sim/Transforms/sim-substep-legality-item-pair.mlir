@@ -1,0 +1,465 @@
+// RUN: sim-opt %s --split-input-file --sim-substep-legality --verify-diagnostics | FileCheck %s
+
+// Item pairs (docs/Model.md, "Item pairs"): the first component of the
+// step bounds the big step and writes values that one component reads only
+// at its own items, from the state that component alone writes (a force
+// and an integrator). The pass records flux_window [0, 0] on the writer and
+// widens the reader's local_window, or says in a remark on the writer which
+// rule fails. Shapes that are no pair get no remark.
+
+// A pair: @Force reads @X at i-1..i+1 and writes @F, which @Integrate
+// reads at i. flux_window [0, 0] and local_window [-1, 1] on the writer,
+// local_window [-1, 1] on the reader (through the forces).
+
+// CHECK-LABEL: sim.simulation @pair
+// CHECK: sim.component @Force writes(@F) attributes {flux_window = array<i64: 0, 0>, local_window = array<i64: -1, 1>, sub_stepping = #sim<sub_stepping in_kernel>}
+// CHECK: sim.component @Integrate writes(@X, @V) attributes {local_window = array<i64: -1, 1>, sub_stepping = #sim<sub_stepping in_kernel>}
+
+sim.simulation @pair range(64) dt(1.0e-2 : f64) max_steps(4) {
+  sim.buffer @X : f64 init {
+  ^bb0(%i: index):
+    %c = arith.constant 1.0 : f64
+    sim.yield %c : f64
+  }
+  sim.buffer @V : f64 init {
+  ^bb0(%i: index):
+    %c = arith.constant 0.0 : f64
+    sim.yield %c : f64
+  }
+  sim.buffer @F : f64 init {
+  ^bb0(%i: index):
+    %c = arith.constant 0.0 : f64
+    sim.yield %c : f64
+  }
+  // expected-remark @+1 {{@Force and @Integrate form an item pair: under lts @Force evaluates an item whenever its block starts a sub-step, so its num_steps no longer bounds the big step, and @Integrate's blocks take local time steps (window i-1..i+1)}}
+  sim.component @Force writes(@F) num_steps {
+  ^bb0(%i: index, %t: i64):
+    %c4 = arith.constant 4 : i32
+    sim.yield %c4 : i32
+  } evaluate {
+  ^bb0(%i: index, %t: i64, %n: i32, %dt: f64):
+    %c1 = arith.constant 1 : index
+    %il = arith.subi %i, %c1 : index
+    %ir = arith.addi %i, %c1 : index
+    %xl = sim.read @X[%il] : f64
+    %xr = sim.read @X[%ir] : f64
+    %d = arith.subf %xr, %xl : f64
+    sim.yield %d : f64
+  }
+  sim.component @Integrate writes(@X, @V) num_steps {
+  ^bb0(%i: index, %t: i64):
+    %c2 = arith.constant 2 : i32
+    sim.yield %c2 : i32
+  } evaluate {
+  ^bb0(%i: index, %t: i64, %n: i32, %dt: f64):
+    %f = sim.read @F[%i] : f64
+    %x = sim.read @X[%i] : f64
+    %v = sim.read @V[%i] : f64
+    %v1 = math.fma %dt, %f, %v : f64
+    %x1 = math.fma %dt, %v1, %x : f64
+    sim.yield %x1, %v1 : f64, f64
+  }
+  sim.schedule [@Force, @Integrate] bounded_by [@Force]
+  sim.observe [@X]
+}
+
+// -----
+
+// The integrator reads a neighbour's force: a value that is no flux is
+// read only at the item's own index.
+
+// CHECK-LABEL: sim.simulation @neighbour_force
+// CHECK-NOT: flux_window
+// CHECK: sim.observe
+
+sim.simulation @neighbour_force range(64) dt(1.0e-2 : f64) max_steps(4) {
+  sim.buffer @X : f64 init {
+  ^bb0(%i: index):
+    %c = arith.constant 1.0 : f64
+    sim.yield %c : f64
+  }
+  sim.buffer @V : f64 init {
+  ^bb0(%i: index):
+    %c = arith.constant 0.0 : f64
+    sim.yield %c : f64
+  }
+  sim.buffer @F : f64 init {
+  ^bb0(%i: index):
+    %c = arith.constant 0.0 : f64
+    sim.yield %c : f64
+  }
+  // expected-remark @+1 {{under lts @Force and @Integrate form no pair, and @Force's num_steps bounds the big step as under hip: @Integrate reads @F at i-1; read @F only at the item's own index, or make it #sim.flux so that its value holds over its writer's step}}
+  sim.component @Force writes(@F) num_steps {
+  ^bb0(%i: index, %t: i64):
+    %c4 = arith.constant 4 : i32
+    sim.yield %c4 : i32
+  } evaluate {
+  ^bb0(%i: index, %t: i64, %n: i32, %dt: f64):
+    %c1 = arith.constant 1 : index
+    %il = arith.subi %i, %c1 : index
+    %ir = arith.addi %i, %c1 : index
+    %xl = sim.read @X[%il] : f64
+    %xr = sim.read @X[%ir] : f64
+    %d = arith.subf %xr, %xl : f64
+    sim.yield %d : f64
+  }
+  sim.component @Integrate writes(@X, @V) num_steps {
+  ^bb0(%i: index, %t: i64):
+    %c2 = arith.constant 2 : i32
+    sim.yield %c2 : i32
+  } evaluate {
+  ^bb0(%i: index, %t: i64, %n: i32, %dt: f64):
+    %c1 = arith.constant 1 : index
+    %il = arith.subi %i, %c1 : index
+    %f = sim.read @F[%il] : f64
+    %x = sim.read @X[%i] : f64
+    %v = sim.read @V[%i] : f64
+    %v1 = math.fma %dt, %f, %v : f64
+    %x1 = math.fma %dt, %v1, %x : f64
+    sim.yield %x1, %v1 : f64, f64
+  }
+  sim.schedule [@Force, @Integrate] bounded_by [@Force]
+  sim.observe [@X]
+}
+
+// -----
+
+// The integrator reads the force in its num_steps body, at T.
+
+// CHECK-LABEL: sim.simulation @force_in_num_steps
+// CHECK-NOT: flux_window
+// CHECK: sim.observe
+
+sim.simulation @force_in_num_steps range(64) dt(1.0e-2 : f64) max_steps(4) {
+  sim.buffer @X : f64 init {
+  ^bb0(%i: index):
+    %c = arith.constant 1.0 : f64
+    sim.yield %c : f64
+  }
+  sim.buffer @V : f64 init {
+  ^bb0(%i: index):
+    %c = arith.constant 0.0 : f64
+    sim.yield %c : f64
+  }
+  sim.buffer @F : f64 init {
+  ^bb0(%i: index):
+    %c = arith.constant 0.0 : f64
+    sim.yield %c : f64
+  }
+  // expected-remark @+1 {{under lts @Force and @Integrate form no pair, and @Force's num_steps bounds the big step as under hip: @Integrate reads @F in its num_steps body; read @Force's values only in evaluate}}
+  sim.component @Force writes(@F) num_steps {
+  ^bb0(%i: index, %t: i64):
+    %c4 = arith.constant 4 : i32
+    sim.yield %c4 : i32
+  } evaluate {
+  ^bb0(%i: index, %t: i64, %n: i32, %dt: f64):
+    %c1 = arith.constant 1 : index
+    %il = arith.subi %i, %c1 : index
+    %ir = arith.addi %i, %c1 : index
+    %xl = sim.read @X[%il] : f64
+    %xr = sim.read @X[%ir] : f64
+    %d = arith.subf %xr, %xl : f64
+    sim.yield %d : f64
+  }
+  sim.component @Integrate writes(@X, @V) num_steps {
+  ^bb0(%i: index, %t: i64):
+    %g = sim.read @F[%i] : f64
+    %n = arith.fptosi %g : f64 to i32
+    sim.yield %n : i32
+  } evaluate {
+  ^bb0(%i: index, %t: i64, %n: i32, %dt: f64):
+    %f = sim.read @F[%i] : f64
+    %x = sim.read @X[%i] : f64
+    %v = sim.read @V[%i] : f64
+    %v1 = math.fma %dt, %f, %v : f64
+    %x1 = math.fma %dt, %v1, %x : f64
+    sim.yield %x1, %v1 : f64, f64
+  }
+  sim.schedule [@Force, @Integrate] bounded_by [@Force]
+  sim.observe [@X]
+}
+
+// -----
+
+// The integrator has no num_steps: its blocks have no step of their own.
+
+// CHECK-LABEL: sim.simulation @no_reader_steps
+// CHECK-NOT: flux_window
+// CHECK: sim.observe
+
+sim.simulation @no_reader_steps range(64) dt(1.0e-2 : f64) max_steps(4) {
+  sim.buffer @X : f64 init {
+  ^bb0(%i: index):
+    %c = arith.constant 1.0 : f64
+    sim.yield %c : f64
+  }
+  sim.buffer @V : f64 init {
+  ^bb0(%i: index):
+    %c = arith.constant 0.0 : f64
+    sim.yield %c : f64
+  }
+  sim.buffer @F : f64 init {
+  ^bb0(%i: index):
+    %c = arith.constant 0.0 : f64
+    sim.yield %c : f64
+  }
+  // expected-remark @+1 {{under lts @Force and @Integrate form no pair, and @Force's num_steps bounds the big step as under hip: @Integrate has no num_steps, so its blocks have no step of their own}}
+  sim.component @Force writes(@F) num_steps {
+  ^bb0(%i: index, %t: i64):
+    %c4 = arith.constant 4 : i32
+    sim.yield %c4 : i32
+  } evaluate {
+  ^bb0(%i: index, %t: i64, %n: i32, %dt: f64):
+    %c1 = arith.constant 1 : index
+    %il = arith.subi %i, %c1 : index
+    %ir = arith.addi %i, %c1 : index
+    %xl = sim.read @X[%il] : f64
+    %xr = sim.read @X[%ir] : f64
+    %d = arith.subf %xr, %xl : f64
+    sim.yield %d : f64
+  }
+  sim.component @Integrate writes(@X, @V) evaluate {
+  ^bb0(%i: index, %t: i64, %n: i32, %dt: f64):
+    %f = sim.read @F[%i] : f64
+    %x = sim.read @X[%i] : f64
+    %v = sim.read @V[%i] : f64
+    %v1 = math.fma %dt, %f, %v : f64
+    %x1 = math.fma %dt, %v1, %x : f64
+    sim.yield %x1, %v1 : f64, f64
+  }
+  sim.schedule [@Force, @Integrate] bounded_by [@Force]
+  sim.observe [@X]
+}
+
+// -----
+
+// The force reads the positions through a gather.
+
+// CHECK-LABEL: sim.simulation @gathered_positions
+// CHECK-NOT: flux_window
+// CHECK: sim.observe
+
+sim.simulation @gathered_positions range(64) dt(1.0e-2 : f64) max_steps(4) {
+  sim.buffer @X : f64 init {
+  ^bb0(%i: index):
+    %c = arith.constant 1.0 : f64
+    sim.yield %c : f64
+  }
+  sim.buffer @V : f64 init {
+  ^bb0(%i: index):
+    %c = arith.constant 0.0 : f64
+    sim.yield %c : f64
+  }
+  sim.buffer @F : f64 init {
+  ^bb0(%i: index):
+    %c = arith.constant 0.0 : f64
+    sim.yield %c : f64
+  }
+  // expected-remark @+1 {{under lts @Force and @Integrate form no pair, and @Force's num_steps bounds the big step as under hip: it reads @X through a gather; read it through a window so that the blocks an item of @Force reads are known}}
+  sim.component @Force writes(@F) num_steps {
+  ^bb0(%i: index, %t: i64):
+    %c4 = arith.constant 4 : i32
+    sim.yield %c4 : i32
+  } evaluate {
+  ^bb0(%i: index, %t: i64, %n: i32, %dt: f64):
+    %c1 = arith.constant 1 : index
+    %il = arith.subi %i, %c1 : index
+    %ir = arith.addi %i, %c1 : index
+    %g = sim.read @V[%i] : f64
+    %gi = arith.fptosi %g : f64 to i64
+    %gx = arith.index_cast %gi : i64 to index
+    %xl = sim.read @X[%gx] : f64
+    %xr = sim.read @X[%ir] : f64
+    %d = arith.subf %xr, %xl : f64
+    sim.yield %d : f64
+  }
+  sim.component @Integrate writes(@X, @V) num_steps {
+  ^bb0(%i: index, %t: i64):
+    %c2 = arith.constant 2 : i32
+    sim.yield %c2 : i32
+  } evaluate {
+  ^bb0(%i: index, %t: i64, %n: i32, %dt: f64):
+    %f = sim.read @F[%i] : f64
+    %x = sim.read @X[%i] : f64
+    %v = sim.read @V[%i] : f64
+    %v1 = math.fma %dt, %f, %v : f64
+    %x1 = math.fma %dt, %v1, %x : f64
+    sim.yield %x1, %v1 : f64, f64
+  }
+  sim.schedule [@Force, @Integrate] bounded_by [@Force]
+  sim.observe [@X]
+}
+
+// -----
+
+// The positions have no interpolation: a neighbour ahead in time has no
+// value between its two time levels.
+
+// CHECK-LABEL: sim.simulation @none_positions
+// CHECK-NOT: flux_window
+// CHECK: sim.observe
+
+sim.simulation @none_positions range(64) dt(1.0e-2 : f64) max_steps(4) {
+  sim.buffer @X : f64 interp(none) init {
+  ^bb0(%i: index):
+    %c = arith.constant 1.0 : f64
+    sim.yield %c : f64
+  }
+  sim.buffer @V : f64 init {
+  ^bb0(%i: index):
+    %c = arith.constant 0.0 : f64
+    sim.yield %c : f64
+  }
+  sim.buffer @F : f64 init {
+  ^bb0(%i: index):
+    %c = arith.constant 0.0 : f64
+    sim.yield %c : f64
+  }
+  // expected-remark @+1 {{under lts @Force and @Integrate form no pair, and @Force's num_steps bounds the big step as under hip: it reads @X, whose value between two time levels is not an interpolation of the two; use #sim.linear or #sim.cubic}}
+  sim.component @Force writes(@F) num_steps {
+  ^bb0(%i: index, %t: i64):
+    %c4 = arith.constant 4 : i32
+    sim.yield %c4 : i32
+  } evaluate {
+  ^bb0(%i: index, %t: i64, %n: i32, %dt: f64):
+    %c1 = arith.constant 1 : index
+    %il = arith.subi %i, %c1 : index
+    %ir = arith.addi %i, %c1 : index
+    %xl = sim.read @X[%il] : f64
+    %xr = sim.read @X[%ir] : f64
+    %d = arith.subf %xr, %xl : f64
+    sim.yield %d : f64
+  }
+  sim.component @Integrate writes(@X, @V) num_steps {
+  ^bb0(%i: index, %t: i64):
+    %c2 = arith.constant 2 : i32
+    sim.yield %c2 : i32
+  } evaluate {
+  ^bb0(%i: index, %t: i64, %n: i32, %dt: f64):
+    %f = sim.read @F[%i] : f64
+    %x = sim.read @X[%i] : f64
+    %v = sim.read @V[%i] : f64
+    %v1 = math.fma %dt, %f, %v : f64
+    %x1 = math.fma %dt, %v1, %x : f64
+    sim.yield %x1, %v1 : f64, f64
+  }
+  sim.schedule [@Force, @Integrate] bounded_by [@Force]
+  sim.observe [@X]
+}
+
+// -----
+
+// Without num_steps the force bounds nothing: no pair and no remark (the
+// integrator sub-steps per group as under hip).
+
+// CHECK-LABEL: sim.simulation @force_bounds_nothing
+// CHECK-NOT: flux_window
+// CHECK: sim.observe
+
+sim.simulation @force_bounds_nothing range(64) dt(1.0e-2 : f64) max_steps(4) {
+  sim.buffer @X : f64 init {
+  ^bb0(%i: index):
+    %c = arith.constant 1.0 : f64
+    sim.yield %c : f64
+  }
+  sim.buffer @V : f64 init {
+  ^bb0(%i: index):
+    %c = arith.constant 0.0 : f64
+    sim.yield %c : f64
+  }
+  sim.buffer @F : f64 init {
+  ^bb0(%i: index):
+    %c = arith.constant 0.0 : f64
+    sim.yield %c : f64
+  }
+  sim.component @Force writes(@F) evaluate {
+  ^bb0(%i: index, %t: i64, %n: i32, %dt: f64):
+    %c1 = arith.constant 1 : index
+    %il = arith.subi %i, %c1 : index
+    %ir = arith.addi %i, %c1 : index
+    %xl = sim.read @X[%il] : f64
+    %xr = sim.read @X[%ir] : f64
+    %d = arith.subf %xr, %xl : f64
+    sim.yield %d : f64
+  }
+  sim.component @Integrate writes(@X, @V) num_steps {
+  ^bb0(%i: index, %t: i64):
+    %c2 = arith.constant 2 : i32
+    sim.yield %c2 : i32
+  } evaluate {
+  ^bb0(%i: index, %t: i64, %n: i32, %dt: f64):
+    %f = sim.read @F[%i] : f64
+    %x = sim.read @X[%i] : f64
+    %v = sim.read @V[%i] : f64
+    %v1 = math.fma %dt, %f, %v : f64
+    %x1 = math.fma %dt, %v1, %x : f64
+    sim.yield %x1, %v1 : f64, f64
+  }
+  sim.schedule [@Force, @Integrate]
+  sim.observe [@X]
+}
+
+// -----
+
+// A third component reads the forces too: no pair shape, no remark.
+
+// CHECK-LABEL: sim.simulation @two_readers
+// CHECK-NOT: flux_window
+// CHECK: sim.observe
+
+sim.simulation @two_readers range(64) dt(1.0e-2 : f64) max_steps(4) {
+  sim.buffer @X : f64 init {
+  ^bb0(%i: index):
+    %c = arith.constant 1.0 : f64
+    sim.yield %c : f64
+  }
+  sim.buffer @V : f64 init {
+  ^bb0(%i: index):
+    %c = arith.constant 0.0 : f64
+    sim.yield %c : f64
+  }
+  sim.buffer @F : f64 init {
+  ^bb0(%i: index):
+    %c = arith.constant 0.0 : f64
+    sim.yield %c : f64
+  }
+  sim.buffer @M : f64 init {
+  ^bb0(%i: index):
+    %c = arith.constant 0.0 : f64
+    sim.yield %c : f64
+  }
+  sim.component @Force writes(@F) num_steps {
+  ^bb0(%i: index, %t: i64):
+    %c4 = arith.constant 4 : i32
+    sim.yield %c4 : i32
+  } evaluate {
+  ^bb0(%i: index, %t: i64, %n: i32, %dt: f64):
+    %c1 = arith.constant 1 : index
+    %il = arith.subi %i, %c1 : index
+    %ir = arith.addi %i, %c1 : index
+    %xl = sim.read @X[%il] : f64
+    %xr = sim.read @X[%ir] : f64
+    %d = arith.subf %xr, %xl : f64
+    sim.yield %d : f64
+  }
+  sim.component @Integrate writes(@X, @V) num_steps {
+  ^bb0(%i: index, %t: i64):
+    %c2 = arith.constant 2 : i32
+    sim.yield %c2 : i32
+  } evaluate {
+  ^bb0(%i: index, %t: i64, %n: i32, %dt: f64):
+    %f = sim.read @F[%i] : f64
+    %x = sim.read @X[%i] : f64
+    %v = sim.read @V[%i] : f64
+    %v1 = math.fma %dt, %f, %v : f64
+    %x1 = math.fma %dt, %v1, %x : f64
+    sim.yield %x1, %v1 : f64, f64
+  }
+  sim.component @Monitor writes(@M) evaluate {
+  ^bb0(%i: index, %t: i64, %n: i32, %dt: f64):
+    %f = sim.read @F[%i] : f64
+    sim.yield %f : f64
+  }
+  sim.schedule [@Force, @Integrate, @Monitor] bounded_by [@Force]
+  sim.observe [@X]
+}
