@@ -4,7 +4,9 @@
 // never change (invariant_levels: 1 at items 64..95, 8 elsewhere), so its
 // kernels keep the levels of the first big step longer than one base
 // step, which is 2 here: kept levels must not be capped at that step
-// (local-steps.test).
+// (local-steps.test). @Diffuse reads @G at a neighbour, so the two form
+// no item pair (docs/Model.md, "Item pairs") and @Gate keeps bounding the
+// big step under lts.
 sim.simulation @growing range(200) dt(1.0e-2 : f32) max_steps(8) {
   sim.buffer @U : f32 interp(#sim.linear) init {
   ^bb0(%i: index):
@@ -54,7 +56,7 @@ sim.simulation @growing range(200) dt(1.0e-2 : f32) max_steps(8) {
     %u = sim.read @U[%i] : f32
     %ul = sim.read @U[%il] : f32
     %ur = sim.read @U[%ir] : f32
-    %g = sim.read @G[%i] : f32
+    %g = sim.read @G[%ir] : f32
     %s = arith.addf %ul, %ur : f32
     %two = arith.constant 2.0 : f32
     %u2 = arith.mulf %u, %two : f32
