@@ -120,6 +120,8 @@ void mlir::sim::buildSimGPUToPTXPipeline(OpPassManager &pm,
     unroll.factor = target.unroll;
     kernels.addPass(createSimGPUUnrollLoops(unroll));
   }
+  // No conversion lowers math.ipowi: multiplications, as on the CPU.
+  kernels.addPass(createSimExpandIntegerPowers());
   kernels.addPass(createSCFToControlFlowPass());
   kernels.addPass(memref::createExpandStridedMetadataPass());
   ConvertGpuOpsToNVVMOpsOptions toNVVM;

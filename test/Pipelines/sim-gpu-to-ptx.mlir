@@ -25,6 +25,7 @@
 // PIPELINE-NEXT:   nvvm-attach-target{O=3 chip=sm_90 {{.*}}features= {{.*}}}
 // PIPELINE-NEXT:   gpu.module(
 // PIPELINE-NEXT:     sim-fused-multiply-add
+// PIPELINE-NEXT:     sim-expand-integer-powers
 // PIPELINE-NEXT:     convert-scf-to-cf
 // PIPELINE-NEXT:     expand-strided-metadata
 // PIPELINE-NEXT:     convert-gpu-to-nvvm{{{.*}} has-redux=true {{.*}}use-bare-ptr-memref-call-conv=false}

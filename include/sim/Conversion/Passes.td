@@ -225,6 +225,27 @@ def SimVectorizeLanes : Pass<"sim-vectorize-lanes"> {
   ];
 }
 
+def SimExpandIntegerPowers : Pass<"sim-expand-integer-powers"> {
+  let summary = "Expand math.ipowi into multiplications (every backend)";
+  let description = [{
+    No upstream conversion lowers `math.ipowi` to the LLVM or NVVM
+    dialects, libm or libdevice. This pass writes it out in `arith` ops:
+    exponentiation by squaring over every bit of the exponent, unrolled and
+    selected per bit, so the result is straight-line code (the CPU lanes
+    widen it; the GPU takes no branch). Multiplications wrap as
+    `arith.muli` does. A negative exponent `p` gives `1 / base^-p` in
+    integers: 1 for base 1, `(-1)^p` for base -1 and 0 for every other base
+    (0 also for base 0, which C would divide by zero). The CPU kernels, the
+    reference functions (lib/Target/CPU/CPUKernels.cpp) and the GPU kernels
+    (lib/Pipelines/GPUToPTX.cpp) all run it, so they agree bit for bit.
+
+    ```
+    sim-opt kernels.mlir --sim-expand-integer-powers
+    ```
+  }];
+  let dependentDialects = ["::mlir::arith::ArithDialect"];
+}
+
 def SimExpandTanh : Pass<"sim-expand-tanh"> {
   let summary = "Expand f32 math.tanh into glibc's tanhf algorithm in "
                 "arithmetic (CPU kernels)";

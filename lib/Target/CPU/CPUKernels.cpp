@@ -117,6 +117,8 @@ compileSharedObjects(OwningOpRef<ModuleOp> module, Location loc,
     // differ), from a copy of the module.
     OwningOpRef<ModuleOp> copy(cast<ModuleOp>((*module)->clone()));
     PassManager pm(copy->getContext());
+    // No conversion lowers math.ipowi: multiplications, as on the GPU.
+    pm.addPass(createSimExpandIntegerPowers());
     if (kernels && lanesFor(isa) > 1) {
       // A group's lanes side by side in SIMD registers, while the kernels
       // are still scf and vector ops.
@@ -134,9 +136,12 @@ compileSharedObjects(OwningOpRef<ModuleOp> module, Location loc,
     // vector.fma rounds once here as on the GPU (not llvm.intr.fmuladd).
     pm.addPass(createSimFusedMultiplyAdd());
     pm.addPass(createSCFToControlFlowPass());
-    pm.addPass(createConvertVectorToLLVMPass());
+    // Math ops with an LLVM intrinsic become it; the rest become libm calls,
+    // one per element of a widened value: that split makes vector.extract
+    // and vector.insert ops, so it runs before the vector ops are lowered.
     pm.addPass(createConvertMathToLLVMPass());
     pm.addPass(createConvertMathToLibmPass());
+    pm.addPass(createConvertVectorToLLVMPass());
     pm.addPass(memref::createExpandStridedMetadataPass());
     pm.addPass(createFinalizeMemRefToLLVMConversionPass());
     pm.addPass(createArithToLLVMConversionPass());

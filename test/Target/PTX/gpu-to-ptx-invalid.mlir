@@ -42,11 +42,12 @@ module {
 //--- no-lowering.mlir
 module attributes {gpu.container_module} {
   gpu.module @kernels {
-    gpu.func @power(%a: memref<?xi32>) kernel {
+    gpu.func @reduce(%a: memref<?xi32>) kernel {
       %c0 = arith.constant 0 : index
       %x = memref.load %a[%c0] : memref<?xi32>
-      // expected-error @+1 {{'math.ipowi' op was not lowered to the LLVM and NVVM dialects; the PTX pipeline has no lowering for it}}
-      %y = math.ipowi %x, %x : i32
+      %v = vector.broadcast %x : i32 to vector<4xi32>
+      // expected-error @+1 {{'vector.multi_reduction' op was not lowered to the LLVM and NVVM dialects; the PTX pipeline has no lowering for it}}
+      %y = vector.multi_reduction <add>, %v, %x [0] : vector<4xi32> to i32
       memref.store %y, %a[%c0] : memref<?xi32>
       gpu.return
     }
