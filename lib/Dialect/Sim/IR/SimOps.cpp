@@ -19,6 +19,7 @@
 #include "mlir/IR/Diagnostics.h"
 #include "mlir/IR/Matchers.h"
 #include "mlir/IR/OpImplementation.h"
+#include "mlir/IR/TypeUtilities.h"
 #include "llvm/ADT/DenseMap.h"
 #include "llvm/ADT/STLExtras.h"
 #include "llvm/ADT/SetVector.h"
@@ -312,6 +313,36 @@ static LogicalResult verifyVectorPosition(Operation *op,
   return success();
 }
 
+/// The scalar types every backend computes with: integers of at most 64
+/// bits (and index), f16, f32 and f64. Wider integers and other floats
+/// (f80, f128, the 8-bit floats) make LLVM's back ends stop with a fatal
+/// error, and bf16 conversions need compiler-rt routines that the CPU
+/// kernels do not link.
+static LogicalResult verifyScalarTypes(Region &body) {
+  auto unsupported = [](Type type) -> Type {
+    Type scalar = getElementTypeOrSelf(type);
+    if (auto integer = dyn_cast<IntegerType>(scalar))
+      return integer.getWidth() > 64 ? scalar : Type();
+    if (isa<FloatType>(scalar) &&
+        !isa<Float16Type, Float32Type, Float64Type>(scalar))
+      return scalar;
+    return Type();
+  };
+  WalkResult result = body.walk([&](Operation *op) {
+    for (TypeRange types :
+         {TypeRange(op->getResultTypes()), TypeRange(op->getOperandTypes())})
+      for (Type type : types)
+        if (Type scalar = unsupported(type)) {
+          op->emitOpError() << "computes with " << scalar
+                            << ", which no backend supports; use integers "
+                               "of at most 64 bits, f16, f32 or f64";
+          return WalkResult::interrupt();
+        }
+    return WalkResult::advance();
+  });
+  return failure(result.wasInterrupted());
+}
+
 /// A body must compute defined values: what a poison value turns into is up
 /// to each backend, so strategies and backends could not be compared. The
 /// constructs that visibly make one are errors at their operation:
@@ -542,10 +573,10 @@ LogicalResult SimulationOp::verifyRegions() {
     return diag;
   }
 
-  // Bodies compute defined values.
+  // Bodies compute defined values, in types every backend has.
   for (Operation &op : body)
     for (Region &region : op.getRegions())
-      if (failed(verifyNoPoison(region)))
+      if (failed(verifyScalarTypes(region)) || failed(verifyNoPoison(region)))
         return failure();
   return success();
 }
