@@ -147,7 +147,13 @@ public:
 
   AccessPattern classify(Value index, Value item) {
     std::optional<OffsetRange> range = offsetFromItem(index, item, 0);
-    if (!range)
+    // An offset beyond 32 bits is no neighbourhood: `%i + c` may wrap
+    // around the 64-bit index, and the halos, caches and level reaches
+    // sized from the window would overflow. A gather computes the index as
+    // the scalar code does, on every backend.
+    constexpr int64_t kLargestOffset = std::numeric_limits<int32_t>::max();
+    if (!range || range->first < -kLargestOffset ||
+        range->second > kLargestOffset)
       return AccessPattern::gather();
     return AccessPattern::window(range->first, range->second);
   }

@@ -823,6 +823,12 @@ Value LaneVectorizer::contiguousCheck(OpBuilder &b, Value original, Value index,
                                                 : arith::CmpIPredicate::slt,
                               last, scalar(run.high));
     Value inside = arith::AndIOp::create(b, loc, above, below);
+    // The run does not wrap around the 64-bit integers inside the chunk
+    // (`%i + c` near the largest index): else the lanes past the wrap are
+    // far below the first, however the ends compare.
+    Value noWrap =
+        arith::CmpIOp::create(b, loc, arith::CmpIPredicate::sge, last, first);
+    inside = arith::AndIOp::create(b, loc, inside, noWrap);
     if (mask)
       inside = arith::AndIOp::create(b, loc, inside, allLanes(b, mask));
     return inside;
