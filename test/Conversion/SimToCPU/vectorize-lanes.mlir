@@ -506,7 +506,8 @@ func.func @block_index_loads(%levels: memref<?xi64>, %out: memref<?xi64>, %half:
 // The boundary rules on item + offset (clamp: minsi(maxsi(x, 0), last);
 // zero: select(x < range, x, 0); wrap: scf.if (x < range) { x } else
 // {...}), shifted by a uniform offset: one wide load when the chunk's first
-// and last lanes lie inside, decided by two scalar compares on the first
+// and last lanes lie inside and the run does not wrap around the 64-bit
+// integers between them, decided by three scalar compares on the first
 // lane instead of comparing every lane; else the gathers. An item shifted
 // by a uniform value (minus the block's first item) stays consecutive: its
 // store is wide without a check.
@@ -518,7 +519,9 @@ func.func @block_index_loads(%levels: memref<?xi64>, %out: memref<?xi64>, %half:
 // CHECK:           %[[LAST:.*]] = arith.addi %[[FIRST]], %{{.*}} : i64
 // CHECK:           %[[ABOVE:.*]] = arith.cmpi sge, %[[FIRST]], %{{.*}} : i64
 // CHECK:           %[[BELOW:.*]] = arith.cmpi sle, %[[LAST]], %{{.*}} : i64
-// CHECK:           %[[INSIDE:.*]] = arith.andi %[[ABOVE]], %[[BELOW]] : i1
+// CHECK:           %[[BOTH:.*]] = arith.andi %[[ABOVE]], %[[BELOW]] : i1
+// CHECK:           %[[NOWRAP:.*]] = arith.cmpi sge, %[[LAST]], %[[FIRST]] : i64
+// CHECK:           %[[INSIDE:.*]] = arith.andi %[[BOTH]], %[[NOWRAP]] : i1
 // CHECK:           scf.if %[[INSIDE]] -> (vector<8xf32>) {
 // CHECK:             llvm.load %{{.*}} : !llvm.ptr -> vector<8xf32>
 // CHECK:           } else {
