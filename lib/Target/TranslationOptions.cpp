@@ -38,8 +38,7 @@ TranslationOptions::TranslationOptions()
                getStrategyOptionValues(), llvm::cl::cat(category)),
       strategies("sim-strategies",
                  llvm::cl::desc("--sim-to-bundle: the strategies to compile "
-                                "for, comma-separated (default: all five; "
-                                "without lts with --sim-distributed)"),
+                                "for, comma-separated (default: all five)"),
                  llvm::cl::CommaSeparated, getStrategyOptionValues(),
                  llvm::cl::cat(category)),
       groupSize("sim-group-size",
