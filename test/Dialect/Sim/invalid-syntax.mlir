@@ -80,10 +80,21 @@ sim.simulation @s range(16) dt(1.0 : f32) max_steps(1) {
 
 // -----
 
-// The interp clause comes before the boundary clause.
+// Each clause at most once (either order is fine).
 sim.simulation @s range(16) dt(1.0 : f32) max_steps(1) {
-  // expected-error @+1 {{custom op 'sim.buffer' expected 'init'}}
-  sim.buffer @B : f32 boundary(wrap) interp(#sim.linear) init {
+  // expected-error @+1 {{the buffer has two boundary clauses}}
+  sim.buffer @B : f32 boundary(wrap) interp(#sim.linear) boundary(zero) init {
+  ^bb0(%i: index):
+    %c = arith.constant 0.0 : f32
+    sim.yield %c : f32
+  }
+}
+
+// -----
+
+sim.simulation @s range(16) dt(1.0 : f32) max_steps(1) {
+  // expected-error @+1 {{the buffer has two interp clauses}}
+  sim.buffer @B : f32 interp(#sim.cubic) interp(#sim.linear) init {
   ^bb0(%i: index):
     %c = arith.constant 0.0 : f32
     sim.yield %c : f32

@@ -47,8 +47,9 @@ sim.simulation @params range(16) dt(1.0 : f32) max_steps(1) {
 // CHECK:         sim.buffer @Cub : vector<4xf32> interp(#sim.cubic) boundary(wrap) init {
 // CHECK:         sim.buffer @Her : f32 interp(#sim.hermite<@Dflt>) boundary(zero) init {
 // CHECK:         sim.buffer @Dflt : f32 init {
+// CHECK:         sim.buffer @Rev : f32 interp(#sim.cubic) boundary(zero) init {
 // CHECK:         sim.buffer @Clamp : f64 init {
-// CHECK:         sim.component @Step writes(@Lin, @Cub, @Her, @Dflt, @Clamp) evaluate {
+// CHECK:         sim.component @Step writes(@Lin, @Cub, @Her, @Dflt, @Rev, @Clamp) evaluate {
 sim.simulation @buffers range(16) dt(1.0 : f32) max_steps(1) {
   sim.buffer @Lin : f32 interp(#sim.linear) init {
   ^bb0(%i: index):
@@ -70,19 +71,26 @@ sim.simulation @buffers range(16) dt(1.0 : f32) max_steps(1) {
     %c = arith.constant 3.0 : f32
     sim.yield %c : f32
   }
+  // The clauses in the other order print in the usual one.
+  sim.buffer @Rev : f32 boundary(zero) interp(#sim.cubic) init {
+  ^bb0(%i: index):
+    %c = arith.constant 5.0 : f32
+    sim.yield %c : f32
+  }
   sim.buffer @Clamp : f64 boundary(clamp) init {
   ^bb0(%i: index):
     %c = arith.constant 4.0 : f64
     sim.yield %c : f64
   }
-  sim.component @Step writes(@Lin, @Cub, @Her, @Dflt, @Clamp) evaluate {
+  sim.component @Step writes(@Lin, @Cub, @Her, @Dflt, @Rev, @Clamp) evaluate {
   ^bb0(%i: index, %t: i64, %n: i32, %dt: f32):
     %a = sim.read @Lin[%i] : f32
     %b = sim.read @Cub[%i] : vector<4xf32>
     %c = sim.read @Her[%i] : f32
     %d = sim.read @Dflt[%i] : f32
+    %r = sim.read @Rev[%i] : f32
     %e = sim.read @Clamp[%i] : f64
-    sim.yield %a, %b, %c, %d, %e : f32, vector<4xf32>, f32, f32, f64
+    sim.yield %a, %b, %c, %d, %r, %e : f32, vector<4xf32>, f32, f32, f32, f64
   }
 }
 

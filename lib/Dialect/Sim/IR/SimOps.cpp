@@ -173,10 +173,9 @@ static void printOptionalReadRole(OpAsmPrinter &printer, Operation *,
 
 /// An optional `interp(<attribute>)` clause; the attribute must implement
 /// InterpolationAttrInterface. `interp(none)` is #sim.none.
+/// `(...)` after `interp`.
 static ParseResult parseInterpClause(OpAsmParser &parser,
                                      InterpolationAttrInterface &interp) {
-  if (failed(parser.parseOptionalKeyword("interp")))
-    return success();
   if (parser.parseLParen())
     return failure();
   if (succeeded(parser.parseOptionalKeyword("none"))) {
@@ -230,10 +229,9 @@ static void printLoadVersion(OpAsmPrinter &printer, Operation *,
 }
 
 /// An optional `boundary(<rule>)` clause; `clamp` (the default) is elided.
+/// `(...)` after `boundary`.
 static ParseResult parseBoundaryClause(OpAsmParser &parser,
                                        BoundaryAttr &boundary) {
-  if (failed(parser.parseOptionalKeyword("boundary")))
-    return success();
   if (parser.parseLParen())
     return failure();
   StringRef keyword;
@@ -254,6 +252,39 @@ static void printBoundaryClause(OpAsmPrinter &printer, Operation *,
                                 BoundaryAttr boundary) {
   if (boundary && boundary.getValue() != Boundary::clamp)
     printer << " boundary(" << stringifyBoundary(boundary.getValue()) << ")";
+}
+
+/// A buffer's optional `interp(...)` and `boundary(...)`, in either order,
+/// each at most once; printed interp first.
+static ParseResult parseBufferClauses(OpAsmParser &parser,
+                                      InterpolationAttrInterface &interp,
+                                      BoundaryAttr &boundary) {
+  bool seenInterp = false, seenBoundary = false;
+  while (true) {
+    SMLoc loc = parser.getCurrentLocation();
+    if (succeeded(parser.parseOptionalKeyword("interp"))) {
+      if (seenInterp)
+        return parser.emitError(loc) << "the buffer has two interp clauses";
+      seenInterp = true;
+      if (parseInterpClause(parser, interp))
+        return failure();
+    } else if (succeeded(parser.parseOptionalKeyword("boundary"))) {
+      if (seenBoundary)
+        return parser.emitError(loc) << "the buffer has two boundary clauses";
+      seenBoundary = true;
+      if (parseBoundaryClause(parser, boundary))
+        return failure();
+    } else {
+      return success();
+    }
+  }
+}
+
+static void printBufferClauses(OpAsmPrinter &printer, Operation *op,
+                               InterpolationAttrInterface interp,
+                               BoundaryAttr boundary) {
+  printInterpClause(printer, op, interp);
+  printBoundaryClause(printer, op, boundary);
 }
 
 #define GET_OP_CLASSES

@@ -37,6 +37,14 @@ LogicalResult mlir::sim::checkInterpolable(ReadOp read, BufferOp buffer,
   if (buffer.getInterpolation().isInterpolable() ||
       !isSubSteppingStrategy(strategy))
     return success();
+  // The reader of a pair under lts reads its writer's value as it is (the
+  // writer evaluated the item when its block started the sub-step): no
+  // intermediate time (docs/Model.md, "Item pairs").
+  ComponentOp writer =
+      component->getParentOfType<SimulationOp>().getWriter(buffer);
+  if (strategy == Strategy::lts && kind == BodyKind::Evaluate && writer &&
+      writer.getFluxWindowAttr())
+    return success();
   InFlightDiagnostic diag =
       read.emitOpError()
       << "reads @" << buffer.getSymName()

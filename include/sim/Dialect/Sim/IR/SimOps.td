@@ -269,8 +269,8 @@ def Sim_BufferOp : Sim_Op<"buffer", [
                        UnitAttr:$replicated, UnitAttr:$snapshot_ghosts);
   let regions = (region SizedRegion<1>:$init, MaxSizedRegion<1>:$exact);
   let assemblyFormat = [{
-    $sym_name `:` $element_type `` custom<InterpClause>($interp)
-    `` custom<BoundaryClause>($boundary) attr-dict-with-keyword
+    $sym_name `:` $element_type `` custom<BufferClauses>($interp, $boundary)
+    attr-dict-with-keyword
     `init` $init (`exact` $exact^)?
   }];
   let hasVerifier = 1;
