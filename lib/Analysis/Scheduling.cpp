@@ -273,6 +273,20 @@ mlir::sim::computeSchedule(const DependencyAnalysis &analysis,
   return Schedule(std::move(order));
 }
 
+/// Whether `component` reads a buffer that the writer of a pair (a
+/// recorded flux_window) writes.
+static bool readsPairWriter(ComponentOp component) {
+  auto simulation = component->getParentOfType<SimulationOp>();
+  WalkResult found = component->walk([&](ReadOp read) {
+    BufferOp buffer = simulation.lookupBuffer(read.getBufferAttr());
+    ComponentOp writer = buffer ? simulation.getWriter(buffer) : ComponentOp();
+    return writer && writer != component && writer.getFluxWindowAttr()
+               ? WalkResult::interrupt()
+               : WalkResult::advance();
+  });
+  return found.wasInterrupted();
+}
+
 bool mlir::sim::boundsBigStep(ComponentOp component) {
   ScheduleOp schedule =
       component->getParentOfType<SimulationOp>().getScheduleOp();
@@ -313,6 +327,11 @@ FailureOr<Stepping> mlir::sim::decideStepping(ComponentOp component,
   // its reader's slots, so its estimate no longer bounds the big step.
   if (strategy == Strategy::lts && component.getFluxWindowAttr())
     return Stepping{Advance::local_flux, false};
+  // lts: the reader of a pair takes local steps even without num_steps of
+  // its own: its writer's estimates bound its blocks.
+  if (strategy == Strategy::lts && component.getLocalWindowAttr() &&
+      !hasNumSteps && readsPairWriter(component))
+    return Stepping{Advance::local_steps, false};
   bool bounding = boundsBigStep(component);
   if (!hasNumSteps || bounding)
     return Stepping{Advance::whole_step, bounding};

@@ -737,9 +737,12 @@ void verifyReference(const schema::SceneT &scene,
       std::string under = about + " under " + strategyName(Strategy(s));
       if (!valid(stepping.advance()))
         bad(under + " advances in an unknown way");
+      // A pair's reader without num_steps takes its blocks' steps from
+      // the writer's.
       if (!component.num_steps &&
           (stepping.estimates() || (stepping.advance() != Advance::WholeStep &&
-                                    stepping.advance() != Advance::LocalFlux)))
+                                    stepping.advance() != Advance::LocalFlux &&
+                                    stepping.advance() != Advance::LocalSteps)))
         bad(under + " estimates or sub-steps, but it has no num_steps");
       if (stepping.advance() == Advance::LocalSteps &&
           (component.local_window.size() != 2 ||

@@ -872,10 +872,12 @@ void ReferenceSession::localSteps(int32_t component, int64_t m) {
   levels = {};
   levels.level.assign(size_t(groups), 0);
   std::vector<int64_t> smallest(size_t(groups), m);
-  for (int64_t g = 0; g < groups; ++g)
-    for (int64_t i = firstOf(g); i < lastOf(g); ++i)
-      smallest[size_t(g)] =
-          std::min(smallest[size_t(g)], numSteps(component, i, now));
+  // (A pair's reader without num_steps: its writer's alone.)
+  if (info.num_steps)
+    for (int64_t g = 0; g < groups; ++g)
+      for (int64_t i = firstOf(g); i < lastOf(g); ++i)
+        smallest[size_t(g)] =
+            std::min(smallest[size_t(g)], numSteps(component, i, now));
   if (fluxWriter >= 0 && model_->components[size_t(fluxWriter)]->num_steps)
     for (int64_t j = 0; j < range; ++j) {
       int64_t steps = numSteps(fluxWriter, j, now);

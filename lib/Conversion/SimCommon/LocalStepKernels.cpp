@@ -667,13 +667,16 @@ LogicalResult SimulationLowering::emitLocalSteps(ComponentOp component,
       };
       // Every lane's codes, combined per block into half `parity`.
       auto computeCodes = [&](Value base) {
+        // (A pair's reader without num_steps: its writer's codes alone.)
         target.forEachLane(b, kernel, base, [&](const Lane &lane) {
-          b.ifThen(lane.active, [&] {
-            target.laneStore(b, codeAt(component, lane), code, lane);
-          });
+          if (component.hasNumSteps())
+            b.ifThen(lane.active, [&] {
+              target.laneStore(b, codeAt(component, lane), code, lane);
+            });
           startFinest(lane);
         });
-        target.maxPerBlock(b, kernel, base, code, kLevelBlock, levels, half);
+        if (component.hasNumSteps())
+          target.maxPerBlock(b, kernel, base, code, kLevelBlock, levels, half);
         // A flux writer's estimate at interface j bounds every block that
         // reads the interface: the blocks of its readers j - o (o in
         // flux_window) that lie in the range, combined per block like the

@@ -819,12 +819,12 @@ LogicalResult ComponentOp::verify() {
     if (!seen.insert(name).second)
       return emitOpError() << "lists buffer " << name << " twice in writes";
 
-  // Sub-steps and estimates are sized by num_steps (a flux writer's steps
-  // by its reader's).
+  // Sub-steps and estimates are sized by num_steps (a pair writer's steps
+  // by its reader's, a pair reader's by its writer's where it has none).
   if (!hasNumSteps()) {
     if (std::optional<Advance> advance = getAdvance();
         advance && *advance != Advance::whole_step &&
-        *advance != Advance::local_flux)
+        *advance != Advance::local_flux && *advance != Advance::local_steps)
       return emitOpError() << "advances by " << stringifyAdvance(*advance)
                            << " but has no num_steps body to size them";
     if (getEstimates())
@@ -876,8 +876,9 @@ LogicalResult ComponentOp::verify() {
       return emitOpError() << "has invariant_levels but does not advance in "
                               "local_steps";
     // The kernels keep the levels on this word: a num_steps that reads
-    // the time or a buffer would give other levels later.
-    if (!getNumStepsTime().use_empty())
+    // the time or a buffer would give other levels later. (A pair's reader
+    // may have no num_steps: then its writer's is checked by the pass.)
+    if (hasNumSteps() && !getNumStepsTime().use_empty())
       return emitOpError() << "has invariant_levels, but its num_steps "
                               "reads its local time";
     ReadOp read;

@@ -144,7 +144,7 @@ struct PlanMemoryPass : public sim::impl::SimPlanMemoryBase<PlanMemoryPass> {
                              return access.body == BodyKind::NumSteps;
                            });
     };
-    if (!reader.hasNumSteps() || !invariant(reader))
+    if (!invariant(reader))
       return false;
     for (const BufferAccess &access : analysis.getAccesses(reader))
       if (ComponentOp writer = analysis.getWriter(access.buffer);

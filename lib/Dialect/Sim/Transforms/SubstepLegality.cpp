@@ -260,9 +260,11 @@ struct SubstepLegalityPass
       cellWindow =
           cellWindow ? cellWindow->join(access.pattern) : access.pattern;
     }
-    if (!reader.hasNumSteps()) {
-      refuse() << "@" << readerName
-               << " has no num_steps, so its blocks have no step of their own";
+    // The blocks' steps come from the reader's num_steps and the writer's
+    // at the items they read; without either, no block has a step.
+    if (!reader.hasNumSteps() && !writer.hasNumSteps()) {
+      refuse() << "neither @" << name << " nor @" << readerName
+               << " has num_steps, so the blocks have no step of their own";
       return;
     }
     if (reader.getSubStepping() == SubStepping::grid_sync &&

@@ -278,7 +278,7 @@ sim.simulation @mixed range(64) dt(1.0e-2 : f32) max_steps(4) {
 
 // -----
 
-// The reader has no num_steps: no pair.
+// Neither the writer nor the reader has num_steps: no pair.
 
 // CHECK-LABEL: sim.simulation @no_estimate
 // CHECK-NOT: flux_window
@@ -294,7 +294,7 @@ sim.simulation @no_estimate range(64) dt(1.0e-2 : f32) max_steps(4) {
     %c = arith.constant 0.0 : f32
     sim.yield %c : f32
   }
-  // expected-remark @+1 {{under lts @Flux and the readers of its fluxes take the big step as under hip: @Cells has no num_steps, so its blocks have no step of their own}}
+  // expected-remark @+1 {{under lts @Flux and the readers of its fluxes take the big step as under hip: neither @Flux nor @Cells has num_steps, so the blocks have no step of their own}}
   sim.component @Flux writes(@F) evaluate {
   ^bb0(%j: index, %t: i64, %n: i32, %dt: f32):
     %c1 = arith.constant 1 : index
