@@ -295,6 +295,12 @@ struct InsertInterpolationPass
     if (failed(checkInterpolable(read, buffer, component, kind,
                                  simulation.getStrategy().value())))
       return failure();
+    // A buffer without an interpolation is read only where no intermediate
+    // time is (checkInterpolable): by a component that takes the big step
+    // whole, at its end in evaluate and at its start in num_steps.
+    if (!buffer.getInterpolation().isInterpolable())
+      return load(buffer, kind == BodyKind::Evaluate ? Version::target
+                                                     : Version::source);
     InterpolationAttrInterface interp = buffer.getInterpolation();
     SmallVector<BufferOp> inputs = {buffer};
     for (FlatSymbolRefAttr aux : interp.getAuxiliaryBuffers()) {

@@ -11,6 +11,7 @@
 //
 //===----------------------------------------------------------------------===//
 
+#include "sim/Analysis/Scheduling.h"
 #include "sim/Dialect/Sim/Transforms/Passes.h"
 
 using namespace mlir;
@@ -36,6 +37,19 @@ LogicalResult mlir::sim::checkInterpolable(ReadOp read, BufferOp buffer,
                                            Strategy strategy) {
   if (buffer.getInterpolation().isInterpolable() ||
       !isSubSteppingStrategy(strategy))
+    return success();
+  // A component that takes the big step whole (no num_steps, or one that
+  // bounds the step) reads the end of the step in evaluate and its start
+  // in num_steps: no intermediate time.
+  // The recorded decision, else the one --sim-plan-memory will record.
+  bool wholeStep = !component.hasNumSteps();
+  if (std::optional<Advance> advance = component.getAdvance()) {
+    wholeStep = *advance == Advance::whole_step;
+  } else if (component.getSubSteppingAttr()) {
+    FailureOr<Stepping> stepping = decideStepping(component, strategy);
+    wholeStep = succeeded(stepping) && stepping->advance == Advance::whole_step;
+  }
+  if (wholeStep)
     return success();
   // The reader of a pair under lts reads its writer's value as it is (the
   // writer evaluated the item when its block started the sub-step): no

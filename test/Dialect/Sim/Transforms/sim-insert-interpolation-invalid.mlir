@@ -85,7 +85,8 @@ sim.simulation @derivative_too_late range(16) dt(1.0e-2 : f32) max_steps(2) attr
 // -----
 
 // A hand-written plan that --sim-plan-memory would have rejected: the read
-// of an interp(none) buffer needs an intermediate value under hip.
+// of an interp(none) buffer needs an intermediate value under hip, where
+// @Drift sub-steps.
 
 sim.simulation @not_interpolable range(16) dt(1.0e-2 : f32) max_steps(2) attributes {strategy = #sim<strategy hip>} {
   // expected-note @+1 {{@P is declared interp(none) here}}
@@ -104,7 +105,11 @@ sim.simulation @not_interpolable range(16) dt(1.0e-2 : f32) max_steps(2) attribu
     %p = sim.read @P[%i] own : f32
     sim.yield %p : f32
   }
-  sim.component @Drift writes(@X) evaluate {
+  sim.component @Drift writes(@X) num_steps {
+  ^bb0(%i: index, %t: i64):
+    %c1 = arith.constant 1 : i32
+    sim.yield %c1 : i32
+  } evaluate {
   ^bb0(%i: index, %t: i64, %n: i32, %dt: f32):
     // expected-error @+1 {{'sim.read' op reads @P at an intermediate time of the big step (@Drift's evaluate interpolates buffers advanced earlier in the step under hip), but @P is declared interp(none)}}
     %p = sim.read @P[%i] interpolate : f32
