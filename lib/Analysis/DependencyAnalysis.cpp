@@ -147,11 +147,12 @@ public:
 
   AccessPattern classify(Value index, Value item) {
     std::optional<OffsetRange> range = offsetFromItem(index, item, 0);
-    // An offset beyond 32 bits is no neighbourhood: `%i + c` may wrap
-    // around the 64-bit index, and the halos, caches and level reaches
-    // sized from the window would overflow. A gather computes the index as
-    // the scalar code does, on every backend.
-    constexpr int64_t kLargestOffset = std::numeric_limits<int32_t>::max();
+    // An offset beyond 2^62 is no neighbourhood: `%i + c` may wrap around
+    // the 64-bit index, and the halos, caches and level reaches sized from
+    // the window (hi - lo and more) would overflow. A gather computes the
+    // index as the scalar code does, on every backend. (Ranges stop at
+    // 2^40, so every offset that can reach another item stays a window.)
+    constexpr int64_t kLargestOffset = int64_t(1) << 62;
     if (!range || range->first < -kLargestOffset ||
         range->second > kLargestOffset)
       return AccessPattern::gather();

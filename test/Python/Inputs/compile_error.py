@@ -1,9 +1,10 @@
 """A compiler diagnostic comes back as CompileError at the user's Python line
 (sim-compile-error.test; this file is also the FileCheck file).
 
-@Push reads @P, a buffer declared interp(none), inside its big step: under
-hip that read needs an interpolated value, which --sim-plan-memory rejects
-with an error at the read and a note at the buffer.
+@Push reads @P, a buffer declared interp(none), inside its big step (it
+sub-steps: num_steps): under hip that read needs an interpolated value,
+which --sim-plan-memory rejects with an error at the read and a note at the
+buffer.
 """
 import sim
 from sim import f32
@@ -31,6 +32,11 @@ def Pull(i, n, dt):
 def Push(i, n, dt):
     # CHECK: error: bad.py:[[@LINE+1]]:19: 'sim.read' op reads @P at an intermediate time of the big step {{.*}} but @P is declared interp(none)
     return Q[i] - P[i] * dt
+
+
+@Push.num_steps
+def Push(i, t):
+    return sim.i32(2)
 
 
 s.schedule(Pull)

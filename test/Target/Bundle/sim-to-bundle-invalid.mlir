@@ -58,7 +58,12 @@ sim.simulation @leapfrog range(64) dt(1.0e-2 : f32) max_steps(4) {
     %q = arith.subf %p, %x : f32
     sim.yield %q : f32
   }
-  sim.component @Drift writes(@X) evaluate {
+  // The drift sub-steps, so it would read @P inside the big step.
+  sim.component @Drift writes(@X) num_steps {
+  ^bb0(%i: index, %t: i64):
+    %c1 = arith.constant 1 : i32
+    sim.yield %c1 : i32
+  } evaluate {
   ^bb0(%i: index, %t: i64, %n: i32, %dt: f32):
     %x = sim.read @X[%i] : f32
     // expected-error @+1 {{'sim.read' op reads @P at an intermediate time of the big step (@Drift's evaluate interpolates buffers advanced earlier in the step under hip), but @P is declared interp(none)}}
