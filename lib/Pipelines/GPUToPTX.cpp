@@ -122,6 +122,8 @@ void mlir::sim::buildSimGPUToPTXPipeline(OpPassManager &pm,
   }
   // No conversion lowers math.ipowi: multiplications, as on the CPU.
   kernels.addPass(createSimExpandIntegerPowers());
+  // High-level vector ops as 1-D ones, as on the CPU.
+  kernels.addPass(createSimLowerVectorOps());
   kernels.addPass(createSCFToControlFlowPass());
   kernels.addPass(memref::createExpandStridedMetadataPass());
   ConvertGpuOpsToNVVMOpsOptions toNVVM;

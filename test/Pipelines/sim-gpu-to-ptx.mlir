@@ -26,6 +26,7 @@
 // PIPELINE-NEXT:   gpu.module(
 // PIPELINE-NEXT:     sim-fused-multiply-add
 // PIPELINE-NEXT:     sim-expand-integer-powers
+// PIPELINE-NEXT:     sim-lower-vector-ops
 // PIPELINE-NEXT:     convert-scf-to-cf
 // PIPELINE-NEXT:     expand-strided-metadata
 // PIPELINE-NEXT:     convert-gpu-to-nvvm{{{.*}} has-redux=true {{.*}}use-bare-ptr-memref-call-conv=false}

@@ -246,6 +246,32 @@ def SimExpandIntegerPowers : Pass<"sim-expand-integer-powers"> {
   let dependentDialects = ["::mlir::arith::ArithDialect"];
 }
 
+def SimLowerVectorOps : Pass<"sim-lower-vector-ops"> {
+  let summary = "Lower high-level vector ops (contract, outerproduct, "
+                "multi_reduction, transpose, step) to 1-D vector ops "
+                "(every backend)";
+  let description = [{
+    A component body may use `vector.contract` (for example a dot
+    product), `vector.outerproduct`, `vector.multi_reduction`,
+    `vector.transpose` and `vector.step`. The LLVM and NVVM conversions
+    lower only 1-D vector ops (extract, insert, reduction, fma, shuffle), so
+    these ops compiled for no backend. This pass applies upstream's
+    progressive lowering patterns (contractions as multiplications and
+    reductions, outer products as `vector.fma`, multi-reductions as
+    `vector.reduction`, transposes element by element, steps as constants).
+    The CPU kernels, the reference functions (lib/Target/CPU/CPUKernels.cpp)
+    and the GPU kernels (lib/Pipelines/GPUToPTX.cpp) all run it, so they
+    compute the same operations; a module without such an op is left
+    untouched.
+
+    ```
+    sim-opt kernels.mlir --sim-lower-vector-ops
+    ```
+  }];
+  let dependentDialects = ["::mlir::arith::ArithDialect",
+                           "::mlir::vector::VectorDialect"];
+}
+
 def SimExpandTanh : Pass<"sim-expand-tanh"> {
   let summary = "Expand f32 math.tanh into glibc's tanhf algorithm in "
                 "arithmetic (CPU kernels)";

@@ -119,6 +119,9 @@ compileSharedObjects(OwningOpRef<ModuleOp> module, Location loc,
     PassManager pm(copy->getContext());
     // No conversion lowers math.ipowi: multiplications, as on the GPU.
     pm.addPass(createSimExpandIntegerPowers());
+    // Nor contract, outerproduct, multi_reduction, transpose or step: 1-D
+    // vector ops, as on the GPU.
+    pm.addPass(createSimLowerVectorOps());
     if (kernels && lanesFor(isa) > 1) {
       // A group's lanes side by side in SIMD registers, while the kernels
       // are still scf and vector ops.

@@ -42,12 +42,15 @@ module {
 //--- no-lowering.mlir
 module attributes {gpu.container_module} {
   gpu.module @kernels {
-    gpu.func @reduce(%a: memref<?xi32>) kernel {
+    gpu.func @narrow(%a: memref<?xi32>) kernel {
       %c0 = arith.constant 0 : index
       %x = memref.load %a[%c0] : memref<?xi32>
-      %v = vector.broadcast %x : i32 to vector<4xi32>
-      // expected-error @+1 {{'vector.multi_reduction' op was not lowered to the LLVM and NVVM dialects; the PTX pipeline has no lowering for it}}
-      %y = vector.multi_reduction <add>, %v, %x [0] : vector<4xi32> to i32
+      %f = arith.sitofp %x : i32 to f32
+      // expected-error @+1 {{'arith.truncf' op was not lowered to the LLVM and NVVM dialects; the PTX pipeline has no lowering for it}}
+      %h = arith.truncf %f : f32 to f8E4M3FN
+      // expected-error @+1 {{'arith.extf' op was not lowered to the LLVM and NVVM dialects}}
+      %g = arith.extf %h : f8E4M3FN to f32
+      %y = arith.fptosi %g : f32 to i32
       memref.store %y, %a[%c0] : memref<?xi32>
       gpu.return
     }

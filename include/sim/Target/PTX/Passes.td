@@ -126,7 +126,7 @@ def SimNVVMCheckTarget
     at all into errors at the construct's location:
 
     - an operation left outside the LLVM and NVVM dialects (a construct the
-      pipeline cannot lower, e.g. `vector.multi_reduction`): error at the operation,
+      pipeline cannot lower, e.g. an `arith.truncf` to an 8-bit float): error at the operation,
       instead of a missing-translation error on the whole module;
     - an `#nvvm.target` whose chip or features LLVM's NVPTX back end does not
       know (LLVM would only warn on stderr and emit PTX for another chip);

@@ -1,0 +1,62 @@
+// RUN: sim-opt %s --sim-lower-vector-ops --split-input-file | FileCheck %s
+
+// High-level vector ops become 1-D ones that the LLVM and NVVM conversions
+// lower: a dot product (vector.contract) as a multiplication and a
+// reduction, an outer product as vector.fma rows, a multi-reduction as
+// vector.reduction, a transpose element by element, vector.step as a
+// constant.
+
+// CHECK-LABEL: func.func @dot
+// CHECK-NOT: vector.contract
+// CHECK: arith.mulf %{{.*}}, %{{.*}} : vector<4xf32>
+// CHECK: vector.reduction <add>, %{{.*}}, %{{.*}} : vector<4xf32> into f32
+func.func @dot(%a: vector<4xf32>, %b: vector<4xf32>, %acc: f32) -> f32 {
+  %r = vector.contract {indexing_maps = [affine_map<(d0) -> (d0)>, affine_map<(d0) -> (d0)>, affine_map<(d0) -> ()>], iterator_types = ["reduction"], kind = #vector.kind<add>} %a, %b, %acc : vector<4xf32>, vector<4xf32> into f32
+  return %r : f32
+}
+
+// -----
+
+// CHECK-LABEL: func.func @outer
+// CHECK-NOT: vector.outerproduct
+// CHECK-COUNT-2: arith.mulf %{{.*}}, %{{.*}} : vector<3xf32>
+// CHECK: return
+func.func @outer(%a: vector<2xf32>, %b: vector<3xf32>) -> vector<2x3xf32> {
+  %r = vector.outerproduct %a, %b : vector<2xf32>, vector<3xf32>
+  return %r : vector<2x3xf32>
+}
+
+// -----
+
+// CHECK-LABEL: func.func @multi_reduction
+// CHECK-NOT: vector.multi_reduction
+// CHECK: vector.reduction <add>
+func.func @multi_reduction(%a: vector<4xf32>, %acc: f32) -> f32 {
+  %r = vector.multi_reduction <add>, %a, %acc [0] : vector<4xf32> to f32
+  return %r : f32
+}
+
+// -----
+
+// CHECK-LABEL: func.func @step
+// CHECK-NOT: vector.step
+// CHECK: arith.constant dense<[0, 1, 2, 3]> : vector<4xindex>
+func.func @step() -> vector<4xindex> {
+  %s = vector.step : vector<4xindex>
+  return %s : vector<4xindex>
+}
+
+// -----
+
+// Without such an op nothing changes (no folding either).
+
+// CHECK-LABEL: func.func @untouched
+// CHECK: %[[C:.*]] = arith.constant 1.000000e+00 : f32
+// CHECK: %[[S:.*]] = arith.addf %[[C]], %[[C]] : f32
+// CHECK: vector.reduction <add>
+func.func @untouched(%a: vector<4xf32>) -> f32 {
+  %c = arith.constant 1.0 : f32
+  %s = arith.addf %c, %c : f32
+  %r = vector.reduction <add>, %a, %s : vector<4xf32> into f32
+  return %r : f32
+}
