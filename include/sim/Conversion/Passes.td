@@ -258,7 +258,9 @@ def SimLowerVectorOps : Pass<"sim-lower-vector-ops"> {
     these ops compiled for no backend. This pass applies upstream's
     progressive lowering patterns (contractions as multiplications and
     reductions, outer products as `vector.fma`, multi-reductions as
-    `vector.reduction`, transposes element by element, steps as constants).
+    `vector.reduction`, transposes element by element, steps as constants,
+    strided slices as shuffles), and a `math.fpowi` of vectors as one scalar
+    `fpowi` per element (LLVM's `powi` takes one integer exponent).
     The CPU kernels, the reference functions (lib/Target/CPU/CPUKernels.cpp)
     and the GPU kernels (lib/Pipelines/GPUToPTX.cpp) all run it, so they
     compute the same operations; a module without such an op is left
@@ -268,6 +270,7 @@ def SimLowerVectorOps : Pass<"sim-lower-vector-ops"> {
     sim-opt kernels.mlir --sim-lower-vector-ops
     ```
   }];
+  // (math ops are made only where a math.fpowi already is.)
   let dependentDialects = ["::mlir::arith::ArithDialect",
                            "::mlir::vector::VectorDialect"];
 }

@@ -5,17 +5,21 @@
 // vector.multi_reduction, vector.transpose, vector.step. The CPU pipeline's
 // convert-vector-to-llvm and the GPU's convert-gpu-to-nvvm lower only the
 // 1-D ops (extract, insert, reduction, fma, shuffle, ...), so these compiled
-// for no backend. This pass rewrites them with upstream's progressive
-// lowering patterns into those ops; the CPU kernels, the reference
-// functions and the GPU kernels all run it, so they compute the same
-// operations in the same order.
+// for no backend; nor did a math.fpowi of vectors (LLVM's powi takes one
+// integer exponent). This pass rewrites them with upstream's progressive
+// lowering patterns into those ops, and fpowi element by element; the CPU
+// kernels, the reference functions and the GPU kernels all run it, so they
+// compute the same operations in the same order.
 //
 //===----------------------------------------------------------------------===//
 
 #include "sim/Conversion/Passes.h"
 
+#include "mlir/Dialect/Arith/IR/Arith.h"
+#include "mlir/Dialect/Math/IR/Math.h"
 #include "mlir/Dialect/Vector/IR/VectorOps.h"
 #include "mlir/Dialect/Vector/Transforms/LoweringPatterns.h"
+#include "mlir/Dialect/Vector/Transforms/VectorRewritePatterns.h"
 #include "mlir/Transforms/GreedyPatternRewriteDriver.h"
 
 namespace mlir::sim {
@@ -27,14 +31,41 @@ using namespace mlir;
 
 namespace {
 
+/// A vector fpowi as one scalar fpowi per element.
+struct UnrollVectorPower : OpRewritePattern<math::FPowIOp> {
+  using OpRewritePattern::OpRewritePattern;
+
+  LogicalResult matchAndRewrite(math::FPowIOp op,
+                                PatternRewriter &rewriter) const override {
+    auto type = dyn_cast<VectorType>(op.getType());
+    if (!type || type.getRank() != 1 || type.isScalable())
+      return failure();
+    Location loc = op.getLoc();
+    Value result = arith::ConstantOp::create(
+        rewriter, loc, type, cast<TypedAttr>(rewriter.getZeroAttr(type)));
+    for (int64_t k = 0; k < type.getNumElements(); ++k) {
+      Value base = vector::ExtractOp::create(rewriter, loc, op.getLhs(), k);
+      Value exponent = vector::ExtractOp::create(rewriter, loc, op.getRhs(), k);
+      Value power = math::FPowIOp::create(rewriter, loc, base, exponent);
+      result = vector::InsertOp::create(rewriter, loc, power, result, k);
+    }
+    rewriter.replaceOp(op, result);
+    return success();
+  }
+};
+
 struct SimLowerVectorOpsPass
     : sim::impl::SimLowerVectorOpsBase<SimLowerVectorOpsPass> {
   void runOnOperation() override {
     // Nothing to do (and no folding of other ops) without such an op.
     WalkResult found = getOperation()->walk([](Operation *op) {
-      return isa<vector::ContractionOp, vector::OuterProductOp,
-                 vector::MultiDimReductionOp, vector::TransposeOp,
-                 vector::StepOp>(op)
+      bool vectorPower =
+          isa<math::FPowIOp>(op) && isa<VectorType>(op->getResultTypes()[0]);
+      return vectorPower ||
+                     isa<vector::ContractionOp, vector::OuterProductOp,
+                         vector::MultiDimReductionOp, vector::TransposeOp,
+                         vector::StepOp, vector::InsertStridedSliceOp,
+                         vector::ExtractStridedSliceOp>(op)
                  ? WalkResult::interrupt()
                  : WalkResult::advance();
     });
@@ -52,6 +83,10 @@ struct SimLowerVectorOpsPass
         patterns, vector::VectorTransposeLowering::EltWise);
     vector::populateVectorStepLoweringPatterns(patterns);
     vector::populateVectorShapeCastLoweringPatterns(patterns);
+    // Strided slices (which the multi-reduction lowering makes) as
+    // shuffles, extracts and inserts.
+    vector::populateVectorInsertExtractStridedSliceTransforms(patterns);
+    patterns.add<UnrollVectorPower>(&getContext());
     if (failed(applyPatternsGreedily(getOperation(), std::move(patterns))))
       return signalPassFailure();
   }

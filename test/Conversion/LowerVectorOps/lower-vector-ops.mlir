@@ -48,6 +48,31 @@ func.func @step() -> vector<4xindex> {
 
 // -----
 
+// Over every dimension of a 2-D vector: no strided slice is left.
+
+// CHECK-LABEL: func.func @multi_reduction_2d
+// CHECK-NOT: vector.multi_reduction
+// CHECK-NOT: strided_slice
+// CHECK: vector.reduction <add>
+func.func @multi_reduction_2d(%a: vector<2x3xf32>, %acc: f32) -> f32 {
+  %r = vector.multi_reduction <add>, %a, %acc [0, 1] : vector<2x3xf32> to f32
+  return %r : f32
+}
+
+// -----
+
+// fpowi of vectors: LLVM's powi takes one exponent, so one per element.
+
+// CHECK-LABEL: func.func @vector_power
+// CHECK-COUNT-3: math.fpowi %{{.*}}, %{{.*}} : f64, i64
+// CHECK-NOT: math.fpowi
+func.func @vector_power(%b: vector<3xf64>, %e: vector<3xi64>) -> vector<3xf64> {
+  %r = math.fpowi %b, %e : vector<3xf64>, vector<3xi64>
+  return %r : vector<3xf64>
+}
+
+// -----
+
 // Without such an op nothing changes (no folding either).
 
 // CHECK-LABEL: func.func @untouched

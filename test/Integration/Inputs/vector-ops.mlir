@@ -1,7 +1,7 @@
 // High-level vector ops in a component body, for vector-ops.test: a dot
-// product (vector.contract), an outer product, a multi-reduction, a
-// transpose and vector.step, on a vector<4xf32> state that a stencil reads
-// at its neighbours.
+// product (vector.contract), an outer product, multi-reductions (over one
+// dimension and over both), a transpose, vector.step and an fpowi of
+// vectors, on a vector<4xf32> state that a stencil reads at its neighbours.
 sim.simulation @vector_ops range(100) dt(1.0e-3 : f32) max_steps(4) {
   sim.buffer @U : vector<4xf32> boundary(wrap) init {
   ^bb0(%i: index):
@@ -40,7 +40,16 @@ sim.simulation @vector_ops range(100) dt(1.0e-3 : f32) max_steps(4) {
     %k = vector.step : vector<4xindex>
     %ki = arith.index_cast %k : vector<4xindex> to vector<4xi32>
     %kf = arith.sitofp %ki : vector<4xi32> to vector<4xf32>
-    %dv = vector.broadcast %dot : f32 to vector<4xf32>
+    %all = vector.multi_reduction <add>, %outer, %z [0, 1] : vector<4x4xf32> to f32
+    %two = arith.constant dense<2> : vector<4xi32>
+    %sq = math.fpowi %u, %two : vector<4xf32>, vector<4xi32>
+    %tiny = arith.constant 1.0e-3 : f32
+    %allt = arith.mulf %all, %tiny : f32
+    %dot2 = arith.addf %dot, %allt : f32
+    %dv0 = vector.broadcast %dot2 : f32 to vector<4xf32>
+    %sqt = vector.broadcast %tiny : f32 to vector<4xf32>
+    %sqs = arith.mulf %sq, %sqt : vector<4xf32>
+    %dv = arith.subf %dv0, %sqs : vector<4xf32>
     %s1 = arith.addf %col, %dv : vector<4xf32>
     %s2 = arith.subf %s1, %kf : vector<4xf32>
     %small = arith.constant dense<1.0e-2> : vector<4xf32>

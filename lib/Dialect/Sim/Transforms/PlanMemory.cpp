@@ -82,14 +82,28 @@ struct PlanMemoryPass : public sim::impl::SimPlanMemoryBase<PlanMemoryPass> {
     if (strategy == Strategy::lts &&
         llvm::none_of(analysis.getComponents(), [](ComponentOp component) {
           return component.getAdvance() == Advance::local_steps;
-        }))
-      simulation.emitRemark()
-          << "strategy lts: no component takes local time steps, so the "
-             "plan is hip's; a component takes them when it has num_steps, "
-             "reads a buffer it writes at other items through a window "
-             "(@B[%i + c]) and does not bound the big step (read through the "
-             "back edge); the remarks of --sim-substep-legality say why each "
-             "such component does not";
+        })) {
+      InFlightDiagnostic remark = simulation.emitRemark();
+      remark << "strategy lts: no component takes local time steps, so the "
+                "plan is hip's; a component takes them when it has "
+                "num_steps, reads a buffer it writes at other items through "
+                "a window (@B[%i + c]) and does not bound the big step (read "
+                "through the back edge), or when it reads at its own items "
+                "what the component that bounds the big step computes from "
+                "its state (a pair, docs/Model.md); the remarks of "
+                "--sim-substep-legality say why each component that reads "
+                "its own buffers at other items, and each pair, does not";
+      SmallVector<ComponentOp> bounding;
+      for (ComponentOp component : analysis.getComponents())
+        if (boundsBigStep(component))
+          bounding.push_back(component);
+      if (!bounding.empty()) {
+        remark << "; the big step is bounded by ";
+        llvm::interleaveComma(bounding, remark, [&](ComponentOp component) {
+          remark << "@" << component.getSymName();
+        });
+      }
+    }
     simulation.setStrategyAttr(StrategyAttr::get(context, strategy));
     simulation.setStepCapAttr(IntegerAttr::get(
         IntegerType::get(context, 32), getStepCap(simulation, strategy)));

@@ -251,10 +251,18 @@ struct SubstepLegalityPass
         return;
       }
       InterpolationAttrInterface interp = access.buffer.getInterpolation();
-      if (!interp.isInterpolable() || !interp.getAuxiliaryBuffers().empty()) {
+      if (!interp.isInterpolable()) {
         refuse() << "it reads @" << buffer
                  << ", whose value between two time levels is not an "
                     "interpolation of the two; use #sim.linear or #sim.cubic";
+        return;
+      }
+      if (!interp.getAuxiliaryBuffers().empty()) {
+        refuse() << "it reads @" << buffer << ", whose interpolation reads "
+                 << "other buffers (" << interp.getAuxiliaryBufferRole(0)
+                 << "), which are not kept at every item's two time levels; "
+                    "use #sim.linear or #sim.cubic for @"
+                 << buffer;
         return;
       }
       cellWindow =
