@@ -40,8 +40,8 @@ LogicalResult mlir::sim::checkInterpolable(ReadOp read, BufferOp buffer,
     return success();
   // A component that takes the big step whole (no num_steps, or one that
   // bounds the step) reads the end of the step in evaluate and its start
-  // in num_steps: no intermediate time.
-  // The recorded decision, else the one --sim-plan-memory will record.
+  // in num_steps: no intermediate time. Its recorded stepping decides, else
+  // the one --sim-plan-memory will record.
   bool wholeStep = !component.hasNumSteps();
   if (std::optional<Advance> advance = component.getAdvance()) {
     wholeStep = *advance == Advance::whole_step;
