@@ -39,6 +39,19 @@ sim.simulation @s range(16) dt(1.0 : f32) max_steps(1048577) {
 
 // -----
 
+// A value beyond 32 bits is no wrapped i32: the parser names it as written.
+// expected-error @+1 {{expects max_steps to be at most 2^20, but got 3000000000}}
+sim.simulation @s range(16) dt(1.0 : f32) max_steps(3000000000) {
+}
+
+// -----
+
+// expected-error @+1 {{expects max_steps to be at least 1, but got -3000000000}}
+sim.simulation @s range(16) dt(1.0 : f32) max_steps(-3000000000) {
+}
+
+// -----
+
 // expected-error @+1 {{'sim.simulation' op has a step_cap of 4, but a big step takes 1 to max_steps (3) base steps}}
 sim.simulation @s range(16) dt(1.0 : f32) max_steps(3) attributes {step_cap = 4 : i32} {
 }

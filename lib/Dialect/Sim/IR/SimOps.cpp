@@ -20,10 +20,12 @@
 #include "mlir/IR/Matchers.h"
 #include "mlir/IR/OpImplementation.h"
 #include "mlir/IR/TypeUtilities.h"
+
 #include "llvm/ADT/DenseMap.h"
 #include "llvm/ADT/STLExtras.h"
 #include "llvm/ADT/SetVector.h"
 #include "llvm/ADT/SmallPtrSet.h"
+#include <limits>
 
 using namespace mlir;
 using namespace mlir::sim;
@@ -147,6 +149,28 @@ static void printSymbolList(OpAsmPrinter &printer, Operation *,
     printer.printSymbolName(cast<FlatSymbolRefAttr>(symbol).getValue());
   });
   printer << ')';
+}
+
+/// The integer of `max_steps(...)`, parsed as a signed 64-bit value so that
+/// 3000000000 is not read as the i32 -1294967296: a value outside i32 gets
+/// the verifier's message here, at its location.
+static ParseResult parseMaxSteps(OpAsmParser &parser, IntegerAttr &maxSteps) {
+  SMLoc loc = parser.getCurrentLocation();
+  int64_t value = 0;
+  if (parser.parseInteger(value))
+    return failure();
+  if (value < std::numeric_limits<int32_t>::min() ||
+      value > std::numeric_limits<int32_t>::max())
+    return parser.emitError(loc) << "expects max_steps to be "
+                                 << (value < 1 ? "at least 1" : "at most 2^20")
+                                 << ", but got " << value;
+  maxSteps = parser.getBuilder().getI32IntegerAttr(value);
+  return success();
+}
+
+static void printMaxSteps(OpAsmPrinter &printer, Operation *,
+                          IntegerAttr maxSteps) {
+  printer << maxSteps.getInt();
 }
 
 /// An optional bare read-role keyword (`own`, `interpolate`, `back_edge`).

@@ -86,7 +86,8 @@ def Sim_SimulationOp : Sim_Op<"simulation", [
   let regions = (region SizedRegion<1>:$body);
   let assemblyFormat = [{
     $sym_name `range` `(` $range `)` `dt` `(` $dt `)`
-    `max_steps` `(` $max_steps `)` attr-dict-with-keyword $body
+    `max_steps` `(` custom<MaxSteps>($max_steps) `)`
+    attr-dict-with-keyword $body
   }];
   let hasVerifier = 1;
   let hasRegionVerifier = 1;
