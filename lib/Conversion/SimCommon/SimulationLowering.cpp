@@ -428,15 +428,38 @@ void SimulationLowering::estimateInto(Kernel &kernel, ComponentOp component,
   // step counts nearly every group holds an item at 1, and the estimate
   // would otherwise cost as much as a component's evaluation. The slot ends
   // at the same minimum either way.
-  target.forEachGroup(b, kernel, [&](Value base) {
+  //
+  // The big step's estimate starts at the group where the last one found
+  // an item at 1 (clock slot EstimateHint): a stiff item that holds every
+  // big step at 1 is usually where it was, and the groups before it would
+  // otherwise be estimated in vain in every big step. Only the order of
+  // the groups depends on the hint, and no result depends on the order.
+  bool hinted = slot == kSlotEstimate;
+  Value hint = hinted ? b.atomic(arith::AtomicRMWKind::addi, b.i64(0),
+                                 kernel.clock, b.index(kSlotEstimateHint))
+                      : b.i64(0);
+  auto group = [&](Value base) {
     Value current = b.atomic(arith::AtomicRMWKind::addi, b.i64(0), kernel.clock,
                              b.index(slot));
     b.ifThen(b.cmp(arith::CmpIPredicate::sgt, current, b.i64(1)), [&] {
       lanes(base);
       target.reduceIntoClock(b, kernel, minimum, arith::AtomicRMWKind::mins,
                              slot);
+      if (!hinted)
+        return;
+      Value after = b.atomic(arith::AtomicRMWKind::addi, b.i64(0), kernel.clock,
+                             b.index(slot));
+      b.ifThen(b.cmp(arith::CmpIPredicate::eq, after, b.i64(1)), [&] {
+        b.atomic(arith::AtomicRMWKind::assign,
+                 arith::IndexCastOp::create(b, b.loc, b.getI64Type(), base),
+                 kernel.clock, b.index(kSlotEstimateHint));
+      });
     });
-  });
+  };
+  if (hinted)
+    target.forEachGroupFrom(b, kernel, hint, group);
+  else
+    target.forEachGroup(b, kernel, group);
 }
 
 LogicalResult SimulationLowering::run() {

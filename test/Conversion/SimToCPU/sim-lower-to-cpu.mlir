@@ -50,10 +50,25 @@ sim.simulation @pair range(100) dt(1.0e-2 : f32) max_steps(4) {
 // CHECK-LABEL: module @pair_kernels {
 //                The estimate of the next big step: each group first reads
 //                the running minimum (slot 4) and skips its lanes once it is
-//                1, since no estimate is smaller; else it adds its own.
+//                1, since no estimate is smaller; else it adds its own. The
+//                groups start at the one whose first item slot 7 holds
+//                (where the last estimate found 1), when the invocation
+//                handles it, and go round; a group that brings the slot to
+//                1 records its first item there.
 // CHECK-LABEL: func.func @estimate_Lead(
 // CHECK-SAME:      %[[ECLOCK:[^:]*]]: memref<?xi64>
-// CHECK:         scf.for %{{.*}} = %{{.*}} to %{{.*}} step %c1 {
+// CHECK:         %[[HINT:.*]] = memref.atomic_rmw addi %c0_i64, %[[ECLOCK]][%c7]
+// CHECK:         %[[HINTITEM:.*]] = arith.index_cast %[[HINT]] : i64 to index
+// CHECK:         %[[HINTGROUP:.*]] = arith.divui %[[HINTITEM]],
+// CHECK:         %[[OFFSET:.*]] = arith.subi %[[HINTGROUP]], %[[FROM:.*]] : index
+// CHECK:         %[[HANDLED:.*]] = arith.cmpi ult, %[[OFFSET]], %[[SPAN:.*]] : index
+// CHECK:         %[[SHIFT:.*]] = arith.select %[[HANDLED]], %[[OFFSET]], %c0 : index
+// CHECK:         scf.for %[[K:.*]] = %[[FROM]] to %[[TO:.*]] step %c1 {
+// CHECK:           %[[SHIFTED:.*]] = arith.addi %[[K]], %[[SHIFT]] : index
+// CHECK:           %[[INSIDE:.*]] = arith.cmpi ult, %[[SHIFTED]], %[[TO]] : index
+// CHECK:           %[[WRAPPED:.*]] = arith.subi %[[SHIFTED]], %[[SPAN]] : index
+// CHECK:           %[[GROUPINDEX:.*]] = arith.select %[[INSIDE]], %[[SHIFTED]], %[[WRAPPED]] : index
+// CHECK:           %[[BASE:.*]] = arith.muli %[[GROUPINDEX]],
 // CHECK:           %[[SEEN:.*]] = memref.atomic_rmw addi %c0_i64, %[[ECLOCK]][%c4]
 // CHECK:           %[[OPEN:.*]] = arith.cmpi sgt, %[[SEEN]], %c1_i64 : i64
 // CHECK:           scf.if %[[OPEN]] {
@@ -62,6 +77,12 @@ sim.simulation @pair range(100) dt(1.0e-2 : f32) max_steps(4) {
 // CHECK:             } {simplan.lanes}
 // CHECK:             scf.for {{.*}} iter_args
 // CHECK:             memref.atomic_rmw mins %{{.*}}, %[[ECLOCK]][%c4]
+// CHECK-NEXT:        %[[NOW:.*]] = memref.atomic_rmw addi %c0_i64, %[[ECLOCK]][%c4]
+// CHECK-NEXT:        %[[FOUND:.*]] = arith.cmpi eq, %[[NOW]], %c1_i64 : i64
+// CHECK-NEXT:        scf.if %[[FOUND]] {
+// CHECK-NEXT:          %[[BASE64:.*]] = arith.index_cast %[[BASE]] : index to i64
+// CHECK-NEXT:          memref.atomic_rmw assign %[[BASE64]], %[[ECLOCK]][%c7]
+// CHECK-NEXT:        }
 // CHECK-NEXT:      }
 // CHECK-NEXT:    }
 // CHECK-LABEL: func.func @substep_Follow(

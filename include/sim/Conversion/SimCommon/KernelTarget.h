@@ -150,6 +150,14 @@ public:
   /// the first item of the group.
   virtual void forEachGroup(KernelBuilder &b, Kernel &kernel,
                             function_ref<void(Value base)> body) = 0;
+  /// forEachGroup, but where the target orders its groups itself (a CPU,
+  /// splitsGroups), starting at the group of item `start` (i64) when this
+  /// invocation handles it and going round: a hint about which group
+  /// matters first (no result may depend on it). The default ignores it.
+  virtual void forEachGroupFrom(KernelBuilder &b, Kernel &kernel, Value start,
+                                function_ref<void(Value base)> body) {
+    forEachGroup(b, kernel, body);
+  }
   /// Runs `body` for each lane of the group that starts at `base`.
   virtual void forEachLane(KernelBuilder &b, Kernel &kernel, Value base,
                            function_ref<void(const Lane &)> body) = 0;

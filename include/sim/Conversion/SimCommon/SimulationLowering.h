@@ -43,6 +43,8 @@ constexpr int64_t kSlotEnd = int64_t(::sim::bundle::ClockSlot::End);
 constexpr int64_t kSlotEstimate = int64_t(::sim::bundle::ClockSlot::Estimate);
 constexpr int64_t kSlotBigSteps = int64_t(::sim::bundle::ClockSlot::BigSteps);
 constexpr int64_t kSlotCuts = int64_t(::sim::bundle::ClockSlot::Cuts);
+constexpr int64_t kSlotEstimateHint =
+    int64_t(::sim::bundle::ClockSlot::EstimateHint);
 constexpr int64_t kFirstFreeSlot = int64_t(::sim::bundle::ClockSlot::FirstFree);
 
 /// Slots of a grid-sub-stepping component's sub-step clock, from its first.
