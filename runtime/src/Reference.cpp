@@ -49,9 +49,17 @@ void interpolateLanes(Interp interp, int32_t lanes, S f, S h, const uint8_t *a,
     }
     case Interp::Hermite: {
       S dva = lane<S>(va, l), dvb = lane<S>(vb, l);
-      value = (1 + 2 * f) * (1 - f) * (1 - f) * av +
-              f * (1 - f) * (1 - f) * h * dva + f * f * (3 - 2 * f) * bv +
-              f * f * (f - 1) * h * dvb;
+      // Grouped as docs/Reference.md writes it: (1 - f)^2 and f^2 are
+      // products of their own, and the weights of the derivatives are
+      // scaled by h before they meet them. A product of three roundings
+      // in another order differs in the last bit for most f.
+      S oneMinusFSq = (1 - f) * (1 - f);
+      S fSq = f * f;
+      S h00 = (1 + 2 * f) * oneMinusFSq;
+      S h10 = f * oneMinusFSq;
+      S h01 = fSq * (3 - 2 * f);
+      S h11 = fSq * (f - 1);
+      value = h00 * av + (h10 * h) * dva + h01 * bv + (h11 * h) * dvb;
       break;
     }
     case Interp::None:

@@ -1059,7 +1059,8 @@ TEST_F(SimRun, ChecksCheckpointsAndOutputsBeforeRunning) {
       {"--set k=1.5 --restart " + bundle, 1,
        "it is a bundle, not a "
        "checkpoint"},
-      {"--restart " + sub + "/missing.simc", 2, "cannot read the input"},
+      {"--restart " + sub + "/missing.simc", 2,
+       "cannot read the --restart checkpoint"},
       // Outputs never land on an input, the restart file included (but the
       // checkpoint may replace it: that is what it is for).
       {"--output-every 5 --output " + bundle, 2,

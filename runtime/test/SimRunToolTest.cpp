@@ -422,6 +422,60 @@ TEST_F(SimRunOutput, RefusesFoldersThatCannotBeUsed) {
   }
 }
 
+TEST_F(SimRunOutput, RefusesDevicesFifosAndSymlinksToThem) {
+  // An output replaces the file at its path: a FIFO (or, as root, a device
+  // such as /dev/null) there would be replaced by a regular file. Only a
+  // FIFO here: a test that went wrong on /dev/null would break the machine.
+  std::string fifo = dir + "/fifo";
+  ASSERT_EQ(mkfifo(fifo.c_str(), 0644), 0);
+  std::string link = dir + "/to-fifo";
+  ASSERT_EQ(symlink(fifo.c_str(), link.c_str()), 0);
+  OutputPlan plan;
+  EXPECT_TRUE(
+      contains(exitOf([&] { plan.addFile("--json", fifo); }, kExitUsage),
+               "--json: '" + fifo +
+                   "' is a FIFO, not a regular file; sim-run "
+                   "replaces an output file whole, so name a "
+                   "regular file"));
+  EXPECT_TRUE(
+      contains(exitOf([&] { plan.addFile("--checkpoint", link); }, kExitUsage),
+               "--checkpoint: '" + link +
+                   "' is a symlink to a FIFO, not to a "
+                   "regular file"));
+  // A symlink into /proc (as /dev/stdout is) whatever it leads to: here
+  // this process's standard input, a file, a pipe or a terminal.
+  std::string stdinLink = dir + "/stdin";
+  ASSERT_EQ(symlink("/proc/self/fd/0", stdinLink.c_str()), 0);
+  EXPECT_TRUE(
+      contains(exitOf([&] { plan.addFile("--json", stdinLink); }, kExitUsage),
+               "--json: '" + stdinLink +
+                   "' is a symlink to '/proc/self/fd/0', a "
+                   "process's file"));
+  struct stat info;
+  ASSERT_EQ(lstat(fifo.c_str(), &info), 0);
+  EXPECT_TRUE(S_ISFIFO(info.st_mode));
+}
+
+TEST_F(SimRunOutput, ProbesFoldersThatAccessCallsWritable) {
+  // access() says yes to root for /proc, where no file can be created: the
+  // check creates (and removes) one instead, before the run.
+  struct stat info;
+  if (stat("/proc/self", &info) != 0)
+    GTEST_SKIP() << "no /proc";
+  OutputPlan plan;
+  EXPECT_TRUE(contains(
+      exitOf([&] { plan.addDirectory("--dump", "/proc"); }, kExitUsage),
+      "--dump: cannot write into directory '/proc'"));
+  EXPECT_TRUE(contains(
+      exitOf([&] { plan.addFile("--json", "/proc/sim-missing/j.json"); },
+             kExitUsage),
+      "--json: cannot create directory '/proc/sim-missing'"));
+  // Writable folders leave nothing behind.
+  plan.addDirectory("--dump", dir);
+  plan.addFile("--json", dir + "/new/j.json");
+  EXPECT_NE(stat((dir + "/new").c_str(), &info), 0);
+}
+
 TEST_F(SimRunOutput, ReplacesASymlinkInsteadOfFollowingIt) {
   std::string target = dir + "/target";
   writeFile(target, "keep me");

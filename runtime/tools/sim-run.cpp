@@ -254,13 +254,15 @@ private:
   sim_bundle *handle = nullptr;
 };
 
-/// The input must be there to read; a missing one is a usage error.
-void checkInput(const std::string &path) {
+/// An input (`what`: "the input", "the --restart checkpoint") must be there
+/// to read; a missing one is a usage error.
+void checkInput(const std::string &path, const std::string &what) {
   struct stat info;
   if (stat(path.c_str(), &info) != 0)
-    usageError("cannot read the input '" + path + "': " + std::strerror(errno));
+    usageError("cannot read " + what + " '" + path +
+               "': " + std::strerror(errno));
   if (S_ISDIR(info.st_mode))
-    usageError("the input '" + path + "' is a directory");
+    usageError(what + " '" + path + "' is a directory");
 }
 
 //===----------------------------------------------------------------------===//
@@ -932,13 +934,13 @@ void writeDumps(Results &results, const Options &options,
 
 /// The input and the output paths, checked before the bundle is read.
 OutputPlan planOutputs(const Options &options) {
-  checkInput(options.input);
+  checkInput(options.input, "the input");
   OutputPlan outputs;
   outputs.addInput(options.input);
   // The checkpoint may replace the one the run restarts from (read whole
   // before anything runs): the latest state is what it is for.
   if (!options.restart.empty()) {
-    checkInput(options.restart);
+    checkInput(options.restart, "the --restart checkpoint");
     if (options.checkpoint.empty() ||
         !sameFile(options.restart, options.checkpoint))
       outputs.addInput(options.restart);

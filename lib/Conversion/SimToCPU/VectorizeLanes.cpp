@@ -1027,20 +1027,9 @@ Value LaneVectorizer::widenElementPart(OpBuilder &b, Operation *op, int64_t k,
   }
   if (dividesThroughDouble(op))
     return divideThroughDouble(b, op, operands[0], operands[1], mask);
-  // LLVM's powi takes one integer exponent for a vector of bases (MLIR's
-  // fpowi wants one per element): one scalar fpowi per lane.
-  if (isa<math::FPowIOp>(op)) {
-    Type type = laneType(resultScalar);
-    Value result = arith::ConstantOp::create(
-        b, loc, type, cast<TypedAttr>(b.getZeroAttr(type)));
-    for (int64_t lane = 0; lane < width; ++lane) {
-      Value base = vector::ExtractOp::create(b, loc, operands[0], lane);
-      Value exponent = vector::ExtractOp::create(b, loc, operands[1], lane);
-      Value power = math::FPowIOp::create(b, loc, base, exponent);
-      result = vector::InsertOp::create(b, loc, power, result, lane);
-    }
-    return result;
-  }
+  // A widened math.fpowi has an exponent per lane, which LLVM's powi (one
+  // exponent for all) cannot take: --sim-lower-vector-ops, after this pass,
+  // unrolls it into one scalar fpowi per lane.
   OperationState state(loc, op->getName());
   state.addOperands(operands);
   state.addTypes(laneType(resultScalar));

@@ -130,6 +130,8 @@ compileSharedObjects(OwningOpRef<ModuleOp> module, Location loc,
       // AVX-512DQ converts vectors of i64 to and from f64 (vcvtqq2pd).
       lanes.wideIntConversions = isa == "x86-64-v4";
       pm.addPass(createSimVectorizeLanes(lanes));
+      // A widened fpowi (an exponent per lane) as one fpowi per lane.
+      pm.addPass(createSimLowerVectorOps());
       // f32 tanh as glibc computes it, in SIMD instructions instead of a
       // libm call per element (the same bits). Not in the reference
       // functions: they call libm itself, so the cross-check compares the

@@ -105,7 +105,7 @@ CLI::Validator size() {
         if (!bytes)
           return inQuotes(text) +
                  " is not a size in bytes (digits with an optional K, M, G "
-                 "or T, at most 8 EiB)";
+                 "or T, below 8 EiB)";
         text = std::to_string(*bytes);
         return "";
       },

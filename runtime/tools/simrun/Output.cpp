@@ -194,15 +194,63 @@ void OutputPlan::addInput(const std::string &path) {
   inputs.push_back(asWritten);
 }
 
+namespace {
+
+/// What kind of file `mode` is, for a message ("a character device").
+const char *kindOf(mode_t mode) {
+  if (S_ISCHR(mode))
+    return "a character device";
+  if (S_ISBLK(mode))
+    return "a block device";
+  if (S_ISFIFO(mode))
+    return "a FIFO";
+  if (S_ISSOCK(mode))
+    return "a socket";
+  if (S_ISDIR(mode))
+    return "a directory";
+  return "no regular file";
+}
+
+/// Whether a file can be created in the existing directory `dir`: created
+/// and removed again. access() says yes to root on read-only mounts and on
+/// /proc and /sys, where creating a file fails after the run.
+int probeCreate(const std::string &dir) {
+  std::string probe = dir + "/.sim-run-probe-XXXXXX";
+  int fd = mkstemp(probe.data());
+  if (fd < 0)
+    return errno;
+  close(fd);
+  unlink(probe.c_str());
+  return 0;
+}
+
+/// Whether the missing directory `dir` can be created under its existing
+/// ancestor `ancestor`: the first missing level is created and removed.
+int probeMakeDirectory(const std::string &ancestor, const std::string &dir) {
+  std::string resolved = resolveDirectory(dir);
+  std::string first = resolved;
+  while (parentOf(first) != ancestor && first != "/" && !first.empty())
+    first = parentOf(first);
+  if (mkdir(first.c_str(), 0700) != 0)
+    return errno == EEXIST ? 0 : errno;
+  rmdir(first.c_str());
+  return 0;
+}
+
+} // namespace
+
 void OutputPlan::checkWritableFolder(const std::string &option,
                                      const std::string &dir) const {
   struct stat info;
   if (stat(dir.c_str(), &info) == 0) {
     if (!S_ISDIR(info.st_mode))
       usageError(option + ": '" + dir + "' is not a directory");
-    if (access(dir.c_str(), W_OK | X_OK) != 0)
+    int error = access(dir.c_str(), W_OK | X_OK) != 0 ? errno : 0;
+    if (!error)
+      error = probeCreate(dir);
+    if (error)
       usageError(option + ": cannot write into directory '" + dir +
-                 "': " + errorText(errno));
+                 "': " + errorText(error));
     return;
   }
   if (errno != ENOENT && errno != ENOTDIR)
@@ -219,9 +267,12 @@ void OutputPlan::checkWritableFolder(const std::string &option,
   if (stat(ancestor.c_str(), &info) != 0 || !S_ISDIR(info.st_mode))
     usageError(option + ": cannot create directory '" + dir + "': '" +
                ancestor + "' is not a directory");
-  if (access(ancestor.c_str(), W_OK | X_OK) != 0)
+  int error = access(ancestor.c_str(), W_OK | X_OK) != 0 ? errno : 0;
+  if (!error)
+    error = probeMakeDirectory(ancestor, dir);
+  if (error)
     usageError(option + ": cannot create directory '" + dir + "' in '" +
-               ancestor + "': " + errorText(errno));
+               ancestor + "': " + errorText(error));
 }
 
 void OutputPlan::addDirectory(const std::string &option,
@@ -239,6 +290,35 @@ void OutputPlan::addFile(const std::string &option, const std::string &path) {
   struct stat info;
   if (file.exists && lstat(path.c_str(), &info) == 0 && S_ISDIR(info.st_mode))
     usageError(option + ": '" + path + "' is a directory, not a file");
+  // Outputs replace the file at their path (written beside it, then
+  // renamed over it): a device, a FIFO or a socket there, or a symlink to
+  // one (/dev/stdout), would be replaced by a regular file, which as root
+  // breaks /dev/null for the whole machine.
+  if (file.exists && lstat(path.c_str(), &info) == 0 &&
+      !S_ISREG(info.st_mode) && !S_ISLNK(info.st_mode))
+    usageError(option + ": '" + path + "' is " + kindOf(info.st_mode) +
+               ", not a regular file; sim-run replaces an output file "
+               "whole, so name a regular file");
+  // /dev/stdout and /dev/fd/N are symlinks into /proc/self/fd: whatever
+  // they lead to (a terminal, a pipe, a file), replacing them would replace
+  // the machine's /dev/stdout.
+  char target[PATH_MAX];
+  ssize_t length =
+      file.exists && lstat(path.c_str(), &info) == 0 && S_ISLNK(info.st_mode)
+          ? readlink(path.c_str(), target, sizeof target - 1)
+          : -1;
+  if (length > 0 &&
+      std::string_view(target, size_t(length)).substr(0, 6) == "/proc/")
+    usageError(option + ": '" + path + "' is a symlink to '" +
+               std::string(target, size_t(length)) +
+               "', a process's file; sim-run would replace the symlink with "
+               "a regular file, so name a regular file");
+  if (file.exists && stat(path.c_str(), &info) == 0 && !S_ISREG(info.st_mode) &&
+      !S_ISDIR(info.st_mode))
+    usageError(option + ": '" + path + "' is a symlink to " +
+               kindOf(info.st_mode) +
+               ", not to a regular file; sim-run would replace the symlink "
+               "with a regular file, so name a regular file");
   std::string last = path.substr(path.rfind('/') + 1);
   if (last == "." || last == "..")
     usageError(option + ": '" + path + "' is a directory, not a file");

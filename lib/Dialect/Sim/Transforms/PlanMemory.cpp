@@ -84,24 +84,35 @@ struct PlanMemoryPass : public sim::impl::SimPlanMemoryBase<PlanMemoryPass> {
           return component.getAdvance() == Advance::local_steps;
         })) {
       InFlightDiagnostic remark = simulation.emitRemark();
-      remark << "strategy lts: no component takes local time steps, so the "
-                "plan is hip's; a component takes them when it has "
-                "num_steps, reads a buffer it writes at other items through "
-                "a window (@B[%i + c]) and does not bound the big step (read "
-                "through the back edge), or when it reads at its own items "
-                "what the component that bounds the big step computes from "
-                "its state (a pair, docs/Model.md); the remarks of "
-                "--sim-substep-legality say why each component that reads "
-                "its own buffers at other items, and each pair, does not";
-      SmallVector<ComponentOp> bounding;
-      for (ComponentOp component : analysis.getComponents())
-        if (boundsBigStep(component))
-          bounding.push_back(component);
-      if (!bounding.empty()) {
-        remark << "; the big step is bounded by ";
-        llvm::interleaveComma(bounding, remark, [&](ComponentOp component) {
-          remark << "@" << component.getSymName();
-        });
+      // The sub-stepping remarks say what a component would do under lts;
+      // with max_steps 1 none does it, whatever they say.
+      if (simulation.getMaxSteps() <= 1) {
+        remark << "strategy lts: max_steps is 1, so every big step is one "
+                  "base step and every strategy steps as simple does: no "
+                  "component takes local time steps (what the remarks of "
+                  "--sim-substep-legality say about lts holds from "
+                  "max_steps 2)";
+      } else {
+        remark << "strategy lts: no component takes local time steps, so the "
+                  "plan is hip's; a component takes them when it has "
+                  "num_steps, reads a buffer it writes at other items through "
+                  "a window (@B[%i + c]) and does not bound the big step "
+                  "(read through the back edge), or when it reads at its own "
+                  "items what the component that bounds the big step "
+                  "computes from its state (a pair, docs/Model.md); the "
+                  "remarks of --sim-substep-legality say why each component "
+                  "that reads its own buffers at other items, and each pair, "
+                  "does not";
+        SmallVector<ComponentOp> bounding;
+        for (ComponentOp component : analysis.getComponents())
+          if (boundsBigStep(component))
+            bounding.push_back(component);
+        if (!bounding.empty()) {
+          remark << "; the big step is bounded by ";
+          llvm::interleaveComma(bounding, remark, [&](ComponentOp component) {
+            remark << "@" << component.getSymName();
+          });
+        }
       }
     }
     simulation.setStrategyAttr(StrategyAttr::get(context, strategy));

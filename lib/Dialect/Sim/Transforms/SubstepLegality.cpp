@@ -116,13 +116,16 @@ struct SubstepLegalityPass
     bool isEntry = schedule && !schedule.getOrder().empty() &&
                    cast<FlatSymbolRefAttr>(schedule.getOrder()[0]).getAttr() ==
                        writer.getSymNameAttr();
-    // The one component that reads the writer's values, if there is one.
+    // The one component other than the writer that reads the writer's
+    // values, if there is one. A writer that also reads them (a kick that
+    // updates its own velocity) has the shape and is refused below with a
+    // remark.
     ComponentOp reader;
     bool oneReader = true;
     for (ComponentOp component : analysis.getComponents())
       for (const BufferAccess &access : analysis.getAccesses(component))
-        if (llvm::is_contained(outputs, access.buffer)) {
-          if (component == writer || (reader && reader != component))
+        if (component != writer && llvm::is_contained(outputs, access.buffer)) {
+          if (reader && reader != component)
             oneReader = false;
           reader = component;
         }
@@ -134,7 +137,12 @@ struct SubstepLegalityPass
         return;
       for (const BufferAccess &access : analysis.getAccesses(writer)) {
         ComponentOp producer = analysis.getWriter(access.buffer);
-        if (producer && producer != reader)
+        if (producer && producer != reader && producer != writer)
+          return;
+        // A stencil of its own is no pair shape (its remark says how it
+        // could take local steps); a read of its own item (a kick that
+        // updates its velocity) is, and is refused below.
+        if (producer == writer && !access.pattern.isOwn())
           return;
       }
     }
@@ -174,10 +182,20 @@ struct SubstepLegalityPass
       for (const BufferAccess &access : analysis.getAccesses(component)) {
         if (!llvm::is_contained(outputs, access.buffer))
           continue;
-        if (component == writer) {
+        if (component == writer && fluxPair) {
           refuse() << "it reads its own flux @" << access.buffer.getSymName()
                    << "; a flux writer computes fluxes from the state of "
                       "the component that reads them";
+          return;
+        }
+        if (component == writer) {
+          refuse() << "it reads its own @" << access.buffer.getSymName()
+                   << "; in an item pair @" << name
+                   << " computes its values from @" << readerName
+                   << "'s state alone: let @" << name << " write what @"
+                   << readerName << " needs (a force or an acceleration) and @"
+                   << readerName << " update @" << access.buffer.getSymName()
+                   << " with its own state";
           return;
         }
         if (component != reader) {

@@ -72,3 +72,39 @@ sim.simulation @pointwise range(64) dt(1.0e-2 : f32) max_steps(4) {
   }
   sim.observe [@U]
 }
+
+// -----
+
+// max_steps 1: every big step is one base step, so no component takes local
+// time steps, though the stencil could with a larger max_steps; the remark
+// says so instead of pointing at the sub-stepping remarks.
+
+// CHECK-LABEL: sim.simulation @one_base_step
+// CHECK: sim.component @Diffuse writes(@U) attributes {advance = #sim<advance whole_step>
+// expected-remark @+1 {{strategy lts: max_steps is 1, so every big step is one base step and every strategy steps as simple does: no component takes local time steps (what the remarks of --sim-substep-legality say about lts holds from max_steps 2)}}
+sim.simulation @one_base_step range(64) dt(1.0e-2 : f32) max_steps(1) {
+  sim.buffer @U : f32 init {
+  ^bb0(%i: index):
+    %c = arith.constant 0.0 : f32
+    sim.yield %c : f32
+  }
+  // expected-remark @+1 {{under lts its blocks of 32 items take local time steps (window i-1..i+1)}}
+  sim.component @Diffuse writes(@U) num_steps {
+  ^bb0(%i: index, %t: i64):
+    %c2 = arith.constant 2 : i32
+    sim.yield %c2 : i32
+  } evaluate {
+  ^bb0(%i: index, %t: i64, %n: i32, %dt: f32):
+    %c1 = arith.constant 1 : index
+    %l = arith.subi %i, %c1 : index
+    %r = arith.addi %i, %c1 : index
+    %u = sim.read @U[%i] : f32
+    // expected-note @+1 {{reads @U at i-1}}
+    %ul = sim.read @U[%l] : f32
+    %ur = sim.read @U[%r] : f32
+    %s = arith.addf %ul, %ur : f32
+    %d = arith.subf %s, %u : f32
+    sim.yield %d : f32
+  }
+  sim.observe [@U]
+}

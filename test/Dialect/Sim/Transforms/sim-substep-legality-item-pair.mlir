@@ -521,3 +521,56 @@ sim.simulation @two_readers range(64) dt(1.0e-2 : f64) max_steps(4) {
   sim.schedule [@Force, @Integrate, @Monitor] bounded_by [@Force]
   sim.observe [@X]
 }
+
+// -----
+
+// A kick that updates its own velocity (leapfrog written as kick and
+// drift): @Kick reads its own @V, so no pair, and the remark says how to
+// write it as one.
+
+// CHECK-LABEL: sim.simulation @kick_reads_own
+// CHECK-NOT: flux_window
+// CHECK: sim.observe
+
+sim.simulation @kick_reads_own range(64) dt(1.0e-2 : f64) max_steps(4) {
+  sim.buffer @U : f64 init {
+  ^bb0(%i: index):
+    %c = arith.constant 1.0 : f64
+    sim.yield %c : f64
+  }
+  sim.buffer @V : f64 init {
+  ^bb0(%i: index):
+    %c = arith.constant 0.0 : f64
+    sim.yield %c : f64
+  }
+  // expected-remark @+1 {{under lts @Kick and @Drift form no pair, and @Kick's num_steps bounds the big step as under hip: it reads its own @V; in an item pair @Kick computes its values from @Drift's state alone: let @Kick write what @Drift needs (a force or an acceleration) and @Drift update @V with its own state}}
+  sim.component @Kick writes(@V) num_steps {
+  ^bb0(%i: index, %t: i64):
+    %c4 = arith.constant 4 : i32
+    sim.yield %c4 : i32
+  } evaluate {
+  ^bb0(%i: index, %t: i64, %n: i32, %dt: f64):
+    %c1 = arith.constant 1 : index
+    %il = arith.subi %i, %c1 : index
+    %ir = arith.addi %i, %c1 : index
+    %ul = sim.read @U[%il] : f64
+    %ur = sim.read @U[%ir] : f64
+    %v = sim.read @V[%i] : f64
+    %d = arith.subf %ur, %ul : f64
+    %v1 = math.fma %dt, %d, %v : f64
+    sim.yield %v1 : f64
+  }
+  sim.component @Drift writes(@U) num_steps {
+  ^bb0(%i: index, %t: i64):
+    %c2 = arith.constant 2 : i32
+    sim.yield %c2 : i32
+  } evaluate {
+  ^bb0(%i: index, %t: i64, %n: i32, %dt: f64):
+    %v = sim.read @V[%i] : f64
+    %u = sim.read @U[%i] : f64
+    %u1 = math.fma %dt, %v, %u : f64
+    sim.yield %u1 : f64
+  }
+  sim.schedule [@Kick, @Drift] bounded_by [@Kick]
+  sim.observe [@U]
+}
