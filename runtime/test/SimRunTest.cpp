@@ -527,6 +527,39 @@ TEST_F(SimRun, StopsAtTheFirstNonFiniteValue) {
       << result.output;
 }
 
+TEST_F(SimRun, KeepsTheOutputTimesAndCheckpointOfARunThatFails) {
+  // The NaN in the base step from 4 ends the run; the output times 0, 2
+  // and 4 are in the .npz and the checkpoint of base step 4 stays. No JSON (its
+  // presence says the run ended) and no dumps (the state stopped inside a
+  // big step).
+  std::string npz = dir + "/failed.npz", json = dir + "/failed.json",
+              dump = dir + "/failed-dump", checkpoint = dir + "/failed.simc";
+  Result result =
+      simRun(bundle +
+             " --backend cpu --strategy simple --steps 20 "
+             "--set poison=4 --check-finite "
+             "--output-every 2 --output " +
+             npz + " --json " + json + " --dump " + dump + " --checkpoint " +
+             checkpoint + " --checkpoint-every 2");
+  EXPECT_EQ(result.status, 1) << result.output;
+  size_t error = result.output.find("sim-run: error: non-finite value nan");
+  size_t kept = result.output.find(
+      "sim-run: note: the run failed after 3 output times (the last at base "
+      "step 4); '" +
+      npz + "' holds them");
+  EXPECT_NE(error, std::string::npos) << result.output;
+  EXPECT_NE(kept, std::string::npos) << result.output;
+  EXPECT_LT(error, kept) << result.output;
+  EXPECT_TRUE(contains(result.output, "sim-run: note: the checkpoint '" +
+                                          checkpoint +
+                                          "' of base step 4 stays"))
+      << result.output;
+  EXPECT_TRUE(exists(npz));
+  EXPECT_TRUE(exists(checkpoint));
+  EXPECT_FALSE(exists(json));
+  EXPECT_FALSE(exists(dump));
+}
+
 TEST_F(SimRun, ReportsBadBundles) {
   std::string bad = dir + "/bad.simb";
   writeFile(bad, "not a bundle at all, but long enough");

@@ -1009,13 +1009,13 @@ void requireExactSolution(const sim_bundle *bundle, sim_session *session,
              "' declares no exact solution of an observed buffer");
 }
 
-/// Every run in order, each session freed when its part is done.
-Results runAll(Sessions &sessions, const sim_bundle *bundle,
-               const Options &options,
-               const std::vector<sim_buffer_info> &observed) {
+/// Every run in order, each session freed when its part is done, into
+/// `results` (which keeps what was recorded when a run fails).
+void runAll(Results &results, Sessions &sessions, const sim_bundle *bundle,
+            const Options &options,
+            const std::vector<sim_buffer_info> &observed) {
   Progress progress(printing() && isatty(STDERR_FILENO),
                     printing() && options.progress);
-  Results results;
   // The init check first: what it finds matters before a long run. It
   // runs the reference functions in this process: rank 0's is enough.
   if (options.noInitCheck)
@@ -1044,7 +1044,31 @@ Results runAll(Sessions &sessions, const sim_bundle *bundle,
     sessions.check.reset();
   }
   results.signal = receivedSignal();
-  return results;
+}
+
+/// A run that failed (--check-finite found a NaN, a kernel failed) still
+/// writes the output times it reached into --output's .npz; the last
+/// checkpoint of --checkpoint-every stays. No JSON and no dumps: the state
+/// stopped inside a big step, and the JSON's presence says the run ended.
+void keepWhatTheFailedRunReached(const Results &results,
+                                 const Options &options) {
+  if (!printing())
+    return;
+  if (!options.output.empty() && results.series.size() > 0) {
+    writeSeries(results, options);
+    std::fprintf(stderr,
+                 "sim-run: note: the run failed after %zu output time%s "
+                 "(the last at base step %lld); '%s' holds them\n",
+                 results.series.size(), results.series.size() == 1 ? "" : "s",
+                 static_cast<long long>(results.series.times.back()),
+                 options.output.c_str());
+  }
+  if (results.main.checkpointsWritten > 0)
+    std::fprintf(stderr,
+                 "sim-run: note: the checkpoint '%s' of base step %lld "
+                 "stays, to restart from\n",
+                 results.main.checkpointFile.c_str(),
+                 static_cast<long long>(results.main.checkpointTime));
 }
 
 /// For a .mlir input, moves the compile-time settings (max_steps) out of
@@ -1166,7 +1190,16 @@ int run(Options options) {
   // A signal that came before the first run leaves nothing to report.
   stopIfInterrupted("before the run");
 
-  Results results = runAll(sessions, bundle, options, observed);
+  Results results;
+  try {
+    runAll(results, sessions, bundle, options, observed);
+  } catch (const Exit &exit) {
+    // The error first, then what it left.
+    if (!exit.message.empty() && exit.status < kExitSignalBase)
+      std::fprintf(stderr, "sim-run: error: %s\n", exit.message.c_str());
+    keepWhatTheFailedRunReached(results, options);
+    throw Exit{exit.status, exit.status < kExitSignalBase ? "" : exit.message};
+  }
   if (!printing()) {
     // Rank 0 reports; the exit status is every rank's.
     if (int signal = receivedSignal())
