@@ -14,6 +14,7 @@
 #include <cstring>
 #include <dlfcn.h>
 #include <elf.h>
+#include <optional>
 #include <sys/mman.h>
 #include <unistd.h>
 
@@ -84,24 +85,168 @@ void checkElfImage(const std::vector<uint8_t> &object,
              sizeof(Elf64_Shdr), "section header table");
   if (header.e_phnum == 0)
     bad("no program headers: nothing to load");
-  bool dynamic = false;
+  // The segments. dlopen trusts them: a loadable segment dropped or grown
+  // over the next one, or a dynamic table that points outside what is
+  // mapped, crashes the dynamic loader itself. The CRC catches damage; this
+  // catches a bundle whose objects were edited (or produced by something
+  // else) and whose CRC was recomputed. The machine code itself cannot be
+  // checked: a bundle carries native code, and running it trusts it.
+  std::vector<Elf64_Phdr> loads;
+  std::optional<Elf64_Phdr> dynamic;
   for (uint16_t i = 0; i < header.e_phnum; ++i) {
     Elf64_Phdr segment;
     std::memcpy(&segment,
                 object.data() + header.e_phoff + uint64_t(i) * sizeof segment,
                 sizeof segment);
+    std::string name = "segment " + std::to_string(i);
     if (segment.p_offset > size || segment.p_filesz > size - segment.p_offset)
-      bad("segment " + std::to_string(i) + " (" +
-          std::to_string(segment.p_filesz) + " bytes at offset " +
+      bad(name + " (" + std::to_string(segment.p_filesz) + " bytes at offset " +
           std::to_string(segment.p_offset) + ") reaches past the end of its " +
           std::to_string(size) + " bytes");
-    if (segment.p_type == PT_LOAD && segment.p_filesz > segment.p_memsz)
-      bad("segment " + std::to_string(i) +
-          " holds more bytes in the file than in memory");
-    dynamic |= segment.p_type == PT_DYNAMIC;
+    switch (segment.p_type) {
+    case PT_NULL:
+    case PT_NOTE:
+    case PT_PHDR:
+    case PT_GNU_EH_FRAME:
+    case PT_GNU_STACK:
+    case PT_GNU_RELRO:
+    case PT_GNU_PROPERTY:
+      break;
+    case PT_LOAD:
+      if (segment.p_filesz > segment.p_memsz)
+        bad(name + " holds more bytes in the file than in memory");
+      // At most 1 GiB in memory: the kernels' objects hold a few pages.
+      if (segment.p_memsz > (uint64_t(1) << 30) ||
+          segment.p_vaddr > (uint64_t(1) << 40))
+        bad(name + " maps " + std::to_string(segment.p_memsz) +
+            " bytes at address " + std::to_string(segment.p_vaddr));
+      if (!loads.empty() &&
+          loads.back().p_vaddr + loads.back().p_memsz > segment.p_vaddr)
+        bad(name + " is loaded at " + std::to_string(segment.p_vaddr) +
+            ", inside or before the loadable segment before it");
+      loads.push_back(segment);
+      break;
+    case PT_DYNAMIC:
+      if (dynamic)
+        bad("two dynamic segments");
+      dynamic = segment;
+      break;
+    default:
+      bad(name + " has type " + std::to_string(segment.p_type) +
+          ", which no shared object of sim-translate has (an interpreter, "
+          "thread-local storage or an unknown type)");
+    }
   }
+  if (loads.empty())
+    bad("no loadable segment");
   if (!dynamic)
     bad("no dynamic segment");
+  // Where an address of the loaded object lies in the file, if it is
+  // mapped from the file for `bytes` bytes.
+  auto fileOffset = [&](uint64_t address,
+                        uint64_t bytes) -> std::optional<uint64_t> {
+    for (const Elf64_Phdr &load : loads)
+      if (address >= load.p_vaddr && address - load.p_vaddr <= load.p_filesz &&
+          bytes <= load.p_filesz - (address - load.p_vaddr))
+        return load.p_offset + (address - load.p_vaddr);
+    return std::nullopt;
+  };
+  auto mapped = [&](uint64_t address, uint64_t bytes, bool writable) {
+    for (const Elf64_Phdr &load : loads)
+      if (address >= load.p_vaddr && address - load.p_vaddr <= load.p_memsz &&
+          bytes <= load.p_memsz - (address - load.p_vaddr))
+        return !writable || (load.p_flags & PF_W);
+    return false;
+  };
+  // The other segments describe parts of what is loaded (the dynamic
+  // loader reads the program headers through PT_PHDR, protects PT_GNU_RELRO
+  // and so on): each lies inside it, where its file bytes are.
+  for (uint16_t i = 0; i < header.e_phnum; ++i) {
+    Elf64_Phdr segment;
+    std::memcpy(&segment,
+                object.data() + header.e_phoff + uint64_t(i) * sizeof segment,
+                sizeof segment);
+    if (segment.p_type == PT_LOAD || segment.p_type == PT_NULL ||
+        segment.p_type == PT_GNU_STACK)
+      continue;
+    std::optional<uint64_t> at = fileOffset(segment.p_vaddr, segment.p_filesz);
+    if (!at || *at != segment.p_offset ||
+        !mapped(segment.p_vaddr, segment.p_memsz, false))
+      bad("segment " + std::to_string(i) + " (type " +
+          std::to_string(segment.p_type) + ", " +
+          std::to_string(segment.p_memsz) + " bytes at address " +
+          std::to_string(segment.p_vaddr) +
+          ") lies outside the loadable segments or elsewhere in the file");
+    if (segment.p_type == PT_PHDR &&
+        (segment.p_offset != header.e_phoff ||
+         segment.p_filesz != uint64_t(header.e_phnum) * sizeof(Elf64_Phdr)))
+      bad("segment " + std::to_string(i) +
+          " does not describe the program header table");
+  }
+  std::optional<uint64_t> table =
+      fileOffset(dynamic->p_vaddr, dynamic->p_filesz);
+  if (!table || *table != dynamic->p_offset)
+    bad("the dynamic segment lies outside the loadable segments");
+  // Every address the dynamic table gives, and every place a relocation
+  // writes to, lies in what is loaded.
+  uint64_t relocations[2] = {0, 0}, relocationBytes[2] = {0, 0};
+  for (uint64_t at = 0; at + sizeof(Elf64_Dyn) <= dynamic->p_filesz;
+       at += sizeof(Elf64_Dyn)) {
+    Elf64_Dyn entry;
+    std::memcpy(&entry, object.data() + *table + at, sizeof entry);
+    if (entry.d_tag == DT_NULL)
+      break;
+    switch (entry.d_tag) {
+    case DT_HASH:
+    case DT_GNU_HASH:
+    case DT_STRTAB:
+    case DT_SYMTAB:
+    case DT_RELA:
+    case DT_JMPREL:
+    case DT_INIT_ARRAY:
+    case DT_FINI_ARRAY:
+    case DT_INIT:
+    case DT_FINI:
+    case DT_VERSYM:
+    case DT_VERDEF:
+    case DT_VERNEED:
+    case DT_PLTGOT:
+      if (!mapped(entry.d_un.d_ptr, 1, false))
+        bad("its dynamic table gives address " +
+            std::to_string(entry.d_un.d_ptr) + " (tag " +
+            std::to_string(entry.d_tag) + "), which is not loaded");
+      break;
+    default:
+      break;
+    }
+    if (entry.d_tag == DT_RELA)
+      relocations[0] = entry.d_un.d_ptr;
+    if (entry.d_tag == DT_RELASZ)
+      relocationBytes[0] = entry.d_un.d_val;
+    if (entry.d_tag == DT_JMPREL)
+      relocations[1] = entry.d_un.d_ptr;
+    if (entry.d_tag == DT_PLTRELSZ)
+      relocationBytes[1] = entry.d_un.d_val;
+  }
+  for (int k = 0; k < 2; ++k) {
+    if (!relocationBytes[k])
+      continue;
+    std::optional<uint64_t> from =
+        fileOffset(relocations[k], relocationBytes[k]);
+    if (!from)
+      bad("its relocations (" + std::to_string(relocationBytes[k]) +
+          " bytes at address " + std::to_string(relocations[k]) +
+          ") are not in the file");
+    for (uint64_t at = 0; at + sizeof(Elf64_Rela) <= relocationBytes[k];
+         at += sizeof(Elf64_Rela)) {
+      Elf64_Rela relocation;
+      std::memcpy(&relocation, object.data() + *from + at, sizeof relocation);
+      if (!mapped(relocation.r_offset, sizeof(uint64_t), true))
+        bad("a relocation writes to address " +
+            std::to_string(relocation.r_offset) +
+            ", which is not in a writable loaded segment");
+    }
+  }
   for (uint16_t i = 0; i < header.e_shnum; ++i) {
     Elf64_Shdr section;
     std::memcpy(&section,

@@ -20,6 +20,7 @@
 
 #include <cmath>
 #include <cstring>
+#include <elf.h>
 #include <functional>
 
 using namespace sim::rt;
@@ -49,6 +50,19 @@ std::string errorAfter(const std::function<void(schema::BundleT &)> &edit) {
 
 schema::PlanT &hipPlan(schema::BundleT &contents) {
   return planOf(contents, Strategy::Hip);
+}
+
+/// The program header of the first segment of `type` in an ELF object.
+Elf64_Phdr &segmentOf(std::vector<uint8_t> &object, uint32_t type) {
+  Elf64_Ehdr header;
+  std::memcpy(&header, object.data(), sizeof header);
+  for (uint16_t i = 0; i < header.e_phnum; ++i) {
+    auto *segment = reinterpret_cast<Elf64_Phdr *>(
+        object.data() + header.e_phoff + i * sizeof(Elf64_Phdr));
+    if (segment->p_type == type)
+      return *segment;
+  }
+  throw std::runtime_error("no such segment");
 }
 
 /// The launch `index` of the step phase of `plan`.
@@ -485,6 +499,27 @@ TEST(BundleVerifier, ChecksPhasesAndCode) {
          object.resize(object.size() / 2);
        },
        "reaches past the end of its"},
+      // With the CRC recomputed, edited program headers crashed the
+      // dynamic loader: a loadable segment turned into an unknown type, one
+      // grown over the next, a PT_PHDR (here PT_GNU_RELRO: this object is
+      // GNU ld's, which writes none) that points elsewhere.
+      {[](auto &c) {
+         segmentOf(hipPlan(c).cpu[0]->object, PT_LOAD).p_type = 0x99000001;
+       },
+       "has type 2566914049, which no shared object of sim-translate has"},
+      {[](auto &c) {
+         segmentOf(hipPlan(c).cpu[0]->object, PT_LOAD).p_memsz += 1 << 17;
+       },
+       "inside or before the loadable segment before it"},
+      {[](auto &c) {
+         segmentOf(hipPlan(c).cpu[0]->object, PT_GNU_RELRO).p_vaddr +=
+             uint64_t(1) << 44;
+       },
+       "lies outside the loadable segments or elsewhere in the file"},
+      {[](auto &c) {
+         segmentOf(hipPlan(c).cpu[0]->object, PT_DYNAMIC).p_offset += 8;
+       },
+       "lies outside the loadable segments or elsewhere in the file"},
   };
   for (const Case &c : cases)
     EXPECT_TRUE(contains(errorAfter(c.edit), c.message)) << c.message;

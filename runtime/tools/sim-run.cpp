@@ -1194,6 +1194,12 @@ int run(Options options) {
   try {
     runAll(results, sessions, bundle, options, observed);
   } catch (const Exit &exit) {
+    // A distributed run's ranks report their errors their own way
+    // (runDistributed).
+    if (options.distributed) {
+      keepWhatTheFailedRunReached(results, options);
+      throw;
+    }
     // The error first, then what it left.
     if (!exit.message.empty() && exit.status < kExitSignalBase)
       std::fprintf(stderr, "sim-run: error: %s\n", exit.message.c_str());
