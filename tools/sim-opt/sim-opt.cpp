@@ -27,6 +27,11 @@ int main(int argc, char **argv) {
   // Errors name the operation and location; no dump of the whole simulation
   // unless --mlir-print-op-on-diagnostic asks for it.
   mlir::sim::setToolDefaults();
+  std::string runtimeFile = mlir::sim::describeRuntimeFileInput(argc, argv);
+  if (!runtimeFile.empty()) {
+    llvm::errs() << "sim-opt: error: " << runtimeFile << "\n";
+    return 1;
+  }
 
   mlir::DialectRegistry registry;
   registry.insert<mlir::sim::SimDialect, mlir::arith::ArithDialect,

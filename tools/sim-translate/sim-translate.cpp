@@ -15,6 +15,11 @@
 
 int main(int argc, char **argv) {
   mlir::sim::setToolDefaults();
+  std::string runtimeFile = mlir::sim::describeRuntimeFileInput(argc, argv);
+  if (!runtimeFile.empty()) {
+    llvm::errs() << "sim-translate: error: " << runtimeFile << "\n";
+    return 1;
+  }
   mlir::sim::registerSimTranslations();
   // The translations run pass pipelines: --mlir-print-ir-after-failure,
   // --mlir-timing and friends apply to them.

@@ -18,6 +18,9 @@
 #include "mlir/IR/MLIRContext.h"
 #include "llvm/Support/CommandLine.h"
 
+#include <cstdio>
+#include <string>
+
 namespace mlir::sim {
 
 /// The upstream option that makes MLIRContext attach the operation to every
@@ -52,6 +55,40 @@ inline void setToolDefaults() {
 inline void applyPrintOpOnDiagnosticOption(MLIRContext *context) {
   if (llvm::cl::opt<bool> *option = getPrintOpOnDiagnosticOption())
     context->printOpOnDiagnostic(option->getValue());
+}
+
+/// What is wrong with an input of sim-opt or sim-translate that is one of
+/// sim-run's binary files (a bundle, a checkpoint): the MLIR parser would
+/// print their bytes in its error. Empty when no argument is one. Options
+/// of the sim tools take their values after `=`; only `-o` takes the next
+/// argument.
+inline std::string describeRuntimeFileInput(int argc, char **argv) {
+  for (int i = 1; i < argc; ++i) {
+    llvm::StringRef arg(argv[i]);
+    if (arg == "-o" || arg == "--o") {
+      ++i;
+      continue;
+    }
+    if (arg.starts_with("-"))
+      continue;
+    std::FILE *file = std::fopen(argv[i], "rb");
+    if (!file)
+      continue;
+    char magic[8] = {};
+    size_t read = std::fread(magic, 1, sizeof magic, file);
+    std::fclose(file);
+    if (read != sizeof magic)
+      continue;
+    llvm::StringRef start(magic, sizeof magic);
+    if (start == llvm::StringRef("SIMBNDL\0", 8))
+      return "'" + arg.str() +
+             "' is a sim bundle (.simb), not MLIR: run it with sim-run";
+    if (start == llvm::StringRef("SIMCKPT\0", 8))
+      return "'" + arg.str() +
+             "' is a sim-run checkpoint (.simc), not MLIR: continue it with "
+             "sim-run <bundle> --restart";
+  }
+  return "";
 }
 
 } // namespace mlir::sim
