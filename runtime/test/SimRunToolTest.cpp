@@ -18,9 +18,11 @@
 #include "simrun/Safety.h"
 
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 #include <cctype>
 #include <cmath>
+#include <csignal>
 #include <cstdlib>
 #include <cstring>
 #include <limits>
@@ -745,4 +747,31 @@ TEST(SimRunReport, ComparesTotalsWithTheirReference) {
   EXPECT_EQ(compareTotal("E", 1, 0).relative, INFINITY);
   EXPECT_EQ(compareTotal("E", 0, 0).relative, 0);
   EXPECT_TRUE(std::isnan(compareTotal("E", NAN, 1).absolute));
+}
+
+TEST(SimRunReport, ListsTheMeasuredRunsASignalSkipped) {
+  // SIGINT in the warm-up of --repeat 3: the three measured runs and the
+  // reference never ran.
+  Results results;
+  results.main.repeat = 3;
+  results.main.steps = 10;
+  results.main.cutRun = 0;
+  results.main.state = {Stage::Cut, 4, 10};
+  results.reference = {Stage::Skipped, 0, 0};
+  results.signal = SIGINT;
+  nlohmann::json json = nlohmann::json::parse(toJson(results));
+  EXPECT_EQ(json["interruption"]["during"], "warm-up");
+  EXPECT_EQ(json["interruption"]["skipped"],
+            nlohmann::json::array({"runs 1 to 3", "reference"}));
+  // In the second of three: the third is skipped.
+  results.main.cutRun = 2;
+  json = nlohmann::json::parse(toJson(results));
+  EXPECT_EQ(json["interruption"]["during"], "run");
+  EXPECT_EQ(json["interruption"]["skipped"],
+            nlohmann::json::array({"run 3", "reference"}));
+  // In the last one: nothing of the main run is skipped.
+  results.main.cutRun = 3;
+  json = nlohmann::json::parse(toJson(results));
+  EXPECT_EQ(json["interruption"]["skipped"],
+            nlohmann::json::array({"reference"}));
 }

@@ -391,6 +391,13 @@ Json interruption(const Results &results) {
       during = part.name;
       reached = part.state.reached;
       of = part.state.of;
+      // The measured runs after a cut one (or after the warm-up) never ran.
+      int64_t next = results.main.cutRun + 1, last = results.main.repeat;
+      if (&part.state == &results.main.state && results.main.repeat > 1 &&
+          next <= last)
+        skipped.push_back(next == last ? "run " + std::to_string(last)
+                                       : "runs " + std::to_string(next) +
+                                             " to " + std::to_string(last));
     } else if (part.state.stage == Stage::Skipped) {
       skipped.push_back(part.name);
     }
