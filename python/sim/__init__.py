@@ -37,7 +37,7 @@ sim.plot).
 
 from . import ops
 from .compiler import compile, find_tool, run_sim_opt
-from .errors import CompileError, SimError, TraceError
+from .errors import CompileError, NonFiniteWarning, SimError, TraceError
 from .ops import (abs, acos, acosh, asin, asinh, atan, atan2, atanh, bitcast,
                   broadcast, cbrt, ceil, clamp, copysign, cos, cosh, div, dot,
                   erf, exp, exp2, expm1, floor, fma, fmod, log, log1p, log2,
@@ -67,9 +67,9 @@ __all__ = [
     "DType", "f32", "f64", "i32", "i64", "u32", "u64", "index", "boolean",
     "vector", "compile", "find_tool", "run_sim_opt", "Bundle", "Session",
     "Output", "error_norms", "RunError", "SimError", "TraceError",
-    "CompileError", "select", "where", "min", "max", "clamp", "fma", "abs",
-    "sum", "dot", "reduce", "broadcast", "bitcast", "div", "rem", "fmod",
-    "range", "loop", "atan2", "pow", "copysign",
+    "CompileError", "NonFiniteWarning", "select", "where", "min", "max",
+    "clamp", "fma", "abs", "sum", "dot", "reduce", "broadcast", "bitcast",
+    "div", "rem", "fmod", "range", "loop", "atan2", "pow", "copysign",
     # The math functions of ops.UNARY_MATH:
     "exp", "exp2", "expm1", "log", "log2", "log10", "log1p", "sqrt", "rsqrt",
     "cbrt", "sin", "cos", "tan", "asin", "acos", "atan", "sinh", "cosh",

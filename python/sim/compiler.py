@@ -17,11 +17,20 @@ import os
 import re
 import shutil
 import subprocess
+import sys
 import tempfile
 import time
 from typing import Iterable, Sequence
 
 from .errors import CompileError
+from .scene import Scene
+
+try:
+    from simlists import STRATEGIES
+except ImportError:  # the sim package without python/ on sys.path
+    sys.path.insert(0, os.path.dirname(os.path.dirname(os.path.abspath(
+        __file__))))
+    from simlists import STRATEGIES
 
 __all__ = ["find_tool", "run_sim_opt", "compile", "Diagnostic",
            "parse_diagnostics"]
@@ -32,6 +41,8 @@ _REPO = os.path.dirname(os.path.dirname(os.path.dirname(
 
 def find_tool(name: str) -> str:
     """The path of a sim tool (`sim-translate`, `sim-opt`, `sim-run`)."""
+    if not isinstance(name, str):
+        raise TypeError(f"find_tool takes a tool's name (str), not {name!r}")
     variable = name.upper().replace("-", "_")
     env = os.environ.get(variable)
     if env:
@@ -118,18 +129,51 @@ def _raise_for(tool: str, command: Sequence[str], stderr: str, status: int):
                        diagnostics=stderr, tool=" ".join(command))
 
 
-def _scene_text(scene) -> tuple[str, str]:
+def _scene_text(scene, what: str) -> tuple[str, str]:
     if isinstance(scene, str):
         match = re.search(r"sim\.simulation @([A-Za-z_][\w$.]*)", scene)
         return scene, match.group(1) if match else "scene"
-    return scene.mlir(), scene.name
+    if isinstance(scene, Scene):
+        return scene.mlir(), scene.name
+    # A path would be taken for text if it were a str; say what to pass.
+    hint = (" (for a file, pass its text: open(path).read())"
+            if isinstance(scene, os.PathLike) else "")
+    raise TypeError(f"{what} takes a sim.Scene or a scene's MLIR text "
+                    f"(str), not {type(scene).__name__}{hint}")
+
+
+def _strategy_names(strategies) -> list[str]:
+    """The strategies asked for, checked against the runtime's (simlists)
+    before sim-translate runs: its own message for an unknown one names a
+    command-line option, not the strategies there are."""
+    known = ", ".join(STRATEGIES)
+    if isinstance(strategies, str):
+        strategies = [strategies]
+    try:
+        names = list(strategies)
+    except TypeError:
+        raise TypeError(f"strategies is a strategy's name or a list of "
+                        f"them ({known}), not {strategies!r}") from None
+    for name in names:
+        if not isinstance(name, str):
+            raise TypeError(f"a strategy is a name (str: {known}), not "
+                            f"{name!r}")
+        if name not in STRATEGIES:
+            raise ValueError(f"unknown strategy {name!r}: the strategies "
+                             f"are {known}")
+        if names.count(name) > 1:
+            raise ValueError(f"strategy {name!r} is asked for twice")
+    return names
 
 
 def run_sim_opt(scene, args: Iterable[str] = ()) -> str:
     """Runs `sim-opt` on a scene (a Scene or its text) with `args`; returns
     stdout (and stderr appended when the tool prints remarks there).
     Raises CompileError on failure."""
-    text, name = _scene_text(scene)
+    if isinstance(args, str):
+        raise TypeError(f"args is a list of sim-opt options, not the str "
+                        f"{args!r}")
+    text, name = _scene_text(scene, "sim.run_sim_opt")
     tool = find_tool("sim-opt")
     with tempfile.TemporaryDirectory(prefix="sim-") as tmp:
         path = os.path.join(tmp, f"{name}.mlir")
@@ -149,19 +193,24 @@ def compile(scene, strategies: Sequence[str] | str | None = None,
             ftz: bool = False):
     """Compiles a scene (a Scene, or scene text) into a bundle.
 
-    `strategies`: the strategies to compile (default all four); a name or a
-    list. `group_size`: the group size the plans are made for (default
-    256). `output`: where the bundle goes (default: a temporary file that
-    lives as long as the Bundle). `args`: more sim-translate options.
-    `ftz`: flush subnormals to zero on every backend (`--sim-ftz`; much
-    faster on a CPU once values decay below the normal range; default
-    IEEE).
+    `strategies`: the strategies to compile (default all five: simple,
+    traditional, hip, hip-cache, lts); a name or a list (an unknown or
+    repeated name is a ValueError before the tool runs). `group_size`: the
+    group size the plans are made for (default 256). `output`: where the
+    bundle goes (default: a temporary file that lives as long as the
+    Bundle). `args`: more sim-translate options (a list). `ftz`: flush
+    subnormals to zero on every backend (`--sim-ftz`; much faster on a CPU
+    once values decay below the normal range; default IEEE).
     Returns a `sim.Bundle` with `compile_seconds`, the scene's `mlir` text
     and the tool's warnings and remarks (`messages`); raises CompileError
     at the Python line of an error.
     """
     from .runtime import Bundle
-    text, name = _scene_text(scene)
+    names = _strategy_names(strategies) if strategies else []
+    if isinstance(args, str):
+        raise TypeError(f"args is a list of sim-translate options, not the "
+                        f"str {args!r}")
+    text, name = _scene_text(scene, "sim.compile")
     tool = find_tool("sim-translate")
     tmp = tempfile.TemporaryDirectory(prefix="sim-")
     try:
@@ -170,10 +219,8 @@ def compile(scene, strategies: Sequence[str] | str | None = None,
             f.write(text)
         target = output or os.path.join(tmp.name, f"{name}.simb")
         command = [tool, source, "--sim-to-bundle", "-o", target]
-        if strategies:
-            if isinstance(strategies, str):
-                strategies = [strategies]
-            command.append("--sim-strategies=" + ",".join(strategies))
+        if names:
+            command.append("--sim-strategies=" + ",".join(names))
         if group_size:
             command.append(f"--sim-group-size={int(group_size)}")
         if ftz:

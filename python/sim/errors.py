@@ -7,13 +7,17 @@ a sim tool (sim-opt, sim-translate) reported an error; its location is the
 Python line the tracer recorded on the operation (`loc("file.py":12:9)`).
 Both carry `filename`, `line` and `column` (1-based, or None) and show the
 source line in their message.
+
+`NonFiniteWarning` (a RuntimeWarning, through the `warnings` module): a run
+of a session ended with NaN or infinity in its state or totals, which
+sim-run reports with warnings and exit status 3.
 """
 
 from __future__ import annotations
 
 import linecache
 
-__all__ = ["SimError", "TraceError", "CompileError"]
+__all__ = ["SimError", "TraceError", "CompileError", "NonFiniteWarning"]
 
 
 class SimError(Exception):
@@ -70,3 +74,17 @@ class CompileError(SimError):
         self.tool = tool
         super().__init__(message, filename, line, column, notes)
 
+
+class NonFiniteWarning(RuntimeWarning):
+    """A run ended with NaN or infinity in the session's state or totals.
+
+    `buffers` maps each buffer that holds such values to how many it holds;
+    `totals` names the totals that are not finite. The run itself
+    completed: the session holds its state (sim-run's exit status 3).
+    """
+
+    def __init__(self, message: str, buffers: dict[str, int] | None = None,
+                 totals: list[str] | None = None):
+        super().__init__(message)
+        self.buffers = dict(buffers or {})
+        self.totals = list(totals or [])

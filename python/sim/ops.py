@@ -64,6 +64,13 @@ def _is_traced(x) -> bool:
     return isinstance(x, (Value, Traceable))
 
 
+def _is_bool(x) -> bool:
+    """A Python or numpy bool (numpy's is no Python bool, and its type is
+    named bool_ before numpy 2 and bool since)."""
+    return isinstance(x, bool) or (type(x).__module__ == "numpy" and
+                                   type(x).__name__ in ("bool_", "bool"))
+
+
 def value_of(x, like: DType | None = None, what: str = "an operation",
              loc=None) -> Value:
     """`x` as a Value: a traced value as it is, a Python number as a
@@ -75,7 +82,7 @@ def value_of(x, like: DType | None = None, what: str = "an operation",
         return x._sim_value()
     if loc is None:
         loc = user_location(2)
-    if isinstance(x, bool) or type(x).__name__ == "bool_":
+    if _is_bool(x):
         dtype = boolean if like is None else like
         if not dtype.is_bool:
             raise trace_error(f"the Python bool {x!r} mixed with a {dtype} "
@@ -262,7 +269,7 @@ def select(condition, if_true, if_false, loc=None):
     if loc is None:
         loc = user_location(2)
     if not _is_traced(condition):
-        if isinstance(condition, (bool, int)) or type(condition).__name__ == "bool_":
+        if isinstance(condition, int) or _is_bool(condition):
             return if_true if condition else if_false
         raise trace_error(f"unsupported condition type "
                           f"{type(condition).__name__} in sim.select", loc)
@@ -791,6 +798,55 @@ def _describe(x) -> str:
 
 # -- Operators on values ------------------------------------------------------------
 
+# The numpy ufuncs of Python's operators. A numpy scalar on the left of an
+# operator (`np.float64(0.1) * x`) is numpy's arithmetic first, which calls
+# the ufunc with the traced value and so comes to __array_ufunc__, never to
+# the traced value's reflected operator.
+_UFUNC_OPERATORS = {"add": "+", "subtract": "-", "multiply": "*",
+                    "divide": "/", "true_divide": "/", "floor_divide": "//",
+                    "remainder": "%", "power": "**", "bitwise_and": "&",
+                    "bitwise_or": "|", "bitwise_xor": "^", "left_shift": "<<",
+                    "right_shift": ">>"}
+_UFUNC_COMPARISONS = {"less": "<", "less_equal": "<=", "greater": ">",
+                      "greater_equal": ">=", "equal": "==", "not_equal": "!="}
+_REFLECTED = {"<": ">", "<=": ">=", ">": "<", ">=": "<=", "==": "==",
+              "!=": "!="}
+
+
+def _array_ufunc(self, ufunc, method, *inputs, **kwargs):
+    """numpy's hook for its functions on a traced value: an operator between
+    a numpy scalar (or a 0-d array) and a traced value is that operator on
+    the scalar as on the Python number (either side); any other numpy
+    function, and numpy arrays, raise TraceError."""
+    import numpy as np  # numpy calls this, so it is loaded already
+    loc = user_location(2)
+    name = ufunc.__name__
+    # numpy's comparisons make a 0-d array of the scalar on their left:
+    # it is that scalar.
+    inputs = tuple(x[()] if isinstance(x, np.ndarray) and x.ndim == 0
+                   else x for x in inputs)
+    if method == "__call__" and not kwargs and len(inputs) == 2 and \
+            all(_is_traced(x) or isinstance(x, np.generic) for x in inputs):
+        if name in _UFUNC_OPERATORS:
+            return binary(_UFUNC_OPERATORS[name], *inputs, loc)
+        if name in _UFUNC_COMPARISONS:
+            op = _UFUNC_COMPARISONS[name]
+            a, b = inputs
+            if not _is_traced(a):
+                # As Python does for a number on the left: the reflected
+                # comparison of the traced value (`0.5 < x` is `x > 0.5`).
+                a, b, op = b, a, _REFLECTED[op]
+            return compare(op, a, b, loc)
+    if any(isinstance(x, np.ndarray) for x in inputs):
+        raise trace_error(f"a numpy array with a traced value (numpy's "
+                          f"{name}): a traced body computes one item from "
+                          f"sim values and scalars; take the array's "
+                          f"element as a Python or numpy scalar", loc)
+    raise trace_error(f"the numpy function {name} on a traced value: use the "
+                      f"functions of sim (sim.exp, sim.sqrt, sim.where, ...)",
+                      loc)
+
+
 def _attach():
     def make_binary(op):
         def forward(self, other):
@@ -819,6 +875,8 @@ def _attach():
         cls.__invert__ = lambda self: invert(self, user_location(2))
         cls.__abs__ = lambda self: abs(self)
         cls.__hash__ = object.__hash__
+        cls.__array_ufunc__ = _array_ufunc
+        cls.__array__ = Value.__array__
 
     Value.__getitem__ = lambda self, lane: extract(self, lane,
                                                    user_location(2))

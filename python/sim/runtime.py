@@ -23,10 +23,12 @@ import os
 import signal
 import sys
 import threading
+import warnings
 from typing import Callable, NamedTuple
 
 import numpy as np
 
+from .errors import NonFiniteWarning
 from .output import Output, error_norms
 
 try:
@@ -149,15 +151,22 @@ class Session:
 
     `group_size` (0: the plan's), `threads` (CPU threads, 0: all),
     `check_finite`, `max_memory` (bytes the session may allocate, 0: the
-    runtime's default share, as sim-run --max-memory) and scene values (`range=`, `dt=`, parameters) as keyword
-    arguments. The strategy and backend can still be changed by `run` until
-    the first run; after it a session's state belongs to them.
+    runtime's default share, as sim-run --max-memory), `warn_nonfinite`
+    and scene values (`range=`, `dt=`, parameters) as keyword arguments.
+    The strategy and backend can still be changed by `run` until the first
+    run; after it a session's state belongs to them.
+
+    With `warn_nonfinite` (the default; also the attribute of that name)
+    every run ends by reading the state and the totals back and warns with
+    `sim.NonFiniteWarning` when they hold NaN or infinity, as sim-run
+    warns (and exits with status 3); False skips that copy of the state.
     """
 
     def __init__(self, bundle: Bundle, strategy: str = "hip",
                  backend: str = "auto", *, group_size: int = 0,
                  threads: int = 0, check_finite: bool = False,
-                 max_memory: int = 0, **values):
+                 max_memory: int = 0, warn_nonfinite: bool = True,
+                 **values):
         for what, value in (("strategy", strategy), ("backend", backend)):
             if not isinstance(value, str):
                 raise TypeError(f"{what} must be a name (str), not "
@@ -167,10 +176,22 @@ class Session:
             if not _is_count(value, 0):
                 raise ValueError(f"{what} must be an int >= 0 (0: the "
                                  f"default), not {value!r}")
-        if not isinstance(check_finite, (bool, np.bool_)):
-            raise TypeError(f"check_finite must be True or False, not "
-                            f"{check_finite!r}")
+        if not isinstance(bundle, Bundle):
+            raise TypeError(f"a Session runs a sim.Bundle (sim.compile(scene) "
+                            f"or sim.Bundle(path)), not {bundle!r}")
+        for what, value in (("check_finite", check_finite),
+                            ("warn_nonfinite", warn_nonfinite)):
+            if not isinstance(value, (bool, np.bool_)):
+                raise TypeError(f"{what} must be True or False, not "
+                                f"{value!r}")
         self.bundle = bundle
+        # What runs need of the bundle, read now: the bundle may be closed
+        # before the session runs (docs/Runtime.md), and a run must not fail
+        # after it has advanced the state.
+        self._scene = bundle.name
+        self._max_steps = bundle.max_steps
+        self._dt_type = bundle.dt_type
+        self.warn_nonfinite = bool(warn_nonfinite)
         self.strategy = strategy
         self._backend_request = backend
         self._options = dict(group_size=int(group_size),
@@ -199,7 +220,7 @@ class Session:
         """Sets `range`, `dt` or parameters (like `sim-run --set`). A new
         range discards the state (and buffers set before)."""
         for name, value in values.items():
-            text = repr(value) if isinstance(value, float) else str(value)
+            text = _value_literal(value)
             self._rt.set(name, text)
             self._values[name] = text
             if name == "range":
@@ -207,6 +228,9 @@ class Session:
 
     def get(self, name: str) -> str:
         """The current value of `range`, `dt` or a parameter, as text."""
+        if not isinstance(name, str):
+            raise TypeError(f"get takes the name (str) of range, dt or a "
+                            f"parameter, not {name!r}")
         buffer = ctypes.create_string_buffer(256)
         simrt._check(simrt.load_library().sim_session_get(
             self._rt._handle, name.encode(), buffer, len(buffer)))
@@ -228,7 +252,7 @@ class Session:
     def dt(self) -> float:
         """The current dt, exactly (an f32 dt as the double of its f32)."""
         value = float(self.get("dt"))
-        if self.bundle.dt_type == "f32":
+        if self._dt_type == "f32":
             value = float(np.float32(value))
         return value
 
@@ -258,7 +282,7 @@ class Session:
         try:
             return self.bundle.buffers[name]
         except KeyError:
-            raise KeyError(f"scene {self.bundle.name} has no buffer "
+            raise KeyError(f"scene {self._scene} has no buffer "
                            f"{name!r}") from None
 
     def __getitem__(self, name: str) -> np.ndarray:
@@ -288,7 +312,10 @@ class Session:
             self._initial[name] = data
 
     def buffers(self, names=None) -> dict[str, np.ndarray]:
-        """The state of the observed buffers (or of `names`)."""
+        """The state of the observed buffers (or of `names`: a list, or
+        one name)."""
+        if isinstance(names, str):
+            names = [names]
         return {n: self[n] for n in (names or self.bundle.observed)}
 
     def exact(self, name: str) -> np.ndarray:
@@ -336,19 +363,29 @@ class Session:
         with the base steps done; an exception it raises stops the run at
         the next one and is raised here. With `output_every=N` the run goes
         in chunks of N base steps and returns an `Output` with the observed
-        buffers (or `record`) and the totals at T, T+N, ..., and the end;
-        with `errors=True` also the exact solutions of the buffers that
-        have one and the errors against them. Without it, returns None.
+        buffers (or `record`, a list or one name) and the totals at T,
+        T+N, ..., and the end; with `errors=True` also the exact solutions
+        of the buffers that have one and the errors against them. Without
+        it, returns None. A run that ends with NaN or infinity in the state
+        or the totals warns (sim.NonFiniteWarning; see `warn_nonfinite`).
         """
         # numpy's integers too; True is not a number of steps.
         if not _is_count(steps, 0):
             raise ValueError(f"steps must be an int >= 0, not {steps!r}")
         steps = int(steps)
+        # Checked before the run: a callback that cannot be called would
+        # stop it at its first host synchronisation, after steps ran.
+        if progress is not None and not callable(progress):
+            raise TypeError(f"progress must be a function (done, total), "
+                            f"not {progress!r}")
+        if isinstance(record, str):
+            record = [record]
         self._switch(strategy, backend)
         if output_every is None:
             self._metrics = None
             self._chunk(steps, progress, 0, steps)
             self._ran = True
+            self._check_nonfinite()
             return None
         if not _is_count(output_every, 1):
             raise ValueError(f"output_every must be an int >= 1, not "
@@ -377,7 +414,9 @@ class Session:
             self._ran = True
             done += chunk
             snapshot()
-        return self._output(frames, names, exact)
+        output = self._output(frames, names, exact)
+        self._check_nonfinite(frames[-1])
+        return output
 
     def _chunk(self, steps, progress, offset, total):
         lib = simrt.load_library()
@@ -426,14 +465,15 @@ class Session:
         if failure:
             lib.sim_session_resume(handle)
             raise failure[0]
+        # The steps ran: count them before the callback, which may raise.
+        self._accumulate()
         if progress is not None:
             progress(offset + steps, total)
-        self._accumulate()
 
     def _accumulate(self):
         m = self._rt.metrics()
         m["evaluations"] = self._rt.evaluations()
-        m["histogram"] = self._rt.histogram(self.bundle.max_steps)
+        m["histogram"] = self._rt.histogram(self._max_steps)
         if self._metrics is None:
             self._metrics = m
             return
@@ -445,6 +485,42 @@ class Session:
         for key in ("evaluations", "histogram"):
             for name, count in m[key].items():
                 total[key][name] = total[key].get(name, 0) + count
+
+    def _check_nonfinite(self, frame: dict | None = None):
+        """Warns (sim.NonFiniteWarning) when the state or the totals hold
+        NaN or infinity at the end of a run, naming what sim-run's warnings
+        name (docs/Runtime.md, "NaN and infinity after the run"). `frame`:
+        the buffers and totals an output run read at the end already."""
+        if not self.warn_nonfinite:
+            return
+        known = frame["buffers"] if frame else {}
+        totals = frame["totals"] if frame else self.totals()
+        counts, parts = {}, []
+        for name, info in self.bundle.buffers.items():
+            data = known[name] if name in known else self[name]
+            bad = ~np.isfinite(data)
+            count = int(np.count_nonzero(bad))
+            if not count:
+                continue
+            counts[name] = count
+            first = int(np.argmax(bad.ravel()))
+            lanes = info.lanes or 1
+            where = f"item {first // lanes}" + (
+                f", lane {first % lanes}" if lanes > 1 else "")
+            plural = "value" if count == 1 else "values"
+            parts.append(f"buffer '{name}' holds {count} NaN or infinite "
+                         f"{plural} (the first: "
+                         f"{_value_text(data.ravel()[first])} at {where})")
+        bad_totals = [n for n, v in totals.items() if not np.isfinite(v)]
+        parts += [f"total '{n}' is not finite ({_value_text(totals[n])})"
+                  for n in bad_totals]
+        if parts:
+            # stacklevel: the user's call of run().
+            warnings.warn(NonFiniteWarning(
+                f"the run ended at T = {self.time} with NaN or infinite "
+                f"values: {'; '.join(parts)} (check_finite=True stops at "
+                f"the first and says where it appeared)", counts, bad_totals),
+                stacklevel=3)
 
     def metrics(self) -> dict:
         """What the last run measured (all chunks of an output run
@@ -472,7 +548,7 @@ class Session:
                      for f in frames]
             errors[n] = {"max_abs": np.array([a for a, _ in norms]),
                          "rms_rel": np.array([r for _, r in norms])}
-        meta = {"scene": self.bundle.name, "strategy": self.strategy,
+        meta = {"scene": self._scene, "strategy": self.strategy,
                 "backend": self.backend}
         return Output(t, t.astype(np.float64) * self.dt, buffers, totals,
                       errors, exact_arrays, meta)
@@ -495,7 +571,7 @@ class Session:
     def __repr__(self):
         if not self._rt._raw:
             return f"<sim.Session {self.strategy} (closed)>"
-        return (f"<sim.Session {self.bundle.name} {self.strategy} on "
+        return (f"<sim.Session {self._scene} {self.strategy} on "
                 f"{self.backend}, T={self.time}>")
 
 
@@ -504,6 +580,26 @@ def _is_count(value, least: int) -> bool:
     at least `least`."""
     return (not isinstance(value, bool) and
             isinstance(value, numbers.Integral) and value >= least)
+
+
+def _value_literal(value) -> str:
+    """The text `sim_session_set` parses to exactly `value`. numpy's
+    scalars print their shortest round trip in their own type (str of
+    np.float32(0.1) is "0.1", whose double is not the float32's value),
+    so numbers go through Python's int or float (np.float32 is exact in
+    a double) and its repr; bools and text stay as they are."""
+    if isinstance(value, (bool, np.bool_)):
+        return str(value)
+    if isinstance(value, numbers.Integral):
+        return str(int(value))
+    if isinstance(value, numbers.Real):
+        return repr(float(value))
+    return str(value)
+
+
+def _value_text(value) -> str:
+    """nan, inf or -inf, as sim-run writes them."""
+    return "nan" if np.isnan(value) else "inf" if value > 0 else "-inf"
 
 
 def _put(rt, name, data: np.ndarray):

@@ -23,12 +23,16 @@ among those, else passed by position; see sim.trace.call_body.
 
 from __future__ import annotations
 
+import math
+import numbers
 import re
+import sys
 from typing import Callable, Sequence
 
 from . import ops, trace
 from .trace import Body, LocationTable, Value, entered, trace_error, user_location
-from .types import DType, f32, f64, float_literal, i32, i64, index, int_literal
+from .types import (F32_MAX, F32_TINY, DType, f32, f64, float_literal, i32,
+                    i64, index, int_literal, round_f32)
 
 __all__ = ["Scene", "Param", "Buffer", "Component", "Total", "hermite",
            "Hermite"]
@@ -196,9 +200,11 @@ class Scene:
     """A `sim.simulation`: `range` items advanced in base steps of `dt`.
 
     `precision` (f32 or f64) is the type of `dt` and of Python float
-    constants in bodies without a typed operand. Components, buffers and
-    totals are declared with the decorators `buffer`, `component` and
-    `total`; `observe` names the outputs.
+    constants in bodies without a typed operand; `dt` must be positive and
+    finite in it (1e-50 underflows f32: a TraceError here, not a tool's
+    error about a dt of 0). Components, buffers and totals are declared
+    with the decorators `buffer`, `component` and `total`; `observe` names
+    the outputs.
     """
 
     def __init__(self, name: str, *, range: int, dt: float, max_steps: int = 1,
@@ -216,7 +222,7 @@ class Scene:
                               f"{max_steps!r}", loc)
         self.name = name
         self.range = range
-        self.dt = float(dt)
+        self.dt = _check_dt(dt, precision, loc)
         self.max_steps = max_steps
         self.precision = precision
         self.loc = loc
@@ -534,6 +540,34 @@ class Scene:
 
     def __repr__(self):
         return f"<sim.Scene @{self.name}>"
+
+
+def _check_dt(dt, precision: DType, loc) -> float:
+    """`dt` as a float, refused at the user's line unless it is positive and
+    finite in the scene's precision: sim-opt would say so only of the
+    rounded value (a dt that underflows f32 reads as 0)."""
+    if isinstance(dt, bool) or not isinstance(dt, numbers.Real):
+        raise trace_error(f"dt must be a positive number, not {dt!r}", loc)
+    try:
+        value = float(dt)
+    except OverflowError:  # an int or a fraction beyond the doubles
+        value = None
+    if not dt > 0 or (value is not None and not math.isfinite(value)):
+        raise trace_error(f"dt must be a positive, finite number, not "
+                          f"{dt!r}", loc)
+    rounded = (math.inf if value is None else
+               round_f32(value) if precision is f32 else value)
+    if math.isinf(rounded):
+        largest = F32_MAX if precision is f32 else sys.float_info.max
+        raise trace_error(f"dt {dt!r} overflows {precision} (the largest "
+                          f"finite {precision} is {largest!r})", loc)
+    if rounded == 0:
+        tiny = F32_TINY if precision is f32 else 5e-324
+        hint = "; use precision=sim.f64" if precision is f32 else ""
+        raise trace_error(f"dt {dt!r} underflows {precision} to 0 (the "
+                          f"smallest positive {precision} is {tiny!r}){hint}",
+                          loc)
+    return value
 
 
 def _check_name(name, what, loc):

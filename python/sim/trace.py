@@ -287,10 +287,8 @@ class Value:
                           "v.replace(lane, x) (vector.insert) for a copy "
                           "with one lane changed")
 
-    def __array_ufunc__(self, ufunc, method, *inputs, **kwargs):
-        raise trace_error(f"the numpy function {ufunc.__name__} on a traced "
-                          f"value: use the functions of sim (sim.exp, "
-                          f"sim.sqrt, sim.where, ...)")
+    # __array_ufunc__ (numpy scalars in operators, numpy functions) is
+    # attached in sim.ops with the operators.
 
     def __array__(self, *args, **kwargs):
         raise trace_error("a traced value cannot become a numpy array")

@@ -14,6 +14,7 @@ Calling a type converts or builds a value inside a traced body:
 
 from __future__ import annotations
 
+import math
 import struct
 
 __all__ = [
@@ -141,17 +142,29 @@ def round_f32(value: float) -> float:
         return float("inf") if value > 0 else float("-inf")
 
 
+F32_MAX = 3.4028234663852886e+38  # the largest finite f32
+F32_TINY = 1.401298464324817e-45  # the smallest positive (subnormal) f32
+
+
 def float_literal(value: float, dtype: DType) -> str:
     """An MLIR literal that parses to exactly `value` in `dtype` (f32/f64).
 
     Finite values are printed as the shortest decimal of the (rounded)
     double, with a '.' before any exponent as MLIR's lexer wants; the double
     is exact in f32 when rounded first, so the parser's conversion is exact.
-    Infinities and NaNs are printed as their bit patterns.
+    Infinities and NaNs are printed as their bit patterns. A finite value
+    that rounds to an infinity in `dtype` raises ValueError, as an integer
+    that does not fit does: an infinity is kept only when it was written
+    (float("inf")), never made by rounding. A value that rounds to 0 is
+    ordinary rounding and is kept.
     """
     value = float(value)
     if dtype.elem is f32:
-        value = round_f32(value)
+        rounded = round_f32(value)
+        if math.isinf(rounded) and math.isfinite(value):
+            raise ValueError(f"{value!r} overflows f32 (the largest finite "
+                             f"f32 is {F32_MAX!r})")
+        value = rounded
     if value != value or value in (float("inf"), float("-inf")):
         if dtype.elem is f32:
             (bits,) = struct.unpack("<I", struct.pack("<f", value))

@@ -164,6 +164,63 @@ def unsupported_operand():
 
 
 @case
+def f32_overflow_constant():
+    def body(i, n, dt):
+        # A float that is finite in Python but not in f32 is no infinity.
+        # CHECK: f32_overflow_constant: trace_errors.py:[[@LINE+1]]:{{[0-9]+}}: the constant 1e+39 is not a valid f32: 1e+39 overflows f32 (the largest finite f32 is 3.4028234663852886e+38)
+        return A[i] * 1e39
+    component(body)
+
+
+@case
+def f32_overflow_result():
+    s, _ = scene()
+    # CHECK: f32_overflow_result: trace_errors.py:[[@LINE+1]]:{{[0-9]+}}: the constant 1e+300 is not a valid f32: 1e+300 overflows f32
+    B = s.buffer(f32, name="B")(lambda i: 1e300)
+    s.component(writes=B, name="D")(lambda i: B[i])
+    s.mlir()
+
+
+@case
+def f32_overflow_conversion():
+    def body(i, n, dt):
+        # CHECK: f32_overflow_conversion: trace_errors.py:[[@LINE+1]]:{{[0-9]+}}: the constant -3.5e+38 is not a valid f32: -3.5e+38 overflows f32
+        return A[i] + f32(-3.5e38)
+    component(body)
+
+
+@case
+def f32_overflow_param():
+    s, _ = scene()
+    # CHECK: f32_overflow_param: trace_errors.py:[[@LINE+1]]:{{[0-9]+}}: the default 1e+40 of @big: 1e+40 overflows f32
+    s.param("big", 1e40)
+
+
+@case
+def dt_underflow():
+    # CHECK: dt_underflow: trace_errors.py:[[@LINE+1]]:{{[0-9]+}}: dt 1e-50 underflows f32 to 0 (the smallest positive f32 is 1.401298464324817e-45); use precision=sim.f64
+    sim.Scene("tiny", range=4, dt=1e-50, precision=f32)
+
+
+@case
+def dt_overflow():
+    # CHECK: dt_overflow: trace_errors.py:[[@LINE+1]]:{{[0-9]+}}: dt 1e+39 overflows f32 (the largest finite f32 is 3.4028234663852886e+38)
+    sim.Scene("huge", range=4, dt=1e39, precision=f32)
+
+
+@case
+def dt_not_positive():
+    # CHECK: dt_not_positive: trace_errors.py:[[@LINE+1]]:{{[0-9]+}}: dt must be a positive, finite number, not -0.001
+    sim.Scene("back", range=4, dt=-1e-3, precision=f64)
+
+
+@case
+def dt_not_a_number():
+    # CHECK: dt_not_a_number: trace_errors.py:[[@LINE+1]]:{{[0-9]+}}: dt must be a positive number, not '1e-3'
+    sim.Scene("text", range=4, dt="1e-3")
+
+
+@case
 def unsupported_buffer_type():
     s, _ = scene()
     # CHECK: unsupported_buffer_type: trace_errors.py:[[@LINE+1]]:{{[0-9]+}}: unsupported buffer type sim.i32: a buffer holds f32, f64 or a vector of them
