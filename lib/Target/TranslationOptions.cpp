@@ -103,8 +103,9 @@ TranslationOptions::TranslationOptions()
           llvm::cl::desc("--sim-to-bundle: plans for many processes "
                          "(sim-run --distributed under mpirun): each rank "
                          "holds a block of the range plus the ghost items "
-                         "the scene's read windows reach; gathers are "
-                         "refused (docs/Distributed.md)"),
+                         "the scene's read windows reach; a buffer read "
+                         "through a gather is copied to every rank "
+                         "(docs/Distributed.md)"),
           llvm::cl::init(false), llvm::cl::cat(category)),
       cpuLevelsPerLane(
           "sim-cpu-levels-per-lane",

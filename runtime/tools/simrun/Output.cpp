@@ -224,16 +224,16 @@ int probeCreate(const std::string &dir) {
   return 0;
 }
 
-/// Whether the missing directory `dir` can be created under its existing
-/// ancestor `ancestor`: the first missing level is created and removed.
-int probeMakeDirectory(const std::string &ancestor, const std::string &dir) {
-  std::string resolved = resolveDirectory(dir);
-  std::string first = resolved;
-  while (parentOf(first) != ancestor && first != "/" && !first.empty())
-    first = parentOf(first);
-  if (mkdir(first.c_str(), 0700) != 0)
-    return errno == EEXIST ? 0 : errno;
-  rmdir(first.c_str());
+/// Whether a directory can be created in the existing directory
+/// `ancestor`: one of an unpredictable name is created and removed. Not the
+/// missing directory itself: the ranks of a distributed run check their
+/// outputs at once, and one rank's probe must not come and go under
+/// another's check.
+int probeMakeDirectory(const std::string &ancestor) {
+  std::string probe = ancestor + "/.sim-run-probe-XXXXXX";
+  if (!mkdtemp(probe.data()))
+    return errno;
+  rmdir(probe.c_str());
   return 0;
 }
 
@@ -269,7 +269,7 @@ void OutputPlan::checkWritableFolder(const std::string &option,
                ancestor + "' is not a directory");
   int error = access(ancestor.c_str(), W_OK | X_OK) != 0 ? errno : 0;
   if (!error)
-    error = probeMakeDirectory(ancestor, dir);
+    error = probeMakeDirectory(ancestor);
   if (error)
     usageError(option + ": cannot create directory '" + dir + "' in '" +
                ancestor + "': " + errorText(error));
