@@ -70,44 +70,41 @@ public:
 
   void forEachGroup(KernelBuilder &b, Kernel &kernel,
                     function_ref<void(Value base)> body) override {
-    unsigned count = kernel.func.getNumArguments();
-    Value first = b.toIndex(kernel.func.getArgument(count - 3));
-    Value end = b.toIndex(kernel.func.getArgument(count - 2));
-    auto loop = scf::ForOp::create(b, b.loc, first, end, b.index(1));
-    OpBuilder::InsertionGuard guard(b);
-    b.setInsertionPoint(loop.getBody()->getTerminator());
-    Value base = b.mul(loop.getInductionVar(), groupSize(kernel));
-    // A distributed plan's groups are counted from its rank's first item.
-    if (kernel.values.first)
-      base = b.add(base, kernel.values.first);
-    body(base);
+    forEachGroupFrom(b, kernel, Value(), body);
   }
 
-  /// The invocation's groups first to end, rotated so that the group of
-  /// item `start` comes first when the invocation handles it.
+  /// The invocation's groups first to end; with `start`, rotated so that
+  /// the group of item `start` comes first when the invocation handles it.
   void forEachGroupFrom(KernelBuilder &b, Kernel &kernel, Value start,
                         function_ref<void(Value base)> body) override {
     unsigned count = kernel.func.getNumArguments();
     Value first = b.toIndex(kernel.func.getArgument(count - 3));
     Value end = b.toIndex(kernel.func.getArgument(count - 2));
-    Value span = b.sub(end, first);
-    Value item = b.toIndex(start);
-    // A distributed plan's groups are counted from its rank's first item.
-    if (kernel.values.first)
-      item = b.sub(item, kernel.values.first);
-    // Unsigned: a hint below the rank's first item wraps far beyond `end`.
-    Value startGroup =
-        arith::DivUIOp::create(b, b.loc, item, groupSize(kernel));
-    Value offset = b.sub(startGroup, first);
-    Value handled = b.cmp(arith::CmpIPredicate::ult, offset, span);
-    Value shift = b.select(handled, offset, b.index(0));
+    Value span, shift;
+    if (start) {
+      span = b.sub(end, first);
+      Value item = b.toIndex(start);
+      // A distributed plan's groups are counted from its rank's first item.
+      if (kernel.values.first)
+        item = b.sub(item, kernel.values.first);
+      // Unsigned: a hint below the rank's first item wraps far beyond `end`.
+      Value startGroup =
+          arith::DivUIOp::create(b, b.loc, item, groupSize(kernel));
+      Value offset = b.sub(startGroup, first);
+      Value handled = b.cmp(arith::CmpIPredicate::ult, offset, span);
+      shift = b.select(handled, offset, b.index(0));
+    }
     auto loop = scf::ForOp::create(b, b.loc, first, end, b.index(1));
     OpBuilder::InsertionGuard guard(b);
     b.setInsertionPoint(loop.getBody()->getTerminator());
-    Value shifted = b.add(loop.getInductionVar(), shift);
-    Value group = b.select(b.cmp(arith::CmpIPredicate::ult, shifted, end),
-                           shifted, b.sub(shifted, span));
+    Value group = loop.getInductionVar();
+    if (start) {
+      Value shifted = b.add(group, shift);
+      group = b.select(b.cmp(arith::CmpIPredicate::ult, shifted, end), shifted,
+                       b.sub(shifted, span));
+    }
     Value base = b.mul(group, groupSize(kernel));
+    // A distributed plan's groups are counted from its rank's first item.
     if (kernel.values.first)
       base = b.add(base, kernel.values.first);
     body(base);
