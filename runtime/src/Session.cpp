@@ -164,10 +164,34 @@ void Session::set(const std::string &name, const std::string &text) {
     // The state of another size is meaningless: start over.
     backend->activate();
     releaseAll();
+  } else {
+    forgetKeptLevels();
   }
   // dt and parameters are launch arguments.
   prepared = false;
   agreed = false;
+}
+
+void Session::forgetKeptLevels() {
+  // The levels a keeps_levels component kept came from num_steps at the
+  // old dt and parameters; the state stays, the levels must be
+  // computed again. Between runs the session is at the end of a big step,
+  // where zeroed levels are what init leaves: levels_C computes every
+  // block's code afresh in the next big step and limit_levels_C keeps them
+  // again.
+  if (!allocated)
+    return;
+  bool any = false;
+  for (size_t c = 0; c < plan_->components.size(); ++c) {
+    if (!plan_->components[c]->keeps_levels || !levels[c].pointer)
+      continue;
+    if (!any)
+      backend->activate();
+    any = true;
+    backend->zero(levels[c].pointer, levels[c].bytes);
+    if (c < levelsKept.size())
+      levelsKept[c] = false;
+  }
 }
 
 int Session::bufferIndex(const std::string &name) const {

@@ -341,6 +341,9 @@ private:
   /// no gathering. Cleared at every run from the initial state (init), as
   /// the kept codes are.
   std::vector<bool> levelsKept;
+  /// Zeroes the levels of every keeps_levels component, kept codes
+  /// included, after dt or a parameter changed (set).
+  void forgetKeptLevels();
   /// Host memory of the backend's allocateHost (page-locked on CUDA),
   /// grown as needed: per peer, what this rank sends and receives.
   class Staging {
