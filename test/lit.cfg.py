@@ -26,6 +26,8 @@ tool_dirs = [config.sim_tools_dir, config.llvm_tools_dir]
 tools = [
     "sim-opt",
     "sim-translate",
+    "sim-lsp-server",
+    "sim-reduce",
     "sim-run",
     "sim-bundle-fuzz-replay",
     "sim-compile-fuzz-replay",

@@ -113,6 +113,16 @@ static YieldOp verifyBodySignature(Operation *op, Region &region,
                       << " body to end in 'sim.yield'";
     return nullptr;
   }
+  // This verifier runs before the generic checks of the body's operations,
+  // and a tool that erases operations through the C++ API (sim-reduce's
+  // reduction tree) leaves their uses null: the yielded types cannot be
+  // read then.
+  if (llvm::is_contained(yield->getOperands(), Value())) {
+    op->emitOpError() << "expects the " << bodyName
+                      << " body to yield values, but an operand of its "
+                         "'sim.yield' is null (its definition was erased)";
+    return nullptr;
+  }
   return yield;
 }
 
