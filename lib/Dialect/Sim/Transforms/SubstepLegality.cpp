@@ -192,10 +192,12 @@ struct SubstepLegalityPass
           refuse() << "it reads its own @" << access.buffer.getSymName()
                    << "; in an item pair @" << name
                    << " computes its values from @" << readerName
-                   << "'s state alone: let @" << name << " write what @"
-                   << readerName << " needs (a force or an acceleration) and @"
-                   << readerName << " update @" << access.buffer.getSymName()
-                   << " with its own state";
+                   << "'s state alone: let @" << name << " write only what @"
+                   << readerName
+                   << " needs (a force or an acceleration, in a buffer of its "
+                      "own) and @"
+                   << readerName << " write @" << access.buffer.getSymName()
+                   << " instead, updating it from its own state";
           return;
         }
         if (component != reader) {

@@ -543,7 +543,7 @@ sim.simulation @kick_reads_own range(64) dt(1.0e-2 : f64) max_steps(4) {
     %c = arith.constant 0.0 : f64
     sim.yield %c : f64
   }
-  // expected-remark @+1 {{under lts @Kick and @Drift form no pair, and @Kick's num_steps bounds the big step as under hip: it reads its own @V; in an item pair @Kick computes its values from @Drift's state alone: let @Kick write what @Drift needs (a force or an acceleration) and @Drift update @V with its own state}}
+  // expected-remark @+1 {{under lts @Kick and @Drift form no pair, and @Kick's num_steps bounds the big step as under hip: it reads its own @V; in an item pair @Kick computes its values from @Drift's state alone: let @Kick write only what @Drift needs (a force or an acceleration, in a buffer of its own) and @Drift write @V instead, updating it from its own state}}
   sim.component @Kick writes(@V) num_steps {
   ^bb0(%i: index, %t: i64):
     %c4 = arith.constant 4 : i32
