@@ -25,6 +25,7 @@
 #include <csignal>
 #include <cstdlib>
 #include <cstring>
+#include <functional>
 #include <limits>
 #include <set>
 #include <sys/stat.h>
@@ -393,6 +394,56 @@ TEST_F(SimRunOutput, RefusesTwoOutputsOnOneFile) {
       exitOf([&] { plan.addFile("--dump (buffer 'X')", dir + "/out/./X.npy"); },
              kExitUsage);
   EXPECT_TRUE(contains(message, "is also the file of --json")) << message;
+}
+
+TEST_F(SimRunOutput, RefusesAFileWhereAFolderMustBe) {
+  // --dump's folder or the folder of another output is where a file goes:
+  // the run used to end with the folder made and the file lost, or the
+  // other way round.
+  {
+    OutputPlan plan;
+    plan.addInput(input);
+    plan.addDirectory("--dump", dir + "/j.json");
+    std::string message =
+        exitOf([&] { plan.addFile("--json", dir + "/j.json"); }, kExitUsage);
+    EXPECT_TRUE(contains(message, "--json: '" + dir +
+                                      "/j.json' is where --dump needs the "
+                                      "folder"))
+        << message;
+  }
+  {
+    OutputPlan plan;
+    plan.addInput(input);
+    plan.addFile("--checkpoint", dir + "/c.simc");
+    std::string message =
+        exitOf([&] { plan.addDirectory("--dump", dir + "/c.simc/./sub"); },
+               kExitUsage);
+    EXPECT_TRUE(contains(message, "must be a folder, but it is where "
+                                  "--checkpoint writes the file"))
+        << message;
+  }
+  for (bool fileFirst : {false, true}) {
+    OutputPlan plan;
+    plan.addInput(input);
+    std::function<void()> addFile = [&] {
+      plan.addFile("--checkpoint", dir + "/ck");
+    };
+    std::function<void()> addInside = [&] {
+      plan.addFile("--json", dir + "/ck/a/x.json");
+    };
+    if (fileFirst)
+      addFile();
+    else
+      addInside();
+    std::string message = exitOf(fileFirst ? addInside : addFile, kExitUsage);
+    EXPECT_TRUE(contains(message, "'ck") || contains(message, "/ck"))
+        << message;
+  }
+  // A file inside --dump's folder, beside its dumps, is fine.
+  OutputPlan plan;
+  plan.addInput(input);
+  plan.addDirectory("--dump", dir + "/out");
+  plan.addFile("--json", dir + "/out/run.json");
 }
 
 TEST_F(SimRunOutput, RefusesFoldersThatCannotBeUsed) {

@@ -278,6 +278,38 @@ void OutputPlan::checkWritableFolder(const std::string &option,
 void OutputPlan::addDirectory(const std::string &option,
                               const std::string &dir) {
   checkWritableFolder(option, dir);
+  Entry folder;
+  folder.option = option;
+  folder.path = dir;
+  folder.resolved = folder.folder = resolveDirectory(dir);
+  folder.isFolder = true;
+  checkFilesAndFolders(folder);
+  folders.push_back(folder);
+}
+
+void OutputPlan::checkFilesAndFolders(const Entry &added) const {
+  // Whether `file`'s path is `folder` or a folder above it.
+  auto holds = [](const std::string &file, const std::string &folder) {
+    return folder == file || (folder.size() > file.size() &&
+                              folder.compare(0, file.size(), file) == 0 &&
+                              folder[file.size()] == '/');
+  };
+  bool addedIsFile = !added.isFolder;
+  for (const std::vector<Entry> *list : {&files, &folders})
+    for (const Entry &other : *list) {
+      bool otherIsFile = !other.isFolder;
+      if (addedIsFile && holds(added.resolved, other.folder))
+        usageError(added.option + ": '" + added.path + "' is where " +
+                   other.option + " needs the folder '" +
+                   (otherIsFile ? folderOf(other.path) : other.path) +
+                   "' for its output; name another file");
+      if (otherIsFile && holds(other.resolved, added.folder))
+        usageError(added.option + ": '" +
+                   (addedIsFile ? folderOf(added.path) : added.path) +
+                   "' must be a folder, but it is where " + other.option +
+                   " writes the file '" + other.path +
+                   "'; name another folder");
+    }
 }
 
 void OutputPlan::addFile(const std::string &option, const std::string &path) {
@@ -340,6 +372,8 @@ void OutputPlan::addFile(const std::string &option, const std::string &path) {
     if (same(file, other))
       usageError(option + ": '" + path + "' is also the file of " +
                  other.option + " ('" + other.path + "')");
+  file.folder = resolveDirectory(folderOf(path));
+  checkFilesAndFolders(file);
   files.push_back(file);
 }
 

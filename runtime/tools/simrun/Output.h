@@ -72,7 +72,11 @@ public:
 
 private:
   struct Entry {
-    std::string option, path, resolved;
+    /// `folder`: for a file, the folder it goes into, resolved; for a
+    /// folder (--dump), the folder itself.
+    std::string option, path, resolved, folder;
+    /// A folder (--dump) rather than a file.
+    bool isFolder = false;
     /// lstat's identity of the path (a file, or the symlink there), and
     /// for inputs stat's too (what the symlink points to).
     bool exists = false;
@@ -85,8 +89,11 @@ private:
   static Entry identify(const std::string &option, const std::string &path);
   void checkWritableFolder(const std::string &option,
                            const std::string &dir) const;
+  /// No planned file may be where a planned folder is, or above one: the
+  /// folder could not be made, or the file could not replace it.
+  void checkFilesAndFolders(const Entry &added) const;
 
-  std::vector<Entry> inputs, files;
+  std::vector<Entry> inputs, files, folders;
 };
 
 /// Creates `dir` and its missing parents (like mkdir -p).
