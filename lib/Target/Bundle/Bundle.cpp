@@ -1080,10 +1080,13 @@ LogicalResult mlir::sim::writeBundle(ModuleOp module,
       return emitError(simulation.getLoc())
              << "strategy '" << stringifyStrategy(strategy)
              << "' is asked for twice";
-  if (options.groupSize <= 0 ||
+  // The bundle's GPU kernels run a group's items in warps of 32 (sim-run
+  // --group-size chooses another size for a run, any size on a CPU).
+  if (options.groupSize <= 0 || options.groupSize % 32 != 0 ||
       options.groupSize > int64_t(::sim::bundle::kMaxGroupSize))
     return emitError(simulation.getLoc())
-           << "the group size must be from 1 to "
+           << "the group size must be a multiple of 32 (a GPU warp) from 32 "
+              "to "
            << ::sim::bundle::kMaxGroupSize << ", not " << options.groupSize;
   if (options.cpuIsas.empty())
     return emitError(simulation.getLoc())
