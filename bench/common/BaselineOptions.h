@@ -24,6 +24,9 @@
 #include <string>
 #include <vector>
 
+#include <sys/stat.h>
+#include <unistd.h>
+
 namespace sim::bench {
 
 enum class Strategy { Simple, Traditional, Hip, HipCache, Lts };
@@ -152,6 +155,7 @@ public:
           options_.strategy = Strategy(index);
     for (const std::string &set : sets_)
       applySetting(set);
+    checkOutputs();
   }
 
   /// A usage error: the message on stderr, exit status 2.
@@ -164,6 +168,35 @@ public:
   CLI::App app;
 
 private:
+  /// The outputs are written after the run, which can take minutes: refuse
+  /// before it what cannot be written then (--dump names an existing
+  /// folder, --json a file in one).
+  void checkOutputs() const {
+    auto writableFolder = [](const std::string &folder) {
+      struct stat info;
+      return stat(folder.c_str(), &info) == 0 && S_ISDIR(info.st_mode) &&
+             access(folder.c_str(), W_OK | X_OK) == 0;
+    };
+    if (!options_.dumpDir.empty() && !writableFolder(options_.dumpDir))
+      usageError("--dump: '" + options_.dumpDir +
+                 "' is not a folder this process can write into (it must "
+                 "exist)");
+    if (!options_.jsonPath.empty()) {
+      const std::string &path = options_.jsonPath;
+      struct stat info;
+      if (path.back() == '/' ||
+          (stat(path.c_str(), &info) == 0 && S_ISDIR(info.st_mode)))
+        usageError("--json: '" + path + "' is a directory, not a file");
+      size_t slash = path.rfind('/');
+      std::string folder = slash == std::string::npos ? "."
+                           : slash == 0               ? "/"
+                                                      : path.substr(0, slash);
+      if (!writableFolder(folder))
+        usageError("--json: '" + folder +
+                   "' is not a folder this process can write into");
+    }
+  }
+
   /// One --set NAME=VALUE (assignment() has checked its shape).
   void applySetting(const std::string &set) {
     size_t equals = set.find('=');
