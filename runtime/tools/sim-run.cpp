@@ -161,7 +161,7 @@ void stopIfInterrupted(const std::string &what) {
 /// --sim-strategies; empty: its default, every strategy).
 void translate(const std::string &scene, TemporaryFile &bundle,
                const std::vector<std::string> &compiled,
-               const std::vector<sim_strategy> &strategies) {
+               const std::vector<sim_strategy> &strategies, bool announce) {
   std::string searched;
   std::optional<std::string> tool = findTranslate(searched);
   if (!tool)
@@ -194,6 +194,17 @@ void translate(const std::string &scene, TemporaryFile &bundle,
   for (std::string &arg : args)
     argv.push_back(arg.data());
   argv.push_back(nullptr);
+  // Compiling every strategy's kernels for three CPU levels takes tens of
+  // seconds for a large scene: say what the wait is for, where progress is
+  // shown.
+  if (announce)
+    std::fprintf(stderr, "sim-run: compiling '%s' (sim-translate, %s)...\n",
+                 scene.c_str(),
+                 strategies.empty()
+                     ? "every strategy"
+                     : (std::to_string(strategies.size()) +
+                        (strategies.size() == 1 ? " strategy" : " strategies"))
+                           .c_str());
   pid_t pid;
   if (int error = posix_spawn(&pid, tool->c_str(), nullptr, nullptr,
                               argv.data(), environ))
@@ -235,9 +246,9 @@ bool isScene(const std::string &path) {
 class Input {
 public:
   Input(const std::string &path, const std::vector<std::string> &compiled,
-        const std::vector<sim_strategy> &strategies) {
+        const std::vector<sim_strategy> &strategies, bool announce) {
     if (isScene(path)) {
-      translate(path, translated, compiled, strategies);
+      translate(path, translated, compiled, strategies, announce);
       check(sim_bundle_open(translated.path().c_str(), &handle));
     } else {
       check(sim_bundle_open(path.c_str(), &handle));
@@ -1177,7 +1188,8 @@ int run(Options options) {
   // --set, the dump files.
   OutputPlan outputs = planOutputs(options);
   std::vector<std::string> compiled = takeCompileTimeSettings(options);
-  Input input(options.input, compiled, translatedStrategies(options));
+  Input input(options.input, compiled, translatedStrategies(options),
+              printing() && (options.progress || isatty(STDERR_FILENO)));
   const sim_bundle *bundle = input.bundle();
   if (!options.strategyGiven)
     options.strategy = defaultStrategy(bundle, options.strategy);
