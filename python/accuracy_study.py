@@ -56,6 +56,7 @@ import re
 import shutil
 import subprocess
 import sys
+import tempfile
 import time
 
 sys.dont_write_bytecode = True
@@ -105,13 +106,34 @@ SCENES = {
 }
 
 
+PROG = "accuracy_study.py"
+
+
 def log(message):
     print(message, file=sys.stderr, flush=True)
 
 
+def fail(message, status=1):
+    """Ends the study with one line, `accuracy_study.py: error: MESSAGE`."""
+    print("%s: error: %s" % (PROG, message), file=sys.stderr, flush=True)
+    sys.exit(status)
+
+
+class Parser(argparse.ArgumentParser):
+    """argparse whose usage errors are one line (and status 2), as the sim
+    tools print theirs."""
+
+    def error(self, message):
+        self.exit(2, "%s: error: %s (see %s --help)\n" % (self.prog, message,
+                                                          self.prog))
+
+
 def find_tool(name, given):
     if given:
-        return given
+        found = given if os.sep in given else shutil.which(given) or given
+        if not (os.path.isfile(found) and os.access(found, os.X_OK)):
+            fail("--%s %s is not an executable file" % (name, given), 2)
+        return found
     found = shutil.which(name)
     if found:
         return found
@@ -119,7 +141,41 @@ def find_tool(name, given):
         path = os.path.join(ROOT, build, "bin", name)
         if os.path.isfile(path):
             return path
-    sys.exit("error: %s not found (put it on PATH or pass --%s)" % (name, name))
+    fail("%s not found (put it on PATH or pass --%s)" % (name, name), 2)
+
+
+def make_out_folder(folder):
+    """Makes --out, a usage error unless it is (or can be made) a folder the
+    study can write to."""
+    if os.path.exists(folder) and not os.path.isdir(folder):
+        fail("--out %s is not a folder" % folder, 2)
+    try:
+        os.makedirs(folder, exist_ok=True)
+        # os.access says yes to root on a read-only file system: write.
+        tempfile.TemporaryFile(dir=folder).close()
+    except OSError as error:
+        fail("--out %s is not a folder it can write to (%s)" % (
+            folder, error.strerror or error), 2)
+
+
+def read_results(path):
+    """The rows of a results.json of this study (--replot)."""
+    if os.path.isdir(path):
+        fail("--replot %s is a folder, not a results.json" % path, 2)
+    try:
+        with open(path) as f:
+            data = json.load(f)
+    except OSError as error:
+        fail("--replot %s: %s" % (path, error.strerror or error), 2)
+    except ValueError as error:
+        fail("--replot %s is not JSON (%s)" % (path, error), 2)
+    if not isinstance(data, dict) or not isinstance(data.get("results"),
+                                                    list):
+        fail("--replot %s is not a results.json of accuracy_study.py (no "
+             "\"results\" list)" % path, 2)
+    if not data["results"]:
+        fail("--replot %s has no results to plot" % path, 2)
+    return data["results"]
 
 
 # --- bundles ---------------------------------------------------------------
@@ -130,8 +186,8 @@ def variant_text(text, interp):
     lines = text.split("\n")
     marked = [k for k, line in enumerate(lines) if "// study-interp" in line]
     if len(marked) != 1:
-        sys.exit("error: a scene with interpolation variants needs exactly "
-                 "one line marked // study-interp")
+        fail("a scene with interpolation variants needs exactly one line "
+             "marked // study-interp")
     k = marked[0]
     lines[k] = re.sub(r"interp\((?:[^()]|\([^()]*\))*\)",
                       "interp(%s)" % INTERPS[interp], lines[k], count=1)
@@ -148,8 +204,9 @@ def build_bundle(args, scene, interp):
     with open(mlir, "w") as f:
         f.write(text)
     log("compiling %s" % tag)
-    subprocess.run([args.sim_translate, mlir, "--sim-to-bundle", "-o", simb],
-                   check=True)
+    if subprocess.run([args.sim_translate, mlir, "--sim-to-bundle", "-o",
+                       simb]).returncode != 0:
+        fail("compiling %s failed (sim-translate's errors above)" % mlir)
     return simb
 
 
@@ -214,8 +271,8 @@ def sim_run(args, simb, strategy, steps, sets, dump, reference=None):
     # Status 3: the run ended with NaN or infinity; the row says so
     # ("finite").
     if proc.returncode not in (0, 3):
-        sys.exit("error: %s failed:\n%s%s" % (" ".join(command), proc.stdout,
-                                             proc.stderr))
+        fail("%s failed:\n%s%s" % (" ".join(command), proc.stdout,
+                                   proc.stderr))
     with open(json_path) as f:
         return json.load(f)
 
@@ -510,7 +567,8 @@ def plot(results, path):
 
 
 def main():
-    parser = argparse.ArgumentParser(
+    parser = Parser(
+        prog=PROG,
         description="Run the physics scenes of examples/physics with every "
         "strategy and interpolation and report time against error.")
     parser.add_argument("--backend", default="cpu",
@@ -525,10 +583,13 @@ def main():
                         help="skip the convergence study")
     parser.add_argument("--convergence-only", action="store_true")
     parser.add_argument("--repeat", type=int, default=1,
-                        help="sim-run --repeat (median wall time)")
+                        help="sim-run --repeat, 1 to 100000: the tables and "
+                        "the plot take the fastest run's wall time (default "
+                        "1)")
     parser.add_argument("--group-size", type=int, default=32,
-                        help="threads per group (default 32: hip sub-steps a "
-                        "group by its smallest num_steps)")
+                        help="threads per group, a multiple of 32 from 32 to "
+                        "1024 (to 4096 on the cpu backend; default 32: hip "
+                        "sub-steps a group by its smallest num_steps)")
     parser.add_argument("--check-finite", action="store_true",
                         help="pass --check-finite to sim-run (slower)")
     parser.add_argument("--scenes-dir",
@@ -538,19 +599,52 @@ def main():
     parser.add_argument("--sim-run")
     parser.add_argument("--sim-translate")
     args = parser.parse_args()
-    args.scenes = [s for s in args.scenes.split(",") if s]
+    args.scenes = [s.strip() for s in args.scenes.split(",") if s.strip()]
+    if not args.scenes and not args.convergence_only:
+        parser.error("--scenes selects no scene (known: %s)" %
+                     ", ".join(SCENES))
     for s in args.scenes:
         if s not in SCENES:
             parser.error("unknown scene %s (known: %s)" % (s, ", ".join(
                 SCENES)))
+    if not 1 <= args.repeat <= 100000:
+        parser.error("--repeat takes a number of runs from 1 to 100000, not "
+                     "%d" % args.repeat)
+    most = 4096 if args.backend == "cpu" else 1024
+    if not (32 <= args.group_size <= most and args.group_size % 32 == 0):
+        parser.error("--group-size takes a multiple of 32 (a warp) from 32 "
+                     "to %d%s, not %d" % (
+                         most, "" if args.backend == "cpu" else
+                         " (4096 on the cpu backend)", args.group_size))
     if args.replot:
-        os.makedirs(args.out, exist_ok=True)
-        with open(args.replot) as f:
-            plot(json.load(f)["results"], os.path.join(args.out, "accuracy.png"))
+        results = read_results(args.replot)
+        make_out_folder(args.out)
+        path = os.path.join(args.out, "accuracy.png")
+        try:
+            drawn = plot(results, path)
+        except (KeyError, TypeError, ValueError) as error:
+            fail("--replot %s: a result lacks %s (not a results.json of "
+                 "accuracy_study.py?)" % (args.replot, error), 2)
+        if drawn:
+            log("wrote %s" % path)
         return 0
+    if not os.path.isdir(args.scenes_dir):
+        parser.error("--scenes-dir %s is not a folder" % args.scenes_dir)
+    needed = [] if args.convergence_only else list(args.scenes)
+    if not args.no_convergence:
+        if args.convergence_only or "harmonic" in args.scenes:
+            needed.append("harmonic")
+        if args.convergence_only or "heat_rod" in args.scenes:
+            needed += ["heat_rod", "heat_rod_flux"]
+    missing = [scene + ".mlir" for scene in dict.fromkeys(needed)
+               if not os.path.isfile(os.path.join(args.scenes_dir,
+                                                  scene + ".mlir"))]
+    if missing:
+        parser.error("--scenes-dir %s has no %s" % (args.scenes_dir,
+                                                    ", ".join(missing)))
     args.sim_run = find_tool("sim-run", args.sim_run)
     args.sim_translate = find_tool("sim-translate", args.sim_translate)
-    os.makedirs(args.out, exist_ok=True)
+    make_out_folder(args.out)
     command = "python3 python/accuracy_study.py " + " ".join(
         a for a in sys.argv[1:])
     start = time.time()

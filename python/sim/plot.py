@@ -43,6 +43,33 @@ def choose_times(count: int, times=None, most: int = 5) -> list[int]:
     return sorted({round(x) for x in np.linspace(0, count - 1, most)})
 
 
+_EXPECTED = ("the .npz of sim-run --output-every N --output FILE.npz or "
+             "Output.save")
+
+
+def _load_output(path) -> Output:
+    """The Output in the file `path`, or a ValueError that names the file
+    and says what it is instead of an output (.npz) file."""
+    path = os.fspath(path)
+    if not os.path.exists(path):
+        raise ValueError(f"{path}: no such file (expected {_EXPECTED})")
+    if os.path.isdir(path):
+        raise ValueError(f"{path} is a folder, not an output file (expected "
+                         f"{_EXPECTED})")
+    with open(path, "rb") as f:
+        head = f.read(8)
+    if not head:
+        raise ValueError(f"{path} is empty, not an output file (expected "
+                         f"{_EXPECTED})")
+    if head.startswith(b"\x93NUMPY"):
+        raise ValueError(f"{path} is one .npy array, not an output file "
+                         f"(expected {_EXPECTED})")
+    if not head.startswith(b"PK"):
+        raise ValueError(f"{path} is not a .npz file (a zip archive of .npy "
+                         f"arrays; expected {_EXPECTED})")
+    return Output.load(path)
+
+
 def _lanes(values: np.ndarray) -> int:
     return 1 if values.ndim == 2 else values.shape[2]
 
@@ -61,7 +88,7 @@ def plot(source, out_dir: str | None = None, *, times=None, buffers=None,
         stem = prefix or out.meta.get("scene", "output")
         out_dir = out_dir or ""
     else:
-        out = Output.load(source)
+        out = _load_output(source)
         stem = prefix or os.path.splitext(os.path.basename(str(source)))[0]
         if out_dir is None:
             out_dir = os.path.dirname(str(source))  # '' for the current one
@@ -193,8 +220,16 @@ def main(argv=None) -> int:
     try:
         paths = plot(args.file, args.out, times=args.times,
                      buffers=args.buffer, lanes=args.lane, prefix=args.prefix)
-    except (OSError, KeyError, ValueError) as error:
-        print(f"sim.plot: error: {error}", file=sys.stderr)
+    except (KeyError, ValueError) as error:
+        # A KeyError's str() is its message in quotes: print the message.
+        message = error.args[0] if isinstance(error, KeyError) and \
+            error.args else error
+        print(f"sim.plot: error: {message}", file=sys.stderr)
+        return 2
+    except OSError as error:
+        print("sim.plot: error: " + (f"{error.filename}: {error.strerror}"
+                                     if error.filename and error.strerror
+                                     else str(error)), file=sys.stderr)
         return 1
     for path in paths:
         print(f"wrote {path}")

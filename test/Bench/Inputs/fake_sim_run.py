@@ -12,12 +12,19 @@ advance (test/Bench/noise.test). As sim-run:
 
 As the baseline (--scene given): 0.50 s every run, except hip-cache at
 0.50-0.60 s (spread 20%). Both dump the same observed state (--dump).
+
+With FAKE_FMA_PEAK=F in the environment the device is a CPU ("CPU
+(fake)") and --fma-peak reports a peak of F flop/s, for the "of peak"
+column; without it --fma-peak fails. With FAKE_SIM_SLEEP=S a run writes
+its process id into the file FAKE_SIM_STARTED names and sleeps S seconds
+first (test/Bench/signal.test stops bench/run meanwhile).
 """
 
 import json
 import os
 import struct
 import sys
+import time
 
 TIMES = {"simple": [1.0, 1.0, 1.0], "traditional": [0.9, 1.0, 1.2],
          "hip": [0.4, 0.4, 0.4], "hip-cache": [0.6, 0.6, 0.6],
@@ -28,6 +35,16 @@ args = sys.argv[1:]
 if "--help" in args:
     print("OVERVIEW: hand-written CPU code (a stand-in for bench/run's tests)")
     sys.exit(0)
+if "--fma-peak" in args:
+    if "FAKE_FMA_PEAK" not in os.environ:
+        sys.exit("fake_sim_run.py: no FAKE_FMA_PEAK")
+    with open(args[args.index("--json") + 1], "w") as f:
+        json.dump({"fma_peak_flops": float(os.environ["FAKE_FMA_PEAK"])}, f)
+    sys.exit(0)
+if "FAKE_SIM_SLEEP" in os.environ:
+    with open(os.environ["FAKE_SIM_STARTED"], "w") as f:
+        f.write(str(os.getpid()))
+    time.sleep(float(os.environ["FAKE_SIM_SLEEP"]))
 baseline = "--scene" in args
 strategy = args[args.index("--strategy") + 1]
 out = args[args.index("--json") + 1]
@@ -35,7 +52,8 @@ times = (BASELINE_TIMES.get(strategy, [0.5] * 3) if baseline
          else TIMES[strategy])
 evaluations = 100 if strategy == "simple" else 50
 with open(out, "w") as f:
-    json.dump({"device": "fake", "backend": "cpu",
+    json.dump({"device": "CPU (fake)" if "FAKE_FMA_PEAK" in os.environ
+               else "fake", "backend": "cpu",
                "kernel_seconds_runs": times, "wall_seconds_runs": times,
                "evaluations": {"C0": evaluations}, "big_steps": 10,
                "big_step_histogram": {"1": 10}, "launches": 20,
