@@ -63,10 +63,13 @@ def SimLowerToGPU : Pass<"sim-lower-to-gpu", "::mlir::ModuleOp"> {
     Option<"groupSize", "group-size", "int64_t", "256",
            "Threads per group the plan is made for (a multiple of 32)">,
   ];
+  // vector: the interpolation of a vector-typed buffer broadcasts its
+  // fraction, also where the scene itself uses no vector op.
   let dependentDialects = [
     "::mlir::arith::ArithDialect", "::mlir::gpu::GPUDialect",
     "::mlir::memref::MemRefDialect", "::mlir::NVVM::NVVMDialect",
-    "::mlir::scf::SCFDialect", "::mlir::simplan::PlanDialect"
+    "::mlir::scf::SCFDialect", "::mlir::simplan::PlanDialect",
+    "::mlir::vector::VectorDialect"
   ];
 }
 
@@ -100,7 +103,7 @@ def SimLowerToCPU : Pass<"sim-lower-to-cpu", "::mlir::ModuleOp"> {
   let dependentDialects = [
     "::mlir::arith::ArithDialect", "::mlir::func::FuncDialect",
     "::mlir::memref::MemRefDialect", "::mlir::scf::SCFDialect",
-    "::mlir::simplan::PlanDialect"
+    "::mlir::simplan::PlanDialect", "::mlir::vector::VectorDialect"
   ];
 }
 
