@@ -14,6 +14,8 @@
 //                                           (--sim-gpu-unroll)
 //     convert-scf-to-cf                     loops and ifs to blocks
 //     expand-strided-metadata               subviews to reinterpret_casts
+//     sim-gpu-lower-subgroup-reduce         only for a chip before sm_80 (no
+//                                           redux.sync): warp shuffles
 //     convert-gpu-to-nvvm{has-redux}        gpu, arith, cf, memref, vector,
 //                                           index, ub and the math functions
 //                                           of libdevice to LLVM/NVVM
@@ -126,8 +128,12 @@ void mlir::sim::buildSimGPUToPTXPipeline(OpPassManager &pm,
   kernels.addPass(createSimLowerVectorOps());
   kernels.addPass(createSCFToControlFlowPass());
   kernels.addPass(memref::createExpandStridedMetadataPass());
+  // Warp reductions: redux.sync from sm_80, shuffles before.
+  bool redux = hasRedux(target.chip);
+  if (!redux)
+    kernels.addPass(createSimGPULowerSubgroupReduce());
   ConvertGpuOpsToNVVMOpsOptions toNVVM;
-  toNVVM.hasRedux = hasRedux(target.chip);
+  toNVVM.hasRedux = redux;
   toNVVM.useBarePtrCallConv = false;
   kernels.addPass(createConvertGpuOpsToNVVMOps(toNVVM));
   kernels.addPass(createConvertNVVMToLLVMPass());

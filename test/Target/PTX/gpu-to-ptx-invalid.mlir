@@ -13,7 +13,11 @@
 // RUN:   --verify-diagnostics --sim-features=+ptx99
 // RUN: sim-translate --gpu-to-ptx %t/unsigned-feature.mlir \
 // RUN:   --verify-diagnostics --sim-features=ptx80
-// RUN: sim-translate --gpu-to-ptx %t/no-redux.mlir --verify-diagnostics \
+// RUN: sim-translate --gpu-to-ptx %t/old-chip.mlir --verify-diagnostics \
+// RUN:   --sim-chip=sm_60
+// RUN: sim-translate --gpu-to-ptx %t/old-ptx.mlir --verify-diagnostics \
+// RUN:   --sim-features=+ptx60
+// RUN: sim-translate --gpu-to-ptx %t/wide-reduce.mlir --verify-diagnostics \
 // RUN:   --sim-chip=sm_75
 // RUN: sim-translate --gpu-to-ptx %t/opt-level.mlir --verify-diagnostics \
 // RUN:   --sim-opt-level=4
@@ -107,16 +111,40 @@ module attributes {gpu.container_module} {
   }
 }
 
-//--- no-redux.mlir
-// sm_75 has no redux.sync, so a warp reduction does not lower.
+//--- old-chip.mlir
+// Before sm_70 there is no shfl.sync, which the kernels' warp reductions
+// need; LLVM aborted the process selecting it.
+module attributes {gpu.container_module} {
+  // expected-error @+1 {{sim's GPU kernels need sm_70 or later (warp shuffles, shfl.sync), not sm_60}}
+  gpu.module @kernels {
+    gpu.func @empty() kernel {
+      gpu.return
+    }
+  }
+}
+
+//--- old-ptx.mlir
+// A PTX ISA older than the chip's: LLVM aborted the process.
+module attributes {gpu.container_module} {
+  // expected-error @+1 {{PTX ISA 6.0 (the features '+ptx60') is older than sm_90 needs: give +ptx78 or later, or no PTX version (the chip's oldest PTX ISA is the default)}}
+  gpu.module @kernels {
+    gpu.func @empty() kernel {
+      gpu.return
+    }
+  }
+}
+
+//--- wide-reduce.mlir
+// sm_75 has no redux.sync: warp reductions become 32-bit shuffles, which
+// cannot carry an i64 (the kernels reduce i32 values only).
 module attributes {gpu.container_module} {
   gpu.module @kernels {
-    gpu.func @min(%a: memref<?xi32>) kernel {
+    gpu.func @min(%a: memref<?xi64>) kernel {
       %c0 = arith.constant 0 : index
-      %x = memref.load %a[%c0] : memref<?xi32>
-      // expected-error @+1 {{failed to legalize operation 'gpu.subgroup_reduce' that was explicitly marked illegal}}
-      %m = gpu.subgroup_reduce minsi %x uniform : (i32) -> i32
-      memref.store %m, %a[%c0] : memref<?xi32>
+      %x = memref.load %a[%c0] : memref<?xi64>
+      // expected-error @+1 {{'gpu.subgroup_reduce' op cannot become warp shuffles of at most 32 bits for a chip without redux.sync (before sm_80); compile for sm_80 or later}}
+      %m = gpu.subgroup_reduce minsi %x uniform : (i64) -> i64
+      memref.store %m, %a[%c0] : memref<?xi64>
       gpu.return
     }
   }

@@ -2,10 +2,12 @@
 //
 // Passes that run inside the GPU-to-PTX pipeline (--sim-gpu-to-ptx) on
 // gpu.modules. Two shape the kernels' loops before upstream lowers them
-// (sim-gpu-narrow-loop-counters, sim-gpu-unroll-loops); the others run on
-// gpu.modules already lowered to the LLVM and NVVM dialects, just before
-// upstream's gpu-module-to-binary turns them into PTX, and fix or check what
-// the upstream lowering leaves behind. None lowers anything itself.
+// (sim-gpu-narrow-loop-counters, sim-gpu-unroll-loops), one rewrites warp
+// reductions into shuffles for chips before sm_80
+// (sim-gpu-lower-subgroup-reduce); the others run on gpu.modules already
+// lowered to the LLVM and NVVM dialects, just before upstream's
+// gpu-module-to-binary turns them into PTX, and fix or check what the
+// upstream lowering leaves behind.
 // docs/PTXPasses.md is generated from this file.
 //
 //===----------------------------------------------------------------------===//
@@ -89,6 +91,34 @@ def SimGPUUnrollLoops
                            "::mlir::scf::SCFDialect"];
 }
 
+def SimGPULowerSubgroupReduce
+    : Pass<"sim-gpu-lower-subgroup-reduce"> {
+  let summary = "Warp reductions as shuffles, for chips before sm_80";
+  let description = [{
+    The kernels combine the lanes of a warp with `gpu.subgroup_reduce`
+    (the minimum of `num_steps` over a group, the sum of its evaluation
+    counts), which `convert-gpu-to-nvvm` lowers to `redux.sync`: an
+    instruction of sm_80 and later. For an older chip (sm_70 Volta, sm_75
+    Turing) it refuses the operation, so no kernel compiled. The GPU
+    pipeline runs this pass on every `gpu.module` when the chip has no
+    `redux.sync`: it rewrites each reduction into a butterfly of five
+    `gpu.shuffle xor` over the 32 lanes of a warp (`shfl.sync`, every
+    chip) with upstream's patterns. The kernels reduce `i32` values only,
+    minima and sums, which give the same result in any order; a reduction
+    of a value wider than 32 bits is an error that names the chip rule.
+
+    ```mlir
+    // before
+    %m = gpu.subgroup_reduce minsi %x uniform : (i32) -> i32
+    // after: five rounds of
+    %s, %valid = gpu.shuffle xor %acc, %c1_i32, %c32_i32 : i32
+    %acc1 = arith.minsi %acc, %s : i32
+    ```
+  }];
+  let dependentDialects = ["::mlir::arith::ArithDialect",
+                           "::mlir::gpu::GPUDialect"];
+}
+
 def SimNVVMExternDynamicSharedMemory
     : Pass<"sim-nvvm-extern-dynamic-shared-memory", "::mlir::gpu::GPUModuleOp"> {
   let summary = "Declare dynamic shared memory as `.extern .shared` for PTX";
@@ -130,6 +160,9 @@ def SimNVVMCheckTarget
       instead of a missing-translation error on the whole module;
     - an `#nvvm.target` whose chip or features LLVM's NVPTX back end does not
       know (LLVM would only warn on stderr and emit PTX for another chip);
+    - a chip before sm_70, which has no `shfl.sync` for the kernels' warp
+      reductions, and a PTX ISA feature older than the chip needs
+      (`+ptx60` for sm_90): LLVM would abort the process;
     - a call to a libdevice function (`__nv_expf` for `math.exp`, ...) when
       the libdevice file named by `libdevice` does not exist: upstream would
       leave the call unresolved and the PTX would fail to load;

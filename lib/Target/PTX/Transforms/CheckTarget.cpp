@@ -17,6 +17,7 @@
 #include "llvm/ADT/MapVector.h"
 #include "llvm/ADT/StringExtras.h"
 #include "llvm/ADT/StringSet.h"
+#include "llvm/ADT/StringSwitch.h"
 #include "llvm/Config/Targets.h"
 #include "llvm/MC/MCSubtargetInfo.h"
 #include "llvm/MC/TargetRegistry.h"
@@ -100,6 +101,33 @@ LogicalResult checkSymbolNames(gpu::GPUModuleOp module) {
   return failure(failed);
 }
 
+/// The oldest chip the kernels run on: sm_70 (Volta), the first with
+/// shfl.sync.
+constexpr unsigned kOldestChip = 70;
+
+/// The oldest PTX ISA version (major * 10 + minor) that supports `chip`,
+/// from the "Supported Targets" of NVIDIA's PTX release history; none for a
+/// chip not listed here (no check then).
+std::optional<unsigned> getMinimumPTXVersion(StringRef chip) {
+  return llvm::StringSwitch<std::optional<unsigned>>(chip)
+      .Cases({"sm_20", "sm_21", "sm_30", "sm_35"}, 32)
+      .Cases({"sm_32", "sm_50"}, 40)
+      .Cases({"sm_37", "sm_52"}, 41)
+      .Case("sm_53", 42)
+      .Cases({"sm_60", "sm_61", "sm_62"}, 50)
+      .Case("sm_70", 60)
+      .Case("sm_72", 61)
+      .Case("sm_75", 63)
+      .Case("sm_80", 70)
+      .Case("sm_86", 71)
+      .Case("sm_87", 74)
+      .Cases({"sm_89", "sm_90"}, 78)
+      .Case("sm_90a", 80)
+      .Cases({"sm_100", "sm_100a", "sm_101", "sm_101a"}, 86)
+      .Cases({"sm_120", "sm_120a"}, 87)
+      .Default(std::nullopt);
+}
+
 /// Checks the chip and the features of `target` against LLVM's NVPTX back
 /// end, which otherwise only warns and compiles for a default chip.
 LogicalResult checkTarget(gpu::GPUModuleOp module,
@@ -124,6 +152,17 @@ LogicalResult checkTarget(gpu::GPUModuleOp module,
            << "unknown NVIDIA GPU '" << target.getChip()
            << "': LLVM's NVPTX back end knows chips such as sm_80, sm_90, "
               "sm_90a and sm_100";
+  // The kernels exchange values between the lanes of a warp with
+  // shfl.sync (and redux.sync from sm_80), which older chips do not have:
+  // LLVM would abort the process selecting it.
+  StringRef chipNumber = target.getChip();
+  unsigned smVersion = 0;
+  if (chipNumber.consume_front("sm_") &&
+      !chipNumber.take_while(llvm::isDigit).getAsInteger(10, smVersion) &&
+      smVersion < kOldestChip)
+    return module.emitError()
+           << "sim's GPU kernels need sm_" << kOldestChip
+           << " or later (warp shuffles, shfl.sync), not " << target.getChip();
   llvm::StringSet<> known;
   for (const llvm::SubtargetFeatureKV &feature :
        subtarget->getAllProcessorFeatures())
@@ -131,8 +170,10 @@ LogicalResult checkTarget(gpu::GPUModuleOp module,
   SmallVector<StringRef> features;
   target.getFeatures().split(features, ',', /*MaxSplit=*/-1,
                              /*KeepEmpty=*/false);
+  unsigned requested = 0;
   for (StringRef feature : features) {
     StringRef name = feature.trim();
+    bool enabled = name.starts_with("+");
     if (!name.consume_front("+") && !name.consume_front("-"))
       return module.emitError()
              << "the PTX feature '" << feature
@@ -142,7 +183,22 @@ LogicalResult checkTarget(gpu::GPUModuleOp module,
              << "unknown PTX feature '" << feature
              << "': LLVM's NVPTX back end knows PTX ISA versions such as "
                 "+ptx78, +ptx80 and +ptx86";
+    unsigned version = 0;
+    StringRef number = name;
+    if (enabled && number.consume_front("ptx") &&
+        !number.getAsInteger(10, version))
+      requested = std::max(requested, version);
   }
+  // LLVM aborts the process on a PTX ISA older than the chip's ("PTX
+  // version 6.0 does not support target 'sm_90'").
+  std::optional<unsigned> needed = getMinimumPTXVersion(target.getChip());
+  if (requested && needed && requested < *needed)
+    return module.emitError()
+           << "PTX ISA " << requested / 10 << "." << requested % 10
+           << " (the features '" << target.getFeatures() << "') is older than "
+           << target.getChip() << " needs: give +ptx" << *needed
+           << " or later, or no PTX version (the chip's oldest PTX ISA is "
+              "the default)";
   return success();
 #else
   return module.emitError() << "this LLVM was built without the NVPTX back end";
