@@ -94,8 +94,9 @@ TranslationOptions::TranslationOptions()
       gpuUnroll("sim-gpu-unroll",
                 llvm::cl::desc("--sim-to-ptx, --sim-to-bundle: unroll the "
                                "GPU kernels' innermost loops of unknown trip "
-                               "count (a scene's load loop) by this factor; "
-                               "the same results. Default 1: left to LLVM"),
+                               "count (a scene's load loop) by this factor, "
+                               "1 to 32; the same results. Default 1: left "
+                               "to LLVM"),
                 llvm::cl::init(getTargetDefaults().unroll),
                 llvm::cl::cat(category)),
       distributed(

@@ -85,7 +85,8 @@ def SimGPUUnrollLoops
   }];
   let options = [
     Option<"factor", "factor", "unsigned", /*default=*/"2",
-           "Copies of the body per iteration of the main loop (1: none)">,
+           "Copies of the body per iteration of the main loop, 1 to 32 "
+           "(1: none)">,
   ];
   let dependentDialects = ["::mlir::arith::ArithDialect",
                            "::mlir::scf::SCFDialect"];

@@ -137,11 +137,23 @@ void unroll(scf::ForOp loop, unsigned factor) {
   loop.getInitArgsMutable().assign(main.getResults());
 }
 
+/// The most copies of a body the pass makes.
+constexpr unsigned kMaxFactor = 32;
+
 struct UnrollLoopsPass
     : public sim::impl::SimGPUUnrollLoopsBase<UnrollLoopsPass> {
   using Base::Base;
 
   void runOnOperation() override {
+    // Each copy of a load loop's body is tens of instructions, and LLVM's
+    // and ptxas's time grows with the copies: 256 took a minute and 3 MB of
+    // PTX, 1000 did not finish. nvcc unrolls such a loop by 2 to 4.
+    if (factor == 0 || factor > kMaxFactor) {
+      getOperation()->emitError()
+          << "sim-gpu-unroll-loops: the factor must be from 1 to " << kMaxFactor
+          << ", not " << static_cast<unsigned>(factor);
+      return signalPassFailure();
+    }
     if (factor <= 1)
       return;
     SmallVector<scf::ForOp> loops;
