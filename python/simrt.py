@@ -184,6 +184,17 @@ def _check(status):
         raise Error(status, load_library().sim_last_error().decode())
 
 
+def _c_int(what, value, bits):
+    """`value`, or a ValueError naming `what` when it is outside a C
+    integer of `bits` bits: ctypes would wrap it silently (2**64 + 10
+    steps would run 10)."""
+    low, high = -(1 << (bits - 1)), (1 << (bits - 1)) - 1
+    if isinstance(value, int) and not low <= value <= high:
+        raise ValueError("%s must be from -2^%d to 2^%d - 1 (an int%d), "
+                         "not %d" % (what, bits - 1, bits - 1, bits, value))
+    return value
+
+
 def _parse(parse, name):
     """A strategy's or backend's value, as the runtime names them (its
     message for an unknown name)."""
@@ -317,12 +328,12 @@ class Session:
         lib.sim_session_options_init(ctypes.byref(options))
         options.strategy = _parse(lib.sim_strategy_parse, strategy)
         options.backend = _parse(lib.sim_backend_parse, backend)
-        options.group_size = group_size
+        options.group_size = _c_int("group_size", group_size, 64)
         options.check_finite = int(check_finite)
-        options.cpu_threads = cpu_threads
+        options.cpu_threads = _c_int("cpu_threads", cpu_threads, 32)
         # Bytes of device (or host) memory the session may use; 0: the
         # runtime's default share (sim-run --max-memory).
-        options.max_memory = max_memory
+        options.max_memory = _c_int("max_memory", max_memory, 64)
         self._bundle = bundle  # keeps the bundle open as long as the session
         self._buffers = {b["name"]: b for b in bundle.buffers()}
         self._raw = ctypes.c_void_p()
@@ -354,7 +365,8 @@ class Session:
 
     def run(self, steps):
         """Runs `steps` base steps; the run ends exactly at T + steps."""
-        _check(load_library().sim_session_run(self._handle, steps))
+        _check(load_library().sim_session_run(self._handle,
+                                              _c_int("steps", steps, 64)))
 
     def _bytes(self, buffer):
         size = ctypes.c_size_t()

@@ -134,7 +134,9 @@ def run(scene, args):
     bundle = sim.compile(scene, strategies=[args.strategy])
     print(f"compiled {scene.name} in {bundle.compile_seconds:.2f} s")
     values = dict(item.split("=", 1) for item in args.set)
-    session = bundle.session(args.strategy, args.backend, **values)
+    # params=: a --set of a parameter named like a session option (threads)
+    # sets the parameter.
+    session = bundle.session(args.strategy, args.backend, params=values)
     # One output at the end unless asked for more (a run of 0 steps has
     # only the initial state).
     out = session.run(args.run,

@@ -13,6 +13,7 @@ error becomes a `CompileError` with its message, location and notes.
 
 from __future__ import annotations
 
+import numbers
 import os
 import re
 import shutil
@@ -166,6 +167,26 @@ def _strategy_names(strategies) -> list[str]:
     return names
 
 
+# The group sizes a bundle's plans can be made for (lib/Target/Bundle/
+# Bundle.cpp: a multiple of a GPU warp, at most kMaxGroupSize).
+_MAX_GROUP_SIZE = 1 << 16
+
+
+def _check_group_size(group_size):
+    """Refuses a group size sim-translate would not take, before it runs:
+    int() would truncate 1.7, and the tool's message points into the
+    temporary scene file."""
+    if group_size is None:
+        return
+    if isinstance(group_size, bool) or \
+            not isinstance(group_size, numbers.Integral):
+        raise TypeError(f"group_size must be an int (a multiple of 32), not "
+                        f"{group_size!r}")
+    if group_size % 32 or not 32 <= group_size <= _MAX_GROUP_SIZE:
+        raise ValueError(f"group_size must be a multiple of 32 (a GPU warp) "
+                         f"from 32 to {_MAX_GROUP_SIZE}, not {group_size}")
+
+
 def run_sim_opt(scene, args: Iterable[str] = ()) -> str:
     """Runs `sim-opt` on a scene (a Scene or its text) with `args`; returns
     stdout (and stderr appended when the tool prints remarks there).
@@ -196,9 +217,10 @@ def compile(scene, strategies: Sequence[str] | str | None = None,
     `strategies`: the strategies to compile (default all five: simple,
     traditional, hip, hip-cache, lts); a name or a list (an unknown or
     repeated name is a ValueError before the tool runs). `group_size`: the
-    group size the plans are made for (default 256). `output`: where the
-    bundle goes (default: a temporary file that lives as long as the
-    Bundle). `args`: more sim-translate options (a list). `ftz`: flush
+    group size the plans are made for, a multiple of 32 from 32 to 65536
+    (default 256; anything else is refused before the tool runs). `output`:
+    where the bundle goes (default: a temporary file that lives as long as
+    the Bundle). `args`: more sim-translate options (a list). `ftz`: flush
     subnormals to zero on every backend (`--sim-ftz`; much faster on a CPU
     once values decay below the normal range; default IEEE).
     Returns a `sim.Bundle` with `compile_seconds`, the scene's `mlir` text
@@ -207,6 +229,7 @@ def compile(scene, strategies: Sequence[str] | str | None = None,
     """
     from .runtime import Bundle
     names = _strategy_names(strategies) if strategies else []
+    _check_group_size(group_size)
     if isinstance(args, str):
         raise TypeError(f"args is a list of sim-translate options, not the "
                         f"str {args!r}")
@@ -221,7 +244,7 @@ def compile(scene, strategies: Sequence[str] | str | None = None,
         command = [tool, source, "--sim-to-bundle", "-o", target]
         if names:
             command.append("--sim-strategies=" + ",".join(names))
-        if group_size:
+        if group_size is not None:
             command.append(f"--sim-group-size={int(group_size)}")
         if ftz:
             command.append("--sim-ftz")

@@ -16,6 +16,14 @@ layout), K output times:
 | `exact/<name>` | like `buffer/<name>` | optional: the exact solution |
 | `meta/scene`, `meta/strategy`, `meta/backend` | 0-d string arrays | what ran |
 
+A `<name>` in a key is the name escaped as sim-run escapes it (the stems
+of its dump files, runtime/tools/simrun/Output.h): the bytes A-Z, a-z,
+0-9, `_`, `-` and a `.` not first are kept, every other byte of the UTF-8
+name becomes `%XX` (upper-case hex), so `x$y` is `buffer/x%24y`; an empty
+name is `_`, a stem is cut to 200 bytes, and a stem that would share a dump
+file with an earlier one gets `-2`, `-3`, ... (`X.reference` after `X`).
+`Output.load` decodes the keys back to the names.
+
 `max_abs` is the largest absolute difference over all items and lanes,
 `rms_rel` is ||a - b||_2 / ||b||_2 (0 when both are zero, infinite when only
 the exact solution is), as sim-run reports them.
@@ -24,6 +32,7 @@ the exact solution is), as sim-run reports them.
 from __future__ import annotations
 
 import os
+import re
 import zipfile
 
 import numpy as np
@@ -46,6 +55,76 @@ def error_norms(values, reference) -> tuple[float, float]:
     return max_abs, rms_rel
 
 
+# What sim-run's sanitiseName and dumpStems (runtime/tools/simrun/Output.h)
+# make of names; the keys of both tools' files must agree.
+_MAX_STEM = 200
+_DUMP_SUFFIXES = (".npy", ".reference.npy", ".check.npy")
+_KEPT = frozenset(b"ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz"
+                  b"0123456789_-")
+
+
+def _sanitise(name: str) -> str:
+    """sim-run's file-name stem of `name` (sanitiseName)."""
+    if not name:
+        return "_"
+    stem = ""
+    for i, byte in enumerate(name.encode("utf-8")):
+        kept = byte in _KEPT or (byte == ord(".") and i > 0)
+        piece = chr(byte) if kept else f"%{byte:02X}"
+        if len(stem) + len(piece) > _MAX_STEM:
+            break
+        stem += piece
+    return stem
+
+
+def _next_stem(name: str, taken: set) -> str:
+    """The stem dumpStems gives `name` after the stems whose files are in
+    `taken`; adds its files to `taken`."""
+    base = stem = _sanitise(name)
+    n = 2
+    while any(stem + suffix in taken for suffix in _DUMP_SUFFIXES):
+        stem = f"{base}-{n}"
+        n += 1
+    taken.update(stem + suffix for suffix in _DUMP_SUFFIXES)
+    return stem
+
+
+def _stems(names) -> dict[str, str]:
+    """The stem of each of `names`, in order (dumpStems)."""
+    taken: set = set()
+    return {name: _next_stem(name, taken) for name in names}
+
+
+_ESCAPE = re.compile(r"%([0-9A-F]{2})")
+
+
+def _unescape(stem: str) -> str:
+    data = _ESCAPE.sub(lambda m: chr(int(m.group(1), 16)), stem)
+    return data.encode("latin-1").decode("utf-8", errors="replace")
+
+
+def _names(stems) -> dict[str, str]:
+    """The name of each of `stems` (in the order dumpStems made them): the
+    name whose stem it is, so a `-N` dumpStems added is taken off again
+    (a scene's names have no '-'). A name cut to 200 bytes stays cut."""
+    taken: set = set()
+    names = {}
+    for stem in stems:
+        candidates = [_unescape(stem)]
+        match = re.fullmatch(r"(.+)-[0-9]+", stem)
+        if match:
+            candidates.insert(0, _unescape(match.group(1)))
+        for name in candidates:
+            trial = set(taken)
+            if _next_stem(name, trial) == stem:
+                break
+        else:
+            name = candidates[0]
+        taken.update(stem + suffix for suffix in _DUMP_SUFFIXES)
+        names[stem] = name
+    return names
+
+
 class Output:
     """Observed buffers and totals at K output times (see the module)."""
 
@@ -64,18 +143,23 @@ class Output:
         return len(self.t)
 
     def arrays(self) -> dict[str, np.ndarray]:
-        """The arrays of the `.npz` layout, by key."""
+        """The arrays of the `.npz` layout, by key (names escaped as
+        sim-run escapes them; see the module)."""
         out = {"t": self.t, "time": self.time}
+        # Errors and exact solutions share their buffer's stem.
+        stem = _stems(dict.fromkeys([*self.buffers, *self.errors,
+                                     *self.exact]))
+        total_stem = _stems(self.totals)
         for name, values in self.buffers.items():
-            out[f"buffer/{name}"] = values
+            out[f"buffer/{stem[name]}"] = values
         for name, values in self.totals.items():
-            out[f"total/{name}"] = values
+            out[f"total/{total_stem[name]}"] = values
         for name, norms in self.errors.items():
             for norm, values in norms.items():
-                out[f"error/{name}/{norm}"] = np.asarray(values,
-                                                         dtype=np.float64)
+                out[f"error/{stem[name]}/{norm}"] = np.asarray(
+                    values, dtype=np.float64)
         for name, values in self.exact.items():
-            out[f"exact/{name}"] = values
+            out[f"exact/{stem[name]}"] = values
         for key, value in self.meta.items():
             out[f"meta/{key}"] = np.array(str(value))
         return out
@@ -107,18 +191,31 @@ class Output:
 
     @classmethod
     def from_arrays(cls, arrays: dict) -> "Output":
+        """An Output from the arrays of the layout by key (escaped names,
+        decoded here)."""
         buffers, totals, errors, exact, meta = {}, {}, {}, {}, {}
+        # The buffers' stems in the order they were made: those of buffer/
+        # keys, then those only errors or exact solutions have.
+        keys = [key.partition("/") for key in arrays]
+        stems = dict.fromkeys(rest for kind, _, rest in keys
+                              if kind == "buffer")
+        stems.update(dict.fromkeys(
+            rest.rpartition("/")[0] if kind == "error" else rest
+            for kind, _, rest in keys if kind in ("exact", "error")))
+        name = _names(stems)
+        total_name = _names(rest for kind, _, rest in keys
+                            if kind == "total")
         for key, value in arrays.items():
             kind, _, rest = key.partition("/")
             if kind == "buffer":
-                buffers[rest] = value
+                buffers[name[rest]] = value
             elif kind == "total":
-                totals[rest] = value
+                totals[total_name[rest]] = value
             elif kind == "exact":
-                exact[rest] = value
+                exact[name[rest]] = value
             elif kind == "error":
-                name, _, norm = rest.rpartition("/")
-                errors.setdefault(name, {})[norm] = value
+                stem, _, norm = rest.rpartition("/")
+                errors.setdefault(name[stem], {})[norm] = value
             elif kind == "meta":
                 item = value.item() if value.shape == () else value
                 meta[rest] = (item.decode() if isinstance(item, bytes)

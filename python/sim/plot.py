@@ -15,6 +15,7 @@ time; the errors against the exact solution over time (log scale).
 from __future__ import annotations
 
 import argparse
+import numbers
 import os
 import sys
 
@@ -80,9 +81,18 @@ def plot(source, out_dir: str | None = None, *, times=None, buffers=None,
 
     `times`: indices of output times for the profiles (default: up to five
     spread over the run); `buffers`: which buffers (default all); `lanes`:
-    which vector lanes (default all); `prefix`: the start of the file names
-    (default: the input's stem, or the scene's name).
+    which vector lanes (default all); each a list, or one index or name.
+    `prefix`: the start of the file names (default: the input's stem, or
+    the scene's name).
     """
+    # One name or index for a list of them: a str would be iterated by
+    # characters, an int not at all, and times=0 would read as no choice.
+    if isinstance(buffers, str):
+        buffers = [buffers]
+    if isinstance(times, numbers.Integral):
+        times = [times]
+    if isinstance(lanes, numbers.Integral):
+        lanes = [lanes]
     if isinstance(source, Output):
         out = source
         stem = prefix or out.meta.get("scene", "output")

@@ -24,12 +24,14 @@ import signal
 import sys
 import threading
 import warnings
+from collections.abc import Mapping
 from typing import Callable, NamedTuple
 
 import numpy as np
 
 from .errors import NonFiniteWarning
 from .output import Output, error_norms
+from .types import F32_TINY, round_f32
 
 try:
     import simrt
@@ -116,10 +118,11 @@ class Bundle:
     def observed(self) -> list[str]:
         return [b.name for b in self.buffers.values() if b.observed]
 
-    def session(self, strategy: str = "hip", backend: str = "auto",
-                **options) -> "Session":
-        """A new Session of this bundle (see Session for the options)."""
-        return Session(self, strategy, backend, **options)
+    def session(self, /, strategy: str = "hip", backend: str = "auto", *,
+                params: dict | None = None, **options) -> "Session":
+        """A new Session of this bundle (see Session for the options, the
+        values and `params`)."""
+        return Session(self, strategy, backend, params=params, **options)
 
     def close(self):
         self._rt.close()
@@ -149,12 +152,19 @@ class Bundle:
 class Session:
     """A bundle's state, run with one strategy on one backend.
 
-    `group_size` (0: the plan's), `threads` (CPU threads, 0: all),
-    `check_finite`, `max_memory` (bytes the session may allocate, 0: the
-    runtime's default share, as sim-run --max-memory), `warn_nonfinite`
-    and scene values (`range=`, `dt=`, parameters) as keyword arguments.
-    The strategy and backend can still be changed by `run` until the first
-    run; after it a session's state belongs to them.
+    Options, as keyword arguments: `group_size` (0: the plan's), `threads`
+    (CPU threads, 0: all), `check_finite`, `max_memory` (bytes the session
+    may allocate, 0: the runtime's default share, as sim-run
+    --max-memory) and `warn_nonfinite`. Scene values (`range`, `dt`,
+    parameters) as `params={name: value}`, which always means values, or
+    as the other keyword arguments. A keyword that names an option and a
+    parameter of the scene too is refused as ambiguous unless `params` is
+    given (then it is the option, and the parameter goes in `params`);
+    parameters named `strategy`, `backend` or `params` are set through
+    `params` only. The strategy and backend can still be changed by `run`
+    until the first run, while the bundle is open (the session keeps what
+    its own strategy needs of the bundle, no more); after the first run a
+    session's state belongs to them.
 
     With `warn_nonfinite` (the default; also the attribute of that name)
     every run ends by reading the state and the totals back and warns with
@@ -162,28 +172,41 @@ class Session:
     warns (and exits with status 3); False skips that copy of the state.
     """
 
-    def __init__(self, bundle: Bundle, strategy: str = "hip",
-                 backend: str = "auto", *, group_size: int = 0,
-                 threads: int = 0, check_finite: bool = False,
-                 max_memory: int = 0, warn_nonfinite: bool = True,
-                 **values):
+    def __init__(self, bundle: Bundle, /, strategy: str = "hip",
+                 backend: str = "auto", *, params: dict | None = None,
+                 **keywords):
+        if not isinstance(bundle, Bundle):
+            raise TypeError(f"a Session runs a sim.Bundle (sim.compile(scene) "
+                            f"or sim.Bundle(path)), not {bundle!r}")
+        options = dict(_OPTIONS)
+        values = {}
+        for name, value in keywords.items():
+            if name not in _OPTIONS:
+                values[name] = value
+                continue
+            # A keyword is an option unless the scene has a parameter of
+            # that name and nothing says which is meant: taking it for
+            # either would quietly ignore the other.
+            if params is None and name in bundle.params:
+                raise TypeError(
+                    f"{name}= is ambiguous: scene {bundle.name} has a "
+                    f"parameter {name!r}, and {name} is a Session option; "
+                    f"pass the parameter as params={{{name!r}: ...}} (with "
+                    f"params= given, {name}= is the option)")
+            options[name] = value
+        values = _merge_values(params, values, bundle)
         for what, value in (("strategy", strategy), ("backend", backend)):
             if not isinstance(value, str):
                 raise TypeError(f"{what} must be a name (str), not "
                                 f"{value!r}")
-        for what, value in (("group_size", group_size),
-                            ("threads", threads), ("max_memory", max_memory)):
-            if not _is_count(value, 0):
-                raise ValueError(f"{what} must be an int >= 0 (0: the "
-                                 f"default), not {value!r}")
-        if not isinstance(bundle, Bundle):
-            raise TypeError(f"a Session runs a sim.Bundle (sim.compile(scene) "
-                            f"or sim.Bundle(path)), not {bundle!r}")
-        for what, value in (("check_finite", check_finite),
-                            ("warn_nonfinite", warn_nonfinite)):
-            if not isinstance(value, (bool, np.bool_)):
+        for what, ctype in (("group_size", "int64"), ("threads", "int32"),
+                            ("max_memory", "int64")):
+            _check_count(what, options[what], 0, ctype,
+                         " (0: the default)")
+        for what in ("check_finite", "warn_nonfinite"):
+            if not isinstance(options[what], (bool, np.bool_)):
                 raise TypeError(f"{what} must be True or False, not "
-                                f"{value!r}")
+                                f"{options[what]!r}")
         self.bundle = bundle
         # What runs need of the bundle, read now: the bundle may be closed
         # before the session runs (docs/Runtime.md), and a run must not fail
@@ -191,40 +214,87 @@ class Session:
         self._scene = bundle.name
         self._max_steps = bundle.max_steps
         self._dt_type = bundle.dt_type
-        self.warn_nonfinite = bool(warn_nonfinite)
+        self.warn_nonfinite = bool(options["warn_nonfinite"])
         self.strategy = strategy
         self._backend_request = backend
-        self._options = dict(group_size=int(group_size),
-                             cpu_threads=int(threads),
-                             check_finite=bool(check_finite),
-                             max_memory=int(max_memory))
+        self._options = dict(group_size=int(options["group_size"]),
+                             cpu_threads=int(options["threads"]),
+                             check_finite=bool(options["check_finite"]),
+                             max_memory=int(options["max_memory"]))
         self._values: dict[str, str] = {}
+        # Buffers set before the first run, which a switch of strategy in
+        # run() puts into the new session, and every buffer set since the
+        # state last started over (a new range warns that it drops them).
         self._initial: dict[str, np.ndarray] = {}
+        self._set_buffers: set[str] = set()
         self._ran = False
         self._metrics = None
-        self._rt = self._create(strategy, backend)
+        self._rt, self._plan = self._create(strategy, backend)
         if values:
-            self.set(**values)
+            self.set(params=values)
 
     # -- Setup ------------------------------------------------------------------
 
     def _create(self, strategy, backend):
+        """A runtime session of `strategy` on `backend` with the values and
+        the buffers set so far, and the names of the buffers its plan
+        holds."""
         rt = simrt.Session(self.bundle._rt, strategy, backend, **self._options)
-        for name, value in self._values.items():
-            rt.set(name, value)
-        for name, data in self._initial.items():
-            _put(rt, name, data)
-        return rt
+        try:
+            for name, value in self._values.items():
+                rt.set(name, value)
+            plan = _plan_buffers(rt, self.bundle)
+            for name, data in self._initial.items():
+                # A buffer this plan pruned is one no output needs.
+                if name in plan:
+                    _put(rt, name, data)
+        except BaseException:
+            rt.close()
+            raise
+        return rt, plan
 
-    def set(self, **values):
-        """Sets `range`, `dt` or parameters (like `sim-run --set`). A new
-        range discards the state (and buffers set before)."""
+    def set(self, /, params: dict | None = None, **values):
+        """Sets `range`, `dt` or parameters (like `sim-run --set`), from
+        `params={name: value}` (which always means values: a parameter
+        named `params` goes there) or keyword arguments.
+
+        A range other than the current one discards the state: the session
+        starts over from the init bodies at time 0, and buffers set before
+        are lost (a warning names them; set them after the range). Setting
+        the current range keeps the state."""
+        values = _merge_values(params, values, self.bundle)
         for name, value in values.items():
             text = _value_literal(value)
+            if name == "dt":
+                self._check_dt(text)
+            before = self.range if name == "range" else None
             self._rt.set(name, text)
             self._values[name] = text
-            if name == "range":
+            if name == "range" and self.range != before:
+                if self._set_buffers:
+                    names = ", ".join(sorted(self._set_buffers))
+                    warnings.warn(
+                        f"range {before} -> {self.range} discards the "
+                        f"session's state, with the buffers set before "
+                        f"({names}): the state starts over from the init "
+                        f"bodies at time 0 (set the buffers after the "
+                        f"range)", stacklevel=2)
                 self._initial.clear()
+                self._set_buffers.clear()
+
+    def _check_dt(self, text: str):
+        """Refuses a dt that rounds to 0 in an f32 bundle, saying so: the
+        runtime would call 1e-50 not a positive finite time step."""
+        try:
+            value = float(text)
+        except ValueError:  # the runtime's message for what it cannot read
+            return
+        if self._dt_type == "f32" and value > 0 and round_f32(value) == 0:
+            raise simrt.Error(
+                simrt._INVALID_ARGUMENT,
+                f"dt: {text} underflows f32 to 0 (the smallest positive f32 "
+                f"is {F32_TINY!r}); compile the scene with "
+                f"precision=sim.f64 for a smaller dt")
 
     def get(self, name: str) -> str:
         """The current value of `range`, `dt` or a parameter, as text."""
@@ -236,11 +306,13 @@ class Session:
             self._rt._handle, name.encode(), buffer, len(buffer)))
         return buffer.value.decode()
 
-    def init(self, **buffers):
+    def init(self, /, **buffers):
         """Starts over from the initial state (time 0), then replaces the
-        state of the buffers given (arrays, see `__setitem__`)."""
+        state of the buffers given (arrays, see `__setitem__`; any buffer
+        name, `self` too)."""
         self._rt.init()
         self._initial.clear()
+        self._set_buffers.clear()
         for name, data in buffers.items():
             self[name] = data
 
@@ -285,10 +357,29 @@ class Session:
             raise KeyError(f"scene {self._scene} has no buffer "
                            f"{name!r}") from None
 
+    @property
+    def plan_buffers(self) -> list[str]:
+        """The buffers whose state the session holds: the scene's, less
+        those its strategy's plan pruned (no observed buffer or total
+        needs them; `--sim-prune`)."""
+        return list(self._plan)
+
+    def _state_info(self, name: str) -> BufferInfo:
+        """The info of a buffer whose state the session holds."""
+        info = self.info(name)
+        if name not in self._plan:
+            raise KeyError(
+                f"buffer {name!r} of scene {self._scene} is not in the plan "
+                f"of strategy {self.strategy!r}: no observed buffer or total "
+                f"needs it, so the compiler pruned it and the session holds "
+                f"no state of it (it holds "
+                f"{', '.join(self._plan) or 'none'})")
+        return info
+
     def __getitem__(self, name: str) -> np.ndarray:
         """The buffer's current state: a new array of its scalar type,
         [range] or [range, lanes]."""
-        info = self.info(name)
+        info = self._state_info(name)
         data = np.empty(info.shape(self.range), dtype=info.dtype)
         simrt._check(simrt.load_library().sim_session_get_buffer(
             self._rt._handle, name.encode(), data.ctypes.data, data.nbytes))
@@ -298,7 +389,7 @@ class Session:
         """Replaces the buffer's current state with `values` (anything numpy
         broadcasts to [range] or [range, lanes]; converted to the buffer's
         scalar type)."""
-        info = self.info(name)
+        info = self._state_info(name)
         shape = info.shape(self.range)
         array = np.asarray(values, dtype=info.dtype)
         try:
@@ -308,6 +399,7 @@ class Session:
                              f"array of shape {shape}; an array of shape "
                              f"{array.shape} does not broadcast to it") from None
         _put(self._rt, name, data)
+        self._set_buffers.add(name)
         if not self._ran and self.time == 0:
             self._initial[name] = data
 
@@ -320,7 +412,7 @@ class Session:
 
     def exact(self, name: str) -> np.ndarray:
         """The scene's exact solution of the buffer at the current time."""
-        info = self.info(name)
+        info = self._state_info(name)
         lib = simrt.load_library()
         if not lib.sim_session_has_exact(self._rt._handle, name.encode()):
             raise KeyError(f"buffer {name} has no exact solution")
@@ -345,8 +437,19 @@ class Session:
                 f"this session ran with {self.strategy} on "
                 f"{self._backend_request}; its state belongs to them (make "
                 f"a new session for {strategy} on {backend})")
+        # The runtime session keeps what its own plan needs of the bundle,
+        # not the other strategies' plans: a new one is made from the
+        # bundle.
+        if not self.bundle._rt._raw:
+            raise RunError(
+                simrt._INVALID_ARGUMENT,
+                f"the bundle is closed: this session runs on with "
+                f"{self.strategy} on {self._backend_request}, but a switch "
+                f"to {strategy} on {backend} makes a new session of the "
+                f"bundle (switch before bundle.close(), or make the session "
+                f"with bundle.session({strategy!r}, {backend!r}))")
         old = self._rt
-        self._rt = self._create(strategy, backend)
+        self._rt, self._plan = self._create(strategy, backend)
         old.close()
         self.strategy = strategy
         self._backend_request = backend
@@ -370,9 +473,7 @@ class Session:
         or the totals warns (sim.NonFiniteWarning; see `warn_nonfinite`).
         """
         # numpy's integers too; True is not a number of steps.
-        if not _is_count(steps, 0):
-            raise ValueError(f"steps must be an int >= 0, not {steps!r}")
-        steps = int(steps)
+        steps = _check_count("steps", steps, 0, "int64")
         # Checked before the run: a callback that cannot be called would
         # stop it at its first host synchronisation, after steps ran.
         if progress is not None and not callable(progress):
@@ -438,11 +539,15 @@ class Session:
                 lib.sim_session_interrupt(handle)
             previous = signal.signal(signal.SIGINT, on_sigint)
         callback = None
+        # The steps done that progress was last told of: the runtime may
+        # report the end of the chunk itself, which is said once.
+        told = [None]
         if progress is not None or watch:
             def call(user, done, _):
                 if progress is None:
                     return
                 try:
+                    told[0] = done
                     progress(offset + done, total)
                 except BaseException as error:  # also KeyboardInterrupt
                     failure.append(error)
@@ -467,7 +572,7 @@ class Session:
             raise failure[0]
         # The steps ran: count them before the callback, which may raise.
         self._accumulate()
-        if progress is not None:
+        if progress is not None and told[0] != steps:
             progress(offset + steps, total)
 
     def _accumulate(self):
@@ -496,7 +601,10 @@ class Session:
         known = frame["buffers"] if frame else {}
         totals = frame["totals"] if frame else self.totals()
         counts, parts = {}, []
-        for name, info in self.bundle.buffers.items():
+        # The buffers of this strategy's plan only: the others (pruned, as
+        # no output needs them) have no state, as in sim-run's check.
+        for name in self._plan:
+            info = self.bundle.buffers[name]
             data = known[name] if name in known else self[name]
             bad = ~np.isfinite(data)
             count = int(np.count_nonzero(bad))
@@ -575,11 +683,64 @@ class Session:
                 f"{self.backend}, T={self.time}>")
 
 
+# The options of a Session and their defaults (see Session).
+_OPTIONS = {"group_size": 0, "threads": 0, "check_finite": False,
+            "max_memory": 0, "warn_nonfinite": True}
+
+# The largest value of the C types of the runtime's integer arguments:
+# ctypes would wrap a larger Python int silently (2**64 + 10 steps ran 10).
+_C_MAX = {"int32": 2**31 - 1, "int64": 2**63 - 1}
+
+
 def _is_count(value, least: int) -> bool:
     """Whether `value` is an integer (Python's or numpy's, not a bool) of
     at least `least`."""
     return (not isinstance(value, bool) and
             isinstance(value, numbers.Integral) and value >= least)
+
+
+def _check_count(what: str, value, least: int, ctype: str,
+                 note: str = "") -> int:
+    """`value` as an int, or a ValueError naming `what` unless it is an
+    integer from `least` to the largest of the C type `ctype`."""
+    if not _is_count(value, least):
+        raise ValueError(f"{what} must be an int >= {least}{note}, not "
+                         f"{value!r}")
+    if value > _C_MAX[ctype]:
+        exponent = 31 if ctype == "int32" else 63
+        raise ValueError(f"{what} must be at most 2^{exponent} - 1 (the "
+                         f"runtime's {ctype}), not {value}")
+    return int(value)
+
+
+def _merge_values(params, values: dict, bundle: Bundle) -> dict:
+    """The values of `params` (a dict by name) and of the keyword
+    arguments `values` together; a name in both is refused."""
+    if params is None:
+        return dict(values)
+    if not isinstance(params, Mapping) or \
+            not all(isinstance(name, str) for name in params):
+        hint = (f" (for the parameter named params: "
+                f"params={{'params': {params!r}}})"
+                if "params" in bundle.params else "")
+        raise TypeError(f"params is a dict of values by name (range, dt, "
+                        f"parameters), not {params!r}{hint}")
+    twice = [name for name in params if name in values]
+    if twice:
+        raise TypeError(f"{twice[0]} is given twice: in params and as a "
+                        f"keyword argument")
+    return {**params, **values}
+
+
+def _plan_buffers(rt, bundle: Bundle) -> list[str]:
+    """The buffers of the bundle (in its order) that the plan of the
+    runtime session `rt` holds: those sim_session_buffer_bytes knows, as
+    sim-run's check of the state asks."""
+    lib = simrt.load_library()
+    size = ctypes.c_size_t()
+    return [name for name in bundle.buffers
+            if lib.sim_session_buffer_bytes(rt._handle, name.encode(),
+                                            ctypes.byref(size)) == 0]
 
 
 def _value_literal(value) -> str:

@@ -41,6 +41,10 @@ _NAME = re.compile(r"^[A-Za-z_][A-Za-z0-9_$.]*$")
 _INTERPS = ("linear", "cubic", "none", "flux")
 _BOUNDARIES = ("clamp", "wrap", "zero")
 _BUILTIN_PARAMS = ("range", "dt", "max_steps")
+# sim.simulation's kMaxRange and kMaxMaxSteps (include/sim/Dialect/Sim/IR/
+# SimOps.td).
+_MAX_RANGE = 1 << 40
+_MAX_MAX_STEPS = 1 << 20
 
 
 class Hermite:
@@ -214,12 +218,11 @@ class Scene:
         if precision not in (f32, f64):
             raise trace_error(f"a scene's precision is sim.f32 or sim.f64, "
                               f"not {precision!r}", loc)
-        if not isinstance(range, int) or range < 1:
-            raise trace_error(f"range must be a positive int, not {range!r}",
-                              loc)
-        if not isinstance(max_steps, int) or max_steps < 1:
-            raise trace_error(f"max_steps must be a positive int, not "
-                              f"{max_steps!r}", loc)
+        # The dialect's bounds, checked here at the user's line: the tools
+        # would report them at the text's, and read True as no number.
+        range = _check_int("range", range, _MAX_RANGE, "2^40", loc)
+        max_steps = _check_int("max_steps", max_steps, _MAX_MAX_STEPS,
+                               "2^20", loc)
         self.name = name
         self.range = range
         self.dt = _check_dt(dt, precision, loc)
@@ -256,12 +259,13 @@ class Scene:
         with `session.set(name=value)`."""
         loc = user_location(2)
         if dtype is None:
+            # numpy's numbers too (np.int64(3) is an int).
             if isinstance(default, bool) or not isinstance(default,
-                                                           (int, float)):
+                                                           numbers.Real):
                 raise trace_error(f"the default of @{name} must be an int or "
                                   f"a float, not {type(default).__name__}",
                                   loc)
-            dtype = i32 if isinstance(default, int) else self.precision
+            dtype = i32 if _is_int(default) else self.precision
         if not isinstance(dtype, DType) or dtype.is_vector or \
                 dtype.mlir not in ("i32", "i64", "index", "f32", "f64"):
             raise trace_error(f"unsupported parameter type {dtype!r}: "
@@ -540,6 +544,21 @@ class Scene:
 
     def __repr__(self):
         return f"<sim.Scene @{self.name}>"
+
+
+def _is_int(value) -> bool:
+    """An integer, Python's or numpy's; not a bool (True is no count)."""
+    return (isinstance(value, numbers.Integral) and
+            not isinstance(value, bool))
+
+
+def _check_int(what: str, value, most: int, most_text: str, loc) -> int:
+    """`value` as an int, refused at the user's line unless it is an
+    integer from 1 to `most`."""
+    if not _is_int(value) or not 1 <= value <= most:
+        raise trace_error(f"{what} must be an int from 1 to {most_text}, "
+                          f"not {value!r}", loc)
+    return int(value)
 
 
 def _check_dt(dt, precision: DType, loc) -> float:

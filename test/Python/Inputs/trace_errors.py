@@ -221,6 +221,32 @@ def dt_not_a_number():
 
 
 @case
+def range_bool():
+    # True is an int to Python, but no number of items.
+    # CHECK: range_bool: trace_errors.py:[[@LINE+1]]:{{[0-9]+}}: range must be an int from 1 to 2^40, not True
+    sim.Scene("flag", range=True, dt=1e-3)
+
+
+@case
+def range_too_large():
+    # CHECK: range_too_large: trace_errors.py:[[@LINE+1]]:{{[0-9]+}}: range must be an int from 1 to 2^40, not 2199023255552
+    sim.Scene("vast", range=2**41, dt=1e-3)
+
+
+@case
+def max_steps_bool():
+    # CHECK: max_steps_bool: trace_errors.py:[[@LINE+1]]:{{[0-9]+}}: max_steps must be an int from 1 to 2^20, not True
+    sim.Scene("flag", range=4, dt=1e-3, max_steps=True)
+
+
+@case
+def max_steps_too_large():
+    # sim-translate would refuse it at the line of the temporary .mlir.
+    # CHECK: max_steps_too_large: trace_errors.py:[[@LINE+1]]:{{[0-9]+}}: max_steps must be an int from 1 to 2^20, not 2147483648
+    sim.Scene("long", range=4, dt=1e-3, max_steps=2**31)
+
+
+@case
 def unsupported_buffer_type():
     s, _ = scene()
     # CHECK: unsupported_buffer_type: trace_errors.py:[[@LINE+1]]:{{[0-9]+}}: unsupported buffer type sim.i32: a buffer holds f32, f64 or a vector of them
