@@ -25,6 +25,7 @@ void mlir::sim::buildFrontEndPipeline(OpPassManager &pm,
   OpPassManager &simulation = pm.nest<SimulationOp>();
   if (options.prune)
     simulation.addPass(createSimPrune());
+  simulation.addPass(createSimDefineEdgeCases());
   simulation.addPass(createSimSchedule());
   // Strategies without sub-steps record the verdicts (the plan checks
   // them) but need no explanation of them.
@@ -46,6 +47,7 @@ void mlir::sim::buildReferencePipeline(OpPassManager &pm,
   OpPassManager &simulation = pm.nest<SimulationOp>();
   if (options.prune)
     simulation.addPass(createSimPrune());
+  simulation.addPass(createSimDefineEdgeCases());
   simulation.addPass(createSimSchedule());
   SimSubstepLegalityOptions legalityOptions;
   legalityOptions.remarks = options.remarks;

@@ -171,6 +171,46 @@ def SimPrune : Pass<"sim-prune", "::mlir::sim::SimulationOp"> {
   let dependentDialects = [];
 }
 
+def SimDefineEdgeCases
+    : Pass<"sim-define-edge-cases", "::mlir::sim::SimulationOp"> {
+  let summary = "Give the integer divisions, shifts, float-to-integer "
+                "conversions and loops of a scene's bodies one result for "
+                "every operand";
+  let description = [{
+    LLVM leaves some `arith` and `scf` ops undefined for some operands: an
+    integer division by 0 or of the smallest integer by -1 (x86 traps),
+    a shift by the bit width or more and a float-to-integer conversion of
+    NaN or of a value out of the type's range (poison, which SIMD lanes
+    and scalar code resolve differently), and an `scf.for` whose step is
+    not positive (it never ends). In every body of the simulation this pass
+    gives each case the result docs/Model.md ("Other rules") defines, so
+    that no operand stops a run and every backend computes the same bits:
+
+    | op | operands | result |
+    | --- | --- | --- |
+    | `divsi`, `divui`, `ceildivsi`, `ceildivui`, `floordivsi` | divisor 0 | 0 |
+    | `remsi`, `remui` | divisor 0 | the dividend (`x = (x / d) * d + x % d` holds) |
+    | signed divisions | divisor -1 | the negated dividend, wrapping (`x % -1` is 0) |
+    | `shli`, `shrui` | shift of the width or more | 0 |
+    | `shrsi` | shift of the width or more | the sign (0 or -1) |
+    | `fptosi`, `fptoui` | NaN | 0 |
+    | `fptosi`, `fptoui` | beyond the integer type's range | its nearest end (saturated, as PTX's `cvt.rzi`) |
+    | `scf.for` | step 0 or negative (0 when unsigned) | no iteration |
+
+    An op whose constant operand rules its case out is left as it is (a
+    division by a constant other than 0 and -1 keeps its multiplication by
+    the reciprocal). A loop with a constant step that is not positive is
+    an error at the loop. Shifts of `index` values are left to the target,
+    whose width they depend on. The front end and the reference pipeline
+    run this pass, so every backend and the reference executor agree.
+
+    ```
+    sim-opt scene.mlir --pass-pipeline='builtin.module(sim.simulation(sim-define-edge-cases))'
+    ```
+  }];
+  let dependentDialects = ["::mlir::arith::ArithDialect"];
+}
+
 def SimPlanHalos : Pass<"sim-plan-halos", "::mlir::sim::SimulationOp"> {
   let summary = "Record the ghost items a distributed run exchanges";
   let description = [{
