@@ -135,6 +135,11 @@ struct SubstepLegalityPass
       // reads from the state that component alone writes.
       if (!isEntry || !boundsBigStep(writer) || !reader || !oneReader)
         return;
+      // A reader that writes fluxes is the writer of a flux pair placed
+      // after its cells: its own remark says to name it first, and advice
+      // about the cells' state as an item pair's values would mislead.
+      if (llvm::any_of(analysis.getWrittenBuffers(reader), isFlux))
+        return;
       for (const BufferAccess &access : analysis.getAccesses(writer)) {
         ComponentOp producer = analysis.getWriter(access.buffer);
         if (producer && producer != reader && producer != writer)

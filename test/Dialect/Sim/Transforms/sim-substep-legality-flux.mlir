@@ -107,6 +107,57 @@ sim.simulation @reader_first range(64) dt(1.0e-2 : f32) max_steps(4) {
 
 // -----
 
+// The same with the cells bounding the big step (as --sim-schedule records
+// it): the cells and the flux writer have the shape of an item pair too,
+// but only the flux pair's remark comes, since advice to read the cells'
+// state @U only at the own item would mislead.
+
+// CHECK-LABEL: sim.simulation @reader_first_bounding
+// CHECK-NOT: flux_window
+
+sim.simulation @reader_first_bounding range(64) dt(1.0e-2 : f32) max_steps(4) {
+  sim.buffer @U : f32 init {
+  ^bb0(%i: index):
+    %c = arith.constant 1.0 : f32
+    sim.yield %c : f32
+  }
+  sim.buffer @F : f32 interp(#sim.flux) boundary(zero) init {
+  ^bb0(%i: index):
+    %c = arith.constant 0.0 : f32
+    sim.yield %c : f32
+  }
+  // expected-remark @+1 {{under lts @Flux and the readers of its fluxes take the big step as under hip: it is not the first component of the step; name it first in sim.schedule so that it reads @Cells's state through the back edge}}
+  sim.component @Flux writes(@F) evaluate {
+  ^bb0(%j: index, %t: i64, %n: i32, %dt: f32):
+    %c1 = arith.constant 1 : index
+    %jr = arith.addi %j, %c1 : index
+    %a = sim.read @U[%j] : f32
+    %b = sim.read @U[%jr] : f32
+    %d = arith.subf %b, %a : f32
+    sim.yield %d : f32
+  }
+  sim.component @Cells writes(@U) num_steps {
+  ^bb0(%i: index, %t: i64):
+    %c2 = arith.constant 2 : i32
+    sim.yield %c2 : i32
+  } evaluate {
+  ^bb0(%i: index, %t: i64, %n: i32, %dt: f32):
+    %c1 = arith.constant 1 : index
+    %il = arith.subi %i, %c1 : index
+    %fw = sim.read @F[%il] : f32
+    %fe = sim.read @F[%i] : f32
+    %u = sim.read @U[%i] : f32
+    %d = arith.subf %fe, %fw : f32
+    %s = arith.mulf %d, %dt : f32
+    %r = arith.addf %u, %s : f32
+    sim.yield %r : f32
+  }
+  sim.schedule [@Cells, @Flux] bounded_by [@Cells]
+  sim.observe [@U]
+}
+
+// -----
+
 // Two components read the fluxes: no pair.
 
 // CHECK-LABEL: sim.simulation @two_readers
