@@ -132,6 +132,14 @@ Session::Session(std::shared_ptr<const Bundle> bundleIn,
   backend->load(*bundle, *plan_);
   // Again with the kernels loaded: CUDA knows each kernel's thread limit.
   backend->checkGroupSize(groupSize_);
+  // And the shared memory hip-cache's caches ask for at this group size:
+  // refused here rather than at the first launch of the run.
+  for (const auto &phase : plan_->phases)
+    for (const schema::LaunchT *launch : unrollPhase(*phase))
+      if (launch->shape != LaunchShape::Single)
+        backend->checkSharedMemory(int(launch->kernel),
+                                   int64_t(launch->shared_per_thread),
+                                   int64_t(launch->shared_fixed), groupSize_);
   // After load: the CPU backend names the instruction-set level it loaded.
   deviceName = backend->device();
   for (const auto &phase : plan_->phases)
@@ -658,6 +666,17 @@ void Session::ensureInitialized() {
 void Session::run(int64_t steps, int64_t pause) {
   runEnd(0, steps); // Checks the steps before touching the device.
   runPause(0, steps, pause);
+  // A run that failed inside a big step (check_finite's NaN, a kernel
+  // that failed) left some buffers at T and others past it, and the clock
+  // at T + m: continuing would start the next big step from that mix.
+  // (The reference executor commits a big step only once every component
+  // has run, so it stays at T.)
+  if (initialized && !onBoundary)
+    fail(SIM_ERROR_INVALID_ARGUMENT,
+         "the last run stopped inside the big step from base step " +
+             std::to_string(clock[kSlotBegin]) +
+             ", so the state is at no single time: init starts over from "
+             "the initial state, or restart from a checkpoint");
   backend->activate();
   ensureInitialized();
   prepare();

@@ -326,6 +326,20 @@ TEST(Executor, CheckFiniteStopsAtTheFirstNaN) {
                            std::to_string(at)),
               std::string::npos)
         << message;
+    // The state stopped inside a big step: no run continues from it (the
+    // next big step would start from buffers of two times), even after
+    // the parameter is repaired; init starts over.
+    session.set("poison", "1000");
+    std::string again =
+        errorOf([&] { session.run(8); }, SIM_ERROR_INVALID_ARGUMENT);
+    EXPECT_NE(again.find("the last run stopped inside the big step from base "
+                         "step " +
+                         std::to_string(at)),
+              std::string::npos)
+        << again;
+    session.init();
+    session.run(8);
+    EXPECT_EQ(session.time(), 8);
   }
   // Without the check the run completes, NaN and all.
   Session session(decay(), cpuOptions(SIM_STRATEGY_SIMPLE));
