@@ -39,6 +39,13 @@ public:
   /// Throws SIM_ERROR_INVALID_ARGUMENT if the device cannot run groups of
   /// this size.
   virtual void checkGroupSize(int64_t groupSize) const = 0;
+  /// Throws SIM_ERROR_INVALID_ARGUMENT if a launch of loaded kernel
+  /// `kernel` in groups of `groupSize` would ask for more shared memory
+  /// (`perThread` bytes per thread plus `fixed`) than the device gives a
+  /// group. Only a GPU has such a limit: the CPU kernels keep their
+  /// caches on the stack.
+  virtual void checkSharedMemory(int kernel, int64_t perThread, int64_t fixed,
+                                 int64_t groupSize) const {}
 
   /// Loads the code of `plan` of `bundle` and resolves its kernels; a
   /// launch names a kernel by its index in `plan.kernels`.

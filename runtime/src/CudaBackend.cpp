@@ -178,6 +178,13 @@ public:
              "cuDeviceGetAttribute");
     description = std::string(name) + " (sm_" + std::to_string(major) +
                   std::to_string(minor) + ")";
+    int sharedOptIn = 0;
+    cu.check(cu.cuDeviceGetAttribute(
+                 &sharedOptIn,
+                 CU_DEVICE_ATTRIBUTE_MAX_SHARED_MEMORY_PER_BLOCK_OPTIN,
+                 device_),
+             "cuDeviceGetAttribute");
+    maxSharedPerGroup = sharedOptIn;
     size_t total = 0;
     cu.check(cu.cuDeviceTotalMem(&total, device_), "cuDeviceTotalMem");
     totalMemory = int64_t(std::min<size_t>(total, INT64_MAX));
@@ -222,6 +229,30 @@ public:
   sim_backend kind() const override { return SIM_BACKEND_CUDA; }
   std::string device() const override { return description; }
   int64_t memoryBytes() const override { return totalMemory; }
+
+  void checkSharedMemory(int kernel, int64_t perThread, int64_t fixed,
+                         int64_t groupSize) const override {
+    const Kernel &k = kernels[size_t(kernel)];
+    int64_t available = maxSharedPerGroup - k.staticShared;
+    if (maxSharedPerGroup <= 0 || perThread * groupSize + fixed <= available)
+      return;
+    // The largest group (a multiple of 32) whose caches fit, if any.
+    int64_t fits =
+        perThread > 0 ? (available - fixed) / perThread / 32 * 32 : 0;
+    fail(SIM_ERROR_INVALID_ARGUMENT,
+         "kernel '" + k.name + "' needs " +
+             std::to_string(perThread * groupSize + fixed) +
+             " bytes of shared memory in a group of " +
+             std::to_string(groupSize) + " (hip-cache's caches: " +
+             std::to_string(perThread) + " per thread and " +
+             std::to_string(fixed) + " for the window's halo), more than the " +
+             std::to_string(available) + " that " + description +
+             " gives a group; " +
+             (fits >= 32
+                  ? "use --group-size " + std::to_string(fits) + " or less, or "
+                  : std::string("use ")) +
+             "strategy hip, which keeps no cache");
+  }
 
   void checkGroupSize(int64_t groupSize) const override {
     // Kernels reduce per warp with every lane taking part.
@@ -276,8 +307,12 @@ public:
              what + " has no kernel '" + kernel->name + "' (" +
                  cu.message(result, "cuModuleGetFunction") + ")");
       checkParams(function, plan.ptx, *kernel, what);
-      int maxThreads = 0, registers = 0;
+      int maxThreads = 0, registers = 0, staticShared = 0;
       if (cu.cuFuncGetAttribute) {
+        cu.check(cu.cuFuncGetAttribute(&staticShared,
+                                       CU_FUNC_ATTRIBUTE_SHARED_SIZE_BYTES,
+                                       function),
+                 "cuFuncGetAttribute");
         cu.check(cu.cuFuncGetAttribute(&maxThreads,
                                        CU_FUNC_ATTRIBUTE_MAX_THREADS_PER_BLOCK,
                                        function),
@@ -286,8 +321,8 @@ public:
                                        function),
                  "cuFuncGetAttribute");
       }
-      kernels.push_back(
-          {function, 48 * 1024, kernel->name, maxThreads, registers});
+      kernels.push_back({function, 48 * 1024, kernel->name, maxThreads,
+                         registers, staticShared});
     }
   }
 
@@ -458,11 +493,16 @@ private:
     /// The most threads a group of this kernel may have on the device, as
     /// its registers allow (0: unknown), and its registers per thread.
     int maxThreads, registers;
+    /// Its shared memory of fixed size (the warp minima of a group).
+    int staticShared;
   };
 
   const Driver &cu;
   CUdevice device_ = 0;
   int64_t totalMemory = 0;
+  /// The shared memory a group may have, static and dynamic, once a kernel
+  /// opts in (227 KiB on sm_90, 64 KiB on sm_75).
+  int64_t maxSharedPerGroup = 0;
   std::string description;
   CUcontext context = nullptr;
   bool retained = false;

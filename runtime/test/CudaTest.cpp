@@ -266,6 +266,49 @@ TEST(Cuda, RejectsAGroupSizeAboveAKernelsThreadLimit) {
       cudaSession(decayWithRealPtx(ptx), SIM_STRATEGY_HIP, options));
 }
 
+TEST(Cuda, RejectsCachesLargerThanTheGroupsSharedMemory) {
+  // hip-cache's caches ask for shared memory per thread of a group: 4 KiB
+  // per thread in groups of 256 is 1 MiB, more than any GPU gives a group.
+  // The session says so when it is made, with the largest group that
+  // fits, rather than failing at the first launch of the run.
+  schema::BundleT contents = decayContents();
+  schema::PlanT &plan = planOf(contents, Strategy::Hip);
+  plan.ptx = readFile(std::string(SIM_TEST_KERNELS_DIR) + "/decay-hip.ptx");
+  plan.ptx_chip = "sm_90";
+  std::function<void(std::vector<std::unique_ptr<schema::StepT>> &)> widen =
+      [&](std::vector<std::unique_ptr<schema::StepT>> &steps) {
+        for (auto &step : steps) {
+          if (step->launch && step->launch->shape != LaunchShape::Single) {
+            step->launch->shared_per_thread = 4096;
+            // The kernel's record says the same, as the verifier checks.
+            plan.kernels[step->launch->kernel]->shared_per_thread = 4096;
+          }
+          if (step->repeat)
+            widen(step->repeat->body);
+        }
+      };
+  for (auto &phase : plan.phases)
+    widen(phase->body);
+  std::string bytes = serialize(contents);
+  auto bundle = Bundle::parse(reinterpret_cast<const uint8_t *>(bytes.data()),
+                              bytes.size(), "decay-shared.simb");
+  sim_session_options options{};
+  options.group_size = 256;
+  try {
+    if (!cudaSession(bundle, SIM_STRATEGY_HIP, options))
+      GTEST_SKIP() << "no CUDA driver or device";
+    FAIL() << "1 MiB of shared memory per group accepted";
+  } catch (const Error &error) {
+    EXPECT_EQ(error.status, SIM_ERROR_INVALID_ARGUMENT);
+    std::string message = error.what();
+    EXPECT_NE(message.find("bytes of shared memory in a group of 256"),
+              std::string::npos)
+        << message;
+    EXPECT_NE(message.find("use --group-size 32 or less"), std::string::npos)
+        << message;
+  }
+}
+
 TEST(Cuda, ReportsAJitFailureWithTheDriversLog) {
   try {
     if (!cudaSession(decayWithRealPtx(".version 9.0\n.target sm_90\n"

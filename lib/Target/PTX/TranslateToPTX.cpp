@@ -130,7 +130,15 @@ void mlir::sim::registerToPTXTranslations() {
       "sim-to-ptx",
       "Compile a scene to the PTX of its GPU kernels (options --sim-*)",
       [](const std::shared_ptr<llvm::SourceMgr> &sourceMgr, raw_ostream &os,
-         MLIRContext *context) {
+         MLIRContext *context) -> LogicalResult {
+        // PTX alone runs only on a GPU, where a group has at most 1024
+        // threads (a bundle's group size may be larger: its CPU kernels
+        // take any, and sim-run chooses another for a GPU run).
+        int64_t groupSize = getTranslationOptions().groupSize;
+        if (groupSize > 1024)
+          return emitError(UnknownLoc::get(context))
+                 << "--sim-group-size " << groupSize
+                 << " is more than the 1024 threads a CUDA group can have";
         return translateToPTX<SimulationOp>(
             sourceMgr, os, context,
             [](DialectRegistry &registry) { registry.insert<SimDialect>(); },

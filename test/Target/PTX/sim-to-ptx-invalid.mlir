@@ -2,6 +2,11 @@
 // scenes to GPU kernels.
 //
 // RUN: sim-translate --sim-to-ptx %s --split-input-file --verify-diagnostics
+//
+// PTX alone runs on a GPU, whose groups have at most 1024 threads (a
+// bundle may plan larger groups for its CPU kernels).
+// RUN: not sim-translate --sim-to-ptx %s --sim-group-size=2048 -o %t.ptx 2>&1 | FileCheck %s --check-prefix=GROUP
+// GROUP: error: --sim-group-size 2048 is more than the 1024 threads a CUDA group can have
 
 // expected-error @+1 {{there is no sim.simulation to compile to PTX}}
 module attributes {gpu.container_module} {
