@@ -730,7 +730,7 @@ LogicalResult SimulationLowering::emitLocalSteps(ComponentOp component,
           });
         });
       };
-      target.forEachGroup(b, kernel, [&](Value base) {
+      auto groupCodes = [&](Value base) {
         // With invariant_levels, limit_levels_C keeps the codes of every
         // block once they are complete, all in one launch: a group whose
         // first block has its code kept has nothing to compute (the kept
@@ -747,6 +747,20 @@ LogicalResult SimulationLowering::emitLocalSteps(ComponentOp component,
           return;
         }
         computeCodes(base);
+      };
+      target.forEachGroup(b, kernel, [&](Value base) {
+        // In a big step of one base step every block's sub-step is 1, to
+        // which every code decodes (limit_levels_C caps them at m; a code
+        // of 0 decodes to m): none is computed. Where something holds the
+        // big step at 1 (every num_steps 1, or a bounding component's),
+        // the num_steps of every item would otherwise cost as much as a
+        // third evaluation per base step. The codes of the next big step
+        // go to the other half, which limit_levels_C clears.
+        Value unitStep = b.cmp(arith::CmpIPredicate::eq, size, b.i64(1));
+        if (target.limitsLevelsPerLane())
+          b.ifThen(unitStep,
+                   [&] { target.forEachLane(b, kernel, base, startFinest); });
+        b.ifThen(b.xorOne(unitStep), [&] { groupCodes(base); });
       });
     });
     if (failed(endKernel(kernel, simplan::LaunchShape::items, launches)))
