@@ -34,6 +34,11 @@ namespace mlir::sim {
 using namespace mlir;
 using namespace mlir::sim;
 
+/// The most shared memory a GPU gives one group (227 KiB, sm_90 and sm_100
+/// once a kernel opts in; sm_75 gives 64 KiB, which the runtime checks when
+/// a session is made).
+static constexpr int64_t kMaxSharedPerGroup = 227 * 1024;
+
 namespace {
 
 /// True when `component`'s sub-steps ping-pong between the halves of its
@@ -204,13 +209,38 @@ struct PlanMemoryPass : public sim::impl::SimPlanMemoryBase<PlanMemoryPass> {
       }
     }
     SmallVector<Attribute> caches;
+    // A group keeps its caches in shared memory: (group + halo) elements
+    // each, padded as the kernels address them. No GPU gives a group more
+    // than kMaxSharedPerGroup, so a cache past it could never run at this
+    // group size; its reads interpolate from global memory instead, as
+    // under hip, and a remark says so.
+    int64_t bytes = 0;
     for (auto [buffer, window] : windows) {
       auto [lo, hi] = window;
-      if (hi > lo && hi - lo < groupSize)
-        caches.push_back(CacheAttr::get(
-            &getContext(),
-            FlatSymbolRefAttr::get(cast<BufferOp>(buffer).getSymNameAttr()), lo,
-            hi));
+      if (hi <= lo || hi - lo >= groupSize)
+        continue;
+      auto cached = cast<BufferOp>(buffer);
+      int64_t element = cached.getElementBytes();
+      if (isa<VectorType>(cached.getElementType()))
+        element = int64_t(llvm::PowerOf2Ceil(uint64_t(element)));
+      int64_t cacheBytes = (int64_t(groupSize) + hi - lo) * element;
+      if (bytes + cacheBytes > kMaxSharedPerGroup) {
+        component.emitRemark()
+            << "under hip-cache @" << component.getSymName()
+            << " keeps no cache of @" << cached.getSymName() << ": "
+            << (bytes ? "with its other caches it" : "it") << " would take "
+            << bytes + cacheBytes << " bytes of shared memory in a group of "
+            << static_cast<int64_t>(groupSize) << ", more than the "
+            << kMaxSharedPerGroup
+            << " any GPU gives a group; its reads interpolate from global "
+               "memory as under hip (a smaller group size or a narrower "
+               "window lets it cache)";
+        continue;
+      }
+      bytes += cacheBytes;
+      caches.push_back(CacheAttr::get(
+          &getContext(), FlatSymbolRefAttr::get(cached.getSymNameAttr()), lo,
+          hi));
     }
     if (!caches.empty())
       component.setCachesAttr(ArrayAttr::get(&getContext(), caches));

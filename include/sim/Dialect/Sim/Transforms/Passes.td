@@ -260,8 +260,12 @@ def SimPlanMemory : Pass<"sim-plan-memory", "::mlir::sim::SimulationOp"> {
     offset over all of the component's interpolated window reads of the
     buffer (own-item reads count as offset 0, gathers not at all). A cache
     is planned only where it can be hit: the range has at least 2 items,
-    the window has more than one offset (`hi > lo`) and its halo fits the
-    thread group (`hi - lo < group-size`).
+    the window has more than one offset (`hi > lo`), its halo fits the
+    thread group (`hi - lo < group-size`) and, with the component's caches
+    before it, its `(group-size + hi - lo)` elements fit the 227 KiB of
+    shared memory the largest GPUs give a group (otherwise a remark says
+    that its reads interpolate from global memory, as under `hip`; the
+    runtime checks the device's own limit when a session is made).
 
     Under `hip` and `hip-cache` an `interpolate` read (in `evaluate` or
     `num_steps`) of a buffer declared `interp(none)` is an error: it would
