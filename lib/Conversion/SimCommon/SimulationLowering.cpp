@@ -417,7 +417,17 @@ void SimulationLowering::estimateInto(Kernel &kernel, ComponentOp component,
     });
   };
   if (!target.reducesPerGroup()) {
-    target.forEachGroup(b, kernel, lanes);
+    // Groups run side by side and combine once, after the last: a group
+    // that starts when the slot already holds 1 (an estimate is at least
+    // 1, so an earlier group found the minimum) skips its num_steps. Each
+    // lane reads the slot itself (one broadcast load per warp); a value
+    // read early is only larger, so it skips less, never wrongly, and the
+    // combination after the loop is the same for every lane.
+    target.forEachGroup(b, kernel, [&](Value base) {
+      Value current = b.load(kernel.clock, b.index(slot));
+      b.ifThen(b.cmp(arith::CmpIPredicate::sgt, current, b.i64(1)),
+               [&] { lanes(base); });
+    });
     target.reduceIntoClock(b, kernel, minimum, arith::AtomicRMWKind::mins,
                            slot);
     return;
