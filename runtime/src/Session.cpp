@@ -492,9 +492,15 @@ void Session::runStepPhase() {
   if (options.check_finite) {
     for (uint32_t index : step) {
       Prepared &p = launches[index];
+      // Where in the big step a sub-step or slot kernel starts, for the
+      // message: it moves the sub-step clock on.
+      std::optional<SubStepTimes> before;
+      if (p.launch->component >= 0 && p.roundOf >= 0 &&
+          p.launch->shape != LaunchShape::Single)
+        before = subStepTimes(p.roundOf);
       launch(p);
       if (p.launch->component >= 0)
-        checkFinite(p);
+        checkFinite(p, before);
     }
     return;
   }
@@ -531,7 +537,25 @@ void Session::readClock(size_t slots) {
   backend->read(clock.data(), clockMemory.pointer, slots * sizeof(int64_t));
 }
 
-void Session::checkFinite(const Prepared &p) {
+std::string
+Session::subStepNote(int component,
+                     const std::optional<SubStepTimes> &before) const {
+  if (!before || before->subBegin < before->begin ||
+      before->subBegin >= before->begin + before->size)
+    return "";
+  // A slot kernel: each block that starts at the slot takes its own
+  // sub-step from there.
+  if (plan_->components[size_t(component)]->advance == Advance::LocalSteps)
+    return ", in the slot at base step " + std::to_string(before->subBegin);
+  // A grid round: the sub-step [t, t + n] of every item.
+  if (before->subSize > 0)
+    return ", sub-step from " + std::to_string(before->subBegin) + " to " +
+           std::to_string(before->subBegin + before->subSize);
+  return "";
+}
+
+void Session::checkFinite(const Prepared &p,
+                          const std::optional<SubStepTimes> &before) {
   const schema::ComponentT &component =
       *plan_->components[size_t(p.launch->component)];
   // Per buffer written, its first non-finite value in the order half,
@@ -624,7 +648,8 @@ void Session::checkFinite(const Prepared &p) {
            " in buffer '" + buffer.name + "' (" + where + ") after kernel '" +
            nonFinite.kernel + "' for component '" + component.name +
            "' at base step " + std::to_string(nonFinite.baseStep) +
-           " (big step of " + std::to_string(clock[kSlotSize]) + ")");
+           " (big step of " + std::to_string(clock[kSlotSize]) +
+           subStepNote(p.roundOf, before) + ")");
 }
 
 //===----------------------------------------------------------------------===//

@@ -170,7 +170,6 @@ private:
   void runUncounted(PhaseKind phase);
   void runStepPhase();
   void launch(Prepared &prepared);
-  void checkFinite(const Prepared &prepared);
   void readClock(size_t slots);
   /// The bytes of one item on the device and in a host array.
   size_t deviceStride(int buffer) const;
@@ -255,6 +254,15 @@ private:
     int64_t begin, size, subBegin, subSize;
   };
   SubStepTimes subStepTimes(int component);
+  /// Scans the buffers the component of `prepared` writes after its
+  /// launch; `before` is where its sub-step clock stood before a sub-step
+  /// or slot launch, which the message names.
+  void checkFinite(const Prepared &prepared,
+                   const std::optional<SubStepTimes> &before = std::nullopt);
+  /// ", sub-step from t to t + n" (a grid round) or ", in the slot at base
+  /// step t" (local steps) for `component`'s clock `before` a launch.
+  std::string subStepNote(int component,
+                          const std::optional<SubStepTimes> &before) const;
   /// Whether `p` decides the next sub-step of a grid round whose component
   /// has at most one base step of the big step left (so its all-reduce of
   /// the estimate would decide nothing).
