@@ -585,8 +585,9 @@ void restartFromCheckpoint(Executor &executor, const CheckpointFile &file) {
 void restartFromCheckpointFile(Executor &executor, const std::string &path) {
   std::optional<CheckpointFile> file;
   Restart restart;
-  agreeOn(ranksOf(executor), "could not read or use checkpoint '" + path + "'",
-          [&] {
+  // Each rank names its own file, which need not be this one's.
+  agreeOn(ranksOf(executor),
+          "could not read or use the checkpoint it was given", [&] {
             file = readCheckpoint(path);
             restart = checkRestart(executor, *file);
           });

@@ -657,6 +657,11 @@ void Session::checkFinite(const Prepared &p,
 //===----------------------------------------------------------------------===//
 
 void Session::init() {
+  // Every rank makes this call: agree on the values first (as run does).
+  if (distributed()) {
+    agreed = false;
+    ensureAgreed();
+  }
   backend->activate();
   if (!allocated) {
     allocate();
@@ -696,6 +701,14 @@ void Session::run(int64_t steps, int64_t pause) {
   // at T + m: continuing would start the next big step from that mix.
   // (The reference executor commits a big step only once every component
   // has run, so it stays at T.)
+  // Every rank makes this call: agree here on what each was given since
+  // (a --set on one rank alone cleared only its own agreement, and it
+  // would then have waited in the agreement's all-reduce while the
+  // others waited in another collective call).
+  if (distributed()) {
+    agreed = false;
+    ensureAgreed();
+  }
   if (initialized && !onBoundary)
     fail(SIM_ERROR_INVALID_ARGUMENT,
          "the last run stopped inside the big step from base step " +
@@ -705,6 +718,12 @@ void Session::run(int64_t steps, int64_t pause) {
   backend->activate();
   ensureInitialized();
   prepare();
+  // Ranks restarted from checkpoints of different base steps would take
+  // different numbers of big steps, and of collective calls (not counted
+  // in the run's all-reduces, like the agreement above).
+  if (distributed())
+    agreeOn("base step the run starts from",
+            clock[kSlotBegin] + clock[kSlotSize]);
   metrics = {};
   cutBigSteps = 0;
   nonFinite = {};
@@ -866,6 +885,16 @@ void Session::layout() {
   first = decomposition->first(comm->rank());
   count = decomposition->count(comm->rank());
   extent = count + 2 * halo;
+}
+
+void Session::agreeOn(const std::string &what, int64_t value) {
+  int64_t both[2] = {value, -value};
+  comm->minimum(both, 2);
+  if (both[0] != -both[1])
+    fail(SIM_ERROR_DISTRIBUTED,
+         "the ranks disagree on the " + what + " (from " +
+             std::to_string(both[0]) + " to " + std::to_string(-both[1]) +
+             " over the " + std::to_string(comm->size()) + " ranks)");
 }
 
 void Session::ensureAgreed() {

@@ -205,6 +205,9 @@ private:
   /// Checks once per change of the settings that every rank runs the same
   /// bundle, strategy, group size, range, dt and parameters.
   void ensureAgreed();
+  /// Fails on every rank unless every rank holds the same `value` (a
+  /// collective call).
+  void agreeOn(const std::string &what, int64_t value);
   const GhostLists &ghostsOf(size_t buffer);
   GhostRefresh refreshOf(size_t buffer, bool snapshot);
   /// Fills the ghost elements of `refreshes` from their owners (one
