@@ -15,6 +15,8 @@
 
 #include "sim/Conversion/Passes.h"
 
+#include "mlir/IR/BuiltinOps.h"
+#include "mlir/Pass/PassManager.h"
 #include "mlir/Pass/PassRegistry.h"
 
 using namespace mlir;
@@ -70,25 +72,59 @@ void mlir::sim::buildSimToGPUPipeline(OpPassManager &pm, Strategy strategy,
   buildSimGPUToPTXPipeline(pm, target);
 }
 
+/// Registers a pipeline that runs on a builtin.module: it nests its own
+/// passes on the simulations and gpu.modules inside. Nested under another
+/// op (`sim.simulation(sim-front-end)`), it would nest its passes one
+/// level too deep and change nothing, or add a module pass to a nested
+/// pass manager, which LLVM aborts on; that is an error instead.
+template <typename Options>
+static void registerModulePipeline(
+    StringRef arg, StringRef description,
+    std::function<void(OpPassManager &, const Options &)> builder) {
+  registerPassPipeline(
+      arg, description,
+      [name = arg.str(),
+       builder](OpPassManager &pm, StringRef text,
+                function_ref<LogicalResult(const Twine &)> errorHandler) {
+        StringRef anchor = pm.getOpAnchorName();
+        if (anchor != ModuleOp::getOperationName())
+          return errorHandler("the " + name +
+                              " pipeline runs on a builtin.module, whose "
+                              "sim.simulation and gpu.module ops it nests its "
+                              "passes on, not on '" +
+                              anchor + "': give --" + name +
+                              " or --pass-pipeline='builtin.module(" + name +
+                              ")'");
+        Options options;
+        if (failed(options.parseFromString(text)))
+          return failure();
+        builder(pm, options);
+        return success();
+      },
+      [](function_ref<void(const mlir::detail::PassOptions &)> handler) {
+        handler(Options());
+      });
+}
+
 void mlir::sim::registerSimPipelines() {
-  PassPipelineRegistration<FrontEndOptions>(
+  registerModulePipeline<FrontEndOptions>(
       "sim-front-end",
       "Prune, schedule, check sub-stepping, plan memory and insert "
       "interpolation for one strategy",
       buildFrontEndPipeline);
-  PassPipelineRegistration<ReferenceOptions>(
+  registerModulePipeline<ReferenceOptions>(
       "sim-reference-pipeline",
       "Prune, schedule, check sub-stepping and lower every sim.simulation "
       "to the per-item body functions of the reference executor",
       buildReferencePipeline);
-  PassPipelineRegistration<SimGPUToPTXOptions>(
+  registerModulePipeline<SimGPUToPTXOptions>(
       "sim-gpu-to-ptx",
       "Lower gpu.modules to NVVM and serialize each to a gpu.binary holding "
       "PTX text",
       [](OpPassManager &pm, const SimGPUToPTXOptions &options) {
         buildSimGPUToPTXPipeline(pm, options.getTarget());
       });
-  PassPipelineRegistration<SimToGPUOptions>(
+  registerModulePipeline<SimToGPUOptions>(
       "sim-to-gpu-pipeline",
       "Compile scenes to PTX: the front end, the lowering of every "
       "sim.simulation to GPU kernels and a host plan, and --sim-gpu-to-ptx",

@@ -7,11 +7,14 @@
 // RUN: not sim-opt %t.once --sim-front-end 2>&1 | FileCheck %s --check-prefix=PRUNE
 // RUN: not sim-opt %t.once --sim-front-end=prune=false 2>&1 | FileCheck %s --check-prefix=SCHEDULE
 // RUN: not sim-opt %t.once --sim-plan-memory=strategy=simple 2>&1 | FileCheck %s --check-prefix=PLAN
+// sim-translate compiles a scene as written, and says so (its message
+// named only a pass sim-translate does not offer).
+// RUN: not sim-translate %t.once --sim-to-bundle -o %t.simb 2>&1 | FileCheck %s --check-prefix=PRUNE
 // RUN: sim-opt %t.once --sim-insert-interpolation > %t.twice
 // RUN: diff %t.once %t.twice
 // RUN: FileCheck %s --input-file=%t.once
 
-// PRUNE: error: 'sim.simulation' op has explicit loads, so its components and buffers are fixed; run --sim-prune before --sim-insert-interpolation
+// PRUNE: error: 'sim.simulation' op has explicit loads, so its components and buffers are fixed; run --sim-prune before --sim-insert-interpolation (this simulation has been through the front end already, for strategy 'hip': give the scene as written, before --sim-front-end)
 // PRUNE: note: the first explicit access is this 'sim.load'
 // SCHEDULE: error: 'sim.simulation' op has explicit loads, so its schedule and read roles are fixed; run --sim-schedule before --sim-insert-interpolation
 // PLAN: error: 'sim.simulation' op has explicit loads, so its memory plan is fixed; run --sim-plan-memory before --sim-insert-interpolation

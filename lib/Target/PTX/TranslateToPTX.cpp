@@ -15,6 +15,7 @@
 //===----------------------------------------------------------------------===//
 
 #include "sim/Target/PTX/TranslateToPTX.h"
+#include "sim/Dialect/Plan/IR/PlanOps.h"
 #include "sim/Dialect/Sim/IR/SimDialect.h"
 #include "sim/Dialect/Sim/IR/SimOps.h"
 #include "sim/Pipelines/Pipelines.h"
@@ -96,6 +97,9 @@ translateToPTX(const std::shared_ptr<llvm::SourceMgr> &sourceMgr,
   registry.insert<arith::ArithDialect, math::MathDialect, scf::SCFDialect,
                   vector::VectorDialect>();
   registerGPUToPTXDependencies(registry);
+  // What --sim-lower-to-gpu leaves next to its gpu.modules (the host plan),
+  // so that its output translates as sim-opt --sim-gpu-to-ptx takes it.
+  registry.insert<simplan::PlanDialect>();
   registerDialects(registry);
   context->appendDialectRegistry(registry);
 

@@ -93,6 +93,19 @@ struct SetParamsPass : public sim::impl::SimSetParamsBase<SetParamsPass> {
   void runOnOperation() override {
     SimulationOp simulation = getOperation();
     Builder builder(&getContext());
+    // The front end decides from the values (the big step's cap from
+    // max_steps, the level blocks from the range): after it, new values
+    // would leave a plan made for the old ones.
+    if (StrategyAttr strategy = simulation.getStrategyAttr();
+        strategy && !values.empty()) {
+      simulation.emitError()
+          << "has been through the front end already (a memory plan for "
+             "strategy '"
+          << stringifyStrategy(strategy.getValue())
+          << "'), which decided from its values; set them on the scene as "
+             "written, before --sim-front-end";
+      return signalPassFailure();
+    }
     for (const std::string &entry : values) {
       auto [name, text] = StringRef(entry).split('=');
       name = name.trim();

@@ -27,6 +27,13 @@ LogicalResult mlir::sim::checkBeforeInterpolation(SimulationOp simulation,
                             << "has explicit loads, so " << decisions
                             << " fixed; run --" << passArgument
                             << " before --sim-insert-interpolation";
+  // The whole front end already ran (sim-translate, --sim-front-end or
+  // --sim-lower-to-* given its own output): what to give instead.
+  if (StrategyAttr strategy = simulation.getStrategyAttr())
+    diag << " (this simulation has been through the front end already, "
+            "for strategy '"
+         << stringifyStrategy(strategy.getValue())
+         << "': give the scene as written, before --sim-front-end)";
   diag.attachNote(access->getLoc())
       << "the first explicit access is this '" << access->getName() << "'";
   return diag;

@@ -30,6 +30,7 @@
 // RUN: sim-opt %t/i32-hex-too-wide.mlir --sim-set-params="values=L=0x1FFFFFFFF" --verify-diagnostics
 // RUN: sim-opt %t/index-too-wide.mlir --sim-set-params="values=N=99999999999999999999" --verify-diagnostics
 // RUN: sim-opt %t/f32-overflow.mlir --sim-set-params="values=k=1e40" --verify-diagnostics
+// RUN: sim-opt %t/after-front-end.mlir --sim-set-params="values=max_steps=128" --verify-diagnostics
 
 // Errors of --sim-set-params, one input per option value (split-file), each
 // checked with --verify-diagnostics. Every error is reported at the
@@ -538,4 +539,11 @@ sim.simulation @s range(16) dt(1.0 : f32) max_steps(1) {
 //--- max-steps-above-limit.mlir
 // expected-error @+1 {{cannot set parameter 'max_steps' to 1048577: it must be at most 1048576}}
 sim.simulation @s range(16) dt(1.0 : f32) max_steps(1) {
+}
+
+//--- after-front-end.mlir
+// After the front end the plan holds decisions made from the values
+// (step_cap from max_steps): new values would not reach them.
+// expected-error @+1 {{has been through the front end already (a memory plan for strategy 'hip'), which decided from its values; set them on the scene as written, before --sim-front-end}}
+sim.simulation @s range(16) dt(1.0 : f32) max_steps(64) attributes {step_cap = 64 : i32, strategy = #sim<strategy hip>} {
 }

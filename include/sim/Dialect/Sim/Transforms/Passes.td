@@ -20,7 +20,8 @@ def SimSetParams : Pass<"sim-set-params", "::mlir::sim::SimulationOp"> {
     names, values that do not parse, values that do not fit the parameter's
     type (no silent truncation, overflow or underflow), a `range` or
     `max_steps` below 1 and a `dt` that is not positive and finite are
-    errors.
+    errors, and so is a simulation the front end has planned already (its
+    plan was decided from the old values).
 
     ```
     sim-opt scene.mlir --sim-set-params="values=range=16384,L=64"
