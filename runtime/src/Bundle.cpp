@@ -297,6 +297,18 @@ Value parseValue(ScalarType type, std::string_view text,
       bad("is not an " + typeName + " value");
     if (errno == ERANGE && std::isinf(value.f))
       bad("is out of range for " + typeName);
+    // A nonzero value that rounds to 0 (below the smallest subnormal) is
+    // refused as the compiler's --sim-set-params refuses it, not run as 0.
+    if (errno == ERANGE && value.f == 0)
+      bad("underflows to 0 in " + typeName);
+    // strtod reads 0x10 as 16, where an MLIR float literal 0x... is the
+    // value's bits: neither is taken for the other.
+    std::string_view digits = text;
+    if (!digits.empty() && (digits.front() == '-' || digits.front() == '+'))
+      digits.remove_prefix(1);
+    if (digits.size() > 1 && digits[0] == '0' &&
+        (digits[1] == 'x' || digits[1] == 'X'))
+      bad("is hexadecimal; give an " + typeName + " value in decimal");
     return value;
   }
   long long parsed = std::strtoll(copy.c_str(), &end, 10);

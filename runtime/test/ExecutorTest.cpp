@@ -246,6 +246,19 @@ TEST(Executor, RejectsBadNamesAndValues) {
       errorOf([&] { session.set("range", "0"); }, SIM_ERROR_INVALID_ARGUMENT)
           .find("not a number of items from 1 to 2^40"),
       std::string::npos);
+  // A value that rounds to 0 is refused, not run as 0; a hexadecimal one
+  // too (strtod reads 0x10 as 16, an MLIR float literal as bits). A
+  // subnormal value is a value.
+  EXPECT_NE(
+      errorOf([&] { session.set("k", "1e-400"); }, SIM_ERROR_INVALID_ARGUMENT)
+          .find("parameter 'k': '1e-400' underflows to 0 in f64"),
+      std::string::npos);
+  EXPECT_NE(
+      errorOf([&] { session.set("k", "-0x10"); }, SIM_ERROR_INVALID_ARGUMENT)
+          .find("'-0x10' is hexadecimal; give an f64 value in decimal"),
+      std::string::npos);
+  session.set("k", "1e-310");
+  session.set("k", "0");
   EXPECT_NE(errorOf([&] { session.run(-1); }, SIM_ERROR_INVALID_ARGUMENT)
                 .find("cannot run -1 base steps"),
             std::string::npos);
