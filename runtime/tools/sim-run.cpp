@@ -1334,6 +1334,27 @@ int runDistributed(Options options, int &argc, char **&argv) {
 
 } // namespace
 
+/// Every process mpirun starts without --distributed would run the whole
+/// scene alone and write the same output files; and a rank that was given
+/// --distributed would wait for it forever. The world's size comes from
+/// the launcher's environment (Open MPI and MPICH set one of these).
+static void checkNotUnderMpirun() {
+  for (const char *name : {"OMPI_COMM_WORLD_SIZE", "PMI_SIZE"}) {
+    const char *value = std::getenv(name);
+    if (!value)
+      continue;
+    char *end = nullptr;
+    long size = std::strtol(value, &end, 10);
+    if (*end == '\0' && size > 1)
+      usageError("this process is one of " + std::to_string(size) +
+                 " that mpirun started (" + name +
+                 "), but has no "
+                 "--distributed: each would run the whole scene alone and "
+                 "write the same files; give every rank --distributed, or "
+                 "run sim-run without mpirun");
+  }
+}
+
 int main(int argc, char **argv) {
   captureUmask();
   installSignalHandlers();
@@ -1341,6 +1362,7 @@ int main(int argc, char **argv) {
     Options options = parseOptions(argc, argv);
     if (options.distributed)
       return runDistributed(std::move(options), argc, argv);
+    checkNotUnderMpirun();
     return run(std::move(options));
   } catch (const Exit &exit) {
     if (!exit.message.empty())
