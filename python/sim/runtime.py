@@ -283,8 +283,8 @@ class Session:
                 self._set_buffers.clear()
 
     def _check_dt(self, text: str):
-        """Refuses a dt that rounds to 0 in an f32 bundle, saying so: the
-        runtime would call 1e-50 not a positive finite time step."""
+        """Refuses a dt that rounds to 0 in an f32 bundle, saying what to
+        do: the runtime says only that it underflows."""
         try:
             value = float(text)
         except ValueError:  # the runtime's message for what it cannot read

@@ -696,11 +696,6 @@ void Session::ensureInitialized() {
 void Session::run(int64_t steps, int64_t pause) {
   runEnd(0, steps); // Checks the steps before touching the device.
   runPause(0, steps, pause);
-  // A run that failed inside a big step (check_finite's NaN, a kernel
-  // that failed) left some buffers at T and others past it, and the clock
-  // at T + m: continuing would start the next big step from that mix.
-  // (The reference executor commits a big step only once every component
-  // has run, so it stays at T.)
   // Every rank makes this call: agree here on what each was given since
   // (a --set on one rank alone cleared only its own agreement, and it
   // would then have waited in the agreement's all-reduce while the
@@ -709,6 +704,11 @@ void Session::run(int64_t steps, int64_t pause) {
     agreed = false;
     ensureAgreed();
   }
+  // A run that failed inside a big step (check_finite's NaN, a kernel
+  // that failed) left some buffers at T and others past it, and the clock
+  // at T + m: continuing would start the next big step from that mix.
+  // (The reference executor commits a big step only once every component
+  // has run, so it stays at T.)
   if (initialized && !onBoundary)
     fail(SIM_ERROR_INVALID_ARGUMENT,
          "the last run stopped inside the big step from base step " +

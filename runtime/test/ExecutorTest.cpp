@@ -502,11 +502,15 @@ TEST(Executor, RejectsThreadCountsOutsideItsRange) {
 
 TEST(Executor, RejectsTimeStepsThatAreNotPositiveAndFinite) {
   Session session(decay(), cpuOptions(SIM_STRATEGY_HIP));
-  for (const char *dt : {"nan", "inf", "-inf", "0", "-1", "1e-400"})
+  for (const char *dt : {"nan", "inf", "-inf", "0", "-1"})
     EXPECT_TRUE(contains(
         errorOf([&] { session.set("dt", dt); }, SIM_ERROR_INVALID_ARGUMENT),
         "is not a positive finite time step"))
         << dt;
+  // A nonzero value that rounds to 0 says so.
+  EXPECT_TRUE(contains(
+      errorOf([&] { session.set("dt", "1e-400"); }, SIM_ERROR_INVALID_ARGUMENT),
+      "'1e-400' underflows to 0 in f64"));
   EXPECT_EQ(session.get("dt"), "0.01");
   for (const char *range : {"0", "-3", "1099511627777"})
     EXPECT_TRUE(contains(errorOf([&] { session.set("range", range); },
