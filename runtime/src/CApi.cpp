@@ -505,7 +505,8 @@ sim_status sim_session_check_init(sim_session *session, double tolerance,
   session->initChecks.clear();
   return guard([&] {
     session->initChecks =
-        probeOf(*session->session)->checkInit(tolerance, max_items);
+        probeOf(*session->session)
+            ->checkInit(tolerance, max_items, session->session.get());
     *count = int32_t(session->initChecks.size());
   });
 }

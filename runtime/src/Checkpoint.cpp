@@ -246,8 +246,58 @@ void writeImage(Executor &executor, int fd, const std::string &name,
          "cannot write checkpoint '" + name + "': " + std::strerror(errno));
 }
 
+const char *kindOf(mode_t mode) {
+  if (S_ISDIR(mode))
+    return "a folder";
+  if (S_ISFIFO(mode))
+    return "a FIFO";
+  if (S_ISSOCK(mode))
+    return "a socket";
+  if (S_ISCHR(mode))
+    return "a character device";
+  if (S_ISBLK(mode))
+    return "a block device";
+  return "not a regular file";
+}
+
+/// Refuses a path whose file a checkpoint cannot replace. The checkpoint is
+/// written beside its path and renamed over it: a folder there cannot be
+/// replaced, and a device, a FIFO or a socket, or a symlink to one or into
+/// /proc (/dev/stdout), would become a regular file, which as root breaks
+/// /dev/null for the whole machine. sim-run refuses these before it runs;
+/// this covers every other client of the C API.
+void checkReplaceable(const std::string &path) {
+  struct stat info;
+  if (lstat(path.c_str(), &info) != 0)
+    return;
+  std::string refused = "checkpoint path '" + path + "' ";
+  std::string fix = "; a checkpoint replaces its file whole, so name a "
+                    "regular file";
+  if (S_ISDIR(info.st_mode))
+    fail(SIM_ERROR_INVALID_ARGUMENT, refused + "names a folder, not a file");
+  if (!S_ISLNK(info.st_mode)) {
+    if (!S_ISREG(info.st_mode))
+      fail(SIM_ERROR_INVALID_ARGUMENT, refused + "is " + kindOf(info.st_mode) +
+                                           ", not a regular file" + fix);
+    return;
+  }
+  char target[4096];
+  ssize_t length = readlink(path.c_str(), target, sizeof target - 1);
+  if (length > 0 &&
+      std::string(target, size_t(length)).compare(0, 6, "/proc/") == 0)
+    fail(SIM_ERROR_INVALID_ARGUMENT, refused + "is a symlink to '" +
+                                         std::string(target, size_t(length)) +
+                                         "', a process's file" + fix);
+  if (stat(path.c_str(), &info) == 0 && !S_ISREG(info.st_mode) &&
+      !S_ISDIR(info.st_mode))
+    fail(SIM_ERROR_INVALID_ARGUMENT, refused + "is a symlink to " +
+                                         kindOf(info.st_mode) +
+                                         ", not to a regular file" + fix);
+}
+
 void writeFile(Executor &executor, const std::string &path,
                const Gathered *gathered) {
+  checkReplaceable(path);
   size_t slash = path.rfind('/');
   std::string dir = slash == std::string::npos ? "."
                     : slash == 0               ? "/"

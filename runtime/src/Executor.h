@@ -171,6 +171,9 @@ public:
     interruptRequested.store(true, std::memory_order_relaxed);
   }
   void resume() { interruptRequested.store(false, std::memory_order_relaxed); }
+  bool interruptPending() const {
+    return interruptRequested.load(std::memory_order_relaxed);
+  }
 
   /// The last run's measurements.
   sim_metrics metrics{};
@@ -197,9 +200,6 @@ protected:
   /// Throws SIM_ERROR_MEMORY_LIMIT when the state at `range` items would
   /// not fit the limit; `what` names the request ("range 100000000").
   void checkMemory(int64_t range, const std::string &what) const;
-  bool interruptPending() const {
-    return interruptRequested.load(std::memory_order_relaxed);
-  }
   /// Throws SIM_ERROR_INTERRUPTED for a run from `begin` to `end` that
   /// stopped at `reached`.
   [[noreturn]] void failInterrupted(int64_t begin, int64_t reached,

@@ -1133,7 +1133,8 @@ void compareElement(Differences &found, int64_t item, int32_t lanes,
 } // namespace
 
 std::vector<InitCheck> ReferenceSession::checkInit(double tolerance,
-                                                   int64_t maxItems) {
+                                                   int64_t maxItems,
+                                                   const Executor *owner) {
   SubnormalScope mode(bundle->flushesSubnormals());
   if (maxItems <= 0)
     maxItems = kInitCheckItems;
@@ -1180,6 +1181,11 @@ std::vector<InitCheck> ReferenceSession::checkInit(double tolerance,
         pointers.push_back(out.data());
       for (auto [first, last] : spans)
         for (int64_t i = first; i < last; ++i) {
+          // Evaluating every item of a large scene takes a while: a
+          // request to stop (to this probe or to the session it checks)
+          // ends the check.
+          if (interruptPending() || (owner && owner->interruptPending()))
+            fail(SIM_ERROR_INTERRUPTED, "interrupted during the init check");
           running = {Body::InitCheck, int32_t(c), 0};
           evaluateFns[c](&context, i, 0, 0, dt, pointers.data());
           rethrowCallbackError();

@@ -128,8 +128,11 @@ public:
   /// kInitCheckItems; above, the first and the last half of that many),
   /// and compares what it yields with the initial state of each buffer it
   /// writes. A relative `tolerance` of 0 takes kInitToleranceF32 or F64 by
-  /// the buffer's type. Leaves the session's state as it was.
-  std::vector<InitCheck> checkInit(double tolerance, int64_t maxItems);
+  /// the buffer's type. Leaves the session's state as it was. Throws
+  /// SIM_ERROR_INTERRUPTED when this session or `owner` (the session whose
+  /// init it checks) is interrupted meanwhile.
+  std::vector<InitCheck> checkInit(double tolerance, int64_t maxItems,
+                                   const Executor *owner = nullptr);
 
   /// The value of total `name` on the exact solution at base step `time`:
   /// its body's reads see the exact solutions of the buffers it reads.

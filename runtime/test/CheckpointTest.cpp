@@ -22,6 +22,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <fcntl.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 using namespace sim::test;
@@ -413,4 +414,47 @@ TEST_F(Checkpoints, NeedABigStepBoundary) {
   // A folder is no checkpoint path.
   EXPECT_EQ(sim_session_checkpoint(checked, (dir + "/").c_str()),
             SIM_ERROR_INVALID_ARGUMENT);
+}
+
+TEST_F(Checkpoints, NeverReplaceWhatIsNotARegularFile) {
+  // A checkpoint is renamed over its path: a FIFO, a device or a socket
+  // there (or a symlink to one, or into /proc as /dev/stdout is) would
+  // become a regular file, which as root breaks /dev/null for the machine.
+  sim_session *writer = session(SIM_STRATEGY_HIP, SIM_BACKEND_CPU);
+  std::string fifo = dir + "/fifo.simc", toNull = dir + "/null.simc",
+              toProc = dir + "/stdout.simc", folder = dir + "/folder";
+  ASSERT_EQ(mkfifo(fifo.c_str(), 0644), 0);
+  ASSERT_EQ(symlink("/dev/null", toNull.c_str()), 0);
+  ASSERT_EQ(symlink("/proc/self/fd/1", toProc.c_str()), 0);
+  ASSERT_EQ(mkdir(folder.c_str(), 0755), 0);
+  struct Refused {
+    std::string path, message;
+  };
+  for (const Refused &refused :
+       {Refused{fifo, "is a FIFO, not a regular file"},
+        Refused{toNull, "is a symlink to a character device"},
+        Refused{toProc, "a process's file"},
+        Refused{folder, "names a folder, not a file"}}) {
+    EXPECT_EQ(sim_session_checkpoint(writer, refused.path.c_str()),
+              SIM_ERROR_INVALID_ARGUMENT)
+        << refused.path;
+    EXPECT_TRUE(contains(sim_last_error(), refused.message))
+        << sim_last_error();
+  }
+  struct stat info;
+  ASSERT_EQ(lstat(fifo.c_str(), &info), 0);
+  EXPECT_TRUE(S_ISFIFO(info.st_mode));
+  ASSERT_EQ(lstat(toNull.c_str(), &info), 0);
+  EXPECT_TRUE(S_ISLNK(info.st_mode));
+  ASSERT_EQ(lstat(folder.c_str(), &info), 0);
+  EXPECT_TRUE(S_ISDIR(info.st_mode));
+  // A symlink to a regular file is replaced, as sim-run's outputs are.
+  std::string target = dir + "/target.simc", link = dir + "/link.simc";
+  writeFile(target, "old");
+  ASSERT_EQ(symlink(target.c_str(), link.c_str()), 0);
+  EXPECT_EQ(sim_session_checkpoint(writer, link.c_str()), SIM_OK)
+      << sim_last_error();
+  ASSERT_EQ(lstat(link.c_str(), &info), 0);
+  EXPECT_TRUE(S_ISREG(info.st_mode));
+  EXPECT_EQ(readFile(target), "old");
 }

@@ -556,6 +556,29 @@ TEST(InitCheck, LeavesTheSessionsStateAsItWas) {
   EXPECT_EQ(session.time(), 15);
 }
 
+TEST(InitCheck, StopsWhenTheSessionIsInterrupted) {
+  // The check evaluates every item on the host, which takes a while on a
+  // large scene: sim_session_interrupt ends it, as it ends a run.
+  std::string bytes = decayBundle();
+  sim_bundle *bundle = nullptr;
+  ASSERT_EQ(sim_bundle_open_memory(bytes.data(), bytes.size(), &bundle),
+            SIM_OK);
+  sim_session_options chosen = options(SIM_STRATEGY_HIP, SIM_BACKEND_CPU);
+  sim_session *session = nullptr;
+  ASSERT_EQ(sim_session_create(bundle, &chosen, &session), SIM_OK);
+  int32_t count = -1;
+  sim_session_interrupt(session);
+  EXPECT_EQ(sim_session_check_init(session, 0, 0, &count),
+            SIM_ERROR_INTERRUPTED);
+  EXPECT_EQ(std::string(sim_last_error()), "interrupted during the init check");
+  EXPECT_EQ(count, 0);
+  sim_session_resume(session);
+  EXPECT_EQ(sim_session_check_init(session, 0, 0, &count), SIM_OK);
+  EXPECT_EQ(count, 2);
+  sim_session_destroy(session);
+  sim_bundle_close(bundle);
+}
+
 TEST(InitCheck, RefusesBadArgumentsAndBundlesWithoutAReference) {
   std::string bytes = decayBundle(false, false);
   sim_bundle *bundle = nullptr;

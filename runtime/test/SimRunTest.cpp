@@ -1155,6 +1155,86 @@ TEST_F(SimRun, StopsOnSigterm) {
   EXPECT_FALSE(exists(sub + "/early.json"));
 }
 
+TEST_F(SimRun, FailsWhenItCannotWriteItsReportButWritesItsFiles) {
+  std::string sub = dir + "/stdout-gone";
+  ASSERT_EQ(mkdir(sub.c_str(), 0755), 0);
+  // A full disk: the report is lost, so the run is not a success.
+  pid_t pid = spawnSimRun(SIM_RUN_PATH, {bundle, "--backend", "cpu"},
+                          "/dev/full", sub + "/full.err");
+  ASSERT_GT(pid, 0);
+  int status = waitFor(pid);
+  ASSERT_TRUE(WIFEXITED(status)) << status;
+  EXPECT_EQ(WEXITSTATUS(status), 1);
+  EXPECT_TRUE(contains(readFile(sub + "/full.err"),
+                       "sim-run: error: cannot write to standard output"))
+      << readFile(sub + "/full.err");
+  // A closed standard output (`>&-`), which no file sim-run opens may take.
+  Result closed = shell("{ " + std::string(SIM_RUN_PATH) + " " + bundle +
+                        " --backend cpu >&-; }");
+  EXPECT_EQ(closed.status, 1) << closed.output;
+  EXPECT_TRUE(contains(closed.output, "cannot write to standard output: it "
+                                      "is closed"))
+      << closed.output;
+  // A reader that stopped reading (`| head`): the run goes on and its
+  // files are written; before, SIGPIPE killed it at its first row.
+  int pipeEnds[2];
+  ASSERT_EQ(pipe(pipeEnds), 0);
+  close(pipeEnds[0]);
+  std::string npz = sub + "/rows.npz", json = sub + "/run.json",
+              checkpoint = sub + "/run.simc";
+  std::vector<std::string> all = {
+      SIM_RUN_PATH,     bundle,    "--backend", "cpu", "--steps", "20",
+      "--output-every", "1",       "--output",  npz,   "--json",  json,
+      "--checkpoint",   checkpoint};
+  std::vector<char *> argv;
+  for (std::string &arg : all)
+    argv.push_back(arg.data());
+  argv.push_back(nullptr);
+  std::string err = sub + "/pipe.err";
+  posix_spawn_file_actions_t actions;
+  posix_spawn_file_actions_init(&actions);
+  posix_spawn_file_actions_adddup2(&actions, pipeEnds[1], STDOUT_FILENO);
+  posix_spawn_file_actions_addopen(&actions, STDERR_FILENO, err.c_str(),
+                                   O_WRONLY | O_CREAT | O_TRUNC, 0644);
+  posix_spawnattr_t attributes;
+  posix_spawnattr_init(&attributes);
+  sigset_t defaults;
+  sigemptyset(&defaults);
+  sigaddset(&defaults, SIGPIPE);
+  posix_spawnattr_setsigdefault(&attributes, &defaults);
+  posix_spawnattr_setflags(&attributes, POSIX_SPAWN_SETSIGDEF);
+  ASSERT_EQ(posix_spawn(&pid, SIM_RUN_PATH, &actions, &attributes, argv.data(),
+                        environ),
+            0);
+  posix_spawn_file_actions_destroy(&actions);
+  posix_spawnattr_destroy(&attributes);
+  close(pipeEnds[1]);
+  status = waitFor(pid);
+  ASSERT_TRUE(WIFEXITED(status)) << status;
+  EXPECT_EQ(WEXITSTATUS(status), 1);
+  EXPECT_TRUE(contains(readFile(err),
+                       "cannot write to standard output: its reader "
+                       "stopped reading"))
+      << readFile(err);
+  EXPECT_FALSE(readNpz(npz).empty()) << readFile(err);
+  EXPECT_EQ(readJson(json)["steps"], 20);
+  EXPECT_TRUE(exists(checkpoint));
+  // A checkpoint that does not fit (a file size limit here) is named by
+  // its path, not by the descriptor sim-run wrote it through (the limit
+  // leaves room for the kernel objects, not for 10^6 items of state).
+  std::string big = sub + "/big.simc";
+  Result tooLarge =
+      shell("ulimit -f 20000; trap '' XFSZ; " + std::string(SIM_RUN_PATH) +
+            " " + bundle +
+            " --backend cpu --steps 2 --set range=1000000 --checkpoint " + big);
+  EXPECT_EQ(tooLarge.status, 1) << tooLarge.output;
+  EXPECT_TRUE(contains(tooLarge.output, "--checkpoint: cannot write "
+                                        "checkpoint '" +
+                                            big + "'"))
+      << tooLarge.output;
+  EXPECT_FALSE(exists(big));
+}
+
 TEST_F(SimRun, RemovesTheTemporaryBundleOnSignals) {
   std::string sub = dir + "/translate-signal";
   std::string tools = sub + "/tools", tmp = sub + "/tmp";

@@ -656,6 +656,11 @@ TEST(SimRunProgress, FormatsRatesAndTimesLeft) {
             "steps/s, ETA 6 s");
   EXPECT_EQ(progressLine("", 0, 10, 1.5),
             "sim-run: base step 0 of 10 (0%), 0 base steps/s, ETA -");
+  // After a restart at base step 500000 the rate counts only the steps
+  // this process ran.
+  EXPECT_EQ(progressLine("", 750000, 1000000, 2, 500000),
+            "sim-run: base step 750000 of 1000000 (75%), 125k base "
+            "steps/s, ETA 2 s");
 }
 
 namespace {
@@ -700,6 +705,28 @@ TEST(SimRunProgress, IsQuietInLogsUnlessForced) {
             "s\n"
             "sim-run: base step 500 of 1000 (50%), 20 base steps/s, ETA "
             "25 s\n");
+}
+
+TEST(SimRunProgress, CountsTheRateFromARestartsBaseStep) {
+  // A run restarted at base step 600 towards 1000, in two session runs
+  // (an output time at 800): 300 steps in 20 seconds is 15 per second,
+  // not the 45 that counting the steps before the restart would give.
+  std::FILE *file = std::tmpfile();
+  Progress progress(false, true, file);
+  progress.begin(nullptr, "");
+  progress.resume(nullptr, 600, 1000);
+  progress.report(200, 200, 8);
+  progress.resume(nullptr, 800, 1000);
+  progress.report(100, 200, 20);
+  progress.end();
+  std::string text(size_t(std::ftell(file)), '\0');
+  std::rewind(file);
+  text.resize(std::fread(text.data(), 1, text.size(), file));
+  std::fclose(file);
+  EXPECT_EQ(text, "sim-run: base step 800 of 1000 (80%), 25 base steps/s, "
+                  "ETA 8 s\n"
+                  "sim-run: base step 900 of 1000 (90%), 15 base steps/s, "
+                  "ETA 7 s\n");
 }
 
 //===----------------------------------------------------------------------===//

@@ -40,15 +40,18 @@
 #include "MpiCommunicator.h"
 
 #include <dlfcn.h>
+#include <fcntl.h>
 
 #include <cerrno>
 #include <chrono>
+#include <csignal>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <fstream>
 #include <memory>
 #include <optional>
+#include <poll.h>
 #include <spawn.h>
 #include <sstream>
 #include <string>
@@ -205,10 +208,20 @@ void translate(const std::string &scene, TemporaryFile &bundle,
                      : (std::to_string(strategies.size()) +
                         (strategies.size() == 1 ? " strategy" : " strategies"))
                            .c_str());
+  // sim-run ignores SIGPIPE (main); sim-translate gets the default back.
+  posix_spawnattr_t attributes;
+  posix_spawnattr_init(&attributes);
+  sigset_t defaults;
+  sigemptyset(&defaults);
+  sigaddset(&defaults, SIGPIPE);
+  posix_spawnattr_setsigdefault(&attributes, &defaults);
+  posix_spawnattr_setflags(&attributes, POSIX_SPAWN_SETSIGDEF);
   pid_t pid;
-  if (int error = posix_spawn(&pid, tool->c_str(), nullptr, nullptr,
-                              argv.data(), environ))
-    runError("cannot run " + *tool + ": " + std::strerror(error));
+  int spawnError = posix_spawn(&pid, tool->c_str(), nullptr, &attributes,
+                               argv.data(), environ);
+  posix_spawnattr_destroy(&attributes);
+  if (spawnError)
+    runError("cannot run " + *tool + ": " + std::strerror(spawnError));
   // A signal meanwhile goes to sim-translate too.
   setChild(pid);
   int status = 0;
@@ -520,8 +533,14 @@ void writeCheckpoint(sim_session *session, MainRun &main) {
     return;
   }
   writeFileAtomically(main.checkpointFile, [&](int fd) {
-    if (sim_session_checkpoint_fd(session, fd) != SIM_OK)
-      runError("--checkpoint: " + std::string(sim_last_error()));
+    if (sim_session_checkpoint_fd(session, fd) == SIM_OK)
+      return;
+    // The runtime names the file by its descriptor; the user named a path.
+    std::string message = sim_last_error();
+    std::string byDescriptor = "'file descriptor " + std::to_string(fd) + "'";
+    if (size_t at = message.find(byDescriptor); at != std::string::npos)
+      message.replace(at, byDescriptor.size(), "'" + main.checkpointFile + "'");
+    runError("--checkpoint: " + message);
   });
   ++main.checkpointsWritten;
   main.checkpointTime = sim_session_time(session);
@@ -1035,6 +1054,9 @@ void runAll(Results &results, Sessions &sessions, const sim_bundle *bundle,
     results.initCheck.skipped = "not rank 0";
   else
     results.initCheck = checkInit(sessions.main->get(), bundle);
+  // The init check of a large scene takes a while: a signal meanwhile
+  // stops sim-run before anything ran.
+  stopIfInterrupted("during the init check");
   if (printing())
     for (const std::string &message : initCheckMessages(results.initCheck))
       std::fprintf(stderr, "%s\n", message.c_str());
@@ -1355,20 +1377,72 @@ static void checkNotUnderMpirun() {
   }
 }
 
+/// Whether descriptor 1 was closed when sim-run started.
+static bool stdoutWasClosed = false;
+
+/// Gives a closed descriptor 0, 1 or 2 /dev/null, so that no file sim-run
+/// or the runtime opens becomes it: with `>&-` the report would otherwise
+/// be written into whatever file took descriptor 1 (the CPU backend's
+/// kernel object). A closed standard output is still an error at the end.
+static void reserveStandardDescriptors() {
+  for (int fd = 0; fd <= 2; ++fd) {
+    if (fcntl(fd, F_GETFD) != -1 || errno != EBADF)
+      continue;
+    // The lowest free descriptor: `fd` itself, as the lower ones are open.
+    int opened = open("/dev/null", fd == 0 ? O_RDONLY : O_WRONLY);
+    if (opened >= 0 && opened != fd)
+      close(opened);
+    if (fd == 1)
+      stdoutWasClosed = true;
+  }
+}
+
+/// The exit status once the report is out: a report that could not be
+/// written (standard output closed, a full disk, a reader that stopped
+/// reading) makes a successful run fail, after every file was written.
+static int finishStandardOutput(int status) {
+  errno = 0;
+  bool flushFailed = std::fflush(stdout) != 0;
+  int error = errno;
+  if (!stdoutWasClosed && !flushFailed && !std::ferror(stdout))
+    return status;
+  // The error of a write before the last flush is gone; a pipe whose
+  // reader left still says so.
+  std::string why = stdoutWasClosed ? "it is closed"
+                    : error         ? std::strerror(error)
+                                    : "a write failed";
+  pollfd reader{STDOUT_FILENO, 0, 0};
+  if (!stdoutWasClosed && !error && poll(&reader, 1, 0) == 1 &&
+      (reader.revents & POLLERR))
+    why = "its reader stopped reading";
+  std::fprintf(stderr, "sim-run: error: cannot write to standard output: %s\n",
+               why.c_str());
+  return status == kExitSuccess ? kExitFailure : status;
+}
+
 int main(int argc, char **argv) {
   captureUmask();
+  reserveStandardDescriptors();
+  // A reader of the report that stops early (`| head`) must not kill the
+  // run before its files are written: writes to it fail instead, and
+  // finishStandardOutput reports it.
+  std::signal(SIGPIPE, SIG_IGN);
   installSignalHandlers();
+  int status;
   try {
     Options options = parseOptions(argc, argv);
     if (options.distributed)
-      return runDistributed(std::move(options), argc, argv);
-    checkNotUnderMpirun();
-    return run(std::move(options));
+      status = runDistributed(std::move(options), argc, argv);
+    else {
+      checkNotUnderMpirun();
+      status = run(std::move(options));
+    }
   } catch (const Exit &exit) {
     if (!exit.message.empty())
       std::fprintf(stderr, "sim-run: %s%s\n",
                    exit.status >= kExitSignalBase ? "" : "error: ",
                    exit.message.c_str());
-    return exit.status;
+    status = exit.status;
   }
+  return finishStandardOutput(status);
 }

@@ -39,8 +39,8 @@ std::string formatEta(double seconds) {
 }
 
 std::string progressLine(const std::string &label, int64_t done, int64_t total,
-                         double seconds) {
-  double rate = seconds > 0 ? double(done) / seconds : 0;
+                         double seconds, int64_t started) {
+  double rate = seconds > 0 ? double(done - started) / seconds : 0;
   double left = rate > 0 ? double(total - done) / rate : NAN;
   double percent = total ? 100.0 * double(done) / double(total) : 100.0;
   char text[160];
@@ -57,6 +57,7 @@ void Progress::begin(sim_session *session, std::string runLabel) {
   last = 0;
   shown = false;
   offset = whole = 0;
+  started = -1;
   sim_session_set_progress(session, enabled ? &Progress::callback : nullptr,
                            this);
 }
@@ -64,6 +65,8 @@ void Progress::begin(sim_session *session, std::string runLabel) {
 void Progress::resume(sim_session *session, int64_t from, int64_t end) {
   offset = from;
   whole = end;
+  if (started < 0)
+    started = from;
   sim_session_set_progress(session, enabled ? &Progress::callback : nullptr,
                            this);
 }
@@ -90,11 +93,13 @@ void Progress::report(int64_t done, int64_t total, double seconds) {
     return;
   last = seconds;
   shown = true;
+  int64_t since = 0;
   if (whole > 0) {
     done += offset;
     total = whole;
+    since = started;
   }
-  std::string line = progressLine(label, done, total, seconds);
+  std::string line = progressLine(label, done, total, seconds, since);
   if (terminal)
     std::fprintf(out, "\r%s\033[K", line.c_str());
   else

@@ -29,9 +29,10 @@ constexpr double kProgressTerminalPeriod = 0.25;
 constexpr double kProgressLogPeriod = 10.0;
 
 /// The text of one progress line (without "\r" or "\n"): "sim-run: <label>
-/// base step 120000 of 1000000 (12%), 45.3k base steps/s, ETA 19 s".
+/// base step 120000 of 1000000 (12%), 45.3k base steps/s, ETA 19 s", for a
+/// run that started at base step `started` (a restart's) `seconds` ago.
 std::string progressLine(const std::string &label, int64_t done, int64_t total,
-                         double seconds);
+                         double seconds, int64_t started = 0);
 
 /// A rate with three significant digits and a k, M, G or T suffix: "812",
 /// "45.3k", "1.20M".
@@ -77,6 +78,9 @@ private:
   /// Of a run made of several session runs: where the current one started,
   /// and the whole run's end (0: the session run's own).
   int64_t offset = 0, whole = 0;
+  /// Where the first of them started (-1 before it): the rate counts the
+  /// base steps of this process only, not those before a restart.
+  int64_t started = -1;
 };
 
 } // namespace simrun

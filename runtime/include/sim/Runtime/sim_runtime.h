@@ -388,7 +388,9 @@ typedef struct sim_init_check {
 /// and the last half of them). The session's range, dt and parameters
 /// apply; its state is not touched. `*count` gets the number of buffers
 /// checked, whose results sim_session_init_check returns until the next
-/// check. SIM_ERROR_BUNDLE when the bundle has no reference functions.
+/// check. SIM_ERROR_BUNDLE when the bundle has no reference functions;
+/// SIM_ERROR_INTERRUPTED when sim_session_interrupt stops it (it evaluates
+/// every item on the host, which takes a while on a large scene).
 SIM_API sim_status sim_session_check_init(sim_session *session,
                                           double tolerance, int64_t max_items,
                                           int32_t *count);
