@@ -2,10 +2,12 @@
 //
 // A component body may use the vector dialect's high-level ops:
 // vector.contract (a dot product), vector.outerproduct,
-// vector.multi_reduction, vector.transpose, vector.step. The CPU pipeline's
-// convert-vector-to-llvm and the GPU's convert-gpu-to-nvvm lower only the
-// 1-D ops (extract, insert, reduction, fma, shuffle, ...), so these compiled
-// for no backend; nor did a math.fpowi of vectors (LLVM's powi takes one
+// vector.multi_reduction, vector.transpose, vector.step, vector.shape_cast,
+// broadcasts to n-D vectors and masks (vector.create_mask,
+// vector.constant_mask). The GPU's convert-gpu-to-nvvm lowers only the 1-D
+// ops (extract, insert, reduction, fma, shuffle, ...), and the CPU
+// pipeline's convert-vector-to-llvm not all of these, so they compiled for
+// no backend; nor did a math.fpowi of vectors (LLVM's powi takes one
 // integer exponent). This pass rewrites them with upstream's progressive
 // lowering patterns into those ops, and fpowi element by element; the CPU
 // kernels, the reference functions and the GPU kernels all run it, so they
@@ -61,11 +63,15 @@ struct SimLowerVectorOpsPass
     WalkResult found = getOperation()->walk([](Operation *op) {
       bool vectorPower =
           isa<math::FPowIOp>(op) && isa<VectorType>(op->getResultTypes()[0]);
-      return vectorPower ||
+      auto broadcast = dyn_cast<vector::BroadcastOp>(op);
+      bool nDBroadcast =
+          broadcast && broadcast.getResultVectorType().getRank() > 1;
+      return vectorPower || nDBroadcast ||
                      isa<vector::ContractionOp, vector::OuterProductOp,
                          vector::MultiDimReductionOp, vector::TransposeOp,
                          vector::StepOp, vector::InsertStridedSliceOp,
-                         vector::ExtractStridedSliceOp>(op)
+                         vector::ExtractStridedSliceOp, vector::ShapeCastOp,
+                         vector::CreateMaskOp, vector::ConstantMaskOp>(op)
                  ? WalkResult::interrupt()
                  : WalkResult::advance();
     });
@@ -83,6 +89,12 @@ struct SimLowerVectorOpsPass
         patterns, vector::VectorTransposeLowering::EltWise);
     vector::populateVectorStepLoweringPatterns(patterns);
     vector::populateVectorShapeCastLoweringPatterns(patterns);
+    // n-D broadcasts as 1-D ones inserted row by row; masks as comparisons
+    // of vector.step with the bound (1-D) and inserts of those (n-D).
+    vector::populateVectorBroadcastLoweringPatterns(patterns);
+    vector::populateVectorMaskOpLoweringPatterns(patterns);
+    vector::populateVectorMaskMaterializationPatterns(
+        patterns, /*force32BitVectorIndices=*/false);
     // Strided slices (which the multi-reduction lowering makes) as
     // shuffles, extracts and inserts.
     vector::populateVectorInsertExtractStridedSliceTransforms(patterns);

@@ -85,3 +85,38 @@ func.func @untouched(%a: vector<4xf32>) -> f32 {
   %r = vector.reduction <add>, %a, %s : vector<4xf32> into f32
   return %r : f32
 }
+
+// -----
+
+// A shape_cast alone (no other op of the pass in the body) is lowered.
+// CHECK-LABEL: func.func @shape_cast_alone
+// CHECK-NOT: vector.shape_cast
+// CHECK: vector.extract
+// CHECK: vector.shuffle
+func.func @shape_cast_alone(%a: vector<2x2xf32>) -> vector<4xf32> {
+  %r = vector.shape_cast %a : vector<2x2xf32> to vector<4xf32>
+  return %r : vector<4xf32>
+}
+
+// -----
+
+// A broadcast of a 1-D vector to an n-D one as rows inserted one by one
+// (a scalar's the LLVM conversions lower themselves).
+// CHECK-LABEL: func.func @broadcast_rows
+// CHECK-NOT: vector.broadcast
+// CHECK-COUNT-3: vector.insert %{{.*}}, %{{.*}} [{{[0-9]}}] : vector<4xf32> into vector<3x4xf32>
+func.func @broadcast_rows(%x: vector<4xf32>) -> vector<3x4xf32> {
+  %r = vector.broadcast %x : vector<4xf32> to vector<3x4xf32>
+  return %r : vector<3x4xf32>
+}
+
+// -----
+
+// A mask made at run time as a comparison of its bound with vector.step.
+// CHECK-LABEL: func.func @create_mask
+// CHECK-NOT: vector.create_mask
+// CHECK: arith.cmpi sgt, %{{.*}}, %{{.*}} : vector<4xi64>
+func.func @create_mask(%n: index) -> vector<4xi1> {
+  %m = vector.create_mask %n : vector<4xi1>
+  return %m : vector<4xi1>
+}

@@ -227,3 +227,48 @@ sim.simulation @s range(16) dt(1.0e-2 : f32) max_steps(1) {
     sim.yield %e : f64
   }
 }
+
+// -----
+
+// A position computed at run time indexes only the innermost dimension: an
+// n-D vector is an LLVM array of 1-D vectors, indexed by constants.
+sim.simulation @s range(16) dt(1.0e-2 : f32) max_steps(1) {
+  sim.buffer @B : vector<4xf32> init {
+  ^bb0(%i: index):
+    %zero = arith.constant dense<0.0> : vector<4xf32>
+    sim.yield %zero : vector<4xf32>
+  }
+  sim.component @C writes(@B) evaluate {
+  ^bb0(%i: index, %t: i64, %n: i32, %dt: f32):
+    %x = sim.read @B[%i] : vector<4xf32>
+    %m = vector.broadcast %x : vector<4xf32> to vector<3x4xf32>
+    %c3 = arith.constant 3 : index
+    %r = arith.remui %i, %c3 : index
+    // expected-error @+1 {{'vector.extract' op indexes dimension 0 of 'vector<3x4xf32>' with a value computed at run time, which no backend lowers; only the innermost dimension may be indexed so: vector.shape_cast the vector to 1-D and index the element there}}
+    %row = vector.extract %m[%r] : vector<4xf32> from vector<3x4xf32>
+    sim.yield %row : vector<4xf32>
+  }
+}
+
+// -----
+
+// The same for an insert; the innermost dimension may be dynamic.
+sim.simulation @s range(16) dt(1.0e-2 : f32) max_steps(1) {
+  sim.buffer @B : vector<4xf32> init {
+  ^bb0(%i: index):
+    %zero = arith.constant dense<0.0> : vector<4xf32>
+    sim.yield %zero : vector<4xf32>
+  }
+  sim.component @C writes(@B) evaluate {
+  ^bb0(%i: index, %t: i64, %n: i32, %dt: f32):
+    %x = sim.read @B[%i] : vector<4xf32>
+    %m = vector.broadcast %x : vector<4xf32> to vector<3x4xf32>
+    %c4 = arith.constant 4 : index
+    %k = arith.remui %i, %c4 : index
+    %e = vector.extract %m[1, %k] : f32 from vector<3x4xf32>
+    // expected-error @+1 {{'vector.insert' op indexes dimension 0 of 'vector<3x4xf32>' with a value computed at run time}}
+    %n2 = vector.insert %e, %m[%k, 0] : f32 into vector<3x4xf32>
+    %row = vector.extract %n2[2] : vector<4xf32> from vector<3x4xf32>
+    sim.yield %row : vector<4xf32>
+  }
+}

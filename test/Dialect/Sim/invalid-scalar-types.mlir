@@ -66,6 +66,25 @@ sim.simulation @s range(16) dt(1.0e-2 : f32) max_steps(4) {
 
 // -----
 
+// A scalable vector's length is the hardware's: LLVM stopped with "Scalarization of scalable vectors is not supported".
+sim.simulation @s range(16) dt(1.0e-2 : f32) max_steps(1) {
+  sim.buffer @B : f32 init {
+  ^bb0(%i: index):
+    %zero = arith.constant 0.0 : f32
+    sim.yield %zero : f32
+  }
+  sim.component @C writes(@B) evaluate {
+  ^bb0(%i: index, %t: i64, %n: i32, %dt: f32):
+    %x = sim.read @B[%i] : f32
+    // expected-error @+1 {{'vector.broadcast' op computes with the scalable vector type 'vector<[4]xf32>', which no backend supports; use a vector of fixed length}}
+    %v = vector.broadcast %x : f32 to vector<[4]xf32>
+    %m = vector.reduction <add>, %v : vector<[4]xf32> into f32
+    sim.yield %m : f32
+  }
+}
+
+// -----
+
 // f16 and i16 are fine.
 sim.simulation @s range(16) dt(1.0e-2 : f32) max_steps(1) {
   sim.buffer @B : f32 init {

@@ -355,26 +355,40 @@ static LogicalResult verifyVectorIndex(Operation *op, int64_t index,
 }
 
 /// Checks the static and constant positions of a vector.extract or
-/// vector.insert into a vector of `type`.
+/// vector.insert into a vector of `type`. A position computed at run time
+/// is lowered only in the innermost dimension (an element of a 1-D LLVM
+/// vector); an n-D vector is an LLVM array of those, whose index must be a
+/// constant.
 static LogicalResult verifyVectorPosition(Operation *op,
                                           ArrayRef<int64_t> staticPosition,
                                           ValueRange dynamicPosition,
                                           VectorType type) {
   auto dynamic = dynamicPosition.begin();
-  for (auto [index, dimension, scalable] :
-       llvm::zip(staticPosition, type.getShape(), type.getScalableDims())) {
+  std::optional<size_t> computedOuter;
+  for (auto [d, index, dimension, scalable] : llvm::enumerate(
+           staticPosition, type.getShape(), type.getScalableDims())) {
     int64_t value = index;
     if (ShapedType::isDynamic(index)) {
       if (dynamic == dynamicPosition.end())
         return success(); // Reported by the op's own verifier.
       APInt constant;
-      if (!matchPattern(*dynamic++, m_ConstantInt(&constant)))
+      if (!matchPattern(*dynamic++, m_ConstantInt(&constant))) {
+        if (int64_t(d) + 1 < type.getRank() && !computedOuter)
+          computedOuter = d;
         continue;
+      }
       value = constant.getSExtValue();
     }
     if (failed(verifyVectorIndex(op, value, dimension, scalable, "index")))
       return failure();
   }
+  if (computedOuter)
+    return op->emitOpError()
+           << "indexes dimension " << *computedOuter << " of " << type
+           << " with a value computed at run time, which no backend "
+              "lowers; only the innermost dimension may be indexed so: "
+              "vector.shape_cast the vector to 1-D and index the element "
+              "there";
   return success();
 }
 
@@ -382,7 +396,9 @@ static LogicalResult verifyVectorPosition(Operation *op,
 /// bits (and index), f16, f32 and f64. Wider integers and other floats
 /// (f80, f128, the 8-bit floats) make LLVM's back ends stop with a fatal
 /// error, and bf16 conversions need compiler-rt routines that the CPU
-/// kernels do not link.
+/// kernels do not link. So does a scalable vector (`vector<[4]xf32>`): its
+/// length is the hardware's, which neither a GPU lane nor the CPU kernels
+/// have.
 static LogicalResult verifyScalarTypes(Region &body) {
   auto unsupported = [](Type type) -> Type {
     Type scalar = getElementTypeOrSelf(type);
@@ -396,13 +412,21 @@ static LogicalResult verifyScalarTypes(Region &body) {
   WalkResult result = body.walk([&](Operation *op) {
     for (TypeRange types :
          {TypeRange(op->getResultTypes()), TypeRange(op->getOperandTypes())})
-      for (Type type : types)
+      for (Type type : types) {
+        if (auto vector = dyn_cast<VectorType>(type);
+            vector && vector.isScalable()) {
+          op->emitOpError() << "computes with the scalable vector type " << type
+                            << ", which no backend supports; use a vector "
+                               "of fixed length";
+          return WalkResult::interrupt();
+        }
         if (Type scalar = unsupported(type)) {
           op->emitOpError() << "computes with " << scalar
                             << ", which no backend supports; use integers "
                                "of at most 64 bits, f16, f32 or f64";
           return WalkResult::interrupt();
         }
+      }
     return WalkResult::advance();
   });
   return failure(result.wasInterrupted());
