@@ -137,16 +137,25 @@ private:
       bigStep = BigStepOp::create(builder, body.getLoc(), builder.getI64Type(),
                                   builder.getI64Type());
       created.insert(created.begin(), bigStep);
-      insertionPoint = bigStep->getNextNode();
+      prologue.insert(bigStep);
     }
     return {bigStep.getBegin(), bigStep.getSize()};
   }
 
 public:
-  /// A builder after the body's time values (they dominate what it builds).
+  /// A builder after the body's time values (they dominate what it builds):
+  /// after the last op built at the body's start so far. Not before the
+  /// body's first op of its own: that may be a read, which the pass
+  /// replaces and erases.
   OpBuilder atBodyStart() {
-    getBigStep();
-    OpBuilder builder(insertionPoint);
+    Operation *last = getBigStep().first.getDefiningOp();
+    while (Operation *next = last->getNextNode()) {
+      if (!prologue.contains(next))
+        break;
+      last = next;
+    }
+    OpBuilder builder(body.getContext(), &listener);
+    builder.setInsertionPointAfter(last);
     return builder;
   }
 
@@ -156,11 +165,23 @@ private:
       created.push_back(value.getDefiningOp());
   }
 
+  /// Records what the builders of atBodyStart insert (the time values, the
+  /// hip-cache fills, and what those hold).
+  struct PrologueListener : OpBuilder::Listener {
+    explicit PrologueListener(llvm::DenseSet<Operation *> &ops) : ops(ops) {}
+    void notifyOperationInserted(Operation *op,
+                                 OpBuilder::InsertPoint) override {
+      ops.insert(op);
+    }
+    llvm::DenseSet<Operation *> &ops;
+  };
+
   Region &body;
   Value time, steps;
   FloatType dtType;
   BigStepOp bigStep;
-  Operation *insertionPoint = nullptr;
+  llvm::DenseSet<Operation *> prologue;
+  PrologueListener listener{prologue};
   SmallVector<Operation *> created;
   llvm::DenseMap<Type, Value> fractions, spans;
   Value offset, atStart, atEnd;
