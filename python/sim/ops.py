@@ -259,7 +259,9 @@ def invert(a, loc=None) -> Value:
     v = value_of(a, what="`~`")
     if v.dtype.is_float:
         raise trace_error("`~` on a float value", loc)
-    ones = True if v.dtype.is_bool else -1
+    # All bits set: -1 is no unsigned value.
+    ones = (True if v.dtype.is_bool else
+            (1 << v.dtype.bits) - 1 if v.dtype.is_unsigned else -1)
     return binary("^", v, value_of(ones, v.dtype), loc)
 
 

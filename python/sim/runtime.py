@@ -153,7 +153,8 @@ class Session:
     """A bundle's state, run with one strategy on one backend.
 
     Options, as keyword arguments: `group_size` (0: the plan's), `threads`
-    (CPU threads, 0: all), `check_finite`, `max_memory` (bytes the session
+    (CPU backend threads, 0: all; refused on the reference backend, which
+    runs on one), `check_finite`, `max_memory` (bytes the session
     may allocate, 0: the runtime's default share, as sim-run
     --max-memory) and `warn_nonfinite`. Scene values (`range`, `dt`,
     parameters) as `params={name: value}`, which always means values, or
@@ -239,6 +240,15 @@ class Session:
         """A runtime session of `strategy` on `backend` with the values and
         the buffers set so far, and the names of the buffers its plan
         holds."""
+        # The reference executor runs on one thread: a thread count for it
+        # is a mistake, not a setting to ignore (sim-run refuses --threads
+        # with --backend reference too).
+        threads = self._options["cpu_threads"]
+        if backend == "reference" and threads != 0:
+            raise ValueError(
+                f"threads={threads} sets the CPU backend's threads; the "
+                f"reference executor runs on one (a session on backend "
+                f"'reference' takes no threads)")
         rt = simrt.Session(self.bundle._rt, strategy, backend, **self._options)
         try:
             for name, value in self._values.items():
@@ -471,6 +481,13 @@ class Session:
         of the buffers that have one and the errors against them. Without
         it, returns None. A run that ends with NaN or infinity in the state
         or the totals warns (sim.NonFiniteWarning; see `warn_nonfinite`).
+
+        A run that `progress` or Ctrl-C (KeyboardInterrupt) stops keeps
+        the state of the big-step boundary it reached, and `metrics()`
+        counts every base step it ran. With `output_every`, the exception
+        that ends a run (a RunError too) carries the `Output` of the output
+        times it reached as its `output` attribute (sim-run writes those
+        when a signal stops it).
         """
         # numpy's integers too; True is not a number of steps.
         steps = _check_count("steps", steps, 0, "int64")
@@ -504,17 +521,32 @@ class Session:
 
         snapshot()
         self._metrics = None
-        if steps == 0:
-            # No chunk to run, but the metrics of a run of 0 steps.
-            self._chunk(0, progress, 0, 0)
-            self._ran = True
-        done = 0
-        while done < steps:
-            chunk = min(output_every, steps - done)
-            self._chunk(chunk, progress, done, steps)
-            self._ran = True
-            done += chunk
-            snapshot()
+        # The output time the run is heading for, to record it when an
+        # exception comes after the run reached it.
+        reached = self.time
+        try:
+            if steps == 0:
+                # No chunk to run, but the metrics of a run of 0 steps.
+                self._chunk(0, progress, 0, 0)
+                self._ran = True
+            done = 0
+            while done < steps:
+                chunk = min(output_every, steps - done)
+                reached = self.time + chunk
+                self._chunk(chunk, progress, done, steps)
+                self._ran = True
+                done += chunk
+                snapshot()
+        except BaseException as error:
+            # The output times reached are not lost (sim-run writes them
+            # when a signal stops it): they go with the exception. A chunk
+            # that ended before it (its last progress call raised, Ctrl-C
+            # came between chunks) gives its frame too; a run stopped
+            # inside a chunk, or inside a big step, is at no output time.
+            if self.time == reached and frames[-1]["t"] != reached:
+                snapshot()
+            error.output = self._output(frames, names, exact)
+            raise
         output = self._output(frames, names, exact)
         self._check_nonfinite(frames[-1])
         return output
@@ -556,11 +588,20 @@ class Session:
             lib.sim_session_set_progress(handle, callback, None)
         try:
             self._rt.run(steps)
-        except simrt.Error:
+        except simrt.Error as error:
             if failure:
                 lib.sim_session_resume(handle)
+                # Stopped on the big-step boundary it reached: the runtime's
+                # metrics are those of the steps done.
+                if error.status == _INTERRUPTED:
+                    self._accumulate()
                 raise failure[0] from None
             raise
+        else:
+            # The steps ran: count them before raising what stopped them too
+            # late (the run ended first) and before the callback, which may
+            # raise, while Ctrl-C cannot cut the count short.
+            self._accumulate()
         finally:
             if callback is not None:
                 lib.sim_session_set_progress(handle,
@@ -570,8 +611,6 @@ class Session:
         if failure:
             lib.sim_session_resume(handle)
             raise failure[0]
-        # The steps ran: count them before the callback, which may raise.
-        self._accumulate()
         if progress is not None and told[0] != steps:
             progress(offset + steps, total)
 
@@ -682,6 +721,10 @@ class Session:
         return (f"<sim.Session {self._scene} {self.strategy} on "
                 f"{self.backend}, T={self.time}>")
 
+
+# sim_status's SIM_ERROR_INTERRUPTED (sim_runtime.h): a run that
+# sim_session_interrupt stopped on a big-step boundary.
+_INTERRUPTED = 9
 
 # The options of a Session and their defaults (see Session).
 _OPTIONS = {"group_size": 0, "threads": 0, "check_finite": False,
