@@ -4,6 +4,9 @@
 // half (which calls the mgpu* wrappers of libmlir_cuda_runtime; our runtime
 // launches the PTX itself). Every lowering is an upstream pass; the order:
 //
+//   gpu.module(sim-nvvm-check-target{attaching chip})
+//                                           the chip, before its attribute's
+//                                           verifier (crashes on "")
 //   nvvm-attach-target{chip features O ftz} #nvvm.target on every gpu.module
 //   gpu.module(
 //     sim-fused-multiply-add                vector.fma to llvm.intr.fma (one
@@ -111,6 +114,12 @@ void mlir::sim::buildSimGPUToPTXPipeline(OpPassManager &pm,
   attach.optLevel = target.optLevel;
   // libdevice's FTZ variants (__nvvm_reflect("__CUDA_FTZ")).
   attach.ftzFlag = target.flushSubnormals;
+  // The chip first: the target attribute's verifier, which runs right after
+  // attaching it, crashes on an empty one.
+  SimNVVMCheckTargetOptions chip;
+  chip.attaching = true;
+  chip.chip = target.chip;
+  pm.addNestedPass<gpu::GPUModuleOp>(createSimNVVMCheckTarget(chip));
   pm.addPass(createGpuNVVMAttachTarget(attach));
 
   OpPassManager &kernels = pm.nest<gpu::GPUModuleOp>();

@@ -22,6 +22,9 @@
 // OPTIONS-SAME: .version 8.0\0A.target sm_80\0A
 
 // PIPELINE:      builtin.module(
+// PIPELINE-NEXT:   gpu.module(
+// PIPELINE-NEXT:     sim-nvvm-check-target{attaching=true chip=sm_90 libdevice=}
+// PIPELINE-NEXT:   ),
 // PIPELINE-NEXT:   nvvm-attach-target{O=3 chip=sm_90 {{.*}}features= {{.*}}}
 // PIPELINE-NEXT:   gpu.module(
 // PIPELINE-NEXT:     sim-fused-multiply-add
@@ -34,7 +37,7 @@
 // PIPELINE-NEXT:     convert-math-to-llvm
 // PIPELINE-NEXT:     reconcile-unrealized-casts
 // PIPELINE-NEXT:     sim-nvvm-extern-dynamic-shared-memory
-// PIPELINE-NEXT:     sim-nvvm-check-target{libdevice={{.*}}/nvvm/libdevice/libdevice.10.bc}
+// PIPELINE-NEXT:     sim-nvvm-check-target{attaching=false chip= libdevice={{.*}}/nvvm/libdevice/libdevice.10.bc}
 // PIPELINE-NEXT:   ),
 // PIPELINE-NEXT:   gpu-module-to-binary{format=isa {{.*}}}
 // PIPELINE-NEXT: )

@@ -13,10 +13,11 @@
 // PIPELINE:          sim-insert-interpolation
 // PIPELINE:        ),
 // PIPELINE-NEXT:   sim-lower-to-gpu{group-size=128},
+// PIPELINE:          sim-nvvm-check-target{attaching=true chip=sm_80 libdevice=}
 // PIPELINE:        nvvm-attach-target{O=2 chip=sm_80 {{.*}}features=+ptx80 {{.*}}}
 // PIPELINE-NEXT:   gpu.module(
 // PIPELINE:          convert-gpu-to-nvvm{{{.*}} has-redux=true
-// PIPELINE:          sim-nvvm-check-target{libdevice={{.*}}/cuda/nvvm/libdevice/libdevice.10.bc}
+// PIPELINE:          sim-nvvm-check-target{attaching=false chip= libdevice={{.*}}/cuda/nvvm/libdevice/libdevice.10.bc}
 // PIPELINE-NEXT:   ),
 // PIPELINE-NEXT:   gpu-module-to-binary{format=isa {{.*}}toolkit=}
 // PIPELINE-NEXT: )

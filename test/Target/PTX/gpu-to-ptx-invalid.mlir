@@ -9,6 +9,10 @@
 // RUN:   --sim-cuda-path=%t/no-cuda
 // RUN: sim-translate --gpu-to-ptx %t/unknown-chip.mlir --verify-diagnostics \
 // RUN:   --sim-chip=sm_999
+// RUN: sim-translate --gpu-to-ptx %t/empty-chip.mlir --verify-diagnostics \
+// RUN:   --sim-chip=
+// RUN: sim-translate --gpu-to-ptx %t/compute-chip.mlir --verify-diagnostics \
+// RUN:   --sim-chip=compute_90
 // RUN: sim-translate --gpu-to-ptx %t/unknown-feature.mlir \
 // RUN:   --verify-diagnostics --sim-features=+ptx99
 // RUN: sim-translate --gpu-to-ptx %t/unsigned-feature.mlir \
@@ -84,6 +88,30 @@ module attributes {gpu.container_module} {
 //--- unknown-chip.mlir
 module attributes {gpu.container_module} {
   // expected-error @+1 {{unknown NVIDIA GPU 'sm_999': LLVM's NVPTX back end knows chips such as sm_80, sm_90, sm_90a and sm_100}}
+  gpu.module @kernels {
+    gpu.func @empty() kernel {
+      gpu.return
+    }
+  }
+}
+
+//--- empty-chip.mlir
+// An empty chip crashed upstream's verifier of #nvvm.target; it is checked
+// before the target is attached.
+module attributes {gpu.container_module} {
+  // expected-error @+1 {{unknown NVIDIA GPU '': LLVM's NVPTX back end knows chips such as sm_80, sm_90, sm_90a and sm_100}}
+  gpu.module @kernels {
+    gpu.func @empty() kernel {
+      gpu.return
+    }
+  }
+}
+
+//--- compute-chip.mlir
+// A virtual architecture is no chip (upstream said "Minimum NVVM target SM
+// version is sm_20").
+module attributes {gpu.container_module} {
+  // expected-error @+1 {{unknown NVIDIA GPU 'compute_90': LLVM's NVPTX back end knows chips such as sm_80, sm_90, sm_90a and sm_100}}
   gpu.module @kernels {
     gpu.func @empty() kernel {
       gpu.return

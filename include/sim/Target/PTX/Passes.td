@@ -176,6 +176,12 @@ def SimNVVMCheckTarget
       The kernels of a lowered scene always have such names
       (`--sim-lower-to-gpu`).
 
+    With `attaching` (the sim pipelines run it so before
+    `nvvm-attach-target`), it checks only `chip`, the chip about to be
+    attached: upstream's verifier of the target attribute crashes on an
+    empty chip and names other unknown ones by the oldest SM version it
+    takes.
+
     ```
     sim-opt k.mlir --pass-pipeline='builtin.module(gpu.module(sim-nvvm-check-target{libdevice=/usr/local/cuda/nvvm/libdevice/libdevice.10.bc}))'
     ```
@@ -184,6 +190,11 @@ def SimNVVMCheckTarget
     Option<"libdevice", "libdevice", "std::string", /*default=*/"\"\"",
            "The libdevice bitcode file that gpu-module-to-binary will link; "
            "empty: none">,
+    Option<"attaching", "attaching", "bool", /*default=*/"false",
+           "Before nvvm-attach-target: check only `chip`, the chip it will "
+           "attach">,
+    Option<"chip", "chip", "std::string", /*default=*/"\"\"",
+           "With `attaching`: the chip nvvm-attach-target will attach">,
   ];
 }
 

@@ -242,6 +242,15 @@ struct CheckTargetPass
 
   void runOnOperation() override {
     gpu::GPUModuleOp module = getOperation();
+    // Before nvvm-attach-target: the chip it will attach, alone (the
+    // module is not lowered yet).
+    if (attaching) {
+      if (failed(checkTarget(
+              module, NVVM::NVVMTargetAttr::get(&getContext(), /*optLevel=*/2,
+                                                "nvptx64-nvidia-cuda", chip))))
+        signalPassFailure();
+      return;
+    }
     bool ok = succeeded(checkLowered(module));
     ok &= succeeded(checkSymbolNames(module));
     if (ArrayAttr targets = module.getTargetsAttr())
