@@ -141,9 +141,20 @@ struct PrunePass : public sim::impl::SimPruneBase<PrunePass> {
         if (!needed.contains(buffer.getSymNameAttr()))
           dropped.set(index);
       if (dropped.all()) {
-        component.emitRemark()
-            << "removed component @" << component.getSymName()
-            << ": no observed buffer depends on it";
+        InFlightDiagnostic remark = component.emitRemark()
+                                    << "removed component @"
+                                    << component.getSymName()
+                                    << ": no observed buffer depends on it";
+        // Its values feed no output, but its num_steps may have set the big
+        // step of every component: that goes with it.
+        if (component.hasNumSteps())
+          remark << "; its num_steps, which bounds the big step under "
+                    "traditional (and under hip where it reads through the "
+                    "back edge), goes with it, so the big steps, and the "
+                    "values of outputs that sub-step, can differ from a run "
+                    "that observes @"
+                 << written.front().getSymName()
+                 << " (observe a buffer it writes to keep it)";
         rewriter.eraseOp(component);
         continue;
       }

@@ -287,3 +287,48 @@ sim.simulation @read_through_memory range(16) dt(1.0e-2 : f32) max_steps(2) {
   }
   sim.observe [@X]
 }
+
+// -----
+
+// A removed component's num_steps goes with it: where it bounded the big
+// step (here @Limit reads @A through the back edge), the pruned scene takes
+// other big steps, and the remark says so.
+
+// CHECK-LABEL: sim.simulation @bounding
+// CHECK-NOT: @Limit
+// CHECK: sim.component @C
+sim.simulation @bounding range(40) dt(5.0e-2 : f32) max_steps(8) {
+  sim.buffer @A : f32 init {
+  ^bb0(%i: index):
+    %z = arith.constant 0.0 : f32
+    sim.yield %z : f32
+  }
+  // expected-remark @+1 {{removed buffer @Q: no observed buffer depends on it}}
+  sim.buffer @Q : f32 init {
+  ^bb0(%i: index):
+    %z = arith.constant 1.0 : f32
+    sim.yield %z : f32
+  }
+  // expected-remark @+1 {{removed component @Limit: no observed buffer depends on it; its num_steps, which bounds the big step under traditional (and under hip where it reads through the back edge), goes with it, so the big steps, and the values of outputs that sub-step, can differ from a run that observes @Q (observe a buffer it writes to keep it)}}
+  sim.component @Limit writes(@Q) num_steps {
+  ^bb0(%i: index, %t: i64):
+    %a = sim.read @A[%i] : f32
+    %one = arith.constant 1 : i32
+    sim.yield %one : i32
+  } evaluate {
+  ^bb0(%i: index, %t: i64, %n: i32, %dt: f32):
+    %a = sim.read @A[%i] : f32
+    sim.yield %a : f32
+  }
+  sim.component @C writes(@A) num_steps {
+  ^bb0(%i: index, %t: i64):
+    %c = arith.constant 3 : i32
+    sim.yield %c : i32
+  } evaluate {
+  ^bb0(%i: index, %t: i64, %n: i32, %dt: f32):
+    %x = sim.read @A[%i] : f32
+    sim.yield %x : f32
+  }
+  sim.schedule [@Limit]
+  sim.observe [@A]
+}
