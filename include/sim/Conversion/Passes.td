@@ -251,19 +251,21 @@ def SimExpandIntegerPowers : Pass<"sim-expand-integer-powers"> {
 
 def SimLowerVectorOps : Pass<"sim-lower-vector-ops"> {
   let summary = "Lower high-level vector ops (contract, outerproduct, "
-                "multi_reduction, transpose, step, shape_cast, n-D "
+                "multi_reduction, transpose, step, shape_cast, scan, n-D "
                 "broadcasts, masks) to 1-D vector ops (every backend)";
   let description = [{
     A component body may use `vector.contract` (for example a dot
     product), `vector.outerproduct`, `vector.multi_reduction`,
-    `vector.transpose`, `vector.step`, `vector.shape_cast`, broadcasts of
+    `vector.transpose`, `vector.step`, `vector.shape_cast`, `vector.scan`,
+    broadcasts of
     vectors to n-D vectors and masks (`vector.create_mask`,
     `vector.constant_mask`). The LLVM and NVVM conversions lower only 1-D
     vector ops (extract, insert, reduction, fma, shuffle), so these ops
     compiled for no backend. This pass applies upstream's progressive
     lowering patterns (contractions as multiplications and reductions,
     outer products as `vector.fma`, multi-reductions as `vector.reduction`,
-    transposes element by element, steps as constants, shape casts and
+    transposes element by element, steps as constants, scans slice by slice
+    in order, shape casts and
     strided slices as shuffles, n-D broadcasts row by row, masks as
     comparisons with a step), and a `math.fpowi` of vectors as one scalar
     `fpowi` per element (LLVM's `powi` takes one integer exponent).

@@ -3,7 +3,7 @@
 // A component body may use the vector dialect's high-level ops:
 // vector.contract (a dot product), vector.outerproduct,
 // vector.multi_reduction, vector.transpose, vector.step, vector.shape_cast,
-// broadcasts to n-D vectors and masks (vector.create_mask,
+// vector.scan, broadcasts to n-D vectors and masks (vector.create_mask,
 // vector.constant_mask). The GPU's convert-gpu-to-nvvm lowers only the 1-D
 // ops (extract, insert, reduction, fma, shuffle, ...), and the CPU
 // pipeline's convert-vector-to-llvm not all of these, so they compiled for
@@ -71,7 +71,8 @@ struct SimLowerVectorOpsPass
                          vector::MultiDimReductionOp, vector::TransposeOp,
                          vector::StepOp, vector::InsertStridedSliceOp,
                          vector::ExtractStridedSliceOp, vector::ShapeCastOp,
-                         vector::CreateMaskOp, vector::ConstantMaskOp>(op)
+                         vector::CreateMaskOp, vector::ConstantMaskOp,
+                         vector::ScanOp>(op)
                  ? WalkResult::interrupt()
                  : WalkResult::advance();
     });
@@ -92,6 +93,8 @@ struct SimLowerVectorOpsPass
     // n-D broadcasts as 1-D ones inserted row by row; masks as comparisons
     // of vector.step with the bound (1-D) and inserts of those (n-D).
     vector::populateVectorBroadcastLoweringPatterns(patterns);
+    // Scans as element-wise operations on slices, in order.
+    vector::populateVectorScanLoweringPatterns(patterns);
     vector::populateVectorMaskOpLoweringPatterns(patterns);
     vector::populateVectorMaskMaterializationPatterns(
         patterns, /*force32BitVectorIndices=*/false);

@@ -120,3 +120,14 @@ func.func @create_mask(%n: index) -> vector<4xi1> {
   %m = vector.create_mask %n : vector<4xi1>
   return %m : vector<4xi1>
 }
+
+// -----
+
+// A scan as additions of slices, in order.
+// CHECK-LABEL: func.func @scan
+// CHECK-NOT: vector.scan
+// CHECK: arith.addf
+func.func @scan(%a: vector<4xf32>, %init: vector<f32>) -> vector<4xf32> {
+  %s, %acc = vector.scan <add>, %a, %init {inclusive = true, reduction_dim = 0 : i64} : vector<4xf32>, vector<f32>
+  return %s : vector<4xf32>
+}

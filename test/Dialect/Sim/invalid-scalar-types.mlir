@@ -85,6 +85,25 @@ sim.simulation @s range(16) dt(1.0e-2 : f32) max_steps(1) {
 
 // -----
 
+// LLVM's powi takes a 32-bit exponent: x86's back end stopped with "POWI
+// exponent does not match sizeof(int)", without a location.
+sim.simulation @s range(16) dt(1.0e-2 : f32) max_steps(1) {
+  sim.buffer @B : f32 init {
+  ^bb0(%i: index):
+    %zero = arith.constant 0.0 : f32
+    sim.yield %zero : f32
+  }
+  sim.component @C writes(@B) evaluate {
+  ^bb0(%i: index, %t: i64, %n: i32, %dt: f32):
+    %x = sim.read @B[%i] : f32
+    // expected-error @+1 {{'math.fpowi' op raises to an exponent of type 'i64', which no backend lowers (LLVM's powi takes an i32 exponent); convert the exponent to i32 with arith.trunci or arith.extsi}}
+    %p = math.fpowi %x, %t : f32, i64
+    sim.yield %p : f32
+  }
+}
+
+// -----
+
 // f16 and i16 are fine.
 sim.simulation @s range(16) dt(1.0e-2 : f32) max_steps(1) {
   sim.buffer @B : f32 init {
@@ -100,5 +119,29 @@ sim.simulation @s range(16) dt(1.0e-2 : f32) max_steps(1) {
     %g = arith.sitofp %k : i16 to f16
     %r = arith.extf %g : f16 to f32
     sim.yield %r : f32
+  }
+}
+
+// -----
+
+// A body cannot call a function of the module (sim.simulation is a symbol
+// table, so func.call's own verifier said "'helper' does not reference a
+// valid function").
+func.func @helper(%a: f32) -> f32 {
+  %s = arith.addf %a, %a : f32
+  return %s : f32
+}
+sim.simulation @s range(16) dt(1.0e-2 : f32) max_steps(1) {
+  sim.buffer @B : f32 init {
+  ^bb0(%i: index):
+    %zero = arith.constant 0.0 : f32
+    sim.yield %zero : f32
+  }
+  sim.component @C writes(@B) evaluate {
+  ^bb0(%i: index, %t: i64, %n: i32, %dt: f32):
+    %x = sim.read @B[%i] : f32
+    // expected-error @+1 {{'func.call' op calls a function, which a body cannot: its kernels are compiled without the module's functions; write the function's operations in the body itself}}
+    %d = func.call @helper(%x) : (f32) -> f32
+    sim.yield %d : f32
   }
 }

@@ -1,11 +1,11 @@
 // n-D vector shapes in a component body, for vector-shapes.test: a
 // broadcast to vector<3x4xi32>, vector.shape_cast to 1-D, a mask made at
-// run time (vector.create_mask, 1-D and 2-D) and a constant one
-// (vector.constant_mask). The GPU's lowering and the CPU's had no pattern
+// run time (vector.create_mask, 1-D and 2-D), a constant one
+// (vector.constant_mask) and an inclusive vector.scan. The GPU's lowering and the CPU's had no pattern
 // for these without another high-level vector op in the body
 // (--sim-lower-vector-ops). Integer arithmetic, so the values are exact:
 // with x = A[i], row = (x, x+1, x+2, x+3), im = i % 4 and ir = i % 3, A[i]
-// becomes (3 sum(row) + sum(row[:im]) + 2 sum(row[:3]) + ir sum(row[:im]))
+// becomes (4 sum(row) + sum(row[:im]) + 2 sum(row[:3]) + ir sum(row[:im]))
 // mod 1000.
 sim.simulation @vector_shapes range(37) dt(1.0e-3 : f32) max_steps(4) {
   sim.buffer @A : f32 init {
@@ -42,7 +42,11 @@ sim.simulation @vector_shapes range(37) dt(1.0e-3 : f32) max_steps(4) {
     %sel3 = arith.select %dm, %m2, %z34 : vector<3x4xi1>, vector<3x4xi32>
     %f3 = vector.shape_cast %sel3 : vector<3x4xi32> to vector<12xi32>
     %s4 = vector.reduction <add>, %f3 : vector<12xi32> into i32
-    %a = arith.addi %s1, %s2 : i32
+    %z0 = arith.constant dense<0> : vector<i32>
+    %scan, %last = vector.scan <add>, %row, %z0 {inclusive = true, reduction_dim = 0 : i64} : vector<4xi32>, vector<i32>
+    %s5 = vector.extract %scan[3] : i32 from vector<4xi32>
+    %a0 = arith.addi %s1, %s2 : i32
+    %a = arith.addi %a0, %s5 : i32
     %b = arith.addi %s3, %s4 : i32
     %r = arith.addi %a, %b : i32
     %c1000 = arith.constant 1000 : i32

@@ -9,7 +9,7 @@ expected = []
 for i in range(len(values)):
     row = [i + k for k in range(4)]
     im, ir = i % 4, i % 3
-    total = 3 * sum(row) + sum(row[:im]) + 2 * sum(row[:3]) + ir * sum(row[:im])
+    total = 4 * sum(row) + sum(row[:im]) + 2 * sum(row[:3]) + ir * sum(row[:im])
     expected.append(float(np.fmod(total, 1000)))
 wrong = [i for i in range(len(values)) if values[i] != expected[i]]
 print("items", len(values), "wrong", len(wrong),

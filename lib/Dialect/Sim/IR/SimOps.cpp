@@ -392,6 +392,24 @@ static LogicalResult verifyVectorPosition(Operation *op,
   return success();
 }
 
+/// A body is compiled into kernels of its own, without the module's
+/// functions. Checked when the op holding the body is verified, before the
+/// symbol uses: `sim.simulation` is a symbol table, so a call's own
+/// verifier would say that the function does not exist.
+static LogicalResult verifyNoCalls(Operation *holder) {
+  WalkResult result = holder->walk([&](Operation *op) {
+    if (!llvm::is_contained({"func.call", "func.call_indirect", "llvm.call"},
+                            op->getName().getStringRef()))
+      return WalkResult::advance();
+    op->emitOpError() << "calls a function, which a body cannot: its "
+                         "kernels are compiled without the module's "
+                         "functions; write the function's operations in the "
+                         "body itself";
+    return WalkResult::interrupt();
+  });
+  return failure(result.wasInterrupted());
+}
+
 /// The scalar types every backend computes with: integers of at most 64
 /// bits (and index), f16, f32 and f64. Wider integers and other floats
 /// (f80, f128, the 8-bit floats) make LLVM's back ends stop with a fatal
@@ -410,6 +428,20 @@ static LogicalResult verifyScalarTypes(Region &body) {
     return Type();
   };
   WalkResult result = body.walk([&](Operation *op) {
+    // LLVM's powi takes a C int exponent: x86's back end stops with "POWI
+    // exponent does not match sizeof(int)" on another width. (Matched by
+    // name: the sim dialect does not depend on the math dialect.)
+    if (op->getName().getStringRef() == "math.fpowi" &&
+        op->getNumOperands() == 2) {
+      Type exponent = getElementTypeOrSelf(op->getOperand(1).getType());
+      if (!exponent.isInteger(32)) {
+        op->emitOpError() << "raises to an exponent of type " << exponent
+                          << ", which no backend lowers (LLVM's powi takes "
+                             "an i32 exponent); convert the exponent to i32 "
+                             "with arith.trunci or arith.extsi";
+        return WalkResult::interrupt();
+      }
+    }
     for (TypeRange types :
          {TypeRange(op->getResultTypes()), TypeRange(op->getOperandTypes())})
       for (Type type : types) {
@@ -772,6 +804,8 @@ void BufferOp::getAsmBlockArgumentNames(Region &region,
 }
 
 LogicalResult BufferOp::verify() {
+  if (failed(verifyNoCalls(*this)))
+    return failure();
   Type elementType = getElementType();
   if (!isValidElementType(elementType))
     return emitOpError() << "expects an element type of f32, f64, or a vector "
@@ -816,6 +850,8 @@ void TotalOp::getAsmBlockArgumentNames(Region &region,
 }
 
 LogicalResult TotalOp::verify() {
+  if (failed(verifyNoCalls(*this)))
+    return failure();
   Type type = getValueType();
   if (!type.isF32() && !type.isF64())
     return emitOpError() << "expects a total of type f32 or f64, but got "
@@ -869,6 +905,8 @@ bool ComponentOp::writesBuffer(FlatSymbolRefAttr buffer) {
 }
 
 LogicalResult ComponentOp::verify() {
+  if (failed(verifyNoCalls(*this)))
+    return failure();
   ArrayAttr writes = getWrites();
   if (writes.empty())
     return emitOpError() << "expects to write at least one buffer";
