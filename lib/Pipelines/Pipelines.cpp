@@ -34,6 +34,8 @@ void mlir::sim::buildFrontEndPipeline(OpPassManager &pm,
   SimSubstepLegalityOptions legalityOptions;
   legalityOptions.remarks = options.strategy != Strategy::simple &&
                             options.strategy != Strategy::traditional;
+  // Pairs are lts's alone.
+  legalityOptions.pairRemarks = options.strategy == Strategy::lts;
   simulation.addPass(createSimSubstepLegality(legalityOptions));
   SimPlanMemoryOptions planOptions;
   planOptions.strategy = options.strategy;

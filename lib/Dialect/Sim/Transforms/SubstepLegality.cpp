@@ -55,6 +55,15 @@ struct SubstepLegalityPass
     return remark;
   }
 
+  /// A remark about a flux or item pair, which only lts forms: emitted
+  /// with `remarks` and `pair-remarks`.
+  InFlightDiagnostic explainPair(Operation *op) {
+    InFlightDiagnostic remark = explain(op);
+    if (!pairRemarks)
+      remark.abandon();
+    return remark;
+  }
+
   void runOnOperation() override {
     if (failed(checkBeforeInterpolation(getOperation(), getArgument(),
                                         "its sub-stepping verdicts are")))
@@ -153,7 +162,7 @@ struct SubstepLegalityPass
     }
     StringRef readerName = reader ? reader.getSymName() : StringRef();
     auto refuse = [&]() {
-      InFlightDiagnostic remark = explain(writer);
+      InFlightDiagnostic remark = explainPair(writer);
       if (fluxPair)
         remark << "under lts @" << name
                << " and the readers of its fluxes take the big step as under "
@@ -339,22 +348,22 @@ struct SubstepLegalityPass
           << "'s state is not conserved; boundary(zero) closes the ends, "
              "boundary(wrap) makes a ring";
     if (fluxPair)
-      explain(writer) << "@" << name << " and @" << readerName
-                      << " form a flux pair: under lts every interface of "
-                         "its fluxes steps with the coarsest block that "
-                         "reads it (at "
-                      << fluxWindow->str() << "), and @" << readerName
-                      << "'s blocks take local time steps (window "
-                      << window.str() << ")";
+      explainPair(writer) << "@" << name << " and @" << readerName
+                          << " form a flux pair: under lts every interface of "
+                             "its fluxes steps with the coarsest block that "
+                             "reads it (at "
+                          << fluxWindow->str() << "), and @" << readerName
+                          << "'s blocks take local time steps (window "
+                          << window.str() << ")";
     else
-      explain(writer) << "@" << name << " and @" << readerName
-                      << " form an item pair: under lts @" << name
-                      << " evaluates an item whenever its block starts a "
-                         "sub-step, so its num_steps no longer bounds the big "
-                         "step, and @"
-                      << readerName
-                      << "'s blocks take local time steps (window "
-                      << window.str() << ")";
+      explainPair(writer)
+          << "@" << name << " and @" << readerName
+          << " form an item pair: under lts @" << name
+          << " evaluates an item whenever its block starts a "
+             "sub-step, so its num_steps no longer bounds the big "
+             "step, and @"
+          << readerName << "'s blocks take local time steps (window "
+          << window.str() << ")";
   }
 
   /// A schedule that starts a step at another component and under which

@@ -1,4 +1,12 @@
 // RUN: sim-opt %s --split-input-file --sim-substep-legality --verify-diagnostics | FileCheck %s
+//
+// Pairs are lts's alone: the front end of another strategy (pair-remarks
+// off) records the same attributes without a word about pairs.
+// RUN: sim-opt %s --split-input-file --sim-substep-legality=pair-remarks=false 2>/dev/null | FileCheck %s
+// RUN: sim-opt %S/../../../Integration/Inputs/force-integrate.mlir --sim-front-end=strategy=hip 2>&1 >/dev/null | FileCheck %s --check-prefix=QUIET --allow-empty
+// RUN: sim-opt %S/../../../Integration/Inputs/force-integrate.mlir --sim-front-end=strategy=lts 2>&1 >/dev/null | FileCheck %s --check-prefix=LTS
+// QUIET-NOT: pair
+// LTS: @Force and @Integrate form an item pair
 
 // Item pairs (docs/Model.md, "Item pairs"): the first component of the
 // step bounds the big step and writes values that one component reads only

@@ -132,6 +132,9 @@ def SimSubstepLegality
   let options = [
     Option<"remarks", "remarks", "bool", /*default=*/"true",
            "Explain every grid_sync verdict and pair in a remark">,
+    Option<"pairRemarks", "pair-remarks", "bool", /*default=*/"true",
+           "With remarks: also explain the flux and item pairs (which only "
+           "the lts strategy forms), and why a pair's shape forms none">,
   ];
 }
 
