@@ -487,6 +487,8 @@ TEST_F(SimRun, DumpsNpyFilesAndJson) {
   EXPECT_EQ(metrics["backend"], "cpu");
   EXPECT_EQ(metrics["range"], 100);
   EXPECT_EQ(metrics["dt"], 0.01);
+  // Every parameter with the value the run used (here its default).
+  EXPECT_EQ(metrics["params"], Json({{"k", "2"}, {"poison", "-1"}}));
   EXPECT_EQ(metrics["steps"], 7);
   EXPECT_EQ(metrics["steps_done"], 7);
   EXPECT_EQ(metrics["repeat"], 3);

@@ -642,6 +642,13 @@ void runMain(Results &results, Sessions &sessions, const sim_bundle *bundle,
   check(sim_session_get(session, "dt", dt, sizeof dt));
   main.dtText = dt;
   main.dt = std::strtod(dt, nullptr);
+  for (int32_t p = 0; p < sim_bundle_num_params(bundle); ++p) {
+    sim_param_info param;
+    char value[64];
+    if (sim_bundle_param(bundle, p, &param) == SIM_OK &&
+        sim_session_get(session, param.name, value, sizeof value) == SIM_OK)
+      main.params.emplace_back(param.name, value);
+  }
   main.groupSize = sim_session_group_size(session);
   main.steps = options.steps;
   main.repeat = options.repeat;
@@ -1265,10 +1272,13 @@ int run(Options options) {
   if (results.check && !results.check->pass())
     return kExitFailure;
   if (!results.nonFinite.empty()) {
-    std::fprintf(stderr,
-                 "sim-run: error: the run ended with NaN or infinite values "
-                 "(--check-finite stops at the first and says where it "
-                 "appeared)\n");
+    // With --check-finite on, no base step made them (the state held them
+    // before the first, or the run took none): no hint to turn it on.
+    std::fprintf(
+        stderr, "sim-run: error: the run ended with NaN or infinite values%s\n",
+        options.checkFinite ? ""
+                            : " (--check-finite stops at the first "
+                              "and says where it appeared)");
     return kExitNonFinite;
   }
   return kExitSuccess;

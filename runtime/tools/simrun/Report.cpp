@@ -533,6 +533,10 @@ std::string toJson(const Results &results) {
   json["backend_note"] = main.backendNote;
   json["range"] = main.range;
   json["dt"] = number(main.dt);
+  // The values the run used, so that a report says which run it was.
+  json["params"] = Json::object();
+  for (const auto &[name, value] : main.params)
+    json["params"][name] = value;
   json["group_size"] = main.groupSize;
   json["subnormals"] = main.flushSubnormals ? "flush-to-zero" : "ieee";
   json["steps"] = main.steps;

@@ -45,6 +45,9 @@ struct MainRun {
   int64_t range = 0;
   std::string dtText;
   double dt = 0;
+  /// Every parameter of the scene and the value the run used (a --set or
+  /// the default), as the runtime writes it.
+  std::vector<std::pair<std::string, std::string>> params;
   int64_t groupSize = 0;
   int64_t steps = 0, repeat = 1, maxSteps = 1;
   /// The bundle's floating-point mode (sim-translate --sim-ftz).
