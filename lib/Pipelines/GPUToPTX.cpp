@@ -13,7 +13,7 @@
 //                                           rounding on every backend)
 //     sim-gpu-narrow-loop-counters          only with narrow-loop-counters
 //                                           (--sim-gpu-narrow-loops)
-//     sim-gpu-unroll-loops{factor}          only with unroll > 1
+//     sim-gpu-unroll-loops{factor}          only with unroll other than 1
 //                                           (--sim-gpu-unroll)
 //     convert-scf-to-cf                     loops and ifs to blocks
 //     expand-strided-metadata               subviews to reinterpret_casts
@@ -126,7 +126,8 @@ void mlir::sim::buildSimGPUToPTXPipeline(OpPassManager &pm,
   kernels.addPass(createSimFusedMultiplyAdd());
   if (target.narrowLoopCounters)
     kernels.addPass(createSimGPUNarrowLoopCounters());
-  if (target.unroll > 1) {
+  // (A factor of 0 goes to the pass too, which refuses it.)
+  if (target.unroll != 1) {
     SimGPUUnrollLoopsOptions unroll;
     unroll.factor = target.unroll;
     kernels.addPass(createSimGPUUnrollLoops(unroll));

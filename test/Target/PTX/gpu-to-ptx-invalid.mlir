@@ -13,6 +13,8 @@
 // RUN:   --sim-chip=
 // RUN: sim-translate --gpu-to-ptx %t/compute-chip.mlir --verify-diagnostics \
 // RUN:   --sim-chip=compute_90
+// RUN: sim-translate --gpu-to-ptx %t/unroll-zero.mlir --verify-diagnostics \
+// RUN:   --sim-gpu-unroll=0
 // RUN: sim-translate --gpu-to-ptx %t/unknown-feature.mlir \
 // RUN:   --verify-diagnostics --sim-features=+ptx99
 // RUN: sim-translate --gpu-to-ptx %t/unsigned-feature.mlir \
@@ -112,6 +114,17 @@ module attributes {gpu.container_module} {
 // version is sm_20").
 module attributes {gpu.container_module} {
   // expected-error @+1 {{unknown NVIDIA GPU 'compute_90': LLVM's NVPTX back end knows chips such as sm_80, sm_90, sm_90a and sm_100}}
+  gpu.module @kernels {
+    gpu.func @empty() kernel {
+      gpu.return
+    }
+  }
+}
+
+//--- unroll-zero.mlir
+// --sim-gpu-unroll=0 was taken as 1, though its help says 1 to 32.
+module attributes {gpu.container_module} {
+  // expected-error @+1 {{sim-gpu-unroll-loops: the factor must be from 1 to 32, not 0}}
   gpu.module @kernels {
     gpu.func @empty() kernel {
       gpu.return
