@@ -28,6 +28,21 @@ const GPUTargetOptions &getTargetDefaults() {
 }
 } // namespace
 
+bool StrategyParser::parse(llvm::cl::Option &option, llvm::StringRef argName,
+                           llvm::StringRef arg, Strategy &value) {
+  for (const auto &known : Values)
+    if (known.Name == arg) {
+      value = known.V.getValue();
+      return false;
+    }
+  std::string names;
+  for (const auto &known : Values)
+    names += (names.empty() ? "" : ", ") + known.Name.str();
+  if (arg.empty())
+    return option.error("needs a strategy name (" + names + ")");
+  return option.error("'" + arg + "' is not a strategy (" + names + ")");
+}
+
 TranslationOptions::TranslationOptions()
     : category("Translation options (--sim-to-ptx, --gpu-to-ptx, "
                "--sim-to-bundle)"),

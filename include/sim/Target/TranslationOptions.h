@@ -26,6 +26,15 @@ namespace mlir::sim {
 
 struct GPUTargetOptions;
 
+/// Parses a strategy name of --sim-strategy and --sim-strategies, naming
+/// the strategies there are when a name is none of them (LLVM's parser
+/// says "Cannot find option named ''!" for an empty list).
+struct StrategyParser : llvm::cl::parser<Strategy> {
+  using llvm::cl::parser<Strategy>::parser;
+  bool parse(llvm::cl::Option &option, llvm::StringRef argName,
+             llvm::StringRef arg, Strategy &value);
+};
+
 /// The options of sim-translate's translations. Their defaults are those of
 /// the pipelines' option structs (lib/Pipelines).
 struct TranslationOptions {
@@ -33,10 +42,10 @@ struct TranslationOptions {
 
   llvm::cl::OptionCategory category;
   /// --sim-strategy: the strategy of --sim-to-ptx.
-  llvm::cl::opt<Strategy> strategy;
+  llvm::cl::opt<Strategy, false, StrategyParser> strategy;
   /// --sim-strategies: the strategies of --sim-to-bundle (empty: all five,
   /// without lts for a distributed bundle).
-  llvm::cl::list<Strategy> strategies;
+  llvm::cl::list<Strategy, bool, StrategyParser> strategies;
   /// --sim-group-size: threads per thread group.
   llvm::cl::opt<unsigned> groupSize;
   /// --sim-chip, --sim-features, --sim-opt-level, --sim-cuda-path: the GPU
