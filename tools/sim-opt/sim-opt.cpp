@@ -24,6 +24,11 @@ int main(int argc, char **argv) {
     llvm::errs() << "sim-opt: error: " << runtimeFile << "\n";
     return 1;
   }
+  std::string overInput = mlir::sim::describeOutputOverInput(argc, argv);
+  if (!overInput.empty()) {
+    llvm::errs() << "sim-opt: error: " << overInput << "\n";
+    return 1;
+  }
 
   mlir::DialectRegistry registry;
   mlir::sim::registerSimToolDialects(registry);

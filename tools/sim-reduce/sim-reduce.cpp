@@ -29,11 +29,34 @@
 #include "mlir/Tools/mlir-reduce/MlirReduceMain.h"
 
 int main(int argc, char **argv) {
+  std::string overInput = mlir::sim::describeOutputOverInput(argc, argv);
+  if (!overInput.empty()) {
+    llvm::errs() << "sim-reduce: error: " << overInput << "\n";
+    return 1;
+  }
   mlir::sim::registerSimToolPasses();
 
   mlir::DialectRegistry registry;
   mlir::sim::registerSimToolDialects(registry);
   mlir::sim::registerSimReductionPatterns(registry);
   mlir::MLIRContext context(registry);
+  // The reducer verifies every candidate it makes, and most fail (an op
+  // whose operand was removed, a component that writes a removed buffer):
+  // their errors are no news and buried the one message that is, the
+  // warning that the input itself is not interesting (the test script
+  // exits 0 on it, the reverse of what mlir-reduce wants), which the
+  // context's default handler does not print at all. The input's parse
+  // errors go through the main's own handler.
+  context.getDiagEngine().registerHandler([](mlir::Diagnostic &diagnostic) {
+    if (diagnostic.getSeverity() != mlir::DiagnosticSeverity::Warning)
+      return mlir::success();
+    std::string message = diagnostic.str();
+    if (llvm::StringRef(message).starts_with("uninterested module"))
+      message = "the input is not interesting, so nothing was reduced: the "
+                "test script exits with status 0 on it, and a candidate is "
+                "interesting when it exits with another";
+    llvm::errs() << "sim-reduce: warning: " << message << "\n";
+    return mlir::success();
+  });
   return mlir::failed(mlir::mlirReduceMain(argc, argv, context));
 }

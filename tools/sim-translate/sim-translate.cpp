@@ -20,6 +20,11 @@ int main(int argc, char **argv) {
     llvm::errs() << "sim-translate: error: " << runtimeFile << "\n";
     return 1;
   }
+  std::string overInput = mlir::sim::describeOutputOverInput(argc, argv);
+  if (!overInput.empty()) {
+    llvm::errs() << "sim-translate: error: " << overInput << "\n";
+    return 1;
+  }
   mlir::sim::registerSimTranslations();
   // The translations run pass pipelines: --mlir-print-ir-after-failure,
   // --mlir-timing and friends apply to them.

@@ -17,9 +17,11 @@
 
 #include "mlir/IR/MLIRContext.h"
 #include "llvm/Support/CommandLine.h"
+#include "llvm/Support/FileSystem.h"
 
 #include <cstdio>
 #include <string>
+#include <vector>
 
 namespace mlir::sim {
 
@@ -88,6 +90,36 @@ inline std::string describeRuntimeFileInput(int argc, char **argv) {
              "' is a sim-run checkpoint (.simc), not MLIR: continue it with "
              "sim-run <bundle> --restart";
   }
+  return "";
+}
+
+/// What is wrong with an output file (`-o FILE`, `-o=FILE`, `--o=FILE`) that
+/// is one of the input files: upstream's mains open the output before they
+/// run, replace it with the result, and delete it when the run fails, so
+/// the scene would be lost or turned into a bundle. Empty when none is.
+inline std::string describeOutputOverInput(int argc, char **argv) {
+  std::vector<llvm::StringRef> inputs, outputs;
+  for (int i = 1; i < argc; ++i) {
+    llvm::StringRef arg(argv[i]);
+    if (arg == "-o" || arg == "--o") {
+      if (i + 1 < argc)
+        outputs.push_back(argv[++i]);
+      continue;
+    }
+    if (arg.consume_front("-o=") || arg.consume_front("--o=")) {
+      outputs.push_back(arg);
+      continue;
+    }
+    if (!arg.starts_with("-"))
+      inputs.push_back(arg);
+  }
+  for (llvm::StringRef output : outputs)
+    for (llvm::StringRef input : inputs)
+      if (llvm::sys::fs::equivalent(input, output))
+        return "the output '" + output.str() + "' is the input '" +
+               input.str() +
+               "': it would be replaced by the result, or deleted if the "
+               "run fails; write the output to another file";
   return "";
 }
 

@@ -9,8 +9,21 @@
 //
 // RUN: env SIM_OPT=sim-opt sim-reduce %s \
 // RUN:   --reduction-tree='traversal-mode=0 test=%S/Inputs/gather-remark.sh' \
-// RUN:   -o %t.mlir
+// RUN:   -o %t.mlir 2> %t.err
 // RUN: FileCheck %s --input-file=%t.mlir
+//
+// The errors of the candidates that do not verify are not printed: a
+// successful reduction is quiet.
+// RUN: FileCheck %s --allow-empty --check-prefix=QUIET --input-file=%t.err
+// QUIET-NOT: {{.}}
+//
+// A test script that calls the input itself uninteresting (exits with 0:
+// the reverse of mlir-reduce's convention) gets a warning that says so,
+// not a silent failure.
+// RUN: not sim-reduce %s --reduction-tree='traversal-mode=0 test=/bin/true' \
+// RUN:   -o %t.none.mlir 2>&1 | FileCheck %s --check-prefix=NONE
+// RUN: not test -e %t.none.mlir
+// NONE: sim-reduce: warning: the input is not interesting, so nothing was reduced: the test script exits with status 0 on it
 //
 // The reduced scene still makes the remark.
 // RUN: sim-opt %t.mlir --sim-substep-legality -o %t.out 2>&1 \
