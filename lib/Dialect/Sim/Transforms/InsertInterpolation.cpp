@@ -17,6 +17,7 @@
 //
 //===----------------------------------------------------------------------===//
 
+#include "sim/Analysis/DependencyAnalysis.h"
 #include "sim/Dialect/Sim/IR/SimOps.h"
 #include "sim/Dialect/Sim/Transforms/Passes.h"
 
@@ -201,6 +202,19 @@ struct InsertInterpolationPass
     if (failed(checkSchedule(simulation)))
       return signalPassFailure();
 
+    // Reads whose index the analysis proves to be the body's own item
+    // although it is another value (`%i + 0`, a round trip through i64):
+    // their loads take `%i` itself, so that every lowering sees the own
+    // item as the own item (a local load at another index reads another
+    // item's time levels, which an `interp(none)` or `#sim.hermite` buffer
+    // cannot give under lts). Taken before any read is replaced.
+    ownItemReads.clear();
+    auto &analysis = getAnalysis<DependencyAnalysis>();
+    simulation.walk([&](ReadOp read) {
+      if (analysis.getPattern(read).isOwn())
+        ownItemReads.insert(read);
+    });
+
     bool subSteps = isSubSteppingStrategy(strategy.getValue());
     for (ComponentOp component : simulation.getComponents()) {
       if (component.hasNumSteps() &&
@@ -278,8 +292,11 @@ struct InsertInterpolationPass
                             FlatSymbolRefAttr::get(buffer.getSymNameAttr()),
                             index, VersionAttr::get(&getContext(), version));
     };
+    Value item = kind == BodyKind::Evaluate ? component.getEvaluateItem()
+                                            : component.getNumStepsItem();
+    Value index = ownItemReads.contains(read) ? item : read.getIndex();
     auto load = [&](BufferOp buffer, Version version) -> Value {
-      return loadAt(rewriter, buffer, version, read.getIndex());
+      return loadAt(rewriter, buffer, version, index);
     };
     BufferOp buffer = simulation.lookupBuffer(read.getBufferAttr());
     switch (read.getRole().value()) {
@@ -407,7 +424,7 @@ struct InsertInterpolationPass
       }
       return load(buffer, Version::cache);
     }
-    return interpolateAt(rewriter, read.getIndex());
+    return interpolateAt(rewriter, index);
   }
 
   static CacheAttr findCache(ComponentOp component, FlatSymbolRefAttr buffer) {
@@ -420,6 +437,8 @@ struct InsertInterpolationPass
 
   /// The cache fills of the body being rewritten, by buffer.
   llvm::DenseMap<StringAttr, FillCacheOp> fills;
+  /// The reads at the body's own item (runOnOperation).
+  llvm::DenseSet<Operation *> ownItemReads;
 };
 
 } // namespace
