@@ -23,40 +23,60 @@ namespace sim::mpi {
 
 namespace {
 
+/// SIM_MPI_MAX_MESSAGE on this rank: its byte count, the default
+/// (INT_MAX) when unset, or 0 when it is not a number from 1 to INT_MAX.
+size_t parseMaxMessage(const char *text) {
+  if (!text || !*text)
+    return size_t(INT_MAX);
+  char *end = nullptr;
+  errno = 0;
+  unsigned long long value = std::strtoull(text, &end, 10);
+  if (*end != '\0' || errno == ERANGE || value == 0 ||
+      value > (unsigned long long)INT_MAX || *text == '-' || *text == '+' ||
+      std::isspace((unsigned char)*text))
+    return 0;
+  return size_t(value);
+}
+
 /// The most bytes one MPI message carries: MPI counts are ints, so a
 /// longer transfer goes as several messages of at most this many bytes.
 /// SIM_MPI_MAX_MESSAGE lowers it (tests split small transfers with it).
-size_t maxMessage() {
-  static const size_t limit = [] {
-    size_t bytes = size_t(INT_MAX);
-    if (const char *text = std::getenv("SIM_MPI_MAX_MESSAGE"); text && *text) {
-      // A value that is not a byte count from 1 up would be ignored
-      // silently: refuse it.
-      char *end = nullptr;
-      errno = 0;
-      unsigned long long value = std::strtoull(text, &end, 10);
-      if (*end != '\0' || errno == ERANGE || value == 0 ||
-          value > (unsigned long long)INT_MAX || *text == '-' || *text == '+' ||
-          std::isspace((unsigned char)*text)) {
-        // Every rank reads the same environment (mpirun passes it on):
-        // rank 0 says so once, then all stop.
-        int rank = 0;
-        MPI_Comm_rank(MPI_COMM_WORLD, &rank);
-        if (rank == 0)
-          std::fprintf(stderr,
-                       "sim-run: error: SIM_MPI_MAX_MESSAGE='%s' is not a "
-                       "number of bytes from 1 to %d\n",
-                       text, INT_MAX);
-        std::fflush(stderr);
-        MPI_Barrier(MPI_COMM_WORLD);
-        MPI_Abort(MPI_COMM_WORLD, 2);
-        std::exit(2);
-      }
-      bytes = size_t(value);
-    }
-    return bytes;
-  }();
-  return limit;
+/// Set by agreeOnMaxMessage before the first transfer.
+size_t messageLimit = size_t(INT_MAX);
+size_t maxMessage() { return messageLimit; }
+
+/// Reads SIM_MPI_MAX_MESSAGE on every rank and agrees on it: a rank that
+/// splits a transfer into pieces makes other collective calls than one
+/// that does not, so ranks with different limits (mpirun passes a
+/// variable to other machines only with -x) would wait for each other
+/// forever. A value that is not a byte count, or that differs between the
+/// ranks, stops them all with a message (status 2, a usage error).
+void agreeOnMaxMessage(int rank) {
+  const char *text = std::getenv("SIM_MPI_MAX_MESSAGE");
+  size_t limit = parseMaxMessage(text);
+  long long mine[2] = {(long long)limit, -(long long)limit}, all[2] = {0, 0};
+  MPI_Allreduce(mine, all, 2, MPI_LONG_LONG, MPI_MIN, MPI_COMM_WORLD);
+  long long lowest = all[0], highest = -all[1];
+  if (lowest > 0 && lowest == highest) {
+    messageLimit = limit;
+    return;
+  }
+  if (limit == 0)
+    std::fprintf(stderr,
+                 "sim-run: error: SIM_MPI_MAX_MESSAGE='%s' (rank %d) is not "
+                 "a number of bytes from 1 to %d\n",
+                 text, rank, INT_MAX);
+  else if (lowest > 0 && rank == 0)
+    std::fprintf(stderr,
+                 "sim-run: error: the ranks disagree on SIM_MPI_MAX_MESSAGE "
+                 "(from %lld to %lld bytes; unset is %d): set it alike on "
+                 "every rank (mpirun -x SIM_MPI_MAX_MESSAGE passes it to "
+                 "other machines)\n",
+                 lowest, highest, INT_MAX);
+  std::fflush(stderr);
+  MPI_Barrier(MPI_COMM_WORLD);
+  MPI_Abort(MPI_COMM_WORLD, 2);
+  std::exit(2);
 }
 
 int allreduce(int64_t *values, int32_t count, MPI_Op op) {
@@ -228,8 +248,8 @@ extern "C" {
 __attribute__((visibility("default"))) void *
 sim_mpi_open(int *argc, char ***argv, sim_mpi_world_info *info) {
   auto *world = new sim::mpi::World(argc, argv);
-  // Read (and checked) now, on every rank alike, not at the first exchange.
-  sim::mpi::maxMessage();
+  // Read, checked and agreed on now, not at the first exchange.
+  sim::mpi::agreeOnMaxMessage(world->rank());
   info->communicator = world->communicator();
   info->rank = world->rank();
   info->size = world->size();

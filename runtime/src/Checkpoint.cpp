@@ -449,6 +449,7 @@ CheckpointFile parseCheckpoint(std::vector<uint8_t> bytes,
     error("the manifest does not verify as a checkpoint FlatBuffer (an "
           "offset, length or nesting outside it)");
   CheckpointFile result;
+  result.checksum = header.checksum;
   result.name = name;
   ckpt::GetSizePrefixedCheckpoint(aligned.data())->UnPackTo(&result.manifest);
   result.dataStart = alignUp(schema::kHeaderSize + manifestBytes);
@@ -641,6 +642,20 @@ void restartFromCheckpointFile(Executor &executor, const std::string &path) {
             file = readCheckpoint(path);
             restart = checkRestart(executor, *file);
           });
+  // Each rank restores its own items from its own file: files of one
+  // base step of different runs (a stale copy on one node's disk) would
+  // pass every check above and mix two states silently.
+  if (Communicator *comm = ranksOf(executor)) {
+    int64_t both[2] = {int64_t(file->checksum), -int64_t(file->checksum)};
+    comm->minimum(both, 2);
+    if (both[0] != -both[1])
+      fail(SIM_ERROR_CHECKPOINT,
+           "the ranks restart from different checkpoints (CRC-32 from " +
+               hex32(uint32_t(both[0])) + " to " + hex32(uint32_t(-both[1])) +
+               " over the " + std::to_string(comm->size()) +
+               " ranks; this rank's is '" + path +
+               "'): give every rank a copy of the same checkpoint");
+  }
   applyRestart(executor, *file, restart);
 }
 

@@ -54,6 +54,8 @@ struct CheckpointFile {
   ckpt::CheckpointT manifest;
   std::vector<uint8_t> bytes;
   uint64_t dataStart = 0;
+  /// The CRC-32 of everything after the header, as the header gives it.
+  uint32_t checksum = 0;
 
   const uint8_t *data(const ckpt::StateT &state) const {
     return bytes.data() + dataStart + state.offset;
