@@ -65,9 +65,10 @@ Session::Session(std::shared_ptr<const Bundle> bundleIn,
     std::vector<std::string> present;
     for (Strategy s : bundle->strategies())
       present.push_back(strategyName(s));
-    fail(SIM_ERROR_BUNDLE, "bundle '" + bundle->name +
-                               "' has no plan for strategy '" + name +
-                               "' (it has: " + listNames(present) + ")");
+    // The strategy is the caller's choice among those the bundle has.
+    fail(SIM_ERROR_INVALID_ARGUMENT,
+         "bundle '" + bundle->name + "' has no plan for strategy '" + name +
+             "' (it has: " + listNames(present) + ")");
   }
   bool hasPtx = !plan_->ptx.empty();
   const schema::CpuCodeT *cpu = bundle->cpuCode(*plan_);

@@ -409,7 +409,7 @@ TEST(Executor, ReportsProgressAfterEachSynchronisation) {
 TEST(Executor, NamesTheCodeABackendLacks) {
   EXPECT_NE(
       errorOf([] { Session s(decay(), cpuOptions(SIM_STRATEGY_TRADITIONAL)); },
-              SIM_ERROR_BUNDLE)
+              SIM_ERROR_INVALID_ARGUMENT)
           .find("bundle 'decay.simb' has no plan for strategy "
                 "'traditional' (it has: simple, hip)"),
       std::string::npos);

@@ -158,6 +158,10 @@ void stopIfInterrupted(const std::string &what) {
                                              "; nothing was run"};
 }
 
+/// The scene sim-run translated for this run and the temporary bundle it
+/// runs, for messages that would name the bundle.
+std::string translatedScene, translatedBundle;
+
 /// Translates a .mlir scene into the temporary bundle `bundle`, with the
 /// compile-time settings `compiled` (NAME=VALUE) applied by
 /// --sim-set-params, for the strategies `strategies` (sim-translate's
@@ -234,6 +238,32 @@ void translate(const std::string &scene, TemporaryFile &bundle,
              (WIFEXITED(status)
                   ? " (exit status " + std::to_string(WEXITSTATUS(status)) + ")"
                   : std::string(" (killed by a signal)")));
+  translatedScene = scene;
+  translatedBundle = bundle.path();
+}
+
+/// Starts the measured session at the --restart checkpoint. A checkpoint
+/// of another bundle, where the input is a scene sim-run compiled, names
+/// the scene rather than the temporary bundle, and says what decides the
+/// bundle: the strategies --strategy and --reference name.
+void restartMeasured(sim_session *session, const std::string &restart) {
+  if (translatedScene.empty())
+    return startAt(session, restart);
+  if (sim_session_restart(session, restart.c_str()) == SIM_OK)
+    return;
+  std::string message = sim_last_error();
+  std::string temporary = "'" + translatedBundle + "'";
+  for (size_t at = message.find(temporary); at != std::string::npos;
+       at = message.find(temporary))
+    message.replace(at, temporary.size(),
+                    "the compile of '" + translatedScene + "'");
+  if (message.find("belongs to another bundle") != std::string::npos)
+    message += "; sim-run compiles a .mlir input for the strategies that "
+               "--strategy and --reference name: restart with the same "
+               "ones as the run that wrote the checkpoint, or compile the "
+               "scene once with sim-translate --sim-to-bundle and run "
+               "that bundle";
+  runError("--restart: " + message);
 }
 
 bool isBundle(const std::string &path) {
@@ -397,7 +427,7 @@ Sessions createSessions(const sim_bundle *bundle, const Options &options) {
   // here, before anything runs. --check's reference executor restarts from
   // the same checkpoint.
   if (!options.restart.empty()) {
-    startAt(measured, options.restart);
+    restartMeasured(measured, options.restart);
     sessions.mainStarted = true;
     int64_t at = sim_session_time(measured);
     if (at > options.steps)
