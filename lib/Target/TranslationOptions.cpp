@@ -43,6 +43,15 @@ bool StrategyParser::parse(llvm::cl::Option &option, llvm::StringRef argName,
   return option.error("'" + arg + "' is not a strategy (" + names + ")");
 }
 
+bool OptLevelParser::parse(llvm::cl::Option &option, llvm::StringRef argName,
+                           llvm::StringRef arg, unsigned &value) {
+  if (llvm::cl::parser<unsigned>::parse(option, argName, arg, value))
+    return true;
+  if (value > 3)
+    return option.error("'" + arg + "' is not an optimization level (0 to 3)");
+  return false;
+}
+
 TranslationOptions::TranslationOptions()
     : category("Translation options (--sim-to-ptx, --gpu-to-ptx, "
                "--sim-to-bundle)"),

@@ -26,6 +26,15 @@ namespace mlir::sim {
 
 struct GPUTargetOptions;
 
+/// Parses --sim-opt-level, refusing levels LLVM does not have on the
+/// command line (the GPU back end refused them only after the front end
+/// had run, once per strategy).
+struct OptLevelParser : llvm::cl::parser<unsigned> {
+  using llvm::cl::parser<unsigned>::parser;
+  bool parse(llvm::cl::Option &option, llvm::StringRef argName,
+             llvm::StringRef arg, unsigned &value);
+};
+
 /// Parses a strategy name of --sim-strategy and --sim-strategies, naming
 /// the strategies there are when a name is none of them (LLVM's parser
 /// says "Cannot find option named ''!" for an empty list).
@@ -52,7 +61,7 @@ struct TranslationOptions {
   /// back end's target (the optimization level applies to CPU kernels too).
   llvm::cl::opt<std::string> chip;
   llvm::cl::opt<std::string> features;
-  llvm::cl::opt<unsigned> optLevel;
+  llvm::cl::opt<unsigned, false, OptLevelParser> optLevel;
   llvm::cl::opt<std::string> cudaPath;
   /// --sim-set-params: name=value pairs that --sim-set-params applies to
   /// the scene before it is compiled (max_steps, range, dt, parameters).

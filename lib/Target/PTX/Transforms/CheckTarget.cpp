@@ -231,7 +231,7 @@ LogicalResult checkLibdevice(gpu::GPUModuleOp module, StringRef libdevice) {
     else
       diag << "there is no libdevice at '" << libdevice << "'";
     diag << "; give the CUDA toolkit's root with the pipeline option "
-            "cuda-path or with $CUDA_HOME";
+            "cuda-path (sim-translate's --sim-cuda-path) or with $CUDA_HOME";
   }
   return failure();
 }
