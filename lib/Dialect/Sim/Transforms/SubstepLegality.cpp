@@ -370,9 +370,23 @@ struct SubstepLegalityPass
   /// `component` reads nothing through the back edge, so that it no longer
   /// bounds the big step; the first such entry in the current order. The
   /// rest of the order is the graph's, or else the current one's.
+  /// A schedule that only moves the bound onto another component that
+  /// reads its own buffers at other items (another stencil, which would
+  /// gain from local steps as much) helps nothing: following the hint would
+  /// make that one's remark suggest the first order back. Those are
+  /// counted in `movesBound`.
   static std::optional<Schedule>
   findScheduleWithoutBound(const DependencyAnalysis &analysis,
-                           ComponentOp component) {
+                           ComponentOp component, bool &movesBound) {
+    movesBound = false;
+    auto readsOwnNeighbours = [&](ComponentOp other) {
+      return llvm::any_of(analysis.getAccesses(other),
+                          [&](const BufferAccess &access) {
+                            return access.body == BodyKind::Evaluate &&
+                                   analysis.getWriter(access.buffer) == other &&
+                                   !access.pattern.isOwn();
+                          });
+    };
     SmallVector<ComponentOp> current = getUserOrder(analysis.getSimulation());
     for (ComponentOp entry : current) {
       if (entry == component)
@@ -386,10 +400,16 @@ struct SubstepLegalityPass
             ArrayRef<ComponentOp>(rotated)}) {
         FailureOr<Schedule> schedule =
             computeSchedule(analysis, order, /*emitDiagnostics=*/false);
-        if (succeeded(schedule) &&
-            !llvm::is_contained(schedule->getHipStepBounds(analysis),
-                                component))
-          return std::move(*schedule);
+        if (failed(schedule))
+          continue;
+        SmallVector<ComponentOp> bounds = schedule->getHipStepBounds(analysis);
+        if (llvm::is_contained(bounds, component))
+          continue;
+        if (llvm::any_of(bounds, readsOwnNeighbours)) {
+          movesBound = true;
+          continue;
+        }
+        return std::move(*schedule);
       }
     }
     return std::nullopt;
@@ -450,8 +470,9 @@ struct SubstepLegalityPass
                 "of the whole scene (per-region big steps are not built, "
                 "docs/Model.md); a component that does not bound it takes "
                 "local time steps";
+      bool movesBound = false;
       if (std::optional<Schedule> other =
-              findScheduleWithoutBound(analysis, component)) {
+              findScheduleWithoutBound(analysis, component, movesBound)) {
         remark << ": 'sim.schedule [";
         llvm::interleaveComma(other->getOrder(), remark, [&](ComponentOp c) {
           remark << "@" << c.getSymName();
@@ -459,6 +480,10 @@ struct SubstepLegalityPass
         remark << "]' would start a step at @" << other->getEntry().getSymName()
                << ", which then reads through the back edge, and @"
                << component.getSymName() << " would not bound it";
+      } else if (movesBound) {
+        remark << "; no order of sim.schedule helps: every other start "
+                  "leaves another component that reads its own neighbours "
+                  "bounding the big step";
       }
       return;
     }

@@ -223,3 +223,56 @@ sim.simulation @hub range(64) dt(1.0e-2 : f32) max_steps(4) {
   sim.schedule [@Hub, @Left, @Right] bounded_by [@Hub]
   sim.observe [@U]
 }
+
+// -----
+
+// Two stencils that read each other: whichever starts the step reads the
+// other's buffer through the back edge and bounds it. Starting at @B would
+// only move the bound onto @B, whose remark would then suggest starting at
+// @A again: the remark names no schedule and says that none helps.
+
+// CHECK-LABEL: sim.simulation @two_stencils
+sim.simulation @two_stencils range(64) dt(1.0e-2 : f32) max_steps(4) {
+  sim.buffer @U : f32 init {
+  ^bb0(%i: index):
+    %c = arith.constant 0.0 : f32
+    sim.yield %c : f32
+  }
+  sim.buffer @V : f32 init {
+  ^bb0(%i: index):
+    %c = arith.constant 0.0 : f32
+    sim.yield %c : f32
+  }
+  // expected-remark-re @+1 {{@A needs a grid-wide barrier between sub-steps: {{.*}}; a component that does not bound it takes local time steps; no order of sim.schedule helps: every other start leaves another component that reads its own neighbours bounding the big step{{$}}}}
+  sim.component @A writes(@U) num_steps {
+  ^bb0(%i: index, %t: i64):
+    %c = arith.constant 2 : i32
+    sim.yield %c : i32
+  } evaluate {
+  ^bb0(%i: index, %t: i64, %n: i32, %dt: f32):
+    %c1 = arith.constant 1 : index
+    %l = arith.subi %i, %c1 : index
+    // expected-note @+1 {{reads @U at i-1}}
+    %ul = sim.read @U[%l] : f32
+    %v = sim.read @V[%i] : f32
+    %s = arith.addf %ul, %v : f32
+    sim.yield %s : f32
+  }
+  // expected-remark-re @+1 {{@B needs a grid-wide barrier between sub-steps: {{.*}}; under lts its blocks of 32 items take local time steps (window i-1..i)}}
+  sim.component @B writes(@V) num_steps {
+  ^bb0(%i: index, %t: i64):
+    %c = arith.constant 2 : i32
+    sim.yield %c : i32
+  } evaluate {
+  ^bb0(%i: index, %t: i64, %n: i32, %dt: f32):
+    %c1 = arith.constant 1 : index
+    %l = arith.subi %i, %c1 : index
+    // expected-note @+1 {{reads @V at i-1}}
+    %vl = sim.read @V[%l] : f32
+    %u = sim.read @U[%i] : f32
+    %s = arith.addf %vl, %u : f32
+    sim.yield %s : f32
+  }
+  sim.schedule [@A, @B] bounded_by [@A]
+  sim.observe [@U, @V]
+}
