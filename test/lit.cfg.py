@@ -44,6 +44,12 @@ config.substitutions.append(
     ("%mlir_lib_dir",
      os.path.join(os.path.dirname(config.llvm_tools_dir), "lib")))
 config.substitutions.append(("%sim_obj_root", config.sim_obj_root))
+# The C compiler of the build, for programs that use the runtime's C API as
+# a user's would (%cc); in a sanitizer build (utils/sanitize.sh) with the
+# sanitizers the runtime library was built with.
+config.substitutions.append((
+    "%cc", config.c_compiler +
+    (" -fsanitize=address,undefined" if config.sim_asan_runtime else "")))
 config.substitutions.append(("%examples", os.path.join(config.sim_src_root,
                                                         "examples")))
 # The strategies, separated by spaces, for shell loops: python/simlists.py
