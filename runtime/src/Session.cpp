@@ -129,7 +129,18 @@ Session::Session(std::shared_ptr<const Bundle> bundleIn,
   }
   setMemoryLimit(options.max_memory, backend->memoryBytes());
   groupSize_ = options.group_size ? options.group_size : plan_->group_size;
-  backend->checkGroupSize(groupSize_);
+  // The bundle's group size, which the caller did not choose, is named as
+  // such, with the way to choose another.
+  try {
+    backend->checkGroupSize(groupSize_);
+  } catch (const Error &error) {
+    if (options.group_size || error.status != SIM_ERROR_INVALID_ARGUMENT)
+      throw;
+    fail(error.status, std::string(error.what()) +
+                           " (the bundle's group size, from " +
+                           "sim-translate --sim-group-size; choose another "
+                           "for the session: sim-run --group-size)");
+  }
   backend->load(*bundle, *plan_);
   // Again with the kernels loaded: CUDA knows each kernel's thread limit.
   backend->checkGroupSize(groupSize_);

@@ -110,11 +110,11 @@ void printHeader(const MainRun &main) {
               main.backend.c_str(), main.device.c_str());
   if (main.showNote && !main.backendNote.empty())
     std::printf("  (not CUDA: %s)\n", main.backendNote.c_str());
-  std::printf("range %lld, dt %s, group size %lld, %lld base steps, %s",
-              (long long)main.range, main.dtText.c_str(),
-              (long long)main.groupSize, (long long)main.steps,
-              main.flushSubnormals ? "subnormals flushed to zero"
-                                   : "IEEE subnormals");
+  std::printf(
+      "range %lld, dt %s, group size %lld, %lld base step%s, %s",
+      (long long)main.range, main.dtText.c_str(), (long long)main.groupSize,
+      (long long)main.steps, main.steps == 1 ? "" : "s",
+      main.flushSubnormals ? "subnormals flushed to zero" : "IEEE subnormals");
   if (main.repeat > 1)
     std::printf(", median of %lld runs after a warm-up",
                 (long long)main.repeat);
@@ -193,7 +193,8 @@ void printTimeline(const Results &results) {
   if (results.outputEvery > 0)
     row("output times",
         std::to_string(results.series.size()) + " every " +
-            std::to_string(results.outputEvery) + " base steps, " +
+            std::to_string(results.outputEvery) +
+            (results.outputEvery == 1 ? " base step, " : " base steps, ") +
             formatTime(main.outputSeconds) +
             (results.outputFile.empty() ? ""
                                         : " (" + results.outputFile + ")"));
@@ -256,9 +257,9 @@ void printCheck(const Results &results) {
     return;
   const MainRun &main = results.main;
   std::printf("\ncheck against the reference executor (strategy %s, group "
-              "size %lld, %lld base steps)",
+              "size %lld, %lld base step%s)",
               main.strategy.c_str(), (long long)main.groupSize,
-              (long long)main.steps);
+              (long long)main.steps, main.steps == 1 ? "" : "s");
   if (!results.check) {
     std::printf(": %s\n", notDone(results.checkState, "not compared").c_str());
     return;

@@ -88,8 +88,9 @@ void printSeriesHeader(const Series &series) {
   std::string errors;
   if (!series.referenceKind.empty())
     errors = ", error vs " + series.referenceKind;
-  std::printf("output every %lld base steps (t: base step, time: t * dt%s):\n",
-              (long long)series.every, errors.c_str());
+  std::printf("output every %lld base step%s (t: base step, time: t * dt%s):\n",
+              (long long)series.every, series.every == 1 ? "" : "s",
+              errors.c_str());
   std::string line =
       "  " + std::string(10, ' ') + "t" + std::string(13, ' ') + "time";
   for (const auto &[title, width] : layout.totals)
