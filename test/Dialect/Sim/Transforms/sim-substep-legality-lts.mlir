@@ -4,17 +4,20 @@
 // joined window of its reads of its own buffers at other items is recorded
 // as local_window, or the remark says what prevents it.
 
-// A window in num_steps and evaluate, joined: local_window [-2, 3].
+// A window in num_steps and evaluate: only evaluate's counts,
+// local_window [-2, 0]. num_steps runs at T, where every block is: its
+// reads see no level boundary (under hip it runs at every sub-step, so its
+// read at i+3 makes the component grid_sync).
 
 // CHECK-LABEL: sim.simulation @window
-// CHECK: sim.component @Diffuse writes(@U) attributes {local_window = array<i64: -2, 3>, sub_stepping = #sim<sub_stepping grid_sync>}
+// CHECK: sim.component @Diffuse writes(@U) attributes {local_window = array<i64: -2, 0>, sub_stepping = #sim<sub_stepping grid_sync>}
 sim.simulation @window range(64) dt(1.0e-2 : f32) max_steps(4) {
   sim.buffer @U : f32 init {
   ^bb0(%i: index):
     %c = arith.constant 0.0 : f32
     sim.yield %c : f32
   }
-  // expected-remark @+1 {{@Diffuse needs a grid-wide barrier between sub-steps: its num_steps body reads @U, which it writes, at i+3, so a thread could read another item while that item is between sub-steps; under lts its blocks of 32 items take local time steps (window i-2..i+3)}}
+  // expected-remark @+1 {{@Diffuse needs a grid-wide barrier between sub-steps: its num_steps body reads @U, which it writes, at i+3, so a thread could read another item while that item is between sub-steps; under lts its blocks of 32 items take local time steps (window i-2..i)}}
   sim.component @Diffuse writes(@U) num_steps {
   ^bb0(%i: index, %t: i64):
     %c3 = arith.constant 3 : index
@@ -59,6 +62,40 @@ sim.simulation @gather range(64) dt(1.0e-2 : f32) max_steps(4) {
     // expected-note @+1 {{reads @U through a gather}}
     %g = sim.read @U[%j] : f32
     sim.yield %g : f32
+  }
+  sim.observe [@U]
+}
+
+// -----
+
+// A gather of its own buffer in num_steps only: num_steps runs at T under
+// lts, so the blocks still take local time steps (grid_sync under hip).
+
+// CHECK-LABEL: sim.simulation @estimate_gather
+// CHECK: sim.component @Spread writes(@U) attributes {local_window = array<i64: -1, 0>, sub_stepping = #sim<sub_stepping grid_sync>}
+sim.simulation @estimate_gather range(64) dt(1.0e-2 : f32) max_steps(4) {
+  sim.buffer @U : f32 init {
+  ^bb0(%i: index):
+    %c = arith.constant 0.0 : f32
+    sim.yield %c : f32
+  }
+  // expected-remark @+1 {{@Spread needs a grid-wide barrier between sub-steps: its num_steps body reads @U, which it writes, through a gather, so a thread could read another item while that item is between sub-steps; under lts its blocks of 32 items take local time steps (window i-1..i)}}
+  sim.component @Spread writes(@U) num_steps {
+  ^bb0(%i: index, %t: i64):
+    %c5 = arith.constant 5 : index
+    %j = arith.muli %i, %c5 : index
+    // expected-note @+1 {{reads @U through a gather}}
+    %u = sim.read @U[%j] : f32
+    %n = arith.fptosi %u : f32 to i32
+    sim.yield %n : i32
+  } evaluate {
+  ^bb0(%i: index, %t: i64, %n: i32, %dt: f32):
+    %c1 = arith.constant 1 : index
+    %j = arith.subi %i, %c1 : index
+    %u = sim.read @U[%i] : f32
+    %l = sim.read @U[%j] : f32
+    %r = arith.addf %u, %l : f32
+    sim.yield %r : f32
   }
   sim.observe [@U]
 }

@@ -9,7 +9,7 @@
 // without local_window, and no remark.
 
 // CHECK-LABEL: sim.simulation @verdicts
-// CHECK: sim.component @Diffuse writes(@U) attributes {local_window = array<i64: -2, 3>, sub_stepping = #sim<sub_stepping grid_sync>}
+// CHECK: sim.component @Diffuse writes(@U) attributes {local_window = array<i64: -2, 0>, sub_stepping = #sim<sub_stepping grid_sync>}
 // CHECK: sim.component @Scatter writes(@G) attributes {sub_stepping = #sim<sub_stepping grid_sync>}
 sim.simulation @verdicts range(64) dt(1.0e-2 : f32) max_steps(4) {
   sim.buffer @U : f32 init {

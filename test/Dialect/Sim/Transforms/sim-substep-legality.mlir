@@ -75,7 +75,7 @@ sim.simulation @own_window range(16) dt(1.0e-2 : f32) max_steps(2) {
 // A gather of the second buffer a component writes, in num_steps.
 
 // CHECK-LABEL: sim.simulation @own_gather
-// CHECK: sim.component @P writes(@X, @V) attributes {sub_stepping = #sim<sub_stepping grid_sync>}
+// CHECK: sim.component @P writes(@X, @V) attributes {local_window = array<i64: 0, 0>, sub_stepping = #sim<sub_stepping grid_sync>}
 sim.simulation @own_gather range(16) dt(1.0e-2 : f32) max_steps(2) {
   sim.buffer @X : f32 init {
   ^bb0(%i: index):
@@ -87,7 +87,7 @@ sim.simulation @own_gather range(16) dt(1.0e-2 : f32) max_steps(2) {
     %c = arith.constant 0.0 : f32
     sim.yield %c : f32
   }
-  // expected-remark @+1 {{@P needs a grid-wide barrier between sub-steps: its num_steps body reads @V, which it writes, through a gather, so a thread could read another item while that item is between sub-steps}}
+  // expected-remark @+1 {{@P needs a grid-wide barrier between sub-steps: its num_steps body reads @V, which it writes, through a gather, so a thread could read another item while that item is between sub-steps; under lts its blocks of 32 items take local time steps (window i)}}
   sim.component @P writes(@X, @V) num_steps {
   ^bb0(%i: index, %t: i64):
     %c7 = arith.constant 7 : index
