@@ -20,6 +20,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
 #include <memory>
 #include <string>
 #include <vector>
@@ -122,7 +123,8 @@ public:
         ->option_text("I")
         ->check(simcli::oneOf({"linear", "cubic"}, "linear or cubic"));
     app.add_option("--dump", options.dumpDir,
-                   "write the observed buffer as DIR/<buffer>.npy")
+                   "write the observed buffer as DIR/<buffer>.npy (DIR is "
+                   "created if missing, as sim-run does)")
         ->option_text("DIR")
         ->check(simcli::path());
     app.add_option("--json", options.jsonPath,
@@ -177,10 +179,14 @@ private:
       return stat(folder.c_str(), &info) == 0 && S_ISDIR(info.st_mode) &&
              access(folder.c_str(), W_OK | X_OK) == 0;
     };
-    if (!options_.dumpDir.empty() && !writableFolder(options_.dumpDir))
-      usageError("--dump: '" + options_.dumpDir +
-                 "' is not a folder this process can write into (it must "
-                 "exist)");
+    if (!options_.dumpDir.empty()) {
+      std::error_code error;
+      std::filesystem::create_directories(options_.dumpDir, error);
+      if (error || !writableFolder(options_.dumpDir))
+        usageError("--dump: '" + options_.dumpDir +
+                   "' is not a folder this process can write into" +
+                   (error ? " (" + error.message() + ")" : ""));
+    }
     if (!options_.jsonPath.empty()) {
       const std::string &path = options_.jsonPath;
       struct stat info;

@@ -739,7 +739,7 @@ const char *kOverview =
 
 const char *kIntro =
     R"(Runs the gravity-like or PBD-like scene of examples/paper with one of the
-four algorithms, written by hand in C++ (OpenMP threads over groups, SIMD
+five strategies (lts plans what hip plans for these scenes), written by hand in C++ (OpenMP threads over groups, SIMD
 across the items of a group), and reports the same metrics as
 `sim-run --json` (bench/run compares the two). It computes what sim's CPU
 backend computes, bit for bit.

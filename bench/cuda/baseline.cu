@@ -608,7 +608,7 @@ const char *kOverview = "hand-written CUDA of the paper's scenes (sim's "
 
 const char *kIntro =
     R"(Runs the gravity-like or PBD-like scene of examples/paper with one of the
-four algorithms, written by hand, and reports the same metrics as
+five strategies (lts plans what hip plans for these scenes), written by hand, and reports the same metrics as
 `sim-run --json` (bench/run compares the two). sim-baseline-host runs the
 same kernels emulated on the CPU, for checking.
 )";
