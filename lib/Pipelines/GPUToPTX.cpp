@@ -31,6 +31,8 @@
 //     sim-flush-subnormals                  only with ftz (--sim-ftz): .ftz
 //                                           f32 instructions
 //     sim-nvvm-extern-dynamic-shared-memory
+//     sim-nvvm-set-data-layout              NVPTX's, before the translation
+//                                           aligns i64 accesses by it
 //     sim-nvvm-check-target{libdevice})
 //   gpu-module-to-binary{format=isa toolkit}  PTX text in a gpu.binary
 //
@@ -152,6 +154,7 @@ void mlir::sim::buildSimGPUToPTXPipeline(OpPassManager &pm,
   if (target.flushSubnormals)
     kernels.addPass(createSimFlushSubnormals());
   kernels.addPass(createSimNVVMExternDynamicSharedMemory());
+  kernels.addPass(createSimNVVMSetDataLayout());
 
   // gpu-module-to-binary links libdevice from the toolkit it is given; when
   // there is none it links nothing and says nothing, so the check pass

@@ -37,6 +37,7 @@
 // PIPELINE-NEXT:     convert-math-to-llvm
 // PIPELINE-NEXT:     reconcile-unrealized-casts
 // PIPELINE-NEXT:     sim-nvvm-extern-dynamic-shared-memory
+// PIPELINE-NEXT:     sim-nvvm-set-data-layout
 // PIPELINE-NEXT:     sim-nvvm-check-target{attaching=false chip= libdevice={{.*}}/nvvm/libdevice/libdevice.10.bc}
 // PIPELINE-NEXT:   ),
 // PIPELINE-NEXT:   gpu-module-to-binary{format=isa {{.*}}}

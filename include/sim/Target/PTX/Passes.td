@@ -120,6 +120,35 @@ def SimGPULowerSubgroupReduce
                            "::mlir::gpu::GPUDialect"];
 }
 
+def SimNVVMSetDataLayout
+    : Pass<"sim-nvvm-set-data-layout", "::mlir::gpu::GPUModuleOp"> {
+  let summary = "Give a gpu.module NVPTX's data layout before it is "
+                "translated to LLVM IR";
+  let description = [{
+    Upstream's `gpu-module-to-binary` (MLIR 22) translates a gpu.module to
+    LLVM IR and only then sets the NVPTX target's data layout on the LLVM
+    module. An `llvm.load` or `llvm.store` without an `alignment` takes its
+    alignment during the translation, from the data layout the module has
+    then: LLVM's default, where an `i64` is aligned to 4 bytes. The NVPTX
+    back end then splits every such access into two 32-bit ones
+    (`ld.global.b32` twice and a shift and an or), which doubles the memory
+    instructions of the kernels' clock and level codes and, for a slot
+    another thread updates with a 64-bit atomic, could read the two halves
+    of different values.
+
+    This pass sets `llvm.data_layout` on the gpu.module to the data layout
+    of its triple (`nvptx64-nvidia-cuda`, from LLVM's TargetParser), which
+    the translation gives the LLVM module first, so `i64` accesses keep
+    their natural 8-byte alignment (`ld.global.b64`). A module that already
+    has a data layout keeps it.
+
+    ```mlir
+    // after
+    gpu.module @kernels attributes {llvm.data_layout = "e-p6:32:32-i64:64-i128:128-i256:256-v16:16-v32:32-n16:32:64"} [...]
+    ```
+  }];
+}
+
 def SimNVVMExternDynamicSharedMemory
     : Pass<"sim-nvvm-extern-dynamic-shared-memory", "::mlir::gpu::GPUModuleOp"> {
   let summary = "Declare dynamic shared memory as `.extern .shared` for PTX";
