@@ -13,8 +13,9 @@ with the standard library only:
 
 The library is found through $SIM_RUNTIME_LIB, next to this file's checkout
 (build/lib/libsim_runtime.so), or on the loader's path. Every failing call
-raises simrt.Error with the runtime's message. docs/Runtime.md documents the
-C API this wraps.
+raises simrt.Error with the runtime's message (or the subclass of it that
+set_error_class installs: sim.RunError once the sim package is loaded).
+docs/Runtime.md documents the C API this wraps.
 """
 
 import array
@@ -22,7 +23,7 @@ import ctypes
 import os
 
 __all__ = ["Error", "Bundle", "Session", "load_library", "strategies",
-           "ProgressFunction"]
+           "ProgressFunction", "set_error_class"]
 
 
 # sim_status's SIM_ERROR_INVALID_ARGUMENT (sim_runtime.h).
@@ -35,6 +36,26 @@ class Error(RuntimeError):
     def __init__(self, status, message):
         super().__init__(message)
         self.status = status
+
+
+# The class of the errors this module raises: Error, or the subclass of it
+# that set_error_class installed (the sim package's sim.RunError, which is
+# a sim.SimError too).
+_error_class = Error
+
+
+def set_error_class(cls):
+    """Makes failed calls raise `cls(status, message)`, a subclass of
+    Error (so `except simrt.Error` still catches them)."""
+    global _error_class
+    if not (isinstance(cls, type) and issubclass(cls, Error)):
+        raise TypeError("the error class must be a subclass of simrt.Error, "
+                        "not %r" % (cls,))
+    _error_class = cls
+
+
+def _error(status, message):
+    return _error_class(status, message)
 
 
 class _Options(ctypes.Structure):
@@ -181,7 +202,7 @@ def _declare(lib):
 
 def _check(status):
     if status != 0:
-        raise Error(status, load_library().sim_last_error().decode())
+        raise _error(status, load_library().sim_last_error().decode())
 
 
 def _c_int(what, value, bits):
@@ -229,7 +250,7 @@ class Bundle:
         # A closed bundle would answer with empty values (the C API takes a
         # null handle as none): say so instead.
         if not self._raw:
-            raise Error(_INVALID_ARGUMENT, "the bundle is closed")
+            raise _error(_INVALID_ARGUMENT, "the bundle is closed")
         return self._raw
 
     @property
@@ -343,7 +364,7 @@ class Session:
     @property
     def _handle(self):
         if not self._raw:
-            raise Error(_INVALID_ARGUMENT, "the session is closed")
+            raise _error(_INVALID_ARGUMENT, "the session is closed")
         return self._raw
 
     @property
@@ -380,7 +401,7 @@ class Session:
         reinterpret the bytes)."""
         info = self._buffers.get(buffer)
         if info is None:
-            raise Error(1, "unknown buffer '%s'" % buffer)
+            raise _error(1, "unknown buffer '%s'" % buffer)
         expected = {4: "f", 8: "d"}[info["scalar_bytes"]]
         # The float typecode of the same size only: an integer array of the
         # right size would still have its bits read as floats.

@@ -24,6 +24,7 @@ import time
 from typing import Iterable, Sequence
 
 from .errors import CompileError
+from .ops import _is_bool
 from .scene import Scene
 
 try:
@@ -214,22 +215,31 @@ def compile(scene, strategies: Sequence[str] | str | None = None,
             ftz: bool = False):
     """Compiles a scene (a Scene, or scene text) into a bundle.
 
-    `strategies`: the strategies to compile (default all five: simple,
-    traditional, hip, hip-cache, lts); a name or a list (an unknown or
-    repeated name is a ValueError before the tool runs). `group_size`: the
+    `strategies`: the strategies to compile (default, None: all five:
+    simple, traditional, hip, hip-cache, lts); a name or a list (an unknown
+    or repeated name, or an empty list, is a ValueError before the tool
+    runs). `group_size`: the
     group size the plans are made for, a multiple of 32 from 32 to 65536
     (default 256; anything else is refused before the tool runs). `output`:
     where the bundle goes (default: a temporary file that lives as long as
     the Bundle). `args`: more sim-translate options (a list). `ftz`: flush
     subnormals to zero on every backend (`--sim-ftz`; much faster on a CPU
-    once values decay below the normal range; default IEEE).
+    once values decay below the normal range; default IEEE): True or False
+    (a numpy bool too), anything else is a TypeError.
     Returns a `sim.Bundle` with `compile_seconds`, the scene's `mlir` text
     and the tool's warnings and remarks (`messages`); raises CompileError
     at the Python line of an error.
     """
     from .runtime import Bundle
-    names = _strategy_names(strategies) if strategies else []
+    names = _strategy_names(strategies) if strategies is not None else []
+    if strategies is not None and not names:
+        raise ValueError(f"strategies is empty: name at least one of "
+                         f"{', '.join(STRATEGIES)}, or leave it out (None) "
+                         f"for all of them")
     _check_group_size(group_size)
+    # Any non-empty str is true: "no" would flush.
+    if not _is_bool(ftz):
+        raise TypeError(f"ftz must be True or False, not {ftz!r}")
     if isinstance(args, str):
         raise TypeError(f"args is a list of sim-translate options, not the "
                         f"str {args!r}")

@@ -6,7 +6,8 @@ out of its body by a Python side effect, an unsupported type). `CompileError`:
 a sim tool (sim-opt, sim-translate) reported an error; its location is the
 Python line the tracer recorded on the operation (`loc("file.py":12:9)`).
 Both carry `filename`, `line` and `column` (1-based, or None) and show the
-source line in their message.
+source line in their message. `RunError` (sim.runtime, with numpy): the
+runtime refused a call; a SimError without a location, and a simrt.Error.
 
 `NonFiniteWarning` (a RuntimeWarning, through the `warnings` module): a run
 of a session ended with NaN or infinity in its state or totals, which

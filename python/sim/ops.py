@@ -545,9 +545,11 @@ def bitcast(x, dtype: DType):
 
 # -- Conversions ------------------------------------------------------------------
 
-def convert(dtype: DType, *args):
-    """`dtype(x)`: a conversion, a constant, or a vector built from lanes."""
-    loc = user_location(2)
+def convert(dtype: DType, *args, loc=None):
+    """`dtype(x)`: a conversion, a constant, or a vector built from lanes.
+    `loc`: where errors point (default: the user's current line)."""
+    if loc is None:
+        loc = user_location(2)
     if not trace.in_trace():
         raise trace_error(f"sim.{dtype.elem.name}(...) builds a traced value: "
                           "it is only possible inside a traced body", loc)
@@ -565,8 +567,8 @@ def convert(dtype: DType, *args):
     (x,) = args
     if not _is_traced(x):
         if isinstance(x, (list, tuple)):
-            return convert(dtype, *x)
-        return value_of(x, dtype, f"{dtype!r}(...)")
+            return convert(dtype, *x, loc=loc)
+        return value_of(x, dtype, f"{dtype!r}(...)", loc)
     v = value_of(x)
     if dtype.is_vector:
         if v.dtype.is_vector:
@@ -581,7 +583,7 @@ def convert(dtype: DType, *args):
 
 def _convert_scalar(elem: DType, x, loc) -> Value:
     if not _is_traced(x):
-        return value_of(x, elem, f"sim.{elem.name}(...)")
+        return value_of(x, elem, f"sim.{elem.name}(...)", loc)
     v = value_of(x)
     if v.dtype.is_vector:
         raise trace_error("a vector as a lane of a vector", loc)
@@ -849,8 +851,59 @@ def _array_ufunc(self, ufunc, method, *inputs, **kwargs):
                       loc)
 
 
+def _no_modulus(modulus, loc):
+    """Python's three-argument pow(a, b, m) on a traced value: refused."""
+    if modulus is not None:
+        raise trace_error("pow(a, b, modulus) on a traced value: sim has no "
+                          "modular power; use a ** b (sim.pow(a, b) on "
+                          "floats) and then % (integers) or sim.fmod "
+                          "(floats)", loc)
+
+
+def _python_rounding(name: str, use: str) -> Callable:
+    """round(), math.floor(), math.ceil(), math.trunc() of a traced value:
+    a TraceError that names the sim function (Python wants an int back,
+    which a traced value cannot be)."""
+    def refuse(self, *args):
+        raise trace_error(f"{name}() of a traced value: its value is not "
+                          f"known while tracing; use {use}", user_location(2))
+    return refuse
+
+
+_ROUNDING = {
+    "round": ("round", "sim.round(x) (halves away from zero) or "
+              "sim.roundeven(x) (halves to even, as Python's round); both "
+              "give a float: sim.i32(sim.round(x)) for an integer"),
+    "floor": ("math.floor", "sim.floor(x) (a float; sim.i32(sim.floor(x)) "
+              "for an integer)"),
+    "ceil": ("math.ceil", "sim.ceil(x) (a float; sim.i32(sim.ceil(x)) for an "
+             "integer)"),
+    "trunc": ("math.trunc", "sim.trunc(x) (a float), or sim.i32(x), which "
+              "truncates"),
+}
+
+
+def _divmod(self, other):
+    raise trace_error("divmod() of a traced value: use a // b and a % b on "
+                      "integers, sim.floor(a / b) and sim.fmod(a, b) on "
+                      "floats", user_location(2))
+
+
 def _attach():
     def make_binary(op):
+        if op == "**":
+            # pow(a, b, m) calls __pow__ with the modulus.
+            def forward(self, other, modulus=None):
+                loc = user_location(2)
+                _no_modulus(modulus, loc)
+                return binary(op, self, other, loc)
+
+            def reverse(self, other, modulus=None):
+                loc = user_location(2)
+                _no_modulus(modulus, loc)
+                return binary(op, other, self, loc)
+            return forward, reverse
+
         def forward(self, other):
             return binary(op, self, other, user_location(2))
 
@@ -876,6 +929,9 @@ def _attach():
         cls.__pos__ = lambda self: value_of(self)
         cls.__invert__ = lambda self: invert(self, user_location(2))
         cls.__abs__ = lambda self: abs(self)
+        for name, (python, use) in _ROUNDING.items():
+            setattr(cls, f"__{name}__", _python_rounding(python, use))
+        cls.__divmod__ = cls.__rdivmod__ = _divmod
         cls.__hash__ = object.__hash__
         cls.__array_ufunc__ = _array_ufunc
         cls.__array__ = Value.__array__

@@ -12,7 +12,8 @@
 Buffers come back as numpy arrays of the buffer's scalar type (float32 or
 float64, from the bundle's buffer info), shaped [range] or [range, lanes].
 The runtime is libsim_runtime.so through python/simrt.py (ctypes); a failed
-call raises simrt.Error (also `sim.RunError`) with the runtime's message.
+call raises `sim.RunError` with the runtime's message: a `sim.SimError`
+(as TraceError and CompileError are) and a `simrt.Error` (a RuntimeError).
 """
 
 from __future__ import annotations
@@ -29,7 +30,7 @@ from typing import Callable, NamedTuple
 
 import numpy as np
 
-from .errors import NonFiniteWarning
+from .errors import NonFiniteWarning, SimError
 from .output import Output, error_norms
 from .types import F32_TINY, round_f32
 
@@ -42,7 +43,20 @@ except ImportError:  # the sim package without python/ on sys.path
 
 __all__ = ["Bundle", "Session", "BufferInfo", "RunError"]
 
-RunError = simrt.Error
+
+class RunError(simrt.Error, SimError):
+    """A failed runtime call (a bundle that does not open, a value the
+    runtime refuses, a run stopped by check_finite): the runtime's message,
+    `status` its sim_status code. A `sim.SimError` without a source
+    location, and a `simrt.Error`: simrt raises this class once the sim
+    package is loaded."""
+
+    def __init__(self, status, message):
+        self.status = status
+        SimError.__init__(self, message)
+
+
+simrt.set_error_class(RunError)
 
 
 class BufferInfo(NamedTuple):
@@ -300,7 +314,7 @@ class Session:
         except ValueError:  # the runtime's message for what it cannot read
             return
         if self._dt_type == "f32" and value > 0 and round_f32(value) == 0:
-            raise simrt.Error(
+            raise RunError(
                 simrt._INVALID_ARGUMENT,
                 f"dt: {text} underflows f32 to 0 (the smallest positive f32 "
                 f"is {F32_TINY!r}); compile the scene with "

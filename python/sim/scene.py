@@ -18,7 +18,11 @@
 Bodies are traced lazily, when the scene's text is made (`mlir()`,
 `compile()`), so a body may read buffers declared after it. A body's
 parameters are matched by name (`i`, `t`, `n`, `dt`) when they all are
-among those, else passed by position; see sim.trace.call_body.
+among those (any of them, in any order: `def Relax(i, dt)`), else passed by
+position in the order (i, t, n, dt) (`def Relax(k, time, steps, h)`), where
+a parameter named like an argument must stand in its place: `def Relax(j,
+n, dt)` would give `n` the time t, and is a TraceError at its `def` line;
+see sim.trace.call_body.
 """
 
 from __future__ import annotations
@@ -254,26 +258,40 @@ class Scene:
 
     def param(self, name: str, default, dtype: DType | None = None) -> Param:
         """Declares `sim.param @name = default : dtype` (i32, i64, index,
-        f32 or f64; default: i32 for an int, the precision for a float);
-        returns the handle that reads it in bodies. Runs change it
-        with `session.set(name=value)`."""
+        f32 or f64, the types a bundle holds; default: i32 for an int, the
+        precision for a float); returns the handle that reads it in
+        bodies. `default` is a number (Python's or numpy's) that fits the
+        type: an integer type takes an integer (or a float that is one,
+        2.0), never a fraction. Runs change it with
+        `session.set(name=value)`."""
         loc = user_location(2)
+        # numpy's numbers too (np.int64(3) is an int).
+        if isinstance(default, bool) or not isinstance(default, numbers.Real):
+            raise trace_error(f"the default of @{name} must be an int or "
+                              f"a float, not {type(default).__name__}", loc)
         if dtype is None:
-            # numpy's numbers too (np.int64(3) is an int).
-            if isinstance(default, bool) or not isinstance(default,
-                                                           numbers.Real):
-                raise trace_error(f"the default of @{name} must be an int or "
-                                  f"a float, not {type(default).__name__}",
-                                  loc)
             dtype = i32 if _is_int(default) else self.precision
-        if not isinstance(dtype, DType) or dtype.is_vector or \
-                dtype.mlir not in ("i32", "i64", "index", "f32", "f64"):
+        # The dialect's signless types do not say u32 from i32: a bundle
+        # would hold an unsigned parameter as a signed one.
+        if not isinstance(dtype, DType) or \
+                dtype not in (i32, i64, index, f32, f64):
             raise trace_error(f"unsupported parameter type {dtype!r}: "
                               "i32, i64, index, f32 or f64", loc)
         try:
-            literal = (float_literal(float(default), dtype) if dtype.is_float
-                       else int_literal(int(default), dtype))
-        except (TypeError, ValueError) as error:
+            if dtype.is_float:
+                literal = float_literal(float(default), dtype)
+            else:
+                if not _is_int(default):
+                    if not float(default).is_integer():
+                        hint = (" (for a fraction declare it sim.f32 or "
+                                "sim.f64)"
+                                if math.isfinite(float(default)) else "")
+                        raise ValueError(f"not an integer, as an {dtype} "
+                                         f"parameter needs{hint}")
+                    default = int(default)
+                literal = int_literal(int(default), dtype,
+                                      unsigned_hint=False)
+        except (TypeError, ValueError, OverflowError) as error:
             raise trace_error(f"the default {default!r} of @{name}: {error}",
                               loc) from None
         param = Param(self, name, dtype, default, loc)
@@ -511,7 +529,7 @@ class Scene:
             yields = []
             for value, (dtype, who) in zip(values, results):
                 if isinstance(value, (tuple, list)) and dtype.is_vector:
-                    value = ops.convert(dtype, *value)
+                    value = ops.convert(dtype, *value, loc=ret_loc)
                 v = ops.value_of(value, dtype, f"the result of {what}",
                                  loc=ret_loc)
                 if v.dtype.mlir != dtype.mlir:

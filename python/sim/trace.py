@@ -16,7 +16,9 @@ Constants and parameter reads are emitted once per body, at its top; a
 
 from __future__ import annotations
 
+import linecache
 import os
+import re
 import sys
 from contextlib import contextmanager
 from typing import Callable, Iterable, Sequence
@@ -31,6 +33,9 @@ __all__ = [
 ]
 
 _PACKAGE_DIR = os.path.dirname(os.path.abspath(__file__)) + os.sep
+
+# A call of Python's max() or min() (not sim.max, not a method) in a line.
+_BUILTIN_MINMAX = re.compile(r"(?<![\w.])(?:max|min)\s*\(")
 
 
 # -- Source locations ------------------------------------------------------------
@@ -245,11 +250,21 @@ class Value:
 
     # Python needs a concrete value: the tracer has none.
     def __bool__(self):
+        loc = user_location(2)
+        if loc is not None and _BUILTIN_MINMAX.search(
+                linecache.getline(loc.filename, loc.line)):
+            # Python's max() and min() compare their arguments and take
+            # bool() of the comparison: that is how they come here.
+            raise trace_error(
+                "Python's max() or min() on a traced value: they compare "
+                "with bool(), whose value is not known while tracing; use "
+                "sim.max(a, b, ...) or sim.min(a, b, ...) (or, for a Python "
+                "`if` on a traced value, sim.select(condition, a, b))", loc)
         raise trace_error(
             "a Python `if`, `while`, `and`, `or`, `not`, `assert`, "
             "comparison chain or bool() on a traced value: its value is not "
             "known while tracing; use sim.select(condition, a, b) (or "
-            "sim.where) instead")
+            "sim.where) instead", loc)
 
     def __index__(self):
         raise trace_error(
@@ -376,7 +391,11 @@ def constant(value, dtype: DType, loc: Location | None = None) -> Value:
         return found
     name = body.fresh("c")
     ref = body.scene.locations.ref(loc)
-    body.hoisted.append(f"{name} = arith.constant {literal} : {dtype.mlir}{ref}")
+    # A bool is MLIR's `true` or `false`, an i1 by itself: `true : i1` is
+    # no attribute the parser reads (a vector's `dense<true>` takes its
+    # type).
+    typed = "" if dtype.is_bool and not dtype.is_vector else f" : {dtype.mlir}"
+    body.hoisted.append(f"{name} = arith.constant {literal}{typed}{ref}")
     result = Value(name, dtype, body.root, False, loc, const=python)
     body._constants[key] = result
     return result
@@ -454,16 +473,43 @@ def function_location(fn: Callable) -> Location | None:
     return Location(code.co_filename, code.co_firstlineno, 1)
 
 
+def def_location(fn: Callable) -> Location | None:
+    """The line of `fn`'s `def` (or its `lambda`), past its decorators: a
+    decorated function's code starts at its first decorator."""
+    loc = function_location(fn)
+    if loc is None:
+        return None
+    if fn.__code__.co_name == "<lambda>":
+        column = linecache.getline(loc.filename, loc.line).find("lambda")
+        return Location(loc.filename, loc.line, column + 1 if column >= 0
+                        else 1)
+    for line in range(loc.line, loc.line + 50):
+        text = linecache.getline(loc.filename, line)
+        stripped = text.lstrip()
+        if stripped.startswith(("def ", "async def ")):
+            return Location(loc.filename, line, len(text) - len(stripped) + 1)
+        if not text:
+            break
+    return loc
+
+
 def call_body(fn: Callable, args: dict[str, Value], order: Sequence[str],
               what: str):
     """Calls a body function with its arguments; returns (result, the
     location of its `return`).
 
-    Parameters named like the body's arguments (`i`, `t`, `n`, `dt`) get
-    them by name, so a body may take only those it uses (`def f(i, dt)`);
-    parameters with defaults keep them unless they are named so. Otherwise
-    (other names) the body's required parameters get the arguments by
-    position, in the order `order`.
+    A body's parameters bind in one of two ways, never silently mixed:
+
+    - by name, when every parameter without a default is named like one
+      of the body's arguments (`order`: i, t, n, dt for an evaluate body):
+      a body takes only those it uses, in any order (`def f(i, dt)`);
+      parameters with defaults named so get them too, others keep their
+      defaults;
+    - else by position, in the order `order` (`def f(k, time, steps, h)`):
+      the required parameters get the first arguments. A parameter named
+      like an argument must then be in that argument's place (`def f(j, n,
+      dt)` would give `n` the argument t): anything else is a TraceError at
+      the `def` line that names the argument names and their order.
     """
     import inspect
     try:
@@ -485,12 +531,30 @@ def call_body(fn: Callable, args: dict[str, Value], order: Sequence[str],
             call_kwargs = {p.name: args[p.name] for p in params
                            if p.name in args and p.kind != p.POSITIONAL_ONLY}
         else:
+            names = ", ".join(order)
             if len(required) > len(order) or any(
                     p.kind == p.KEYWORD_ONLY for p in required):
                 raise trace_error(
                     f"{what} takes {len(required)} arguments; it gets "
-                    f"({', '.join(order)})", function_location(fn))
+                    f"({names})", def_location(fn))
             count = len(order) if variadic and not required else len(required)
+            positional = [p for p in params
+                          if p.kind != p.KEYWORD_ONLY][:count]
+            for k, p in enumerate(params):
+                got = order[k] if p in positional else None
+                if p.name in args and p.name != got:
+                    gets = (f"would get the argument `{got}` by position"
+                            if got is not None else
+                            f"would not get the argument `{p.name}`")
+                    listed = ", ".join(q.name for q in params)
+                    raise trace_error(
+                        f"{what} has the parameters ({listed}): `{p.name}` "
+                        f"{gets}. A body's parameters are either all named "
+                        f"among {names} (any of them, in any order; each "
+                        f"gets its namesake) or take the arguments by "
+                        f"position in the order ({names}), a parameter "
+                        f"named like an argument in that argument's place",
+                        def_location(fn))
             call_args = [args[n] for n in order[:count]]
     else:
         call_args = [args[n] for n in order]

@@ -178,20 +178,28 @@ def float_literal(value: float, dtype: DType) -> str:
     return mantissa + (("e" + exponent) if e else "")
 
 
-def int_literal(value: int, dtype: DType) -> str:
+def int_literal(value: int, dtype: DType, unsigned_hint: bool = True) -> str:
     """An integer constant of `dtype` in MLIR's signed spelling; raises
-    ValueError when it does not fit."""
+    ValueError when it does not fit: signed types (i32, i64, index) hold
+    -2^(n-1) to 2^(n-1) - 1, unsigned ones (u32, u64) 0 to 2^n - 1 (the
+    bits of 2^n - 1 are those of the signed -1); with `unsigned_hint` the
+    message names the unsigned type that would hold it. A bool is `true`
+    or `false`, which MLIR spells without a type (`arith.constant true`).
+    """
     elem = dtype.elem
     if elem.kind == "bool":
         return "true" if value else "false"
     bits = elem.bits
-    lo = 0 if elem.kind == "uint" else -(1 << (bits - 1))
-    hi = (1 << bits) - 1 if elem.kind == "uint" else (1 << (bits - 1)) - 1
-    if elem.kind in ("sint", "index"):
-        # Accept an unsigned spelling of a signed value too (0xFFFF... = -1).
-        hi = (1 << bits) - 1
+    if elem.kind == "uint":
+        lo, hi = 0, (1 << bits) - 1
+    else:
+        lo, hi = -(1 << (bits - 1)), (1 << (bits - 1)) - 1
     if not lo <= value <= hi:
-        raise ValueError(f"{value} does not fit in {elem.name}")
+        hint = ""
+        if unsigned_hint and elem.kind == "sint" and 0 <= value < 1 << bits:
+            hint = f"; sim.u{bits} holds 0 to 2^{bits} - 1"
+        raise ValueError(f"{value} does not fit in {elem.name} ({lo} to "
+                         f"{hi}){hint}")
     value &= (1 << bits) - 1
     if value >= 1 << (bits - 1):
         value -= 1 << bits

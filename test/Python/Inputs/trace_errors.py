@@ -5,17 +5,11 @@ the CHECK line above the offending line matches the message and the line
 number ([[@LINE+1]]).
 """
 import math
-import os
 
 import sim
 from sim import f32, f64, i32
 
-cases = []
-
-
-def case(fn):
-    cases.append(fn)
-    return fn
+from trace_cases import case, run
 
 
 def scene():
@@ -404,12 +398,5 @@ def hermite_derivative():
     s.mlir()
 
 
-for fn in cases:
-    try:
-        fn()
-    except sim.TraceError as error:
-        print(f"{fn.__name__}: {os.path.basename(error.filename)}:"
-              f"{error.line}:{error.column}: {error.message}")
-    else:
-        print(f"{fn.__name__}: no error")
+run()
 # CHECK-NOT: no error
