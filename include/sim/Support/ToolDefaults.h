@@ -59,21 +59,37 @@ inline void applyPrintOpOnDiagnosticOption(MLIRContext *context) {
     context->printOpOnDiagnostic(option->getValue());
 }
 
-/// What is wrong with an input of sim-opt or sim-translate that is one of
-/// sim-run's binary files (a bundle, a checkpoint): the MLIR parser would
-/// print their bytes in its error. Empty when no argument is one. Options
-/// of the sim tools take their values after `=`; only `-o` takes the next
-/// argument.
-inline std::string describeRuntimeFileInput(int argc, char **argv) {
+/// The positional arguments (input files) and the `-o` values (`-o FILE`,
+/// `-o=FILE`, `--o=FILE`) of a sim tool's command line. Options of the sim
+/// tools take their values after `=`; only `-o` takes the next argument.
+struct ToolFiles {
+  std::vector<llvm::StringRef> inputs, outputs;
+};
+inline ToolFiles getToolFiles(int argc, char **argv) {
+  ToolFiles files;
   for (int i = 1; i < argc; ++i) {
     llvm::StringRef arg(argv[i]);
     if (arg == "-o" || arg == "--o") {
-      ++i;
+      if (i + 1 < argc)
+        files.outputs.push_back(argv[++i]);
       continue;
     }
-    if (arg.starts_with("-"))
+    if (arg.consume_front("-o=") || arg.consume_front("--o=")) {
+      files.outputs.push_back(arg);
       continue;
-    std::FILE *file = std::fopen(argv[i], "rb");
+    }
+    if (!arg.starts_with("-"))
+      files.inputs.push_back(arg);
+  }
+  return files;
+}
+
+/// What is wrong with an input of sim-opt or sim-translate that is one of
+/// sim-run's binary files (a bundle, a checkpoint): the MLIR parser would
+/// print their bytes in its error. Empty when no input is one.
+inline std::string describeRuntimeFileInput(int argc, char **argv) {
+  for (llvm::StringRef input : getToolFiles(argc, argv).inputs) {
+    std::FILE *file = std::fopen(input.str().c_str(), "rb");
     if (!file)
       continue;
     char magic[8] = {};
@@ -83,38 +99,24 @@ inline std::string describeRuntimeFileInput(int argc, char **argv) {
       continue;
     llvm::StringRef start(magic, sizeof magic);
     if (start == llvm::StringRef("SIMBNDL\0", 8))
-      return "'" + arg.str() +
+      return "'" + input.str() +
              "' is a sim bundle (.simb), not MLIR: run it with sim-run";
     if (start == llvm::StringRef("SIMCKPT\0", 8))
-      return "'" + arg.str() +
+      return "'" + input.str() +
              "' is a sim-run checkpoint (.simc), not MLIR: continue it with "
              "sim-run <bundle> --restart";
   }
   return "";
 }
 
-/// What is wrong with an output file (`-o FILE`, `-o=FILE`, `--o=FILE`) that
-/// is one of the input files: upstream's mains open the output before they
-/// run, replace it with the result, and delete it when the run fails, so
-/// the scene would be lost or turned into a bundle. Empty when none is.
+/// What is wrong with an output file that is one of the input files:
+/// upstream's mains open the output before they run, replace it with the
+/// result, and delete it when the run fails, so the scene would be lost or
+/// turned into a bundle. Empty when none is.
 inline std::string describeOutputOverInput(int argc, char **argv) {
-  std::vector<llvm::StringRef> inputs, outputs;
-  for (int i = 1; i < argc; ++i) {
-    llvm::StringRef arg(argv[i]);
-    if (arg == "-o" || arg == "--o") {
-      if (i + 1 < argc)
-        outputs.push_back(argv[++i]);
-      continue;
-    }
-    if (arg.consume_front("-o=") || arg.consume_front("--o=")) {
-      outputs.push_back(arg);
-      continue;
-    }
-    if (!arg.starts_with("-"))
-      inputs.push_back(arg);
-  }
-  for (llvm::StringRef output : outputs)
-    for (llvm::StringRef input : inputs)
+  ToolFiles files = getToolFiles(argc, argv);
+  for (llvm::StringRef output : files.outputs)
+    for (llvm::StringRef input : files.inputs)
       if (llvm::sys::fs::equivalent(input, output))
         return "the output '" + output.str() + "' is the input '" +
                input.str() +
