@@ -287,14 +287,18 @@ struct SimLowerToGPUPass
 
   void runOnOperation() override {
     ModuleOp module = getOperation();
+    SmallVector<SimulationOp> simulations(module.getOps<SimulationOp>());
     if (groupSize <= 0 || groupSize % 32 != 0) {
-      module.emitError() << "--sim-lower-to-gpu needs a group size that is a "
-                            "positive multiple of 32 (a warp), not "
-                         << static_cast<int64_t>(groupSize);
+      // Located at the scenes it would lower (the module has no location of
+      // its own in a file).
+      Location loc =
+          simulations.empty() ? module.getLoc() : simulations.front().getLoc();
+      emitError(loc) << "--sim-lower-to-gpu needs a group size that is a "
+                        "positive multiple of 32 (a warp), not "
+                     << static_cast<int64_t>(groupSize);
       return signalPassFailure();
     }
     GPUKernelTarget target;
-    SmallVector<SimulationOp> simulations(module.getOps<SimulationOp>());
     for (SimulationOp simulation : simulations)
       if (failed(lowerSimulation(simulation, target, groupSize)))
         return signalPassFailure();

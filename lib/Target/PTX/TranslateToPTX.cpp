@@ -74,15 +74,16 @@ LogicalResult reportEach(ModuleOp module, StringRef what) {
   return failure(found);
 }
 
-/// Parses the input, checks that it holds an `InputOpTy` to compile, runs the
-/// pipeline `build` adds, checks that it lowered every `InputOpTy` and writes
-/// the PTX.
+/// Parses the input, checks that it holds an `InputOpTy` to compile and that
+/// `checkInput` accepts each, runs the pipeline `build` adds, checks that it
+/// lowered every `InputOpTy` and writes the PTX.
 template <typename InputOpTy>
 LogicalResult
 translateToPTX(const std::shared_ptr<llvm::SourceMgr> &sourceMgr,
                raw_ostream &os, MLIRContext *context,
                function_ref<void(DialectRegistry &)> registerDialects,
-               function_ref<void(OpPassManager &)> build) {
+               function_ref<void(OpPassManager &)> build,
+               function_ref<LogicalResult(InputOpTy)> checkInput = nullptr) {
   applyPrintOpOnDiagnosticOption(context);
   // Some upstream passes report an error and still succeed (e.g.
   // gpu-module-to-binary when $CUDA_HOME names no CUDA toolkit); any error
@@ -111,6 +112,10 @@ translateToPTX(const std::shared_ptr<llvm::SourceMgr> &sourceMgr,
     return module->emitError()
            << "there is no " << InputOpTy::getOperationName()
            << " to compile to PTX";
+  if (checkInput)
+    for (InputOpTy input : module->getOps<InputOpTy>())
+      if (failed(checkInput(input)))
+        return failure();
 
   PassManager pm(context, ModuleOp::getOperationName());
   if (failed(applyPassManagerCLOptions(pm)))
@@ -135,14 +140,6 @@ void mlir::sim::registerToPTXTranslations() {
       "Compile a scene to the PTX of its GPU kernels (options --sim-*)",
       [](const std::shared_ptr<llvm::SourceMgr> &sourceMgr, raw_ostream &os,
          MLIRContext *context) -> LogicalResult {
-        // PTX alone runs only on a GPU, where a group has at most 1024
-        // threads (a bundle's group size may be larger: its CPU kernels
-        // take any, and sim-run chooses another for a GPU run).
-        int64_t groupSize = getTranslationOptions().groupSize;
-        if (groupSize > 1024)
-          return emitError(UnknownLoc::get(context))
-                 << "--sim-group-size " << groupSize
-                 << " is more than the 1024 threads a CUDA group can have";
         return translateToPTX<SimulationOp>(
             sourceMgr, os, context,
             [](DialectRegistry &registry) { registry.insert<SimDialect>(); },
@@ -151,6 +148,19 @@ void mlir::sim::registerToPTXTranslations() {
               flags.addSetParams(pm);
               buildSimToGPUPipeline(pm, flags.strategy, flags.groupSize,
                                     flags.getGPUTarget());
+            },
+            [](SimulationOp simulation) -> LogicalResult {
+              // PTX alone runs only on a GPU, where a group is whole warps of
+              // 32 threads and at most 1024 (a bundle's group size may be
+              // larger: its CPU kernels take any, and sim-run chooses
+              // another for a GPU run).
+              int64_t groupSize = getTranslationOptions().groupSize;
+              if (groupSize >= 32 && groupSize <= 1024 && groupSize % 32 == 0)
+                return success();
+              return emitError(simulation.getLoc())
+                     << "--sim-group-size must be a multiple of 32 (a GPU "
+                        "warp) from 32 to 1024 (a CUDA group), not "
+                     << groupSize;
             });
       });
 

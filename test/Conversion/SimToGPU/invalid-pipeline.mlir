@@ -19,4 +19,4 @@ sim.simulation @midway range(8) dt(1.0e-2 : f32) max_steps(2) {
   sim.observe [@X]
 }
 
-// GROUP: error: --sim-lower-to-gpu needs a group size that is a positive multiple of 32 (a warp), not 100
+// GROUP: invalid-pipeline.mlir:7:1: error: --sim-lower-to-gpu needs a group size that is a positive multiple of 32 (a warp), not 100

@@ -3,10 +3,14 @@
 //
 // RUN: sim-translate --sim-to-ptx %s --split-input-file --verify-diagnostics
 //
-// PTX alone runs on a GPU, whose groups have at most 1024 threads (a
-// bundle may plan larger groups for its CPU kernels).
-// RUN: not sim-translate --sim-to-ptx %s --sim-group-size=2048 -o %t.ptx 2>&1 | FileCheck %s --check-prefix=GROUP
-// GROUP: error: --sim-group-size 2048 is more than the 1024 threads a CUDA group can have
+// PTX alone runs on a GPU, whose groups are whole warps and have at most
+// 1024 threads (a bundle may plan larger groups for its CPU kernels); the
+// error names the scene it would compile.
+// RUN: not sim-translate --sim-to-ptx %s --sim-group-size=2048 -o %t.ptx 2>&1 | FileCheck %s --check-prefix=GROUP -DSIZE=2048
+// RUN: not sim-translate --sim-to-ptx %s --sim-group-size=33 -o %t.ptx 2>&1 | FileCheck %s --check-prefix=GROUP -DSIZE=33
+// RUN: not sim-translate --sim-to-ptx %s --sim-group-size=0 -o %t.ptx 2>&1 | FileCheck %s --check-prefix=GROUP -DSIZE=0
+// GROUP: sim-to-ptx-invalid.mlir:[[@LINE+13]]:1: error: --sim-group-size must be a multiple of 32 (a GPU warp) from 32 to 1024 (a CUDA group), not [[SIZE]]
+// GROUP-NOT: error
 
 // expected-error @+1 {{there is no sim.simulation to compile to PTX}}
 module attributes {gpu.container_module} {
