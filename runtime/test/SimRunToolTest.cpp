@@ -104,7 +104,7 @@ TEST(SimRunValues, ParsesNonNegativeFiniteNumbers) {
 
 TEST(SimRunOptions, TakesEveryOption) {
   Options options = parse({"scene.simb",
-                           "--backend=cpu",
+                           "--backend=cuda",
                            "--strategy",
                            "simple",
                            "--steps",
@@ -146,7 +146,7 @@ TEST(SimRunOptions, TakesEveryOption) {
                            "2G",
                            "--progress"});
   EXPECT_EQ(options.input, "scene.simb");
-  EXPECT_EQ(options.backend, SIM_BACKEND_CPU);
+  EXPECT_EQ(options.backend, SIM_BACKEND_CUDA);
   EXPECT_EQ(options.strategy, SIM_STRATEGY_SIMPLE);
   EXPECT_EQ(options.steps, 10);
   EXPECT_EQ(options.repeat, 3);
@@ -203,6 +203,11 @@ TEST(SimRunOptions, RejectsValuesOutsideTheirDomain) {
       {{"a", "--backend", "reference", "--threads", "3"},
        "--threads sets the CPU backend's threads; the reference executor "
        "runs on one"},
+      {{"a", "--backend", "cpu", "--cuda-graph"},
+       "--cuda-graph applies to the CUDA backend; --backend cpu runs on this "
+       "machine's CPU"},
+      {{"a", "--backend", "reference", "--device", "0"},
+       "--device applies to the CUDA backend; --backend reference runs on"},
       {{"a", "--output-every", "3", "--report-every", "4"},
        "--report-every 4 and --output-every 3 disagree"},
       {{"a", "--restart", ""}, "--restart: expects a path"},

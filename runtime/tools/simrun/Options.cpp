@@ -414,6 +414,14 @@ Options parseOptions(int argc, const char *const *argv) {
   if (options.backend == SIM_BACKEND_REFERENCE && options.threads != 0)
     usageError("--threads sets the CPU backend's threads; the reference "
                "executor runs on one");
+  // Likewise the CUDA options on a backend named that has no GPU (with
+  // --backend auto they choose what a GPU run does, if there is one).
+  bool hostBackend = options.backend == SIM_BACKEND_CPU ||
+                     options.backend == SIM_BACKEND_REFERENCE;
+  if (hostBackend && (options.cudaGraph || app.count("--device") > 0))
+    usageError(std::string(options.cudaGraph ? "--cuda-graph" : "--device") +
+               " applies to the CUDA backend; --backend " + backend +
+               " runs on this machine's CPU");
   if (options.distributed) {
     if (options.backend == SIM_BACKEND_REFERENCE)
       usageError("--distributed runs the plan executor, not the reference "
