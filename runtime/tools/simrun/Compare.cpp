@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <limits>
 
 namespace simrun {
 
@@ -108,14 +109,22 @@ Check::BufferRow checkBuffer(const Buffer &backend, const Buffer &reference,
   Check::BufferRow row;
   row.buffer = backend.name;
   row.norms = compare(backend, reference);
+  bool anyFinite = false;
   for (size_t v = 0; v < reference.values(); ++v)
-    if (std::isfinite(reference.at(v)))
+    if (std::isfinite(reference.at(v))) {
       row.maxReference = std::max(row.maxReference, std::fabs(reference.at(v)));
+      anyFinite = true;
+    }
+  // No finite reference value has a largest magnitude (not 0: printed as
+  // nan, null in JSON).
+  if (!anyFinite && reference.values() > 0)
+    row.maxReference = std::numeric_limits<double>::quiet_NaN();
   row.tolerance = tolerance >= 0 ? tolerance
                                  : defaultTolerance(backend.precisionBytes
                                                         ? backend.precisionBytes
                                                         : backend.scalarBytes);
-  row.limit = row.tolerance * std::max(1.0, row.maxReference);
+  row.limit =
+      row.tolerance * (anyFinite ? std::max(1.0, row.maxReference) : 1.0);
   row.nonFiniteBackend = backend.nonFinite();
   row.nonFiniteReference = reference.nonFinite();
   // A NaN max-abs compares false: it fails too.
