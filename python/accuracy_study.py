@@ -38,7 +38,10 @@ scene under hip for every interpolation of @X, the base step halved several
 times at a fixed end time with @c scaled with dt (so every big step and
 sub-step keeps its number of base steps); prints the error of @Y (the
 resonator, which reads the interpolated driver) per dt and the least-squares
-slope of log(error) against log(dt).
+slope of log(error) against log(dt). With heat_rod (or wave_rod) among the
+scenes, or --convergence-only, the same for lts on both heat rods (or the
+wave rod): the error of @U against simple at dt / FINE, dt and @cfl halved
+together, its slope and its largest ratio to simple's error.
 
 Writes OUT/results.json, OUT/results.md and OUT/accuracy.png (matplotlib,
 Agg; skipped with a note when matplotlib is missing). Progress goes to
@@ -405,22 +408,33 @@ def convergence(args):
     return out
 
 
-def lts_convergence(args):
-    """The order of lts on both heat rods (forward Euler: 1, Model.md
-    "Accuracy and stability we expect"), and its error against simple's at
-    each dt. dt and the CFL fraction halve together, so every block keeps
-    its sub-step in base steps (1 in the stiff half, max_steps in the soft
-    one) and every physical step halves; the reference is simple at the
-    finest dt / FINE, at the same end time."""
+# The lts convergence runs: the first dt, the base steps there, the --set
+# values and the CFL fraction @cfl at the first dt, full and --quick.
+LTS_CONVERGENCE = {
+    # 1024 cells at the quick dt 4e-7: the stiff half takes 1 base step.
+    "heat_rod": dict(full=(2.0e-8, 1024, {}, 0.4),
+                     quick=(4.0e-7, 128, {"range": "1024"}, 0.4)),
+    "heat_rod_flux": dict(full=(2.0e-8, 1024, {}, 0.4),
+                          quick=(4.0e-7, 128, {"range": "1024"}, 0.4)),
+    # The default 1024 cells: the stiff middle takes 1 base step, the rest 8.
+    "wave_rod": dict(full=(6.0e-5, 1000, {}, 0.5),
+                     quick=(6.0e-5, 100, {}, 0.5)),
+}
+
+
+def lts_convergence(args, scenes):
+    """The order of lts on `scenes` (forward Euler on the heat rods and
+    symplectic Euler on the wave rod: 1, Model.md "Accuracy and stability
+    we expect"), and its error against simple's at each dt. dt and the CFL
+    fraction halve together, so every block keeps its sub-step in base
+    steps (1 in the stiff region, max_steps elsewhere) and every physical
+    step halves; the reference is simple at the finest dt / FINE, at the
+    same end time."""
     levels = 3 if args.quick else 4
-    if args.quick:
-        # 1024 cells: at dt 4e-7 the stiff half takes 1 base step.
-        dt0, steps0, sets0 = 4.0e-7, 128, {"range": "1024"}
-    else:
-        dt0, steps0, sets0 = 2.0e-8, 1024, {}
-    cfl0 = 0.4
     out = {}
-    for scene in ["heat_rod", "heat_rod_flux"]:
+    for scene in scenes:
+        dt0, steps0, sets0, cfl0 = LTS_CONVERGENCE[scene][
+            "quick" if args.quick else "full"]
         simb = build_bundle(args, scene, None)
         finest = dt0 / 2 ** (levels - 1)
         fine = os.path.join(args.out, "runs", "lts-convergence-%s-fine" % scene)
@@ -461,6 +475,17 @@ def lts_convergence(args):
                   ", ".join("%.2e" % p["error_lts"] for p in points)),
               flush=True)
     return out
+
+
+def lts_convergence_scenes(args):
+    """The scenes of the lts convergence study: the heat rods with heat_rod,
+    the wave rod with wave_rod, all with --convergence-only."""
+    scenes = []
+    if args.convergence_only or "heat_rod" in args.scenes:
+        scenes += ["heat_rod", "heat_rod_flux"]
+    if args.convergence_only or "wave_rod" in args.scenes:
+        scenes.append("wave_rod")
+    return scenes
 
 
 # --- output ----------------------------------------------------------------
@@ -510,15 +535,16 @@ def markdown(results, conv, command, lts_conv=None):
         lines.append("")
     if lts_conv:
         first = next(iter(lts_conv.values()))["points"]
-        lines += ["## Convergence of lts (heat rods, max-abs error of @U "
-                  "against simple at dt/%d, dt and cfl halved together)" %
-                  FINE, "", "| scene | strategy | " + " | ".join(
-                      "dt %g" % p["dt"] for p in first) + " | slope |",
-                  "|" + " --- |" * (3 + len(first))]
+        lines += ["## Convergence of lts (max-abs error of @U against "
+                  "simple at dt/%d, dt and cfl halved together)" % FINE, "",
+                  "| scene | strategy | dt0 | " + " | ".join(
+                      "dt0 / %d" % 2 ** k if k else "error at dt0"
+                      for k in range(len(first))) + " | slope |",
+                  "|" + " --- |" * (4 + len(first))]
         for scene, c in lts_conv.items():
             for strategy in ["simple", "lts"]:
-                lines.append("| %s | %s | %s | %s |" % (
-                    scene, strategy, " | ".join(
+                lines.append("| %s | %s | %g | %s | %s |" % (
+                    scene, strategy, c["points"][0]["dt"], " | ".join(
                         fmt(p["error_" + strategy]) for p in c["points"]),
                     "%.2f" % c["slope"] if strategy == "lts" else "-"))
         lines.append("")
@@ -634,8 +660,7 @@ def main():
     if not args.no_convergence:
         if args.convergence_only or "harmonic" in args.scenes:
             needed.append("harmonic")
-        if args.convergence_only or "heat_rod" in args.scenes:
-            needed += ["heat_rod", "heat_rod_flux"]
+        needed += lts_convergence_scenes(args)
     missing = [scene + ".mlir" for scene in dict.fromkeys(needed)
                if not os.path.isfile(os.path.join(args.scenes_dir,
                                                   scene + ".mlir"))]
@@ -656,9 +681,8 @@ def main():
                                     "harmonic" in args.scenes):
         conv = convergence(args)
     lts_conv = None
-    if not args.no_convergence and (args.convergence_only or
-                                    "heat_rod" in args.scenes):
-        lts_conv = lts_convergence(args)
+    if not args.no_convergence and lts_convergence_scenes(args):
+        lts_conv = lts_convergence(args, lts_convergence_scenes(args))
     with open(os.path.join(args.out, "results.json"), "w") as f:
         json.dump({"command": command, "backend": args.backend,
                    "results": results, "convergence": conv,
