@@ -31,6 +31,13 @@ struct sim_session {
   std::unique_ptr<Executor> session;
   /// The last sim_session_check_init's results.
   std::vector<InitCheck> initChecks;
+  /// A run is in progress: its progress callback may read the session, and
+  /// interrupt it, but not change it (a new range, state or clock under the
+  /// running loop would leave it stepping freed or stale memory).
+  bool running = false;
+  /// sim_session_destroy was called during the run: it ends at its next
+  /// host synchronisation and then deletes the session.
+  bool destroyed = false;
 };
 
 namespace {
@@ -79,6 +86,35 @@ sim_status nullArgument(const char *function, const char *what) {
 #define SIM_REQUIRE(pointer)                                                   \
   if (!(pointer))                                                              \
   return nullArgument(__func__, #pointer)
+
+/// `function` was called on a session whose run is in progress (from the
+/// progress callback, or from another thread).
+sim_status sessionRunning(const char *function) {
+  lastError = std::string(function) +
+              ": the session's run is in progress (a progress callback may "
+              "read the session or interrupt the run, not change it)";
+  return SIM_ERROR_INVALID_ARGUMENT;
+}
+
+#define SIM_REQUIRE_IDLE(session)                                              \
+  if ((session)->running)                                                      \
+  return sessionRunning(__func__)
+
+/// Runs `session` (sim_session_run and sim_session_run_pausing), marked as
+/// running, and deletes it afterwards where sim_session_destroy was called
+/// meanwhile.
+sim_status runSession(sim_session *session, int64_t steps, int64_t pause) {
+  session->running = true;
+  sim_status status = guard([&] { session->session->run(steps, pause); });
+  session->running = false;
+  if (!session->destroyed)
+    return status;
+  delete session;
+  lastError = "the session was destroyed during its run (sim_session_destroy "
+              "from the progress callback): the run stopped and the session "
+              "is gone";
+  return SIM_ERROR_INTERRUPTED;
+}
 
 } // namespace
 
@@ -341,7 +377,16 @@ sim_status sim_session_create(const sim_bundle *bundle,
   });
 }
 
-void sim_session_destroy(sim_session *session) { delete session; }
+void sim_session_destroy(sim_session *session) {
+  if (session && session->running) {
+    // From the progress callback: the run stops at its next host
+    // synchronisation and runSession deletes the session then.
+    session->destroyed = true;
+    session->session->interrupt();
+    return;
+  }
+  delete session;
+}
 
 sim_backend sim_session_backend(const sim_session *session) {
   return session ? session->session->backendKind() : SIM_BACKEND_AUTO;
@@ -359,6 +404,7 @@ int64_t sim_session_group_size(const sim_session *session) {
 sim_status sim_session_set(sim_session *session, const char *name,
                            const char *value) {
   SIM_REQUIRE(session);
+  SIM_REQUIRE_IDLE(session);
   SIM_REQUIRE(name);
   SIM_REQUIRE(value);
   return guard([&] { session->session->set(name, value); });
@@ -394,6 +440,7 @@ int64_t sim_session_range(const sim_session *session) {
 
 sim_status sim_session_init(sim_session *session) {
   SIM_REQUIRE(session);
+  SIM_REQUIRE_IDLE(session);
   return guard([&] { session->session->init(); });
 }
 
@@ -420,6 +467,7 @@ sim_status sim_session_get_buffer(sim_session *session, const char *buffer,
 sim_status sim_session_set_buffer(sim_session *session, const char *buffer,
                                   const void *data, size_t bytes) {
   SIM_REQUIRE(session);
+  SIM_REQUIRE_IDLE(session);
   SIM_REQUIRE(buffer);
   SIM_REQUIRE(data);
   return guard([&] { session->session->setBuffer(buffer, data, bytes); });
@@ -547,13 +595,15 @@ void sim_session_set_progress(sim_session *session, sim_progress_fn progress,
 
 sim_status sim_session_run(sim_session *session, int64_t steps) {
   SIM_REQUIRE(session);
-  return guard([&] { session->session->run(steps); });
+  SIM_REQUIRE_IDLE(session);
+  return runSession(session, steps, steps);
 }
 
 sim_status sim_session_run_pausing(sim_session *session, int64_t steps,
                                    int64_t pause) {
   SIM_REQUIRE(session);
-  return guard([&] { session->session->run(steps, pause); });
+  SIM_REQUIRE_IDLE(session);
+  return runSession(session, steps, pause);
 }
 
 void sim_session_interrupt(sim_session *session) {
@@ -605,12 +655,14 @@ int64_t sim_session_cut_big_steps(const sim_session *session) {
 
 sim_status sim_session_checkpoint(sim_session *session, const char *path) {
   SIM_REQUIRE(session);
+  SIM_REQUIRE_IDLE(session);
   SIM_REQUIRE(path);
   return guard([&] { writeCheckpointFile(*session->session, path); });
 }
 
 sim_status sim_session_checkpoint_fd(sim_session *session, int fd) {
   SIM_REQUIRE(session);
+  SIM_REQUIRE_IDLE(session);
   return guard([&] {
     writeCheckpoint(*session->session, fd,
                     "file descriptor " + std::to_string(fd));
@@ -619,6 +671,7 @@ sim_status sim_session_checkpoint_fd(sim_session *session, int fd) {
 
 sim_status sim_session_restart(sim_session *session, const char *path) {
   SIM_REQUIRE(session);
+  SIM_REQUIRE_IDLE(session);
   SIM_REQUIRE(path);
   return guard([&] { restartFromCheckpointFile(*session->session, path); });
 }

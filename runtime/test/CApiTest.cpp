@@ -1,11 +1,15 @@
 //===- CApiTest.cpp - runs the C test of the C API ------------------------===//
 
 #include "TestBundle.h"
+#include "sim/Runtime/sim_runtime.h"
 
 #include <gtest/gtest.h>
 
 #include <cstdio>
+#include <string>
 #include <unistd.h>
+#include <utility>
+#include <vector>
 
 extern "C" int sim_c_api_test(const char *path, char *message, size_t capacity);
 
@@ -18,6 +22,106 @@ TEST(CApi, WorksFromC) {
   char message[1024];
   EXPECT_EQ(sim_c_api_test(path.c_str(), message, sizeof message), 0)
       << message;
+  std::remove(path.c_str());
+  rmdir(dir.c_str());
+}
+
+namespace {
+
+/// What the progress callback of CApi.ReadsButDoesNotChangeARunningSession
+/// tried, and the statuses it got.
+struct CallbackCalls {
+  sim_session *session = nullptr;
+  bool destroy = false;
+  int calls = 0;
+  std::vector<std::pair<std::string, sim_status>> statuses;
+  std::string lastMessage;
+  sim_status readStatus = SIM_OK;
+};
+
+void changeFromCallback(void *user, int64_t, int64_t) {
+  auto &calls = *static_cast<CallbackCalls *>(user);
+  if (calls.calls++ > 0)
+    return;
+  sim_session *session = calls.session;
+  if (calls.destroy) {
+    sim_session_destroy(session);
+    return;
+  }
+  // Reading is allowed between host synchronisations.
+  size_t bytes = 0;
+  calls.readStatus = sim_session_buffer_bytes(session, "X", &bytes);
+  std::vector<char> data(bytes);
+  if (calls.readStatus == SIM_OK)
+    calls.readStatus =
+        sim_session_get_buffer(session, "X", data.data(), data.size());
+  // Changing is not: each would leave the running loop stepping a state
+  // that is gone or another run's.
+  calls.statuses.emplace_back("set", sim_session_set(session, "range", "64"));
+  calls.lastMessage = sim_last_error();
+  calls.statuses.emplace_back(
+      "set_buffer",
+      sim_session_set_buffer(session, "X", data.data(), data.size()));
+  calls.statuses.emplace_back("init", sim_session_init(session));
+  calls.statuses.emplace_back("run", sim_session_run(session, 4));
+  calls.statuses.emplace_back("run_pausing",
+                              sim_session_run_pausing(session, 4, 2));
+  calls.statuses.emplace_back("checkpoint",
+                              sim_session_checkpoint(session, "/dev/null"));
+  calls.statuses.emplace_back("restart",
+                              sim_session_restart(session, "/dev/null"));
+}
+
+} // namespace
+
+TEST(CApi, ReadsButDoesNotChangeARunningSession) {
+  std::string dir = makeTempDir();
+  std::string path = dir + "/decay.simb";
+  writeFile(path, decayBundle());
+  sim_bundle *bundle = nullptr;
+  ASSERT_EQ(sim_bundle_open(path.c_str(), &bundle), SIM_OK) << sim_last_error();
+  for (sim_backend backend : {SIM_BACKEND_CPU, SIM_BACKEND_REFERENCE}) {
+    SCOPED_TRACE(sim_backend_name(backend));
+    sim_session_options options;
+    sim_session_options_init(&options);
+    options.strategy = SIM_STRATEGY_HIP;
+    options.backend = backend;
+    for (bool destroy : {false, true}) {
+      sim_session *session = nullptr;
+      ASSERT_EQ(sim_session_create(bundle, &options, &session), SIM_OK)
+          << sim_last_error();
+      CallbackCalls calls;
+      calls.session = session;
+      calls.destroy = destroy;
+      sim_session_set_progress(session, &changeFromCallback, &calls);
+      sim_status status = sim_session_run(session, 200);
+      EXPECT_GT(calls.calls, 0);
+      if (destroy) {
+        // The run stopped and took the session with it.
+        EXPECT_EQ(status, SIM_ERROR_INTERRUPTED);
+        EXPECT_NE(std::string(sim_last_error())
+                      .find("the session was destroyed during its run"),
+                  std::string::npos)
+            << sim_last_error();
+        continue;
+      }
+      EXPECT_EQ(status, SIM_OK) << sim_last_error();
+      EXPECT_EQ(calls.readStatus, SIM_OK);
+      for (auto &[call, callStatus] : calls.statuses)
+        EXPECT_EQ(callStatus, SIM_ERROR_INVALID_ARGUMENT) << call;
+      EXPECT_EQ(calls.lastMessage,
+                "sim_session_set: the session's run is in progress (a "
+                "progress callback may read the session or interrupt the "
+                "run, not change it)");
+      // The run went on as if nothing had been asked, and the session is
+      // usable afterwards.
+      EXPECT_EQ(sim_session_time(session), 200);
+      EXPECT_EQ(sim_session_set(session, "range", "64"), SIM_OK)
+          << sim_last_error();
+      sim_session_destroy(session);
+    }
+  }
+  sim_bundle_close(bundle);
   std::remove(path.c_str());
   rmdir(dir.c_str());
 }

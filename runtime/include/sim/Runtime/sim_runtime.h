@@ -400,7 +400,13 @@ SIM_API sim_status sim_session_init_check(const sim_session *session,
                                           int32_t index, sim_init_check *out);
 
 /// Called after each host synchronisation of a run with the base steps done
-/// so far and the run's total.
+/// so far and the run's total. The callback may read the session (buffers,
+/// totals, time, metrics) and call sim_session_interrupt; a call that would
+/// change it (sim_session_set, _set_buffer, _init, _run, _run_pausing,
+/// _checkpoint, _checkpoint_fd, _restart) returns
+/// SIM_ERROR_INVALID_ARGUMENT and changes nothing. sim_session_destroy
+/// there stops the run: sim_session_run returns SIM_ERROR_INTERRUPTED and
+/// the session is gone.
 typedef void (*sim_progress_fn)(void *user, int64_t done, int64_t total);
 SIM_API void sim_session_set_progress(sim_session *session,
                                       sim_progress_fn progress, void *user);
