@@ -101,6 +101,13 @@ struct PlanHalosPass : public sim::impl::SimPlanHalosBase<PlanHalosPass> {
 
     int64_t largest = 0;
     Builder builder(&getContext());
+    // Decided afresh: what a previous run of this pass (or a hand-written
+    // scene) left is replaced.
+    for (BufferOp buffer : simulation.getBuffers()) {
+      buffer.removeHaloAttr();
+      buffer.removeReplicatedAttr();
+      buffer.removeSnapshotGhostsAttr();
+    }
     for (Operation *op : replicated)
       cast<BufferOp>(op).setReplicatedAttr(builder.getUnitAttr());
     for (Operation *op : snapshotGhosts)

@@ -123,8 +123,17 @@ struct PlanMemoryPass : public sim::impl::SimPlanMemoryBase<PlanMemoryPass> {
     simulation.setStrategyAttr(StrategyAttr::get(context, strategy));
     simulation.setStepCapAttr(IntegerAttr::get(
         IntegerType::get(context, 32), getStepCap(simulation, strategy)));
-    for (BufferOp buffer : analysis.getBuffers())
+    // Decided afresh (also the distributed decisions, which
+    // --sim-plan-halos adds after this pass for a distributed compile only:
+    // left over in a scene otherwise, they would plan a distributed run
+    // without its ghosts).
+    simulation.removeDistributedHaloAttr();
+    for (BufferOp buffer : simulation.getBuffers()) {
       buffer.removeSnapshotAttr();
+      buffer.removeHaloAttr();
+      buffer.removeReplicatedAttr();
+      buffer.removeSnapshotGhostsAttr();
+    }
 
     llvm::SetVector<Operation *> snapshots;
     for (ComponentOp component : analysis.getComponents()) {
