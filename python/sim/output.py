@@ -33,6 +33,8 @@ from __future__ import annotations
 
 import os
 import re
+import secrets
+import stat
 import zipfile
 
 import numpy as np
@@ -125,6 +127,40 @@ def _names(stems) -> dict[str, str]:
     return names
 
 
+def _create_temporary(folder: str, name: str) -> tuple[int, str]:
+    """A new file in `folder` for `name` to be written under: its
+    descriptor (open for writing) and path. Made with the mode a new file
+    of open() has (0666 less the umask), not tempfile's 0600."""
+    while True:
+        tmp = os.path.join(folder, f".{name}.{secrets.token_hex(4)}.tmp")
+        try:
+            return os.open(tmp, os.O_WRONLY | os.O_CREAT | os.O_EXCL |
+                           getattr(os, "O_CLOEXEC", 0), 0o666), tmp
+        except FileExistsError:
+            continue
+
+
+def _write_npz(f, arrays: dict):
+    """Writes `arrays` to the open file `f` as numpy.savez does (an
+    uncompressed zip of `<key>.npy`), closing the zip archive also when a
+    write fails: numpy leaves it to the garbage collector, which then
+    reports an error of its own ("Exception ignored in ZipFile.__del__")."""
+    archive = zipfile.ZipFile(f, mode="w", compression=zipfile.ZIP_STORED,
+                              allowZip64=True)
+    try:
+        for key, value in arrays.items():
+            # Always zip64, as numpy (gh-10776).
+            with archive.open(key + ".npy", "w", force_zip64=True) as member:
+                np.lib.format.write_array(member, np.asanyarray(value))
+    except BaseException:
+        try:
+            archive.close()  # Lets go of `f` even when this write fails.
+        except Exception:
+            pass
+        raise
+    archive.close()
+
+
 class Output:
     """Observed buffers and totals at K output times (see the module)."""
 
@@ -165,10 +201,47 @@ class Output:
         return out
 
     def save(self, path) -> str:
-        """Writes the output as `.npz` (uncompressed); returns the path."""
+        """Writes the output as `.npz` (uncompressed); returns the path.
+
+        The file is written next to `path` under a temporary name and
+        renamed onto it only once complete, so a write that fails (a full
+        disk, a file size limit) leaves a file that was at `path` as it
+        was and no partial file behind: it raises one OSError saying
+        so."""
         path = str(path)
-        with open(path, "wb") as f:  # savez would append .npz to a name
-            np.savez(f, **self.arrays())
+        arrays = self.arrays()
+        # A symbolic link is written through, as open() would, onto its
+        # target (renaming onto the link would replace the link).
+        target = os.path.realpath(path) if os.path.islink(path) else path
+        folder = os.path.dirname(os.path.abspath(target))
+        kept = os.path.exists(target)
+        tmp = None
+        try:
+            fd, tmp = _create_temporary(folder, os.path.basename(target))
+            if kept:
+                # The mode a file written over in place keeps.
+                try:
+                    os.chmod(tmp, stat.S_IMODE(os.stat(target).st_mode))
+                except OSError:
+                    pass
+            with os.fdopen(fd, "wb") as f:
+                _write_npz(f, arrays)
+                f.flush()
+                os.fsync(f.fileno())
+            os.replace(tmp, target)
+            tmp = None
+        except OSError as error:
+            reason = error.strerror or str(error)
+            what = (f"{path} is left as it was" if kept
+                    else f"no file was made")
+            raise OSError(error.errno, f"Output.save: cannot write {path} "
+                          f"({reason}); {what}") from None
+        finally:
+            if tmp is not None:
+                try:
+                    os.unlink(tmp)
+                except OSError:
+                    pass
         return path
 
     @classmethod

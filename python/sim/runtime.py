@@ -190,6 +190,10 @@ class Session:
     def __init__(self, bundle: Bundle, /, strategy: str = "hip",
                  backend: str = "auto", *, params: dict | None = None,
                  **keywords):
+        # The thread whose run() is in progress, or None: a progress
+        # callback (or another thread) must not change the session under
+        # the running loop (see _check_not_running).
+        self._running: int | None = None
         if not isinstance(bundle, Bundle):
             raise TypeError(f"a Session runs a sim.Bundle (sim.compile(scene) "
                             f"or sim.Bundle(path)), not {bundle!r}")
@@ -286,6 +290,7 @@ class Session:
         starts over from the init bodies at time 0, and buffers set before
         are lost (a warning names them; set them after the range). Setting
         the current range keeps the state."""
+        self._check_not_running("Session.set()")
         values = _merge_values(params, values, self.bundle)
         for name, value in values.items():
             text = _value_literal(value)
@@ -305,6 +310,25 @@ class Session:
                         f"range)", stacklevel=2)
                 self._initial.clear()
                 self._set_buffers.clear()
+
+    def _check_not_running(self, what: str, verb: str = "called"):
+        """Refuses (RunError) a call that changes the session while its
+        run() is in progress, from a progress callback or another thread:
+        the runtime would free or resize the state under the running loop.
+        Reading the state (buffers, totals, time) stays allowed."""
+        running = getattr(self, "_running", None)  # __init__ may have failed
+        if running is None:
+            return
+        if running == threading.get_ident():
+            where = ("from a progress callback): the callback may read the "
+                     "session, not change it (to stop the run, raise an "
+                     "exception in it)")
+        else:
+            where = "from another thread): wait for the run to end"
+        raise RunError(
+            simrt._INVALID_ARGUMENT,
+            f"{what} cannot be {verb} while Session.run() is in progress "
+            f"({where}")
 
     def _check_dt(self, text: str):
         """Refuses a dt that rounds to 0 in an f32 bundle, saying what to
@@ -334,6 +358,7 @@ class Session:
         """Starts over from the initial state (time 0), then replaces the
         state of the buffers given (arrays, see `__setitem__`; any buffer
         name, `self` too)."""
+        self._check_not_running("Session.init()")
         self._rt.init()
         self._initial.clear()
         self._set_buffers.clear()
@@ -412,10 +437,13 @@ class Session:
     def __setitem__(self, name: str, values):
         """Replaces the buffer's current state with `values` (anything numpy
         broadcasts to [range] or [range, lanes]; converted to the buffer's
-        scalar type)."""
+        scalar type; anything that is no real numbers, such as None or
+        complex numbers, is a TypeError)."""
+        self._check_not_running(f"Setting buffer {name!r} (session[{name!r}] "
+                                f"= ...)", "done")
         info = self._state_info(name)
         shape = info.shape(self.range)
-        array = np.asarray(values, dtype=info.dtype)
+        array = _real_array(name, info, values)
         try:
             data = np.ascontiguousarray(np.broadcast_to(array, shape))
         except ValueError:
@@ -502,7 +530,23 @@ class Session:
         that ends a run (a RunError too) carries the `Output` of the output
         times it reached as its `output` attribute (sim-run writes those
         when a signal stops it).
+
+        The progress callback may read the session (buffers, totals, time)
+        but not change it: run, set, init, close and setting a buffer are
+        refused with a RunError while the run is in progress.
         """
+        self._check_not_running("Session.run()")
+        self._running = threading.get_ident()
+        try:
+            return self._run(steps, strategy, backend, progress,
+                             output_every, errors, record)
+        finally:
+            # Also when the run ends by an exception or Ctrl-C.
+            self._running = None
+
+    def _run(self, steps, strategy, backend, progress, output_every, errors,
+             record):
+        """run(), while `_running` says it is in progress."""
         # numpy's integers too; True is not a number of steps.
         steps = _check_count("steps", steps, 0, "int64")
         # Checked before the run: a callback that cannot be called would
@@ -676,12 +720,12 @@ class Session:
         parts += [f"total '{n}' is not finite ({_value_text(totals[n])})"
                   for n in bad_totals]
         if parts:
-            # stacklevel: the user's call of run().
+            # stacklevel: the user's call of run() (through _run).
             warnings.warn(NonFiniteWarning(
                 f"the run ended at T = {self.time} with NaN or infinite "
                 f"values: {'; '.join(parts)} (check_finite=True stops at "
                 f"the first and says where it appeared)", counts, bad_totals),
-                stacklevel=3)
+                stacklevel=4)
 
     def metrics(self) -> dict:
         """What the last run measured (all chunks of an output run
@@ -715,6 +759,7 @@ class Session:
                       errors, exact_arrays, meta)
 
     def close(self):
+        self._check_not_running("Session.close()")
         self._rt.close()
 
     def __enter__(self):
@@ -818,6 +863,82 @@ def _value_literal(value) -> str:
 def _value_text(value) -> str:
     """nan, inf or -inf, as sim-run writes them."""
     return "nan" if np.isnan(value) else "inf" if value > 0 else "-inf"
+
+
+def _not_real(value) -> bool:
+    """Whether an element of an object array is no real number (None, text,
+    a complex number, a container...). numbers.Real, and the numbers that
+    are not complex ones (Decimal) but convert to a float."""
+    if isinstance(value, (bool, np.bool_)):
+        return False
+    if isinstance(value, numbers.Real):
+        return False
+    return (not isinstance(value, numbers.Number) or
+            isinstance(value, numbers.Complex))
+
+
+def _short(value) -> str:
+    text = repr(value)
+    return text if len(text) <= 60 else text[:57] + "..."
+
+
+def _one(value) -> str:
+    """`value` in a message: None, or its type and (short) repr."""
+    if value is None:
+        return "None"
+    return f"the {type(value).__name__} {_short(value)}"
+
+
+def _container(values) -> str:
+    """What holds the values given: a list, a tuple, an array..."""
+    if isinstance(values, np.ndarray):
+        return "an array"
+    name = type(values).__name__
+    return f"{'an' if name[:1] in 'aeiou' else 'a'} {name}"
+
+
+def _real_array(name: str, info: BufferInfo, values) -> np.ndarray:
+    """`values` as an array of the buffer's scalar type, or a TypeError
+    naming the buffer when they are no real numbers: numpy would make NaN
+    of None (np.asarray(None, float)), drop the imaginary part of complex
+    numbers with only a warning, and parse text."""
+    what = (f"buffer {name} ({info.element_type}) takes real numbers "
+            f"(converted to {info.dtype})")
+    try:
+        given = np.asarray(values)
+    except ValueError as error:
+        # Nested sequences of different lengths.
+        raise ValueError(f"{what}; {_short(values)} is no array of "
+                         f"numbers ({error})") from None
+    kind = given.dtype.kind
+    if kind == "c":
+        raise TypeError(f"{what}, not complex numbers ({given.dtype}; "
+                        f"pass their real part, .real, to drop the "
+                        f"imaginary part)")
+    if kind == "O":
+        bad = next(((index, item) for index, item in np.ndenumerate(given)
+                    if _not_real(item)), None)
+        if bad is not None:
+            index, item = bad
+            where = "" if given.ndim == 0 else \
+                f" at index {list(index) if len(index) > 1 else index[0]}"
+            given_text = (_one(values) if given.ndim == 0 else
+                          f"{_container(values)} holding "
+                          f"{_one(item)}{where}")
+            raise TypeError(f"{what}, not {given_text}")
+    elif kind not in "biuf":
+        # Text, bytes, dates, structured arrays.
+        text = (f"text ({given.dtype})" if kind in "US" else
+                f"{given.dtype} values")
+        given_text = (_one(values) if given.ndim == 0 else
+                      f"{_container(values)} of {text}")
+        raise TypeError(f"{what}, not {given_text}")
+    try:
+        return np.asarray(given, dtype=info.dtype)
+    except (TypeError, ValueError) as error:
+        # An object that says it is a number but does not convert.
+        raise TypeError(f"{what}; {_short(values)} does not convert "
+                        f"({error})") from None
 
 
 def _put(rt, name, data: np.ndarray):
