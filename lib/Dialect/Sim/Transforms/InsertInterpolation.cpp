@@ -35,6 +35,43 @@ using namespace mlir::sim;
 
 namespace {
 
+/// `index` resolved by the boundary rule `rule` into an item inside the
+/// range (the item itself when it is inside), and for `zero` the condition
+/// that it is inside (else null): a value read outside the range under
+/// `zero` is a zero element.
+std::pair<Value, Value> resolveLikeBuffer(OpBuilder &builder, Location loc,
+                                          Boundary rule, Value index) {
+  Value range = arith::IndexCastOp::create(
+      builder, loc, builder.getIndexType(),
+      GetParamOp::create(
+          builder, loc, builder.getI64Type(),
+          FlatSymbolRefAttr::get(builder.getContext(), "range")));
+  Value zero = arith::ConstantIndexOp::create(builder, loc, 0);
+  switch (rule) {
+  case Boundary::clamp: {
+    Value one = arith::ConstantIndexOp::create(builder, loc, 1);
+    Value last = arith::SubIOp::create(builder, loc, range, one);
+    Value low = arith::MaxSIOp::create(builder, loc, index, zero);
+    return {arith::MinSIOp::create(builder, loc, low, last), Value()};
+  }
+  case Boundary::wrap: {
+    // remsi keeps the dividend's sign: move a negative remainder up.
+    Value rem = arith::RemSIOp::create(builder, loc, index, range);
+    Value negative = arith::CmpIOp::create(
+        builder, loc, arith::CmpIPredicate::slt, rem, zero);
+    Value up = arith::AddIOp::create(builder, loc, rem, range);
+    return {arith::SelectOp::create(builder, loc, negative, up, rem), Value()};
+  }
+  case Boundary::zero: {
+    // One unsigned compare covers both ends (negative indices wrap high).
+    Value inside = arith::CmpIOp::create(
+        builder, loc, arith::CmpIPredicate::ult, index, range);
+    return {arith::SelectOp::create(builder, loc, inside, index, zero), inside};
+  }
+  }
+  llvm_unreachable("unknown boundary rule");
+}
+
 /// Builds, on demand and once per scalar type, the interpolation fraction and
 /// the big step's length in time units at the start of one body.
 class BodyTime {
@@ -394,10 +431,33 @@ struct InsertInterpolationPass
       builder.setInsertionPointToStart(atStartIf.elseBlock());
       SmallVector<Value> atBegin, atEnd;
       for (BufferOp input : inputs) {
-        atBegin.push_back(loadAt(
-            builder, input,
-            input.getSnapshot() ? Version::snapshot : Version::source, index));
-        atEnd.push_back(loadAt(builder, input, Version::target, index));
+        if (input == buffer || input.getBoundary() == buffer.getBoundary()) {
+          atBegin.push_back(
+              loadAt(builder, input,
+                     input.getSnapshot() ? Version::snapshot : Version::source,
+                     index));
+          atEnd.push_back(loadAt(builder, input, Version::target, index));
+          continue;
+        }
+        // An auxiliary buffer (a Hermite derivative) with another boundary
+        // rule: outside the range the read is the interpolated buffer's
+        // item under its own rule, and the derivative is read at that item
+        // (zero: no item, a zero derivative), as the reference executor
+        // resolves the item once. Each load would apply its own rule.
+        auto [auxIndex, inside] =
+            resolveLikeBuffer(builder, loc, buffer.getBoundary(), index);
+        for (Version version :
+             {input.getSnapshot() ? Version::snapshot : Version::source,
+              Version::target}) {
+          Value value = loadAt(builder, input, version, auxIndex);
+          if (inside)
+            value = arith::SelectOp::create(
+                builder, loc, inside, value,
+                arith::ConstantOp::create(
+                    builder, loc,
+                    cast<TypedAttr>(builder.getZeroAttr(value.getType()))));
+          (version == Version::target ? atEnd : atBegin).push_back(value);
+        }
       }
       scf::YieldOp::create(builder, loc,
                            interp.buildInterpolation(builder, loc, atBegin,
