@@ -35,8 +35,10 @@ enum class ScalarError {
 /// Parses `text` as a constant of `type` (a signless integer, index or float).
 /// Integers are written as in MLIR literals: decimal or `0x` hexadecimal,
 /// optionally negative. A value that does not fit is an error, never silently
-/// truncated: a non-negative integer may use the full unsigned range of the
-/// width unless `isSigned` is set.
+/// truncated: a decimal integer must fit the signed range of the width, as
+/// the kernels read it and sim-run --set takes it (4294967295 is no i32),
+/// while a hexadecimal one gives the bits and may use the full unsigned range
+/// (0xFF is an i8 of -1, as in an MLIR literal), unless `isSigned` is set.
 static FailureOr<TypedAttr> parseScalar(Builder &builder, StringRef text,
                                         Type type, ScalarError &error,
                                         bool isSigned = false) {
@@ -59,8 +61,11 @@ static FailureOr<TypedAttr> parseScalar(Builder &builder, StringRef text,
     APInt value = magnitude.zext(magnitude.getBitWidth() + 1);
     if (negative)
       value.negate();
-    bool fits = negative || isSigned ? value.getSignificantBits() <= width
-                                     : value.getActiveBits() <= width;
+    // An i1 holds 0 and 1 (its signed range is -1..0).
+    bool bits = radix == 16 || width == 1;
+    bool fits = negative || isSigned || !bits
+                    ? value.getSignificantBits() <= width
+                    : value.getActiveBits() <= width;
     if (!fits) {
       error = ScalarError::OutOfRange;
       return failure();

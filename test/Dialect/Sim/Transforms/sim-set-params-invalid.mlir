@@ -25,6 +25,8 @@
 // RUN: sim-opt %t/dt-nan.mlir --sim-set-params="values=dt=nan" --verify-diagnostics
 // RUN: sim-opt %t/dt-underflow.mlir --sim-set-params="values=dt=1e-50" --verify-diagnostics
 // RUN: sim-opt %t/i8-too-wide.mlir --sim-set-params="values=b=256" --verify-diagnostics
+// RUN: sim-opt %t/i8-unsigned-decimal.mlir --sim-set-params="values=b=255" --verify-diagnostics
+// RUN: sim-opt %t/i32-unsigned-decimal.mlir --sim-set-params="values=L=2147483648" --verify-diagnostics
 // RUN: sim-opt %t/i8-too-negative.mlir --sim-set-params="values=b=-129" --verify-diagnostics
 // RUN: sim-opt %t/i8-hex-too-wide.mlir --sim-set-params="values=b=0xFFFF" --verify-diagnostics
 // RUN: sim-opt %t/i32-hex-too-wide.mlir --sim-set-params="values=L=0x1FFFFFFFF" --verify-diagnostics
@@ -419,6 +421,44 @@ sim.simulation @s range(16) dt(1.0 : f32) max_steps(1) {
 
 //--- i8-too-wide.mlir
 // expected-error @+1 {{cannot set parameter 'b': '256' is out of range for 'i8'}}
+sim.simulation @s range(16) dt(1.0 : f32) max_steps(1) {
+  sim.param @L = 4 : i32
+  sim.param @k = 2.5 : f32
+  sim.param @b = 1 : i8
+  sim.param @N = 1 : index
+  sim.buffer @B : f32 init {
+  ^bb0(%i: index):
+    %c = arith.constant 0.0 : f32
+    sim.yield %c : f32
+  }
+  sim.component @C writes(@B) evaluate {
+  ^bb0(%i: index, %t: i64, %n: i32, %dt: f32):
+    %x = sim.read @B[%i] : f32
+    sim.yield %x : f32
+  }
+}
+
+//--- i8-unsigned-decimal.mlir
+// expected-error @+1 {{cannot set parameter 'b': '255' is out of range for 'i8'}}
+sim.simulation @s range(16) dt(1.0 : f32) max_steps(1) {
+  sim.param @L = 4 : i32
+  sim.param @k = 2.5 : f32
+  sim.param @b = 1 : i8
+  sim.param @N = 1 : index
+  sim.buffer @B : f32 init {
+  ^bb0(%i: index):
+    %c = arith.constant 0.0 : f32
+    sim.yield %c : f32
+  }
+  sim.component @C writes(@B) evaluate {
+  ^bb0(%i: index, %t: i64, %n: i32, %dt: f32):
+    %x = sim.read @B[%i] : f32
+    sim.yield %x : f32
+  }
+}
+
+//--- i32-unsigned-decimal.mlir
+// expected-error @+1 {{cannot set parameter 'L': '2147483648' is out of range for 'i32'}}
 sim.simulation @s range(16) dt(1.0 : f32) max_steps(1) {
   sim.param @L = 4 : i32
   sim.param @k = 2.5 : f32

@@ -7,7 +7,7 @@
 // RUN: sim-opt %s --sim-set-params="values=k=0.75" | FileCheck %s --check-prefix=FLOAT
 // RUN: sim-opt %s --sim-set-params="values=L=0x40,N=0xFF,b=0x7f" | FileCheck %s --check-prefix=HEX
 // RUN: sim-opt %s --sim-set-params="values=L=-3,b=-128" | FileCheck %s --check-prefix=NEG
-// RUN: sim-opt %s --sim-set-params="values=b=255" | FileCheck %s --check-prefix=UNSIGNED
+// RUN: sim-opt %s --sim-set-params="values=b=0xFF" | FileCheck %s --check-prefix=UNSIGNED
 // RUN: sim-opt %s --sim-set-params="values=range=16,dt=0.5,max_steps=2,L=7,k=1.5e+01,N=3,L=9" | FileCheck %s --check-prefix=MANY
 
 // Overrides apply to every simulation of the module, each value converted to
@@ -64,7 +64,8 @@
 // NEG-NEXT:    sim.param @L = -3 : i64
 // NEG:         sim.param @b = -128 : i8
 
-// A non-negative value may use the whole unsigned range of the width.
+// A hexadecimal value gives the bits: it may use the whole unsigned range
+// of the width (a decimal one only the signed range, see the invalid tests).
 // UNSIGNED-LABEL: sim.simulation @single
 // UNSIGNED:         sim.param @b = -1 : i8
 
