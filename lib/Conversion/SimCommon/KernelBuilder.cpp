@@ -139,22 +139,34 @@ void KernelTarget::maxPerBlock(KernelBuilder &b, Kernel &kernel, Value base,
                                LaneVar value, int64_t blockSize, Value memory,
                                Value offset, int64_t spreadLow,
                                int64_t spreadHigh) {
+  // The items `lane.item - shift` (shift in [spreadLow, spreadHigh]) that
+  // lie in the range form one interval, whose blocks are consecutive: one
+  // atomic per block it reaches (at most `blocks`), not per shift.
+  int64_t blocks = (spreadHigh - spreadLow + blockSize - 1) / blockSize + 1;
   forEachLane(b, kernel, base, [&](const Lane &lane) {
     b.ifThen(lane.active, [&] {
       Value element = laneLoad(b, value, lane);
-      for (int64_t shift = spreadLow; shift <= spreadHigh; ++shift) {
-        // Item `lane.item - shift`, when it lies in the range (below 0 it
-        // wraps around to an index above the range).
-        Value item = b.sub(lane.item, b.index(shift));
-        Value inRange =
-            b.cmp(arith::CmpIPredicate::ult, item, kernel.values.range);
-        b.ifThen(inRange, [&] {
-          Value block =
-              arith::DivUIOp::create(b, b.loc, item, b.index(blockSize));
-          b.atomic(arith::AtomicRMWKind::maxs, element, memory,
-                   b.add(offset, block));
-        });
-      }
+      Value first = b.max(b.sub(lane.item, b.index(spreadHigh)), b.index(0));
+      Value last = b.min(b.sub(lane.item, b.index(spreadLow)),
+                         b.sub(kernel.values.range, b.index(1)));
+      b.ifThen(b.cmp(arith::CmpIPredicate::sle, first, last), [&] {
+        Value firstBlock =
+            arith::DivUIOp::create(b, b.loc, first, b.index(blockSize));
+        Value lastBlock =
+            arith::DivUIOp::create(b, b.loc, last, b.index(blockSize));
+        for (int64_t k = 0; k < blocks; ++k) {
+          Value block = b.add(firstBlock, b.index(k));
+          auto emit = [&] {
+            b.atomic(arith::AtomicRMWKind::maxs, element, memory,
+                     b.add(offset, block));
+          };
+          // The interval reaches at least one block.
+          if (k == 0)
+            emit();
+          else
+            b.ifThen(b.cmp(arith::CmpIPredicate::ule, block, lastBlock), emit);
+        }
+      });
     });
   });
 }

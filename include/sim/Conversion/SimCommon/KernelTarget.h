@@ -198,8 +198,8 @@ public:
   /// `item - spreadHigh` to `item - spreadLow` (just `item` by default)
   /// that lies in the range, atomically (groups may run at once). At group
   /// level, after the phase that set `value`. The default is an atomic per
-  /// lane and item; a target whose lanes run in one thread combines the
-  /// lanes that reach each block first.
+  /// lane and block reached; a target whose lanes run in one thread
+  /// combines the lanes that reach each block first.
   virtual void maxPerBlock(KernelBuilder &b, Kernel &kernel, Value base,
                            LaneVar value, int64_t blockSize, Value memory,
                            Value offset, int64_t spreadLow = 0,

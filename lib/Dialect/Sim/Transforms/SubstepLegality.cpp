@@ -42,6 +42,10 @@ using namespace mlir::sim;
 
 namespace {
 
+/// The widest window, in items, at which a pair's reader may read the
+/// writer's values (docs/Model.md, "Conservation").
+constexpr int64_t kMaxFluxWindow = 4096;
+
 struct SubstepLegalityPass
     : public sim::impl::SimSubstepLegalityBase<SubstepLegalityPass> {
   using Base::Base;
@@ -251,6 +255,18 @@ struct SubstepLegalityPass
       }
     if (!reader) {
       refuse() << "no component reads its fluxes";
+      return;
+    }
+    // Every interface's estimate bounds the blocks of all the items that
+    // read it: a window of more than kMaxFluxWindow items would combine
+    // thousands of blocks per interface (the GPU's levels kernel has an
+    // atomic per block an interface reaches).
+    if (fluxWindow->getMaxOffset() - fluxWindow->getMinOffset() >=
+        kMaxFluxWindow) {
+      refuse() << "@" << readerName << " reads its fluxes at "
+               << fluxWindow->str() << ", more than " << kMaxFluxWindow
+               << " items apart; read them within " << kMaxFluxWindow
+               << " items of the reading item";
       return;
     }
     if (!isEntry) {

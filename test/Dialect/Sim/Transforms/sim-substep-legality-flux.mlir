@@ -475,3 +475,81 @@ sim.simulation @clamped range(64) dt(1.0e-2 : f32) max_steps(4) {
   sim.observe [@U]
 }
 
+
+// -----
+
+// A reader of fluxes 4096 items apart or more: no pair (every interface
+// would bound the blocks of thousands of readers). 4095 apart still pairs.
+
+// CHECK-LABEL: sim.simulation @wide_flux_window
+// CHECK: sim.component @Flux writes(@F) attributes {sub_stepping
+// CHECK-LABEL: sim.simulation @widest_flux_window
+// CHECK: sim.component @Flux writes(@F) attributes {flux_window = array<i64: -4095, 0>
+
+sim.simulation @wide_flux_window range(8192) dt(1.0e-2 : f32) max_steps(4) {
+  sim.buffer @U : f32 init {
+  ^bb0(%i: index):
+    %c = arith.constant 1.0 : f32
+    sim.yield %c : f32
+  }
+  sim.buffer @F : f32 interp(#sim.flux) boundary(zero) init {
+  ^bb0(%i: index):
+    %c = arith.constant 0.0 : f32
+    sim.yield %c : f32
+  }
+  // expected-remark @+1 {{under lts @Flux and the readers of its fluxes take the big step as under hip: @Cells reads its fluxes at i-4096..i, more than 4096 items apart; read them within 4096 items of the reading item}}
+  sim.component @Flux writes(@F) evaluate {
+  ^bb0(%j: index, %t: i64, %n: i32, %dt: f32):
+    %a = sim.read @U[%j] : f32
+    sim.yield %a : f32
+  }
+  sim.component @Cells writes(@U) num_steps {
+  ^bb0(%i: index, %t: i64):
+    %c2 = arith.constant 2 : i32
+    sim.yield %c2 : i32
+  } evaluate {
+  ^bb0(%i: index, %t: i64, %n: i32, %dt: f32):
+    %far = arith.constant 4096 : index
+    %il = arith.subi %i, %far : index
+    %fw = sim.read @F[%il] : f32
+    %fe = sim.read @F[%i] : f32
+    %d = arith.subf %fe, %fw : f32
+    sim.yield %d : f32
+  }
+  sim.schedule [@Flux]
+  sim.observe [@U]
+}
+
+sim.simulation @widest_flux_window range(8192) dt(1.0e-2 : f32) max_steps(4) {
+  sim.buffer @U : f32 init {
+  ^bb0(%i: index):
+    %c = arith.constant 1.0 : f32
+    sim.yield %c : f32
+  }
+  sim.buffer @F : f32 interp(#sim.flux) boundary(zero) init {
+  ^bb0(%i: index):
+    %c = arith.constant 0.0 : f32
+    sim.yield %c : f32
+  }
+  // expected-remark @+1 {{@Flux and @Cells form a flux pair}}
+  sim.component @Flux writes(@F) evaluate {
+  ^bb0(%j: index, %t: i64, %n: i32, %dt: f32):
+    %a = sim.read @U[%j] : f32
+    sim.yield %a : f32
+  }
+  sim.component @Cells writes(@U) num_steps {
+  ^bb0(%i: index, %t: i64):
+    %c2 = arith.constant 2 : i32
+    sim.yield %c2 : i32
+  } evaluate {
+  ^bb0(%i: index, %t: i64, %n: i32, %dt: f32):
+    %far = arith.constant 4095 : index
+    %il = arith.subi %i, %far : index
+    %fw = sim.read @F[%il] : f32
+    %fe = sim.read @F[%i] : f32
+    %d = arith.subf %fe, %fw : f32
+    sim.yield %d : f32
+  }
+  sim.schedule [@Flux]
+  sim.observe [@U]
+}
