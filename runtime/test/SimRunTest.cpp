@@ -27,6 +27,7 @@
 #include <fcntl.h>
 #include <map>
 #include <spawn.h>
+#include <sys/ioctl.h>
 #include <sys/stat.h>
 #include <sys/wait.h>
 #include <thread>
@@ -516,6 +517,41 @@ TEST_F(SimRun, DumpsNpyFilesAndJson) {
   EXPECT_EQ(metrics["dump"]["files"][0],
             Json::parse(R"({"buffer": "X", "state": "X.npy",
                             "reference": "X.reference.npy", "check": null})"));
+}
+
+TEST_F(SimRun, LeavesNoReferenceOrCheckFileThatTheRunDidNotWrite) {
+  std::string out = dir + "/restale", json = dir + "/restale.json";
+  Result result = simRun(bundle +
+                         " --backend cpu --steps 5 --reference simple "
+                         "--check --dump " +
+                         out);
+  ASSERT_EQ(result.status, 0) << result.output;
+  EXPECT_EQ(
+      listDirectory(out),
+      (std::vector<std::string>{"V.check.npy", "V.npy", "V.reference.npy",
+                                "X.check.npy", "X.npy", "X.reference.npy"}));
+  // V has no exact solution: the simple strategy's V of the run before
+  // must not pass for this run's reference; and nothing was checked.
+  result = simRun(bundle + " --backend cpu --steps 9 --reference exact " +
+                  "--dump " + out + " --json " + json);
+  ASSERT_EQ(result.status, 0) << result.output;
+  EXPECT_EQ(listDirectory(out),
+            (std::vector<std::string>{"V.npy", "X.npy", "X.reference.npy"}));
+  EXPECT_EQ(readJson(json)["dump"]["files"][1]["reference"], nullptr);
+  result = simRun(bundle + " --backend cpu --steps 2 --dump " + out);
+  ASSERT_EQ(result.status, 0) << result.output;
+  EXPECT_EQ(listDirectory(out), (std::vector<std::string>{"V.npy", "X.npy"}));
+  // So those names are the dump's, whatever the options: no other output
+  // may take one, as it would be removed.
+  writeFile(out + "/X.check.npy", "kept");
+  result = simRun(bundle + " --backend cpu --steps 2 --dump " + out +
+                  " --json " + out + "/X.check.npy");
+  EXPECT_EQ(result.status, 2) << result.output;
+  EXPECT_TRUE(contains(result.output, "--dump (buffer 'X'): '" + out +
+                                          "/X.check.npy' is also the file of "
+                                          "--json"))
+      << result.output;
+  EXPECT_EQ(readFile(out + "/X.check.npy"), "kept");
 }
 
 TEST_F(SimRun, StopsAtTheFirstNonFiniteValue) {
@@ -1157,6 +1193,85 @@ TEST_F(SimRun, StopsOnSigterm) {
   EXPECT_FALSE(exists(sub + "/early.json"));
 }
 
+TEST_F(SimRun, TakesTwoSignalsAtOnceAsOneRequest) {
+  // GNU timeout sends SIGTERM to sim-run and then to its process group: one
+  // request, which must still end with the checkpoint and the JSON. So that
+  // the second one surely comes while sim-run is still at work, its output
+  // rows go to a FIFO (of one page) that nobody reads until both were sent:
+  // sim-run waits in a write, with the first signal recorded.
+  std::string sub = dir + "/sigterm-twice", json = sub + "/run.json",
+              checkpoint = sub + "/run.simc", fifo = sub + "/stdout";
+  ASSERT_EQ(mkdir(sub.c_str(), 0755), 0);
+  ASSERT_EQ(mkfifo(fifo.c_str(), 0644), 0);
+  // Opened first (without waiting for a writer), so that sim-run's open
+  // for writing does not wait.
+  int reader = open(fifo.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC);
+  ASSERT_GE(reader, 0);
+  fcntl(reader, F_SETPIPE_SZ, 4096);
+  pid_t pid = spawnSimRun(SIM_RUN_PATH,
+                          {bundle, "--backend", "cpu", "--steps", "100000",
+                           "--output-every", "1", "--checkpoint", checkpoint,
+                           "--json", json},
+                          fifo, sub + "/stderr");
+  ASSERT_GT(pid, 0);
+  // Full: what is there stops growing.
+  int queued = -1, before = -2;
+  for (int i = 0; i < 600 && (queued != before || queued < 2048); ++i) {
+    before = queued;
+    std::this_thread::sleep_for(std::chrono::milliseconds(100));
+    ASSERT_EQ(ioctl(reader, FIONREAD, &queued), 0);
+  }
+  ASSERT_GE(queued, 2048);
+  ASSERT_EQ(kill(pid, SIGTERM), 0);
+  std::this_thread::sleep_for(std::chrono::milliseconds(100));
+  ASSERT_EQ(kill(pid, SIGTERM), 0);
+  std::this_thread::sleep_for(std::chrono::milliseconds(100));
+  // Read the rows until sim-run closes its end.
+  fcntl(reader, F_SETFL, 0);
+  std::string out;
+  char chunk[4096];
+  ssize_t n;
+  while ((n = read(reader, chunk, sizeof chunk)) > 0)
+    out.append(chunk, size_t(n));
+  close(reader);
+  int status = waitFor(pid);
+  ASSERT_TRUE(WIFEXITED(status)) << status;
+  EXPECT_EQ(WEXITSTATUS(status), 143);
+  EXPECT_TRUE(contains(out, "interrupted at base step")) << out;
+  EXPECT_TRUE(contains(readFile(sub + "/stderr"),
+                       "sim-run: interrupted by SIGTERM; wrote what was "
+                       "complete\n"))
+      << readFile(sub + "/stderr");
+  Json metrics = readJson(json);
+  EXPECT_EQ(metrics["interruption"]["signal"], "SIGTERM");
+  EXPECT_EQ(metrics["checkpoint"]["base_step"], metrics["steps_done"]);
+  EXPECT_TRUE(exists(checkpoint));
+}
+
+TEST_F(SimRun, RefusesAJsonOfMoreOutputTimesThanMemoryHolds) {
+  // --json holds every output time's time and totals until the end: 10^12
+  // of them do not fit, and nothing runs (a run that started would grow
+  // until the memory ran out).
+  std::string sub = dir + "/json-memory", json = sub + "/run.json";
+  ASSERT_EQ(mkdir(sub.c_str(), 0755), 0);
+  pid_t pid =
+      spawnSimRun(SIM_RUN_PATH,
+                  {bundle, "--backend", "cpu", "--steps", "1000000000000",
+                   "--output-every", "1", "--json", json},
+                  sub + "/stdout", sub + "/stderr");
+  ASSERT_GT(pid, 0);
+  int status = waitFor(pid, 30);
+  ASSERT_TRUE(WIFEXITED(status)) << status;
+  EXPECT_EQ(WEXITSTATUS(status), 2);
+  std::string err = readFile(sub + "/stderr");
+  EXPECT_TRUE(contains(err, "sim-run: error: --json: 1000000000001 output "
+                            "times of "))
+      << err;
+  EXPECT_TRUE(contains(err, "choose a larger --output-every")) << err;
+  EXPECT_FALSE(exists(json));
+  EXPECT_EQ(readFile(sub + "/stdout"), "");
+}
+
 TEST_F(SimRun, FailsWhenItCannotWriteItsReportButWritesItsFiles) {
   std::string sub = dir + "/stdout-gone";
   ASSERT_EQ(mkdir(sub.c_str(), 0755), 0);
@@ -1271,8 +1386,9 @@ TEST_F(SimRun, RemovesTheTemporaryBundleOnSignals) {
   EXPECT_EQ(listDirectory(tmp), std::vector<std::string>{});
   EXPECT_FALSE(exists(sub + "/run.json"));
 
-  // One that ignores the signal: the second SIGINT kills sim-run, which
-  // removes the temporary bundle first.
+  // One that ignores the signal: a second SIGINT kills sim-run, which
+  // removes the temporary bundle first; but not one within the second
+  // after the first, which is the same request sent twice.
   unlink(pidFile.c_str());
   writeFile(translate, "#!/bin/sh\ntrap '' INT TERM\necho $$ > '" + pidFile +
                            "'\nexec sleep 30\n");
@@ -1281,7 +1397,13 @@ TEST_F(SimRun, RemovesTheTemporaryBundleOnSignals) {
   EXPECT_EQ(listDirectory(tmp).size(), 1u);
   std::this_thread::sleep_for(std::chrono::milliseconds(200));
   ASSERT_EQ(kill(pid, SIGINT), 0);
-  std::this_thread::sleep_for(std::chrono::milliseconds(200));
+  ASSERT_EQ(kill(pid, SIGINT), 0);
+  std::this_thread::sleep_for(std::chrono::milliseconds(300));
+  ASSERT_EQ(kill(pid, SIGTERM), 0);
+  std::this_thread::sleep_for(std::chrono::milliseconds(300));
+  EXPECT_EQ(waitpid(pid, &status, WNOHANG), 0) << "killed within the grace";
+  EXPECT_EQ(listDirectory(tmp).size(), 1u);
+  std::this_thread::sleep_for(std::chrono::milliseconds(1000));
   ASSERT_EQ(kill(pid, SIGINT), 0);
   status = waitFor(pid, 20);
   EXPECT_TRUE(WIFSIGNALED(status) && WTERMSIG(status) == SIGINT) << status;

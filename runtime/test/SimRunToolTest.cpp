@@ -2,8 +2,9 @@
 //
 // The pieces of sim-run that decide what a bad input does: the value
 // parsers of the options, the dump file names made from buffer names, the
-// output paths that are refused, the atomic write, and --check's verdict on
-// non-finite values. SimRunTest.cpp runs the binary end to end.
+// output paths that are refused, the atomic write, --check's verdict on
+// non-finite values, and what the output times keep. SimRunTest.cpp runs the
+// binary end to end.
 //
 //===----------------------------------------------------------------------===//
 
@@ -16,6 +17,7 @@
 #include "simrun/Progress.h"
 #include "simrun/Report.h"
 #include "simrun/Safety.h"
+#include "simrun/Series.h"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -857,4 +859,58 @@ TEST(SimRunReport, ListsTheMeasuredRunsASignalSkipped) {
   json = nlohmann::json::parse(toJson(results));
   EXPECT_EQ(json["interruption"]["skipped"],
             nlohmann::json::array({"reference"}));
+}
+
+//===----------------------------------------------------------------------===//
+// Output times
+//===----------------------------------------------------------------------===//
+
+TEST(SimRunSeries, KeepsOnlyTheLastRowWhenNothingReadsThem) {
+  // --output-every 1 without --output, --json or --check: the table prints
+  // each row, and a run of any length holds one.
+  Series series;
+  series.range = 4;
+  series.totalNames = {"E"};
+  series.buffers.push_back({"X", 8, 1, true, false});
+  Buffer x;
+  x.name = "X";
+  x.bytes.assign(32, 0);
+  for (bool keep : {false, true}) {
+    series.keepRows = keep;
+    series.clear();
+    for (int64_t t = 0; t < 1000; ++t)
+      series.add(t, {double(t)}, {x}, {x});
+    EXPECT_EQ(series.recorded, 1000);
+    ASSERT_EQ(series.size(), keep ? 1000u : 1u);
+    EXPECT_EQ(series.times.back(), 999);
+    EXPECT_EQ(series.totals.back(), std::vector<double>{999});
+    EXPECT_EQ(series.errors.size(), series.size());
+  }
+}
+
+TEST(SimRunSeries, RefusesOutputTimesThatDoNotFitInMemory) {
+  // What every output time keeps grows with --json and --check, and with
+  // the totals, also without --output's buffers.
+  int64_t plain = rowOverheadBytes(2, 1, false, false);
+  int64_t json = rowOverheadBytes(2, 1, true, false);
+  EXPECT_GT(plain, 0);
+  EXPECT_GT(json, plain);
+  EXPECT_GT(rowOverheadBytes(3, 1, true, false), json);
+  EXPECT_GT(rowOverheadBytes(2, 1, true, true), json);
+  // 1 MiB of memory: half of it holds this many rows.
+  double memory = 1 << 20;
+  int64_t fit = int64_t(memory / 2) / json;
+  EXPECT_EQ(seriesMemoryError("--json", fit, json, memory), "");
+  std::string message = seriesMemoryError("--json", fit * 2, json, memory);
+  EXPECT_TRUE(contains(message, "--json: " + std::to_string(fit * 2) +
+                                    " output times of " + formatBytes(json) +
+                                    " each take "))
+      << message;
+  EXPECT_TRUE(contains(message, "more than half of this machine's memory "
+                                "(1.00 MiB); choose a larger --output-every"))
+      << message;
+  // --steps 10^12 --output-every 1: no overflow.
+  EXPECT_FALSE(seriesMemoryError("--output and --json", 1000000000001,
+                                 int64_t(1) << 40, 1e12)
+                   .empty());
 }

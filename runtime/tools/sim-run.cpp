@@ -42,6 +42,7 @@
 #include <dlfcn.h>
 #include <fcntl.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <chrono>
 #include <csignal>
@@ -620,10 +621,19 @@ bool recordOutput(Results &results, sim_session *session, Session *simple,
   results.main.outputSeconds +=
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start)
           .count();
-  if (series.size() == 1)
+  if (series.recorded == 1)
     printSeriesHeader(series);
   printSeriesRow(series, series.size() - 1);
   return true;
+}
+
+/// Whether anything reads the output times after the run: --output's
+/// .npz, --json's "output" and "totals_per_output_time", --check's
+/// comparison of the totals at every output time. Else the table prints
+/// each row as it comes and only the last one is kept.
+bool keepsEveryOutputTime(const Options &options, size_t totals) {
+  return !options.output.empty() || !options.json.empty() ||
+         (options.check && totals > 0);
 }
 
 /// What the output times record: every total, per observed buffer its
@@ -638,6 +648,7 @@ void setUpSeries(Results &results, const Options &options, sim_session *session,
   series.referenceKind = options.reference;
   series.keepValues = !options.output.empty();
   series.totalNames = totalNamesOf(session);
+  series.keepRows = keepsEveryOutputTime(options, series.totalNames.size());
   for (const sim_buffer_info &info : observed) {
     Series::Column column;
     column.name = info.name;
@@ -934,7 +945,10 @@ std::string npy(const Buffer &buffer, int64_t range) {
 }
 
 /// Plans and checks the dump files of the observed buffers (before the
-/// run); returns their stems.
+/// run); returns their stems. Every file a buffer can have is planned, also
+/// the .reference.npy and .check.npy this run will not write: writeDumps
+/// removes those if an earlier run left them, so they must not be an input
+/// or another output.
 std::vector<std::string>
 planDumps(OutputPlan &plan, const Options &options,
           const std::vector<sim_buffer_info> &observed) {
@@ -947,19 +961,17 @@ planDumps(OutputPlan &plan, const Options &options,
   for (size_t i = 0; i < stems.size(); ++i) {
     std::string option = "--dump (buffer '" + displayName(names[i]) + "')";
     std::string base = options.dump + "/" + stems[i];
-    plan.addFile(option, base + ".npy");
-    if (!options.reference.empty())
-      plan.addFile(option, base + ".reference.npy");
-    if (options.check)
-      plan.addFile(option, base + ".check.npy");
+    for (const char *suffix : kDumpSuffixes)
+      plan.addFile(option, base + suffix);
   }
   return stems;
 }
 
 /// Writes the dump files: the state, and the reference's and the check's
-/// values where they exist. A file of a part a signal cut or skipped is
-/// removed if an earlier run left one, so that no stale file sits beside
-/// the new ones.
+/// values where they exist. Where this run has no such values (no
+/// --reference or --check, a buffer without an exact solution, a part a
+/// signal cut or skipped), a file an earlier run left is removed: beside
+/// the new state it would pass for this run's.
 void writeDumps(Results &results, const Options &options,
                 const std::vector<std::string> &stems) {
   if (options.dump.empty())
@@ -971,25 +983,20 @@ void writeDumps(Results &results, const Options &options,
     DumpFiles files{results.main.values[i].name, stems[i] + ".npy", "", ""};
     std::string base = options.dump + "/" + stems[i];
     writeFileAtomically(base + ".npy", npy(results.main.values[i], range));
-    if (!options.reference.empty()) {
-      if (results.reference.stage == Stage::Done) {
-        if (results.referenceValues[i]) {
-          files.reference = stems[i] + ".reference.npy";
-          writeFileAtomically(base + ".reference.npy",
-                              npy(*results.referenceValues[i], range));
-        }
-      } else {
-        removeStale(base + ".reference.npy");
-      }
+    if (!options.reference.empty() && results.reference.stage == Stage::Done &&
+        results.referenceValues[i]) {
+      files.reference = stems[i] + ".reference.npy";
+      writeFileAtomically(base + ".reference.npy",
+                          npy(*results.referenceValues[i], range));
+    } else {
+      removeStale(base + ".reference.npy");
     }
-    if (options.check) {
-      if (results.check) {
-        files.check = stems[i] + ".check.npy";
-        writeFileAtomically(base + ".check.npy",
-                            npy(results.checkValues[i], range));
-      } else {
-        removeStale(base + ".check.npy");
-      }
+    if (results.check) {
+      files.check = stems[i] + ".check.npy";
+      writeFileAtomically(base + ".check.npy",
+                          npy(results.checkValues[i], range));
+    } else {
+      removeStale(base + ".check.npy");
     }
     results.dumpFiles.push_back(files);
   }
@@ -1023,34 +1030,50 @@ OutputPlan planOutputs(const Options &options) {
   return outputs;
 }
 
-/// --output keeps every output time's buffers until the end: refuse, before
-/// anything runs, a series that would take more than half of the memory.
+/// --output keeps every output time's buffers until the end, and --output,
+/// --json and --check every output time's time, totals and errors (the
+/// JSON holds them once more): refuse, before anything runs, a series that
+/// would take more than half of the memory. Without them only the last
+/// output time is kept, whatever the run's length.
 void checkSeriesMemory(const Options &options, sim_session *session,
                        const std::vector<sim_buffer_info> &observed) {
-  if (options.output.empty())
+  size_t totals = size_t(std::max(0, sim_session_num_totals(session)));
+  if (options.outputEvery <= 0 || !keepsEveryOutputTime(options, totals))
     return;
   int64_t row = 0;
-  for (const sim_buffer_info &info : observed) {
-    size_t bytes = 0;
-    check(sim_session_buffer_bytes(session, info.name, &bytes));
-    bool exact = options.reference == "exact" &&
-                 sim_session_has_exact(session, info.name);
-    row += int64_t(bytes) * (exact ? 2 : 1);
-  }
+  if (!options.output.empty())
+    for (const sim_buffer_info &info : observed) {
+      size_t bytes = 0;
+      check(sim_session_buffer_bytes(session, info.name, &bytes));
+      bool exact = options.reference == "exact" &&
+                   sim_session_has_exact(session, info.name);
+      row += int64_t(bytes) * (exact ? 2 : 1);
+    }
+  bool checksTotals = options.check && totals > 0;
+  row += rowOverheadBytes(totals, observed.size(), !options.json.empty(),
+                          checksTotals);
+  std::vector<std::string> keeping;
+  if (!options.output.empty())
+    keeping.push_back("--output");
+  if (!options.json.empty())
+    keeping.push_back("--json");
+  if (checksTotals)
+    keeping.push_back("--check");
+  std::string what;
+  for (size_t i = 0; i < keeping.size(); ++i)
+    what += (i == 0                    ? ""
+             : i + 1 == keeping.size() ? " and "
+                                       : ", ") +
+            keeping[i];
   Stops stops = stopsOf(options);
   int64_t times = stops.outputTimes(sim_session_time(session));
   long pages = sysconf(_SC_PHYS_PAGES), pageSize = sysconf(_SC_PAGESIZE);
-  if (pages <= 0 || pageSize <= 0 || row == 0)
+  if (pages <= 0 || pageSize <= 0)
     return;
-  double memory = double(pages) * double(pageSize);
-  double needed = double(row) * double(times);
-  if (needed > memory / 2)
-    usageError("--output: " + std::to_string(times) + " output times of " +
-               formatBytes(row) + " each take " +
-               formatBytes(int64_t(std::min(needed, 9e18))) +
-               ", more than half of this machine's memory (" +
-               formatBytes(int64_t(memory)) +
-               "); choose a larger --output-every");
+  std::string error =
+      seriesMemoryError(what, times, row, double(pages) * double(pageSize));
+  if (!error.empty())
+    usageError(error);
 }
 
 /// --output: the series as one .npz file.

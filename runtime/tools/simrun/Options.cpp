@@ -154,7 +154,8 @@ into place, never onto an input (but --checkpoint may replace the --restart
 file). The first SIGINT or SIGTERM stops the run at its next host
 synchronisation, on a big-step boundary: sim-run reports and writes what is
 complete (the output times reached, a checkpoint where it stopped) and
-skips the rest; a second one kills it.
+skips the rest; a second one kills it (one within a second of the first
+is the same request sent twice, and is ignored).
 
 ENVIRONMENT:
   SIM_CUDA_DRIVER             the driver library to load instead of libcuda.so.1

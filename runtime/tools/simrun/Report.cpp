@@ -192,7 +192,7 @@ void printTimeline(const Results &results) {
   }
   if (results.outputEvery > 0)
     row("output times",
-        std::to_string(results.series.size()) + " every " +
+        std::to_string(results.series.recorded) + " every " +
             std::to_string(results.outputEvery) +
             (results.outputEvery == 1 ? " base step, " : " base steps, ") +
             formatTime(main.outputSeconds) +

@@ -167,7 +167,9 @@ void printTable(const Results &results);
 /// --output-every's estimate of the evaluations its cuts cost, per
 /// component: one evaluation per item for every cut at an output time
 /// (a cut splits one big step in two; each big step evaluates every item of
-/// a component at least once, a whole-step component exactly once).
+/// a component at least once, a whole-step component exactly once). Under
+/// lts an output time can cut several big steps, one per power of two in
+/// the base steps before it: each is a big step more, and counts.
 std::vector<std::pair<std::string, int64_t>>
 extraEvaluations(const MainRun &main);
 

@@ -3,6 +3,7 @@
 #include "Series.h"
 
 #include "Output.h"
+#include "Report.h"
 
 #include <algorithm>
 #include <cstdio>
@@ -13,6 +14,13 @@ namespace simrun {
 void Series::add(int64_t time, const std::vector<double> &rowTotals,
                  const std::vector<Buffer> &rowValues,
                  const std::vector<std::optional<Buffer>> &references) {
+  ++recorded;
+  if (!keepRows) {
+    // Nothing reads the earlier rows: the table printed them.
+    times.clear();
+    totals.clear();
+    errors.clear();
+  }
   times.push_back(time);
   totals.push_back(rowTotals);
   std::vector<ErrorNorms> rowErrors(buffers.size());
@@ -34,6 +42,7 @@ void Series::add(int64_t time, const std::vector<double> &rowTotals,
 }
 
 void Series::clear() {
+  recorded = 0;
   times.clear();
   totals.clear();
   errors.clear();
@@ -50,6 +59,34 @@ int64_t rowBytes(const Series &series) {
     bytes += one * (column.hasExact ? 2 : 1);
   }
   return bytes;
+}
+
+int64_t rowOverheadBytes(size_t totals, size_t buffers, bool json, bool check) {
+  int64_t t = int64_t(totals), b = int64_t(buffers);
+  // The time, and two vectors with their heap blocks (totals, errors).
+  int64_t bytes = 8 + 2 * (24 + 16) + 8 * t + 16 * b;
+  // nlohmann's tree: an element of "times", an object (a std::map) in
+  // "totals_per_output_time" with a node per key ("T" and every total);
+  // then the text, indented, with up to 24 characters per number.
+  if (json)
+    bytes += 16 + 64 + 128 * (1 + t) + 64 + 64 * (1 + t);
+  // The reference executor's totals at the output time, and a compared
+  // row (names, values, limit) per total.
+  if (check)
+    bytes += 8 + 24 + 16 + 8 * t + 128 * t;
+  return bytes;
+}
+
+std::string seriesMemoryError(const std::string &what, int64_t times,
+                              int64_t row, double memory) {
+  double needed = double(row) * double(times);
+  if (row <= 0 || memory <= 0 || needed <= memory / 2)
+    return "";
+  return what + ": " + std::to_string(times) + " output times of " +
+         formatBytes(row) + " each take " +
+         formatBytes(int64_t(std::min(needed, 9e18))) +
+         ", more than half of this machine's memory (" +
+         formatBytes(int64_t(memory)) + "); choose a larger --output-every";
 }
 
 //===----------------------------------------------------------------------===//

@@ -48,10 +48,15 @@ struct Series {
   int64_t range = 0;
   std::string referenceKind;
   bool keepValues = false;
+  /// Whether every row stays until the end, for what reads them after the
+  /// run: --output, --json, --check's totals at every output time. Else
+  /// only the last row stays, for the table that prints it, so that a run
+  /// of any length with --output-every 1 holds a fixed amount of memory.
+  bool keepRows = true;
   std::vector<std::string> totalNames;
   std::vector<Column> buffers;
 
-  /// Per output time.
+  /// Per output time (only the last without keepRows).
   std::vector<int64_t> times;
   std::vector<std::vector<double>> totals;
   /// [time][buffer]; a buffer without reference has zeros.
@@ -60,7 +65,10 @@ struct Series {
   /// solution's (keepValues and hasExact).
   std::vector<std::string> values, exact;
 
+  /// The rows held: all of them (keepRows), or the last one.
   size_t size() const { return times.size(); }
+  /// The output times recorded since clear(), held or not.
+  int64_t recorded = 0;
   /// Appends the row at `time`: `values` of every observed buffer (needed
   /// for errors and keepValues), `references` per buffer (--reference's
   /// values, absent where there are none).
@@ -73,6 +81,20 @@ struct Series {
 
 /// The bytes one row keeps (its buffers and exact solutions).
 int64_t rowBytes(const Series &series);
+
+/// What one output time holds until the end besides its buffers, where
+/// every row is kept: its time, `totals` totals and the errors of
+/// `buffers` buffers in the series; with `json`, its part of the JSON
+/// (the tree, then the text); with `check`, the reference executor's
+/// totals at it and their comparison. A generous estimate: what matters is
+/// that it grows with the output times.
+int64_t rowOverheadBytes(size_t totals, size_t buffers, bool json, bool check);
+
+/// The message of the usage error for `times` output times of `row` bytes
+/// each that take more than half of `memory` bytes (this machine's); empty
+/// when they fit. `what` names the options that keep them ("--output").
+std::string seriesMemoryError(const std::string &what, int64_t times,
+                              int64_t row, double memory);
 
 /// The table as the run goes: a header, then one line per output time:
 /// t, time, every total, per buffer with a reference its max-abs and

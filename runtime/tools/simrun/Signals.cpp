@@ -2,8 +2,8 @@
 //
 // Everything the handler touches is a lock-free atomic or a buffer that an
 // atomic flag publishes, and it calls only async-signal-safe functions:
-// sim_session_interrupt (an atomic store), kill, unlink, sigaction and
-// raise.
+// sim_session_interrupt (an atomic store), clock_gettime, kill, unlink,
+// sigaction and raise.
 //
 //===----------------------------------------------------------------------===//
 
@@ -11,12 +11,14 @@
 
 #include "Options.h"
 
+#include <algorithm>
 #include <atomic>
 #include <cerrno>
 #include <climits>
 #include <csignal>
 #include <cstring>
 #include <pthread.h>
+#include <time.h>
 #include <unistd.h>
 
 namespace simrun {
@@ -26,6 +28,9 @@ namespace {
 constexpr int kSlots = 8;
 
 std::atomic<int> firstSignal{0};
+/// When the first signal came: CLOCK_MONOTONIC in nanoseconds, 0 until the
+/// first handler has read the clock, -1 where the clock could not be read.
+std::atomic<int64_t> firstSignalAt{0};
 /// Handlers running now; an unregistering thread waits for 0.
 std::atomic<int> handlersRunning{0};
 std::atomic<sim_session *> sessions[kSlots];
@@ -40,7 +45,8 @@ TemporarySlot temporaries[kSlots];
 static_assert(std::atomic<int>::is_always_lock_free &&
                   std::atomic<bool>::is_always_lock_free &&
                   std::atomic<sim_session *>::is_always_lock_free &&
-                  std::atomic<pid_t>::is_always_lock_free,
+                  std::atomic<pid_t>::is_always_lock_free &&
+                  std::atomic<int64_t>::is_always_lock_free,
               "the signal handler needs lock-free atomics");
 
 void waitForHandlers() {
@@ -48,11 +54,38 @@ void waitForHandlers() {
     sched_yield();
 }
 
+/// CLOCK_MONOTONIC in nanoseconds (at least 1), or -1 where it cannot be
+/// read. clock_gettime is async-signal-safe.
+int64_t monotonicNow() {
+  timespec now;
+  if (clock_gettime(CLOCK_MONOTONIC, &now) != 0)
+    return -1;
+  return std::max<int64_t>(1, int64_t(now.tv_sec) * 1000000000 + now.tv_nsec);
+}
+
+/// Whether a signal after the first is part of the same request: GNU
+/// timeout sends SIGTERM to sim-run and then to its process group, and a
+/// shell or a job runner may pass one Ctrl-C on twice. Those come within
+/// kSignalGraceNanoseconds of the first; killing sim-run for them would
+/// lose the checkpoint, JSON and outputs the first one asked it to write.
+bool sameRequest(int64_t now) {
+  int64_t first = firstSignalAt.load();
+  // 0: the first handler has not stored its time yet, so it runs right
+  // now. An unknown time (-1) keeps the second signal's documented effect.
+  if (first == 0)
+    return true;
+  return first > 0 && now > 0 && now - first < kSignalGraceNanoseconds;
+}
+
 void handle(int signal) {
   int savedErrno = errno;
   handlersRunning.fetch_add(1);
+  // Read before the first signal is claimed, so that a second one that
+  // interrupts this handler finds either no time yet or this one.
+  int64_t now = monotonicNow();
   int none = 0;
   if (firstSignal.compare_exchange_strong(none, signal)) {
+    firstSignalAt.store(now);
     for (std::atomic<sim_session *> &slot : sessions)
       if (sim_session *session = slot.load())
         sim_session_interrupt(session);
@@ -62,7 +95,12 @@ void handle(int signal) {
     errno = savedErrno;
     return;
   }
-  // The second signal: clean up and die of it.
+  if (sameRequest(now)) {
+    handlersRunning.fetch_sub(1);
+    errno = savedErrno;
+    return;
+  }
+  // A second request: clean up and die of it.
   for (TemporarySlot &slot : temporaries)
     if (slot.used.load())
       unlink(slot.path);

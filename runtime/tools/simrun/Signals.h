@@ -5,7 +5,10 @@
 // and forwards the signal to a running sim-translate; sim-run then writes
 // what is complete, skips what has not started and exits with 128 + the
 // signal. A second signal removes the temporary files registered here and
-// kills the process the default way.
+// kills the process the default way, unless it comes within
+// kSignalGraceNanoseconds of the first: then it is the same request
+// delivered twice (GNU timeout signals the process and then its group) and
+// is ignored.
 //
 // The registries are small arrays of atomics, read by the handler on
 // whichever thread the signal lands; removing an entry waits until no
@@ -20,9 +23,14 @@
 #include "sim/Runtime/sim_runtime.h"
 
 #include <csignal>
+#include <cstdint>
 #include <sys/types.h>
 
 namespace simrun {
+
+/// How long after the first SIGINT or SIGTERM another one counts as the
+/// same request (ignored) rather than a second one (kills): 1 second.
+constexpr int64_t kSignalGraceNanoseconds = 1000000000;
 
 /// Installs the handler for SIGINT and SIGTERM, unless the process started
 /// with the signal ignored.

@@ -46,7 +46,8 @@ struct RunTotals {
   sim_metrics metrics{};
   RunCounts counts;
   /// Big steps cut short: all of them, and those at output times before
-  /// the end (the cost of the output times; the end cuts one in any run).
+  /// the end (the cost of the output times; the end cuts one in any run,
+  /// or under lts one per power of two in the base steps it left).
   int64_t cuts = 0, cutsAtOutputs = 0;
   bool started = false;
 

@@ -471,7 +471,9 @@ SIM_API int64_t sim_session_evaluations(const sim_session *session,
 SIM_API int64_t sim_session_histogram(const sim_session *session, int64_t size);
 /// Big steps of the last run that its end cut short: the end, not the
 /// estimates or the strategy's cap, decided their size (clock slot Cuts,
-/// docs/Plan.md). At most one per run, its last; 0 under simple.
+/// docs/Plan.md). At most one per run, its last, except under lts: it
+/// rounds big steps down to powers of two, so the base steps the end leaves
+/// go in power-of-two pieces, each a cut (docs/Model.md); 0 under simple.
 SIM_API int64_t sim_session_cut_big_steps(const sim_session *session);
 
 /// Checkpoints (docs/Runtime.md, "Checkpoints"): the session's state on
