@@ -145,3 +145,35 @@ sim.simulation @s range(16) dt(1.0e-2 : f32) max_steps(1) {
     sim.yield %d : f32
   }
 }
+
+// -----
+
+// Nor the GPU's own operations: a body computes one item, and each backend
+// maps items to threads itself (these failed late, in the CPU kernels'
+// translation, with "unsupported GPU operation").
+sim.simulation @s range(16) dt(1.0e-2 : f32) max_steps(1) {
+  sim.buffer @B : f32 init {
+  ^bb0(%i: index):
+    %zero = arith.constant 0.0 : f32
+    sim.yield %zero : f32
+  }
+  sim.component @C writes(@B) evaluate {
+  ^bb0(%i: index, %t: i64, %n: i32, %dt: f32):
+    %x = sim.read @B[%i] : f32
+    // expected-error @+1 {{'gpu.barrier' op is a GPU operation, which a body cannot hold: a body computes one item, and each backend maps items to threads and groups itself}}
+    gpu.barrier
+    sim.yield %x : f32
+  }
+}
+
+// -----
+
+sim.simulation @s range(16) dt(1.0e-2 : f32) max_steps(1) {
+  // expected-error @+3 {{'gpu.thread_id' op is a GPU operation}}
+  sim.buffer @B : f32 init {
+  ^bb0(%i: index):
+    %tid = gpu.thread_id x
+    %zero = arith.constant 0.0 : f32
+    sim.yield %zero : f32
+  }
+}

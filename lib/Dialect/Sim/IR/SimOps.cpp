@@ -396,8 +396,20 @@ static LogicalResult verifyVectorPosition(Operation *op,
 /// functions. Checked when the op holding the body is verified, before the
 /// symbol uses: `sim.simulation` is a symbol table, so a call's own
 /// verifier would say that the function does not exist.
+///
+/// Nor can it hold the GPU's own operations (thread ids, barriers,
+/// shuffles): a body computes one item, and each backend maps items to
+/// threads, lanes and groups itself (a CPU kernel has no GPU thread, and on
+/// a GPU the result would depend on the group size).
 static LogicalResult verifyNoCalls(Operation *holder) {
   WalkResult result = holder->walk([&](Operation *op) {
+    StringRef dialect = op->getName().getDialectNamespace();
+    if (op != holder && (dialect == "gpu" || dialect == "nvvm")) {
+      op->emitOpError() << "is a GPU operation, which a body cannot hold: "
+                           "a body computes one item, and each backend maps "
+                           "items to threads and groups itself";
+      return WalkResult::interrupt();
+    }
     if (!llvm::is_contained({"func.call", "func.call_indirect", "llvm.call"},
                             op->getName().getStringRef()))
       return WalkResult::advance();
