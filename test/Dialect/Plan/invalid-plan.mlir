@@ -196,3 +196,17 @@ simplan.plan @p strategy("simple") kernels(@k) range(4) dt(1.0e-2 : f32) max_ste
   ^bb0(%x: i32):
   }) : () -> ()
 }
+
+// -----
+
+// Halos count ghost items below and above a rank's block.
+// expected-error @+1 {{'simplan.plan' op has a distributed halo of -3 items; it must be 0 or more}}
+simplan.plan @p strategy("hip") kernels(@k) range(4) dt(1.0e-2 : f32) max_steps(2) step_cap(2) group_size(32) clock_slots(11) histogram(8) distributed halo(-3) {
+}
+
+// -----
+
+simplan.plan @p strategy("hip") kernels(@k) range(4) dt(1.0e-2 : f32) max_steps(2) step_cap(2) group_size(32) clock_slots(11) histogram(8) distributed halo(5) {
+  // expected-error @+1 {{'simplan.buffer' op expects a halo of two counts of items (below and above), 0 or more}}
+  simplan.buffer @B : f64 stride(8) halo [-5, 5]
+}

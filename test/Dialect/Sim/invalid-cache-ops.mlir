@@ -58,6 +58,38 @@ sim.simulation @narrow range(8) dt(1.0e-2 : f32) max_steps(2) {
 
 // -----
 
+sim.simulation @wide range(8) dt(1.0e-2 : f32) max_steps(2) {
+  sim.buffer @U : f32 init {
+  ^bb0(%i: index):
+    %c = arith.constant 1.0 : f32
+    sim.yield %c : f32
+  }
+  sim.buffer @V : f32 init {
+  ^bb0(%i: index):
+    %c = arith.constant 1.0 : f32
+    sim.yield %c : f32
+  }
+  sim.component @C writes(@V) evaluate {
+  ^bb0(%i: index, %t: i64, %n: i32, %dt: f32):
+    // expected-error @+1 {{'sim.fill_cache' op expects a window of at most 1048576 offsets, but got -1048577, 1}}
+    sim.fill_cache @U window(-1048577, 1) {
+    ^bb0(%k: index):
+      %v = sim.load source @U[%k] : f32
+      sim.yield %v : f32
+    }
+    %u = sim.load cache @U[%i] : f32
+    sim.yield %u : f32
+  }
+  sim.component @D writes(@U) evaluate {
+  ^bb0(%i: index, %t: i64, %n: i32, %dt: f32):
+    %u = sim.load local @U[%i] : f32
+    sim.yield %u : f32
+  }
+  sim.observe [@V]
+}
+
+// -----
+
 sim.simulation @mistyped range(8) dt(1.0e-2 : f32) max_steps(2) {
   sim.buffer @U : f32 init {
   ^bb0(%i: index):

@@ -529,6 +529,24 @@ sim.simulation @s range(16) dt(1.0 : f32) max_steps(1) {
 
 // -----
 
+// A cache lives in a group's shared memory: a window of more than 2^20
+// offsets (here the whole signed range, whose size overflowed) is refused.
+sim.simulation @s range(16) dt(1.0 : f32) max_steps(1) {
+  sim.buffer @A : f32 init {
+  ^bb0(%i: index):
+    %c = arith.constant 0.0 : f32
+    sim.yield %c : f32
+  }
+  // expected-error @+1 {{#sim.cache of @A spans offsets -2305843009213693952 to 2305843009213693952, more than 1048576 apart}}
+  sim.component @CA writes(@A) attributes {caches = [#sim.cache<@A, -2305843009213693952, 2305843009213693952>]} evaluate {
+  ^bb0(%i: index, %t: i64, %n: i32, %dt: f32):
+    %x = sim.read @A[%i] : f32
+    sim.yield %x : f32
+  }
+}
+
+// -----
+
 sim.simulation @s range(16) dt(1.0 : f32) max_steps(2) {
   sim.buffer @A : f32 init {
   ^bb0(%i: index):

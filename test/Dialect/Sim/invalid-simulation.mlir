@@ -223,3 +223,32 @@ sim.simulation @s range(16) dt(1.0 : f32) max_steps(1) {
 
 // expected-error @+1 {{'sim.param' op expects parent op 'sim.simulation'}}
 sim.param @L = 1 : i32
+
+// -----
+
+// The distributed decisions (--sim-plan-halos) count ghost items.
+// expected-error @+1 {{'sim.simulation' op has a distributed_halo of -3 items; it must be 0 or more}}
+sim.simulation @s range(16) dt(1.0 : f32) max_steps(1) attributes {distributed_halo = -3 : i64} {
+}
+
+// -----
+
+sim.simulation @s range(16) dt(1.0 : f32) max_steps(1) {
+  // expected-error @+1 {{'sim.buffer' op expects a halo of two counts of items (below and above), 0 or more}}
+  sim.buffer @B : f32 attributes {halo = array<i64: -5, 1>} init {
+  ^bb0(%i: index):
+    %c = arith.constant 0.0 : f32
+    sim.yield %c : f32
+  }
+}
+
+// -----
+
+sim.simulation @s range(16) dt(1.0 : f32) max_steps(1) {
+  // expected-error @+1 {{'sim.buffer' op expects a halo of two counts of items (below and above), 0 or more}}
+  sim.buffer @B : f32 attributes {halo = array<i64: 1, 1, 1>} init {
+  ^bb0(%i: index):
+    %c = arith.constant 0.0 : f32
+    sim.yield %c : f32
+  }
+}

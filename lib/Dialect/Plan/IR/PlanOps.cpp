@@ -217,6 +217,17 @@ LogicalResult PlanOp::verifyRegions() {
   if (getHistogramSlot() + getMaxSteps() + 1 > getClockSlots())
     return emitOpError() << "has a clock of " << getClockSlots()
                          << " slots, too small for its histogram";
+  // Halos are counts of ghost items below and above a rank's block.
+  if (std::optional<int64_t> halo = getDistributedHalo(); halo && *halo < 0)
+    return emitOpError() << "has a distributed halo of " << *halo
+                         << " items; it must be 0 or more";
+  for (BufferOp buffer : getBlock().getOps<BufferOp>())
+    if (std::optional<ArrayRef<int64_t>> halo = buffer.getHalo();
+        halo && (halo->size() != 2 ||
+                 llvm::any_of(*halo, [](int64_t items) { return items < 0; })))
+      return buffer.emitOpError()
+             << "expects a halo of two counts of items (below and above), "
+                "0 or more";
   if (getStepCap() < 1 || getStepCap() > getMaxSteps())
     return emitOpError() << "has a step cap of " << getStepCap()
                          << ", which is not between 1 and max_steps ("

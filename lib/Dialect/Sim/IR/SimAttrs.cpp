@@ -108,6 +108,10 @@ LogicalResult CacheAttr::verify(function_ref<InFlightDiagnostic()> emitError,
                        << " expects a window of more than one offset "
                           "(lowest below highest), but got "
                        << minOffset << ", " << maxOffset;
+  if (uint64_t(maxOffset) - uint64_t(minOffset) > uint64_t(kMaxCacheWindow))
+    return emitError() << "#sim.cache of " << buffer << " spans offsets "
+                       << minOffset << " to " << maxOffset << ", more than "
+                       << kMaxCacheWindow << " apart";
   return success();
 }
 

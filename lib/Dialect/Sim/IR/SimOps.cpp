@@ -626,6 +626,9 @@ LogicalResult SimulationOp::verify() {
     return emitOpError() << "expects a positive, finite base time step dt, "
                             "but got "
                          << dt;
+  if (std::optional<int64_t> halo = getDistributedHalo(); halo && *halo < 0)
+    return emitOpError() << "has a distributed_halo of " << *halo
+                         << " items; it must be 0 or more";
   return success();
 }
 
@@ -818,6 +821,12 @@ void BufferOp::getAsmBlockArgumentNames(Region &region,
 LogicalResult BufferOp::verify() {
   if (failed(verifyNoCalls(*this)))
     return failure();
+  // Counts of ghost items below and above a rank's block (--sim-plan-halos).
+  if (std::optional<ArrayRef<int64_t>> halo = getHalo();
+      halo && (halo->size() != 2 ||
+               llvm::any_of(*halo, [](int64_t items) { return items < 0; })))
+    return emitOpError() << "expects a halo of two counts of items (below "
+                            "and above), 0 or more";
   Type elementType = getElementType();
   if (!isValidElementType(elementType))
     return emitOpError() << "expects an element type of f32, f64, or a vector "
@@ -1215,6 +1224,9 @@ LogicalResult FillCacheOp::verifyRegions() {
     return emitOpError() << "expects a window of more than one offset, but "
                             "got "
                          << lo << ", " << hi;
+  if (uint64_t(hi) - uint64_t(lo) > uint64_t(kMaxCacheWindow))
+    return emitOpError() << "expects a window of at most " << kMaxCacheWindow
+                         << " offsets, but got " << lo << ", " << hi;
   return success();
 }
 

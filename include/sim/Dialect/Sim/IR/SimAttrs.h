@@ -19,6 +19,11 @@
 
 namespace mlir::sim {
 
+/// The most offsets a cache's window (#sim.cache, sim.fill_cache) spans: a
+/// group's window lives in shared memory, and the plan budgets far less;
+/// the bound keeps the sizes computed from it far from overflowing.
+constexpr int64_t kMaxCacheWindow = int64_t(1) << 20;
+
 /// Returns `scalar` as a value of `type`: itself when `type` is the scalar
 /// type, a splat when `type` is a vector of it. Interpolation functions use it
 /// to scale vector elements by scalar weights.
