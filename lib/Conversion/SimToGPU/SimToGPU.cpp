@@ -13,6 +13,7 @@
 #include "sim/Conversion/Passes.h"
 #include "sim/Conversion/SimCommon/KernelTarget.h"
 #include "sim/Dialect/Sim/IR/SimOps.h"
+#include "sim/Runtime/BundleFormat.h"
 
 #include "mlir/Dialect/GPU/IR/GPUDialect.h"
 #include "mlir/Dialect/LLVMIR/NVVMDialect.h"
@@ -282,19 +283,23 @@ private:
 };
 
 struct SimLowerToGPUPass
-    : public sim::impl::SimLowerToGPUBase<SimLowerToGPUPass> {
+    : public mlir::sim::impl::SimLowerToGPUBase<SimLowerToGPUPass> {
   using SimLowerToGPUBase::SimLowerToGPUBase;
 
   void runOnOperation() override {
     ModuleOp module = getOperation();
     SmallVector<SimulationOp> simulations(module.getOps<SimulationOp>());
-    if (groupSize <= 0 || groupSize % 32 != 0) {
+    // A bundle plans groups up to kMaxGroupSize (its CPU kernels take any
+    // size; sim-run chooses another for a GPU run, at most 1024).
+    if (groupSize <= 0 || groupSize % 32 != 0 ||
+        groupSize > int64_t(::sim::bundle::kMaxGroupSize)) {
       // Located at the scenes it would lower (the module has no location of
       // its own in a file).
       Location loc =
           simulations.empty() ? module.getLoc() : simulations.front().getLoc();
       emitError(loc) << "--sim-lower-to-gpu needs a group size that is a "
-                        "positive multiple of 32 (a warp), not "
+                        "multiple of 32 (a warp) from 32 to "
+                     << ::sim::bundle::kMaxGroupSize << ", not "
                      << static_cast<int64_t>(groupSize);
       return signalPassFailure();
     }

@@ -3,6 +3,7 @@
 //
 // RUN: sim-opt %s --verify-diagnostics --sim-schedule --sim-substep-legality --sim-plan-memory --sim-lower-to-gpu
 // RUN: not sim-opt %s --sim-front-end --sim-lower-to-gpu=group-size=100 2>&1 | FileCheck %s --check-prefix=GROUP
+// RUN: not sim-opt %s --sim-front-end --sim-lower-to-gpu=group-size=4294967328 2>&1 | FileCheck %s --check-prefix=HUGE
 
 sim.simulation @midway range(8) dt(1.0e-2 : f32) max_steps(2) {
   sim.buffer @X : f32 init {
@@ -19,4 +20,5 @@ sim.simulation @midway range(8) dt(1.0e-2 : f32) max_steps(2) {
   sim.observe [@X]
 }
 
-// GROUP: invalid-pipeline.mlir:7:1: error: --sim-lower-to-gpu needs a group size that is a positive multiple of 32 (a warp), not 100
+// HUGE: invalid-pipeline.mlir:8:1: error: --sim-lower-to-gpu needs a group size that is a multiple of 32 (a warp) from 32 to 65536, not 4294967328
+// GROUP: invalid-pipeline.mlir:8:1: error: --sim-lower-to-gpu needs a group size that is a multiple of 32 (a warp) from 32 to 65536, not 100
