@@ -222,6 +222,64 @@ sim.simulation @hermite_f64 range(64) dt(2.5e-1 : f32) max_steps(3) {
 
 // -----
 
+// A Hermite derivative with another boundary rule than its buffer's: outside
+// the range the read is @X's item under @X's rule (zero: none), so @V is
+// read at that item, and under zero its value there is 0 (each load would
+// apply its own buffer's rule, clamp for @V).
+
+// CHECK-LABEL: sim.simulation @hermite_boundary
+// CHECK: sim.component @Observe
+// HIP:       %[[RANGE:.*]] = sim.get_param @range : i64
+// HIP-NEXT:  %[[N:.*]] = arith.index_cast %[[RANGE]] : i64 to index
+// HIP-NEXT:  %[[ZERO:.*]] = arith.constant 0 : index
+// HIP-NEXT:  %[[IN:.*]] = arith.cmpi ult, %[[J:.*]], %[[N]] : index
+// HIP-NEXT:  %[[K:.*]] = arith.select %[[IN]], %[[J]], %[[ZERO]] : index
+// HIP-NEXT:  %[[V0:.*]] = sim.load {{source|snapshot}} @V[%[[K]]] : f64
+// HIP-NEXT:  %[[Z0:.*]] = arith.constant 0.000000e+00 : f64
+// HIP-NEXT:  %{{.*}} = arith.select %[[IN]], %[[V0]], %[[Z0]] : f64
+// HIP-NEXT:  %[[V1:.*]] = sim.load target @V[%[[K]]] : f64
+// HIP-NEXT:  %[[Z1:.*]] = arith.constant 0.000000e+00 : f64
+// HIP-NEXT:  %{{.*}} = arith.select %[[IN]], %[[V1]], %[[Z1]] : f64
+// CHECK:     sim.yield
+sim.simulation @hermite_boundary range(64) dt(2.5e-1 : f32) max_steps(3) {
+  sim.buffer @X : f64 interp(#sim.hermite<@V>) boundary(zero) init {
+  ^bb0(%i: index):
+    %c = arith.constant 0.0 : f64
+    sim.yield %c : f64
+  }
+  sim.buffer @V : f64 init {
+  ^bb0(%i: index):
+    %c = arith.constant 1.0 : f64
+    sim.yield %c : f64
+  }
+  sim.buffer @O : f64 init {
+  ^bb0(%i: index):
+    %c = arith.constant 0.0 : f64
+    sim.yield %c : f64
+  }
+  sim.component @Move writes(@X, @V) num_steps {
+  ^bb0(%i: index, %t: i64):
+    %c2 = arith.constant 2 : i32
+    sim.yield %c2 : i32
+  } evaluate {
+  ^bb0(%i: index, %t: i64, %n: i32, %dt: f32):
+    %x = sim.read @X[%i] : f64
+    %v = sim.read @V[%i] : f64
+    %x1 = arith.addf %x, %v : f64
+    sim.yield %x1, %v : f64, f64
+  }
+  sim.component @Observe writes(@O) evaluate {
+  ^bb0(%i: index, %t: i64, %n: i32, %dt: f32):
+    %c1 = arith.constant 1 : index
+    %j = arith.subi %i, %c1 : index
+    %x = sim.read @X[%j] : f64
+    sim.yield %x : f64
+  }
+  sim.observe [@O]
+}
+
+// -----
+
 // The paper's cubic on vector elements: the scalar weights are splatted.
 
 // CHECK-LABEL: sim.simulation @cubic_vector
