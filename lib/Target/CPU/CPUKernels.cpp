@@ -23,6 +23,7 @@
 #include "mlir/Target/LLVMIR/Dialect/LLVMIR/LLVMToLLVMIRTranslation.h"
 #include "mlir/Target/LLVMIR/Export.h"
 
+#include "llvm/ADT/ScopeExit.h"
 #include "llvm/ADT/StringExtras.h"
 #include "llvm/IR/IRBuilder.h"
 #include "llvm/IR/LegacyPassManager.h"
@@ -33,6 +34,7 @@
 #include "llvm/Support/MemoryBuffer.h"
 #include "llvm/Support/Path.h"
 #include "llvm/Support/Program.h"
+#include "llvm/Support/Signals.h"
 #include "llvm/Support/TargetSelect.h"
 #include "llvm/Target/TargetMachine.h"
 #include "llvm/TargetParser/Host.h"
@@ -224,6 +226,14 @@ static FailureOr<std::string> compileForIsa(llvm::Module &module, Location loc,
       llvm::sys::fs::createTemporaryFile("sim-cpu", "so", libraryPath))
     return emitError(loc) << "could not create temporary files";
   llvm::FileRemover removeObject(objectPath), removeLibrary(libraryPath);
+  // Also when a signal ends the tool midway (sim-run translating a .mlir
+  // scene and stopped by Ctrl-C): LLVM's handler removes them, then dies.
+  llvm::sys::RemoveFileOnSignal(objectPath);
+  llvm::sys::RemoveFileOnSignal(libraryPath);
+  auto forgetOnSignal = llvm::make_scope_exit([&] {
+    llvm::sys::DontRemoveFileOnSignal(objectPath);
+    llvm::sys::DontRemoveFileOnSignal(libraryPath);
+  });
   {
     llvm::raw_fd_ostream object(objectFd, /*shouldClose=*/true);
     llvm::legacy::PassManager codegen;
