@@ -1317,6 +1317,11 @@ int run(Options options) {
 
   for (const NonFiniteValues &found : results.nonFinite)
     std::fprintf(stderr, "%s\n", nonFiniteWarning(found).c_str());
+  if (results.referenceKind == "exact")
+    for (const std::optional<Buffer> &exact : results.referenceValues)
+      if (exact)
+        if (std::optional<NonFiniteValues> found = findNonFinite(*exact))
+          std::fprintf(stderr, "%s\n", exactNonFiniteWarning(*found).c_str());
   if (int signal = receivedSignal()) {
     std::fprintf(stderr, "sim-run: interrupted by %s%s\n", signalName(signal),
                  results.interrupted() ? "; wrote what was complete" : "");

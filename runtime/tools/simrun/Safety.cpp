@@ -175,4 +175,15 @@ std::string nonFiniteWarning(const NonFiniteValues &found) {
          " at " + itemText(found.item, found.lane, found.lanes) + ")";
 }
 
+std::string exactNonFiniteWarning(const NonFiniteValues &found) {
+  return "sim-run: warning: the exact solution of buffer '" +
+         displayName(found.name) + "' holds " +
+         plural(found.count, "NaN or infinite value",
+                "NaN or infinite values") +
+         " at the end of the run (the first: " + valueText(found.value) +
+         " at " + itemText(found.item, found.lane, found.lanes) +
+         "), so its errors are not finite; the scene's exact body does not "
+         "hold at these settings";
+}
+
 } // namespace simrun
