@@ -27,48 +27,6 @@ Value mlir::sim::buildZeroElement(OpBuilder &builder, Location loc, Type type) {
                                    builder.getZeroAttr(type));
 }
 
-Value mlir::sim::applyBoundary(OpBuilder &builder, Location loc,
-                               BufferOp buffer, Value index, Value range,
-                               Value &inBounds) {
-  Value zero = arith::ConstantIndexOp::create(builder, loc, 0);
-  switch (buffer.getBoundary()) {
-  case Boundary::clamp: {
-    Value one = arith::ConstantIndexOp::create(builder, loc, 1);
-    Value last = arith::SubIOp::create(builder, loc, range, one);
-    Value low = arith::MaxSIOp::create(builder, loc, index, zero);
-    return arith::MinSIOp::create(builder, loc, low, last);
-  }
-  case Boundary::wrap: {
-    // Nearly every read lies inside the range: only the others divide, in a
-    // branch that a GPU warp or a CPU chunk of lanes takes at the range's
-    // ends only (a remainder per read cost more than the evaluation on the
-    // CPU, and is a long sequence in PTX).
-    Value inside = arith::CmpIOp::create(
-        builder, loc, arith::CmpIPredicate::ult, index, range);
-    auto branch = scf::IfOp::create(builder, loc, TypeRange{index.getType()},
-                                    inside, /*withElseRegion=*/true);
-    OpBuilder inRange = OpBuilder::atBlockEnd(branch.thenBlock());
-    scf::YieldOp::create(inRange, loc, index);
-    OpBuilder outside = OpBuilder::atBlockEnd(branch.elseBlock());
-    // remsi keeps the sign of the dividend: move negative remainders up.
-    Value rem = arith::RemSIOp::create(outside, loc, index, range);
-    Value negative = arith::CmpIOp::create(
-        outside, loc, arith::CmpIPredicate::slt, rem, zero);
-    Value up = arith::AddIOp::create(outside, loc, rem, range);
-    Value wrapped = arith::SelectOp::create(outside, loc, negative, up, rem);
-    scf::YieldOp::create(outside, loc, wrapped);
-    return branch.getResult(0);
-  }
-  case Boundary::zero: {
-    // One unsigned compare covers both ends (negative indices wrap high).
-    inBounds = arith::CmpIOp::create(builder, loc, arith::CmpIPredicate::ult,
-                                     index, range);
-    return arith::SelectOp::create(builder, loc, inBounds, index, zero);
-  }
-  }
-  llvm_unreachable("unknown boundary rule");
-}
-
 Value mlir::sim::getElementIndex(OpBuilder &builder, Location loc,
                                  const KernelValues &values, Value item,
                                  StringAttr buffer) {
@@ -278,8 +236,8 @@ private:
     else if (values.first && !replicated)
       index = lowerGhostIndex(builder, loc, buffer, index, inBounds);
     else
-      index =
-          applyBoundary(builder, loc, buffer, index, values.range, inBounds);
+      index = buildBoundaryItem(builder, loc, buffer.getBoundary(), index,
+                                values.range, inBounds);
     if (base)
       index = arith::AddIOp::create(builder, loc, base, index);
     Value value = memref::LoadOp::create(builder, loc, memory, index);
@@ -310,8 +268,8 @@ private:
     Type type = load.getType();
     auto floatType = cast<FloatType>(mlir::getElementTypeOrSelf(type));
     Value inBounds;
-    Value item = applyBoundary(builder, loc, buffer, load.getIndex(),
-                               values.range, inBounds);
+    Value item = buildBoundaryItem(builder, loc, buffer.getBoundary(),
+                                   load.getIndex(), values.range, inBounds);
     // Where the item is stored: at the item on one process (and for a
     // replicated buffer, whose halves are the range apart); in a
     // distributed plan in the rank's block or its ghost items, found from
@@ -503,8 +461,8 @@ private:
     Value inBounds;
     Value index = read.getIndex();
     if (index != values.item)
-      index =
-          applyBoundary(builder, loc, buffer, index, values.range, inBounds);
+      index = buildBoundaryItem(builder, loc, buffer.getBoundary(), index,
+                                values.range, inBounds);
     KernelValues initValues;
     initValues.range = values.range;
     initValues.extent = values.extent;

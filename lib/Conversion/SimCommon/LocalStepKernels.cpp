@@ -605,7 +605,8 @@ LogicalResult SimulationLowering::emitLocalSteps(ComponentOp component,
     case Boundary::wrap: {
       // As a window read wraps: a remainder only outside the range.
       Value unused;
-      reader = applyBoundary(b, b.loc, flux, reader, range, unused);
+      reader = buildBoundaryItem(b, b.loc, flux.getBoundary(), reader, range,
+                                 unused);
       break;
     }
     case Boundary::clamp:

@@ -392,7 +392,7 @@ LogicalResult LaneVectorizer::analyze(std::string &why) {
   return failure(result.wasInterrupted());
 }
 
-/// The boundary rules (KernelBody.cpp, applyBoundary) on a consecutive
+/// The boundary rules (SimAttrs.cpp, buildBoundaryItem) on a consecutive
 /// `item + offset`, and uniform shifts of their results:
 ///   clamp  minsi(maxsi(x, low), high)
 ///   zero   select(cmpi ult(x, end), x, c)

@@ -95,12 +95,6 @@ struct KernelValues {
 /// SimulationLowering.h checks that they agree).
 constexpr int64_t kLevelBlock = 32;
 
-/// Returns the item index that a read of `index` actually reads under
-/// `buffer`'s boundary rule. For `zero`, `inBounds` receives an i1 that is
-/// false when the read must return zero (else it is left null).
-Value applyBoundary(OpBuilder &builder, Location loc, BufferOp buffer,
-                    Value index, Value range, Value &inBounds);
-
 /// The element of item `item` in a half, a snapshot, an exact or a total
 /// array: `item` itself on one process, `item - first + halo` in a
 /// distributed plan.

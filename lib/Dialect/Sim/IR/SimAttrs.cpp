@@ -11,6 +11,7 @@
 #include "sim/Dialect/Sim/IR/SimDialect.h"
 
 #include "mlir/Dialect/Arith/IR/Arith.h"
+#include "mlir/Dialect/SCF/IR/SCF.h"
 #include "mlir/Dialect/Vector/IR/VectorOps.h"
 #include "mlir/IR/Builders.h"
 #include "mlir/IR/DialectImplementation.h"
@@ -216,4 +217,46 @@ Value HermiteInterpAttr::buildInterpolation(OpBuilder &builder, Location loc,
   Value sum = w.add(w.scale(h00, atBegin[0]), w.scale(h10Span, atBegin[1]));
   sum = w.add(sum, w.scale(h01, atEnd[0]));
   return w.add(sum, w.scale(h11Span, atEnd[1]));
+}
+
+Value mlir::sim::buildBoundaryItem(OpBuilder &builder, Location loc,
+                                   Boundary rule, Value index, Value range,
+                                   Value &inBounds) {
+  Value zero = arith::ConstantIndexOp::create(builder, loc, 0);
+  switch (rule) {
+  case Boundary::clamp: {
+    Value one = arith::ConstantIndexOp::create(builder, loc, 1);
+    Value last = arith::SubIOp::create(builder, loc, range, one);
+    Value low = arith::MaxSIOp::create(builder, loc, index, zero);
+    return arith::MinSIOp::create(builder, loc, low, last);
+  }
+  case Boundary::wrap: {
+    // Nearly every read lies inside the range: only the others divide, in a
+    // branch that a GPU warp or a CPU chunk of lanes takes at the range's
+    // ends only (a remainder per read cost more than the evaluation on the
+    // CPU, and is a long sequence in PTX).
+    Value inside = arith::CmpIOp::create(
+        builder, loc, arith::CmpIPredicate::ult, index, range);
+    auto branch = scf::IfOp::create(builder, loc, TypeRange{index.getType()},
+                                    inside, /*withElseRegion=*/true);
+    OpBuilder inRange = OpBuilder::atBlockEnd(branch.thenBlock());
+    scf::YieldOp::create(inRange, loc, index);
+    OpBuilder outside = OpBuilder::atBlockEnd(branch.elseBlock());
+    // remsi keeps the sign of the dividend: move negative remainders up.
+    Value rem = arith::RemSIOp::create(outside, loc, index, range);
+    Value negative = arith::CmpIOp::create(
+        outside, loc, arith::CmpIPredicate::slt, rem, zero);
+    Value up = arith::AddIOp::create(outside, loc, rem, range);
+    Value wrapped = arith::SelectOp::create(outside, loc, negative, up, rem);
+    scf::YieldOp::create(outside, loc, wrapped);
+    return branch.getResult(0);
+  }
+  case Boundary::zero: {
+    // One unsigned compare covers both ends (negative indices wrap high).
+    inBounds = arith::CmpIOp::create(builder, loc, arith::CmpIPredicate::ult,
+                                     index, range);
+    return arith::SelectOp::create(builder, loc, inBounds, index, zero);
+  }
+  }
+  llvm_unreachable("unknown boundary rule");
 }

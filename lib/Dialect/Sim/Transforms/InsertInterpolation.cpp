@@ -35,43 +35,6 @@ using namespace mlir::sim;
 
 namespace {
 
-/// `index` resolved by the boundary rule `rule` into an item inside the
-/// range (the item itself when it is inside), and for `zero` the condition
-/// that it is inside (else null): a value read outside the range under
-/// `zero` is a zero element.
-std::pair<Value, Value> resolveLikeBuffer(OpBuilder &builder, Location loc,
-                                          Boundary rule, Value index) {
-  Value range = arith::IndexCastOp::create(
-      builder, loc, builder.getIndexType(),
-      GetParamOp::create(
-          builder, loc, builder.getI64Type(),
-          FlatSymbolRefAttr::get(builder.getContext(), "range")));
-  Value zero = arith::ConstantIndexOp::create(builder, loc, 0);
-  switch (rule) {
-  case Boundary::clamp: {
-    Value one = arith::ConstantIndexOp::create(builder, loc, 1);
-    Value last = arith::SubIOp::create(builder, loc, range, one);
-    Value low = arith::MaxSIOp::create(builder, loc, index, zero);
-    return {arith::MinSIOp::create(builder, loc, low, last), Value()};
-  }
-  case Boundary::wrap: {
-    // remsi keeps the dividend's sign: move a negative remainder up.
-    Value rem = arith::RemSIOp::create(builder, loc, index, range);
-    Value negative = arith::CmpIOp::create(
-        builder, loc, arith::CmpIPredicate::slt, rem, zero);
-    Value up = arith::AddIOp::create(builder, loc, rem, range);
-    return {arith::SelectOp::create(builder, loc, negative, up, rem), Value()};
-  }
-  case Boundary::zero: {
-    // One unsigned compare covers both ends (negative indices wrap high).
-    Value inside = arith::CmpIOp::create(
-        builder, loc, arith::CmpIPredicate::ult, index, range);
-    return {arith::SelectOp::create(builder, loc, inside, index, zero), inside};
-  }
-  }
-  llvm_unreachable("unknown boundary rule");
-}
-
 /// Builds, on demand and once per scalar type, the interpolation fraction and
 /// the big step's length in time units at the start of one body.
 class BodyTime {
@@ -444,8 +407,14 @@ struct InsertInterpolationPass
         // item under its own rule, and the derivative is read at that item
         // (zero: no item, a zero derivative), as the reference executor
         // resolves the item once. Each load would apply its own rule.
-        auto [auxIndex, inside] =
-            resolveLikeBuffer(builder, loc, buffer.getBoundary(), index);
+        Value range = arith::IndexCastOp::create(
+            builder, loc, builder.getIndexType(),
+            GetParamOp::create(
+                builder, loc, builder.getI64Type(),
+                FlatSymbolRefAttr::get(builder.getContext(), "range")));
+        Value inside;
+        Value auxIndex = buildBoundaryItem(builder, loc, buffer.getBoundary(),
+                                           index, range, inside);
         for (Version version :
              {input.getSnapshot() ? Version::snapshot : Version::source,
               Version::target}) {

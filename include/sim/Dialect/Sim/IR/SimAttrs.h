@@ -29,6 +29,15 @@ constexpr int64_t kMaxCacheWindow = int64_t(1) << 20;
 /// to scale vector elements by scalar weights.
 Value splatLike(OpBuilder &builder, Location loc, Value scalar, Type type);
 
+/// Returns the item that a read of item `index` reads under boundary rule
+/// `rule` in a range of `range` items (both of index type): the item itself
+/// inside the range. Under `zero`, `inBounds` receives an i1 that is false
+/// where the read returns a zero element (it is left null otherwise). The
+/// lowerings resolve every load with it, and --sim-insert-interpolation the
+/// item at which a Hermite derivative is read, so the rules are written once.
+Value buildBoundaryItem(OpBuilder &builder, Location loc, Boundary rule,
+                        Value index, Value range, Value &inBounds);
+
 } // namespace mlir::sim
 
 #endif // SIM_DIALECT_SIM_IR_SIMATTRS_H
