@@ -92,8 +92,50 @@ static FailureOr<TypedAttr> parseScalar(Builder &builder, StringRef text,
   return failure();
 }
 
+/// Returns `options` without the whitespace next to `=`, `,`, `{` and `}`.
+/// MLIR's pass-option parser ends an option at a space, so that
+/// `values=L=64, k=0.5` would otherwise be `values=L=64,` and an unknown
+/// option `k`, and `values = L=64` an error with no message.
+static std::string closeUpSeparators(StringRef options) {
+  auto isSeparator = [](char c) { return StringRef("=,{}").contains(c); };
+  options = options.trim();
+  std::string result;
+  for (size_t i = 0, e = options.size(); i < e;) {
+    if (!llvm::isSpace(options[i])) {
+      result.push_back(options[i++]);
+      continue;
+    }
+    size_t next = i;
+    while (next < e && llvm::isSpace(options[next]))
+      ++next;
+    // trim() leaves no whitespace at either end, so options[next] exists.
+    if (!isSeparator(options[next]) &&
+        (result.empty() || !isSeparator(result.back())))
+      result.append(options.slice(i, next).str());
+    i = next;
+  }
+  return result;
+}
+
 struct SetParamsPass : public sim::impl::SimSetParamsBase<SetParamsPass> {
   using SimSetParamsBase::SimSetParamsBase;
+
+  /// Accepts whitespace around names, `=` and `,` (as sim-translate's
+  /// --sim-set-params does) and tells how the option is written when the
+  /// string still does not parse (`--sim-set-params="L=64"` is an unknown
+  /// option `L`). The error has no location: there is no IR yet.
+  LogicalResult initializeOptions(
+      StringRef options,
+      function_ref<LogicalResult(const Twine &)> errorHandler) override {
+    return Pass::initializeOptions(
+        closeUpSeparators(options), [&](const Twine &message) {
+          std::string text = message.str();
+          return errorHandler(StringRef(text).rtrim() +
+                              "; --sim-set-params takes its overrides as "
+                              "values=name=value,name=value,... (for example "
+                              "--sim-set-params=\"values=range=16384,L=64\")");
+        });
+  }
 
   void runOnOperation() override {
     SimulationOp simulation = getOperation();
@@ -112,12 +154,22 @@ struct SetParamsPass : public sim::impl::SimSetParamsBase<SetParamsPass> {
       return signalPassFailure();
     }
     for (const std::string &entry : values) {
+      // A comma too many (`L=64,,k=1` or one at an end) leaves an empty
+      // entry: named as such, since '' in a message is easy to misread.
+      if (StringRef(entry).trim().empty()) {
+        simulation.emitError()
+            << "expects a parameter override of the form name=value, but got "
+               "an empty entry; remove the extra comma";
+        return signalPassFailure();
+      }
+      // Whitespace around the name, `=` and the value is not part of them
+      // (sim-translate's comma-separated list keeps the blanks after commas).
       auto [name, text] = StringRef(entry).split('=');
       name = name.trim();
       if (name.empty() || !StringRef(entry).contains('=')) {
         simulation.emitError() << "expects a parameter override of the form "
                                   "name=value, but got '"
-                               << entry << "'";
+                               << StringRef(entry).trim() << "'";
         return signalPassFailure();
       }
       if (failed(apply(simulation, builder, name, text)))

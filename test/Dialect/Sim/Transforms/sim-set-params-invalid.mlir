@@ -5,6 +5,11 @@
 // RUN: sim-opt %t/unknown-name-buffer.mlir --sim-set-params="values=B=3" --verify-diagnostics
 // RUN: sim-opt %t/unknown-name-no-params.mlir --sim-set-params="values=L=3" --verify-diagnostics
 // RUN: sim-opt %t/unknown-after-valid.mlir --sim-set-params="values=L=8,steps=2" --verify-diagnostics
+// RUN: sim-opt %t/unknown-after-valid.mlir --sim-set-params="values=L = 8, steps = 2" --verify-diagnostics
+// RUN: sim-opt %t/no-equals-spaced.mlir --sim-set-params="values=L=8, L" --verify-diagnostics
+// RUN: sim-opt %t/empty-entry.mlir --sim-set-params="values=L=8," --verify-diagnostics
+// RUN: sim-opt %t/empty-entry.mlir --sim-set-params="values=L=8, ,k=1" --verify-diagnostics
+// RUN: not sim-opt %t/empty-entry.mlir --sim-set-params="L=8" 2>&1 | FileCheck %s --check-prefix=NO-VALUES
 // RUN: sim-opt %t/int-not-a-number.mlir --sim-set-params="values=L=four" --verify-diagnostics
 // RUN: sim-opt %t/int-from-float.mlir --sim-set-params="values=L=1.5" --verify-diagnostics
 // RUN: sim-opt %t/int-empty.mlir --sim-set-params="values=L=" --verify-diagnostics
@@ -36,7 +41,10 @@
 
 // Errors of --sim-set-params, one input per option value (split-file), each
 // checked with --verify-diagnostics. Every error is reported at the
-// simulation and stops the pass.
+// simulation and stops the pass, except one in the option string itself,
+// which is found before there is any IR: the option is values=..., and the
+// message says so.
+// NO-VALUES: error: <Pass-Options-Parser>: no such option L; --sim-set-params takes its overrides as values=name=value,name=value,... (for example --sim-set-params="values=range=16384,L=64")
 
 //--- no-equals.mlir
 // expected-error @+1 {{expects a parameter override of the form name=value, but got 'L'}}
@@ -586,4 +594,18 @@ sim.simulation @s range(16) dt(1.0 : f32) max_steps(1) {
 // (step_cap from max_steps): new values would not reach them.
 // expected-error @+1 {{has been through the front end already (a memory plan for strategy 'hip'), which decided from its values; set them on the scene as written, before --sim-front-end}}
 sim.simulation @s range(16) dt(1.0 : f32) max_steps(64) attributes {step_cap = 64 : i32, strategy = #sim<strategy hip>} {
+}
+
+//--- no-equals-spaced.mlir
+// expected-error @+1 {{expects a parameter override of the form name=value, but got 'L'}}
+sim.simulation @s range(16) dt(1.0 : f32) max_steps(1) {
+  sim.param @L = 4 : i32
+}
+
+//--- empty-entry.mlir
+// A comma too many, at the end or between two entries.
+// expected-error @+1 {{expects a parameter override of the form name=value, but got an empty entry; remove the extra comma}}
+sim.simulation @s range(16) dt(1.0 : f32) max_steps(1) {
+  sim.param @L = 4 : i32
+  sim.param @k = 2.5 : f32
 }

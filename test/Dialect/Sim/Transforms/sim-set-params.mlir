@@ -9,6 +9,9 @@
 // RUN: sim-opt %s --sim-set-params="values=L=-3,b=-128" | FileCheck %s --check-prefix=NEG
 // RUN: sim-opt %s --sim-set-params="values=b=0xFF" | FileCheck %s --check-prefix=UNSIGNED
 // RUN: sim-opt %s --sim-set-params="values=range=16,dt=0.5,max_steps=2,L=7,k=1.5e+01,N=3,L=9" | FileCheck %s --check-prefix=MANY
+// RUN: sim-opt %s --sim-set-params="values = range = 16 , dt=0.5,  max_steps =2, L= 7 ,k = 1.5e+01, N=3 ,L=9 " | FileCheck %s --check-prefix=MANY
+// RUN: sim-opt %s --sim-set-params=" values= L=64, k=0.75" | FileCheck %s --check-prefix=SPACED
+// RUN: sim-opt %s --pass-pipeline="builtin.module(sim.simulation(sim-set-params{values=L = 64, k = 0.75}))" | FileCheck %s --check-prefix=SPACED
 
 // Overrides apply to every simulation of the module, each value converted to
 // the type of the attribute or parameter it sets: @single has an f32 time
@@ -69,7 +72,17 @@
 // UNSIGNED-LABEL: sim.simulation @single
 // UNSIGNED:         sim.param @b = -1 : i8
 
-// Several overrides at once; a name given twice takes the last value.
+// Whitespace around names, `=` and commas is not part of them (MLIR's
+// option parser would end the option at the first blank).
+// SPACED-LABEL: sim.simulation @single
+// SPACED-NEXT:    sim.param @L = 64 : i32
+// SPACED-NEXT:    sim.param @k = 7.500000e-01 : f32
+// SPACED-LABEL: sim.simulation @double
+// SPACED-NEXT:    sim.param @L = 64 : i64
+// SPACED-NEXT:    sim.param @k = 7.500000e-01 : f64
+
+// Several overrides at once, also with blanks around names, `=` and commas;
+// a name given twice takes the last value.
 // MANY-LABEL: sim.simulation @single range(16) dt(5.000000e-01 : f32) max_steps(2) {
 // MANY-NEXT:    sim.param @L = 9 : i32
 // MANY-NEXT:    sim.param @k = 1.500000e+01 : f32

@@ -15,13 +15,14 @@ def SimSetParams : Pass<"sim-set-params", "::mlir::sim::SimulationOp"> {
   let description = [{
     Sets `sim.param` defaults and the simulation's `range`, `dt` and
     `max_steps` from a list of `name=value` pairs (the last of repeated names
-    wins). Integers are decimal or `0x` hexadecimal with an optional `-`, as
-    MLIR literals; floats are converted in the parameter's own type. Unknown
-    names, values that do not parse, values that do not fit the parameter's
-    type (no silent truncation, overflow or underflow), a `range` or
-    `max_steps` below 1 and a `dt` that is not positive and finite are
-    errors, and so is a simulation the front end has planned already (its
-    plan was decided from the old values).
+    wins; blanks around names, `=` and commas are not part of them, and an
+    empty entry is an error). Integers are decimal or `0x` hexadecimal with
+    an optional `-`, as MLIR literals; floats are converted in the
+    parameter's own type. Unknown names, values that do not parse, values
+    that do not fit the parameter's type (no silent truncation, overflow or
+    underflow), a `range` or `max_steps` below 1 and a `dt` that is not
+    positive and finite are errors, and so is a simulation the front end has
+    planned already (its plan was decided from the old values).
 
     ```
     sim-opt scene.mlir --sim-set-params="values=range=16384,L=64"
