@@ -329,6 +329,13 @@ struct SimLowerToCPUPass
     }
     CPUKernelTarget target(levelsPerLane);
     SmallVector<SimulationOp> simulations(module.getOps<SimulationOp>());
+    // Every clash reported before any module is created.
+    bool clash = false;
+    for (SimulationOp simulation : simulations)
+      clash |= failed(simulation.checkLoweredNameIsFree("_kernels", "kernels",
+                                                        getArgument()));
+    if (clash)
+      return signalPassFailure();
     for (SimulationOp simulation : simulations)
       if (failed(lowerSimulation(simulation, target, groupSize)))
         return signalPassFailure();

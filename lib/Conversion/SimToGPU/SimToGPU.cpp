@@ -303,6 +303,13 @@ struct SimLowerToGPUPass
                      << static_cast<int64_t>(groupSize);
       return signalPassFailure();
     }
+    // Every clash reported before any module is created.
+    bool clash = false;
+    for (SimulationOp simulation : simulations)
+      clash |= failed(simulation.checkLoweredNameIsFree("_kernels", "kernels",
+                                                        getArgument()));
+    if (clash)
+      return signalPassFailure();
     GPUKernelTarget target;
     for (SimulationOp simulation : simulations)
       if (failed(lowerSimulation(simulation, target, groupSize)))

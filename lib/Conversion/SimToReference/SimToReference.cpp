@@ -414,6 +414,13 @@ struct SimLowerToReferencePass
   void runOnOperation() override {
     SmallVector<SimulationOp> simulations(
         getOperation().getOps<SimulationOp>());
+    // Every clash reported before any module is created.
+    bool clash = false;
+    for (SimulationOp simulation : simulations)
+      clash |= failed(simulation.checkLoweredNameIsFree(
+          "_reference", "reference functions", getArgument()));
+    if (clash)
+      return signalPassFailure();
     for (SimulationOp simulation : simulations)
       if (failed(ReferenceLowering(simulation).run()))
         return signalPassFailure();

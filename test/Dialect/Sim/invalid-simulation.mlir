@@ -170,6 +170,43 @@ sim.simulation @outer range(16) dt(1.0 : f32) max_steps(1) {
 
 // -----
 
+// A simulation in a nested module: the passes nest on the simulations of
+// the top-level module and sim-translate looks for them there, so it was
+// left as written, without a word.
+module {
+  // expected-note @+1 {{the enclosing op is here}}
+  module @inner {
+    // expected-error @+1 {{'sim.simulation' op must be directly in the top-level module, where the passes and sim-translate look for simulations, not in a nested 'builtin.module' @inner; move it to the top level}}
+    sim.simulation @s range(16) dt(1.0 : f32) max_steps(1) {
+    }
+  }
+}
+
+// -----
+
+// The same beside a simulation at the top level (which is valid), in an
+// unnamed module.
+sim.simulation @top range(16) dt(1.0 : f32) max_steps(1) {
+}
+// expected-note @+1 {{the enclosing op is here}}
+module {
+  // expected-error @+1 {{'sim.simulation' op must be directly in the top-level module, where the passes and sim-translate look for simulations, not in a nested 'builtin.module'; move it to the top level}}
+  sim.simulation @s range(16) dt(1.0 : f32) max_steps(1) {
+  }
+}
+
+// -----
+
+// Nor in a gpu.module, which opens a symbol table too.
+// expected-note @+1 {{the enclosing op is here}}
+gpu.module @kernels {
+  // expected-error @+1 {{'sim.simulation' op must be directly in the top-level module, where the passes and sim-translate look for simulations, not in a nested 'gpu.module' @kernels; move it to the top level}}
+  sim.simulation @s range(16) dt(1.0 : f32) max_steps(1) {
+  }
+}
+
+// -----
+
 sim.simulation @s range(16) dt(1.0 : f32) max_steps(1) {
   // expected-note @+1 {{see existing symbol definition here}}
   sim.param @L = 1 : i32

@@ -12,6 +12,16 @@ sim.simulation @header_f32 range(65536) dt(1.0e-3 : f32) max_steps(3) {
 
 // -----
 
+// A named top-level module is the top level: its simulations are valid.
+// CHECK-LABEL: module @scenes {
+// CHECK-NEXT:    sim.simulation @in_named_module range(16) dt(1.000000e+00 : f32) max_steps(1) {
+module @scenes {
+  sim.simulation @in_named_module range(16) dt(1.0 : f32) max_steps(1) {
+  }
+}
+
+// -----
+
 // An f64 time step, and a discardable attribute after the header.
 // CHECK-LABEL: sim.simulation @header_f64 range(1) dt(2.500000e-01 : f64) max_steps(1) attributes {note = "x"} {
 sim.simulation @header_f64 range(1) dt(0.25 : f64) max_steps(1) attributes {note = "x"} {

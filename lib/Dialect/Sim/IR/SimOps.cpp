@@ -15,6 +15,7 @@
 #include "mlir/Dialect/UB/IR/UBOps.h"
 #include "mlir/Dialect/Vector/IR/VectorOps.h"
 #include "mlir/IR/Builders.h"
+#include "mlir/IR/BuiltinOps.h"
 #include "mlir/IR/BuiltinTypes.h"
 #include "mlir/IR/Diagnostics.h"
 #include "mlir/IR/Matchers.h"
@@ -590,6 +591,45 @@ Type SimulationOp::getBuiltinParamType(StringRef name) {
   return nullptr;
 }
 
+LogicalResult SimulationOp::checkLoweredNameIsFree(StringRef suffix,
+                                                   StringRef what,
+                                                   StringRef pass) {
+  Operation *parent = (*this)->getParentOp();
+  if (!parent)
+    return success();
+  std::string name = (getSymName() + suffix).str();
+  Operation *clash = mlir::SymbolTable::lookupSymbolIn(
+      parent, StringAttr::get(getContext(), name));
+  if (!clash)
+    return success();
+  // Left to the lowering, the new module would be a second definition of
+  // the name, reported by the symbol table as an error of the IR that
+  // names neither the simulation nor the way out.
+  InFlightDiagnostic diag =
+      clash->emitError() << "simulation "
+                         << SymbolRefAttr::get(getSymNameAttr())
+                         << " needs the name '" << name << "' for its " << what
+                         << " (--" << pass
+                         << " puts them in a module of that name); rename this "
+                            "symbol";
+  diag.attachNote(getLoc()) << "the simulation is here";
+  return diag;
+}
+
+/// Whether `op` is the top-level module: a builtin.module with no parent,
+/// or the only op of one. The parser verifies what it read inside a
+/// module of its own and, when that holds a single module, returns the
+/// latter: `module @scenes { sim.simulation ... }` is verified one level
+/// down, while beside other ops the same module is a nested one.
+static bool isTopLevelModule(Operation *op) {
+  if (!isa<ModuleOp>(op))
+    return false;
+  Operation *outer = op->getParentOp();
+  return !outer || (isa<ModuleOp>(outer) && !outer->getParentOp() &&
+                    llvm::hasSingleElement(
+                        cast<ModuleOp>(outer).getBody()->getOperations()));
+}
+
 LogicalResult SimulationOp::verify() {
   // A simulation nested in a body (through an op that opens a symbol table)
   // would be walked as part of the outer one by every analysis.
@@ -597,6 +637,24 @@ LogicalResult SimulationOp::verify() {
     InFlightDiagnostic diag = emitOpError()
                               << "cannot be nested inside another simulation";
     diag.attachNote(outer.getLoc()) << "the enclosing simulation is here";
+    return diag;
+  }
+  // The passes nest on the top-level module's simulations and sim-translate
+  // looks for them there: one in a nested module would be left as written
+  // by every pass, without a word. (A simulation with no parent is one
+  // being built on its own.)
+  Operation *parent = (*this)->getParentOp();
+  if (parent && !isTopLevelModule(parent)) {
+    InFlightDiagnostic diag = emitOpError()
+                              << "must be directly in the top-level module, "
+                                 "where the passes and sim-translate look for "
+                                 "simulations, not in a nested '"
+                              << parent->getName() << "'";
+    if (auto name = parent->getAttrOfType<StringAttr>(
+            mlir::SymbolTable::getSymbolAttrName()))
+      diag << " " << SymbolRefAttr::get(name);
+    diag << "; move it to the top level";
+    diag.attachNote(parent->getLoc()) << "the enclosing op is here";
     return diag;
   }
   // The generated getRange() and getMaxSteps() return unsigned values, which

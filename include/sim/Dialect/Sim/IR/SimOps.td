@@ -57,6 +57,12 @@ def Sim_SimulationOp : Sim_Op<"simulation", [
     }
     ```
 
+    Simulations are ops of the top-level module, where the passes and
+    `sim-translate` look for them: the verifier rejects one in a nested
+    module. Lowering `@name` adds a top-level module `@name_kernels`
+    (`--sim-lower-to-gpu`, `--sim-lower-to-cpu`) or `@name_reference`
+    (`--sim-lower-to-reference`), so no other symbol may have that name.
+
     `range`, `dt` and `max_steps` can be overridden without editing the file:
     `sim-opt --sim-set-params="values=range=16384,max_steps=2"`.
 
@@ -129,6 +135,14 @@ def Sim_SimulationOp : Sim_Op<"simulation", [
     /// these two.
     ComponentOp getWriter(BufferOp buffer);
     ComponentOp getWriter(::mlir::FlatSymbolRefAttr buffer);
+    /// Checks that no symbol beside this simulation has the name
+    /// `<sym_name><suffix>` that the lowering `pass` (its argument, without
+    /// `--`) gives the module it puts this simulation's `what` in ("kernels"),
+    /// with the error at that symbol. A lowering calls it for every
+    /// simulation before it creates any module.
+    ::llvm::LogicalResult checkLoweredNameIsFree(::llvm::StringRef suffix,
+                                                 ::llvm::StringRef what,
+                                                 ::llvm::StringRef pass);
     /// The index of `component` in the order recorded on `sim.schedule`, or
     /// std::nullopt when there is no schedule or it does not list the
     /// component (a prefix given by the user).
