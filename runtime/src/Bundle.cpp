@@ -213,6 +213,12 @@ std::vector<std::string> hostIsas() {
   return levels;
 }
 
+std::string crcText(uint32_t crc) {
+  char text[16];
+  std::snprintf(text, sizeof text, "0x%08x", crc);
+  return text;
+}
+
 std::string missingIsaMessage(const schema::PlanT &plan) {
   std::vector<std::string> present;
   for (const auto &code : plan.cpu)
@@ -468,9 +474,9 @@ std::shared_ptr<const Bundle> Bundle::parse(const uint8_t *data, size_t size,
   uint32_t crc = uint32_t(crc32(0L, Z_NULL, 0));
   crc = uint32_t(crc32(crc, payload, uInt(payloadSize)));
   if (crc != header.checksum)
-    error("the checksum does not match its contents (CRC-32 " +
-          std::to_string(crc) + ", the header says " +
-          std::to_string(header.checksum) + "): the file is damaged");
+    error("the checksum does not match its contents (CRC-32 " + crcText(crc) +
+          ", the header says " + crcText(header.checksum) +
+          "): the file is damaged");
 
   result->checksum = crc;
 

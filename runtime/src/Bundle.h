@@ -174,6 +174,11 @@ struct Bundle {
                                              const std::string &name);
 };
 
+/// A CRC-32 as every message writes it, "0x" and eight hex digits: the
+/// bundle's and the checkpoint's alike, so that one can be compared with
+/// the other.
+std::string crcText(uint32_t crc);
+
 /// The launches of `phase` in order, repeats unrolled (the verifier checked
 /// that they stay below kMaxPhaseLaunches).
 std::vector<const schema::LaunchT *> unrollPhase(const schema::PhaseT &phase);

@@ -62,12 +62,6 @@ uint32_t crcUpdate(uint32_t crc, const uint8_t *data, size_t size) {
   return crc;
 }
 
-std::string hex32(uint32_t value) {
-  char text[16];
-  std::snprintf(text, sizeof text, "0x%08x", value);
-  return text;
-}
-
 schema::Value toSchema(const Value &value) {
   return schema::Value(value.i, value.f, value.type);
 }
@@ -422,8 +416,8 @@ CheckpointFile parseCheckpoint(std::vector<uint8_t> bytes,
       crcUpdate(uint32_t(crc32(0L, Z_NULL, 0)), file + schema::kHeaderSize,
                 size - schema::kHeaderSize);
   if (crc != header.checksum)
-    error("the checksum does not match its contents (CRC-32 " + hex32(crc) +
-          ", the header says " + hex32(header.checksum) +
+    error("the checksum does not match its contents (CRC-32 " + crcText(crc) +
+          ", the header says " + crcText(header.checksum) +
           "): the file is damaged");
 
   // The manifest: a 4-byte size, then the FlatBuffer.
@@ -529,8 +523,8 @@ Restart checkRestart(Executor &executor, const CheckpointFile &file) {
            "'");
   if (m.bundle_crc != bundle.checksum)
     refuse("belongs to another bundle of scene '" + scene.name +
-           "' (its bundle's CRC-32 is " + hex32(m.bundle_crc) + ", that of '" +
-           bundle.name + "' is " + hex32(bundle.checksum) +
+           "' (its bundle's CRC-32 is " + crcText(m.bundle_crc) +
+           ", that of '" + bundle.name + "' is " + crcText(bundle.checksum) +
            "): the scene was compiled again or differently");
   if (planSession && m.executor == ckpt::Executor::Reference)
     refuse("was written by the reference executor, which keeps no device "
@@ -651,10 +645,10 @@ void restartFromCheckpointFile(Executor &executor, const std::string &path) {
     if (both[0] != -both[1])
       fail(SIM_ERROR_CHECKPOINT,
            "the ranks restart from different checkpoints (CRC-32 from " +
-               hex32(uint32_t(both[0])) + " to " + hex32(uint32_t(-both[1])) +
-               " over the " + std::to_string(comm->size()) +
-               " ranks; this rank's is '" + path +
-               "'): give every rank a copy of the same checkpoint");
+               crcText(uint32_t(both[0])) + " to " +
+               crcText(uint32_t(-both[1])) + " over the " +
+               std::to_string(comm->size()) + " ranks; this rank's is '" +
+               path + "'): give every rank a copy of the same checkpoint");
   }
   applyRestart(executor, *file, restart);
 }

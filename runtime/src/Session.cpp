@@ -919,6 +919,11 @@ void Session::ensureAgreed() {
   struct Named {
     std::string what;
     int64_t value;
+    /// Written as every message writes a CRC-32 (hex), not in decimal.
+    bool crc = false;
+  };
+  auto text = [](const Named &named, int64_t value) {
+    return named.crc ? crcText(uint32_t(value)) : std::to_string(value);
   };
   auto check = [&](const std::vector<Named> &values) {
     std::vector<int64_t> both;
@@ -932,11 +937,11 @@ void Session::ensureAgreed() {
       if (both[i] != -both[n + i])
         fail(SIM_ERROR_DISTRIBUTED,
              "the ranks disagree on the " + values[i].what + " (from " +
-                 std::to_string(both[i]) + " to " +
-                 std::to_string(-both[n + i]) + " over the " +
+                 text(values[i], both[i]) + " to " +
+                 text(values[i], -both[n + i]) + " over the " +
                  std::to_string(comm->size()) + " ranks)");
   };
-  check({{"bundle (its CRC-32)", int64_t(bundle->checksum)},
+  check({{"bundle (its CRC-32)", int64_t(bundle->checksum), true},
          {"number of parameters", int64_t(settings.params.size())},
          {"strategy (its number)", int64_t(plan_->strategy)},
          {"group size", groupSize_}});

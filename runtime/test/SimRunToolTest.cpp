@@ -99,9 +99,30 @@ TEST(SimRunValues, ParsesNonNegativeFiniteNumbers) {
   EXPECT_EQ(parseNonNegative("2"), 2.0);
   EXPECT_EQ(parseNonNegative("0"), 0.0);
   EXPECT_FALSE(std::signbit(*parseNonNegative("-0")));
-  for (const char *bad :
-       {"", "-1", "-1e-300", "nan", "inf", "-inf", "1e999", "1e-3x", " 1"})
+  EXPECT_EQ(parseNonNegative("1e-310"), 1e-310); // subnormal, not 0
+  for (const char *bad : {"", "-1", "-1e-300", "nan", "inf", "-inf", "1e999",
+                          "1e-3x", " 1", "0x1p-3", "1e-400"})
     EXPECT_FALSE(parseNonNegative(bad)) << bad;
+}
+
+TEST(SimRunValues, ReadsNumbersAsSetDoes) {
+  // The reasons of a floating-point --set value (parseValue), for the same
+  // texts.
+  struct Case {
+    const char *text, *why;
+  } cases[] = {
+      {"0x1p-3", "is hexadecimal; give a number in decimal"},
+      {"-0X10", "is hexadecimal; give a number in decimal"},
+      {"1e999", "is out of range for f64"},
+      {"1e-400", "underflows to 0 in f64"},
+      {"1e-3x", "is not a finite number >= 0"},
+      {"-1", "is not a finite number >= 0"},
+  };
+  for (const Case &c : cases) {
+    std::string why;
+    EXPECT_FALSE(parseNonNegative(c.text, &why)) << c.text;
+    EXPECT_EQ(why, c.why) << c.text;
+  }
 }
 
 TEST(SimRunOptions, TakesEveryOption) {
@@ -215,6 +236,9 @@ TEST(SimRunOptions, RejectsValuesOutsideTheirDomain) {
       {{"a", "--restart", ""}, "--restart: expects a path"},
       {{"a", "--check", "--check-tolerance", "inf"},
        "--check-tolerance: 'inf' is not a finite number >= 0"},
+      {{"a", "--check", "--check-tolerance", "0x1p-3"},
+       "--check-tolerance: '0x1p-3' is hexadecimal; give a number in "
+       "decimal"},
       {{"a", "--max-memory", "-1"}, "--max-memory: '-1' is not a size"},
       {{"a", "--strategy", "best"}, "--strategy: unknown strategy 'best'"},
       {{"a", "--backend", "tpu"}, "--backend: unknown backend 'tpu'"},

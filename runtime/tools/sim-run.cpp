@@ -552,29 +552,82 @@ TimelineHooks progressHooks(Progress &progress, const std::string &label,
   return hooks;
 }
 
+/// Whether the checkpoint write that every rank took part in succeeded on
+/// all: rank 0 writes the file, and what it alone meets (creating the
+/// folder or the temporary file, renaming it) every rank must know, so that
+/// all go on alike. `wrote` without --distributed.
+bool everyRankWrote(bool wrote) {
+  if (!world)
+    return wrote;
+  int64_t value = wrote ? 1 : 0;
+  if (world->allreduce_min_i64(world->user, &value, 1) != 0)
+    runError("rank " + std::to_string(worldRank) +
+             ": the all-reduce after a checkpoint failed");
+  return value == 1;
+}
+
+/// The runtime's message about a checkpoint written to descriptor `fd`,
+/// for a message that names the path already: without the descriptor.
+std::string checkpointWhy(std::string message, int fd,
+                          const std::string &path) {
+  std::string byDescriptor = "'file descriptor " + std::to_string(fd) + "'";
+  std::string prefix = "cannot write checkpoint " + byDescriptor + ": ";
+  if (message.compare(0, prefix.size(), prefix) == 0)
+    return message.substr(prefix.size());
+  if (size_t at = message.find(byDescriptor); at != std::string::npos)
+    message.replace(at, byDescriptor.size(), "'" + path + "'");
+  return message;
+}
+
 /// Writes --checkpoint's file with the session's state (atomically, like
-/// every output; the checkpoint may replace the --restart file).
-void writeCheckpoint(sim_session *session, MainRun &main) {
+/// every output; the checkpoint may replace the --restart file). A write
+/// that fails does not lose the run: it is reported at once and recorded,
+/// the run goes on (without more periodic checkpoints when `periodic`, a
+/// write of --checkpoint-every), and sim-run ends with status 1 once every
+/// other output is written (docs/Runtime.md, "Checkpoints").
+void writeCheckpoint(sim_session *session, MainRun &main, bool periodic) {
+  int64_t time = sim_session_time(session);
+  std::string why;
   if (!printing()) {
     // The state is gathered collectively; rank 0 writes it.
     if (sim_session_checkpoint_fd(session, -1) != SIM_OK)
-      runError("--checkpoint: " + std::string(sim_last_error()));
+      why = sim_last_error();
+  } else {
+    bool gathered = false;
+    try {
+      writeFileAtomically(main.checkpointFile, [&](int fd) {
+        gathered = true;
+        if (sim_session_checkpoint_fd(session, fd) != SIM_OK)
+          runError(checkpointWhy(sim_last_error(), fd, main.checkpointFile));
+      });
+    } catch (const Exit &exit) {
+      why = exit.message;
+      // The other ranks wait for rank 0 in the gather of the state: a rank
+      // 0 that failed before it got there takes part all the same, with no
+      // file to write (the runtime fails the write on every rank).
+      if (!gathered && world)
+        sim_session_checkpoint_fd(session, -1);
+    }
+  }
+  if (everyRankWrote(why.empty())) {
     ++main.checkpointsWritten;
-    main.checkpointTime = sim_session_time(session);
+    main.checkpointTime = time;
     return;
   }
-  writeFileAtomically(main.checkpointFile, [&](int fd) {
-    if (sim_session_checkpoint_fd(session, fd) == SIM_OK)
-      return;
-    // The runtime names the file by its descriptor; the user named a path.
-    std::string message = sim_last_error();
-    std::string byDescriptor = "'file descriptor " + std::to_string(fd) + "'";
-    if (size_t at = message.find(byDescriptor); at != std::string::npos)
-      message.replace(at, byDescriptor.size(), "'" + main.checkpointFile + "'");
-    runError("--checkpoint: " + message);
-  });
-  ++main.checkpointsWritten;
-  main.checkpointTime = sim_session_time(session);
+  // Where rank 0 alone failed, the other ranks only know that.
+  if (why.empty())
+    why = "rank 0 could not write it";
+  main.checkpointFailures.push_back({time, why});
+  if (!printing())
+    return;
+  std::fprintf(
+      stderr,
+      "sim-run: error: %s: checkpoint '%s' of base step %lld was not "
+      "written: %s%s\n",
+      periodic ? "--checkpoint-every" : "--checkpoint",
+      main.checkpointFile.c_str(), static_cast<long long>(time), why.c_str(),
+      periodic ? "; the run goes on without periodic checkpoints" : "");
+  std::fflush(stderr);
 }
 
 /// What the measured run records at an output time: the totals, the error
@@ -737,8 +790,13 @@ void runMain(Results &results, Sessions &sessions, const sim_bundle *bundle,
                               time);
         };
       }
+      // After a failed write no more periodic ones: each would take the
+      // time of a write that fails again. The one at the end is tried.
       if (options.checkpointEvery > 0)
-        hooks.checkpoint = [&](int64_t) { writeCheckpoint(session, main); };
+        hooks.checkpoint = [&](int64_t) {
+          if (main.checkpointFailures.empty())
+            writeCheckpoint(session, main, true);
+        };
     }
     RunTotals totals;
     main.state = runThrough(session, stops, main.maxSteps, totals, hooks);
@@ -762,7 +820,7 @@ void runMain(Results &results, Sessions &sessions, const sim_bundle *bundle,
   // The checkpoint of where the run stands: its end, or where a signal
   // stopped it (a big-step boundary, so it restarts bit for bit).
   if (!main.checkpointFile.empty())
-    writeCheckpoint(session, main);
+    writeCheckpoint(session, main, false);
   main.totalNames = totalNamesOf(session);
   for (const std::string &name : main.totalNames)
     main.totalPrecisionBytes.push_back(
@@ -1300,10 +1358,13 @@ int run(Options options) {
     keepWhatTheFailedRunReached(results, options);
     throw Exit{exit.status, exit.status < kExitSignalBase ? "" : exit.message};
   }
+  bool checkpointFailed = !results.main.checkpointFailures.empty();
   if (!printing()) {
     // Rank 0 reports; the exit status is every rank's.
     if (int signal = receivedSignal())
       return kExitSignalBase + signal;
+    if (checkpointFailed)
+      return kExitFailure;
     return results.nonFinite.empty() ? kExitSuccess : kExitNonFinite;
   }
 
@@ -1322,11 +1383,26 @@ int run(Options options) {
       if (exact)
         if (std::optional<NonFiniteValues> found = findNonFinite(*exact))
           std::fprintf(stderr, "%s\n", exactNonFiniteWarning(*found).c_str());
+  // A checkpoint write that failed was reported at once, and the table and
+  // the JSON record it. What is left to restart from, after the last one (a
+  // failed write leaves the file as it was, if nothing else removed it):
+  const MainRun &main = results.main;
+  struct stat info;
+  if (checkpointFailed && main.checkpointsWritten > 0 &&
+      main.checkpointTime < main.checkpointFailures.back().time &&
+      stat(main.checkpointFile.c_str(), &info) == 0 && S_ISREG(info.st_mode))
+    std::fprintf(stderr,
+                 "sim-run: note: the checkpoint '%s' of base step %lld "
+                 "stays, to restart from\n",
+                 main.checkpointFile.c_str(),
+                 static_cast<long long>(main.checkpointTime));
   if (int signal = receivedSignal()) {
     std::fprintf(stderr, "sim-run: interrupted by %s%s\n", signalName(signal),
                  results.interrupted() ? "; wrote what was complete" : "");
     return kExitSignalBase + signal;
   }
+  if (checkpointFailed)
+    return kExitFailure;
   if (results.check && !results.check->pass())
     return kExitFailure;
   if (!results.nonFinite.empty()) {

@@ -73,15 +73,41 @@ std::optional<int64_t> parseSize(std::string_view text) {
   return *count << shift;
 }
 
-std::optional<double> parseNonNegative(std::string_view text) {
+std::optional<double> parseNonNegative(std::string_view text,
+                                       std::string *why) {
+  // The rules of a floating-point --set value (parseValue in the runtime's
+  // Bundle.cpp, which sim-run reaches only through the C API), so that the
+  // options agree on what a number is; then the domain.
   std::string copy(text);
-  if (copy.empty() || std::isspace(static_cast<unsigned char>(copy[0])))
+  auto refuse = [&](const char *reason) -> std::optional<double> {
+    if (why)
+      *why = reason;
     return std::nullopt;
+  };
+  const char *notInDomain = "is not a finite number >= 0";
+  // strtod skips leading blanks and accepts an empty string; a value is one
+  // token.
+  if (copy.empty() || std::isspace(static_cast<unsigned char>(copy[0])))
+    return refuse(notInDomain);
   char *end = nullptr;
   errno = 0;
   double value = std::strtod(copy.c_str(), &end);
-  if (*end || !std::isfinite(value) || !(value >= 0))
-    return std::nullopt;
+  if (*end)
+    return refuse(notInDomain);
+  if (errno == ERANGE && std::isinf(value))
+    return refuse("is out of range for f64");
+  if (errno == ERANGE && value == 0)
+    return refuse("underflows to 0 in f64");
+  // strtod reads 0x10 as 16, where an MLIR float literal 0x... is the
+  // value's bits: --set refuses both readings, and so does every option.
+  std::string_view digits = text;
+  if (!digits.empty() && (digits.front() == '-' || digits.front() == '+'))
+    digits.remove_prefix(1);
+  if (digits.size() > 1 && digits[0] == '0' &&
+      (digits[1] == 'x' || digits[1] == 'X'))
+    return refuse("is hexadecimal; give a number in decimal");
+  if (!std::isfinite(value) || !(value >= 0))
+    return refuse(notInDomain);
   return value == 0 ? 0.0 : value; // -0 is 0
 }
 
@@ -115,8 +141,9 @@ CLI::Validator size() {
 CLI::Validator nonNegativeNumber() {
   return CLI::Validator(
       [](std::string &text) -> std::string {
-        if (!parseNonNegative(text))
-          return inQuotes(text) + " is not a finite number >= 0";
+        std::string why;
+        if (!parseNonNegative(text, &why))
+          return inQuotes(text) + " " + why;
         return "";
       },
       "", "non-negative");
@@ -287,12 +314,18 @@ void declareOptions(CLI::App &app, Options &options, std::string &backend,
                    "evaluations and big steps; exit status 1 if they\n"
                    "disagree or a compared value is NaN or infinite");
   check->disable_flag_override();
-  app.add_option("--check-tolerance", options.checkTolerance,
-                 "a buffer passes --check when max-abs <= X *\n"
-                 "max(1, max|reference|) (default by the floats\n"
-                 "its values derive from: 1e-4 for f32, 1e-10 for\n"
-                 "f64; totals 1e-4 and 1e-8); 0: the values must\n"
-                 "be equal")
+  // The value as parseNonNegative reads it, not as CLI11 would convert the
+  // text again.
+  app.add_option_function<std::string>(
+         "--check-tolerance",
+         [&options](const std::string &text) {
+           options.checkTolerance = *parseNonNegative(text);
+         },
+         "a buffer passes --check when max-abs <= X *\n"
+         "max(1, max|reference|) (default by the floats\n"
+         "its values derive from: 1e-4 for f32, 1e-10 for\n"
+         "f64; totals 1e-4 and 1e-8); 0: the values must\n"
+         "be equal")
       ->option_text("X")
       ->check(nonNegativeNumber())
       ->needs(check);

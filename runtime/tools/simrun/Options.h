@@ -128,9 +128,12 @@ std::optional<int64_t> parseInteger(std::string_view text, int64_t min,
 /// case; powers of 1024), at most INT64_MAX; nullopt otherwise.
 std::optional<int64_t> parseSize(std::string_view text);
 
-/// A finite number >= 0 as strtod reads it (the whole text; -0 as 0), or
-/// nullopt.
-std::optional<double> parseNonNegative(std::string_view text);
+/// A finite number >= 0 read by the rules of a floating-point --set value
+/// (the whole text as strtod reads it, no leading blank, not hexadecimal,
+/// not overflowing or underflowing to 0; -0 as 0), or nullopt with why not
+/// in `why` ("is hexadecimal; give a number in decimal"), when given.
+std::optional<double> parseNonNegative(std::string_view text,
+                                       std::string *why = nullptr);
 
 } // namespace simrun
 

@@ -205,6 +205,9 @@ void printTimeline(const Results &results) {
                                 std::to_string(main.checkpointsWritten) +
                                 " written)"
                           : main.checkpointFile + " (not written)");
+  for (const CheckpointFailure &failure : main.checkpointFailures)
+    row("checkpoint", "base step " + std::to_string(failure.time) +
+                          " not written: " + failure.why);
 }
 
 void printReferenceErrors(const Results &results) {
@@ -273,17 +276,21 @@ void printCheck(const Results &results) {
                   std::to_string(buffer.nonFiniteBackend) + ", reference " +
                   std::to_string(buffer.nonFiniteReference) + ")";
     std::printf("  buffer %s  max-abs %s  max-ref %s  rms-rel %s  "
-                "tolerance %.1e  %s%s\n",
+                "tolerance %s  %s%s\n",
                 displayName(buffer.buffer).c_str(),
                 scientific(buffer.norms.maxAbs).c_str(),
                 scientific(buffer.maxReference).c_str(),
-                scientific(buffer.norms.rmsRel).c_str(), buffer.tolerance,
+                scientific(buffer.norms.rmsRel).c_str(),
+                scientific(buffer.tolerance, 1).c_str(),
                 buffer.pass ? "pass" : "FAIL", nonFinite.c_str());
   }
+  // Every number through scientific(), which writes any NaN as "nan".
   for (const Check::TotalRow &total : check.totals)
-    std::printf("  total %s  backend %.9e  reference %.9e  limit %.1e  %s\n",
-                displayName(total.total).c_str(), total.backend,
-                total.reference, total.limit, total.pass ? "pass" : "FAIL");
+    std::printf(
+        "  total %s  backend %s  reference %s  limit %s  %s\n",
+        displayName(total.total).c_str(), scientific(total.backend, 9).c_str(),
+        scientific(total.reference, 9).c_str(),
+        scientific(total.limit, 1).c_str(), total.pass ? "pass" : "FAIL");
   if (!check.totalsPerOutputTime.empty() && !main.totalNames.empty()) {
     bool all = std::all_of(check.totalsPerOutputTime.begin(),
                            check.totalsPerOutputTime.end(),
@@ -598,6 +605,10 @@ std::string toJson(const Results &results) {
     json["totals_per_output_time"] = nullptr;
     json["output"] = nullptr;
   }
+  Json checkpointFailures = Json::array();
+  for (const CheckpointFailure &failure : main.checkpointFailures)
+    checkpointFailures.push_back(
+        {{"base_step", failure.time}, {"error", failure.why}});
   json["checkpoint"] =
       main.checkpointFile.empty()
           ? Json(nullptr)
@@ -607,7 +618,8 @@ std::string toJson(const Results &results) {
                  {"written", main.checkpointsWritten},
                  {"base_step", main.checkpointTime >= 0
                                    ? Json(main.checkpointTime)
-                                   : Json(nullptr)}};
+                                   : Json(nullptr)},
+                 {"failed", checkpointFailures}};
   json["restart"] =
       main.restartTime >= 0
           ? Json{{"file", main.restartFile}, {"base_step", main.restartTime}}

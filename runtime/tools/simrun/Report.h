@@ -30,6 +30,13 @@ struct PartState {
   int64_t reached = 0, of = 0;
 };
 
+/// A checkpoint that could not be written: the base step it was of, and
+/// why ("File too large").
+struct CheckpointFailure {
+  int64_t time = 0;
+  std::string why;
+};
+
 /// The totals at one output time.
 struct TotalsAt {
   int64_t time = 0;
@@ -73,6 +80,9 @@ struct MainRun {
   /// the base step of the last (-1: none).
   std::string checkpointFile;
   int64_t checkpointEvery = 0, checkpointsWritten = 0, checkpointTime = -1;
+  /// The checkpoint writes that failed, in order: the run went on, and
+  /// sim-run ends with status 1 once its other outputs are written.
+  std::vector<CheckpointFailure> checkpointFailures;
   /// Wall and kernel time of every measured run that completed, and their
   /// medians; those of the interrupted run when a signal cut one.
   std::vector<double> walls, kernels;

@@ -143,13 +143,15 @@ void printSeriesRow(const Series &series, size_t row) {
   Layout layout = layoutOf(series);
   std::string line;
   char text[64];
-  std::snprintf(text, sizeof text, "  %11lld  %15.9e",
+  // Numbers through scientific(), which writes any NaN as "nan" (printf
+  // writes "-nan" for one with its sign bit set).
+  std::snprintf(text, sizeof text, "  %11lld  %15s",
                 (long long)series.times[row],
-                double(series.times[row]) * series.dt);
+                scientific(double(series.times[row]) * series.dt, 9).c_str());
   line += text;
   for (size_t t = 0; t < layout.totals.size(); ++t) {
-    std::snprintf(text, sizeof text, "%*.9e", layout.totals[t].second,
-                  series.totals[row][t]);
+    std::snprintf(text, sizeof text, "%*s", layout.totals[t].second,
+                  scientific(series.totals[row][t], 9).c_str());
     line += text;
   }
   size_t column = 0;
@@ -158,8 +160,8 @@ void printSeriesRow(const Series &series, size_t row) {
       continue;
     for (double value :
          {series.errors[row][b].maxAbs, series.errors[row][b].rmsRel}) {
-      std::snprintf(text, sizeof text, "%*.3e", layout.errors[column].second,
-                    value);
+      std::snprintf(text, sizeof text, "%*s", layout.errors[column].second,
+                    scientific(value, 3).c_str());
       line += text;
       ++column;
     }
