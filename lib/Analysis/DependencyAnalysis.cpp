@@ -307,6 +307,16 @@ void DependencyAnalysis::analyzeReads() {
       it->reads.push_back(read);
     }
   });
+
+  simulation.walk([&](LoadOp load) {
+    std::optional<BodyLocation> location = getEnclosingBody(load);
+    if (!location || !location->component)
+      return;
+    Value item = location->kind == BodyKind::Evaluate
+                     ? location->component.getEvaluateItem()
+                     : location->component.getNumStepsItem();
+    loadPatterns.try_emplace(load, classifier.classify(load.getIndex(), item));
+  });
 }
 
 SmallVector<BufferOp>
@@ -324,6 +334,11 @@ AccessPattern DependencyAnalysis::getPattern(ReadOp read) const {
   if (it == readIndex.end())
     return AccessPattern::gather();
   return reads[it->second].pattern;
+}
+
+AccessPattern DependencyAnalysis::getPattern(LoadOp load) const {
+  auto it = loadPatterns.find(load);
+  return it == loadPatterns.end() ? AccessPattern::gather() : it->second;
 }
 
 ArrayRef<BufferAccess>

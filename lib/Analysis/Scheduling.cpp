@@ -274,11 +274,20 @@ mlir::sim::computeSchedule(const DependencyAnalysis &analysis,
 }
 
 /// Whether `component` reads a buffer that the writer of a pair (a
-/// recorded flux_window) writes.
+/// recorded flux_window) writes: through a view read, or through the
+/// explicit load --sim-insert-interpolation made of one (the lowerings
+/// check the recorded stepping after it).
 static bool readsPairWriter(ComponentOp component) {
   auto simulation = component->getParentOfType<SimulationOp>();
-  WalkResult found = component->walk([&](ReadOp read) {
-    BufferOp buffer = simulation.lookupBuffer(read.getBufferAttr());
+  WalkResult found = component->walk([&](Operation *op) {
+    FlatSymbolRefAttr name;
+    if (auto read = dyn_cast<ReadOp>(op))
+      name = read.getBufferAttr();
+    else if (auto load = dyn_cast<LoadOp>(op))
+      name = load.getBufferAttr();
+    else
+      return WalkResult::advance();
+    BufferOp buffer = simulation.lookupBuffer(name);
     ComponentOp writer = buffer ? simulation.getWriter(buffer) : ComponentOp();
     return writer && writer != component && writer.getFluxWindowAttr()
                ? WalkResult::interrupt()

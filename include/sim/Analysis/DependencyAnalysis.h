@@ -120,6 +120,10 @@ public:
   }
   /// The pattern of one read.
   AccessPattern getPattern(ReadOp read) const;
+  /// The pattern of one explicit load in a component body (what
+  /// --sim-insert-interpolation made of a read), classified as reads are:
+  /// the lowerings check the recorded decisions against it.
+  AccessPattern getPattern(LoadOp load) const;
 
   /// Reads of the num_steps and evaluate bodies of `component`, one entry per
   /// (body, buffer) in first-read order.
@@ -156,6 +160,7 @@ private:
   SmallVector<ReadInfo> reads;
   SmallVector<std::pair<ReadOp, AccessPattern>> totalReads;
   llvm::DenseMap<Operation *, unsigned> readIndex;
+  llvm::DenseMap<Operation *, AccessPattern> loadPatterns;
   llvm::DenseMap<Operation *, SmallVector<BufferAccess>> accesses;
 };
 

@@ -18,7 +18,13 @@ def SimLowerToGPU : Pass<"sim-lower-to-gpu", "::mlir::ModuleOp"> {
     kernels and a `simplan.plan @<name>` that says how to run them
     (docs/Plan.md), and erases the simulation. It reads the decisions the
     front end recorded (strategy, schedule, step bounds, sub-stepping,
-    parity, snapshots, caches) and derives none of them again.
+    parity, snapshots, caches) and derives none of them again. It checks
+    that they agree: each component's `advance` and `estimates` with what
+    the strategy, `bounded_by` and its verdict give, an `in_kernel` verdict
+    with reads of its own buffers at its own item only, a `local_window`
+    with the reads of a `local_steps` component, and the copy each load
+    reads with the schedule; a disagreement (a hand edit, or one pass rerun
+    after a change) is an error at the record.
 
     - `simple` and `traditional`: one kernel per component that evaluates
       every item once with `n = m` (`traditional` first runs an estimate

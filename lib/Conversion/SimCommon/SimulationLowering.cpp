@@ -18,6 +18,10 @@
 //===----------------------------------------------------------------------===//
 
 #include "sim/Conversion/SimCommon/SimulationLowering.h"
+#include "sim/Analysis/DependencyAnalysis.h"
+#include "sim/Analysis/Scheduling.h"
+#include "sim/Dialect/Sim/Transforms/Passes.h"
+
 #include "mlir/Dialect/Arith/IR/Arith.h"
 #include "mlir/Dialect/MemRef/IR/MemRef.h"
 #include "mlir/Dialect/SCF/IR/SCF.h"
@@ -93,6 +97,126 @@ LogicalResult SimulationLowering::checkFrontEnd() {
     if (component.getAdvance() != Advance::local_steps)
       continue;
     localSteps = true;
+  }
+  return checkRecordedDecisions();
+}
+
+/// The text that ends every error about a record that disagrees with
+/// another: what to do.
+static constexpr StringLiteral kStaleRecords =
+    "; the records are stale or were edited by hand: run the front end "
+    "(--sim-front-end) again";
+
+/// The lowering reads what the front end recorded and re-derives none of
+/// it, so a record that disagrees with the records it was decided from, or
+/// with the body (a hand edit, or a pass rerun alone after a change),
+/// would compile into wrong results without a word. Each check ties one
+/// record to what it was decided from.
+LogicalResult SimulationLowering::checkRecordedDecisions() {
+  // How each component advances follows from the strategy, the schedule's
+  // step bounds and the sub-stepping verdict (decideStepping, the one
+  // place that decides it).
+  for (ComponentOp component : order) {
+    FailureOr<Stepping> stepping = decideStepping(component, strategy);
+    if (failed(stepping))
+      return failure();
+    if (stepping->advance == component.getAdvance() &&
+        stepping->estimates == component.getEstimates())
+      continue;
+    return component.emitOpError()
+           << "records advance " << stringifyAdvance(*component.getAdvance())
+           << (component.getEstimates() ? " with" : " without")
+           << " estimates, but under strategy " << stringifyStrategy(strategy)
+           << " its schedule's bounded_by and its sub-stepping verdict give "
+           << stringifyAdvance(stepping->advance)
+           << (stepping->estimates ? " with" : " without") << " estimates"
+           << kStaleRecords;
+  }
+
+  // The verdicts and versions against the loads of the bodies.
+  DependencyAnalysis analysis(simulation);
+  for (ComponentOp component : order) {
+    unsigned position = *simulation.getSchedulePosition(component);
+    WalkResult walk =
+        component.walk([&](LoadOp load) {
+          BufferOp buffer = simulation.lookupBuffer(load.getBufferAttr());
+          ComponentOp writer = simulation.getWriter(buffer);
+          BodyKind body = getEnclosingBody(load)->kind;
+          AccessPattern pattern = analysis.getPattern(load);
+          std::string where = pattern.isGather()
+                                  ? std::string("through a gather")
+                                  : "at " + pattern.str();
+          if (writer == component) {
+            // in_kernel sub-steps let each thread own its item's state: a read
+            // of another item could see it between sub-steps.
+            if (component.getSubStepping() == SubStepping::in_kernel &&
+                !pattern.isOwn()) {
+              load.emitOpError()
+                  << "reads @" << buffer.getSymName() << ", which @"
+                  << component.getSymName() << " writes, " << where << ", but @"
+                  << component.getSymName()
+                  << " records the sub-stepping verdict in_kernel, which holds "
+                     "only for reads of its own item"
+                  << kStaleRecords;
+              return WalkResult::interrupt();
+            }
+            // Local steps limit the levels of the blocks inside local_window
+            // only: a read outside it could see a block two levels apart.
+            DenseI64ArrayAttr window = component.getLocalWindowAttr();
+            if (component.getAdvance() == Advance::local_steps &&
+                body == BodyKind::Evaluate && !pattern.isOwn() &&
+                (pattern.isGather() || pattern.getMinOffset() < window[0] ||
+                 pattern.getMaxOffset() > window[1])) {
+              load.emitOpError()
+                  << "reads @" << buffer.getSymName() << ", which @"
+                  << component.getSymName() << " writes, " << where
+                  << ", outside the local_window [" << window[0] << ", "
+                  << window[1] << "] that its local steps are planned for"
+                  << kStaleRecords;
+              return WalkResult::interrupt();
+            }
+            return WalkResult::advance();
+          }
+          // A buffer whose writer runs later in the step holds only its value
+          // at T while this component runs: its target half is the previous
+          // big step's.
+          bool backEdge = *simulation.getSchedulePosition(writer) > position;
+          Version version = load.getVersion();
+          if (backEdge &&
+              (version == Version::target || version == Version::cache)) {
+            load.emitOpError()
+                << "loads the " << stringifyVersion(version) << " copy of @"
+                << buffer.getSymName() << ", but its writer @"
+                << writer.getSymName() << " runs after @"
+                << component.getSymName()
+                << " in the schedule, so only its value at T (the source copy) "
+                   "exists when @"
+                << component.getSymName() << " runs" << kStaleRecords;
+            return WalkResult::interrupt();
+          }
+          // Without sub-steps (simple, traditional) a component evaluates once
+          // per big step: at its end it reads an earlier component's buffer
+          // at T + m, and estimates from the values at T.
+          Version expected =
+              body == BodyKind::Evaluate ? Version::target : Version::source;
+          if (!backEdge && !isSubSteppingStrategy(strategy) &&
+              version != expected) {
+            load.emitOpError()
+                << "loads the " << stringifyVersion(version) << " copy of @"
+                << buffer.getSymName() << ", but under strategy "
+                << stringifyStrategy(strategy) << " its "
+                << stringifyBodyKind(body) << " body reads a buffer that @"
+                << writer.getSymName() << " wrote earlier in the step at "
+                << (body == BodyKind::Evaluate ? "the end of the big step (the "
+                                                 "target copy)"
+                                               : "its start (the source copy)")
+                << kStaleRecords;
+            return WalkResult::interrupt();
+          }
+          return WalkResult::advance();
+        });
+    if (walk.wasInterrupted())
+      return failure();
   }
   return success();
 }

@@ -94,6 +94,7 @@ public:
 
 private:
   LogicalResult checkFrontEnd();
+  LogicalResult checkRecordedDecisions();
   void planClock();
 
   // Kernels and launches.
