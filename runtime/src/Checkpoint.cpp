@@ -37,6 +37,7 @@
 #include <limits>
 #include <optional>
 #include <random>
+#include <set>
 #include <sys/stat.h>
 #include <unistd.h>
 #include <zlib.h>
@@ -579,8 +580,12 @@ Restart checkRestart(Executor &executor, const CheckpointFile &file) {
   if (!planSession)
     clock.clear();
 
-  // Every buffer of the state, and nothing else when the executor is the
-  // same kind.
+  // Every buffer of the state once (a second copy would be ignored), and
+  // nothing else when the executor is the same kind.
+  std::set<std::string> held;
+  for (const auto &state : m.buffers)
+    if (!held.insert(state->name).second)
+      refuse("holds buffer '" + state->name + "' twice (damaged?)");
   std::vector<std::string> names = executor.stateBuffers();
   std::vector<const ckpt::StateT *> states;
   for (const std::string &name : names) {

@@ -853,12 +853,16 @@ void Session::run(int64_t steps, int64_t pause) {
   metrics.steps = end - begin;
   metrics.begin = begin;
   metrics.end = end;
-  metrics.big_steps = clock[kSlotBigSteps] - before[kSlotBigSteps];
-  cutBigSteps = clock[kSlotCuts] - before[kSlotCuts];
-  for (size_t i = 0; i < plan_->components.size(); ++i) {
-    size_t slot = size_t(plan_->components[i]->evaluations);
-    evaluations[i] = clock[slot] - before[slot];
-  }
+  // The kernels add to the counters without overflow checks, so a counter
+  // restored from a checkpoint near the top of int64 wraps: take each
+  // difference modulo 2^64 too (a signed one would be undefined there).
+  auto counted = [&](size_t slot) {
+    return int64_t(uint64_t(clock[slot]) - uint64_t(before[slot]));
+  };
+  metrics.big_steps = counted(kSlotBigSteps);
+  cutBigSteps = counted(kSlotCuts);
+  for (size_t i = 0; i < plan_->components.size(); ++i)
+    evaluations[i] = counted(size_t(plan_->components[i]->evaluations));
   if (distributed()) {
     // Each rank counts its own items' evaluations.
     if (!evaluations.empty())
@@ -867,10 +871,8 @@ void Session::run(int64_t steps, int64_t pause) {
     metrics.halo_exchanges = haloExchanges - exchangesBefore;
     metrics.exchanged_bytes = exchangedBytes - bytesBefore;
   }
-  for (int64_t m = 1; m < int64_t(histogram.size()); ++m) {
-    size_t slot = size_t(plan_->histogram + m);
-    histogram[m] = clock[slot] - before[slot];
-  }
+  for (int64_t m = 1; m < int64_t(histogram.size()); ++m)
+    histogram[m] = counted(size_t(plan_->histogram + m));
   if (interrupted)
     failInterrupted(begin, end, begin + steps);
 }
