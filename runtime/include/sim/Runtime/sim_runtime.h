@@ -20,6 +20,17 @@
 #define SIM_API
 #endif
 
+/// The enumerations below are int-sized in C. C++ gives them the same fixed
+/// type, so that any int a C caller (or Python's ctypes) passes is a value
+/// of the type and the functions can refuse the unknown ones: without a
+/// fixed type, reading a value outside the enumerators' range is undefined
+/// in C++.
+#ifdef __cplusplus
+#define SIM_ENUM_TYPE : int32_t
+#else
+#define SIM_ENUM_TYPE
+#endif
+
 #ifdef __cplusplus
 extern "C" {
 #endif
@@ -28,7 +39,7 @@ extern "C" {
 // Status and errors
 //===----------------------------------------------------------------------===//
 
-typedef enum sim_status {
+typedef enum sim_status SIM_ENUM_TYPE {
   SIM_OK = 0,
   /// A null handle, an unknown name, a value that does not parse, a host
   /// array of the wrong size.
@@ -75,7 +86,7 @@ SIM_API const char *sim_status_name(sim_status status);
 //===----------------------------------------------------------------------===//
 
 /// The values are those of the bundle's section table.
-typedef enum sim_strategy {
+typedef enum sim_strategy SIM_ENUM_TYPE {
   SIM_STRATEGY_SIMPLE = 0,
   SIM_STRATEGY_TRADITIONAL = 1,
   SIM_STRATEGY_HIP = 2,
@@ -84,7 +95,7 @@ typedef enum sim_strategy {
   SIM_STRATEGY_LTS = 4,
 } sim_strategy;
 
-typedef enum sim_backend {
+typedef enum sim_backend SIM_ENUM_TYPE {
   /// CUDA when a driver, a device and the strategy's PTX are there, else
   /// the CPU.
   SIM_BACKEND_AUTO = 0,
