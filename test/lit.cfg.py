@@ -139,13 +139,22 @@ for nvcc in [os.path.join(cuda_root, "bin", "nvcc"), lit.util.which("nvcc")]:
 # `mpi`: sim-run was built with --distributed and mpirun is here. %mpirun
 # runs N ranks on this machine whatever its cores (--oversubscribe), also
 # as root (the CI containers).
+# In a sanitizer build the ranks leave Open MPI's own allocations to
+# LeakSanitizer, suppressed by utils/lsan-openmpi.supp (which says why the
+# other two settings).
 mpirun = lit.util.which("mpirun")
 if config.sim_mpi and mpirun:
     config.available_features.add("mpi")
+    leak_env = ""
+    if config.sim_asan_runtime:
+        leak_env = ("LSAN_OPTIONS=suppressions=%s:fast_unwind_on_malloc=0 "
+                    "OMPI_MCA_mca_component_disable_dlclose=1 " %
+                    os.path.join(config.sim_src_root, "utils",
+                                 "lsan-openmpi.supp"))
     config.substitutions.append((
         "%mpirun", "env OMPI_ALLOW_RUN_AS_ROOT=1 "
         "OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_rmaps_base_oversubscribe=1 "
-        "%s --oversubscribe" % mpirun))
+        "%s%s --oversubscribe" % (leak_env, mpirun)))
 
 # `sim-distributed`: sim-translate compiles plans for many processes
 # (--sim-distributed, docs/Distributed.md).

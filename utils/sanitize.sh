@@ -16,8 +16,9 @@
 #                                        build-sanitize/fuzz/<target>/
 #   utils/sanitize.sh build              only builds
 #
-# The first build takes about 20 minutes on two cores. Run `check` before
-# each release, and `fuzz` after changing the bundle reader, the verifier,
+# It needs Debian's libclang-rt-22-dev (the sanitizer runtimes and
+# libFuzzer). The first build takes about 20 minutes on two cores. Run
+# `check` before each release, and `fuzz` after changing the bundle reader, the verifier,
 # the parser or the front end; docs/Testing.md says what to do with what
 # they find. Set SIM_SANITIZE_BUILD_DIR to build elsewhere.
 set -euo pipefail
@@ -37,6 +38,15 @@ flags="-fsanitize=address,undefined -fsanitize=fuzzer-no-link"
 flags+=" -fno-sanitize-recover=undefined -fno-omit-frame-pointer -g1"
 
 configure() {
+  # The sanitizer runtimes are Debian's libclang-rt-22-dev, which
+  # utils/setup.sh does not install: the ordinary build needs none.
+  if ! echo 'int main(void) { return 0; }' |
+    clang-22 -x c -fsanitize=address,undefined,fuzzer-no-link - \
+      -o /dev/null 2>/dev/null; then
+    echo "sanitize.sh: clang-22 cannot link -fsanitize=address,undefined:" \
+      "install the sanitizer runtimes (apt-get install libclang-rt-22-dev)" >&2
+    exit 1
+  fi
   cmake -G Ninja -S . -B "$build" \
     -DCMAKE_BUILD_TYPE=Release \
     -DCMAKE_C_COMPILER=clang-22 -DCMAKE_CXX_COMPILER=clang++-22 \
