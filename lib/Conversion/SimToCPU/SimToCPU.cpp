@@ -329,12 +329,8 @@ struct SimLowerToCPUPass
     }
     CPUKernelTarget target(levelsPerLane);
     SmallVector<SimulationOp> simulations(module.getOps<SimulationOp>());
-    // Every clash reported before any module is created.
-    bool clash = false;
-    for (SimulationOp simulation : simulations)
-      clash |= failed(simulation.checkLoweredNameIsFree("_kernels", "kernels",
-                                                        getArgument()));
-    if (clash)
+    if (failed(SimulationOp::checkLoweredNamesAreFree(
+            simulations, "_kernels", "kernels", getArgument())))
       return signalPassFailure();
     for (SimulationOp simulation : simulations)
       if (failed(lowerSimulation(simulation, target, groupSize)))

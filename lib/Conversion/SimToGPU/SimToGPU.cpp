@@ -303,12 +303,8 @@ struct SimLowerToGPUPass
                      << static_cast<int64_t>(groupSize);
       return signalPassFailure();
     }
-    // Every clash reported before any module is created.
-    bool clash = false;
-    for (SimulationOp simulation : simulations)
-      clash |= failed(simulation.checkLoweredNameIsFree("_kernels", "kernels",
-                                                        getArgument()));
-    if (clash)
+    if (failed(SimulationOp::checkLoweredNamesAreFree(
+            simulations, "_kernels", "kernels", getArgument())))
       return signalPassFailure();
     GPUKernelTarget target;
     for (SimulationOp simulation : simulations)

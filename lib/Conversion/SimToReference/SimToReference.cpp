@@ -414,12 +414,8 @@ struct SimLowerToReferencePass
   void runOnOperation() override {
     SmallVector<SimulationOp> simulations(
         getOperation().getOps<SimulationOp>());
-    // Every clash reported before any module is created.
-    bool clash = false;
-    for (SimulationOp simulation : simulations)
-      clash |= failed(simulation.checkLoweredNameIsFree(
-          "_reference", "reference functions", getArgument()));
-    if (clash)
+    if (failed(SimulationOp::checkLoweredNamesAreFree(
+            simulations, "_reference", "reference functions", getArgument())))
       return signalPassFailure();
     for (SimulationOp simulation : simulations)
       if (failed(ReferenceLowering(simulation).run()))

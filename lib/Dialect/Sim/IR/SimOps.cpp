@@ -591,29 +591,33 @@ Type SimulationOp::getBuiltinParamType(StringRef name) {
   return nullptr;
 }
 
-LogicalResult SimulationOp::checkLoweredNameIsFree(StringRef suffix,
-                                                   StringRef what,
-                                                   StringRef pass) {
-  Operation *parent = (*this)->getParentOp();
-  if (!parent)
-    return success();
-  std::string name = (getSymName() + suffix).str();
-  Operation *clash = mlir::SymbolTable::lookupSymbolIn(
-      parent, StringAttr::get(getContext(), name));
-  if (!clash)
-    return success();
-  // Left to the lowering, the new module would be a second definition of
-  // the name, reported by the symbol table as an error of the IR that
-  // names neither the simulation nor the way out.
-  InFlightDiagnostic diag =
-      clash->emitError() << "simulation "
-                         << SymbolRefAttr::get(getSymNameAttr())
-                         << " needs the name '" << name << "' for its " << what
-                         << " (--" << pass
-                         << " puts them in a module of that name); rename this "
-                            "symbol";
-  diag.attachNote(getLoc()) << "the simulation is here";
-  return diag;
+LogicalResult
+SimulationOp::checkLoweredNamesAreFree(ArrayRef<SimulationOp> simulations,
+                                       StringRef suffix, StringRef what,
+                                       StringRef pass) {
+  bool clashes = false;
+  for (SimulationOp simulation : simulations) {
+    Operation *parent = simulation->getParentOp();
+    if (!parent)
+      continue;
+    std::string name = (simulation.getSymName() + suffix).str();
+    Operation *clash = mlir::SymbolTable::lookupSymbolIn(
+        parent, StringAttr::get(simulation.getContext(), name));
+    if (!clash)
+      continue;
+    // Left to the lowering, the new module would be a second definition of
+    // the name, reported by the symbol table as an error of the IR that
+    // names neither the simulation nor the way out.
+    clashes = true;
+    clash->emitError()
+            .append("simulation ",
+                    SymbolRefAttr::get(simulation.getSymNameAttr()),
+                    " needs the name '", name, "' for its ", what, " (--", pass,
+                    " puts them in a module of that name); rename this symbol")
+            .attachNote(simulation.getLoc())
+        << "the simulation is here";
+  }
+  return failure(clashes);
 }
 
 /// Whether `op` is the top-level module: a builtin.module with no parent,

@@ -135,14 +135,14 @@ def Sim_SimulationOp : Sim_Op<"simulation", [
     /// these two.
     ComponentOp getWriter(BufferOp buffer);
     ComponentOp getWriter(::mlir::FlatSymbolRefAttr buffer);
-    /// Checks that no symbol beside this simulation has the name
+    /// Checks that no symbol beside each of `simulations` has the name
     /// `<sym_name><suffix>` that the lowering `pass` (its argument, without
-    /// `--`) gives the module it puts this simulation's `what` in ("kernels"),
-    /// with the error at that symbol. A lowering calls it for every
-    /// simulation before it creates any module.
-    ::llvm::LogicalResult checkLoweredNameIsFree(::llvm::StringRef suffix,
-                                                 ::llvm::StringRef what,
-                                                 ::llvm::StringRef pass);
+    /// `--`) gives the module it puts that simulation's `what` in
+    /// ("kernels"), with an error at each such symbol. A lowering calls it
+    /// before it creates any module, so that every clash is reported.
+    static ::llvm::LogicalResult checkLoweredNamesAreFree(
+        ::llvm::ArrayRef<SimulationOp> simulations, ::llvm::StringRef suffix,
+        ::llvm::StringRef what, ::llvm::StringRef pass);
     /// The index of `component` in the order recorded on `sim.schedule`, or
     /// std::nullopt when there is no schedule or it does not list the
     /// component (a prefix given by the user).
