@@ -122,6 +122,14 @@ public:
   virtual void activate() {}
 };
 
+/// The most worker threads the CPU backend starts.
+constexpr int kMaxCpuThreads = 1024;
+
+/// Refuses (SIM_ERROR_INVALID_ARGUMENT) a session's `cpu_threads` below 0
+/// or above kMaxCpuThreads, on whichever backend the session runs: 0 is
+/// one per hardware thread, and a negative value is a mistake, not that.
+void checkCpuThreads(int64_t threads);
+
 /// `threads` workers (0: one per hardware thread).
 std::unique_ptr<Backend> createCpuBackend(int threads);
 

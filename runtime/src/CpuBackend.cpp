@@ -95,7 +95,7 @@ private:
 
 /// The largest group the CPU kernels take, and the most worker threads.
 constexpr int64_t kMaxGroupSize = 4096;
-constexpr int kMaxThreads = 1024;
+constexpr int kMaxThreads = kMaxCpuThreads;
 
 using KernelFn = void (*)(void **params, int64_t firstGroup, int64_t endGroup,
                           int64_t groupSize);
@@ -389,7 +389,17 @@ private:
 
 } // namespace
 
+void checkCpuThreads(int64_t threads) {
+  if (threads < 0 || threads > kMaxCpuThreads)
+    fail(SIM_ERROR_INVALID_ARGUMENT,
+         std::to_string(threads) + " CPU threads: the CPU backend takes 1 to " +
+             std::to_string(kMaxCpuThreads) +
+             ", or 0 for one per hardware thread (sim_session_options."
+             "cpu_threads, sim-run --threads)");
+}
+
 std::unique_ptr<Backend> createCpuBackend(int threads) {
+  checkCpuThreads(threads);
   return std::make_unique<CpuBackend>(threads);
 }
 

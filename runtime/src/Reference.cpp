@@ -8,6 +8,7 @@
 //===----------------------------------------------------------------------===//
 
 #include "Reference.h"
+#include "Backend.h"
 #include "Error.h"
 #include "FloatMode.h"
 
@@ -93,6 +94,9 @@ ReferenceSession::ReferenceSession(std::shared_ptr<const Bundle> bundleIn,
     fail(SIM_ERROR_INVALID_ARGUMENT,
          "unknown strategy " + std::to_string(int(options.strategy)));
   strategy_ = Strategy(options.strategy);
+  // It runs on one thread and ignores the value, but a negative or huge
+  // one is a caller's mistake all the same.
+  checkCpuThreads(options.cpu_threads);
   checkFinite_ = options.check_finite;
   setMemoryLimit(options.max_memory, physicalMemoryBytes());
 

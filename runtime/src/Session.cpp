@@ -58,6 +58,9 @@ Session::Session(std::shared_ptr<const Bundle> bundleIn,
   if (uint32_t(options.strategy) >= kNumStrategies)
     fail(SIM_ERROR_INVALID_ARGUMENT,
          "unknown strategy " + std::to_string(int(options.strategy)));
+  // Before the backend is chosen: a bad value is refused wherever the
+  // session would land (auto on CUDA included).
+  checkCpuThreads(options.cpu_threads);
   Strategy strategy = Strategy(options.strategy);
   std::string name = strategyName(strategy);
   plan_ = bundle->plan(strategy);

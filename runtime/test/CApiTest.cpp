@@ -60,6 +60,53 @@ TEST(CApi, RefusesUnknownEnumerationValues) {
   rmdir(dir.c_str());
 }
 
+TEST(CApi, RefusesCpuThreadCountsOutsideTheBackendsRange) {
+  // cpu_threads 0 is one thread per hardware thread; a negative value was
+  // taken as that too, silently, and a huge one started that many threads
+  // (or failed on the CPU only). Every backend refuses both, naming the
+  // value and the range, before it starts anything.
+  std::string dir = makeTempDir();
+  std::string path = dir + "/decay.simb";
+  writeFile(path, decayBundle());
+  sim_bundle *bundle = nullptr;
+  ASSERT_EQ(sim_bundle_open(path.c_str(), &bundle), SIM_OK) << sim_last_error();
+  for (sim_backend backend :
+       {SIM_BACKEND_CPU, SIM_BACKEND_AUTO, SIM_BACKEND_REFERENCE})
+    for (int32_t threads : {-1, INT32_MIN, 1025, INT32_MAX}) {
+      sim_session_options options;
+      sim_session_options_init(&options);
+      options.strategy = SIM_STRATEGY_SIMPLE;
+      options.backend = backend;
+      options.cpu_threads = threads;
+      sim_session *session = nullptr;
+      EXPECT_EQ(sim_session_create(bundle, &options, &session),
+                SIM_ERROR_INVALID_ARGUMENT)
+          << sim_backend_name(backend) << " " << threads;
+      EXPECT_EQ(session, nullptr);
+      EXPECT_NE(std::string(sim_last_error())
+                    .find(std::to_string(threads) +
+                          " CPU threads: the CPU backend takes 1 to 1024, or "
+                          "0 for one per hardware thread"),
+                std::string::npos)
+          << sim_last_error();
+    }
+  // 0 (all) and a count are taken.
+  for (int32_t threads : {0, 2}) {
+    sim_session_options options;
+    sim_session_options_init(&options);
+    options.strategy = SIM_STRATEGY_SIMPLE;
+    options.backend = SIM_BACKEND_CPU;
+    options.cpu_threads = threads;
+    sim_session *session = nullptr;
+    EXPECT_EQ(sim_session_create(bundle, &options, &session), SIM_OK)
+        << threads << ": " << sim_last_error();
+    sim_session_destroy(session);
+  }
+  sim_bundle_close(bundle);
+  std::remove(path.c_str());
+  rmdir(dir.c_str());
+}
+
 namespace {
 
 /// What the progress callback of CApi.ReadsButDoesNotChangeARunningSession

@@ -244,7 +244,9 @@ typedef struct sim_session_options {
   /// Threads per group; 0: the plan's group_size. A multiple of 32 on
   /// CUDA. The reference executor sub-steps groups of this size.
   int64_t group_size;
-  /// CPU worker threads; 0: one per hardware thread.
+  /// CPU worker threads, 1 to 1024; 0: one per hardware thread. A
+  /// negative value or one above 1024 is refused with
+  /// SIM_ERROR_INVALID_ARGUMENT on every backend.
   int32_t cpu_threads;
   /// CUDA device ordinal.
   int32_t cuda_device;
