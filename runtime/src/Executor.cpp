@@ -130,6 +130,20 @@ bool Settings::set(const std::string &name, const std::string &text,
     if (!std::isfinite(asUsed) || !(asUsed > 0))
       fail(SIM_ERROR_INVALID_ARGUMENT,
            "dt: " + text + " is not a positive finite time step");
+    // A subnormal dt (below 2^-126 in f32, 2^-1022 in f64) has fewer
+    // significant bits than its type, t + dt is t once t is a few steps
+    // in, and a bundle compiled with --sim-ftz computes with 0: the run
+    // would advance nothing.
+    bool normal = value.type == ScalarType::F32 ? std::isnormal(float(value.f))
+                                                : std::isnormal(value.f);
+    if (!normal)
+      fail(SIM_ERROR_INVALID_ARGUMENT,
+           "dt: " + text + " is subnormal in " + scalarTypeName(value.type) +
+               " (below " +
+               (value.type == ScalarType::F32 ? "1.17549435e-38"
+                                              : "2.2250738585072014e-308") +
+               ", the smallest normal value): too small for t + dt to "
+               "advance t; give a positive normal time step");
     dt = value;
     return false;
   }

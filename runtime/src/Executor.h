@@ -34,8 +34,8 @@ public:
   /// Sets `name` from `text`. `checkRange` is called with a new range
   /// before it is taken and throws if the state would not fit. Returns
   /// whether the range changed (the caller discards its state then). A
-  /// range is a positive item count of at most kMaxRange, dt a positive
-  /// finite number.
+  /// range is a positive item count of at most kMaxRange, dt a positive,
+  /// finite, normal number of its type.
   bool set(const std::string &name, const std::string &text,
            const std::function<void(int64_t)> &checkRange);
   std::string get(const std::string &name) const;

@@ -511,7 +511,18 @@ TEST(Executor, RejectsTimeStepsThatAreNotPositiveAndFinite) {
   EXPECT_TRUE(contains(
       errorOf([&] { session.set("dt", "1e-400"); }, SIM_ERROR_INVALID_ARGUMENT),
       "'1e-400' underflows to 0 in f64"));
+  // A subnormal one is refused too: t + dt would not advance t.
+  for (const char *dt : {"1e-320", "4.9e-324", "2.2250738585072e-308"})
+    EXPECT_TRUE(contains(
+        errorOf([&] { session.set("dt", dt); }, SIM_ERROR_INVALID_ARGUMENT),
+        std::string("dt: ") + dt +
+            " is subnormal in f64 (below 2.2250738585072014e-308, the "
+            "smallest normal value): too small for t + dt to advance t"))
+        << dt;
   EXPECT_EQ(session.get("dt"), "0.01");
+  session.set("dt", "2.2250738585072014e-308");
+  EXPECT_EQ(session.get("dt"), "2.2250738585072014e-308");
+  session.set("dt", "0.01");
   for (const char *range : {"0", "-3", "1099511627777"})
     EXPECT_TRUE(contains(errorOf([&] { session.set("range", range); },
                                  SIM_ERROR_INVALID_ARGUMENT),

@@ -289,9 +289,11 @@ SIM_API const char *sim_session_backend_note(const sim_session *session);
 SIM_API int64_t sim_session_group_size(const sim_session *session);
 
 /// Sets `range`, `dt` or a parameter from its text, like `--set`. A new
-/// range discards the state (the next call that needs it runs init).
-/// `max_steps` is fixed when the scene is compiled: any value but the
-/// bundle's is SIM_ERROR_INVALID_ARGUMENT.
+/// range discards the state (the next call that needs it runs init). A
+/// `dt` that is not a positive, finite, normal number of the scene's type
+/// (NaN, 0, subnormal) is SIM_ERROR_INVALID_ARGUMENT. `max_steps` is
+/// fixed when the scene is compiled: any value but the bundle's is
+/// SIM_ERROR_INVALID_ARGUMENT.
 SIM_API sim_status sim_session_set(sim_session *session, const char *name,
                                    const char *value);
 /// The bytes the session's state takes on its device at the current range
