@@ -579,6 +579,34 @@ Restart checkRestart(Executor &executor, const CheckpointFile &file) {
            " slots, the plan's has " + std::to_string(slots));
   if (!planSession)
     clock.clear();
+  // The slots the next run reads before it decides anything (docs/Plan.md,
+  // "The clock"): on a big-step boundary the end is where the last run
+  // stopped, no estimate is pending, and the estimate hint is an item of
+  // the range. A crafted value would change the run silently (an estimate
+  // of 1 makes the first big step 1 base step; a negative one moves T
+  // backwards) or name a group outside the range. The counters (big steps,
+  // cuts, evaluations, histogram) count modulo 2^64, and the sub-step clocks
+  // are set by advance before any kernel reads them: any value will do.
+  if (!clock.empty()) {
+    auto slotText = [&](int64_t slot, const char *name) {
+      return "has clock slot " + std::to_string(slot) + " (" + name +
+             ") = " + std::to_string(clock[size_t(slot)]);
+    };
+    if (clock[kSlotEnd] < m.time)
+      refuse(slotText(kSlotEnd, "the end of the run") +
+             ", before its base step " + std::to_string(m.time) +
+             " (damaged?)");
+    if (clock[kSlotEstimate] != std::numeric_limits<int64_t>::max())
+      refuse(slotText(kSlotEstimate, "the pending estimate") +
+             ", but on a big-step boundary no estimate is pending (" +
+             std::to_string(std::numeric_limits<int64_t>::max()) +
+             ") (damaged?)");
+    if (clock[kSlotEstimateHint] < 0 ||
+        clock[kSlotEstimateHint] >= settings.range)
+      refuse(slotText(kSlotEstimateHint, "the estimate hint") +
+             ", not an item of the range of " + std::to_string(settings.range) +
+             " (damaged?)");
+  }
 
   // Every buffer of the state once (a second copy would be ignored), and
   // nothing else when the executor is the same kind.
