@@ -378,7 +378,11 @@ LogicalResult LaneVectorizer::analyze(std::string &why) {
           !isVarying(subtract.getRhs()))
         consecutive.insert(subtract.getResult());
     } else if (isa<arith::IndexCastOp, arith::IndexCastUIOp>(op)) {
-      if (consecutive.contains(op->getOperand(0)))
+      // Lanes consecutive in a narrower integer may wrap inside a chunk
+      // (i8 lanes 127, -128): widened, they are not consecutive.
+      Type source = elementType(op->getOperand(0).getType());
+      bool widens = !source.isIndex() && source.getIntOrFloatBitWidth() < 64;
+      if (consecutive.contains(op->getOperand(0)) && !widens)
         consecutive.insert(op->getResult(0));
     }
   });
