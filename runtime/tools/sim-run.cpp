@@ -579,16 +579,43 @@ std::string checkpointWhy(std::string message, int fd,
   return message;
 }
 
+/// The first buffer of the session's state that holds NaN or infinity, if
+/// any. Under --distributed every rank reads every buffer whole (the reads
+/// all-gather the ranks' items), so all find the same.
+std::optional<NonFiniteValues> nonFiniteBufferOf(sim_session *session,
+                                                 const sim_bundle *bundle) {
+  std::optional<NonFiniteValues> found;
+  for (int32_t b = 0; b < sim_bundle_num_buffers(bundle) && !found; ++b) {
+    sim_buffer_info info;
+    check(sim_bundle_buffer(bundle, b, &info));
+    size_t bytes = 0;
+    // A buffer the strategy's plan pruned is not in the session.
+    if (sim_session_buffer_bytes(session, info.name, &bytes) == SIM_OK)
+      found = findNonFinite(readBuffer(session, info, false));
+  }
+  return found;
+}
+
 /// Writes --checkpoint's file with the session's state (atomically, like
 /// every output; the checkpoint may replace the --restart file). A write
 /// that fails does not lose the run: it is reported at once and recorded,
 /// the run goes on (without more periodic checkpoints when `periodic`, a
 /// write of --checkpoint-every), and sim-run ends with status 1 once every
-/// other output is written (docs/Runtime.md, "Checkpoints").
-void writeCheckpoint(sim_session *session, MainRun &main, bool periodic) {
+/// other output is written (docs/Runtime.md, "Checkpoints"). A state that
+/// holds NaN or infinity is not written either: a checkpoint is what a run
+/// restarts from, and the file keeps the last good one (the --restart
+/// checkpoint, when it is the same file).
+void writeCheckpoint(sim_session *session, const sim_bundle *bundle,
+                     MainRun &main, bool periodic) {
   int64_t time = sim_session_time(session);
   std::string why;
-  if (!printing()) {
+  // Every rank finds the same, so all skip the write alike.
+  std::optional<NonFiniteValues> nonFinite = nonFiniteBufferOf(session, bundle);
+  if (nonFinite) {
+    why = nonFiniteStateText(*nonFinite) +
+          ", and a checkpoint is what a run restarts from (--dump writes such "
+          "a state)";
+  } else if (!printing()) {
     // The state is gathered collectively; rank 0 writes it.
     if (sim_session_checkpoint_fd(session, -1) != SIM_OK)
       why = sim_last_error();
@@ -795,7 +822,7 @@ void runMain(Results &results, Sessions &sessions, const sim_bundle *bundle,
       if (options.checkpointEvery > 0)
         hooks.checkpoint = [&](int64_t) {
           if (main.checkpointFailures.empty())
-            writeCheckpoint(session, main, true);
+            writeCheckpoint(session, bundle, main, true);
         };
     }
     RunTotals totals;
@@ -820,7 +847,7 @@ void runMain(Results &results, Sessions &sessions, const sim_bundle *bundle,
   // The checkpoint of where the run stands: its end, or where a signal
   // stopped it (a big-step boundary, so it restarts bit for bit).
   if (!main.checkpointFile.empty())
-    writeCheckpoint(session, main, false);
+    writeCheckpoint(session, bundle, main, false);
   main.totalNames = totalNamesOf(session);
   for (const std::string &name : main.totalNames)
     main.totalPrecisionBytes.push_back(
@@ -1197,6 +1224,30 @@ void runAll(Results &results, Sessions &sessions, const sim_bundle *bundle,
   results.signal = receivedSignal();
 }
 
+/// Where a run wrote no checkpoint at its end (it failed, or the write
+/// failed, or its state held NaN), notes what --checkpoint's path still
+/// holds to restart from: the last checkpoint the run wrote, or the
+/// --restart checkpoint when that is the same file and the run wrote none.
+void noteCheckpointThatStays(const MainRun &main) {
+  struct stat info;
+  if (main.checkpointFile.empty() ||
+      stat(main.checkpointFile.c_str(), &info) != 0 || !S_ISREG(info.st_mode))
+    return;
+  if (main.checkpointsWritten > 0)
+    std::fprintf(stderr,
+                 "sim-run: note: the checkpoint '%s' of base step %lld "
+                 "stays, to restart from\n",
+                 main.checkpointFile.c_str(),
+                 static_cast<long long>(main.checkpointTime));
+  else if (!main.restartFile.empty() && main.restartTime >= 0 &&
+           sameFile(main.restartFile, main.checkpointFile))
+    std::fprintf(stderr,
+                 "sim-run: note: the checkpoint '%s' this run restarted from "
+                 "(base step %lld) stays, to restart from\n",
+                 main.checkpointFile.c_str(),
+                 static_cast<long long>(main.restartTime));
+}
+
 /// A run that failed (--check-finite found a NaN, a kernel failed) still
 /// writes the output times it reached into --output's .npz; the last
 /// checkpoint of --checkpoint-every stays. No JSON and no dumps: the state
@@ -1214,12 +1265,7 @@ void keepWhatTheFailedRunReached(const Results &results,
                  static_cast<long long>(results.series.times.back()),
                  options.output.c_str());
   }
-  if (results.main.checkpointsWritten > 0)
-    std::fprintf(stderr,
-                 "sim-run: note: the checkpoint '%s' of base step %lld "
-                 "stays, to restart from\n",
-                 results.main.checkpointFile.c_str(),
-                 static_cast<long long>(results.main.checkpointTime));
+  noteCheckpointThatStays(results.main);
 }
 
 /// For a .mlir input, moves the compile-time settings (max_steps) out of
@@ -1387,32 +1433,35 @@ int run(Options options) {
   // the JSON record it. What is left to restart from, after the last one (a
   // failed write leaves the file as it was, if nothing else removed it):
   const MainRun &main = results.main;
-  struct stat info;
-  if (checkpointFailed && main.checkpointsWritten > 0 &&
-      main.checkpointTime < main.checkpointFailures.back().time &&
-      stat(main.checkpointFile.c_str(), &info) == 0 && S_ISREG(info.st_mode))
-    std::fprintf(stderr,
-                 "sim-run: note: the checkpoint '%s' of base step %lld "
-                 "stays, to restart from\n",
-                 main.checkpointFile.c_str(),
-                 static_cast<long long>(main.checkpointTime));
+  if (checkpointFailed &&
+      (main.checkpointsWritten == 0 ||
+       main.checkpointTime < main.checkpointFailures.back().time))
+    noteCheckpointThatStays(main);
   if (int signal = receivedSignal()) {
     std::fprintf(stderr, "sim-run: interrupted by %s%s\n", signalName(signal),
                  results.interrupted() ? "; wrote what was complete" : "");
     return kExitSignalBase + signal;
   }
-  if (checkpointFailed)
-    return kExitFailure;
-  if (results.check && !results.check->pass())
-    return kExitFailure;
-  if (!results.nonFinite.empty()) {
-    // With --check-finite on, no base step made them (the state held them
-    // before the first, or the run took none): no hint to turn it on.
+  // With --check-finite on, no base step made them (the state held them
+  // before the first, or the run took none): no hint to turn it on.
+  auto nonFiniteError = [&] {
     std::fprintf(
         stderr, "sim-run: error: the run ended with NaN or infinite values%s\n",
         options.checkFinite ? ""
                             : " (--check-finite stops at the first "
                               "and says where it appeared)");
+  };
+  // A checkpoint not written is status 1, also where the state's NaN was
+  // why (which is said all the same).
+  if (checkpointFailed) {
+    if (!results.nonFinite.empty())
+      nonFiniteError();
+    return kExitFailure;
+  }
+  if (results.check && !results.check->pass())
+    return kExitFailure;
+  if (!results.nonFinite.empty()) {
+    nonFiniteError();
     return kExitNonFinite;
   }
   return kExitSuccess;

@@ -270,7 +270,9 @@ void declareOptions(CLI::App &app, Options &options, std::string &backend,
       app.add_option("--checkpoint", options.checkpoint,
                      "keep a checkpoint of the run (clock and state) in\n"
                      "FILE: at the end, where a signal stops it, and\n"
-                     "with --checkpoint-every; each replaces the last")
+                     "with --checkpoint-every; each replaces the last\n"
+                     "(a state with NaN or infinity is not written: the\n"
+                     "file keeps the last good one)")
           ->option_text("FILE")
           ->check(path());
   app.add_option("--checkpoint-every", options.checkpointEvery,

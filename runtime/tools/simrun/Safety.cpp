@@ -175,6 +175,14 @@ std::string nonFiniteWarning(const NonFiniteValues &found) {
          " at " + itemText(found.item, found.lane, found.lanes) + ")";
 }
 
+std::string nonFiniteStateText(const NonFiniteValues &found) {
+  return "buffer '" + displayName(found.name) + "' holds " +
+         plural(found.count, "NaN or infinite value",
+                "NaN or infinite values") +
+         " (the first: " + valueText(found.value) + " at " +
+         itemText(found.item, found.lane, found.lanes) + ")";
+}
+
 std::string exactNonFiniteWarning(const NonFiniteValues &found) {
   return "sim-run: warning: the exact solution of buffer '" +
          displayName(found.name) + "' holds " +

@@ -81,6 +81,9 @@ findNonFiniteTotals(const std::vector<std::string> &names,
 /// "sim-run: warning: buffer 'X' holds 3 NaN or infinite values at the end
 /// of the run (the first: nan at item 7)".
 std::string nonFiniteWarning(const NonFiniteValues &found);
+/// "buffer 'X' holds 3 NaN or infinite values (the first: nan at item
+/// 7)": why a state is no checkpoint to restart from.
+std::string nonFiniteStateText(const NonFiniteValues &found);
 /// "sim-run: warning: the exact solution of buffer 'X' holds 3 NaN or
 /// infinite values at the end of the run (...), so its errors are not
 /// finite; ...": --reference exact compared with values that mean nothing.
