@@ -16,6 +16,7 @@
 //===----------------------------------------------------------------------===//
 
 #include "sim/Conversion/Passes.h"
+#include "sim/Dialect/Sim/IR/SimOps.h"
 
 #include "mlir/Dialect/Arith/IR/Arith.h"
 #include "mlir/Dialect/Math/IR/Math.h"
@@ -60,24 +61,37 @@ struct SimLowerVectorOpsPass
     : sim::impl::SimLowerVectorOpsBase<SimLowerVectorOpsPass> {
   void runOnOperation() override {
     // Nothing to do (and no folding of other ops) without such an op.
-    WalkResult found = getOperation()->walk([](Operation *op) {
+    Operation *found = nullptr;
+    getOperation()->walk([&](Operation *op) {
       bool vectorPower =
           isa<math::FPowIOp>(op) && isa<VectorType>(op->getResultTypes()[0]);
       auto broadcast = dyn_cast<vector::BroadcastOp>(op);
       bool nDBroadcast =
           broadcast && broadcast.getResultVectorType().getRank() > 1;
-      return vectorPower || nDBroadcast ||
-                     isa<vector::ContractionOp, vector::OuterProductOp,
-                         vector::MultiDimReductionOp, vector::TransposeOp,
-                         vector::StepOp, vector::InsertStridedSliceOp,
-                         vector::ExtractStridedSliceOp, vector::ShapeCastOp,
-                         vector::CreateMaskOp, vector::ConstantMaskOp,
-                         vector::ScanOp>(op)
-                 ? WalkResult::interrupt()
-                 : WalkResult::advance();
+      if (!vectorPower && !nDBroadcast &&
+          !isa<vector::ContractionOp, vector::OuterProductOp,
+               vector::MultiDimReductionOp, vector::TransposeOp, vector::StepOp,
+               vector::InsertStridedSliceOp, vector::ExtractStridedSliceOp,
+               vector::ShapeCastOp, vector::CreateMaskOp,
+               vector::ConstantMaskOp, vector::ScanOp>(op))
+        return WalkResult::advance();
+      found = op;
+      return op->getParentOfType<sim::SimulationOp>() ? WalkResult::interrupt()
+                                                      : WalkResult::advance();
     });
-    if (!found.wasInterrupted())
+    if (!found)
       return;
+    // The lowerings start their vectors from ub.poison, which the bodies of
+    // a scene cannot hold; the kernels and reference functions that the
+    // lowerings of a scene make can.
+    if (found->getParentOfType<sim::SimulationOp>()) {
+      found->emitOpError()
+          << "is in a body of a sim.simulation, whose vector ops "
+             "--sim-lower-vector-ops does not lower (it lowers those of "
+             "kernels); run it after --sim-lower-to-cpu, --sim-lower-to-gpu "
+             "or --sim-lower-to-reference";
+      return signalPassFailure();
+    }
     RewritePatternSet patterns(&getContext());
     // A contraction as multiplications and reductions in program order
     // (ParallelArith), not llvm.matrix intrinsics that only the CPU has.
