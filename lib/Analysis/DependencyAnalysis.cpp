@@ -191,19 +191,15 @@ private:
     Operation *def = value.getDefiningOp();
     if (!def)
       return std::nullopt;
-    if (isa<arith::IndexCastOp>(def))
-      return offsetFromItem(def->getOperand(0), item, depth + 1);
-    if (isa<arith::IndexCastUIOp>(def)) {
-      // Zero extension of a narrower integer is `%i + c` only where that is
-      // not negative: `index_castui (i32(%i) - 1)` is 2^32 - 1 at item 0, no
-      // neighbour of it.
-      std::optional<OffsetRange> range =
-          offsetFromItem(def->getOperand(0), item, depth + 1);
+    if (isa<arith::IndexCastOp, arith::IndexCastUIOp>(def)) {
+      // A narrower integer extended to an index is `%i + c` only where the
+      // narrow sum did not wrap, which depends on the range: `index_cast
+      // (i8(%i) + 1)` is -128 at item 127, and `index_castui (i32(%i) - 1)`
+      // 2^32 - 1 at item 0, neighbours of neither.
       Type source = def->getOperand(0).getType();
-      if (range && range->first < 0 && !source.isIndex() &&
-          source.getIntOrFloatBitWidth() < 64)
+      if (!source.isIndex() && source.getIntOrFloatBitWidth() < 64)
         return std::nullopt;
-      return range;
+      return offsetFromItem(def->getOperand(0), item, depth + 1);
     }
     if (auto add = dyn_cast<arith::AddIOp>(def)) {
       for (auto [base, term] : {std::pair(add.getLhs(), add.getRhs()),

@@ -1,8 +1,8 @@
 // A rod whose neighbour indices are computed in unsigned 32-bit integers
 // (as `sim.u32(i) - 1` in Python writes them): `index_castui` zero-extends,
 // so the left neighbour of item 0 is item 2^32 - 1 (clamped to the last
-// item), not item -1. The right neighbour, i + 1, is a window; the left one
-// is a gather. The stiff cells (num_steps 1) are the first 40.
+// item), not item -1. Both neighbours are gathers. The stiff cells
+// (num_steps 1) are the first 40.
 sim.simulation @index_castui range(100) dt(1.0e-2 : f64) max_steps(8) {
   sim.buffer @U : f64 boundary(clamp) init {
   ^bb0(%i: index):
