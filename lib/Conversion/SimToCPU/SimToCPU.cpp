@@ -321,14 +321,17 @@ struct SimLowerToCPUPass
 
   void runOnOperation() override {
     ModuleOp module = getOperation();
+    SmallVector<SimulationOp> simulations(module.getOps<SimulationOp>());
     if (groupSize <= 0) {
-      module.emitError() << "--sim-lower-to-cpu needs a positive group size, "
-                            "not "
-                         << static_cast<int64_t>(groupSize);
+      // Located at the scenes it would lower (the module has no location of
+      // its own in a file).
+      Location loc =
+          simulations.empty() ? module.getLoc() : simulations.front().getLoc();
+      emitError(loc) << "--sim-lower-to-cpu needs a positive group size, not "
+                     << static_cast<int64_t>(groupSize);
       return signalPassFailure();
     }
     CPUKernelTarget target(levelsPerLane);
-    SmallVector<SimulationOp> simulations(module.getOps<SimulationOp>());
     if (failed(SimulationOp::checkLoweredNamesAreFree(
             simulations, "_kernels", "kernels", getArgument())))
       return signalPassFailure();
