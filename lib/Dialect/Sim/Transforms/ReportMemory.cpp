@@ -168,7 +168,14 @@ struct ReportMemoryPass
 
   void runOnOperation() override {
     if (groupSize < 1) {
-      getOperation()->emitError()
+      // Located at the first scene (the module has no location of its own
+      // in a file).
+      Location loc = getOperation()->getLoc();
+      getOperation()->walk([&](SimulationOp simulation) {
+        loc = simulation.getLoc();
+        return WalkResult::interrupt();
+      });
+      emitError(loc)
           << "--sim-report-memory needs a positive group-size, but got "
           << static_cast<int64_t>(groupSize);
       return signalPassFailure();

@@ -5,7 +5,7 @@
 // Byte counts past 2^63 - 1 are an error, never a wrapped negative number.
 // CACHE: error: 'sim.simulation' op needs more than 9223372036854775807 bytes for the shared-memory caches of @C2 (group-size 9223372036854775807); the memory report cannot count them
 
-// GROUP: --sim-report-memory needs a positive group-size, but got 0
+// GROUP: sim-report-memory-invalid.mlir:{{[1-9][0-9]*}}:1: error: --sim-report-memory needs a positive group-size, but got 0
 
 // expected-error @+1 {{'sim.simulation' op has no memory plan; run --sim-plan-memory before --sim-report-memory}}
 sim.simulation @unplanned range(16) dt(1.0e-2 : f32) max_steps(2) {
