@@ -1786,7 +1786,13 @@ struct SimVectorizeLanesPass
 
   void runOnOperation() override {
     if (width < 2 || width > 64 || !llvm::isPowerOf2_64(width)) {
-      getOperation()->emitError()
+      // A file's top module has no location of its own ("file:0:0"): at its
+      // first operation then.
+      Operation *at = getOperation();
+      if (auto module = dyn_cast<ModuleOp>(at);
+          module && !module.getBody()->empty())
+        at = &module.getBody()->front();
+      at->emitError()
           << "--sim-vectorize-lanes: width must be a power of two from 2 to "
              "64, not "
           << static_cast<int64_t>(width);
