@@ -149,9 +149,15 @@ struct UnrollLoopsPass
     // and ptxas's time grows with the copies: 256 took a minute and 3 MB of
     // PTX, 1000 did not finish. nvcc unrolls such a loop by 2 to 4.
     if (factor == 0 || factor > kMaxFactor) {
-      getOperation()->emitError()
-          << "sim-gpu-unroll-loops: the factor must be from 1 to " << kMaxFactor
-          << ", not " << static_cast<unsigned>(factor);
+      // A file's top module has no location of its own ("file:0:0"): at its
+      // first operation then.
+      Operation *at = getOperation();
+      if (auto module = dyn_cast<ModuleOp>(at);
+          module && !module.getBody()->empty())
+        at = &module.getBody()->front();
+      at->emitError() << "sim-gpu-unroll-loops: the factor must be from 1 to "
+                      << kMaxFactor << ", not "
+                      << static_cast<unsigned>(factor);
       return signalPassFailure();
     }
     if (factor <= 1)
