@@ -209,8 +209,9 @@ class Scene:
 
     `precision` (f32 or f64) is the type of `dt` and of Python float
     constants in bodies without a typed operand; `dt` must be positive and
-    finite in it (1e-50 underflows f32: a TraceError here, not a tool's
-    error about a dt of 0). Components, buffers and totals are declared
+    finite in it, and not subnormal (1e-50 underflows f32, 1e-40 is
+    subnormal in it: a TraceError here, not a tool's error about the
+    rounded value). Components, buffers and totals are declared
     with the decorators `buffer`, `component` and `total`; `observe` names
     the outputs.
     """
@@ -604,6 +605,14 @@ def _check_dt(dt, precision: DType, loc) -> float:
         raise trace_error(f"dt {dt!r} underflows {precision} to 0 (the "
                           f"smallest positive {precision} is {tiny!r}){hint}",
                           loc)
+    # A subnormal dt is no time step: the verifier and the runtime refuse
+    # it too, but only of the rounded value and not at the user's line.
+    smallest = 2.0 ** -126 if precision is f32 else sys.float_info.min
+    if rounded < smallest:
+        hint = "; use precision=sim.f64" if precision is f32 else ""
+        raise trace_error(f"dt {dt!r} is subnormal in {precision} (the "
+                          f"smallest normal {precision} is {smallest!r})"
+                          f"{hint}", loc)
     return value
 
 

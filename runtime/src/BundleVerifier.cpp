@@ -137,6 +137,11 @@ void verifyScene(const schema::SceneT &scene) {
   double used = dt.type == ScalarType::F32 ? double(float(dt.f)) : dt.f;
   if (!std::isfinite(used) || !(used > 0))
     bad(what + " has dt " + dt.text() + ", not a positive finite number");
+  // As sim_session_set refuses one: a subnormal dt is no time step.
+  if (dt.type == ScalarType::F32 ? !std::isnormal(float(dt.f))
+                                 : !std::isnormal(dt.f))
+    bad(what + " has dt " + dt.text() + ", which is subnormal in " +
+        (dt.type == ScalarType::F32 ? "f32" : "f64"));
   if (scene.max_steps < 1 || scene.max_steps > (1 << 20))
     bad(what + " has max_steps " + std::to_string(scene.max_steps) +
         ", not 1 to 2^20");

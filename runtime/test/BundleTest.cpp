@@ -251,6 +251,16 @@ TEST(BundleVerifier, ChecksTheScene) {
        },
        "has dt nan, not a positive finite number"},
       {[](auto &c) {
+         c.scene->dt =
+             std::make_unique<schema::Value>(0, 1e-320, ScalarType::F64);
+       },
+       "which is subnormal in f64"},
+      {[](auto &c) {
+         c.scene->dt =
+             std::make_unique<schema::Value>(0, 1e-40, ScalarType::F32);
+       },
+       "which is subnormal in f32"},
+      {[](auto &c) {
          c.scene->dt = std::make_unique<schema::Value>(0, 1, ScalarType::I32);
        },
        "has a dt of type 0, not f32 or f64"},

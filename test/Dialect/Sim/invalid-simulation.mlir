@@ -76,6 +76,30 @@ sim.simulation @s range(16) dt(-2.5 : f64) max_steps(1) {
 
 // -----
 
+// A subnormal dt is no time step: the runtime refuses to set one too.
+// expected-error @+1 {{'sim.simulation' op expects a base time step dt that is a normal 'f32' value, but got 9.999946e-41, which is subnormal; give a larger dt}}
+sim.simulation @s range(16) dt(1.0e-40 : f32) max_steps(1) {
+}
+
+// -----
+
+// expected-error @+1 {{'sim.simulation' op expects a base time step dt that is a normal 'f64' value, but got 9.999889e-321, which is subnormal; give a larger dt}}
+sim.simulation @s range(16) dt(1.0e-320 : f64) max_steps(1) {
+}
+
+// -----
+
+// The smallest normal values are taken.
+sim.simulation @s range(16) dt(1.17549435e-38 : f32) max_steps(1) {
+}
+
+// -----
+
+sim.simulation @s range(16) dt(2.2250738585072014e-308 : f64) max_steps(1) {
+}
+
+// -----
+
 // expected-error @+1 {{'sim.simulation' op expects a positive, finite base time step dt, but got nan}}
 sim.simulation @s range(16) dt(0x7FC00000 : f32) max_steps(1) {
 }

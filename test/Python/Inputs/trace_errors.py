@@ -197,6 +197,18 @@ def dt_underflow():
 
 
 @case
+def dt_subnormal():
+    # CHECK: dt_subnormal: trace_errors.py:[[@LINE+1]]:{{[0-9]+}}: dt 1e-40 is subnormal in f32 (the smallest normal f32 is 1.1754943508222875e-38); use precision=sim.f64
+    sim.Scene("tiny", range=4, dt=1e-40, precision=f32)
+
+
+@case
+def dt_subnormal_f64():
+    # CHECK: dt_subnormal_f64: trace_errors.py:[[@LINE+1]]:{{[0-9]+}}: dt 1e-320 is subnormal in f64 (the smallest normal f64 is 2.2250738585072014e-308)
+    sim.Scene("tiny", range=4, dt=1e-320, precision=f64)
+
+
+@case
 def dt_overflow():
     # CHECK: dt_overflow: trace_errors.py:[[@LINE+1]]:{{[0-9]+}}: dt 1e+39 overflows f32 (the largest finite f32 is 3.4028234663852886e+38)
     sim.Scene("huge", range=4, dt=1e39, precision=f32)

@@ -688,6 +688,13 @@ LogicalResult SimulationOp::verify() {
     return emitOpError() << "expects a positive, finite base time step dt, "
                             "but got "
                          << dt;
+  // A subnormal dt has fewer significant bits than its type, and a bundle
+  // compiled with flush-to-zero would compute with 0; the runtime refuses
+  // to set one as well (sim_session_set).
+  if (cast<FloatAttr>(getDt()).getValue().isDenormal())
+    return emitOpError() << "expects a base time step dt that is a normal "
+                         << getTimeStepType() << " value, but got " << dt
+                         << ", which is subnormal; give a larger dt";
   if (std::optional<int64_t> halo = getDistributedHalo(); halo && *halo < 0)
     return emitOpError() << "has a distributed_halo of " << *halo
                          << " items; it must be 0 or more";
