@@ -141,8 +141,9 @@ TEST_F(DependencyAnalysisTest, ClassifiesReads) {
   EXPECT_EQ(*analysis.getReadPattern(first, a), AccessPattern::own());
   // The loop window, with the induction variable on the left of the add.
   EXPECT_EQ(*analysis.getReadPattern(second, a), AccessPattern::window(-3, 1));
-  // Through an i32 computation and index casts.
-  EXPECT_EQ(*analysis.getReadPattern(second, b), AccessPattern::window(5, 5));
+  // Through an i32 computation and index casts: a gather, since the narrow
+  // sum may wrap where the range passes 2^31 (docs/Model.md).
+  EXPECT_TRUE(analysis.getReadPattern(second, b)->isGather());
   EXPECT_TRUE(analysis.getReadPattern(third, b)->isGather());
   EXPECT_FALSE(analysis.getReadPattern(third, a).has_value());
 
