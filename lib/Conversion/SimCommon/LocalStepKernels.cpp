@@ -1215,6 +1215,26 @@ LogicalResult SimulationLowering::emitLocalSteps(ComponentOp component,
     auto levelAt = [&](Value block) {
       return b.select(inWindow(window, block), b.load(levels, at(block)), size);
     };
+    // In a big step of one base step every block's sub-step is 1, which
+    // needs no limit: every block's level and codes follow at once (the
+    // codes as when every level reads 1), at a fraction of the sweeps'
+    // cost. Where something holds the big step at 1 (a bounding
+    // component's stiff item), the sweeps would otherwise cost about as
+    // much as the slot itself.
+    auto unitStep = b.ifThenElse(
+        TypeRange{}, b.cmp(arith::CmpIPredicate::eq, size, one),
+        [&]() -> SmallVector<Value> {
+          auto blocksLoop = scf::ForOp::create(b, b.loc, zero, count, one);
+          OpBuilder::InsertionGuard guard(b);
+          b.setInsertionPoint(blocksLoop.getBody()->getTerminator());
+          Value g = blockAt(blocksLoop.getInductionVar());
+          storeLevel(kernel, levels, parity, size, g, one);
+          codesOfBlock(kernel, levels, size, g, [&](Value) { return one; });
+          return {};
+        },
+        [&]() -> SmallVector<Value> { return {}; });
+    OpBuilder::InsertionGuard unitGuard(b);
+    b.setInsertionPoint(unitStep.elseBlock()->getTerminator());
     {
       auto decode = scf::ForOp::create(b, b.loc, zero, count, one);
       OpBuilder::InsertionGuard guard(b);
@@ -1285,6 +1305,9 @@ LogicalResult SimulationLowering::emitLocalSteps(ComponentOp component,
                            b.min(finest.getRegionIterArg(0), levelAt(g)));
     }
     b.store(finest.getResult(0), kernel.clock, b.index(sub + kSubSize));
+    b.setInsertionPoint(unitStep.thenBlock()->getTerminator());
+    b.store(one, kernel.clock, b.index(sub + kSubSize));
+    b.setInsertionPointAfter(unitStep);
     runEnds(kernel, levels, kLevelStepCodes, kLevelStepRuns);
     if (fluxWriter)
       runEnds(kernel, levels, kLevelFluxCodes, kLevelFluxRuns);
@@ -1342,14 +1365,30 @@ LogicalResult SimulationLowering::emitLocalSteps(ComponentOp component,
     Value running = b.cmp(arith::CmpIPredicate::sgt, size, b.i64(0));
     if (target.limitsLevelsPerLane()) {
       b.ifThen(running, [&] {
+        // A big step of one base step: every sub-step is 1 (as in
+        // limitInOnePass), and the finest is m, which levels_C set.
+        Value one = b.i64(1);
+        Value unit = b.cmp(arith::CmpIPredicate::eq, size, one);
         forEachBlockOfLanes(kernel, [&](Value g) {
-          Value level = limitBlock(kernel, levels, parity, size, g);
-          b.atomic(arith::AtomicRMWKind::mins, level, kernel.clock,
-                   b.index(sub + kSubSize));
-          codesOfBlock(kernel, levels, size, g, [&](Value h) {
-            return b.select(b.cmp(arith::CmpIPredicate::eq, h, g), level,
-                            limitedLevel(kernel, levels, parity, size, h));
-          });
+          b.ifThenElse(
+              TypeRange{}, unit,
+              [&]() -> SmallVector<Value> {
+                storeLevel(kernel, levels, parity, size, g, one);
+                codesOfBlock(kernel, levels, size, g,
+                             [&](Value) { return one; });
+                return {};
+              },
+              [&]() -> SmallVector<Value> {
+                Value level = limitBlock(kernel, levels, parity, size, g);
+                b.atomic(arith::AtomicRMWKind::mins, level, kernel.clock,
+                         b.index(sub + kSubSize));
+                codesOfBlock(kernel, levels, size, g, [&](Value h) {
+                  return b.select(
+                      b.cmp(arith::CmpIPredicate::eq, h, g), level,
+                      limitedLevel(kernel, levels, parity, size, h));
+                });
+                return {};
+              });
         });
       });
       if (target.splitsGroups())
