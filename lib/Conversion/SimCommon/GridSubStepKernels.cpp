@@ -114,12 +114,21 @@ LogicalResult SimulationLowering::emitRounds(ComponentOp component,
     // With one base step left (or none) the next sub-step is 1 (or none)
     // whatever the estimate says, none being below 1: no estimate. That
     // is every big step of 1 and the last sub-step of many others.
-    b.ifThen(b.cmp(arith::CmpIPredicate::sgt, b.sub(b.add(begin, size), now),
-                   b.i64(1)),
-             [&] {
-               estimateInto(kernel, component, minimum, now,
-                            sub + kSubEstimate);
-             });
+    Value due = b.cmp(arith::CmpIPredicate::sgt,
+                      b.sub(b.add(begin, size), now), b.i64(1));
+    // An invariant_estimate component's num_steps is the same at every
+    // time: the minimum of the big step's first round (no sub-step done
+    // or pending) holds for the others, which substep_advance_C keeps.
+    // Where the stiff items hold the sub-step at 1, every round would
+    // otherwise estimate the range again (as much as a second
+    // evaluation per base step).
+    if (component.getInvariantEstimate())
+      due = arith::AndIOp::create(
+          b, b.loc, due,
+          b.cmp(arith::CmpIPredicate::eq, subStepsDone(kernel), b.i64(0)));
+    b.ifThen(due, [&] {
+      estimateInto(kernel, component, minimum, now, sub + kSubEstimate);
+    });
     if (failed(endKernel(kernel, simplan::LaunchShape::items, roundLaunches)))
       return failure();
   }
@@ -141,7 +150,10 @@ LogicalResult SimulationLowering::emitRounds(ComponentOp component,
     b.store(now, clock, b.index(sub + kSubBegin));
     b.store(next, clock, b.index(sub + kSubSize));
     b.store(done, clock, b.index(sub + kSubCount));
-    b.store(b.i64(kNoEstimate64), clock, b.index(sub + kSubEstimate));
+    // The next round estimates again, unless the estimate holds for the
+    // whole big step (invariant_estimate: advance clears it for the next).
+    if (!component.getInvariantEstimate())
+      b.store(b.i64(kNoEstimate64), clock, b.index(sub + kSubEstimate));
     // The estimate is each rank's minimum: the ranks agree on the global
     // one first.
     if (distributed)

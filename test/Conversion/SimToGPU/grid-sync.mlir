@@ -6,6 +6,16 @@
 // RUN: sim-opt %s --sim-front-end=strategy=hip --sim-lower-to-gpu | FileCheck %s
 // RUN: sim-opt %s --sim-front-end=strategy=hip --sim-lower-to-gpu -o /dev/null 2>&1 | FileCheck %s --check-prefix=REMARK
 // RUN: sim-opt %s --sim-front-end=strategy=simple --sim-lower-to-gpu | FileCheck %s --check-prefix=SIMPLE
+// With a num_steps that reads %t every round estimates, and
+// substep_advance clears the estimate for the next:
+// RUN: sed 's/%c2 = arith.constant 2 : i32/%c2 = arith.trunci %%t : i64 to i32/' %s \
+// RUN:   | sim-opt --sim-front-end=strategy=hip --sim-lower-to-gpu | FileCheck %s --check-prefix=TIMED
+// TIMED-LABEL: gpu.func @substep_estimate_Diffuse(
+// TIMED:         %[[MORE:.*]] = arith.cmpi sgt, %{{.*}}, %c1_i64
+// TIMED-NEXT:    scf.if %[[MORE]]
+// TIMED-LABEL: gpu.func @substep_advance_Diffuse(
+// TIMED:         memref.store %{{.*}}, %{{.*}}[%c12]
+// TIMED-NEXT:    memref.store %{{.*}}, %{{.*}}[%c13]
 
 sim.simulation @diffuse range(100) dt(1.0e-2 : f32) max_steps(3) {
   sim.buffer @U : f32 init {
@@ -62,7 +72,14 @@ sim.simulation @diffuse range(100) dt(1.0e-2 : f32) max_steps(3) {
 // CHECK:         %[[END:.*]] = arith.addi %[[T]], %[[M]]
 // CHECK:         %[[LEFT:.*]] = arith.subi %[[END]], %[[NOW]]
 // CHECK:         %[[MORE:.*]] = arith.cmpi sgt, %[[LEFT]], %c1_i64
-// CHECK:         scf.if %[[MORE]]
+//                @Diffuse's num_steps is a constant (invariant_estimate): only
+//                the big step's first round (no sub-step done or pending)
+//                estimates, and substep_advance keeps its minimum for the
+//                others (advance clears it for the next big step).
+// CHECK:         %[[DONE:.*]] = arith.addi
+// CHECK:         %[[FIRST:.*]] = arith.cmpi eq, %[[DONE]], %c0_i64
+// CHECK:         %[[DUE:.*]] = arith.andi %[[MORE]], %[[FIRST]]
+// CHECK:         scf.if %[[DUE]]
 // CHECK:         gpu.subgroup_reduce minsi
 // CHECK:         memref.atomic_rmw mins %{{.*}}, %{{.*}}[%c13] : (i64, memref<?xi64>) -> i64
 // CHECK-LABEL: gpu.func @substep_advance_Diffuse(
@@ -70,6 +87,8 @@ sim.simulation @diffuse range(100) dt(1.0e-2 : f32) max_steps(3) {
 // CHECK:         memref.store %{{.*}}, %{{.*}}[%c10]
 // CHECK:         memref.store %{{.*}}, %{{.*}}[%c11]
 // CHECK:         memref.store %{{.*}}, %{{.*}}[%c12]
+// CHECK-NOT:     memref.store %{{.*}}, %{{.*}}[%c13]
+// CHECK:         gpu.return
 // CHECK-LABEL: gpu.func @substep_Diffuse(
 // CHECK-SAME:      %{{.*}}: memref<?xi64>, %[[U:.*]]: memref<?xf32>, %{{.*}}: i64) kernel
 //                Reads the half the sub-step count selects, writes the other.

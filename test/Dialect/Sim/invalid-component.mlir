@@ -705,3 +705,85 @@ sim.simulation @s range(16) dt(1.0 : f32) max_steps(2) attributes {strategy = #s
     sim.yield %x : f32
   }
 }
+
+// -----
+
+sim.simulation @s range(16) dt(1.0 : f32) max_steps(2) attributes {strategy = #sim<strategy hip>} {
+  sim.buffer @B : f32 init {
+  ^bb0(%i: index):
+    %c = arith.constant 0.0 : f32
+    sim.yield %c : f32
+  }
+  // expected-error @+1 {{'sim.component' op has invariant_estimate but does not advance in grid_substeps with a num_steps}}
+  sim.component @C writes(@B) attributes {advance = #sim<advance group_substeps>, invariant_estimate} num_steps {
+  ^bb0(%i: index, %t: i64):
+    %c2 = arith.constant 2 : i32
+    sim.yield %c2 : i32
+  } evaluate {
+  ^bb0(%i: index, %t: i64, %n: i32, %dt: f32):
+    %x = sim.read @B[%i] : f32
+    sim.yield %x : f32
+  }
+}
+
+// -----
+
+sim.simulation @s range(16) dt(1.0 : f32) max_steps(2) attributes {strategy = #sim<strategy hip>} {
+  sim.buffer @B : f32 init {
+  ^bb0(%i: index):
+    %c = arith.constant 0.0 : f32
+    sim.yield %c : f32
+  }
+  // expected-error @+1 {{'sim.component' op has invariant_estimate, but its num_steps reads its local time}}
+  sim.component @C writes(@B) attributes {advance = #sim<advance grid_substeps>, invariant_estimate} num_steps {
+  ^bb0(%i: index, %t: i64):
+    %n = arith.trunci %t : i64 to i32
+    sim.yield %n : i32
+  } evaluate {
+  ^bb0(%i: index, %t: i64, %n: i32, %dt: f32):
+    %x = sim.read @B[%i] : f32
+    sim.yield %x : f32
+  }
+}
+
+// -----
+
+sim.simulation @s range(16) dt(1.0 : f32) max_steps(2) attributes {strategy = #sim<strategy hip>} {
+  sim.buffer @B : f32 init {
+  ^bb0(%i: index):
+    %c = arith.constant 0.0 : f32
+    sim.yield %c : f32
+  }
+  // expected-error @+1 {{'sim.component' op has invariant_estimate, but its num_steps reads @B}}
+  sim.component @C writes(@B) attributes {advance = #sim<advance grid_substeps>, invariant_estimate} num_steps {
+  ^bb0(%i: index, %t: i64):
+    %x = sim.read @B[%i] : f32
+    %n = arith.fptosi %x : f32 to i32
+    sim.yield %n : i32
+  } evaluate {
+  ^bb0(%i: index, %t: i64, %n: i32, %dt: f32):
+    %x = sim.read @B[%i] : f32
+    sim.yield %x : f32
+  }
+}
+
+// -----
+
+sim.simulation @s range(16) dt(1.0 : f32) max_steps(2) attributes {strategy = #sim<strategy hip>} {
+  sim.buffer @B : f32 init {
+  ^bb0(%i: index):
+    %c = arith.constant 0.0 : f32
+    sim.yield %c : f32
+  }
+  // expected-error @+1 {{'sim.component' op has invariant_estimate, but its num_steps reads @B}}
+  sim.component @C writes(@B) attributes {advance = #sim<advance grid_substeps>, invariant_estimate} num_steps {
+  ^bb0(%i: index, %t: i64):
+    %x = sim.load source @B[%i] : f32
+    %n = arith.fptosi %x : f32 to i32
+    sim.yield %n : i32
+  } evaluate {
+  ^bb0(%i: index, %t: i64, %n: i32, %dt: f32):
+    %x = sim.read @B[%i] : f32
+    sim.yield %x : f32
+  }
+}

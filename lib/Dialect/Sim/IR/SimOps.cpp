@@ -1076,6 +1076,29 @@ LogicalResult ComponentOp::verify() {
       return emitOpError() << "has invariant_levels, but its num_steps reads "
                            << read.getBufferAttr();
   }
+  if (getInvariantEstimate()) {
+    if (getAdvance() != Advance::grid_substeps || !hasNumSteps())
+      return emitOpError() << "has invariant_estimate but does not advance in "
+                              "grid_substeps with a num_steps";
+    // The sub-step kernels keep the first round's minimum on this word:
+    // a num_steps that reads the time or a buffer (as sim.read, or as the
+    // sim.load the interpolation pass made of it) would give another.
+    if (!getNumStepsTime().use_empty())
+      return emitOpError() << "has invariant_estimate, but its num_steps "
+                              "reads its local time";
+    FlatSymbolRefAttr buffer;
+    getNumSteps().walk([&](Operation *op) {
+      if (auto read = dyn_cast<ReadOp>(op))
+        buffer = read.getBufferAttr();
+      else if (auto load = dyn_cast<LoadOp>(op))
+        buffer = load.getBufferAttr();
+      return buffer ? WalkResult::interrupt() : WalkResult::advance();
+    });
+    if (buffer)
+      return emitOpError() << "has invariant_estimate, but its num_steps "
+                              "reads "
+                           << buffer;
+  }
   if (DenseI64ArrayAttr window = getFluxWindowAttr()) {
     if (window.size() != 2 || window[0] > window[1])
       return emitOpError() << "has a flux_window that is not [lo, hi] with "

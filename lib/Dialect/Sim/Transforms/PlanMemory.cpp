@@ -78,10 +78,15 @@ struct PlanMemoryPass : public sim::impl::SimPlanMemoryBase<PlanMemoryPass> {
       component.setAdvanceAttr(AdvanceAttr::get(context, stepping->advance));
       component.setEstimates(stepping->estimates);
     }
-    for (ComponentOp component : analysis.getComponents())
+    for (ComponentOp component : analysis.getComponents()) {
       component.setInvariantLevels(component.getAdvance() ==
                                        Advance::local_steps &&
                                    hasInvariantLevels(analysis, component));
+      component.setInvariantEstimate(
+          component.getAdvance() == Advance::grid_substeps &&
+          component.hasNumSteps() &&
+          hasInvariantNumSteps(analysis, component));
+    }
     // An lts request that no component can use plans what hip plans: say
     // so (the sub-stepping remarks say why for each grid_sync component).
     if (strategy == Strategy::lts &&
@@ -166,6 +171,21 @@ struct PlanMemoryPass : public sim::impl::SimPlanMemoryBase<PlanMemoryPass> {
     markAnalysesPreserved<DependencyAnalysis>();
   }
 
+  /// True when `component`'s num_steps (if any) depends on the item and
+  /// the parameters only: it reads neither its local time nor a buffer
+  /// (every buffer has a writer, so any buffer may change).
+  static bool hasInvariantNumSteps(const DependencyAnalysis &analysis,
+                                   ComponentOp component) {
+    if (!component.hasNumSteps())
+      return true;
+    if (!component.getNumStepsTime().use_empty())
+      return false;
+    return llvm::none_of(analysis.getAccesses(component),
+                         [&](const BufferAccess &access) {
+                           return access.body == BodyKind::NumSteps;
+                         });
+  }
+
   /// True when the levels of `reader`'s blocks cannot change from one big
   /// step to the next: its num_steps, and that of every flux writer whose
   /// fluxes it reads (their estimates bound its blocks too), depends on
@@ -174,14 +194,7 @@ struct PlanMemoryPass : public sim::impl::SimPlanMemoryBase<PlanMemoryPass> {
   static bool hasInvariantLevels(const DependencyAnalysis &analysis,
                                  ComponentOp reader) {
     auto invariant = [&](ComponentOp component) {
-      if (!component.hasNumSteps())
-        return true;
-      if (!component.getNumStepsTime().use_empty())
-        return false;
-      return llvm::none_of(analysis.getAccesses(component),
-                           [&](const BufferAccess &access) {
-                             return access.body == BodyKind::NumSteps;
-                           });
+      return hasInvariantNumSteps(analysis, component);
     };
     if (!invariant(reader))
       return false;

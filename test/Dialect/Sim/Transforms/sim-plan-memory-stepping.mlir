@@ -32,7 +32,7 @@
 // LTS: sim.component @Middle writes(@M) attributes {advance = #sim<advance group_substeps>, parity = #sim<parity none>
 // SIMPLE: sim.component @Tail writes(@T) attributes {advance = #sim<advance whole_step>, local_window = array<i64: 0, 1>, parity = #sim<parity none>
 // TRAD: sim.component @Tail writes(@T) attributes {advance = #sim<advance whole_step>, estimates, local_window = array<i64: 0, 1>, parity = #sim<parity none>
-// HIP: sim.component @Tail writes(@T) attributes {advance = #sim<advance grid_substeps>, local_window = array<i64: 0, 1>, parity = #sim<parity copy_if_even>
+// HIP: sim.component @Tail writes(@T) attributes {advance = #sim<advance grid_substeps>, invariant_estimate, local_window = array<i64: 0, 1>, parity = #sim<parity copy_if_even>
 // LTS: sim.component @Tail writes(@T) attributes {advance = #sim<advance local_steps>, invariant_levels, local_window = array<i64: 0, 1>, parity = #sim<parity copy_if_even>
 // CHECK: sim.component @Plain writes(@P) attributes {advance = #sim<advance whole_step>, parity = #sim<parity none>
 // CHECK: sim.schedule [@Lead, @Middle, @Tail, @Plain] bounded_by [@Lead]

@@ -399,7 +399,10 @@ def Sim_ComponentOp : Sim_Op<"component", [
     (its `num_steps` decides the size of the big step), `invariant_levels`
     (under `lts`, on a `local_steps` component whose `num_steps`, and its
     flux writer's, read neither `%t` nor a buffer: its blocks' levels are
-    computed once per run and kept), `parity` and, under
+    computed once per run and kept), `invariant_estimate` (on a
+    `grid_substeps` component whose `num_steps` reads neither `%t` nor a
+    buffer: the grid-wide minimum of its first round holds for every round
+    of the big step, so later rounds do not estimate), `parity` and, under
     `hip-cache`, `caches` (a `#sim.cache<@B, lo, hi>` for each buffer whose
     interpolated values in the window `i+lo..i+hi` the component caches in
     shared memory), all by `--sim-plan-memory` for its strategy.
@@ -427,6 +430,7 @@ def Sim_ComponentOp : Sim_Op<"component", [
                        OptionalAttr<Sim_AdvanceAttr>:$advance,
                        UnitAttr:$estimates,
                        UnitAttr:$invariant_levels,
+                       UnitAttr:$invariant_estimate,
                        OptionalAttr<Sim_ParityAttr>:$parity,
                        OptionalAttr<TypedArrayAttrBase<Sim_CacheAttr,
                            "array of #sim.cache">>:$caches);
