@@ -114,8 +114,8 @@ LogicalResult SimulationLowering::emitRounds(ComponentOp component,
     // With one base step left (or none) the next sub-step is 1 (or none)
     // whatever the estimate says, none being below 1: no estimate. That
     // is every big step of 1 and the last sub-step of many others.
-    Value due = b.cmp(arith::CmpIPredicate::sgt,
-                      b.sub(b.add(begin, size), now), b.i64(1));
+    Value due = b.cmp(arith::CmpIPredicate::sgt, b.sub(b.add(begin, size), now),
+                      b.i64(1));
     // An invariant_estimate component's num_steps is the same at every
     // time: the minimum of the big step's first round (no sub-step done
     // or pending) holds for the others, which substep_advance_C keeps.

@@ -84,8 +84,7 @@ struct PlanMemoryPass : public sim::impl::SimPlanMemoryBase<PlanMemoryPass> {
                                    hasInvariantLevels(analysis, component));
       component.setInvariantEstimate(
           component.getAdvance() == Advance::grid_substeps &&
-          component.hasNumSteps() &&
-          hasInvariantNumSteps(analysis, component));
+          component.hasNumSteps() && hasInvariantNumSteps(analysis, component));
     }
     // An lts request that no component can use plans what hip plans: say
     // so (the sub-stepping remarks say why for each grid_sync component).
