@@ -563,15 +563,18 @@ void SimulationLowering::estimateInto(Kernel &kernel, ComponentOp component,
   // would otherwise cost as much as a component's evaluation. The slot ends
   // at the same minimum either way.
   //
-  // The big step's estimate starts at the group where the last one found
-  // an item at 1 (clock slot EstimateHint): a stiff item that holds every
-  // big step at 1 is usually where it was, and the groups before it would
-  // otherwise be estimated in vain in every big step. Only the order of
-  // the groups depends on the hint, and no result depends on the order.
-  bool hinted = slot == kSlotEstimate;
-  Value hint = hinted ? b.atomic(arith::AtomicRMWKind::addi, b.i64(0),
-                                 kernel.clock, b.index(kSlotEstimateHint))
-                      : b.i64(0);
+  // An estimate starts at the group where the last one found an item at 1
+  // (clock slot EstimateHint, which the big step's estimate and the rounds
+  // of grid-wide sub-steps share): a stiff item that holds every big step
+  // or sub-step at 1 is usually where it was, and the groups before it
+  // would otherwise be estimated in vain in every big step or round (the
+  // rounds of a state-dependent num_steps cost as much as the sub-steps
+  // without it). Estimates that find their 1 in different places move the
+  // hint back and forth, which costs no more than starting at group 0.
+  // Only the order of the groups depends on the hint, and no result
+  // depends on the order.
+  Value hint = b.atomic(arith::AtomicRMWKind::addi, b.i64(0), kernel.clock,
+                        b.index(kSlotEstimateHint));
   auto group = [&](Value base) {
     Value current = b.atomic(arith::AtomicRMWKind::addi, b.i64(0), kernel.clock,
                              b.index(slot));
@@ -579,8 +582,6 @@ void SimulationLowering::estimateInto(Kernel &kernel, ComponentOp component,
       lanes(base);
       target.reduceIntoClock(b, kernel, minimum, arith::AtomicRMWKind::mins,
                              slot);
-      if (!hinted)
-        return;
       Value after = b.atomic(arith::AtomicRMWKind::addi, b.i64(0), kernel.clock,
                              b.index(slot));
       b.ifThen(b.cmp(arith::CmpIPredicate::eq, after, b.i64(1)), [&] {
@@ -590,10 +591,7 @@ void SimulationLowering::estimateInto(Kernel &kernel, ComponentOp component,
       });
     });
   };
-  if (hinted)
-    target.forEachGroupFrom(b, kernel, hint, group);
-  else
-    target.forEachGroup(b, kernel, group);
+  target.forEachGroupFrom(b, kernel, hint, group);
 }
 
 LogicalResult SimulationLowering::run() {
