@@ -49,6 +49,8 @@
 #include "llvm/Support/CRC.h"
 #include "llvm/Support/MathExtras.h"
 
+#include <map>
+
 using namespace mlir;
 using namespace mlir::sim;
 
@@ -894,15 +896,30 @@ public:
              << "names the kernels " << cpuPlan->getKernelsAttr()
              << ", which are not a module of CPU kernels";
     // One shared object per instruction-set level: the same kernels, the
-    // same bits (docs/Bundle.md), faster code where the CPU has more.
-    CPUKernelOptions cpuOptions;
-    cpuOptions.optLevel = options.target.optLevel;
-    cpuOptions.flushSubnormals = options.flushSubnormals;
-    FailureOr<SmallVector<std::string>> libraries =
-        compileCPUKernels(kernels, options.cpuIsas, cpuOptions);
-    if (failed(libraries))
-      return failure();
-    for (auto [isa, library] : llvm::zip_equal(options.cpuIsas, *libraries)) {
+    // same bits (docs/Bundle.md), faster code where the CPU has more. Two
+    // strategies can lower to the same kernels (lts where no component
+    // takes local time steps is hip): those are compiled once, which is
+    // most of a bundle's compile time.
+    std::string kernelsText;
+    {
+      llvm::raw_string_ostream os(kernelsText);
+      kernels->print(os);
+    }
+    auto compiled = compiledCPU.find(kernelsText);
+    if (compiled == compiledCPU.end()) {
+      CPUKernelOptions cpuOptions;
+      cpuOptions.optLevel = options.target.optLevel;
+      cpuOptions.flushSubnormals = options.flushSubnormals;
+      FailureOr<SmallVector<std::string>> libraries =
+          compileCPUKernels(kernels, options.cpuIsas, cpuOptions);
+      if (failed(libraries))
+        return failure();
+      compiled =
+          compiledCPU.try_emplace(std::move(kernelsText), std::move(*libraries))
+              .first;
+    }
+    for (auto [isa, library] :
+         llvm::zip_equal(options.cpuIsas, compiled->second)) {
       auto object = std::make_unique<fb::CpuCodeT>();
       object->isa = isa;
       object->object.assign(library.begin(), library.end());
@@ -1036,6 +1053,9 @@ private:
   const SceneIndex &scene;
   const BundleOptions &options;
   MLIRContext *context;
+  /// The shared objects (one per level of options.cpuIsas) of the CPU
+  /// kernel modules compiled so far, by the modules' text.
+  std::map<std::string, SmallVector<std::string>> compiledCPU;
 };
 
 } // namespace
