@@ -99,7 +99,9 @@ TranslationOptions::TranslationOptions()
                              "the CPU kernels for, comma-separated, each a "
                              "shared object; the runtime runs the highest "
                              "the CPU has (x86-64, x86-64-v2, x86-64-v3, "
-                             "x86-64-v4; default all but x86-64-v2)"),
+                             "x86-64-v4, or host: the one a run on this "
+                             "machine takes, which compiles fastest; "
+                             "default all but x86-64-v2)"),
               llvm::cl::CommaSeparated, llvm::cl::cat(category)),
       ftz("sim-ftz",
           llvm::cl::desc("Flush subnormal values to zero on every backend "

@@ -222,7 +222,11 @@ def compile(scene, strategies: Sequence[str] | str | None = None,
     group size the plans are made for, a multiple of 32 from 32 to 65536
     (default 256; anything else is refused before the tool runs). `output`:
     where the bundle goes (default: a temporary file that lives as long as
-    the Bundle). `args`: more sim-translate options (a list). `ftz`: flush
+    the Bundle, with CPU kernels for this machine's instruction-set level
+    only, `--sim-cpu-isas=host`, since it runs nowhere else; a bundle
+    written to `output` has every default level). `args`: more
+    sim-translate options (a list; `--sim-cpu-isas=...` there decides the
+    levels). `ftz`: flush
     subnormals to zero on every backend (`--sim-ftz`; much faster on a CPU
     once values decay below the normal range; default IEEE): True or False
     (a numpy bool too), anything else is a TypeError.
@@ -258,6 +262,9 @@ def compile(scene, strategies: Sequence[str] | str | None = None,
             command.append(f"--sim-group-size={int(group_size)}")
         if ftz:
             command.append("--sim-ftz")
+        if not output and not any(str(arg).startswith("--sim-cpu-isas")
+                                  for arg in args):
+            command.append("--sim-cpu-isas=host")
         command += list(args)
         start = time.perf_counter()
         done = subprocess.run(command, stdout=subprocess.PIPE,

@@ -9,7 +9,7 @@
 // RUN: not sim-opt %t.once --sim-plan-memory=strategy=simple 2>&1 | FileCheck %s --check-prefix=PLAN
 // sim-translate compiles a scene as written, and says so (its message
 // named only a pass sim-translate does not offer).
-// RUN: not sim-translate %t.once --sim-to-bundle -o %t.simb 2>&1 | FileCheck %s --check-prefix=PRUNE
+// RUN: not sim-translate %t.once --sim-to-bundle --sim-cpu-isas=host -o %t.simb 2>&1 | FileCheck %s --check-prefix=PRUNE
 // RUN: sim-opt %t.once --sim-insert-interpolation > %t.twice
 // RUN: diff %t.once %t.twice
 // RUN: FileCheck %s --input-file=%t.once

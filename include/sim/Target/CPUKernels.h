@@ -46,6 +46,13 @@ FailureOr<SmallVector<std::string>>
 compileCPUKernels(ModuleOp kernels, ArrayRef<std::string> isas,
                   const CPUKernelOptions &options = {});
 
+/// As above for several modules at once: every pair of a module and a level
+/// compiles side by side on the modules' context's threads. Returns the
+/// objects of each module in the order of `isas`.
+FailureOr<SmallVector<SmallVector<std::string>>>
+compileCPUKernels(ArrayRef<ModuleOp> modules, ArrayRef<std::string> isas,
+                  const CPUKernelOptions &options = {});
+
 /// Compiles the body functions of a reference module (what
 /// --sim-lower-to-reference makes of a simulation) into the bytes of a shared
 /// object that exports them with the C signatures of docs/Reference.md.
@@ -58,11 +65,18 @@ compileReferenceFunctions(ModuleOp reference,
 ArrayRef<StringRef> getCPUIsaLevels();
 
 /// The levels a bundle's CPU kernels are compiled for by default: the
-/// portable `x86-64` (libm's fmaf where the scene fuses) and `x86-64-v3`
-/// (FMA and AVX2, which nearly every x86-64 CPU in use has). Not the
-/// compiling CPU's own level: a bundle is the same wherever it is compiled,
-/// and each level costs a compilation (x86-64-v4 is --sim-cpu-isas' to ask).
+/// portable `x86-64` (scalar lanes, libm's fmaf where the scene fuses),
+/// `x86-64-v3` (AVX2 and FMA, 8 lanes at once) and `x86-64-v4` (AVX-512, 16
+/// lanes). Not the compiling CPU's own level: a bundle is the same wherever
+/// it is compiled (getHostCPUIsa() is --sim-cpu-isas=host's).
 SmallVector<std::string, 3> getDefaultCPUIsas();
+
+/// The highest level of getCPUIsaLevels() that this machine's CPU runs, as
+/// the runtime chooses it here: at most $SIM_CPU_ISA when that names a level
+/// (the runtime's cap; a name it does not know is the runtime's error, and
+/// leaves the CPU's own level here). `x86-64` on a CPU the checks do not
+/// know.
+std::string getHostCPUIsa();
 
 /// Registers the dialect translations the CPU compilation needs.
 void registerCPUKernelDialects(DialectRegistry &registry);

@@ -808,6 +808,8 @@ struct StrategyCode {
   /// made for want of libdevice, and where the first one is called.
   SmallVector<std::string> missingLibdevice;
   std::optional<Location> firstLibdeviceCall;
+  /// The CPU kernels until they are compiled (BundleWriter::compileCPU).
+  OwningOpRef<ModuleOp> cpuKernels;
 };
 
 class BundleWriter {
@@ -895,35 +897,56 @@ public:
       return cpuPlan->emitOpError()
              << "names the kernels " << cpuPlan->getKernelsAttr()
              << ", which are not a module of CPU kernels";
-    // One shared object per instruction-set level: the same kernels, the
-    // same bits (docs/Bundle.md), faster code where the CPU has more. Two
-    // strategies can lower to the same kernels (lts where no component
-    // takes local time steps is hip): those are compiled once, which is
-    // most of a bundle's compile time.
-    std::string kernelsText;
-    {
-      llvm::raw_string_ostream os(kernelsText);
-      kernels->print(os);
+    // The shared objects come later, for every strategy at once
+    // (compileCPU).
+    code.cpuKernels = cast<ModuleOp>(kernels->clone());
+    return success();
+  }
+
+  /// Compiles the CPU kernels of every strategy of `codes` into their plans:
+  /// one shared object per instruction-set level, the same kernels, the
+  /// same bits (docs/Bundle.md), faster code where the CPU has more. Every
+  /// pair of a strategy and a level compiles side by side, and strategies
+  /// whose kernels are the same module (lts where no component takes local
+  /// time steps makes hip's) share the objects of one compilation: the
+  /// compilations are most of a bundle's compile time.
+  LogicalResult compileCPU(MutableArrayRef<StrategyCode> codes) {
+    ScopedDiagnosticHandler note(context, [&](Diagnostic &diag) {
+      if (diag.getSeverity() == DiagnosticSeverity::Error)
+        diag.attachNote(simulation.getLoc())
+            << "while compiling the bundle's CPU kernels (--sim-cpu-isas "
+               "chooses the instruction-set levels)";
+      return failure(); // Not handled: the next handler reports it.
+    });
+    std::map<std::string, size_t> moduleOfText;
+    SmallVector<ModuleOp> modules;
+    SmallVector<size_t> moduleOfCode;
+    for (StrategyCode &code : codes) {
+      std::string text;
+      llvm::raw_string_ostream os(text);
+      code.cpuKernels->print(os);
+      auto [found, inserted] =
+          moduleOfText.try_emplace(std::move(text), modules.size());
+      if (inserted)
+        modules.push_back(*code.cpuKernels);
+      moduleOfCode.push_back(found->second);
     }
-    auto compiled = compiledCPU.find(kernelsText);
-    if (compiled == compiledCPU.end()) {
-      CPUKernelOptions cpuOptions;
-      cpuOptions.optLevel = options.target.optLevel;
-      cpuOptions.flushSubnormals = options.flushSubnormals;
-      FailureOr<SmallVector<std::string>> libraries =
-          compileCPUKernels(kernels, options.cpuIsas, cpuOptions);
-      if (failed(libraries))
-        return failure();
-      compiled =
-          compiledCPU.try_emplace(std::move(kernelsText), std::move(*libraries))
-              .first;
-    }
-    for (auto [isa, library] :
-         llvm::zip_equal(options.cpuIsas, compiled->second)) {
-      auto object = std::make_unique<fb::CpuCodeT>();
-      object->isa = isa;
-      object->object.assign(library.begin(), library.end());
-      code.plan->cpu.push_back(std::move(object));
+    CPUKernelOptions cpuOptions;
+    cpuOptions.optLevel = options.target.optLevel;
+    cpuOptions.flushSubnormals = options.flushSubnormals;
+    FailureOr<SmallVector<SmallVector<std::string>>> libraries =
+        compileCPUKernels(modules, options.cpuIsas, cpuOptions);
+    if (failed(libraries))
+      return failure();
+    for (auto [code, module] : llvm::zip_equal(codes, moduleOfCode)) {
+      for (auto [isa, library] :
+           llvm::zip_equal(options.cpuIsas, (*libraries)[module])) {
+        auto object = std::make_unique<fb::CpuCodeT>();
+        object->isa = isa;
+        object->object.assign(library.begin(), library.end());
+        code.plan->cpu.push_back(std::move(object));
+      }
+      code.cpuKernels = nullptr;
     }
     return success();
   }
@@ -1053,9 +1076,6 @@ private:
   const SceneIndex &scene;
   const BundleOptions &options;
   MLIRContext *context;
-  /// The shared objects (one per level of options.cpuIsas) of the CPU
-  /// kernel modules compiled so far, by the modules' text.
-  std::map<std::string, SmallVector<std::string>> compiledCPU;
 };
 
 } // namespace
@@ -1133,11 +1153,10 @@ LogicalResult mlir::sim::writeBundle(ModuleOp module,
 
   // Every strategy runs the front end, and both lowerings run after it: a
   // remark or warning about the scene would come up to eight times. Each is
-  // reported once.
+  // reported once, and so is an error that the CPU levels compiling side
+  // by side each meet (no linker).
   llvm::StringSet<> reported;
   ScopedDiagnosticHandler once(module.getContext(), [&](Diagnostic &diag) {
-    if (diag.getSeverity() == DiagnosticSeverity::Error)
-      return failure();
     std::string key;
     llvm::raw_string_ostream os(key);
     os << diag.getLocation() << ": " << diag;
@@ -1163,6 +1182,9 @@ LogicalResult mlir::sim::writeBundle(ModuleOp module,
         firstLibdeviceCall = code.firstLibdeviceCall;
     }
   }
+
+  if (failed(writer.compileCPU(codes)))
+    return failure();
 
   bundle.reference = std::make_unique<fb::ReferenceT>();
   if (failed(writer.compileReference(*bundle.reference)))

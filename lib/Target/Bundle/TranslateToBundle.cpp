@@ -56,8 +56,22 @@ void mlir::sim::registerToBundleTranslation() {
         options.flushSubnormals = flags.ftz;
         options.distributed = flags.distributed;
         options.cpuLevelsPerLane = flags.cpuLevelsPerLane;
-        if (!flags.cpuIsas.empty())
-          options.cpuIsas.assign(flags.cpuIsas.begin(), flags.cpuIsas.end());
+        if (!flags.cpuIsas.empty()) {
+          // `host`: the level a run on this machine would take (a bundle
+          // compiled to run here, as sim-run compiles a .mlir scene); a
+          // level it names twice that way is compiled once.
+          options.cpuIsas.clear();
+          for (const std::string &isa : flags.cpuIsas) {
+            if (isa != "host") {
+              options.cpuIsas.push_back(isa);
+              continue;
+            }
+            std::string host = getHostCPUIsa();
+            if (!llvm::is_contained(flags.cpuIsas, host) &&
+                !llvm::is_contained(options.cpuIsas, host))
+              options.cpuIsas.push_back(host);
+          }
+        }
         return writeBundle(*module, options, os);
       });
 }

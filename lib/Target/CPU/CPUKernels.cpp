@@ -18,6 +18,7 @@
 #include "mlir/Dialect/Func/IR/FuncOps.h"
 #include "mlir/Dialect/MemRef/Transforms/Passes.h"
 #include "mlir/ExecutionEngine/OptUtils.h"
+#include "mlir/IR/Diagnostics.h"
 #include "mlir/Pass/PassManager.h"
 #include "mlir/Target/LLVMIR/Dialect/Builtin/BuiltinToLLVMIRTranslation.h"
 #include "mlir/Target/LLVMIR/Dialect/LLVMIR/LLVMToLLVMIRTranslation.h"
@@ -36,8 +37,12 @@
 #include "llvm/Support/Program.h"
 #include "llvm/Support/Signals.h"
 #include "llvm/Support/TargetSelect.h"
+#include "llvm/Support/ThreadPool.h"
 #include "llvm/Target/TargetMachine.h"
 #include "llvm/TargetParser/Host.h"
+
+#include <atomic>
+#include <cstdlib>
 
 using namespace mlir;
 using namespace mlir::sim;
@@ -80,21 +85,22 @@ static FailureOr<std::string> compileForIsa(llvm::Module &module, Location loc,
                                             StringRef isa, unsigned optLevel,
                                             StringRef linkerPath);
 
-/// Lowers `module` (func.funcs of upstream dialects, consumed) to LLVM IR
-/// once, lets `finish` add to it, and compiles and links it into the bytes
-/// of a shared object per level of `isas`, whose external functions are
-/// those of the module.
-static FailureOr<SmallVector<std::string>>
-compileSharedObjects(OwningOpRef<ModuleOp> module, Location loc,
-                     ArrayRef<std::string> isas, unsigned optLevel,
-                     bool flushSubnormals, bool kernels, StringRef linker,
-                     function_ref<LogicalResult(llvm::Module &)> finish) {
+/// Lowers each of `modules` (func.funcs of upstream dialects; not changed)
+/// to LLVM IR per level of `isas`, lets `finish(module index, IR)` add to it,
+/// and compiles and links it into the bytes of a shared object whose
+/// external functions are those of the module. Returns the objects of each
+/// module in the order of `isas`.
+static FailureOr<SmallVector<SmallVector<std::string>>> compileSharedObjects(
+    ArrayRef<ModuleOp> modules, ArrayRef<std::string> isas, unsigned optLevel,
+    bool flushSubnormals, bool kernels, StringRef linker,
+    function_ref<LogicalResult(size_t, llvm::Module &)> finish) {
+  if (modules.empty())
+    return SmallVector<SmallVector<std::string>>();
   for (const std::string &isa : isas)
     if (!llvm::is_contained(getCPUIsaLevels(), isa))
-      return emitError(loc)
+      return emitError(modules.front()->getLoc())
              << "unknown CPU instruction-set level '" << isa
              << "' (known: " << llvm::join(getCPUIsaLevels(), ", ") << ")";
-  (*module)->removeAttr(SymbolTable::getSymbolAttrName());
   llvm::InitializeNativeTarget();
   llvm::InitializeNativeTargetAsmPrinter();
 
@@ -113,12 +119,10 @@ compileSharedObjects(OwningOpRef<ModuleOp> module, Location loc,
     return 1;
   };
 
-  SmallVector<std::string> objects;
-  for (const std::string &isa : isas) {
-    // To the LLVM dialect with upstream conversions, per level (the lanes
-    // differ), from a copy of the module.
-    OwningOpRef<ModuleOp> copy(cast<ModuleOp>((*module)->clone()));
-    PassManager pm(copy->getContext());
+  // To the LLVM dialect with upstream conversions, per level (the lanes
+  // differ).
+  MLIRContext *mlirContext = modules.front()->getContext();
+  auto pipelineFor = [&](PassManager &pm, StringRef isa) {
     // No conversion lowers math.ipowi: multiplications, as on the GPU.
     pm.addPass(createSimExpandIntegerPowers());
     // Nor contract, outerproduct, multi_reduction, transpose or step: 1-D
@@ -163,7 +167,37 @@ compileSharedObjects(OwningOpRef<ModuleOp> module, Location loc,
     pm.addPass(createReconcileUnrealizedCastsPass());
     if (flushSubnormals)
       pm.addPass(createSimFlushSubnormals());
-    if (failed(pm.run(*copy)))
+  };
+
+  // The pairs of a module and a level are independent (a copy of the
+  // module, an LLVM context, a target machine each), so they compile side
+  // by side on threads (--mlir-disable-threading: one after
+  // the other); their diagnostics come in the order of the pairs. The
+  // dialects the pipelines make ops of are loaded here first: loading one
+  // while another thread reads the context's dialects is a race.
+  // A pass manager per pair: passes keep state while they run.
+  size_t pairs = modules.size() * isas.size();
+  SmallVector<std::unique_ptr<PassManager>> pipelines;
+  DialectRegistry dependent;
+  for (size_t pair = 0; pair < pairs; ++pair) {
+    pipelines.push_back(std::make_unique<PassManager>(mlirContext));
+    pipelineFor(*pipelines.back(), isas[pair % isas.size()]);
+    pipelines.back()->getDependentDialects(dependent);
+  }
+  mlirContext->appendDialectRegistry(dependent);
+  for (StringRef name : dependent.getDialectNames())
+    mlirContext->getOrLoadDialect(name);
+
+  SmallVector<SmallVector<std::string>> objects(
+      modules.size(), SmallVector<std::string>(isas.size()));
+  auto compilePair = [&](size_t pair) -> LogicalResult {
+    size_t moduleIndex = pair / isas.size(), level = pair % isas.size();
+    StringRef isa = isas[level];
+    ModuleOp module = modules[moduleIndex];
+    Location loc = module.getLoc();
+    OwningOpRef<ModuleOp> copy(cast<ModuleOp>(module->clone()));
+    (*copy)->removeAttr(SymbolTable::getSymbolAttrName());
+    if (failed(pipelines[pair]->run(*copy)))
       return emitError(loc) << "could not lower the CPU kernels to LLVM";
 
     // To LLVM IR, with the entry points, and an object for the level.
@@ -172,7 +206,7 @@ compileSharedObjects(OwningOpRef<ModuleOp> module, Location loc,
         translateModuleToLLVMIR(*copy, context, "sim_cpu_kernels");
     if (!llvmModule)
       return emitError(loc) << "could not translate the CPU kernels to LLVM IR";
-    if (failed(finish(*llvmModule)))
+    if (failed(finish(moduleIndex, *llvmModule)))
       return failure();
     // A kernel with per-lane arrays allocates them dynamically, and LLVM
     // then keeps the caller's 16-byte stack alignment: the spill slots of
@@ -187,8 +221,38 @@ compileSharedObjects(OwningOpRef<ModuleOp> module, Location loc,
         compileForIsa(*llvmModule, loc, isa, optLevel, linker);
     if (failed(object))
       return failure();
-    objects.push_back(std::move(*object));
+    objects[moduleIndex][level] = std::move(*object);
+    return success();
+  };
+  if (!mlirContext->isMultithreadingEnabled() || pairs <= 1) {
+    for (size_t pair = 0; pair < pairs; ++pair)
+      if (failed(compilePair(pair)))
+        return failure();
+    return objects;
   }
+  // A pool of their own: on the context's, a thread that waits for the
+  // verifier's parallel work inside a pass takes the next pairs and holds
+  // up the one it was compiling (measured: every pair on one thread).
+  ParallelDiagnosticHandler diagnostics(mlirContext);
+  std::atomic<size_t> next(0);
+  std::atomic<bool> anyFailed(false);
+  llvm::StdThreadPool pool(llvm::hardware_concurrency());
+  size_t workers = std::min<size_t>(pairs, pool.getMaxConcurrency());
+  for (size_t worker = 0; worker < workers; ++worker)
+    pool.async([&] {
+      while (!anyFailed) {
+        size_t pair = next++;
+        if (pair >= pairs)
+          break;
+        diagnostics.setOrderIDForThread(pair);
+        if (failed(compilePair(pair)))
+          anyFailed = true;
+        diagnostics.eraseOrderIDForThread();
+      }
+    });
+  pool.wait();
+  if (anyFailed)
+    return failure();
   return objects;
 }
 
@@ -288,6 +352,34 @@ ArrayRef<StringRef> mlir::sim::getCPUIsaLevels() {
   return levels;
 }
 
+std::string mlir::sim::getHostCPUIsa() {
+  ArrayRef<StringRef> levels = getCPUIsaLevels();
+  size_t cap = levels.size();
+  if (const char *limit = std::getenv("SIM_CPU_ISA"); limit && *limit) {
+    const auto *found = llvm::find(levels, StringRef(limit));
+    if (found != levels.end())
+      cap = size_t(found - levels.begin()) + 1;
+  }
+#if defined(__x86_64__)
+  // The checks the runtime makes (runtime/src/Bundle.cpp): the CPU's
+  // features and the operating system's saving of the wider registers.
+  __builtin_cpu_init();
+  auto supports = [](StringRef level) -> bool {
+    if (level == "x86-64-v2")
+      return __builtin_cpu_supports("x86-64-v2");
+    if (level == "x86-64-v3")
+      return __builtin_cpu_supports("x86-64-v3");
+    if (level == "x86-64-v4")
+      return __builtin_cpu_supports("x86-64-v4");
+    return level == "x86-64";
+  };
+  for (size_t i = cap; i-- > 0;)
+    if (supports(levels[i]))
+      return levels[i].str();
+#endif
+  return levels.front().str();
+}
+
 SmallVector<std::string, 3> mlir::sim::getDefaultCPUIsas() {
   // Generic code for any x86-64 (a fallback), AVX2 with FMA, and AVX-512,
   // where 16 lanes run at once (2.5x AVX2 on the paper scenes).
@@ -307,22 +399,35 @@ mlir::sim::compileCPUKernels(ModuleOp kernels,
 FailureOr<SmallVector<std::string>>
 mlir::sim::compileCPUKernels(ModuleOp kernels, ArrayRef<std::string> isas,
                              const CPUKernelOptions &options) {
-  Location loc = kernels.getLoc();
-  SmallVector<std::string> names;
-  for (auto func : kernels.getOps<func::FuncOp>()) {
-    if (!func->hasAttr(simplan::PlanDialect::getGroupArgumentsAttrName()))
-      return emitError(func.getLoc())
-             << "is not a CPU kernel (run --sim-lower-to-cpu)";
-    names.push_back(func.getSymName().str());
+  FailureOr<SmallVector<SmallVector<std::string>>> objects =
+      compileCPUKernels(ArrayRef<ModuleOp>(kernels), isas, options);
+  if (failed(objects))
+    return failure();
+  return std::move(objects->front());
+}
+
+FailureOr<SmallVector<SmallVector<std::string>>>
+mlir::sim::compileCPUKernels(ArrayRef<ModuleOp> modules,
+                             ArrayRef<std::string> isas,
+                             const CPUKernelOptions &options) {
+  SmallVector<SmallVector<std::string>> names;
+  for (ModuleOp kernels : modules) {
+    names.emplace_back();
+    for (auto func : kernels.getOps<func::FuncOp>()) {
+      if (!func->hasAttr(simplan::PlanDialect::getGroupArgumentsAttrName()))
+        return emitError(func.getLoc())
+               << "is not a CPU kernel (run --sim-lower-to-cpu)";
+      names.back().push_back(func.getSymName().str());
+    }
   }
   return compileSharedObjects(
-      OwningOpRef<ModuleOp>(cast<ModuleOp>(kernels->clone())), loc, isas,
-      options.optLevel, options.flushSubnormals, /*kernels=*/true,
-      options.linker, [&](llvm::Module &llvmModule) -> LogicalResult {
-        for (const std::string &name : names) {
+      modules, isas, options.optLevel, options.flushSubnormals,
+      /*kernels=*/true, options.linker,
+      [&](size_t index, llvm::Module &llvmModule) -> LogicalResult {
+        for (const std::string &name : names[index]) {
           llvm::Function *kernel = llvmModule.getFunction(name);
           if (!kernel || kernel->arg_size() < 3)
-            return emitError(loc)
+            return emitError(modules[index]->getLoc())
                    << "lost CPU kernel '" << name << "' on the way to LLVM IR";
           addEntryPoint(llvmModule, *kernel);
         }
@@ -334,12 +439,12 @@ FailureOr<std::string>
 mlir::sim::compileReferenceFunctions(ModuleOp reference,
                                      const CPUKernelOptions &options) {
   // The functions already have the C signatures of docs/Reference.md.
-  FailureOr<SmallVector<std::string>> objects = compileSharedObjects(
-      OwningOpRef<ModuleOp>(cast<ModuleOp>(reference->clone())),
-      reference.getLoc(), {options.isa}, options.optLevel,
-      options.flushSubnormals, /*kernels=*/false, options.linker,
-      [](llvm::Module &) { return success(); });
+  FailureOr<SmallVector<SmallVector<std::string>>> objects =
+      compileSharedObjects(ArrayRef<ModuleOp>(reference), {options.isa},
+                           options.optLevel, options.flushSubnormals,
+                           /*kernels=*/false, options.linker,
+                           [](size_t, llvm::Module &) { return success(); });
   if (failed(objects))
     return failure();
-  return std::move(objects->front());
+  return std::move(objects->front().front());
 }

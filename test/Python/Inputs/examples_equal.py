@@ -31,8 +31,9 @@ parser.add_argument("--opt-level", type=int,
                     help="--sim-opt-level of both compilations (default: "
                          "the compiler's)")
 args = parser.parse_args()
-translate_args = ([] if args.opt_level is None else
-                  [f"--sim-opt-level={args.opt_level}"])
+# Both bundles run here only: CPU kernels for this machine's level.
+translate_args = ["--sim-cpu-isas=host"] + (
+    [] if args.opt_level is None else [f"--sim-opt-level={args.opt_level}"])
 values = dict(item.split("=", 1) for item in args.set)
 
 sys.path.insert(0, os.path.join(os.path.dirname(sim.__file__), "..",

@@ -4,7 +4,7 @@
 // type. An f64 value computed from f32 data differs between backends by f32
 // ulps (an f32 math.sin is libdevice's on CUDA, libm's in the reference).
 //
-// RUN: sim-translate %s --sim-to-bundle --sim-strategies=simple,hip -o %t.simb
+// RUN: sim-translate %s --sim-to-bundle --sim-cpu-isas=host --sim-strategies=simple,hip -o %t.simb
 // RUN: %python %S/Inputs/dump-bundle.py --flatc %flatc --schema %bundle_schema %t.simb \
 // RUN:   | FileCheck %s
 // RUN: sim-run %t.simb --backend cpu --strategy hip --steps 8 --check \

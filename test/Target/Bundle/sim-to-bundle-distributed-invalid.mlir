@@ -4,7 +4,7 @@
 // outside the rank's storage. (Strategy simple fails first; it explains no
 // sub-stepping verdict.)
 //
-// RUN: sim-translate --sim-to-bundle --sim-distributed %s --split-input-file --verify-diagnostics -o %t.simb
+// RUN: sim-translate --sim-to-bundle --sim-cpu-isas=host --sim-distributed %s --split-input-file --verify-diagnostics -o %t.simb
 
 // expected-note @+1 {{while compiling the bundle's strategy 'simple'}}
 sim.simulation @far range(64) dt(1.0e-2 : f32) max_steps(2) {

@@ -1,7 +1,7 @@
 // Errors of sim-translate --sim-to-bundle: what a bundle cannot hold, and a
 // strategy that does not compile (its errors name the strategy).
 //
-// RUN: sim-translate --sim-to-bundle %s --split-input-file --verify-diagnostics -o %t.simb
+// RUN: sim-translate --sim-to-bundle --sim-cpu-isas=host %s --split-input-file --verify-diagnostics -o %t.simb
 
 // expected-error @+1 {{there is no sim.simulation to write to a bundle}}
 module {
