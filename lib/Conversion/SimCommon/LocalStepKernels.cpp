@@ -1153,6 +1153,16 @@ LogicalResult SimulationLowering::emitLocalSteps(ComponentOp component,
                       /*clipped=*/false, finestInterface);
   };
 
+  // Block `g` in a big step of one base step: its sub-step is 1 whatever
+  // its items ask, and its codes are those of every level 1 (no limit to
+  // compute).
+  auto unitBlock = [&](Kernel &kernel, Value levels, Value parity, Value size,
+                       Value g) {
+    Value one = b.i64(1);
+    storeLevel(kernel, levels, parity, size, g, one);
+    codesOfBlock(kernel, levels, size, g, [&](Value) { return one; });
+  };
+
   // Where the run of equal codes of `codeSection` that holds each block
   // ends (the block after its last), from the last block back: what a
   // slot kernel walks where one thread runs a group's lanes (splitsGroups).
@@ -1227,9 +1237,8 @@ LogicalResult SimulationLowering::emitLocalSteps(ComponentOp component,
           auto blocksLoop = scf::ForOp::create(b, b.loc, zero, count, one);
           OpBuilder::InsertionGuard guard(b);
           b.setInsertionPoint(blocksLoop.getBody()->getTerminator());
-          Value g = blockAt(blocksLoop.getInductionVar());
-          storeLevel(kernel, levels, parity, size, g, one);
-          codesOfBlock(kernel, levels, size, g, [&](Value) { return one; });
+          unitBlock(kernel, levels, parity, size,
+                    blockAt(blocksLoop.getInductionVar()));
           return {};
         },
         [&]() -> SmallVector<Value> { return {}; });
@@ -1373,9 +1382,7 @@ LogicalResult SimulationLowering::emitLocalSteps(ComponentOp component,
           b.ifThenElse(
               TypeRange{}, unit,
               [&]() -> SmallVector<Value> {
-                storeLevel(kernel, levels, parity, size, g, one);
-                codesOfBlock(kernel, levels, size, g,
-                             [&](Value) { return one; });
+                unitBlock(kernel, levels, parity, size, g);
                 return {};
               },
               [&]() -> SmallVector<Value> {
