@@ -1644,9 +1644,12 @@ TEST_F(SimRun, TranslatesOnlyTheStrategiesItRuns) {
   EXPECT_TRUE(contains(given, " --sim-strategies=simple,hip\n")) << given;
   given = translatedFor("--strategy simple --reference simple");
   EXPECT_TRUE(contains(given, " --sim-strategies=simple\n")) << given;
-  // Without --strategy the bundle decides: every strategy is compiled.
+  // Without --strategy hip runs (as it would from a bundle of every
+  // strategy), and only hip is compiled.
   given = translatedFor("");
-  EXPECT_FALSE(contains(given, "--sim-strategies")) << given;
+  EXPECT_TRUE(contains(given, " --sim-strategies=hip\n")) << given;
+  given = translatedFor("--reference simple");
+  EXPECT_TRUE(contains(given, " --sim-strategies=simple,hip\n")) << given;
 }
 
 TEST(Dependencies, NoMlirLlvmOrCuda) {

@@ -205,9 +205,8 @@ void translate(const std::string &scene, TemporaryFile &bundle,
   for (std::string &arg : args)
     argv.push_back(arg.data());
   argv.push_back(nullptr);
-  // Compiling every strategy's kernels for three CPU levels takes tens of
-  // seconds for a large scene: say what the wait is for, where progress is
-  // shown.
+  // Compiling a large scene takes seconds: say what the wait is for, where
+  // progress is shown.
   if (announce)
     std::fprintf(stderr, "sim-run: compiling '%s' (sim-translate, %s)...\n",
                  scene.c_str(),
@@ -1357,13 +1356,11 @@ void agreeOnRunOptions(const Options &options) {
                  " ranks): give every rank the same options");
 }
 
-/// The strategies a .mlir scene is translated for: the one --strategy
-/// names, and simple for --reference simple; every strategy when the bundle
-/// decides (no --strategy). Compiling one strategy instead of five is faster
-/// and leaves out the other strategies' remarks.
+/// The strategies a .mlir scene is translated for: the one that runs
+/// (--strategy, default hip, which a bundle of every strategy runs too),
+/// and simple for --reference simple. Compiling one strategy instead of
+/// five is faster and leaves out the other strategies' remarks.
 std::vector<sim_strategy> translatedStrategies(const Options &options) {
-  if (!options.strategyGiven)
-    return {};
   std::vector<sim_strategy> strategies;
   if (options.reference == "simple" && options.strategy != SIM_STRATEGY_SIMPLE)
     strategies.push_back(SIM_STRATEGY_SIMPLE);

@@ -172,9 +172,9 @@ constexpr const char *kOverview =
 constexpr const char *kIntro =
     R"(A .mlir scene is first translated with `sim-translate --sim-to-bundle`
 (looked up next to sim-run, then on PATH) into a temporary bundle, for
-the --strategy given (and simple for --reference simple), else for all,
-with CPU kernels for this machine's instruction-set level only
-(--sim-cpu-isas=host).
+the strategy that runs (--strategy, default hip) and simple for
+--reference simple, with CPU kernels for this machine's instruction-set
+level only (--sim-cpu-isas=host).
 )";
 
 constexpr const char *kFooter =
