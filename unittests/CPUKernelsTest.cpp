@@ -223,9 +223,10 @@ protected:
     }
   }
 
-  /// Lowers `scene` for `strategy` and loads its CPU kernels.
-  std::unique_ptr<CPURun> lower(StringRef scene, Strategy strategy,
-                                int64_t groupSize = 4) {
+  /// Lowers `scene` for `strategy` into its module of CPU kernels (null when
+  /// that fails).
+  ModuleOp lowerToKernels(StringRef scene, Strategy strategy,
+                          int64_t groupSize = 4) {
     OwningOpRef<ModuleOp> &module =
         modules.emplace_back(parseSourceString<ModuleOp>(scene, &context));
     if (!module)
@@ -239,7 +240,16 @@ protected:
     pm.addPass(createSimLowerToCPU(cpuOptions));
     if (failed(pm.run(*module)))
       return nullptr;
-    ModuleOp kernels = *module->getOps<ModuleOp>().begin();
+    return *module->getOps<ModuleOp>().begin();
+  }
+
+  /// Lowers `scene` for `strategy` and loads its CPU kernels.
+  std::unique_ptr<CPURun> lower(StringRef scene, Strategy strategy,
+                                int64_t groupSize = 4) {
+    ModuleOp kernels = lowerToKernels(scene, strategy, groupSize);
+    if (!kernels)
+      return nullptr;
+    OwningOpRef<ModuleOp> &module = modules.back();
     FailureOr<std::string> library = compileCPUKernels(kernels);
     if (failed(library))
       return nullptr;
@@ -483,6 +493,49 @@ TEST_F(CPUKernelsTest, HipInterpolatesWhenBigStepsAreLong) {
     EXPECT_NEAR(hip->value("S", item), simple->value("S", item),
                 1e-5 * std::abs(simple->value("S", item)))
         << item;
+}
+
+TEST_F(CPUKernelsTest, ModulesAndLevelsCompileSideBySideToTheSameBytes) {
+  // Every pair of a module and a level compiles on a thread of its own; the
+  // objects are those of one after the other, in the order asked for.
+  SmallVector<ModuleOp> kernels = {lowerToKernels(kChain, Strategy::simple),
+                                   lowerToKernels(kChain, Strategy::hip)};
+  ASSERT_TRUE(kernels[0] && kernels[1]);
+  SmallVector<std::string> isas = {"x86-64", "x86-64-v3"};
+  FailureOr<SmallVector<SmallVector<std::string>>> together =
+      compileCPUKernels(kernels, isas);
+  ASSERT_TRUE(succeeded(together));
+  context.disableMultithreading();
+  for (auto [index, module] : llvm::enumerate(kernels)) {
+    FailureOr<SmallVector<std::string>> alone = compileCPUKernels(module, isas);
+    ASSERT_TRUE(succeeded(alone));
+    ASSERT_EQ(alone->size(), 2u);
+    for (size_t level = 0; level < 2; ++level)
+      EXPECT_TRUE((*together)[index][level] == (*alone)[level])
+          << "module " << index << " level " << isas[level];
+  }
+  context.enableMultithreading();
+  EXPECT_FALSE((*together)[0][0] == (*together)[1][0]);
+}
+
+TEST_F(CPUKernelsTest, AFailedLinkOnThreadsIsAnErrorNotACrash) {
+  SmallVector<ModuleOp> kernels = {lowerToKernels(kChain, Strategy::simple),
+                                   lowerToKernels(kChain, Strategy::hip)};
+  ASSERT_TRUE(kernels[0] && kernels[1]);
+  std::vector<std::string> errors;
+  ScopedDiagnosticHandler collect(&context, [&](Diagnostic &diag) {
+    if (diag.getSeverity() == DiagnosticSeverity::Error)
+      errors.push_back(diag.str());
+    return success();
+  });
+  CPUKernelOptions options;
+  options.linker = "/nonexistent/ld.lld";
+  EXPECT_TRUE(failed(compileCPUKernels(
+      kernels, {"x86-64", "x86-64-v3", "x86-64-v4"}, options)));
+  ASSERT_FALSE(errors.empty());
+  for (const std::string &error : errors)
+    EXPECT_NE(error.find("linking the CPU kernels failed"), std::string::npos)
+        << error;
 }
 
 TEST_F(CPUKernelsTest, SymbolsThatAreNotIdentifiersRunLikeOrdinaryOnes) {
