@@ -7,7 +7,7 @@ and ranges. Both commands take the scenes of the suites named with --suite
 (default: every suite) that run on --backend (default: cpu).
 
   compile  translates every scene into BUNDLES/NAME.simb with sim-translate
-           --sim-to-bundle --sim-group-size=G (through sim-opt
+           --sim-to-bundle --sim-group-size=G [--sim-cpu-isas=LEVELS] (through sim-opt
            --sim-set-params first when the scene has `params`).
   run      for every scene, strategy (python/simlists.py), range and
            variant, runs
@@ -64,6 +64,10 @@ def parse_args():
     compile_ = commands.add_parser("compile", parents=[common])
     compile_.add_argument("--sim-translate", default="sim-translate")
     compile_.add_argument("--sim-opt", default="sim-opt")
+    compile_.add_argument("--cpu-isas", metavar="LEVELS",
+                          help="--sim-cpu-isas of the bundles (default: "
+                               "sim-translate's; host where they run on "
+                               "the machine that compiles them)")
     run = commands.add_parser("run", parents=[common])
     run.add_argument("--sim-run", default="sim-run")
     run.add_argument("--out", required=True, metavar="DIR")
@@ -125,6 +129,8 @@ def compile_scene(args, matrix, scene):
     translate = [args.sim_translate, "--sim-to-bundle",
                  "--sim-group-size=%d" % matrix["group_size"], "-o",
                  bundle_path(args, scene)]
+    if args.cpu_isas:
+        translate.append("--sim-cpu-isas=" + args.cpu_isas)
     if "params" not in scene:
         return run_command(translate + [source])
     opt = subprocess.run([args.sim_opt, source, "--sim-set-params=values=" +
