@@ -13,6 +13,7 @@
 #include "Error.h"
 
 #include "sim/Runtime/BundleFormat.h"
+#include "sim/Runtime/CpuLevels.h"
 
 #include <algorithm>
 #include <cerrno>
@@ -159,16 +160,7 @@ namespace {
 /// registers) runs code of `level`.
 bool cpuSupports(const std::string &level) {
 #if defined(__x86_64__)
-  __builtin_cpu_init();
-  if (level == "x86-64")
-    return true;
-  if (level == "x86-64-v2")
-    return __builtin_cpu_supports("x86-64-v2");
-  if (level == "x86-64-v3")
-    return __builtin_cpu_supports("x86-64-v3");
-  if (level == "x86-64-v4")
-    return __builtin_cpu_supports("x86-64-v4");
-  return false;
+  return bundle::cpuRunsLevel(level);
 #else
   return level == hostIsa();
 #endif

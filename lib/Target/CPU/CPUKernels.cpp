@@ -13,6 +13,7 @@
 #include "sim/Target/CPUKernels.h"
 #include "sim/Conversion/Passes.h"
 #include "sim/Dialect/Plan/IR/PlanOps.h"
+#include "sim/Runtime/CpuLevels.h"
 
 #include "mlir/Conversion/Passes.h"
 #include "mlir/Dialect/Func/IR/FuncOps.h"
@@ -360,23 +361,10 @@ std::string mlir::sim::getHostCPUIsa() {
     if (found != levels.end())
       cap = size_t(found - levels.begin()) + 1;
   }
-#if defined(__x86_64__)
-  // The checks the runtime makes (runtime/src/Bundle.cpp): the CPU's
-  // features and the operating system's saving of the wider registers.
-  __builtin_cpu_init();
-  auto supports = [](StringRef level) -> bool {
-    if (level == "x86-64-v2")
-      return __builtin_cpu_supports("x86-64-v2");
-    if (level == "x86-64-v3")
-      return __builtin_cpu_supports("x86-64-v3");
-    if (level == "x86-64-v4")
-      return __builtin_cpu_supports("x86-64-v4");
-    return level == "x86-64";
-  };
+  // The check the runtime makes when it picks a bundle's level.
   for (size_t i = cap; i-- > 0;)
-    if (supports(levels[i]))
+    if (::sim::bundle::cpuRunsLevel(levels[i].str()))
       return levels[i].str();
-#endif
   return levels.front().str();
 }
 
