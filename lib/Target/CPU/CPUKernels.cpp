@@ -171,12 +171,12 @@ static FailureOr<SmallVector<SmallVector<std::string>>> compileSharedObjects(
   };
 
   // The pairs of a module and a level are independent (a copy of the
-  // module, an LLVM context, a target machine each), so they compile side
-  // by side on threads (--mlir-disable-threading: one after
-  // the other); their diagnostics come in the order of the pairs. The
-  // dialects the pipelines make ops of are loaded here first: loading one
-  // while another thread reads the context's dialects is a race.
-  // A pass manager per pair: passes keep state while they run.
+  // module, a pass manager, an LLVM context, a target machine each: passes
+  // keep state while they run), so they compile side by side on threads
+  // (--mlir-disable-threading: one after the other); their diagnostics come
+  // in the order of the pairs. The dialects the pipelines make ops of are
+  // loaded here first: loading one while another thread reads the
+  // context's dialects is a race.
   size_t pairs = modules.size() * isas.size();
   SmallVector<std::unique_ptr<PassManager>> pipelines;
   DialectRegistry dependent;
