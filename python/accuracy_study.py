@@ -12,7 +12,8 @@ the error against the scene's reference:
 
   * scenes with `exact` bodies (harmonic, kpr, kepler): sim-run's error
     against the exact solution at the final time;
-  * springs, nbody, heat_rod, heat_rod_flux, wave_rod and particle_chain:
+  * springs, nbody, heat_rod, heat_rod_flux, wave_rod, wave_staggered and
+    particle_chain:
     the dumped state against `simple` run at
     dt / 8 for 8 times the steps (the same end time), computed here;
   * pbd: against `simple` at the same dt (position-based dynamics has no
@@ -38,9 +39,9 @@ scene under hip for every interpolation of @X, the base step halved several
 times at a fixed end time with @c scaled with dt (so every big step and
 sub-step keeps its number of base steps); prints the error of @Y (the
 resonator, which reads the interpolated driver) per dt and the least-squares
-slope of log(error) against log(dt). With heat_rod (or wave_rod) among the
-scenes, or --convergence-only, the same for lts on both heat rods (or the
-wave rod): the error of @U against simple at dt / FINE, dt and @cfl halved
+slope of log(error) against log(dt). With heat_rod (wave_rod,
+wave_staggered) among the scenes, or --convergence-only, the same for lts on
+both heat rods (the wave rod, the staggered wave): the error of @U against simple at dt / FINE, dt and @cfl halved
 together, its slope and its largest ratio to simple's error.
 
 Writes OUT/results.json, OUT/results.md and OUT/accuracy.png (matplotlib,
@@ -103,6 +104,9 @@ SCENES = {
                           quick_range=256, interps=[None], sets=[{}]),
     "wave_rod": dict(ref="fine", steps=10000, quick_steps=400,
                      quick_range=256, interps=[None], sets=[{}]),
+    # The same wave in staggered (Yee) form: two components, an item pair.
+    "wave_staggered": dict(ref="fine", steps=10000, quick_steps=400,
+                           quick_range=256, interps=[None], sets=[{}]),
     # Particles that read their neighbours (FPU-beta ring, light segment).
     "particle_chain": dict(ref="fine", steps=4000, quick_steps=200,
                            quick_range=256, interps=[None], sets=[{}]),
@@ -420,12 +424,14 @@ LTS_CONVERGENCE = {
     # The default 1024 cells: the stiff middle takes 1 base step, the rest 8.
     "wave_rod": dict(full=(6.0e-5, 1000, {}, 0.5),
                      quick=(6.0e-5, 100, {}, 0.5)),
+    "wave_staggered": dict(full=(6.0e-5, 1000, {}, 0.5),
+                           quick=(6.0e-5, 100, {}, 0.5)),
 }
 
 
 def lts_convergence(args, scenes):
     """The order of lts on `scenes` (forward Euler on the heat rods and
-    symplectic Euler on the wave rod: 1, Model.md "Accuracy and stability
+    symplectic Euler on the wave rods: 1, Model.md "Accuracy and stability
     we expect"), and its error against simple's at each dt. dt and the CFL
     fraction halve together, so every block keeps its sub-step in base
     steps (1 in the stiff region, max_steps elsewhere) and every physical
@@ -480,12 +486,15 @@ def lts_convergence(args, scenes):
 
 def lts_convergence_scenes(args):
     """The scenes of the lts convergence study: the heat rods with heat_rod,
-    the wave rod with wave_rod, all with --convergence-only."""
+    the wave rod with wave_rod, the staggered wave with wave_staggered, all
+    with --convergence-only."""
     scenes = []
     if args.convergence_only or "heat_rod" in args.scenes:
         scenes += ["heat_rod", "heat_rod_flux"]
     if args.convergence_only or "wave_rod" in args.scenes:
         scenes.append("wave_rod")
+    if args.convergence_only or "wave_staggered" in args.scenes:
+        scenes.append("wave_staggered")
     return scenes
 
 

@@ -194,7 +194,9 @@ private:
         return value;
     if (version == Version::cache)
       return lowerCacheLoad(builder, load);
-    if (version == Version::local && values.levels &&
+    bool latestOwn =
+        version == Version::local && values.latestOwn.contains(name);
+    if (version == Version::local && values.levels && !latestOwn &&
         (values.levelsAtItem || load.getIndex() != values.item))
       return lowerLevelLoad(builder, load, buffer);
 
@@ -215,7 +217,8 @@ private:
       break;
     case Version::local:
       memory = values.buffers.lookup(name);
-      base = halfOf(values.localBase, values.localParity);
+      base = latestOwn ? halfOf(values.latestBase, values.latestParity)
+                       : halfOf(values.localBase, values.localParity);
       break;
     case Version::snapshot:
       memory = values.snapshots.lookup(name);

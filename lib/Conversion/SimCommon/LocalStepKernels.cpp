@@ -1464,6 +1464,16 @@ LogicalResult SimulationLowering::emitLocalSteps(ComponentOp component,
           values.levelsAtItem = true;
           values.levelsFromBothHalves = target.readsLevelsFromBothHalves();
         }
+        // Its own state, read at its own item: every item is evaluated at
+        // slot 0, from the value at T, and writes the target half, which
+        // holds its latest value from then on.
+        Value first = b.cmp(arith::CmpIPredicate::eq, slot, b.i64(0));
+        for (FlatSymbolRefAttr write : fluxWrites)
+          values.latestOwn.insert(write.getAttr());
+        values.latestParity =
+            b.select(first, values.sourceParity, values.targetParity);
+        values.latestBase =
+            b.select(first, values.sourceBase, values.targetBase);
         SmallVector<Value> results = inline_(
             fluxWriter.getEvaluate(),
             {lane.item, now, b.truncate(level, b.getI32Type()), dt}, values);

@@ -84,6 +84,12 @@ struct KernelValues {
   /// The flux writer of a flux pair reads its reader's state from the time
   /// levels at every item, its own included (it writes none of it).
   bool levelsAtItem = false;
+  /// The writer of a pair that keeps state of its own (docs/Model.md,
+  /// "Item pairs"): its `local` loads of these buffers, at its own item,
+  /// read the item's latest value from the half at `latestBase` and
+  /// `latestParity` instead of the time levels.
+  llvm::DenseSet<StringAttr> latestOwn;
+  Value latestBase, latestParity;
   /// Such a read loads the item from both halves and selects per item
   /// (KernelTarget::readsLevelsFromBothHalves) instead of loading from the
   /// half that the item's block says.

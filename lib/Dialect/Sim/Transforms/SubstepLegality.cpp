@@ -206,16 +206,19 @@ struct SubstepLegalityPass
                       "the component that reads them";
           return;
         }
-        if (component == writer) {
+        // A writer that keeps state of its own reads it at its own item
+        // in evaluate: each of its items is evaluated once per step of
+        // the item, so the read is of the item's latest value.
+        if (component == writer && access.body == BodyKind::Evaluate &&
+            access.pattern.isOwn())
+          continue;
+        if (component == writer && access.body != BodyKind::Evaluate) {
           refuse() << "it reads its own @" << access.buffer.getSymName()
-                   << "; in an item pair @" << name
-                   << " computes its values from @" << readerName
-                   << "'s state alone: let @" << name << " write only what @"
-                   << readerName
-                   << " needs (a force or an acceleration, in a buffer of its "
-                      "own) and @"
-                   << readerName << " write @" << access.buffer.getSymName()
-                   << " instead, updating it from its own state";
+                   << " in its " << stringifyBodyKind(access.body)
+                   << " body; under lts its items are evaluated at "
+                      "different times, so read @"
+                   << access.buffer.getSymName()
+                   << " only in evaluate, at the item's own index";
           return;
         }
         if (component != reader) {
@@ -241,15 +244,6 @@ struct SubstepLegalityPass
                       "interface must be known: read it through a window";
           return;
         }
-        if (!fluxPair && !access.pattern.isOwn()) {
-          refuse() << "@" << component.getSymName() << " reads @"
-                   << access.buffer.getSymName() << " at "
-                   << access.pattern.str() << "; read @"
-                   << access.buffer.getSymName()
-                   << " only at the item's own index, or make it #sim.flux "
-                      "so that its value holds over its writer's step";
-          return;
-        }
         fluxWindow =
             fluxWindow ? fluxWindow->join(access.pattern) : access.pattern;
       }
@@ -269,6 +263,18 @@ struct SubstepLegalityPass
                << " items of the reading item";
       return;
     }
+    // The items that read item j of the writer's values come from the
+    // window under the boundary rule of its buffers: one rule for all.
+    if (!fluxPair && !fluxWindow->isOwn())
+      for (BufferOp buffer : outputs)
+        if (buffer.getBoundary() != outputs.front().getBoundary()) {
+          refuse() << "@" << readerName << " reads its values at "
+                   << fluxWindow->str() << ", and @"
+                   << outputs.front().getSymName() << " and @"
+                   << buffer.getSymName()
+                   << " have different boundary rules; give them one";
+          return;
+        }
     if (!isEntry) {
       refuse() << "it is not the first component of the step; name it "
                   "first in sim.schedule so that it reads @"
@@ -280,7 +286,8 @@ struct SubstepLegalityPass
     std::optional<AccessPattern> cellWindow;
     for (const BufferAccess &access : analysis.getAccesses(writer)) {
       ComponentOp producer = analysis.getWriter(access.buffer);
-      if (!producer)
+      // Its own state, read at its own item (checked above).
+      if (!producer || producer == writer)
         continue;
       StringRef buffer = access.buffer.getSymName();
       if (producer != reader) {
@@ -371,13 +378,24 @@ struct SubstepLegalityPass
                           << fluxWindow->str() << "), and @" << readerName
                           << "'s blocks take local time steps (window "
                           << window.str() << ")";
-    else
+    else if (fluxWindow->isOwn())
       explainPair(writer)
           << "@" << name << " and @" << readerName
           << " form an item pair: under lts @" << name
           << " evaluates an item whenever its block starts a "
              "sub-step, so its num_steps no longer bounds the big "
              "step, and @"
+          << readerName << "'s blocks take local time steps (window "
+          << window.str() << ")";
+    else
+      explainPair(writer)
+          << "@" << name << " and @" << readerName
+          << " form an item pair: under lts @" << name
+          << " evaluates an item whenever the coarsest block that reads "
+             "it (at "
+          << fluxWindow->str() << ") starts a sub-step, and @" << readerName
+          << " reads the value it computed then until the next one, so "
+             "its num_steps no longer bounds the big step, and @"
           << readerName << "'s blocks take local time steps (window "
           << window.str() << ")";
   }

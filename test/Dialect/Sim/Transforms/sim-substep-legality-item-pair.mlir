@@ -73,12 +73,14 @@ sim.simulation @pair range(64) dt(1.0e-2 : f64) max_steps(4) {
 
 // -----
 
-// The integrator reads a neighbour's force: a value that is no flux is
-// read only at the item's own index.
+// The integrator reads a neighbour's force: item j of @F steps with the
+// coarsest block that reads it (j's and j+1's), as a flux pair's
+// interfaces do. flux_window [-1, -1]; the reader's window widens by the
+// force's window of @X to i-2..i.
 
 // CHECK-LABEL: sim.simulation @neighbour_force
-// CHECK-NOT: flux_window
-// CHECK: sim.observe
+// CHECK: sim.component @Force writes(@F) attributes {flux_window = array<i64: -1, -1>, local_window = array<i64: -1, 1>, sub_stepping = #sim<sub_stepping in_kernel>}
+// CHECK: sim.component @Integrate writes(@X, @V) attributes {local_window = array<i64: -2, 0>, sub_stepping = #sim<sub_stepping in_kernel>}
 
 sim.simulation @neighbour_force range(64) dt(1.0e-2 : f64) max_steps(4) {
   sim.buffer @X : f64 init {
@@ -96,7 +98,7 @@ sim.simulation @neighbour_force range(64) dt(1.0e-2 : f64) max_steps(4) {
     %c = arith.constant 0.0 : f64
     sim.yield %c : f64
   }
-  // expected-remark @+1 {{under lts @Force and @Integrate form no pair, and @Force's num_steps bounds the big step as under hip: @Integrate reads @F at i-1; read @F only at the item's own index, or make it #sim.flux so that its value holds over its writer's step}}
+  // expected-remark @+1 {{@Force and @Integrate form an item pair: under lts @Force evaluates an item whenever the coarsest block that reads it (at i-1) starts a sub-step, and @Integrate reads the value it computed then until the next one, so its num_steps no longer bounds the big step, and @Integrate's blocks take local time steps (window i-2..i)}}
   sim.component @Force writes(@F) num_steps {
   ^bb0(%i: index, %t: i64):
     %c4 = arith.constant 4 : i32
@@ -533,12 +535,12 @@ sim.simulation @two_readers range(64) dt(1.0e-2 : f64) max_steps(4) {
 // -----
 
 // A kick that updates its own velocity (leapfrog written as kick and
-// drift): @Kick reads its own @V, so no pair, and the remark says how to
-// write it as one.
+// drift): @Kick keeps state of its own, read at its own item, so each
+// item's velocity steps with its block.
 
 // CHECK-LABEL: sim.simulation @kick_reads_own
-// CHECK-NOT: flux_window
-// CHECK: sim.observe
+// CHECK: sim.component @Kick writes(@V) attributes {flux_window = array<i64: 0, 0>, local_window = array<i64: -1, 1>, sub_stepping = #sim<sub_stepping in_kernel>}
+// CHECK: sim.component @Drift writes(@U) attributes {local_window = array<i64: -1, 1>, sub_stepping = #sim<sub_stepping in_kernel>}
 
 sim.simulation @kick_reads_own range(64) dt(1.0e-2 : f64) max_steps(4) {
   sim.buffer @U : f64 init {
@@ -551,7 +553,7 @@ sim.simulation @kick_reads_own range(64) dt(1.0e-2 : f64) max_steps(4) {
     %c = arith.constant 0.0 : f64
     sim.yield %c : f64
   }
-  // expected-remark @+1 {{under lts @Kick and @Drift form no pair, and @Kick's num_steps bounds the big step as under hip: it reads its own @V; in an item pair @Kick computes its values from @Drift's state alone: let @Kick write only what @Drift needs (a force or an acceleration, in a buffer of its own) and @Drift write @V instead, updating it from its own state}}
+  // expected-remark @+1 {{@Kick and @Drift form an item pair: under lts @Kick evaluates an item whenever its block starts a sub-step, so its num_steps no longer bounds the big step, and @Drift's blocks take local time steps (window i-1..i+1)}}
   sim.component @Kick writes(@V) num_steps {
   ^bb0(%i: index, %t: i64):
     %c4 = arith.constant 4 : i32
@@ -577,6 +579,122 @@ sim.simulation @kick_reads_own range(64) dt(1.0e-2 : f64) max_steps(4) {
     %v = sim.read @V[%i] : f64
     %u = sim.read @U[%i] : f64
     %u1 = math.fma %dt, %v, %u : f64
+    sim.yield %u1 : f64
+  }
+  sim.schedule [@Kick, @Drift] bounded_by [@Kick]
+  sim.observe [@U]
+}
+
+// -----
+
+// The kick reads its own velocity in num_steps: an estimate at T of a
+// value whose items are evaluated at different times under lts.
+
+// CHECK-LABEL: sim.simulation @kick_estimates_own
+// CHECK-NOT: flux_window
+// CHECK: sim.observe
+
+sim.simulation @kick_estimates_own range(64) dt(1.0e-2 : f64) max_steps(4) {
+  sim.buffer @U : f64 init {
+  ^bb0(%i: index):
+    %c = arith.constant 1.0 : f64
+    sim.yield %c : f64
+  }
+  sim.buffer @V : f64 init {
+  ^bb0(%i: index):
+    %c = arith.constant 0.0 : f64
+    sim.yield %c : f64
+  }
+  // expected-remark @+1 {{under lts @Kick and @Drift form no pair, and @Kick's num_steps bounds the big step as under hip: it reads its own @V in its num_steps body; under lts its items are evaluated at different times, so read @V only in evaluate, at the item's own index}}
+  sim.component @Kick writes(@V) num_steps {
+  ^bb0(%i: index, %t: i64):
+    %v = sim.read @V[%i] : f64
+    %n = arith.fptosi %v : f64 to i32
+    sim.yield %n : i32
+  } evaluate {
+  ^bb0(%i: index, %t: i64, %n: i32, %dt: f64):
+    %c1 = arith.constant 1 : index
+    %ir = arith.addi %i, %c1 : index
+    %u = sim.read @U[%i] : f64
+    %ur = sim.read @U[%ir] : f64
+    %v = sim.read @V[%i] : f64
+    %d = arith.subf %ur, %u : f64
+    %v1 = math.fma %dt, %d, %v : f64
+    sim.yield %v1 : f64
+  }
+  sim.component @Drift writes(@U) num_steps {
+  ^bb0(%i: index, %t: i64):
+    %c2 = arith.constant 2 : i32
+    sim.yield %c2 : i32
+  } evaluate {
+  ^bb0(%i: index, %t: i64, %n: i32, %dt: f64):
+    %c1 = arith.constant 1 : index
+    %il = arith.subi %i, %c1 : index
+    %vl = sim.read @V[%il] : f64
+    %v = sim.read @V[%i] : f64
+    %u = sim.read @U[%i] : f64
+    %d = arith.subf %v, %vl : f64
+    %u1 = math.fma %dt, %d, %u : f64
+    sim.yield %u1 : f64
+  }
+  sim.schedule [@Kick, @Drift] bounded_by [@Kick]
+  sim.observe [@U]
+}
+
+// -----
+
+// A staggered pair whose writer keeps two buffers with different boundary
+// rules, read at a neighbour: which items read item j is not one rule.
+
+// CHECK-LABEL: sim.simulation @staggered_two_boundaries
+// CHECK-NOT: flux_window
+// CHECK: sim.observe
+
+sim.simulation @staggered_two_boundaries range(64) dt(1.0e-2 : f64) max_steps(4) {
+  sim.buffer @U : f64 init {
+  ^bb0(%i: index):
+    %c = arith.constant 1.0 : f64
+    sim.yield %c : f64
+  }
+  sim.buffer @V : f64 boundary(zero) init {
+  ^bb0(%i: index):
+    %c = arith.constant 0.0 : f64
+    sim.yield %c : f64
+  }
+  sim.buffer @W : f64 boundary(wrap) init {
+  ^bb0(%i: index):
+    %c = arith.constant 0.0 : f64
+    sim.yield %c : f64
+  }
+  // expected-remark @+1 {{under lts @Kick and @Drift form no pair, and @Kick's num_steps bounds the big step as under hip: @Drift reads its values at i-1..i, and @V and @W have different boundary rules; give them one}}
+  sim.component @Kick writes(@V, @W) num_steps {
+  ^bb0(%i: index, %t: i64):
+    %c4 = arith.constant 4 : i32
+    sim.yield %c4 : i32
+  } evaluate {
+  ^bb0(%i: index, %t: i64, %n: i32, %dt: f64):
+    %c1 = arith.constant 1 : index
+    %ir = arith.addi %i, %c1 : index
+    %u = sim.read @U[%i] : f64
+    %ur = sim.read @U[%ir] : f64
+    %v = sim.read @V[%i] : f64
+    %d = arith.subf %ur, %u : f64
+    %v1 = math.fma %dt, %d, %v : f64
+    sim.yield %v1, %d : f64, f64
+  }
+  sim.component @Drift writes(@U) num_steps {
+  ^bb0(%i: index, %t: i64):
+    %c2 = arith.constant 2 : i32
+    sim.yield %c2 : i32
+  } evaluate {
+  ^bb0(%i: index, %t: i64, %n: i32, %dt: f64):
+    %c1 = arith.constant 1 : index
+    %il = arith.subi %i, %c1 : index
+    %vl = sim.read @V[%il] : f64
+    %w = sim.read @W[%i] : f64
+    %u = sim.read @U[%i] : f64
+    %d = arith.subf %w, %vl : f64
+    %u1 = math.fma %dt, %d, %u : f64
     sim.yield %u1 : f64
   }
   sim.schedule [@Kick, @Drift] bounded_by [@Kick]
