@@ -19,8 +19,9 @@
 // `#sim.flux` buffers, one component reads them all through windows and
 // writes every buffer the first one reads. An item pair ("Item pairs"): the
 // first component bounds the big step and writes values that one component
-// reads only at its own items, from the state that component writes (the
-// forces and the integrator of particles). The pass records the reader's
+// reads through windows, from the state that component writes and, at its
+// own item, its own (the forces and the integrator of particles, a kick and
+// a drift, the two fields of a staggered scheme). The pass records the reader's
 // window of the values as `flux_window` on the writer and widens the
 // reader's `local_window` by the reads of its own buffers through them; a
 // remark on the writer says that the two form a pair, or why they cannot.
@@ -121,8 +122,8 @@ struct SubstepLegalityPass
       return isa<FluxInterpAttr>(buffer.getInterpolation());
     };
     // A flux pair (docs/Model.md, "Conservation") or an item pair ("Item
-    // pairs"): the writer's values are then read only at the reader's own
-    // items, so each item's value steps with its block.
+    // pairs"): each of the writer's items then steps with the coarsest
+    // block that reads it.
     bool fluxPair = llvm::any_of(outputs, isFlux);
     StringRef name = writer.getSymName();
     ScheduleOp schedule = analysis.getSimulation().getScheduleOp();

@@ -118,7 +118,9 @@ def SimSubstepLegality
     pairs: a flux pair (the first component writes `#sim.flux` buffers that
     one component reads through windows) and an item pair (the first
     component bounds the big step and writes values that one component reads
-    only at its own items, such as forces and an integrator). It records
+    through windows, from that component's state and its own at its own
+    item: forces and an integrator, a kick and a drift, the two fields of a
+    staggered scheme). It records
     `flux_window` on the pair's writer and widens its reader's
     `local_window`; a remark on the writer says that the two form a pair, or
     which rule fails and what to change.
