@@ -66,16 +66,14 @@ sim.simulation @rod range(16) dt(1.0e-3 : f32) max_steps(4) {
 
 // The model: parameters and buffers by scene name (the model's indices),
 // components in schedule order with model buffer indices and how each takes
-// a big step under every strategy (@Heater bounds the hip step; under lts
-// the two form an item pair, @Rod reading @Q at i+1, with the windows that
-// the executor's levels need).
+// a big step under every strategy (@Heater bounds the hip step).
 // CHECK-LABEL: module @rod_reference attributes {sim.reference_model = {
 // CHECK-SAME:    buffers = ["Q", "T"],
-// CHECK-SAME:    components = [{flux_window = array<i64: 1, 1>, local_window = array<i64: 0, 0>, name = "Heater", num_steps = true, reads = array<i64: 1>,
-// CHECK-SAME:      stepping = {hip = {advance = #sim<advance whole_step>, estimates = true}, "hip-cache" = {advance = #sim<advance whole_step>, estimates = true}, lts = {advance = #sim<advance local_flux>, estimates = false}, simple = {advance = #sim<advance whole_step>, estimates = false}, traditional = {advance = #sim<advance whole_step>, estimates = true}},
+// CHECK-SAME:    components = [{name = "Heater", num_steps = true, reads = array<i64: 1>,
+// CHECK-SAME:      stepping = {hip = {advance = #sim<advance whole_step>, estimates = true}, "hip-cache" = {advance = #sim<advance whole_step>, estimates = true}, lts = {advance = #sim<advance whole_step>, estimates = true}, simple = {advance = #sim<advance whole_step>, estimates = false}, traditional = {advance = #sim<advance whole_step>, estimates = true}},
 // CHECK-SAME:      sub_stepping = #sim<sub_stepping in_kernel>, writes = array<i64: 0>},
-// CHECK-SAME:    {local_window = array<i64: 0, 1>, name = "Rod", num_steps = false, reads = array<i64: 0>,
-// CHECK-SAME:      stepping = {hip = {advance = #sim<advance whole_step>, estimates = false}, "hip-cache" = {advance = #sim<advance whole_step>, estimates = false}, lts = {advance = #sim<advance local_steps>, estimates = false}, simple = {advance = #sim<advance whole_step>, estimates = false}, traditional = {advance = #sim<advance whole_step>, estimates = false}},
+// CHECK-SAME:    {name = "Rod", num_steps = false, reads = array<i64: 0>,
+// CHECK-SAME:      stepping = {hip = {advance = #sim<advance whole_step>, estimates = false}, "hip-cache" = {advance = #sim<advance whole_step>, estimates = false}, lts = {advance = #sim<advance whole_step>, estimates = false}, simple = {advance = #sim<advance whole_step>, estimates = false}, traditional = {advance = #sim<advance whole_step>, estimates = false}},
 // CHECK-SAME:      sub_stepping = #sim<sub_stepping in_kernel>, writes = array<i64: 1>}],
 // CHECK-SAME:    params = ["k", "unused"],
 // CHECK-SAME:    step_caps = {hip = 4 : i64, "hip-cache" = 4 : i64, lts = 4 : i64, simple = 1 : i64, traditional = 4 : i64}, totals = []}}

@@ -1,8 +1,10 @@
 // A chain of particles written as a kick and a drift (leapfrog): @Kick
 // updates each particle's velocity @V from its neighbours' positions @X
 // (through the back edge) and its own @V; @Drift moves each particle by
-// its own new velocity. Under lts the two form an item pair whose writer
-// keeps state of its own (docs/Model.md, "Item pairs"). @pattern places
+// its own new velocity. Under lts the two form no pair: @Kick keeps state
+// of its own that @Drift reads only at its own items (docs/Model.md, "Item
+// pairs"; the remark says how to write them as one), so lts plans what hip
+// plans. @pattern places
 // the stiff springs: 0 a stiff segment in the middle, 1 every spring
 // stiff (every block at one level), 2 a stiff spring at each end of the
 // range, 3 none stiff.

@@ -18,13 +18,14 @@
 // "Conservation"): the first component of the schedule writes only
 // `#sim.flux` buffers, one component reads them all through windows and
 // writes every buffer the first one reads. An item pair ("Item pairs"): the
-// first component bounds the big step and writes values that one component
-// reads through windows, from the state that component writes and, at its
-// own item, its own (the forces and the integrator of particles, a kick and
-// a drift, the two fields of a staggered scheme). The pass records the reader's
-// window of the values as `flux_window` on the writer and widens the
-// reader's `local_window` by the reads of its own buffers through them; a
-// remark on the writer says that the two form a pair, or why they cannot.
+// first component bounds the big step and writes values, from the state
+// that one component writes, that the component reads at its own items (the
+// forces and the integrator of particles) or, where the writer keeps state
+// of its own, at its neighbours (the two fields of a staggered scheme). The
+// pass records the reader's window of the values as `flux_window` on the writer
+// and widens the reader's `local_window` by the reads of its own buffers
+// through them; a remark on the writer says that the two form a pair, or why
+// they cannot.
 //
 //===----------------------------------------------------------------------===//
 
@@ -92,9 +93,22 @@ struct SubstepLegalityPass
           << describeWhere(hazard->pattern)
           << ", so a thread could read another item while that item is "
              "between sub-steps";
-      ReadOp offending = *llvm::find_if(hazard->reads, [&](ReadOp read) {
-        return !analysis.getPattern(read).isOwn();
-      });
+      // The note points at the window read that reaches farthest, the one
+      // that sets how wide the window is (in a 2-D stencil on a flattened
+      // grid the read of the row above, not of the item to the left), or
+      // at a gather (under lts a gather gets a note of its own).
+      auto reach = [&](ReadOp read) -> int64_t {
+        AccessPattern pattern = analysis.getPattern(read);
+        if (pattern.isOwn())
+          return -1;
+        if (pattern.isGather())
+          return 0;
+        return std::max(-pattern.getMinOffset(), pattern.getMaxOffset());
+      };
+      ReadOp offending =
+          *llvm::max_element(hazard->reads, [&](ReadOp a, ReadOp b) {
+            return reach(a) < reach(b);
+          });
       remark.attachNote(offending.getLoc())
           << "reads @" << hazard->buffer.getSymName() << " "
           << describeWhere(analysis.getPattern(offending));
@@ -195,8 +209,11 @@ struct SubstepLegalityPass
           return;
         }
     }
-    // The offsets the reader reads the values at.
+    // The offsets the reader reads the values at, and a buffer of the
+    // writer's own state that it reads at its own item.
     std::optional<AccessPattern> fluxWindow;
+    BufferOp ownState;
+    const BufferAccess *neighbourRead = nullptr;
     for (ComponentOp component : analysis.getComponents())
       for (const BufferAccess &access : analysis.getAccesses(component)) {
         if (!llvm::is_contained(outputs, access.buffer))
@@ -209,10 +226,13 @@ struct SubstepLegalityPass
         }
         // A writer that keeps state of its own reads it at its own item
         // in evaluate: each of its items is evaluated once per step of
-        // the item, so the read is of the item's latest value.
+        // the item, so the read is of the item's latest value (allowed
+        // below only where the reader reads the values at other items).
         if (component == writer && access.body == BodyKind::Evaluate &&
-            access.pattern.isOwn())
+            access.pattern.isOwn()) {
+          ownState = access.buffer;
           continue;
+        }
         if (component == writer && access.body != BodyKind::Evaluate) {
           refuse() << "it reads its own @" << access.buffer.getSymName()
                    << " in its " << stringifyBodyKind(access.body)
@@ -245,6 +265,8 @@ struct SubstepLegalityPass
                       "interface must be known: read it through a window";
           return;
         }
+        if (!access.pattern.isOwn() && !neighbourRead)
+          neighbourRead = &access;
         fluxWindow =
             fluxWindow ? fluxWindow->join(access.pattern) : access.pattern;
       }
@@ -262,6 +284,39 @@ struct SubstepLegalityPass
                << fluxWindow->str() << ", more than " << kMaxFluxWindow
                << " items apart; read them within " << kMaxFluxWindow
                << " items of the reading item";
+      return;
+    }
+    // State of the writer's own makes it a dynamical component with a rate
+    // of its own (a slow component next to a fast one, which hip's big
+    // step already serves). Tying each of its items to the steps of the
+    // blocks that read it suits the two halves of a staggered scheme, where
+    // the reader reads the writer's items as interfaces between its own;
+    // read at the reader's own items only (a kick and a drift), it would
+    // evaluate a slow writer at its reader's rate.
+    // A writer without state of its own computes its values from the
+    // reader's state alone (a force): read at other items, each value would
+    // be held over the steps of the coarsest block that reads it, which only
+    // a flux means.
+    if (!fluxPair && !ownState && neighbourRead) {
+      refuse() << "@" << readerName << " reads @"
+               << neighbourRead->buffer.getSymName() << " at "
+               << neighbourRead->pattern.str() << "; read @"
+               << neighbourRead->buffer.getSymName()
+               << " only at the item's own index, or make it #sim.flux so "
+                  "that its value holds over its writer's step";
+      return;
+    }
+    if (ownState && fluxWindow->isOwn()) {
+      refuse() << "it reads its own @" << ownState.getSymName() << ", and @"
+               << readerName << " reads @" << name
+               << "'s values only at its own items; in an item pair @" << name
+               << " computes its values from @" << readerName
+               << "'s state alone: let @" << name << " write only what @"
+               << readerName
+               << " needs (a force or an acceleration, in a buffer of its "
+                  "own) and @"
+               << readerName << " write @" << ownState.getSymName()
+               << " instead, updating it from its own state";
       return;
     }
     // The items that read item j of the writer's values come from the

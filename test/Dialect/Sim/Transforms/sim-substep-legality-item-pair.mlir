@@ -73,14 +73,12 @@ sim.simulation @pair range(64) dt(1.0e-2 : f64) max_steps(4) {
 
 // -----
 
-// The integrator reads a neighbour's force: item j of @F steps with the
-// coarsest block that reads it (j's and j+1's), as a flux pair's
-// interfaces do. flux_window [-1, -1]; the reader's window widens by the
-// force's window of @X to i-2..i.
+// The integrator reads a neighbour's force: a value that is no flux is
+// read only at the item's own index.
 
 // CHECK-LABEL: sim.simulation @neighbour_force
-// CHECK: sim.component @Force writes(@F) attributes {flux_window = array<i64: -1, -1>, local_window = array<i64: -1, 1>, sub_stepping = #sim<sub_stepping in_kernel>}
-// CHECK: sim.component @Integrate writes(@X, @V) attributes {local_window = array<i64: -2, 0>, sub_stepping = #sim<sub_stepping in_kernel>}
+// CHECK-NOT: flux_window
+// CHECK: sim.observe
 
 sim.simulation @neighbour_force range(64) dt(1.0e-2 : f64) max_steps(4) {
   sim.buffer @X : f64 init {
@@ -98,7 +96,7 @@ sim.simulation @neighbour_force range(64) dt(1.0e-2 : f64) max_steps(4) {
     %c = arith.constant 0.0 : f64
     sim.yield %c : f64
   }
-  // expected-remark @+1 {{@Force and @Integrate form an item pair: under lts @Force evaluates an item whenever the coarsest block that reads it (at i-1) starts a sub-step, and @Integrate reads the value it computed then until the next one, so its num_steps no longer bounds the big step, and @Integrate's blocks take local time steps (window i-2..i)}}
+  // expected-remark @+1 {{under lts @Force and @Integrate form no pair, and @Force's num_steps bounds the big step as under hip: @Integrate reads @F at i-1; read @F only at the item's own index, or make it #sim.flux so that its value holds over its writer's step}}
   sim.component @Force writes(@F) num_steps {
   ^bb0(%i: index, %t: i64):
     %c4 = arith.constant 4 : i32
@@ -535,12 +533,13 @@ sim.simulation @two_readers range(64) dt(1.0e-2 : f64) max_steps(4) {
 // -----
 
 // A kick that updates its own velocity (leapfrog written as kick and
-// drift): @Kick keeps state of its own, read at its own item, so each
-// item's velocity steps with its block.
+// drift): @Kick keeps state of its own, which @Drift reads only at its own
+// items, so no pair (a writer with a rate of its own would be evaluated at
+// its reader's), and the remark says how to write it as one.
 
 // CHECK-LABEL: sim.simulation @kick_reads_own
-// CHECK: sim.component @Kick writes(@V) attributes {flux_window = array<i64: 0, 0>, local_window = array<i64: -1, 1>, sub_stepping = #sim<sub_stepping in_kernel>}
-// CHECK: sim.component @Drift writes(@U) attributes {local_window = array<i64: -1, 1>, sub_stepping = #sim<sub_stepping in_kernel>}
+// CHECK-NOT: flux_window
+// CHECK: sim.observe
 
 sim.simulation @kick_reads_own range(64) dt(1.0e-2 : f64) max_steps(4) {
   sim.buffer @U : f64 init {
@@ -553,7 +552,7 @@ sim.simulation @kick_reads_own range(64) dt(1.0e-2 : f64) max_steps(4) {
     %c = arith.constant 0.0 : f64
     sim.yield %c : f64
   }
-  // expected-remark @+1 {{@Kick and @Drift form an item pair: under lts @Kick evaluates an item whenever its block starts a sub-step, so its num_steps no longer bounds the big step, and @Drift's blocks take local time steps (window i-1..i+1)}}
+  // expected-remark @+1 {{under lts @Kick and @Drift form no pair, and @Kick's num_steps bounds the big step as under hip: it reads its own @V, and @Drift reads @Kick's values only at its own items; in an item pair @Kick computes its values from @Drift's state alone: let @Kick write only what @Drift needs (a force or an acceleration, in a buffer of its own) and @Drift write @V instead, updating it from its own state}}
   sim.component @Kick writes(@V) num_steps {
   ^bb0(%i: index, %t: i64):
     %c4 = arith.constant 4 : i32
@@ -698,5 +697,112 @@ sim.simulation @staggered_two_boundaries range(64) dt(1.0e-2 : f64) max_steps(4)
     sim.yield %u1 : f64
   }
   sim.schedule [@Kick, @Drift] bounded_by [@Kick]
+  sim.observe [@U]
+}
+
+// -----
+
+// A slow component with state of its own next to a fast one, each reading
+// the other at its own item only (a multirate split, as in kpr.mlir): no
+// pair, which would evaluate @Slow at every step of @Fast's blocks.
+
+// CHECK-LABEL: sim.simulation @multirate
+// CHECK-NOT: flux_window
+// CHECK: sim.observe
+
+sim.simulation @multirate range(64) dt(1.0e-2 : f64) max_steps(16) {
+  sim.buffer @U : f64 init {
+  ^bb0(%i: index):
+    %c = arith.constant 1.0 : f64
+    sim.yield %c : f64
+  }
+  sim.buffer @V : f64 init {
+  ^bb0(%i: index):
+    %c = arith.constant 0.0 : f64
+    sim.yield %c : f64
+  }
+  // expected-remark @+1 {{under lts @Slow and @Fast form no pair, and @Slow's num_steps bounds the big step as under hip: it reads its own @U, and @Fast reads @Slow's values only at its own items; in an item pair @Slow computes its values from @Fast's state alone: let @Slow write only what @Fast needs (a force or an acceleration, in a buffer of its own) and @Fast write @U instead, updating it from its own state}}
+  sim.component @Slow writes(@U) num_steps {
+  ^bb0(%i: index, %t: i64):
+    %c10 = arith.constant 10 : i32
+    sim.yield %c10 : i32
+  } evaluate {
+  ^bb0(%i: index, %t: i64, %n: i32, %dt: f64):
+    %u = sim.read @U[%i] : f64
+    %v = sim.read @V[%i] : f64
+    %u1 = math.fma %dt, %v, %u : f64
+    sim.yield %u1 : f64
+  }
+  sim.component @Fast writes(@V) num_steps {
+  ^bb0(%i: index, %t: i64):
+    %c1 = arith.constant 1 : i32
+    sim.yield %c1 : i32
+  } evaluate {
+  ^bb0(%i: index, %t: i64, %n: i32, %dt: f64):
+    %u = sim.read @U[%i] : f64
+    %v = sim.read @V[%i] : f64
+    %d = arith.subf %u, %v : f64
+    %v1 = math.fma %dt, %d, %v : f64
+    sim.yield %v1 : f64
+  }
+  sim.schedule [@Slow, @Fast] bounded_by [@Slow]
+  sim.observe [@U, @V]
+}
+
+// -----
+
+// The two halves of a staggered scheme: @Vel updates the faces @V from
+// the cells @U (through the back edge) and its own @V at its item, @Disp
+// the cells from the faces at i-1..i. A pair: each face steps with the
+// coarsest block of cells that reads it. flux_window [-1, 0]; the cells'
+// window widens by the faces' window of @U to i-1..i+1.
+
+// CHECK-LABEL: sim.simulation @staggered
+// CHECK: sim.component @Vel writes(@V) attributes {flux_window = array<i64: -1, 0>, local_window = array<i64: 0, 1>, sub_stepping = #sim<sub_stepping in_kernel>}
+// CHECK: sim.component @Disp writes(@U) attributes {local_window = array<i64: -1, 1>, sub_stepping = #sim<sub_stepping in_kernel>}
+
+sim.simulation @staggered range(64) dt(1.0e-2 : f64) max_steps(4) {
+  sim.buffer @U : f64 interp(#sim.linear) init {
+  ^bb0(%i: index):
+    %c = arith.constant 1.0 : f64
+    sim.yield %c : f64
+  }
+  sim.buffer @V : f64 boundary(zero) init {
+  ^bb0(%i: index):
+    %c = arith.constant 0.0 : f64
+    sim.yield %c : f64
+  }
+  // expected-remark @+1 {{@Vel and @Disp form an item pair: under lts @Vel evaluates an item whenever the coarsest block that reads it (at i-1..i) starts a sub-step, and @Disp reads the value it computed then until the next one, so its num_steps no longer bounds the big step, and @Disp's blocks take local time steps (window i-1..i+1)}}
+  sim.component @Vel writes(@V) num_steps {
+  ^bb0(%i: index, %t: i64):
+    %c4 = arith.constant 4 : i32
+    sim.yield %c4 : i32
+  } evaluate {
+  ^bb0(%i: index, %t: i64, %n: i32, %dt: f64):
+    %c1 = arith.constant 1 : index
+    %ir = arith.addi %i, %c1 : index
+    %u = sim.read @U[%i] : f64
+    %ur = sim.read @U[%ir] : f64
+    %v = sim.read @V[%i] : f64
+    %d = arith.subf %ur, %u : f64
+    %v1 = math.fma %dt, %d, %v : f64
+    sim.yield %v1 : f64
+  }
+  sim.component @Disp writes(@U) num_steps {
+  ^bb0(%i: index, %t: i64):
+    %c2 = arith.constant 2 : i32
+    sim.yield %c2 : i32
+  } evaluate {
+  ^bb0(%i: index, %t: i64, %n: i32, %dt: f64):
+    %c1 = arith.constant 1 : index
+    %il = arith.subi %i, %c1 : index
+    %vl = sim.read @V[%il] : f64
+    %v = sim.read @V[%i] : f64
+    %u = sim.read @U[%i] : f64
+    %d = arith.subf %v, %vl : f64
+    %u1 = math.fma %dt, %d, %u : f64
+    sim.yield %u1 : f64
+  }
+  sim.schedule [@Vel, @Disp] bounded_by [@Vel]
   sim.observe [@U]
 }

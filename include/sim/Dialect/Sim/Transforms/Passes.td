@@ -117,10 +117,10 @@ def SimSubstepLegality
     at other items are windows of interpolable buffers, and recognises
     pairs: a flux pair (the first component writes `#sim.flux` buffers that
     one component reads through windows) and an item pair (the first
-    component bounds the big step and writes values that one component reads
-    through windows, from that component's state and its own at its own
-    item: forces and an integrator, a kick and a drift, the two fields of a
-    staggered scheme). It records
+    component bounds the big step and writes values from that component's
+    state that it reads at its own items, such as forces and an integrator,
+    or, keeping state of its own, at its neighbours, as the two fields of a
+    staggered scheme do). It records
     `flux_window` on the pair's writer and widens its reader's
     `local_window`; a remark on the writer says that the two form a pair, or
     which rule fails and what to change.
