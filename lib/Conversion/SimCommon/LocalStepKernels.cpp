@@ -95,6 +95,17 @@ LogicalResult SimulationLowering::emitLocalSteps(ComponentOp component,
       llvm::to_vector(component.getWrites().getAsRange<FlatSymbolRefAttr>());
   ArrayRef<int64_t> window = component.getLocalWindowAttr().asArrayRef();
   int64_t reach = std::max(-window[0], window[1]);
+  // The windows of its reads whose blocks decide whether a block's
+  // neighbourhood is in step: the recorded ones where they leave gaps
+  // (local_reads: a stencil on a flattened grid), else the whole reach on
+  // each side.
+  SmallVector<std::pair<int64_t, int64_t>> readWindows;
+  DenseI64ArrayAttr localReads = component.getLocalReadsAttr();
+  if (localReads)
+    for (int64_t k = 0; k + 1 < localReads.size(); k += 2)
+      readWindows.emplace_back(localReads[k], localReads[k + 1]);
+  else
+    readWindows.emplace_back(-reach, reach);
   // Blocks within `radius` of a block are its neighbours: those its window
   // can reach. They wrap around the range when a buffer it writes does.
   int64_t radius = llvm::divideCeil(reach, kLevelBlock);
@@ -391,35 +402,75 @@ LogicalResult SimulationLowering::emitLocalSteps(ComponentOp component,
                 forEachBlockOf(part, [&](Value start, Value block, Value stop) {
                   Value firstItem = b.mul(block, b.index(kLevelBlock));
                   Value zero = b.index(0), last = b.sub(range, b.index(1));
-                  Value below = b.index(std::max<int64_t>(-window[0], 0));
-                  Value above = b.index(std::max<int64_t>(window[1], 0));
                   Value lastItem =
                       b.min(b.add(firstItem, b.index(kLevelBlock - 1)), last);
-                  Value inside = b.constant(b.getI1Type(), 1);
-                  if (cyclic)
-                    inside =
-                        both(b.cmp(arith::CmpIPredicate::uge, firstItem, below),
-                             b.cmp(arith::CmpIPredicate::ult,
-                                   b.add(lastItem, above), range));
-                  Value low = b.select(
-                      b.cmp(arith::CmpIPredicate::uge, firstItem, below),
-                      b.sub(firstItem, below), zero);
-                  Value high = b.min(b.add(lastItem, above), last);
-                  auto scan = scf::ForOp::create(
-                      b, b.loc, blockOf(low), b.add(blockOf(high), b.index(1)),
-                      b.index(1), ValueRange{inside});
-                  {
+                  Value readsAligned;
+                  if (!localReads) {
+                    Value below = b.index(std::max<int64_t>(-window[0], 0));
+                    Value above = b.index(std::max<int64_t>(window[1], 0));
+                    Value inside = b.constant(b.getI1Type(), 1);
+                    if (cyclic)
+                      inside = both(
+                          b.cmp(arith::CmpIPredicate::uge, firstItem, below),
+                          b.cmp(arith::CmpIPredicate::ult,
+                                b.add(lastItem, above), range));
+                    Value low = b.select(
+                        b.cmp(arith::CmpIPredicate::uge, firstItem, below),
+                        b.sub(firstItem, below), zero);
+                    Value high = b.min(b.add(lastItem, above), last);
+                    auto scan =
+                        scf::ForOp::create(b, b.loc, blockOf(low),
+                                           b.add(blockOf(high), b.index(1)),
+                                           b.index(1), ValueRange{inside});
                     OpBuilder::InsertionGuard inner(b);
                     b.setInsertionPointToStart(scan.getBody());
                     scf::YieldOp::create(b, b.loc,
                                          both(scan.getRegionIterArg(0),
                                               aligned(scan.getInductionVar())));
+                    readsAligned = scan.getResult(0);
+                  } else {
+                    // Only the blocks its reads reach: of each window, the
+                    // items from its first item's to its last item's read,
+                    // clamped into the range (none outside it under wrap).
+                    readsAligned = b.constant(b.getI1Type(), 1);
+                    auto asI64 = [&](Value index) -> Value {
+                      return arith::IndexCastOp::create(b, b.loc,
+                                                        b.getI64Type(), index);
+                    };
+                    Value firstI64 = asI64(firstItem),
+                          lastI64 = asI64(lastItem);
+                    Value zero64 = b.i64(0), range64 = asI64(range);
+                    Value lastOfRange = b.sub(range64, b.i64(1));
+                    auto clamp = [&](Value item) {
+                      return b.toIndex(b.min(b.max(item, zero64), lastOfRange));
+                    };
+                    for (auto [lo, hi] : readWindows) {
+                      Value lowItem = b.add(firstI64, b.i64(lo));
+                      Value highItem = b.add(lastI64, b.i64(hi));
+                      if (cyclic)
+                        readsAligned = both(
+                            readsAligned, both(b.cmp(arith::CmpIPredicate::sge,
+                                                     lowItem, zero64),
+                                               b.cmp(arith::CmpIPredicate::slt,
+                                                     highItem, range64)));
+                      auto reads = scf::ForOp::create(
+                          b, b.loc, blockOf(clamp(lowItem)),
+                          b.add(blockOf(clamp(highItem)), b.index(1)),
+                          b.index(1), ValueRange{readsAligned});
+                      OpBuilder::InsertionGuard inner(b);
+                      b.setInsertionPointToStart(reads.getBody());
+                      scf::YieldOp::create(
+                          b, b.loc,
+                          both(reads.getRegionIterArg(0),
+                               aligned(reads.getInductionVar())));
+                      readsAligned = reads.getResult(0);
+                    }
                   }
                   Part piece{start, b.add(part.first, b.sub(start, part.base)),
                              b.sub(stop, start), /*whole=*/false};
-                  auto branch = scf::IfOp::create(b, b.loc, TypeRange{},
-                                                  scan.getResult(0),
-                                                  /*withElseRegion=*/true);
+                  auto branch =
+                      scf::IfOp::create(b, b.loc, TypeRange{}, readsAligned,
+                                        /*withElseRegion=*/true);
                   OpBuilder::InsertionGuard inner(b);
                   b.setInsertionPointToStart(branch.thenBlock());
                   lanesOf(piece, [&](const Lane &lane) {
@@ -1065,46 +1116,57 @@ LogicalResult SimulationLowering::emitLocalSteps(ComponentOp component,
     };
     Value range = toI64(kernel.values.range);
     Value blockItems = b.i64(kLevelBlock);
-    // Whether the items a block's items reach (`below` before its first,
-    // `above` after its last, and, unless `clipped` to the range, all
-    // inside it) have its own sub-step: then the code is that sub-step,
-    // else minus `mixed(g, first, last)`, the finest sub-step an item of
-    // the block takes (a slot that is not a multiple of it starts none of
-    // them).
+    // Whether the items a block's items reach (through each `window` of
+    // offsets `lo, hi` from its first and last item and, unless `clipped`
+    // to the range, all inside it) have its own sub-step: then the code is
+    // that sub-step, else minus `mixed(g, first, last)`, the finest sub-step
+    // an item of the block takes (a slot that is not a multiple of it
+    // starts none of them).
     auto neighbourhoodCode =
-        [&](int64_t section, int64_t below, int64_t above, bool clipped,
-            function_ref<Value(Value, Value, Value)> mixed) {
+        [&](int64_t section, ArrayRef<std::pair<int64_t, int64_t>> windows,
+            bool clipped, function_ref<Value(Value, Value, Value)> mixed) {
           Value own = levelAt(g);
           Value firstItem = b.mul(g, blockItems);
           Value lastItem = b.min(b.add(firstItem, b.i64(kLevelBlock - 1)),
                                  b.sub(range, one));
-          Value low = b.sub(firstItem, b.i64(below));
-          Value high = b.add(lastItem, b.i64(above));
-          Value inside = b.constant(b.getI1Type(), 1);
-          if (!clipped)
-            inside = arith::AndIOp::create(
-                b, b.loc, b.cmp(arith::CmpIPredicate::sge, low, zero),
-                b.cmp(arith::CmpIPredicate::slt, high, range));
-          Value lowBlock =
-              arith::DivUIOp::create(b, b.loc, b.max(low, zero), blockItems);
-          Value highBlock = arith::DivUIOp::create(
-              b, b.loc, b.min(high, b.sub(range, one)), blockItems);
-          auto scan =
-              scf::ForOp::create(b, b.loc, lowBlock, b.add(highBlock, one), one,
-                                 ValueRange{inside});
-          {
-            OpBuilder::InsertionGuard inner(b);
-            b.setInsertionPointToStart(scan.getBody());
-            Value same = b.cmp(arith::CmpIPredicate::eq,
-                               levelAt(scan.getInductionVar()), own);
-            scf::YieldOp::create(
-                b, b.loc,
-                arith::AndIOp::create(b, b.loc, scan.getRegionIterArg(0), same)
-                    .getResult());
+          Value lastOfRange = b.sub(range, one);
+          Value inStep = b.constant(b.getI1Type(), 1);
+          for (auto [lo, hi] : windows) {
+            Value low = b.add(firstItem, b.i64(lo));
+            Value high = b.add(lastItem, b.i64(hi));
+            if (!clipped)
+              inStep = arith::AndIOp::create(
+                  b, b.loc, inStep,
+                  arith::AndIOp::create(
+                      b, b.loc, b.cmp(arith::CmpIPredicate::sge, low, zero),
+                      b.cmp(arith::CmpIPredicate::slt, high, range)));
+            // Clamped into the range: a read past an end reads the end's
+            // item (or, under zero, none; testing it too only costs time).
+            auto clamp = [&](Value item) {
+              return b.min(b.max(item, zero), lastOfRange);
+            };
+            Value lowBlock =
+                arith::DivUIOp::create(b, b.loc, clamp(low), blockItems);
+            Value highBlock =
+                arith::DivUIOp::create(b, b.loc, clamp(high), blockItems);
+            auto scan =
+                scf::ForOp::create(b, b.loc, lowBlock, b.add(highBlock, one),
+                                   one, ValueRange{inStep});
+            {
+              OpBuilder::InsertionGuard inner(b);
+              b.setInsertionPointToStart(scan.getBody());
+              Value same = b.cmp(arith::CmpIPredicate::eq,
+                                 levelAt(scan.getInductionVar()), own);
+              scf::YieldOp::create(b, b.loc,
+                                   arith::AndIOp::create(
+                                       b, b.loc, scan.getRegionIterArg(0), same)
+                                       .getResult());
+            }
+            inStep = scan.getResult(0);
           }
           Value code =
               b.ifThenElse(
-                   b.getI64Type(), scan.getResult(0),
+                   b.getI64Type(), inStep,
                    [&]() -> SmallVector<Value> { return {own}; },
                    [&]() -> SmallVector<Value> {
                      return {b.sub(zero, mixed(g, firstItem, lastItem))};
@@ -1114,7 +1176,7 @@ LogicalResult SimulationLowering::emitLocalSteps(ComponentOp component,
                   b.toIndex(b.add(b.mul(b.i64(section), blocks), g)));
         };
     // Every item of a block of the component takes the block's sub-step.
-    neighbourhoodCode(kLevelStepCodes, reach, reach, /*clipped=*/!cyclic,
+    neighbourhoodCode(kLevelStepCodes, readWindows, /*clipped=*/!cyclic,
                       [&](Value g, Value, Value) { return levelAt(g); });
     if (!fluxWriter)
       return;
@@ -1149,7 +1211,7 @@ LogicalResult SimulationLowering::emitLocalSteps(ComponentOp component,
       return minOver(b.max(b.add(innerHigh, one), lowEnd), end, finest,
                      interfaceLevel);
     };
-    neighbourhoodCode(kLevelFluxCodes, fluxBelow, fluxAbove,
+    neighbourhoodCode(kLevelFluxCodes, {{-fluxBelow, fluxAbove}},
                       /*clipped=*/false, finestInterface);
   };
 

@@ -48,6 +48,10 @@ namespace {
 /// writer's values (docs/Model.md, "Conservation").
 constexpr int64_t kMaxFluxWindow = 4096;
 
+/// The items of a block that chooses one level under lts (the bundle
+/// schema's LocalStepBlock).
+constexpr int64_t kLevelBlockItems = 32;
+
 struct SubstepLegalityPass
     : public sim::impl::SimSubstepLegalityBase<SubstepLegalityPass> {
   using Base::Base;
@@ -82,6 +86,7 @@ struct SubstepLegalityPass
       component.setSubSteppingAttr(
           SubSteppingAttr::get(&getContext(), verdict));
       component.removeLocalWindowAttr();
+      component.removeLocalReadsAttr();
       if (!hazard)
         continue;
       InFlightDiagnostic remark =
@@ -405,6 +410,9 @@ struct SubstepLegalityPass
       window = window.join(AccessPattern::window(own[0], own[1]));
     reader.setLocalWindowAttr(DenseI64ArrayAttr::get(
         &getContext(), {window.getMinOffset(), window.getMaxOffset()}));
+    // Reads through the pair's values join the reader's own: its kernels
+    // test the whole window.
+    reader.removeLocalReadsAttr();
     // The writer reads that state from the reader's time levels: its
     // window bounds the blocks one interface's evaluation reaches.
     AccessPattern state = cells.join(AccessPattern::own());
@@ -509,6 +517,43 @@ struct SubstepLegalityPass
   /// buffers allow local time steps, or completes `remark` with what does
   /// not and what to change (with a note at a gather unless it is the
   /// already `noted` read).
+  /// Records `local_reads` on `component`: the windows of its reads of its
+  /// own buffers in evaluate, merged where they overlap or touch, when they
+  /// leave a gap of a block or more inside `window` (a stencil on a
+  /// flattened grid, whose window spans rows it does not read). Whether a
+  /// block's neighbourhood is in step then depends only on the blocks
+  /// those windows reach: the same bits, fewer reads through the levels.
+  void recordLocalReads(const DependencyAnalysis &analysis,
+                        ComponentOp component, const AccessPattern &window) {
+    // The block's own items, which every neighbourhood holds.
+    SmallVector<std::pair<int64_t, int64_t>> reads = {{0, 0}};
+    for (const BufferAccess &access : analysis.getAccesses(component))
+      if (access.body == BodyKind::Evaluate &&
+          analysis.getWriter(access.buffer) == component)
+        for (ReadOp read : access.reads) {
+          AccessPattern pattern = analysis.getPattern(read);
+          reads.emplace_back(pattern.getMinOffset(), pattern.getMaxOffset());
+        }
+    llvm::sort(reads);
+    SmallVector<std::pair<int64_t, int64_t>> merged;
+    for (auto [lo, hi] : reads) {
+      if (!merged.empty() && lo <= merged.back().second + 1)
+        merged.back().second = std::max(merged.back().second, hi);
+      else
+        merged.emplace_back(lo, hi);
+    }
+    bool gap = false;
+    for (size_t k = 1; k < merged.size(); ++k)
+      gap |= merged[k].first - merged[k - 1].second > kLevelBlockItems;
+    if (!gap || merged.front().first != window.getMinOffset() ||
+        merged.back().second != window.getMaxOffset())
+      return;
+    SmallVector<int64_t> flat;
+    for (auto [lo, hi] : merged)
+      flat.append({lo, hi});
+    component.setLocalReadsAttr(DenseI64ArrayAttr::get(&getContext(), flat));
+  }
+
   void recordLocalWindow(const DependencyAnalysis &analysis,
                          ComponentOp component, ReadOp noted,
                          InFlightDiagnostic &remark) {
@@ -583,6 +628,7 @@ struct SubstepLegalityPass
     }
     component.setLocalWindowAttr(DenseI64ArrayAttr::get(
         &getContext(), {window.getMinOffset(), window.getMaxOffset()}));
+    recordLocalReads(analysis, component, window);
     // Blocks of 32 items: the bundle schema's LocalStepBlock.
     remark << "; under lts its blocks of 32 items take local time steps "
               "(window "

@@ -391,7 +391,10 @@ def Sim_ComponentOp : Sim_Op<"component", [
     their verdicts as attributes: `sub_stepping` and, for a `grid_sync`
     component that may take local time steps, `local_window = array<i64: lo,
     hi>`, the offsets at which it reads its own buffers (through the
-    fluxes of a flux pair too), and, for the flux writer of a flux pair,
+    fluxes of a flux pair too), with `local_reads = array<i64: lo0, hi0,
+    lo1, hi1, ...>` the windows of those reads where they leave gaps of a
+    block or more (a stencil on a flattened grid: the kernels then test only
+    the blocks the reads reach), and, for the flux writer of a flux pair,
     `flux_window = array<i64: lo, hi>`, the offsets at which its reader
     reads its `#sim.flux` buffers, with `local_window` the offsets at which
     it reads the reader's state (`--sim-substep-legality`);
@@ -426,6 +429,7 @@ def Sim_ComponentOp : Sim_Op<"component", [
                        FlatSymbolRefArrayAttr:$writes,
                        OptionalAttr<Sim_SubSteppingAttr>:$sub_stepping,
                        OptionalAttr<DenseI64ArrayAttr>:$local_window,
+                       OptionalAttr<DenseI64ArrayAttr>:$local_reads,
                        OptionalAttr<DenseI64ArrayAttr>:$flux_window,
                        OptionalAttr<Sim_AdvanceAttr>:$advance,
                        UnitAttr:$estimates,
