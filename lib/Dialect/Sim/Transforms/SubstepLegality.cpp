@@ -291,13 +291,6 @@ struct SubstepLegalityPass
                << " items of the reading item";
       return;
     }
-    // State of the writer's own makes it a dynamical component with a rate
-    // of its own (a slow component next to a fast one, which hip's big
-    // step already serves). Tying each of its items to the steps of the
-    // blocks that read it suits the two halves of a staggered scheme, where
-    // the reader reads the writer's items as interfaces between its own;
-    // read at the reader's own items only (a kick and a drift), it would
-    // evaluate a slow writer at its reader's rate.
     // A writer without state of its own computes its values from the
     // reader's state alone (a force): read at other items, each value would
     // be held over the steps of the coarsest block that reads it, which only
@@ -311,6 +304,13 @@ struct SubstepLegalityPass
                   "that its value holds over its writer's step";
       return;
     }
+    // State of the writer's own makes it a dynamical component with a rate
+    // of its own (a slow component next to a fast one, which hip's big
+    // step already serves). Tying each of its items to the steps of the
+    // blocks that read it suits the two halves of a staggered scheme, where
+    // the reader reads the writer's items as interfaces between its own;
+    // read at the reader's own items only (a kick and a drift), it would
+    // evaluate a slow writer at its reader's rate.
     if (ownState && fluxWindow->isOwn()) {
       refuse() << "it reads its own @" << ownState.getSymName() << ", and @"
                << readerName << " reads @" << name
@@ -513,16 +513,14 @@ struct SubstepLegalityPass
     return std::nullopt;
   }
 
-  /// Records `local_window` on a grid_sync component whose reads of its own
-  /// buffers allow local time steps, or completes `remark` with what does
-  /// not and what to change (with a note at a gather unless it is the
-  /// already `noted` read).
   /// Records `local_reads` on `component`: the windows of its reads of its
   /// own buffers in evaluate, merged where they overlap or touch, when they
-  /// leave a gap of a block or more inside `window` (a stencil on a
-  /// flattened grid, whose window spans rows it does not read). Whether a
-  /// block's neighbourhood is in step then depends only on the blocks
-  /// those windows reach: the same bits, fewer reads through the levels.
+  /// leave a gap of more than two blocks inside `window` (a stencil on a
+  /// flattened grid, whose window spans rows it does not read): the reads
+  /// of a block's items then skip a block between them, whichever block it
+  /// is. Whether a block's neighbourhood is in step then depends only on
+  /// the blocks those windows reach: the same bits, fewer reads through the
+  /// levels.
   void recordLocalReads(const DependencyAnalysis &analysis,
                         ComponentOp component, const AccessPattern &window) {
     // The block's own items, which every neighbourhood holds.
@@ -544,7 +542,7 @@ struct SubstepLegalityPass
     }
     bool gap = false;
     for (size_t k = 1; k < merged.size(); ++k)
-      gap |= merged[k].first - merged[k - 1].second > kLevelBlockItems;
+      gap |= merged[k].first - merged[k - 1].second > 2 * kLevelBlockItems;
     if (!gap || merged.front().first != window.getMinOffset() ||
         merged.back().second != window.getMaxOffset())
       return;
@@ -554,6 +552,10 @@ struct SubstepLegalityPass
     component.setLocalReadsAttr(DenseI64ArrayAttr::get(&getContext(), flat));
   }
 
+  /// Records `local_window` on a grid_sync component whose reads of its own
+  /// buffers allow local time steps, or completes `remark` with what does
+  /// not and what to change (with a note at a gather unless it is the
+  /// already `noted` read).
   void recordLocalWindow(const DependencyAnalysis &analysis,
                          ComponentOp component, ReadOp noted,
                          InFlightDiagnostic &remark) {

@@ -316,21 +316,21 @@ sim.simulation @two_stencils range(64) dt(1.0e-2 : f32) max_steps(4) {
 
 // -----
 
-// A five-point stencil on a 64x64 grid flattened row-major: the note
-// points at the read that sets the window's width (the row above, i-64),
-// not at the first read of a neighbour (i-1). local_window [-64, 64]; the
-// reads leave gaps of more than a block, so local_reads records their
+// A five-point stencil on a 128x128 grid flattened row-major: the note
+// points at the read that sets the window's width (the row above, i-128),
+// not at the first read of a neighbour (i-1). local_window [-128, 128]; the
+// reads leave gaps of more than two blocks, so local_reads records their
 // windows.
 
 // CHECK-LABEL: sim.simulation @plate
-// CHECK: sim.component @Heat writes(@U) attributes {local_reads = array<i64: -64, -64, -1, 1, 64, 64>, local_window = array<i64: -64, 64>, sub_stepping = #sim<sub_stepping grid_sync>}
-sim.simulation @plate range(4096) dt(1.0e-2 : f64) max_steps(4) {
+// CHECK: sim.component @Heat writes(@U) attributes {local_reads = array<i64: -128, -128, -1, 1, 128, 128>, local_window = array<i64: -128, 128>, sub_stepping = #sim<sub_stepping grid_sync>}
+sim.simulation @plate range(16384) dt(1.0e-2 : f64) max_steps(4) {
   sim.buffer @U : f64 interp(#sim.linear) boundary(wrap) init {
   ^bb0(%i: index):
     %c = arith.constant 1.0 : f64
     sim.yield %c : f64
   }
-  // expected-remark @+1 {{@Heat needs a grid-wide barrier between sub-steps: its evaluate body reads @U, which it writes, at i-64..i+64, so a thread could read another item while that item is between sub-steps; under lts its blocks of 32 items take local time steps (window i-64..i+64)}}
+  // expected-remark @+1 {{@Heat needs a grid-wide barrier between sub-steps: its evaluate body reads @U, which it writes, at i-128..i+128, so a thread could read another item while that item is between sub-steps; under lts its blocks of 32 items take local time steps (window i-128..i+128)}}
   sim.component @Heat writes(@U) num_steps {
   ^bb0(%i: index, %t: i64):
     %n = arith.constant 4 : i32
@@ -338,14 +338,14 @@ sim.simulation @plate range(4096) dt(1.0e-2 : f64) max_steps(4) {
   } evaluate {
   ^bb0(%i: index, %t: i64, %n: i32, %dt: f64):
     %c1 = arith.constant 1 : index
-    %c64 = arith.constant 64 : index
+    %c128 = arith.constant 128 : index
     %iw = arith.subi %i, %c1 : index
     %ie = arith.addi %i, %c1 : index
-    %is = arith.subi %i, %c64 : index
-    %in = arith.addi %i, %c64 : index
+    %is = arith.subi %i, %c128 : index
+    %in = arith.addi %i, %c128 : index
     %uw = sim.read @U[%iw] : f64
     %ue = sim.read @U[%ie] : f64
-    // expected-note @+1 {{reads @U at i-64}}
+    // expected-note @+1 {{reads @U at i-128}}
     %us = sim.read @U[%is] : f64
     %un = sim.read @U[%in] : f64
     %u = sim.read @U[%i] : f64

@@ -392,8 +392,8 @@ def Sim_ComponentOp : Sim_Op<"component", [
     component that may take local time steps, `local_window = array<i64: lo,
     hi>`, the offsets at which it reads its own buffers (through the
     fluxes of a flux pair too), with `local_reads = array<i64: lo0, hi0,
-    lo1, hi1, ...>` the windows of those reads where they leave gaps of a
-    block or more (a stencil on a flattened grid: the kernels then test only
+    lo1, hi1, ...>` the windows of those reads where they leave gaps of
+    more than two blocks (a stencil on a flattened grid: the kernels then test only
     the blocks the reads reach), and, for the flux writer of a flux pair,
     `flux_window = array<i64: lo, hi>`, the offsets at which its reader
     reads its `#sim.flux` buffers, with `local_window` the offsets at which
