@@ -333,9 +333,11 @@ FailureOr<Stepping> mlir::sim::decideStepping(ComponentOp component,
   // read through the back edge. One of them takes the whole step in one
   // evaluation (its own minimum is at least m); the others sub-step.
   // lts: the flux writer of a flux pair (a recorded flux_window) runs inside
-  // its reader's slots, so its estimate no longer bounds the big step.
+  // its reader's slots, so its smallest estimate no longer bounds the big
+  // step; where it bounds it under hip, its largest does (docs/Model.md,
+  // "The big step").
   if (strategy == Strategy::lts && component.getFluxWindowAttr())
-    return Stepping{Advance::local_flux, false};
+    return Stepping{Advance::local_flux, boundsBigStep(component)};
   // lts: the reader of a pair takes local steps even without num_steps of
   // its own: its writer's estimates bound its blocks.
   if (strategy == Strategy::lts && component.getLocalWindowAttr() &&

@@ -326,6 +326,23 @@ private:
         bad(what + ": " + about +
             " keeps its levels, but only a component that takes local time "
             "steps has levels");
+      if (component.largest_estimate != 0) {
+        if (component.advance != Advance::LocalFlux || !component.estimates)
+          bad(what + ": " + about +
+              " has a largest estimate, but only a pair's writer that "
+              "estimates the big step has one");
+        claimSlots(component.largest_estimate,
+                   uint64_t(schema::LargestEstimateSlot::Slots),
+                   about + "'s largest estimate");
+      } else if (component.advance == Advance::LocalFlux &&
+                 component.estimates) {
+        bad(what + ": " + about +
+            " estimates the big step as a pair's writer, but has no clock "
+            "slots for its largest estimate");
+      }
+      if (component.keeps_estimate && component.largest_estimate == 0)
+        bad(what + ": " + about +
+            " keeps its estimate, but has no largest estimate");
     }
   }
 

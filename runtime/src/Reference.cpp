@@ -780,11 +780,21 @@ void ReferenceSession::bigStep(int64_t end) {
   stepSize = 0;
 
   // The size m of the big step: the minimum num_steps at T of the
-  // components that estimate it, within the strategy's cap.
+  // components that estimate it, within the strategy's cap; a pair writer
+  // under lts bounds it by its largest num_steps instead (docs/Model.md,
+  // "The big step").
   int64_t m = stepCap;
   for (int32_t c = 0; c < components; ++c) {
     if (!stepping[size_t(c)].estimates())
       continue;
+    if (stepping[size_t(c)].advance() == Advance::LocalFlux) {
+      int64_t largest = 0;
+      for (int64_t i = 0; i < range; ++i)
+        largest = std::max(largest, numSteps(c, i, now));
+      if (range > 0)
+        m = std::min(m, largest);
+      continue;
+    }
     for (int64_t i = 0; i < range; ++i)
       m = std::min(m, numSteps(c, i, now));
   }

@@ -215,6 +215,20 @@ void Session::forgetKeptLevels() {
     if (c < levelsKept.size())
       levelsKept[c] = false;
   }
+  // A kept largest estimate (keeps_estimate) came from the same num_steps:
+  // 0 in its Kept slot has the next big step take it again.
+  for (const auto &component : plan_->components) {
+    if (!component->keeps_estimate)
+      continue;
+    if (!any)
+      backend->activate();
+    any = true;
+    uint32_t kept = component->largest_estimate +
+                    uint32_t(schema::LargestEstimateSlot::Kept);
+    backend->zero(clockMemory.pointer + kept * sizeof(int64_t),
+                  sizeof(int64_t));
+    estimatesKept.erase(component->largest_estimate);
+  }
 }
 
 int Session::bufferIndex(const std::string &name) const {
@@ -690,8 +704,10 @@ void Session::init() {
         if (memory.pointer)
           backend->zero(memory.pointer, memory.bytes);
   }
-  // The levels were zeroed (or just allocated), kept codes included.
+  // The levels were zeroed (or just allocated), kept codes included, and
+  // the clock with them, kept estimates included.
   levelsKept.assign(plan_->components.size(), false);
+  estimatesKept.clear();
   prepare();
   runUncounted(PhaseKind::Init);
   // Whatever the init phase's own exchanges refreshed, every ghost holds
@@ -1354,6 +1370,14 @@ bool Session::noOpLaunch(const Prepared &p) {
   return !(t.size > 0 && t.subBegin - t.begin < t.size);
 }
 
+bool Session::keptEstimateSlot(uint32_t slot) const {
+  return std::any_of(plan_->components.begin(), plan_->components.end(),
+                     [&](const auto &component) {
+                       return component->keeps_estimate &&
+                              component->largest_estimate == slot;
+                     });
+}
+
 bool Session::settledRound(const Prepared &p) {
   if (p.roundOf < 0 || p.launch->shape != LaunchShape::Single ||
       plan_->components[size_t(p.roundOf)]->advance != Advance::GridSubSteps)
@@ -1382,7 +1406,13 @@ void Session::launchDistributed(Prepared &p, bool counted, bool step) {
     SubStepTimes t = subStepTimes(stepping);
     slot = t.subBegin - t.begin;
   }
-  const std::vector<uint32_t> &slots = p.launch->reduce_min;
+  // A kept largest estimate (keeps_estimate) that the ranks agreed on
+  // before holds the same value on every rank until its slot is zeroed: no
+  // all-reduce for it. Every rank keeps the same record, so all skip alike.
+  std::vector<uint32_t> slots;
+  for (uint32_t slot : p.launch->reduce_min)
+    if (!estimatesKept.count(slot))
+      slots.push_back(slot);
   // A round's estimate decides nothing once its component has at most one
   // base step of the big step left (the next sub-step is then 1 or none):
   // no all-reduce for it. Every rank holds the same sub-step clock, so all
@@ -1399,6 +1429,10 @@ void Session::launchDistributed(Prepared &p, bool counted, bool step) {
     for (size_t i = 0; i < slots.size(); ++i)
       backend->write(clockMemory.pointer + slots[i] * sizeof(int64_t),
                      &values[i], sizeof(int64_t));
+    // A kept estimate that some rank took (not 0) is now every rank's.
+    for (size_t i = 0; i < slots.size(); ++i)
+      if (values[i] != 0 && keptEstimateSlot(slots[i]))
+        estimatesKept.insert(slots[i]);
     if (counted)
       ++metrics.host_syncs;
   }
@@ -1664,6 +1698,17 @@ void Session::restoreClock(int64_t, const std::vector<int64_t> &saved) {
   if (distributed() && comm->rank() != 0)
     for (const auto &component : plan_->components)
       clock[component->evaluations] = 0;
+  // A pair writer's largest estimate is taken again (a kept one came from
+  // the parameters of the run that wrote the checkpoint, which this one may
+  // have changed), and a hint from the file could name a group outside the
+  // range.
+  for (const auto &component : plan_->components) {
+    if (component->largest_estimate == 0)
+      continue;
+    for (uint32_t slot = 0; slot < uint32_t(schema::LargestEstimateSlot::Slots);
+         ++slot)
+      clock[component->largest_estimate + slot] = 0;
+  }
   backend->write(clockMemory.pointer, clock.data(),
                  clock.size() * sizeof(int64_t));
   onBoundary = true;

@@ -21,6 +21,7 @@
 #include <map>
 #include <memory>
 #include <optional>
+#include <set>
 #include <string>
 #include <tuple>
 #include <vector>
@@ -270,6 +271,8 @@ private:
   /// has at most one base step of the big step left (so its all-reduce of
   /// the estimate would decide nothing).
   bool settledRound(const Prepared &p);
+  /// Whether clock `slot` is a kept largest estimate (keeps_estimate).
+  bool keptEstimateSlot(uint32_t slot) const;
   /// The maximum over the ranks that hold items of them of the codes of
   /// this big step's blocks within each component's level reach of this
   /// rank's block, in the levels of `components` (a launch's
@@ -352,8 +355,14 @@ private:
   /// no gathering. Cleared at every run from the initial state (init), as
   /// the kept codes are.
   std::vector<bool> levelsKept;
+  /// The clock slots of kept largest estimates (keeps_estimate) that the
+  /// ranks have all-reduced since the slot was last zeroed: later big steps
+  /// read the kept value, so they need no all-reduce. Cleared with
+  /// levelsKept.
+  std::set<uint32_t> estimatesKept;
   /// Zeroes the levels of every keeps_levels component, kept codes
-  /// included, after dt or a parameter changed (set).
+  /// included, and every kept largest estimate (keeps_estimate), after dt or
+  /// a parameter changed (set).
   void forgetKeptLevels();
   /// Host memory of the backend's allocateHost (page-locked on CUDA),
   /// grown as needed: per peer, what this rank sends and receives.

@@ -153,14 +153,14 @@ TEST(Bundle, RejectsAWrongMagicVersionSizeOrReservedField) {
     change(edited);
     return schema::encodeHeader(edited) + good.substr(schema::kHeaderSize);
   };
-  for (uint32_t old : {1u, 2u, 3u, 4u, 5u})
+  for (uint32_t old : {1u, 2u, 3u, 4u, 5u, 6u})
     EXPECT_EQ(errorOf(withField([&](schema::Header &h) { h.version = old; })),
               "bundle 'test.simb': format version " + std::to_string(old) +
-                  " is no longer supported: this runtime reads version 6; "
+                  " is no longer supported: this runtime reads version 7; "
                   "recompile the scene with sim-translate --sim-to-bundle");
   EXPECT_TRUE(contains(
-      errorOf(withField([](schema::Header &h) { h.version = 7; })),
-      "format version 7 is not supported (this runtime reads version 6)"));
+      errorOf(withField([](schema::Header &h) { h.version = 8; })),
+      "format version 8 is not supported (this runtime reads version 7)"));
   EXPECT_TRUE(
       contains(errorOf(withField([](schema::Header &h) { h.size += 8; })),
                "the header gives a file size of"));

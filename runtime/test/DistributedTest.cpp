@@ -595,6 +595,23 @@ TEST(Distributed, VerifierChecksTheRecords) {
   expectBad(std::move(contents),
             "component 'Mix' keeps its levels, but only a component that "
             "takes local time steps has levels");
+  // A largest estimate: only a pair's writer that estimates has one, and
+  // it has one.
+  contents = ringContents(Boundary::Wrap);
+  contents.plans[0]->components[0]->largest_estimate = 3;
+  expectBad(std::move(contents),
+            "component 'Mix' has a largest estimate, but only a pair's writer "
+            "that estimates the big step has one");
+  contents = ringContents(Boundary::Wrap);
+  contents.plans[0]->components[0]->keeps_estimate = true;
+  expectBad(std::move(contents), "component 'Mix' keeps its estimate, but has "
+                                 "no largest estimate");
+  contents = ringContents(Boundary::Wrap);
+  contents.plans[0]->components[0]->advance = Advance::LocalFlux;
+  contents.plans[0]->components[0]->estimates = true;
+  expectBad(std::move(contents),
+            "component 'Mix' estimates the big step as a pair's writer, but "
+            "has no clock slots for its largest estimate");
   // The half a sub-step wrote: only a grid-wide sub-step's launch has one.
   contents = ringContents(Boundary::Wrap);
   contents.plans[0]->phases[1]->body[2]->launch->exchange.clear();

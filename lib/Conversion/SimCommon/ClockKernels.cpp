@@ -32,13 +32,20 @@ LogicalResult SimulationLowering::emitResetClock(OpBuilder &launches) {
 
 /// One component's estimate of the next big step: the minimum of
 /// `num_steps` over all items at the start T' of the next big step, into the
-/// clock. It runs before `advance` commits the current big step, so it
-/// computes T' and the parity itself, and does nothing past the end.
+/// clock (a pair writer's under lts: the largest, capped at the step cap;
+/// docs/Model.md, "The big step"). It runs before `advance` commits the
+/// current big step, so it computes T' and the parity itself, and does
+/// nothing past the end.
 LogicalResult SimulationLowering::emitEstimate(ComponentOp component,
                                                OpBuilder &launches) {
   Kernel kernel =
       beginKernel(getKernelName(kernels, "estimate", component.getSymName()));
-  LaneVar minimum =
+  EstimateSlots slots{kSlotEstimate, kSlotEstimateHint};
+  auto largest = largestEstimateSlots.find(component);
+  if (largest != largestEstimateSlots.end())
+    slots =
+        EstimateSlots{largest->second, largest->second + kLargestHint, true};
+  LaneVar combined =
       target.createLaneVar(b, kernel, b.getI32Type(), b.i32(kNoEstimate));
   Value begin, size, parity;
   readClock(kernel, begin, size, parity);
@@ -47,17 +54,26 @@ LogicalResult SimulationLowering::emitEstimate(ComponentOp component,
   Value nextParity = b.select(stepped, b.xorOne(parity), parity);
   setHalves(kernel, nextParity, nextParity);
   Value end = b.load(kernel.clock, b.index(kSlotEnd));
-  b.ifThen(b.cmp(arith::CmpIPredicate::slt, next, end), [&] {
-    estimateInto(kernel, component, minimum, next, kSlotEstimate);
-  });
+  Value due = b.cmp(arith::CmpIPredicate::slt, next, end);
+  // A kept estimate is taken until advance keeps one. (Its own slot would
+  // not do: the groups that run after another wrote it would skip theirs.)
+  if (keepsEstimate(component))
+    due = arith::AndIOp::create(
+        b, b.loc, due,
+        b.cmp(arith::CmpIPredicate::eq,
+              b.load(kernel.clock, b.index(slots.slot + kLargestKept)),
+              b.i64(0)));
+  b.ifThen(due,
+           [&] { estimateInto(kernel, component, combined, next, slots); });
   return endKernel(kernel, simplan::LaunchShape::items, launches);
 }
 
 /// Commits the big step that just ended (T += m, flip the parity when it
 /// advanced) and decides the next one: m = min(estimate, cap, end - T), 0
 /// past the end, rounded down to a power of two when a component takes
-/// local time steps. Also counts big steps by size and the ones the end cut
-/// short (clock slot Cuts), and restarts the sub-step clocks.
+/// local time steps (and then at most each pair writer's largest estimate).
+/// Also counts big steps by size and the ones the end cut short (clock slot
+/// Cuts), and restarts the sub-step clocks.
 LogicalResult SimulationLowering::emitAdvance(OpBuilder &launches,
                                               bool hasEstimates) {
   Kernel kernel = beginKernel(getKernelName(kernels, "advance"));
@@ -77,6 +93,28 @@ LogicalResult SimulationLowering::emitAdvance(OpBuilder &launches,
   Value remaining = b.sub(slot(kSlotEnd), now);
   Value cap = b.i64(stepCap);
   Value bound = hasEstimates ? b.min(slot(kSlotEstimate), cap) : cap;
+  // A pair writer's stiff items bound its reader's blocks, not the big
+  // step; where all its items ask for short steps, the coarsest does
+  // (docs/Model.md, "The big step"). Its slots hold the largest estimate
+  // negated, 0 when no item was estimated: the one just taken, and the one
+  // kept (keeps_estimate), of which at most one is not 0.
+  for (ComponentOp component : order) {
+    auto largest = largestEstimateSlots.find(component);
+    if (largest == largestEstimateSlots.end())
+      continue;
+    Value negated = slot(largest->second);
+    if (keepsEstimate(component)) {
+      negated = b.min(negated, slot(largest->second + kLargestKept));
+      setSlot(largest->second + kLargestKept, negated);
+    }
+    Value estimated = b.cmp(arith::CmpIPredicate::slt, negated, zero);
+    bound = b.min(bound, b.select(estimated, b.sub(zero, negated), cap));
+    setSlot(largest->second, zero);
+    // Each rank's estimate took the largest over its own items: the ranks
+    // agree on the global one (the minimum of the negated values).
+    if (distributed)
+      pendingReduce.push_back(largest->second);
+  }
   Value positive = b.cmp(arith::CmpIPredicate::sgt, remaining, zero);
   Value next = b.select(positive, b.min(bound, remaining), zero);
   // Local time steps nest only in a big step of a power of two: the

@@ -127,7 +127,8 @@ LogicalResult SimulationLowering::emitRounds(ComponentOp component,
           b, b.loc, due,
           b.cmp(arith::CmpIPredicate::eq, subStepsDone(kernel), b.i64(0)));
     b.ifThen(due, [&] {
-      estimateInto(kernel, component, minimum, now, sub + kSubEstimate);
+      estimateInto(kernel, component, minimum, now,
+                   {sub + kSubEstimate, kSlotEstimateHint});
     });
     if (failed(endKernel(kernel, simplan::LaunchShape::items, roundLaunches)))
       return failure();

@@ -222,8 +222,9 @@ LogicalResult SimulationLowering::checkRecordedDecisions() {
 }
 
 /// Assigns clock slots: the fixed ones, one evaluation counter per
-/// component, a sub-step clock per component that takes grid-wide sub-steps,
-/// then the histogram of big-step sizes (index m, 0..max_steps).
+/// component, a sub-step clock per component that takes grid-wide or local
+/// sub-steps, the largest estimate and its hint per pair writer that
+/// estimates, then the histogram of big-step sizes (index m, 0..max_steps).
 void SimulationLowering::planClock() {
   int64_t next = kFirstFreeSlot;
   for (ComponentOp component : order)
@@ -233,6 +234,12 @@ void SimulationLowering::planClock() {
         component.getAdvance() == Advance::local_steps) {
       subClockSlots[component] = next;
       next += kSubClockSlots;
+    }
+  for (ComponentOp component : order)
+    if (component.getAdvance() == Advance::local_flux &&
+        component.getEstimates()) {
+      largestEstimateSlots[component] = next;
+      next += kLargestSlots;
     }
   histogramSlot = next;
   clockSlots = next + maxSteps + 1;
@@ -518,6 +525,18 @@ SmallVector<Value> SimulationLowering::inline_(Region &body, ValueRange args,
   return zeros;
 }
 
+bool SimulationLowering::keepsEstimate(ComponentOp writer) {
+  // A pair's reader keeps its levels when neither its num_steps nor its
+  // writer's can change during a run (invariant_levels), so neither can the
+  // writer's largest estimate.
+  if (!largestEstimateSlots.contains(writer))
+    return false;
+  return llvm::any_of(order, [&](ComponentOp reader) {
+    return reader.getAdvance() == Advance::local_steps &&
+           reader.getInvariantLevels() && findFluxWriter(reader) == writer;
+  });
+}
+
 /// num_steps of one item, at least 1 (values below 1 count as 1).
 Value SimulationLowering::estimate(Kernel &kernel, ComponentOp component,
                                    Value item, Value time,
@@ -527,45 +546,54 @@ Value SimulationLowering::estimate(Kernel &kernel, ComponentOp component,
 }
 
 void SimulationLowering::estimateInto(Kernel &kernel, ComponentOp component,
-                                      LaneVar minimum, Value time,
-                                      int64_t slot) {
+                                      LaneVar combined, Value time,
+                                      EstimateSlots slots) {
+  // A minimum is final once it holds 1 (an estimate is at least 1), the
+  // largest estimate once it holds the step cap (a longer one bounds
+  // nothing): what the slot holds then.
+  Value settled = b.i64(slots.largest ? -stepCap : 1);
+  int64_t slot = slots.slot;
   auto lanes = [&](Value base) {
     target.forEachLane(b, kernel, base, [&](const Lane &lane) {
       b.ifThen(lane.active, [&] {
         KernelValues values = kernel.values;
         values.item = lane.item;
         Value steps = estimate(kernel, component, lane.item, time, values);
-        target.laneStore(b, b.min(target.laneLoad(b, minimum, lane), steps),
-                         minimum, lane);
+        if (slots.largest)
+          steps = b.sub(b.i32(0), b.min(steps, b.i32(int32_t(stepCap))));
+        target.laneStore(b, b.min(target.laneLoad(b, combined, lane), steps),
+                         combined, lane);
       });
     });
   };
   if (!target.reducesPerGroup()) {
     // Groups run side by side and combine once, after the last: a group
-    // that starts when the slot already holds 1 (an estimate is at least
-    // 1, so an earlier group found the minimum) skips its num_steps. Each
-    // lane reads the slot itself (one broadcast load per warp); a value
-    // read early is only larger, so it skips less, never wrongly, and the
-    // combination after the loop is the same for every lane.
+    // that starts when the slot already holds its settled value (an earlier
+    // group found it) skips its num_steps. Each lane reads the slot itself
+    // (one broadcast load per warp); a value read early is only larger, so
+    // it skips less, never wrongly, and the combination after the loop is
+    // the same for every lane.
     target.forEachGroup(b, kernel, [&](Value base) {
       Value current = b.load(kernel.clock, b.index(slot));
-      b.ifThen(b.cmp(arith::CmpIPredicate::sgt, current, b.i64(1)),
+      b.ifThen(b.cmp(arith::CmpIPredicate::sgt, current, settled),
                [&] { lanes(base); });
     });
-    target.reduceIntoClock(b, kernel, minimum, arith::AtomicRMWKind::mins,
+    target.reduceIntoClock(b, kernel, combined, arith::AtomicRMWKind::mins,
                            slot);
     return;
   }
   // An estimate is at least 1, so once the slot holds 1 (an item of this or
   // an earlier group, or another estimate of the same decision) no item can
-  // change it: the groups after that skip their num_steps. With per-item
-  // step counts nearly every group holds an item at 1, and the estimate
-  // would otherwise cost as much as a component's evaluation. The slot ends
-  // at the same minimum either way.
+  // change it: the groups after that skip their num_steps (a largest
+  // estimate: once it holds the step cap). With per-item step counts nearly
+  // every group holds an item at 1, and the estimate would otherwise cost as
+  // much as a component's evaluation. The slot ends at the same value either
+  // way.
   //
   // An estimate starts at the group where the last one found an item at 1
   // (clock slot EstimateHint, which the big step's estimate and the rounds
-  // of grid-wide sub-steps share): a stiff item that holds every big step
+  // of grid-wide sub-steps share; a largest estimate has a hint of its own,
+  // where it last reached the cap): a stiff item that holds every big step
   // or sub-step at 1 is usually where it was, and the groups before it
   // would otherwise be estimated in vain in every big step or round (the
   // rounds of a state-dependent num_steps cost as much as the sub-steps
@@ -574,20 +602,20 @@ void SimulationLowering::estimateInto(Kernel &kernel, ComponentOp component,
   // Only the order of the groups depends on the hint, and no result
   // depends on the order.
   Value hint = b.atomic(arith::AtomicRMWKind::addi, b.i64(0), kernel.clock,
-                        b.index(kSlotEstimateHint));
+                        b.index(slots.hintSlot));
   auto group = [&](Value base) {
     Value current = b.atomic(arith::AtomicRMWKind::addi, b.i64(0), kernel.clock,
                              b.index(slot));
-    b.ifThen(b.cmp(arith::CmpIPredicate::sgt, current, b.i64(1)), [&] {
+    b.ifThen(b.cmp(arith::CmpIPredicate::sgt, current, settled), [&] {
       lanes(base);
-      target.reduceIntoClock(b, kernel, minimum, arith::AtomicRMWKind::mins,
+      target.reduceIntoClock(b, kernel, combined, arith::AtomicRMWKind::mins,
                              slot);
       Value after = b.atomic(arith::AtomicRMWKind::addi, b.i64(0), kernel.clock,
                              b.index(slot));
-      b.ifThen(b.cmp(arith::CmpIPredicate::eq, after, b.i64(1)), [&] {
+      b.ifThen(b.cmp(arith::CmpIPredicate::eq, after, settled), [&] {
         b.atomic(arith::AtomicRMWKind::assign,
                  arith::IndexCastOp::create(b, b.loc, b.getI64Type(), base),
-                 kernel.clock, b.index(kSlotEstimateHint));
+                 kernel.clock, b.index(slots.hintSlot));
       });
     });
   };
@@ -636,16 +664,20 @@ LogicalResult SimulationLowering::run() {
         buffer.getReplicatedAttr());
   }
   for (ComponentOp component : order) {
-    auto subClock = subClockSlots.find(component);
+    auto slotAttr = [&](const llvm::DenseMap<Operation *, int64_t> &slots) {
+      auto found = slots.find(component);
+      return found == slots.end()
+                 ? IntegerAttr()
+                 : planBuilder.getI64IntegerAttr(found->second);
+    };
     simplan::ComponentOp::create(
         planBuilder, component.getLoc(), component.getSymNameAttr(),
         component.getWrites(),
         planBuilder.getI64IntegerAttr(evaluationSlots.lookup(component)),
         component.getAdvanceAttr(), unitIf(component.getEstimates()),
-        subClock == subClockSlots.end()
-            ? IntegerAttr()
-            : planBuilder.getI64IntegerAttr(subClock->second),
-        /*level_reach=*/IntegerAttr());
+        slotAttr(subClockSlots),
+        /*level_reach=*/IntegerAttr(), /*keeps_levels=*/UnitAttr(),
+        slotAttr(largestEstimateSlots), unitIf(keepsEstimate(component)));
   }
 
   for (TotalOp total : simulation.getTotals())
@@ -669,11 +701,13 @@ LogicalResult SimulationLowering::run() {
   OpBuilder step = phase(simplan::PhaseKind::step);
   // The estimates, the decision, then every component as the front end
   // recorded it advances.
+  // (hasEstimates: some estimate takes the minimum, into clock slot
+  // Estimate; a pair writer's largest has slots of its own.)
   bool hasEstimates = false;
   for (ComponentOp component : order) {
     if (!component.getEstimates())
       continue;
-    hasEstimates = true;
+    hasEstimates |= !largestEstimateSlots.contains(component);
     if (failed(emitEstimate(component, step)))
       return failure();
   }

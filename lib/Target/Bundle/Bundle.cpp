@@ -424,6 +424,9 @@ FailureOr<std::unique_ptr<fb::PlanT>> PlanReader::read(simplan::PlanOp op) {
       record->sub_clock = component.getSubClock().value_or(0);
       record->level_reach = uint64_t(component.getLevelReach().value_or(0));
       record->keeps_levels = component.getKeepsLevels();
+      record->largest_estimate =
+          uint32_t(component.getLargestEstimate().value_or(0));
+      record->keeps_estimate = component.getKeepsEstimate();
       plan->components.push_back(std::move(record));
     } else if (auto total = dyn_cast<simplan::TotalOp>(child)) {
       auto found = scene.totals.find(total.getSymName());

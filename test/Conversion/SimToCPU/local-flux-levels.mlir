@@ -64,6 +64,32 @@ sim.simulation @rod range(100) dt(1.0e-2 : f32) max_steps(8) {
   sim.observe [@U]
 }
 
+// The flux writer's estimate bounds the big step by its largest num_steps
+// (docs/Model.md, "The big step"): capped at max_steps, negated, combined
+// into its own slot (14) by minima, groups stopping once the slot holds
+// the cap (their hint in 15); taken only while advance has kept none (16),
+// since its reader keeps its levels (keeps_estimate).
+// CHECK-LABEL: func.func @estimate_Flux(
+// CHECK:         %[[KEPT:.*]] = memref.load %arg0[%c16]
+// CHECK:         arith.cmpi eq, %[[KEPT]], %c0_i64
+// CHECK:         memref.atomic_rmw addi %c0_i64, %arg0[%c15]
+// CHECK:         arith.cmpi sgt, %{{.*}}, %c-8_i64
+// CHECK:         %[[CAPPED:.*]] = arith.minsi %{{.*}}, %c8_i32 : i32
+// CHECK-NEXT:    arith.subi %c0_i32, %[[CAPPED]] : i32
+// CHECK:         memref.atomic_rmw mins %{{.*}}, %arg0[%c14]
+// advance: the big step at most the largest estimate, the one taken or the
+// one kept (the cap when neither), which it keeps; the slot of the one
+// taken starts the next at 0.
+// CHECK-LABEL: func.func @advance(
+// CHECK:         %[[TAKEN:.*]] = memref.load %arg0[%c14]
+// CHECK-NEXT:    %[[OLD:.*]] = memref.load %arg0[%c16]
+// CHECK-NEXT:    %[[NEGATED:.*]] = arith.minsi %[[TAKEN]], %[[OLD]]
+// CHECK-NEXT:    memref.store %[[NEGATED]], %arg0[%c16]
+// CHECK-NEXT:    %[[ANY:.*]] = arith.cmpi slt, %[[NEGATED]], %c0_i64
+// CHECK-NEXT:    %[[LARGEST:.*]] = arith.subi %c0_i64, %[[NEGATED]]
+// CHECK-NEXT:    %[[BOUND:.*]] = arith.select %[[ANY]], %[[LARGEST]], %c8_i64
+// CHECK-NEXT:    arith.minsi %c8_i64, %[[BOUND]]
+// CHECK-NEXT:    memref.store %c0_i64, %arg0[%c14]
 // CHECK-LABEL: func.func @levels_Cells(
 //                The cells' codes, then one atomic per block.
 // CHECK:         } {simplan.lanes}
@@ -110,3 +136,7 @@ sim.simulation @rod range(100) dt(1.0e-2 : f32) max_steps(8) {
 // WIDE-NOT:   lanes stay scalar
 // WIDE:       lanes stay scalar: an op it cannot widen: memref.atomic_rmw
 // WIDE-NOT:   lanes stay scalar
+
+// CHECK-LABEL: simplan.plan
+// CHECK:         simplan.component @Flux writes [@F] evaluations(8) advance local_flux estimates largest_estimate(14) keeps_estimate
+// CHECK-NEXT:    simplan.component @Cells writes [@U] evaluations(9) advance local_steps sub_clock(10) keeps_levels

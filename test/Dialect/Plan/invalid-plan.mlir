@@ -101,6 +101,41 @@ simplan.plan @p strategy("lts") kernels(@k) range(4) dt(1.0e-2 : f32) max_steps(
 
 // -----
 
+simplan.plan @p strategy("lts") kernels(@k) range(4) dt(1.0e-2 : f32) max_steps(2) step_cap(2) group_size(32) clock_slots(16) histogram(13) {
+  // expected-error @+1 {{'simplan.component' op has a largest_estimate but advances in whole_step; only a pair's writer (local_flux) that estimates bounds the big step by its largest num_steps}}
+  simplan.component @C writes [] evaluations(8) advance whole_step estimates largest_estimate(9)
+}
+
+// -----
+
+simplan.plan @p strategy("lts") kernels(@k) range(4) dt(1.0e-2 : f32) max_steps(2) step_cap(2) group_size(32) clock_slots(16) histogram(13) {
+  // expected-error @+1 {{'simplan.component' op has a largest_estimate but does not estimate; only a pair's writer (local_flux) that estimates bounds the big step by its largest num_steps}}
+  simplan.component @E writes [] evaluations(8) advance local_flux largest_estimate(9)
+}
+
+// -----
+
+simplan.plan @p strategy("lts") kernels(@k) range(4) dt(1.0e-2 : f32) max_steps(2) step_cap(2) group_size(32) clock_slots(16) histogram(13) {
+  // expected-error @+1 {{'simplan.component' op estimates and advances in local_flux but has no largest_estimate slots}}
+  simplan.component @E writes [] evaluations(8) advance local_flux estimates
+}
+
+// -----
+
+simplan.plan @p strategy("lts") kernels(@k) range(4) dt(1.0e-2 : f32) max_steps(2) step_cap(2) group_size(32) clock_slots(16) histogram(13) {
+  // expected-error @+1 {{'simplan.component' op keeps its estimate but has no largest_estimate}}
+  simplan.component @E writes [] evaluations(8) advance local_flux keeps_estimate
+}
+
+// -----
+
+simplan.plan @p strategy("lts") kernels(@k) range(4) dt(1.0e-2 : f32) max_steps(2) step_cap(2) group_size(32) clock_slots(16) histogram(13) {
+  // expected-error @+1 {{'simplan.component' op keeps its largest estimate in clock slots 11 to 13, which are not between the fixed slots and the histogram [8, 13)}}
+  simplan.component @E writes [] evaluations(8) advance local_flux estimates largest_estimate(11)
+}
+
+// -----
+
 simplan.plan @p strategy("hip") kernels(@k) range(4) dt(1.0e-2 : f32) max_steps(2) step_cap(2) group_size(32) clock_slots(12) histogram(9) {
   // expected-error @+1 {{custom op 'simplan.component' unknown keyword 'sideways'}}
   simplan.component @C writes [] evaluations(8) advance sideways

@@ -53,6 +53,12 @@ constexpr int64_t kSubSize = int64_t(::sim::bundle::SubClockSlot::Size);
 constexpr int64_t kSubCount = int64_t(::sim::bundle::SubClockSlot::Done);
 constexpr int64_t kSubEstimate = int64_t(::sim::bundle::SubClockSlot::Estimate);
 constexpr int64_t kSubClockSlots = int64_t(::sim::bundle::SubClockSlot::Slots);
+constexpr int64_t kLargestHint =
+    int64_t(::sim::bundle::LargestEstimateSlot::Hint);
+constexpr int64_t kLargestKept =
+    int64_t(::sim::bundle::LargestEstimateSlot::Kept);
+constexpr int64_t kLargestSlots =
+    int64_t(::sim::bundle::LargestEstimateSlot::Slots);
 
 /// Local time steps: the code levels_C combines sub-steps into
 /// (kLevelCode - sub-step, by an atomic maximum whose identity is 0). The
@@ -138,10 +144,23 @@ private:
                              const KernelValues &values);
   Value estimate(Kernel &kernel, ComponentOp component, Value item, Value time,
                  const KernelValues &values);
-  /// The minimum of `component`'s estimates at local time `time` over every
-  /// item (through lane variable `minimum`), combined into clock `slot`.
-  void estimateInto(Kernel &kernel, ComponentOp component, LaneVar minimum,
-                    Value time, int64_t slot);
+  /// A pair writer's largest estimate cannot change during a run, so its
+  /// clock slot keeps it (`keeps_estimate`).
+  bool keepsEstimate(ComponentOp writer);
+  /// Where an estimate reduces: the minimum of `num_steps` over every item
+  /// into clock `slot` (starting from the group of `hintSlot`), or, for
+  /// `largest`, the maximum of `num_steps` capped at the step cap, kept
+  /// negated so that the clock's minima (and a distributed run's all-reduce
+  /// of them) combine it; 0 is then no estimate.
+  struct EstimateSlots {
+    int64_t slot;
+    int64_t hintSlot;
+    bool largest = false;
+  };
+  /// `component`'s estimates at local time `time` over every item (through
+  /// lane variable `combined`), combined into the clock as `slots` says.
+  void estimateInto(Kernel &kernel, ComponentOp component, LaneVar combined,
+                    Value time, EstimateSlots slots);
 
   /// A group cache of hip-cache: the fill the front end recorded and its
   /// memory.
@@ -217,6 +236,10 @@ private:
   SmallVector<ParamOp> params;
   SmallVector<ComponentOp> order;
   llvm::DenseMap<Operation *, int64_t> evaluationSlots, subClockSlots;
+  /// A pair writer's estimate under lts (docs/Model.md, "The big step"): its
+  /// largest num_steps, negated, the group where it last reached the step
+  /// cap, and the estimate kept (kLargestSlots from the slot recorded).
+  llvm::DenseMap<Operation *, int64_t> largestEstimateSlots;
   int64_t histogramSlot = 0, clockSlots = 0;
   /// Some component advances in `local_steps`: every big step is rounded
   /// down to a power of two (docs/Model.md, "Local time stepping").

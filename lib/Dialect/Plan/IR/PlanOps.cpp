@@ -243,6 +243,15 @@ LogicalResult PlanOp::verifyRegions() {
              << "counts its evaluations in clock slot " << slot
              << ", which is not between the fixed slots and the histogram ["
              << firstFree << ", " << getHistogramSlot() << ")";
+    std::optional<int64_t> largest = component.getLargestEstimate();
+    int64_t largestSlots = int64_t(::sim::bundle::LargestEstimateSlot::Slots);
+    if (largest &&
+        (*largest < firstFree || *largest + largestSlots > histogram))
+      return component.emitOpError()
+             << "keeps its largest estimate in clock slots " << *largest
+             << " to " << *largest + largestSlots - 1
+             << ", which are not between the fixed slots and the histogram ["
+             << firstFree << ", " << getHistogramSlot() << ")";
     std::optional<int64_t> subClock = component.getSubClock();
     if (subClock &&
         (*subClock < firstFree || *subClock + kSubClockSlots > histogram))
@@ -283,6 +292,21 @@ LogicalResult ComponentOp::verify() {
     return emitOpError() << "keeps levels but advances in "
                          << mlir::sim::stringifyAdvance(getAdvance())
                          << "; only local_steps components have levels";
+  bool pairWriter = getAdvance() == mlir::sim::Advance::local_flux;
+  if (getLargestEstimate() && (!pairWriter || !getEstimates())) {
+    InFlightDiagnostic diag = emitOpError() << "has a largest_estimate but ";
+    if (!getEstimates())
+      diag << "does not estimate";
+    else
+      diag << "advances in " << mlir::sim::stringifyAdvance(getAdvance());
+    return diag << "; only a pair's writer (local_flux) that estimates "
+                   "bounds the big step by its largest num_steps";
+  }
+  if (getEstimates() && pairWriter && !getLargestEstimate())
+    return emitOpError() << "estimates and advances in local_flux but has no "
+                            "largest_estimate slots";
+  if (getKeepsEstimate() && !getLargestEstimate())
+    return emitOpError() << "keeps its estimate but has no largest_estimate";
   return success();
 }
 

@@ -447,8 +447,8 @@ struct SubstepLegalityPass
           << "@" << name << " and @" << readerName
           << " form an item pair: under lts @" << name
           << " evaluates an item whenever its block starts a "
-             "sub-step, so its num_steps no longer bounds the big "
-             "step, and @"
+             "sub-step, so its num_steps bounds that block rather than "
+             "the big step (only its largest value does), and @"
           << readerName << "'s blocks take local time steps (window "
           << window.str() << ")";
     else
@@ -459,7 +459,8 @@ struct SubstepLegalityPass
              "it (at "
           << fluxWindow->str() << ") starts a sub-step, and @" << readerName
           << " reads the value it computed then until the next one, so "
-             "its num_steps no longer bounds the big step, and @"
+             "its num_steps bounds that block rather than the big step "
+             "(only its largest value does), and @"
           << readerName << "'s blocks take local time steps (window "
           << window.str() << ")";
   }

@@ -36,8 +36,11 @@ constexpr char kMagic[8] = {'S', 'I', 'M', 'B', 'N', 'D', 'L', '\0'};
 /// ghost items at all); version 5 adds `exchange_local_flux` (likewise);
 /// version 6 gives `levels @C` an eighth section, the codes kept for a
 /// component with `invariant_levels` (a version 5 runtime would allocate
-/// too little memory for them).
-constexpr uint32_t kFormatVersion = 6;
+/// too little memory for them); version 7 lets a pair's writer bound the
+/// big step by its largest num_steps under lts (`largest_estimate`: a
+/// version 6 reference executor would take its smallest and disagree with
+/// the kernels).
+constexpr uint32_t kFormatVersion = 7;
 constexpr size_t kHeaderSize = 32;
 /// The largest bundle a runtime reads (a bundle of every strategy of the
 /// paper's scenes takes well under 1 MiB).

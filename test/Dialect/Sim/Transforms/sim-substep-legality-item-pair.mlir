@@ -39,7 +39,7 @@ sim.simulation @pair range(64) dt(1.0e-2 : f64) max_steps(4) {
     %c = arith.constant 0.0 : f64
     sim.yield %c : f64
   }
-  // expected-remark @+1 {{@Force and @Integrate form an item pair: under lts @Force evaluates an item whenever its block starts a sub-step, so its num_steps no longer bounds the big step, and @Integrate's blocks take local time steps (window i-1..i+1)}}
+  // expected-remark @+1 {{@Force and @Integrate form an item pair: under lts @Force evaluates an item whenever its block starts a sub-step, so its num_steps bounds that block rather than the big step (only its largest value does), and @Integrate's blocks take local time steps (window i-1..i+1)}}
   sim.component @Force writes(@F) num_steps {
   ^bb0(%i: index, %t: i64):
     %c4 = arith.constant 4 : i32
@@ -212,7 +212,7 @@ sim.simulation @no_reader_steps range(64) dt(1.0e-2 : f64) max_steps(4) {
     %c = arith.constant 0.0 : f64
     sim.yield %c : f64
   }
-  // expected-remark @+1 {{@Force and @Integrate form an item pair: under lts @Force evaluates an item whenever its block starts a sub-step, so its num_steps no longer bounds the big step, and @Integrate's blocks take local time steps (window i-1..i+1)}}
+  // expected-remark @+1 {{@Force and @Integrate form an item pair: under lts @Force evaluates an item whenever its block starts a sub-step, so its num_steps bounds that block rather than the big step (only its largest value does), and @Integrate's blocks take local time steps (window i-1..i+1)}}
   sim.component @Force writes(@F) num_steps {
   ^bb0(%i: index, %t: i64):
     %c4 = arith.constant 4 : i32
@@ -772,7 +772,7 @@ sim.simulation @staggered range(64) dt(1.0e-2 : f64) max_steps(4) {
     %c = arith.constant 0.0 : f64
     sim.yield %c : f64
   }
-  // expected-remark @+1 {{@Vel and @Disp form an item pair: under lts @Vel evaluates an item whenever the coarsest block that reads it (at i-1..i) starts a sub-step, and @Disp reads the value it computed then until the next one, so its num_steps no longer bounds the big step, and @Disp's blocks take local time steps (window i-1..i+1)}}
+  // expected-remark @+1 {{@Vel and @Disp form an item pair: under lts @Vel evaluates an item whenever the coarsest block that reads it (at i-1..i) starts a sub-step, and @Disp reads the value it computed then until the next one, so its num_steps bounds that block rather than the big step (only its largest value does), and @Disp's blocks take local time steps (window i-1..i+1)}}
   sim.component @Vel writes(@V) num_steps {
   ^bb0(%i: index, %t: i64):
     %c4 = arith.constant 4 : i32

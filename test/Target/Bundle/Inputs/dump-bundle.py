@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Prints a .simb bundle (docs/Bundle.md, format 2) for FileCheck.
 
-Checks the 32-byte header (magic, version 6, the file size, zlib's CRC-32 of
+Checks the 32-byte header (magic, version 7, the file size, zlib's CRC-32 of
 everything after the header, the reserved field), decodes the FlatBuffer
 after it with flatc into JSON (flatc --json --strict-json --raw-binary
 --defaults-json, against runtime/schema/bundle.fbs), and prints one line
@@ -84,8 +84,8 @@ def check_header(data, quiet):
     magic, version, crc, size, reserved = struct.unpack_from("<8sIIQQ", data)
     if magic != MAGIC:
         fail("the magic is %r, not %r" % (magic, MAGIC))
-    if version != 6:
-        fail("the format version is %d, not 6" % version)
+    if version != 7:
+        fail("the format version is %d, not 7" % version)
     if size != len(data):
         fail("the header gives a size of %d bytes, the file has %d"
              % (size, len(data)))
@@ -96,7 +96,7 @@ def check_header(data, quiet):
     if reserved:
         fail("the reserved field is %d, not 0" % reserved)
     if not quiet:
-        print("header: magic SIMBNDL, version 6, size %d (the file's), "
+        print("header: magic SIMBNDL, version 7, size %d (the file's), "
               "crc32 matches the payload, reserved 0" % size)
 
 

@@ -245,13 +245,22 @@ def Plan_ComponentOp : Plan_Op<"component", [Symbol, HasParent<"PlanOp">]> {
     (the sim dialect's `invariant_levels`) records `keeps_levels`: its
     kernels keep every block's code from the first big step longer than
     one base step on, so a distributed run gathers its codes for that big
-    step only.
+    step only. Under `lts` the writer of a pair (`local_flux`) that
+    estimates bounds the big step by its largest `num_steps`, not its
+    smallest (docs/Model.md, "The big step"): it records
+    `largest_estimate`, the first of three clock slots (the estimate being
+    taken, negated, 0 when there is none; where its last one reached the
+    step cap; the estimate kept), and, when its reader keeps its levels,
+    `keeps_estimate`: its estimate cannot change either, so `advance` keeps
+    the first one taken until the runtime zeroes the kept slot (a new run,
+    new parameters), and a distributed run all-reduces it once.
 
     ```mlir
     simplan.component @C0 writes [@B0] evaluations(8) advance whole_step estimates
     simplan.component @C1 writes [@B1] evaluations(9) advance grid_substeps sub_clock(10)
     simplan.component @C2 writes [@B2] evaluations(11) advance local_steps sub_clock(12) level_reach(161)
     simplan.component @C3 writes [@B3] evaluations(13) advance local_steps sub_clock(14) level_reach(97) keeps_levels
+    simplan.component @E writes [@F] evaluations(18) advance local_flux estimates largest_estimate(19) keeps_estimate
     ```
   }];
   let arguments = (ins SymbolNameAttr:$sym_name,
@@ -259,13 +268,17 @@ def Plan_ComponentOp : Plan_Op<"component", [Symbol, HasParent<"PlanOp">]> {
                        Plan_AdvanceAttr:$advance, UnitAttr:$estimates,
                        OptionalAttr<I64Attr>:$sub_clock,
                        OptionalAttr<I64Attr>:$level_reach,
-                       UnitAttr:$keeps_levels);
+                       UnitAttr:$keeps_levels,
+                       OptionalAttr<I64Attr>:$largest_estimate,
+                       UnitAttr:$keeps_estimate);
   let assemblyFormat = [{
     $sym_name `writes` $writes `evaluations` `(` $evaluations `)`
     `advance` custom<EnumKeyword>($advance) (`estimates` $estimates^)?
     (`sub_clock` `(` $sub_clock^ `)`)?
     (`level_reach` `(` $level_reach^ `)`)?
-    (`keeps_levels` $keeps_levels^)? attr-dict
+    (`keeps_levels` $keeps_levels^)?
+    (`largest_estimate` `(` $largest_estimate^ `)`)?
+    (`keeps_estimate` $keeps_estimate^)? attr-dict
   }];
   let hasVerifier = 1;
 }
