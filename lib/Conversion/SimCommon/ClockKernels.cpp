@@ -75,7 +75,7 @@ LogicalResult SimulationLowering::emitEstimate(ComponentOp component,
 /// Also counts big steps by size and the ones the end cut short (clock slot
 /// Cuts), and restarts the sub-step clocks.
 LogicalResult SimulationLowering::emitAdvance(OpBuilder &launches,
-                                              bool hasEstimates) {
+                                              bool minimumEstimated) {
   Kernel kernel = beginKernel(getKernelName(kernels, "advance"));
   Value clock = kernel.clock;
   auto slot = [&](int64_t index) { return b.load(clock, b.index(index)); };
@@ -92,7 +92,7 @@ LogicalResult SimulationLowering::emitAdvance(OpBuilder &launches,
       b.add(slot(kSlotBigSteps), b.extend(stepped, b.getI64Type()));
   Value remaining = b.sub(slot(kSlotEnd), now);
   Value cap = b.i64(stepCap);
-  Value bound = hasEstimates ? b.min(slot(kSlotEstimate), cap) : cap;
+  Value bound = minimumEstimated ? b.min(slot(kSlotEstimate), cap) : cap;
   // A pair writer's stiff items bound its reader's blocks, not the big
   // step; where all its items ask for short steps, the coarsest does
   // (docs/Model.md, "The big step"). Its slots hold the largest estimate
@@ -139,7 +139,7 @@ LogicalResult SimulationLowering::emitAdvance(OpBuilder &launches,
   });
   // Each rank's estimate kernels took the minimum over its own items: the
   // ranks agree on the global minimum before the decision.
-  if (distributed && hasEstimates)
+  if (distributed && minimumEstimated)
     pendingReduce.push_back(kSlotEstimate);
   for (ComponentOp component : order) {
     auto it = subClockSlots.find(component);

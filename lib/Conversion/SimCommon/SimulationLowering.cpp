@@ -700,18 +700,18 @@ LogicalResult SimulationLowering::run() {
   // step: estimates, the decision, the components in schedule order.
   OpBuilder step = phase(simplan::PhaseKind::step);
   // The estimates, the decision, then every component as the front end
-  // recorded it advances.
-  // (hasEstimates: some estimate takes the minimum, into clock slot
-  // Estimate; a pair writer's largest has slots of its own.)
-  bool hasEstimates = false;
+  // recorded it advances. `minimumEstimated`: some estimate takes the
+  // minimum into clock slot Estimate (a pair writer's largest estimate has
+  // slots of its own).
+  bool minimumEstimated = false;
   for (ComponentOp component : order) {
     if (!component.getEstimates())
       continue;
-    hasEstimates |= !largestEstimateSlots.contains(component);
+    minimumEstimated |= !largestEstimateSlots.contains(component);
     if (failed(emitEstimate(component, step)))
       return failure();
   }
-  if (failed(emitAdvance(step, hasEstimates)))
+  if (failed(emitAdvance(step, minimumEstimated)))
     return failure();
   for (ComponentOp component : order) {
     LogicalResult result = success();

@@ -188,7 +188,7 @@ private:
   LogicalResult emitExact(BufferOp buffer, OpBuilder &launches);
   LogicalResult emitTotal(TotalOp total, OpBuilder &launches);
   LogicalResult emitEstimate(ComponentOp component, OpBuilder &launches);
-  LogicalResult emitAdvance(OpBuilder &launches, bool hasEstimates);
+  LogicalResult emitAdvance(OpBuilder &launches, bool minimumEstimated);
   LogicalResult emitEvaluate(ComponentOp component, OpBuilder &launches);
   LogicalResult emitSubSteps(ComponentOp component, OpBuilder &launches);
   LogicalResult emitRounds(ComponentOp component, OpBuilder &launches);
