@@ -13,7 +13,9 @@ Two shapes:
            i-40..i+40 and through gathers, the first one also through the
            back edge; num_steps constant, by region, by a band that moves
            with the time, by item, from the state, or out of range (0,
-           negative, INT32_MAX), or no num_steps at all
+           negative, INT32_MAX), or no num_steps at all; sometimes an
+           oscillator whose position has a Hermite interpolation, and
+           parameters (a rate, and a mode that makes every num_steps 1)
   pair     a writer and a reader that may form a flux pair or an item pair
            under lts (docs/Model.md), sometimes breaking one of its rules,
            sometimes followed by a third component and a total
@@ -23,24 +25,31 @@ compiler rejects with a diagnostic counts as rejected (its first error is
 printed with -v); a compiler that crashes, or a run that disagrees with the
 reference executor, fails the check. Each scene runs on the CPU backend
 for every strategy, also with groups of 7 items and on 2 threads, with
---output-every 7 (hip, lts), and lts with the per-lane level limit
-(--sim-cpu-levels-per-lane) at groups of 1 and 64. A run whose state
-grows past the floats (NaN or infinity on both executors) counts as
-diverged, not failed: the scene is useless, not wrong.
+--output-every 7 (hip, lts), lts with the per-lane level limit
+(--sim-cpu-levels-per-lane) at groups of 1 and 64, and with other values
+of its parameters and dt. With --ptxas its PTX must assemble for sm_90
+under every strategy without a spill. With --ranks it also runs on that many ranks
+(sim-run --distributed under mpirun) and must give the one-process result
+bit for bit. A run whose state grows past the floats (NaN or infinity on
+both executors) counts as diverged, not failed: the scene is useless, not
+wrong.
 
 usage: utils/random-scenes.py [--seeds A-B|N ...] [--shape stencil|pair|any]
-         [--jobs J] [--keep DIR] [--sim-translate PATH] [--sim-run PATH] [-v]
+         [--jobs J] [--keep DIR] [--ranks R ...] [--ptxas PATH]
+         [--sim-translate PATH]
+         [--sim-run PATH] [-v]
 
-Writes one line per failure with the seed, the scene's path (under --keep,
-else a temporary folder that is then removed) and the command that failed;
-exits with 1 when something failed. `--print SEED` writes one seed's scene
-to stdout. docs/Testing.md, "Random scenes".
+Writes one line per failure with the seed, where to find the scene and the
+command that failed, and exits with 1 when something failed. `--print
+SEED` writes one seed's scene to stdout. docs/Testing.md, "Random scenes".
 """
 
 import argparse
 import concurrent.futures
+import json
 import os
 import random
+import shlex
 import shutil
 import subprocess
 import sys
@@ -57,6 +66,7 @@ class SceneWriter:
         self.rng = random.Random(seed)
         self.count = 0
         self.lines = []
+        self.parameters = False
 
     def fresh(self):
         self.count += 1
@@ -203,6 +213,17 @@ class SceneWriter:
             out.append("  ^bb0(%i: index, %t: i64):")
             self.lines = []
             steps = self.num_steps(readable)
+            if self.parameters:
+                # @mode = 1 makes every item take single base steps.
+                mode = self.fresh()
+                self.emit(f"{mode} = sim.get_param @mode : i32")
+                uniform = self.fresh()
+                self.emit(f"{uniform} = arith.cmpi ne, {mode}, "
+                          f"{self.int_constant(0)} : i32")
+                selected = self.fresh()
+                self.emit(f"{selected} = arith.select {uniform}, "
+                          f"{self.int_constant(1)}, {steps} : i32")
+                steps = selected
             out += self.lines
             out.append(f"    sim.yield {steps} : i32")
             out.append("  } evaluate {")
@@ -237,6 +258,18 @@ class SceneWriter:
         self.emit(f"{difference} = arith.subf {target}, {old} : {ty}")
         scaled = self.fresh()
         self.emit(f"{scaled} = arith.mulf {h}, {self.float_constant(rate)} : {ty}")
+        if self.parameters:
+            # A rate of at most 1, so that the relaxation stays one.
+            factor = self.fresh()
+            self.emit(f"{factor} = sim.get_param @rate : {self.scalar}")
+            if ty != self.scalar:
+                splat = self.fresh()
+                self.emit(f"{splat} = vector.broadcast {factor} : {self.scalar} "
+                          f"to {ty}")
+                factor = splat
+            product = self.fresh()
+            self.emit(f"{product} = arith.mulf {scaled}, {factor} : {ty}")
+            scaled = product
         new = self.fresh()
         if self.rng.random() < 0.5:
             self.emit(f"{new} = math.fma {scaled}, {difference}, {old} : {ty}")
@@ -263,12 +296,28 @@ class StencilScene(SceneWriter):
         rng.shuffle(writer)
         out = [f"sim.simulation @random range({self.range}) dt(1.0e-2 : "
                f"{self.scalar}) max_steps({self.max_steps}) {{"]
+        self.parameters = rng.random() < 0.3
+        if self.parameters:
+            out.append(f"  sim.param @rate = 1.0 : {self.scalar}")
+            out.append("  sim.param @mode = 0 : i32")
         for name in buffers:
             interp = rng.choice(["", "", " interp(#sim.linear)",
                                  " interp(#sim.cubic)", " interp(none)"])
             boundary = rng.choice(["", " boundary(clamp)", " boundary(zero)",
                                    " boundary(wrap)"])
             self.buffer(out, name, interp + boundary)
+        # Now and then an oscillator whose position has a Hermite
+        # interpolation from its velocity.
+        oscillator = None
+        if rng.random() < 0.25:
+            oscillator = components
+            components += 1
+            self.buffer(out, "@Hv", rng.choice([" interp(none)", "",
+                                                " boundary(zero)"]))
+            self.buffer(out, "@Hx", " interp(#sim.hermite<@Hv>)" + rng.choice(
+                ["", " boundary(wrap)"]))
+            buffers += ["@Hv", "@Hx"]
+            writer += [oscillator, oscillator]
         order = list(range(components))
         rng.shuffle(order)
         # A component reads what it or an earlier one writes; the first one
@@ -281,8 +330,34 @@ class StencilScene(SceneWriter):
             else:
                 readable[c] = [b for b, w in zip(buffers, writer)
                                if w in order[:position + 1]]
+            if c != oscillator:
+                # Only the oscillator reads its velocity (interp(none)).
+                readable[c] = [b for b in readable[c] if b != "@Hv"] or [
+                    b for b, w in zip(buffers, writer) if w == c]
         for c in range(components):
             writes = [b for b, w in zip(buffers, writer) if w == c]
+
+            def oscillate(c=c):
+                # v' = k (s - x) with s a read of another buffer and
+                # h^2 k <= 1 at the largest step: symplectic Euler stays
+                # bounded.
+                x, v = self.read("@Hx", 0), self.read("@Hv", 0)
+                others = [b for b in readable[c] if b not in ("@Hv", "@Hx")]
+                target = (self.read(rng.choice(others), rng.randint(-2, 2))
+                          if others else self.read("@Hx", rng.choice([-1, 1])))
+                ty = self.buffer_type
+                h = self.step_length()
+                pull = self.fresh()
+                self.emit(f"{pull} = arith.subf {target}, {x} : {ty}")
+                stiffness = rng.uniform(0.1, 0.9) / (self.max_steps * 1e-2) ** 2
+                force = self.fresh()
+                self.emit(f"{force} = arith.mulf {pull}, "
+                          f"{self.float_constant(stiffness)} : {ty}")
+                v1 = self.fresh()
+                self.emit(f"{v1} = math.fma {h}, {force}, {v} : {ty}")
+                x1 = self.fresh()
+                self.emit(f"{x1} = math.fma {h}, {v1}, {x} : {ty}")
+                return [v1, x1]
 
             def evaluate(c=c, writes=writes):
                 reads = []
@@ -308,7 +383,8 @@ class StencilScene(SceneWriter):
                                    rng.uniform(0.1, 0.95) / (self.max_steps * 1e-2))
                         for b in writes]
 
-            self.component(out, f"@C{c}", writes, readable[c], evaluate,
+            self.component(out, f"@C{c}", writes, readable[c],
+                           oscillate if c == oscillator else evaluate,
                            rng.random() < 0.8)
         out.append(f"  sim.schedule [{', '.join(f'@C{c}' for c in order)}]")
         observed = [b for b in buffers if rng.random() < 0.8] or buffers[:1]
@@ -446,15 +522,65 @@ def scene_text(seed, shape):
     return SHAPES[shape](seed).write()
 
 
-def run(command, log):
+def run(command, log, env=None):
     """Runs `command` with its output in `log`; returns the exit status
     (124 when it ran past two minutes)."""
     with open(log, "w") as out:
         try:
             return subprocess.run(command, stdout=out, stderr=subprocess.STDOUT,
-                                  timeout=120).returncode
+                                  timeout=120, env=env).returncode
         except subprocess.TimeoutExpired:
             return 124
+
+
+# What a distributed run must reproduce besides the dumped buffers.
+COMPARED = ["evaluations", "big_steps", "big_step_histogram", "cut_big_steps",
+            "totals", "steps_done"]
+
+
+def compare_ranks(args, seed, folder, scene, steps, log):
+    """Runs the scene on one process and on each of args.ranks ranks under
+    every strategy; returns what differs, or None."""
+    bundle = os.path.join(folder, f"scene-{seed}.distributed.simb")
+    command = [args.sim_translate, scene, "--sim-to-bundle",
+               "--sim-cpu-isas=host", "--sim-distributed", "-o", bundle]
+    status = run(command, log)
+    if status == 1 and first_line(log, ["error:"]):
+        return None  # A diagnostic: nothing to compare.
+    if status != 0:
+        return f"{' '.join(command)} exited with {status}"
+    env = dict(os.environ)
+    if hasattr(os, "geteuid") and os.geteuid() == 0:
+        env.update(OMPI_ALLOW_RUN_AS_ROOT="1",
+                   OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
+    for strategy in args.strategies:
+        def dump(name, prefix, extra):
+            out = os.path.join(folder, f"scene-{seed}.{strategy}.{name}")
+            shutil.rmtree(out, ignore_errors=True)
+            command = prefix + [args.sim_run, bundle, "--backend", "cpu",
+                                "--strategy", strategy, "--steps", steps,
+                                "--threads", "1", "--group-size", "8",
+                                "--no-init-check", "--dump", out, "--json",
+                                out + ".json"] + extra
+            if run(command, log, env) != 0:
+                return None, " ".join(command)
+            with open(out + ".json") as report:
+                return (dumped(out), json.load(report)), None
+        one, failed = dump("one", [], [])
+        if one is None:
+            return f"{failed} failed"
+        for ranks in args.ranks:
+            many, failed = dump(f"ranks{ranks}",
+                                shlex.split(args.mpirun) + ["-n", str(ranks)],
+                                ["--distributed"])
+            if many is None:
+                return f"{failed} failed"
+            what = [f"{file} bytes" for file in one[0]
+                    if many[0].get(file) != one[0][file]]
+            what += [key for key in COMPARED if many[1].get(key) != one[1].get(key)]
+            if what:
+                return f"{strategy} on {ranks} ranks differs: {', '.join(what)}"
+    return None
 
 
 def first_line(log, words):
@@ -491,6 +617,13 @@ def check(args, seed, folder):
              for s in ("hip", "lts") if s in args.strategies]
     if "lts" in args.strategies:
         runs += [("lts", "lanes", ["--group-size", g]) for g in ("1", "64")]
+    with open(scene) as text:
+        parameters = "sim.param @mode" in text.read()
+    if parameters:
+        runs += [(s, "plain", ["--set", "rate=0.5", "--set", "mode=1"])
+                 for s in ("simple", "hip", "lts") if s in args.strategies]
+        runs += [(s, "plain", ["--set", "rate=0.25", "--set", "dt=0.005"])
+                 for s in ("hip", "lts") if s in args.strategies]
     for strategy, bundle, extra in runs:
         command = [args.sim_run, bundles[bundle], "--backend", "cpu",
                    "--strategy", strategy, "--steps", steps, "--check",
@@ -502,7 +635,95 @@ def check(args, seed, folder):
             return "diverged", strategy
         why = first_line(log, ["check: FAIL", "error", "differ"])
         return "failed", f"{' '.join(command)} exited with {status}: {why}"
+    failed = compare_restart(args, seed, folder, bundles["plain"], steps, log)
+    if failed:
+        return "failed", failed
+    if args.ptxas:
+        failed = assemble(args, seed, folder, scene, log)
+        if failed:
+            return "failed", failed
+    # A rank holds at least one group of 8 items.
+    if args.ranks and 8 * max(args.ranks) <= scene_range(scene):
+        differs = compare_ranks(args, seed, folder, scene, steps, log)
+        if differs:
+            return "failed", differs
     return "passed", ""
+
+
+def dumped(folder):
+    files = {}
+    for file in sorted(os.listdir(folder)):
+        with open(os.path.join(folder, file), "rb") as data:
+            files[file] = data.read()
+    return files
+
+
+def compare_restart(args, seed, folder, bundle, steps, log):
+    """A run stopped halfway and continued from its checkpoint must end
+    where one run stopped at the same output time ends; returns what
+    differs, or None."""
+    half = str(max(1, int(steps) // 2))
+    for strategy in ("hip", "lts"):
+        if strategy not in args.strategies:
+            continue
+        base = os.path.join(folder, f"scene-{seed}.{strategy}")
+        checkpoint = base + ".checkpoint"
+        common = [args.sim_run, bundle, "--backend", "cpu", "--strategy",
+                  strategy, "--no-init-check"]
+        commands = [
+            common + ["--steps", steps, "--output-every", half, "--dump",
+                      base + ".whole"],
+            common + ["--steps", half, "--checkpoint", checkpoint],
+            common + ["--steps", steps, "--restart", checkpoint,
+                      "--output-every", half, "--dump", base + ".restarted"],
+        ]
+        for stale in (".whole", ".restarted"):
+            shutil.rmtree(base + stale, ignore_errors=True)
+        for command in commands:
+            status = run(command, log)
+            if status != 0:
+                return f"{' '.join(command)} exited with {status}"
+        whole, restarted = dumped(base + ".whole"), dumped(base + ".restarted")
+        if not whole:
+            return f"{strategy}: sim-run --dump wrote nothing"
+        differs = [f for f in whole if restarted.get(f) != whole[f]]
+        if differs:
+            return (f"{strategy}: continued from a checkpoint at base step "
+                    f"{half}, {', '.join(differs)} differ")
+    return None
+
+
+def assemble(args, seed, folder, scene, log):
+    """Lowers the scene to PTX for every strategy and assembles it with
+    ptxas for sm_90; returns what failed (an error or a spill), or None."""
+    ptx = os.path.join(folder, f"scene-{seed}.ptx")
+    for strategy in args.strategies:
+        command = [args.sim_translate, "--sim-to-ptx", scene,
+                   f"--sim-strategy={strategy}", "-o", ptx]
+        status = run(command, log)
+        if status != 0:
+            return f"{' '.join(command)} exited with {status}"
+        command = [args.ptxas, "-arch=sm_90", "-v", ptx, "-o", ptx + ".cubin"]
+        if run(command, log) != 0:
+            return f"{' '.join(command)}: {first_line(log, ['error'])}"
+        kernel = None
+        with open(log) as text:
+            for line in text:
+                if "Function properties for" in line:
+                    kernel = line.split()[-1]
+                elif "bytes spill stores" in line:
+                    words = line.split()
+                    stores, loads = int(words[4]), int(words[8])
+                    if stores or loads:
+                        return (f"{strategy}: {kernel} spills {stores} bytes "
+                                f"and reloads {loads}")
+    return None
+
+
+def scene_range(scene):
+    with open(scene) as text:
+        header = text.readline()
+    return int(header.split("range(", 1)[1].split(")", 1)[0])
 
 
 def seeds(specs):
@@ -535,6 +756,18 @@ def main():
                         help="the compiler (default: next to this script's "
                         "build/bin, then PATH)")
     parser.add_argument("--sim-run", default=None)
+    parser.add_argument("--ranks", type=int, nargs="*", default=[],
+                        help="also run every scene whose range gives each "
+                        "rank a group of 8 items on this many ranks "
+                        "(sim-run --distributed) and compare with one "
+                        "process bit for bit, e.g. --ranks 2 3")
+    parser.add_argument("--mpirun", default="mpirun --oversubscribe",
+                        help="how to start ranks (default: mpirun "
+                        "--oversubscribe)")
+    parser.add_argument("--ptxas", metavar="PATH",
+                        help="also lower every scene to PTX under every "
+                        "strategy and assemble it with this ptxas for sm_90: "
+                        "it must assemble without a spill")
     parser.add_argument("--print", type=int, metavar="SEED",
                         help="write SEED's scene to stdout and stop")
     parser.add_argument("-v", "--verbose", action="store_true",
