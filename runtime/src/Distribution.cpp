@@ -213,36 +213,50 @@ GhostLists ghostLists(const Decomposition &d, int32_t rank, int64_t halo,
   return lists;
 }
 
+namespace {
+/// The items of `rank`'s block and `reach` more on each side, as item
+/// intervals inside the range (two where they wrap around it).
+std::vector<std::pair<int64_t, int64_t>>
+itemsNear(const Decomposition &d, int32_t rank, int64_t reach) {
+  int64_t range = d.range();
+  int64_t lo = d.first(rank) - reach, hi = d.end(rank) + reach;
+  if (hi - lo >= range)
+    return {{0, range}};
+  if (lo < 0)
+    return {{0, hi}, {lo + range, range}};
+  if (hi > range)
+    return {{0, hi - range}, {lo, range}};
+  return {{lo, hi}};
+}
+} // namespace
+
 std::vector<int64_t> levelBlocksFor(const Decomposition &d, int32_t sender,
                                     int32_t receiver, int64_t reach,
                                     int64_t blockItems) {
   std::vector<int64_t> blocks;
-  if (d.count(sender) == 0)
+  if (d.count(sender) == 0 || d.count(receiver) == 0)
     return blocks;
-  int64_t range = d.range();
-  int64_t own0 = d.first(sender) / blockItems,
-          own1 = (d.end(sender) - 1) / blockItems;
-  // The receiver's items and `reach` more on each side, as item intervals
-  // inside the range (two where they wrap around it).
-  int64_t lo = d.first(receiver) - reach, hi = d.end(receiver) + reach;
-  std::vector<std::pair<int64_t, int64_t>> near;
-  if (hi - lo >= range)
-    near.emplace_back(0, range);
-  else if (lo < 0)
-    near = {{0, hi}, {lo + range, range}};
-  else if (hi > range)
-    near = {{0, hi - range}, {lo, range}};
-  else
-    near.emplace_back(lo, hi);
-  for (auto [from, to] : near) {
-    if (from >= to)
-      continue;
-    int64_t first = std::max(own0, from / blockItems);
-    int64_t last = std::min(own1, (to - 1) / blockItems);
-    for (int64_t block = first; block <= last; ++block)
-      if (blocks.empty() || block > blocks.back())
-        blocks.push_back(block);
-  }
+  // The sender's levels_C writes codes into the blocks of its items and,
+  // for a flux pair, into those of the readers of its interfaces, which
+  // may lie on the receiver (an interface read by the item before it):
+  // blocks within `reach` of its own block, which holds a flux pair's
+  // reach. Every other block of its copy holds 0 at the exchange (its
+  // limit_levels_C cleared them), so sending it changes nothing.
+  std::vector<bool> wanted;
+  auto mark = [&](const std::vector<std::pair<int64_t, int64_t>> &near,
+                  std::vector<bool> &into) {
+    into.assign(size_t((d.range() + blockItems - 1) / blockItems), false);
+    for (auto [from, to] : near)
+      for (int64_t block = from / blockItems;
+           from < to && block <= (to - 1) / blockItems; ++block)
+        into[size_t(block)] = true;
+  };
+  std::vector<bool> written, read;
+  mark(itemsNear(d, sender, reach), written);
+  mark(itemsNear(d, receiver, reach), read);
+  for (size_t block = 0; block < written.size(); ++block)
+    if (written[block] && read[block])
+      blocks.push_back(int64_t(block));
   return blocks;
 }
 

@@ -125,9 +125,11 @@ struct GhostLists {
 int64_t ghostSource(int64_t item, int64_t range, Boundary boundary);
 
 /// Local time steps: the level blocks (of `blockItems` items, ascending)
-/// that hold items of rank `sender` and lie within `reach` items of rank
-/// `receiver`'s block, around the range: the blocks whose codes `sender`
-/// contributes to `receiver`'s levels. Empty when `sender` holds no item.
+/// that hold items within `reach` items of rank `sender`'s block and items
+/// within `reach` of rank `receiver`'s block, both around the range: the
+/// blocks whose codes `sender` contributes to `receiver`'s levels (its own
+/// items' codes, and a flux pair's codes for the readers of its interfaces,
+/// which may lie on other ranks). Empty when either rank holds no item.
 std::vector<int64_t> levelBlocksFor(const Decomposition &decomposition,
                                     int32_t sender, int32_t receiver,
                                     int64_t reach, int64_t blockItems);

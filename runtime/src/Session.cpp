@@ -1230,16 +1230,6 @@ void Session::reduceLevelCodes(const std::vector<uint32_t> &components,
   endGhosts();
   int32_t me = comm->rank(), ranks = comm->size();
   DevicePtr offset = DevicePtr(parity * blocks) * sizeof(int64_t);
-  // This rank's own blocks' codes, per component.
-  int64_t own0 = first / blockItems, own1 = (first + count - 1) / blockItems;
-  std::vector<std::vector<int64_t>> own(components.size());
-  for (size_t c = 0; c < components.size(); ++c) {
-    own[c].resize(size_t(own1 - own0 + 1));
-    backend->read(own[c].data(),
-                  levels[components[c]].pointer + offset +
-                      DevicePtr(own0) * sizeof(int64_t),
-                  own[c].size() * sizeof(int64_t));
-  }
   // What travels to and from each rank, component after component.
   auto listsOf = [&](uint32_t component) -> const LevelLists & {
     int64_t reach = int64_t(plan_->components[component]->level_reach);
@@ -1258,6 +1248,34 @@ void Session::reduceLevelCodes(const std::vector<uint32_t> &components,
     }
     return found->second;
   };
+  // This rank's codes of the blocks it sends or merges, per component: its
+  // own items' and, for a flux pair, its interfaces' readers' (which may
+  // be another rank's), read in runs of consecutive blocks.
+  std::vector<std::map<int64_t, int64_t>> mine(components.size());
+  for (size_t c = 0; c < components.size(); ++c) {
+    const LevelLists &lists = listsOf(components[c]);
+    std::map<int64_t, int64_t> &codes = mine[c];
+    for (int32_t peer = 0; peer < ranks; ++peer)
+      for (const auto *list :
+           {&lists.send[size_t(peer)], &lists.recv[size_t(peer)]})
+        for (int64_t block : *list)
+          codes.emplace(block, 0);
+    for (auto it = codes.begin(); it != codes.end();) {
+      int64_t start = it->first;
+      std::vector<int64_t> run;
+      auto from = it;
+      while (it != codes.end() && it->first == start + int64_t(run.size())) {
+        run.push_back(0);
+        ++it;
+      }
+      backend->read(run.data(),
+                    levels[components[c]].pointer + offset +
+                        DevicePtr(start) * sizeof(int64_t),
+                    run.size() * sizeof(int64_t));
+      for (int64_t code : run)
+        (from++)->second = code;
+    }
+  }
   const size_t peers = size_t(ranks);
   std::vector<std::vector<int64_t>> out(peers), in(peers);
   std::vector<const void *> sendPointers(peers);
@@ -1269,7 +1287,7 @@ void Session::reduceLevelCodes(const std::vector<uint32_t> &components,
     for (size_t c = 0; c < components.size(); ++c) {
       const LevelLists &lists = listsOf(components[c]);
       for (int64_t block : lists.send[size_t(peer)])
-        out[size_t(peer)].push_back(own[c][size_t(block - own0)]);
+        out[size_t(peer)].push_back(mine[c].at(block));
       incoming += lists.recv[size_t(peer)].size();
     }
     in[size_t(peer)].resize(incoming);
@@ -1293,9 +1311,7 @@ void Session::reduceLevelCodes(const std::vector<uint32_t> &components,
         at += listsOf(components[p]).recv[size_t(peer)].size();
       for (size_t k = 0; k < from.size(); ++k) {
         int64_t block = from[k];
-        int64_t mine =
-            block >= own0 && block <= own1 ? own[c][size_t(block - own0)] : 0;
-        auto [it, fresh] = merged.try_emplace(block, mine);
+        auto [it, fresh] = merged.try_emplace(block, mine[c].at(block));
         it->second = std::max(it->second, in[size_t(peer)][at + k]);
       }
     }

@@ -20,11 +20,13 @@ using namespace sim::rt;
 
 namespace {
 
-TEST(Distribution, LevelBlocksAreTheSendersBlocksNearTheReceiver) {
+TEST(Distribution, LevelBlocksAreThoseNearTheSenderAndTheReceiver) {
   // Against the definition, item by item: the level blocks of 32 items
-  // that hold an item of the sender and an item within `reach` of the
-  // receiver's block, around the range; ranks of fewer items than a
-  // block, reaches past either end and past the whole range.
+  // that hold an item within `reach` of the sender's block (whose codes
+  // its levels_C writes: its items' and its interfaces' readers') and an
+  // item within `reach` of the receiver's block, around the range; ranks
+  // of fewer items than a block, reaches past either end and past the
+  // whole range.
   for (int64_t range : {37, 200, 1003})
     for (int64_t group : {7, 32})
       for (int32_t ranks : {2, 3, 5}) {
@@ -34,19 +36,24 @@ TEST(Distribution, LevelBlocksAreTheSendersBlocksNearTheReceiver) {
         for (int64_t reach : {1, 33, 161, 600})
           for (int32_t sender = 0; sender < ranks; ++sender)
             for (int32_t receiver = 0; receiver < ranks; ++receiver) {
-              std::vector<bool> near(size_t(range), false);
-              for (int64_t k = d.first(receiver) - reach;
-                   k < d.end(receiver) + reach; ++k)
-                near[size_t(((k % range) + range) % range)] = true;
+              auto nearTo = [&](int32_t rank) {
+                std::vector<bool> near(size_t(range), false);
+                for (int64_t k = d.first(rank) - reach; k < d.end(rank) + reach;
+                     ++k)
+                  near[size_t(((k % range) + range) % range)] = true;
+                return near;
+              };
+              std::vector<bool> written = nearTo(sender),
+                                read = nearTo(receiver);
               std::vector<int64_t> expected;
               for (int64_t block = 0; block * 32 < range; ++block) {
-                bool holds = false, reached = false;
+                bool writes = false, reads = false;
                 for (int64_t i = block * 32;
                      i < std::min(range, block * 32 + 32); ++i) {
-                  holds = holds || d.owner(i) == sender;
-                  reached = reached || near[size_t(i)];
+                  writes = writes || written[size_t(i)];
+                  reads = reads || read[size_t(i)];
                 }
-                if (holds && reached)
+                if (writes && reads)
                   expected.push_back(block);
               }
               EXPECT_EQ(levelBlocksFor(d, sender, receiver, reach, 32),
