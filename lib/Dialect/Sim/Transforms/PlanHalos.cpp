@@ -81,6 +81,30 @@ struct PlanHalosPass : public sim::impl::SimPlanHalosBase<PlanHalosPass> {
           int64_t above = std::max<int64_t>(0, pattern.getMaxOffset());
           if (below == 0 && above == 0)
             return;
+          // Past an end of the range, a derivative with another boundary
+          // rule is read at the interpolated buffer's item under that
+          // buffer's rule (InsertInterpolation.cpp); under wrap that item
+          // lies at the other end of the range, on another rank, and not
+          // among the derivative's ghost items, which follow its own rule.
+          if (interpolates && buffer.getBoundary() == Boundary::wrap)
+            for (BufferOp aux : ArrayRef(reached).drop_front())
+              if (aux.getBoundary() != Boundary::wrap &&
+                  !replicated.contains(aux)) {
+                read.emitRemark()
+                    << "reads " << read.getBufferAttr() << " in " << body
+                    << " at other items; past an end of the range its "
+                       "derivative "
+                    << FlatSymbolRefAttr::get(aux.getSymNameAttr())
+                    << " (boundary(" << stringifyBoundary(aux.getBoundary())
+                    << ")) is read at the item " << read.getBufferAttr()
+                    << "'s boundary(wrap) gives, at the other end of the "
+                       "range, so every rank holds all of "
+                    << FlatSymbolRefAttr::get(aux.getSymNameAttr())
+                    << " (an all-gather after each write); with one boundary "
+                       "rule for both only the items next to each block "
+                       "would travel";
+                replicated.insert(aux);
+              }
           for (BufferOp target : reached) {
             auto [it, inserted] = halos.try_emplace(target, below, above);
             if (!inserted)

@@ -78,3 +78,58 @@ sim.simulation @total_gather range(64) dt(1.0e-2 : f32) max_steps(4) {
   sim.schedule [@Decay, @Shift]
   sim.observe [@Y]
 }
+
+// -----
+
+// An interpolated read at other items of a buffer with boundary(wrap)
+// whose Hermite derivative has another rule: past an end of the range the
+// derivative is read at the wrapped item, at the other end of the range,
+// which no ghost item under its own rule holds, so it is replicated.
+
+// CHECK-LABEL: sim.simulation @hermite_wrap
+// CHECK: sim.buffer @V : f32 interp(none) boundary(zero) attributes {replicated} init
+// CHECK: sim.buffer @X : f32 interp(#sim.hermite<@V>) boundary(wrap) attributes {halo = array<i64: 1, 0>} init
+sim.simulation @hermite_wrap range(48) dt(5.0e-2 : f32) max_steps(4) {
+  sim.buffer @V : f32 interp(none) boundary(zero) init {
+  ^bb0(%i: index):
+    %c = arith.constant -0.25 : f32
+    sim.yield %c : f32
+  }
+  sim.buffer @X : f32 interp(#sim.hermite<@V>) boundary(wrap) init {
+  ^bb0(%i: index):
+    %c = arith.constant 0.5 : f32
+    sim.yield %c : f32
+  }
+  sim.buffer @P : f32 init {
+  ^bb0(%i: index):
+    %z = arith.constant 0.0 : f32
+    sim.yield %z : f32
+  }
+  sim.component @Osc writes(@V, @X) evaluate {
+  ^bb0(%i: index, %t: i64, %n: i32, %dt: f32):
+    %x = sim.read @X[%i] : f32
+    %v = sim.read @V[%i] : f32
+    %nf = arith.sitofp %n : i32 to f32
+    %h = arith.mulf %nf, %dt : f32
+    %nx = arith.negf %x : f32
+    %v1 = math.fma %h, %nx, %v : f32
+    %x1 = math.fma %h, %v1, %x : f32
+    sim.yield %v1, %x1 : f32, f32
+  }
+  sim.component @Probe writes(@P) num_steps {
+  ^bb0(%i: index, %t: i64):
+    %one = arith.constant 1 : i32
+    sim.yield %one : i32
+  } evaluate {
+  ^bb0(%i: index, %t: i64, %n: i32, %dt: f32):
+    %c1 = arith.constant 1 : index
+    %j = arith.subi %i, %c1 : index
+    // expected-remark @below {{reads @X in evaluate at other items; past an end of the range its derivative @V (boundary(zero)) is read at the item @X's boundary(wrap) gives, at the other end of the range, so every rank holds all of @V}}
+    %x = sim.read @X[%j] : f32
+    %p = sim.read @P[%i] : f32
+    %s = arith.addf %p, %x : f32
+    sim.yield %s : f32
+  }
+  sim.schedule [@Osc, @Probe]
+  sim.observe [@P]
+}
