@@ -144,6 +144,15 @@ class SceneWriter:
                   f"{self.buffer_type}")
         return value
 
+    def splat(self, value):
+        """A scalar as the buffers' type (a broadcast for vectors)."""
+        if self.buffer_type == self.scalar:
+            return value
+        splat = self.fresh()
+        self.emit(f"{splat} = vector.broadcast {value} : {self.scalar} to "
+                  f"{self.buffer_type}")
+        return splat
+
     def first_lane(self, value):
         if self.buffer_type == self.scalar:
             return value
@@ -243,12 +252,7 @@ class SceneWriter:
         self.emit(f"{steps} = arith.sitofp %n : i32 to {self.scalar}")
         h = self.fresh()
         self.emit(f"{h} = arith.mulf {steps}, %dt : {self.scalar}")
-        if self.buffer_type == self.scalar:
-            return h
-        splat = self.fresh()
-        self.emit(f"{splat} = vector.broadcast {h} : {self.scalar} to "
-                  f"{self.buffer_type}")
-        return splat
+        return self.splat(h)
 
     def relax(self, old, target, h, rate):
         """old + h rate (target - old): with h rate <= 1 the new value lies
@@ -262,11 +266,7 @@ class SceneWriter:
             # A rate of at most 1, so that the relaxation stays one.
             factor = self.fresh()
             self.emit(f"{factor} = sim.get_param @rate : {self.scalar}")
-            if ty != self.scalar:
-                splat = self.fresh()
-                self.emit(f"{splat} = vector.broadcast {factor} : {self.scalar} "
-                          f"to {ty}")
-                factor = splat
+            factor = self.splat(factor)
             product = self.fresh()
             self.emit(f"{product} = arith.mulf {scaled}, {factor} : {ty}")
             scaled = product
