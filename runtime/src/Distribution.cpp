@@ -242,7 +242,6 @@ std::vector<int64_t> levelBlocksFor(const Decomposition &d, int32_t sender,
   // blocks within `reach` of its own block, which holds a flux pair's
   // reach. Every other block of its copy holds 0 at the exchange (its
   // limit_levels_C cleared them), so sending it changes nothing.
-  std::vector<bool> wanted;
   auto mark = [&](const std::vector<std::pair<int64_t, int64_t>> &near,
                   std::vector<bool> &into) {
     into.assign(size_t((d.range() + blockItems - 1) / blockItems), false);
