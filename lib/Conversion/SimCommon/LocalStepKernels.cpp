@@ -689,7 +689,10 @@ LogicalResult SimulationLowering::emitLocalSteps(ComponentOp component,
   // levels_C: each block's sub-step from its items' num_steps at T.
   {
     Kernel kernel = beginKernel(getKernelName(kernels, "levels", name));
-    LaneVar code = target.createLaneVar(b, kernel, b.getI64Type(), b.i64(0));
+    // No initial value: every active lane stores its code before
+    // maxPerBlock reads the active lanes' codes, and on a CPU a group's
+    // worth of zeros cost a memset in every big step, kept codes or not.
+    LaneVar code = target.createLaneVar(b, kernel, b.getI64Type(), Value());
     Value begin, size, parity;
     readBigStep(kernel, begin, size, parity);
     Value levels = kernel.levels.lookup(symbol);
@@ -1079,8 +1082,12 @@ LogicalResult SimulationLowering::emitLocalSteps(ComponentOp component,
       b.ifThen(b.cmp(arith::CmpIPredicate::ult, low, blocks), [&] {
         if (target.splitsGroups()) {
           // One thread runs the group's lanes: a plain loop, not a lanes
-          // loop to widen, since a lane's work is a whole block's.
-          Value high = b.min(b.add(low, target.groupSize(b, kernel)), count);
+          // loop to widen, since a lane's work is a whole block's. Lanes
+          // from `blocks` on take none, and a group of 4096 lanes over 128
+          // blocks would otherwise spend a loop trip on each of them in
+          // every big step.
+          Value high = b.min(
+              b.min(b.add(low, target.groupSize(b, kernel)), count), blocks);
           auto lanes = scf::ForOp::create(b, b.loc, low, high, b.index(1));
           OpBuilder::InsertionGuard guard(b);
           b.setInsertionPoint(lanes.getBody()->getTerminator());
