@@ -138,7 +138,7 @@ void KernelTarget::forEachLaneOf(KernelBuilder &b, Kernel &kernel,
 void KernelTarget::maxPerBlock(KernelBuilder &b, Kernel &kernel, Value base,
                                LaneVar value, int64_t blockSize, Value memory,
                                Value offset, int64_t spreadLow,
-                               int64_t spreadHigh) {
+                               int64_t spreadHigh, bool) {
   // The items `lane.item - shift` (shift in [spreadLow, spreadHigh]) that
   // lie in the range form one interval, whose blocks are consecutive: one
   // atomic per block it reaches (at most `blocks`), not per shift.

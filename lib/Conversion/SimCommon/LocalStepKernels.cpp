@@ -730,8 +730,12 @@ LogicalResult SimulationLowering::emitLocalSteps(ComponentOp component,
             });
           startFinest(lane);
         });
+        // Where no flux writer's estimate joins them, these codes are the
+        // only writes of the launch to their blocks.
+        bool fluxCodes = fluxWriter && fluxWriter.hasNumSteps();
         if (component.hasNumSteps())
-          target.maxPerBlock(b, kernel, base, code, kLevelBlock, levels, half);
+          target.maxPerBlock(b, kernel, base, code, kLevelBlock, levels, half,
+                             0, 0, /*onlyWriter=*/!fluxCodes);
         // A flux writer's estimate at interface j bounds every block that
         // reads the interface: the blocks of its readers j - o (o in
         // flux_window) that lie in the range, combined per block like the
@@ -739,7 +743,7 @@ LogicalResult SimulationLowering::emitLocalSteps(ComponentOp component,
         // clamp or wrap, the readers that rule gives for those outside it,
         // one atomic each (the few interfaces at the ends of the range;
         // their readers inside the range again, which changes nothing).
-        if (!fluxWriter || !fluxWriter.hasNumSteps())
+        if (!fluxCodes)
           return;
         target.forEachLane(b, kernel, base, [&](const Lane &lane) {
           b.ifThen(lane.active, [&] {

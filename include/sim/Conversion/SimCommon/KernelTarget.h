@@ -199,11 +199,13 @@ public:
   /// that lies in the range, atomically (groups may run at once). At group
   /// level, after the phase that set `value`. The default is an atomic per
   /// lane and block reached; a target whose lanes run in one thread
-  /// combines the lanes that reach each block first.
+  /// combines the lanes that reach each block first. `onlyWriter` says
+  /// that nothing else in the launch writes these elements: a block whose
+  /// items all lie in the group then needs no atomic.
   virtual void maxPerBlock(KernelBuilder &b, Kernel &kernel, Value base,
                            LaneVar value, int64_t blockSize, Value memory,
                            Value offset, int64_t spreadLow = 0,
-                           int64_t spreadHigh = 0);
+                           int64_t spreadHigh = 0, bool onlyWriter = false);
 
   /// A lane variable of `type`, created at the kernel entry and, when
   /// `initial` is given (a value available there), set to it in every lane.
