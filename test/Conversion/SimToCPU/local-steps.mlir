@@ -47,14 +47,25 @@ sim.simulation @rod range(100) dt(1.0e-2 : f32) max_steps(8) {
   sim.observe [@U]
 }
 
-// levels_C: the lanes store their codes; one atomic per block after them.
+// levels_C: the lanes store their codes (into an array that is not zeroed
+// first: every active lane stores one); then per block the maximum of its
+// lanes, a plain one where the block lies wholly in the group (no other
+// group writes it, and no flux writer's codes join it), else an atomic.
 // CHECK-LABEL: func.func @levels_Diffuse(
+// CHECK:         %[[CODES:.*]] = memref.alloca(%{{.*}}) : memref<?xi64>
+// CHECK-NOT:     memref.store {{.*}}, %[[CODES]]
 // CHECK-NOT:     memref.atomic_rmw
+// CHECK:         memref.store %{{[0-9]+}}, %[[CODES]]
 // CHECK:         } {simplan.lanes}
 // CHECK:         scf.for
-// CHECK:           scf.for
+// CHECK:           %[[LANES:.*]] = scf.for
 // CHECK:             arith.maxsi
-// CHECK:           memref.atomic_rmw maxs
+// CHECK:           scf.if
+// CHECK-NEXT:        %[[OLD:.*]] = memref.load %arg1
+// CHECK-NEXT:        %[[MAX:.*]] = arith.maxsi %[[OLD]], %[[LANES]]
+// CHECK-NEXT:        memref.store %[[MAX]], %arg1
+// CHECK-NEXT:      } else {
+// CHECK-NEXT:        memref.atomic_rmw maxs %[[LANES]], %arg1
 // CHECK:       return
 
 // limit_levels_C: on the CPU one lane (block 0's) takes every block in one
@@ -63,10 +74,14 @@ sim.simulation @rod range(100) dt(1.0e-2 : f32) max_steps(8) {
 // (invariant_levels): once its codes are kept and while m is the m of the
 // last pass (block 0's entry of code half 0), the pass is not repeated and
 // the finest sub-step kept in half 1 goes to the sub-step clock's Size.
+// The group's lanes stop at the block count: a lane past it takes no block.
 // CHECK-LABEL: func.func @limit_levels_Diffuse(
 // CHECK-SAME:      %[[CLOCK:arg0]]: memref<?xi64>, %[[LEVELS:arg1]]: memref<?xi64>
 // CHECK:           %[[M:.*]] = memref.load %[[CLOCK]][%c1] : memref<?xi64>
-// CHECK:               scf.for %{{.*}} = %arg{{[0-9]+}} to %{{.*}} step %{{[0-9]+}} {
+// CHECK:           %[[BLOCKS:.*]] = arith.addi %{{.*}}, %c0 : index
+// CHECK:           %[[HIGH:.*]] = arith.minsi %{{.*}}, %[[BLOCKS]] : index
+// CHECK:           scf.for %{{.*}} = %{{.*}} to %[[HIGH]] step %c1 {
+// CHECK:               scf.for %{{.*}} = %arg{{[0-9]+}} to %[[BLOCKS]] step %{{[0-9]+}} {
 // CHECK:                 scf.if
 // CHECK:                   %[[KEPT:.*]] = arith.cmpi ne, %{{.*}}, %c0_i64 : i64
 // CHECK:                   %[[LAST:.*]] = memref.load %[[LEVELS]][%{{.*}}] : memref<?xi64>
