@@ -81,11 +81,12 @@ static void addEntryPoint(llvm::Module &module, llvm::Function &kernel) {
   // The kernel stays a function of its own, called once per launch.
   // Inlined into the entry point, the in-step chunk loop of
   // `own-index-none`'s lts slot kernel reloaded its run length from the
-  // stack in every iteration, and ran 2.3x slower on AVX-512 (Zen 4, 4096
-  // items: 27 ms against 11.6 ms, hip 18 ms) than the same loop without
-  // that reload, out of line (as every kernel of a --sim-ftz bundle was
-  // already). Out of line, the paper and physics scenes run as fast as
-  // before under every strategy (docs/benchmarks.md, "Kernels out of line").
+  // stack in every iteration, and ran 2.3x slower on an AMD EPYC with
+  // AVX-512 (4096 items: 27 ms against 11.6 ms, hip 18 ms) than the same
+  // loop without that reload, out of line (as every kernel of a --sim-ftz
+  // bundle was already). Out of line, the paper and physics scenes run as
+  // fast as before under every strategy (docs/benchmarks.md, "Kernels out
+  // of line").
   kernel.addFnAttr(llvm::Attribute::NoInline);
 }
 
