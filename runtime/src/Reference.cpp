@@ -803,12 +803,8 @@ void ReferenceSession::bigStep(int64_t end) {
     m = end - now;
     ++cutBigSteps;
   }
-  // Local time steps nest only in a big step of a power of two.
-  if (std::any_of(stepping.begin(), stepping.end(),
-                  [](const schema::Stepping &decided) {
-                    return decided.advance() == Advance::LocalSteps;
-                  }))
-    m = floorPowerOfTwo(m);
+  // Local time steps take the same m: their sub-steps are cut at its end
+  // (localSteps).
   stepSize = m;
   ++histogram[size_t(m)];
   ++metrics.big_steps;
@@ -889,8 +885,14 @@ void ReferenceSession::localSteps(int32_t component, int64_t m) {
   };
 
   // Each block's sub-step (blocks of LocalStepBlock::Items items, whatever
-  // the group size): the largest power of two within m and its items'
-  // num_steps at T, and those of the interfaces its items read.
+  // the group size), from the minimum of its items' num_steps at T and
+  // those of the interfaces its items read: the whole big step when that
+  // is m or more (counted as the smallest power of two not below m, so
+  // that every sub-step is a power of two), else its largest power of
+  // two. Every sub-step ends at the end of the big step at the latest.
+  int64_t whole = 1;
+  while (whole < m)
+    whole *= 2;
   levels = {};
   levels.level.assign(size_t(groups), 0);
   std::vector<int64_t> smallest(size_t(groups), m);
@@ -908,7 +910,8 @@ void ReferenceSession::localSteps(int32_t component, int64_t m) {
             std::min(smallest[size_t(r / group)], steps);
     }
   for (int64_t g = 0; g < groups; ++g)
-    levels.level[size_t(g)] = floorPowerOfTwo(smallest[size_t(g)]);
+    levels.level[size_t(g)] =
+        smallest[size_t(g)] >= m ? whole : floorPowerOfTwo(smallest[size_t(g)]);
   // No block more than twice as coarse as a block within reach of its
   // window (ceil(reach / block) blocks, around the range under wrap).
   int64_t reach = std::max(-info.local_window[0], info.local_window[1]);
@@ -958,18 +961,18 @@ void ReferenceSession::localSteps(int32_t component, int64_t m) {
         for (int64_t r : readersOf(j))
           level = std::max(level, levels.level[size_t(r / group)]);
         if (level == 0)
-          level = m;
+          level = whole;
         if (q % level == 0)
-          due.emplace_back(j, level);
+          due.emplace_back(j, std::min(level, m - q));
       }
       std::vector<std::vector<uint8_t>> values;
-      for (auto [j, level] : due) {
-        evaluateInto(fluxWriter, j, j + 1, now + q, level, flux);
+      for (auto [j, length] : due) {
+        evaluateInto(fluxWriter, j, j + 1, now + q, length, flux);
         for (size_t k = 0; k < writes.size(); ++k)
           values.push_back(flux[k]);
       }
       size_t next = 0;
-      for (auto [j, level] : due) {
+      for (auto [j, length] : due) {
         for (uint32_t buffer : writes) {
           size_t bytes = packed(int32_t(buffer)), at = size_t(j) * bytes;
           std::memcpy(states[buffer].current.data() + at, values[next].data(),
@@ -979,16 +982,19 @@ void ReferenceSession::localSteps(int32_t component, int64_t m) {
           ++next;
         }
         if (checkFinite_)
-          checkFinite(fluxWriter, j, j + 1, now + q, level);
+          checkFinite(fluxWriter, j, j + 1, now + q, length);
       }
     }
     std::vector<int64_t> starting;
     for (int64_t g = 0; g < groups; ++g)
       if (q % levels.level[size_t(g)] == 0)
         starting.push_back(g);
+    auto lengthOf = [&](int64_t g) {
+      return std::min(levels.level[size_t(g)], m - q);
+    };
     for (int64_t g : starting)
-      evaluateInto(component, firstOf(g), lastOf(g), now + q,
-                   levels.level[size_t(g)], results[size_t(g)]);
+      evaluateInto(component, firstOf(g), lastOf(g), now + q, lengthOf(g),
+                   results[size_t(g)]);
     for (int64_t g : starting) {
       for (size_t k = 0; k < info.writes.size(); ++k) {
         uint32_t buffer = info.writes[k];
@@ -1000,10 +1006,9 @@ void ReferenceSession::localSteps(int32_t component, int64_t m) {
                     results[size_t(g)][k].size());
       }
       levels.previous[size_t(g)] = levels.latest[size_t(g)];
-      levels.latest[size_t(g)] += levels.level[size_t(g)];
+      levels.latest[size_t(g)] += lengthOf(g);
       if (checkFinite_)
-        checkFinite(component, firstOf(g), lastOf(g), now + q,
-                    levels.level[size_t(g)]);
+        checkFinite(component, firstOf(g), lastOf(g), now + q, lengthOf(g));
     }
   }
   levels = {};

@@ -70,8 +70,8 @@ LogicalResult SimulationLowering::emitEstimate(ComponentOp component,
 
 /// Commits the big step that just ended (T += m, flip the parity when it
 /// advanced) and decides the next one: m = min(estimate, cap, end - T), 0
-/// past the end, rounded down to a power of two when a component takes
-/// local time steps (and then at most each pair writer's largest estimate).
+/// past the end (under local time steps also at most each pair writer's
+/// largest estimate; their sub-steps are cut at the end of any m).
 /// Also counts big steps by size and the ones the end cut short (clock slot
 /// Cuts), and restarts the sub-step clocks.
 LogicalResult SimulationLowering::emitAdvance(OpBuilder &launches,
@@ -117,10 +117,6 @@ LogicalResult SimulationLowering::emitAdvance(OpBuilder &launches,
   }
   Value positive = b.cmp(arith::CmpIPredicate::sgt, remaining, zero);
   Value next = b.select(positive, b.min(bound, remaining), zero);
-  // Local time steps nest only in a big step of a power of two: the
-  // largest one not above the decision (m >= 1 when positive).
-  if (localSteps)
-    next = b.floorPowerOfTwo(next);
   // A cut: the end of the run, not the estimate or the cap, sizes the big
   // step (a run that ends between two natural big-step boundaries).
   Value cut = b.select(

@@ -254,10 +254,11 @@ private:
   /// Local time steps: item `j`'s state at the reader's local time `T +
   /// slot`, from the two time levels its block keeps. The block of sub-step
   /// `s` has taken `c = ceil(slot / s)` sub-steps, so its latest level is
-  /// at `b = c s` after `T` (in the half `source parity xor (c & 1)`) and
-  /// its previous one at `b - s` (the other half). In step (`b = slot`):
-  /// the latest level; a coarser block ahead in time: the buffer's
-  /// interpolation between the two at `(slot - (b - s)) / s`. Where lanes
+  /// at `b = min(c s, m)` after `T` (in the half `source parity xor (c &
+  /// 1)`; its last sub-step ends with the big step) and its previous one at
+  /// `a = c s - s` (the other half). In step (`b = slot`): the latest
+  /// level; a coarser block ahead in time: the buffer's interpolation
+  /// between the two at `(slot - a) / (b - a)`. Where lanes
   /// run side by side the item is loaded from both halves and the levels
   /// selected (KernelValues::levelsFromBothHalves).
   FailureOr<Value> lowerLevelLoad(OpBuilder &builder, LoadOp load,
@@ -352,15 +353,19 @@ private:
         previous = memref::LoadOp::create(
             builder, loc, memory,
             elementOf(arith::XOrIOp::create(builder, loc, latestParity, one)));
-      Value behind = arith::SubIOp::create(
-          builder, loc, slot,
-          arith::SubIOp::create(builder, loc, latestTime, level));
-      Value levelF = arith::SIToFPOp::create(builder, loc, floatType, level);
+      Value previousTime =
+          arith::SubIOp::create(builder, loc, latestTime, level);
+      Value behind = arith::SubIOp::create(builder, loc, slot, previousTime);
+      Value length = arith::SubIOp::create(
+          builder, loc,
+          arith::MinSIOp::create(builder, loc, latestTime, values.levelEnd),
+          previousTime);
+      Value lengthF = arith::SIToFPOp::create(builder, loc, floatType, length);
       Value fraction = arith::DivFOp::create(
           builder, loc,
-          arith::SIToFPOp::create(builder, loc, floatType, behind), levelF);
+          arith::SIToFPOp::create(builder, loc, floatType, behind), lengthF);
       Value dt = castParam(builder, loc, values.params.lookup("dt"), floatType);
-      Value span = arith::MulFOp::create(builder, loc, levelF, dt);
+      Value span = arith::MulFOp::create(builder, loc, lengthF, dt);
       Value value = buffer.getInterpolation().buildInterpolation(
           builder, loc, ValueRange{previous}, ValueRange{latest}, fraction,
           span);

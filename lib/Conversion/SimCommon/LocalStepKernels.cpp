@@ -9,8 +9,11 @@
 // order:
 //
 //   snapshot_B       the value at T of buffers later components read
-//   levels_C         each block's sub-step: the largest power of two not
-//                    above m and its items' minimum num_steps at T
+//   levels_C         each block's sub-step: the whole big step when its
+//                    items' minimum num_steps at T is m or more, else its
+//                    largest power of two (the whole step counts as M, the
+//                    smallest power of two not below m, and every sub-step
+//                    ends with the big step at the latest)
 //   limit_levels_C   each block's sub-step: the largest with none more
 //                    than twice a neighbour's; the finest; each block's
 //                    neighbourhood codes. On a GPU one lane per block (a
@@ -115,7 +118,8 @@ LogicalResult SimulationLowering::emitLocalSteps(ComponentOp component,
   component.emitRemark()
       << "@" << name << " takes local time steps: every block of "
       << kLevelBlock
-      << " items its own power-of-two sub-step, at most twice that of the "
+      << " items its own sub-step (the whole big step, or a power of two "
+         "below it), at most twice that of the "
       << radius << " block" << (radius == 1 ? "" : "s")
       << " on each side, in up to " << maxSteps
       << " slot launches per big step";
@@ -150,6 +154,19 @@ LogicalResult SimulationLowering::emitLocalSteps(ComponentOp component,
                        arith::AndIOp::create(b, b.loc, slot, level), b.i64(0)),
                  b.getI64Type());
     return arith::XOrIOp::create(b, b.loc, parity, odd).getResult();
+  };
+  // The sub-step that stands for the whole big step `size` (m >= 1 where
+  // used): the smallest power of two not below it, so that every sub-step
+  // is a power of two (docs/Model.md, "Levels"). With m a power of two it
+  // is m.
+  auto wholeStepOf = [&](Value size) {
+    return b.floorPowerOfTwo(
+        b.sub(b.add(b.max(size, b.i64(1)), b.max(size, b.i64(1))), b.i64(1)));
+  };
+  // The length of a sub-step of `level` that starts at `slot`: the last
+  // one of a block ends with the big step.
+  auto lengthOf = [&](Value level, Value slot, Value size) {
+    return b.min(level, b.sub(size, slot));
   };
   // The neighbourhood codes of the blocks of a part (limit_levels_C): whether
   // they are all one code, and the first. A part inside the range.
@@ -1005,10 +1022,15 @@ LogicalResult SimulationLowering::emitLocalSteps(ComponentOp component,
     return b.select(b.cmp(arith::CmpIPredicate::ne, kept, b.i64(0)), kept,
                     code);
   };
+  // A block's sub-step is a power of two: the whole big step `m` (counted
+  // as `whole`, the smallest power of two not below it) when its minimum
+  // is `m` or more, else the minimum's largest power of two, below m.
   auto decodedLevel = [&](Kernel &kernel, Value levels, Value parity,
-                          Value size, Value h) {
+                          Value size, Value whole, Value h) {
     Value code = codeOf(kernel, levels, parity, h);
-    return b.floorPowerOfTwo(b.min(b.sub(b.i64(kLevelCode), code), size));
+    Value smallest = b.sub(b.i64(kLevelCode), code);
+    return b.floorPowerOfTwo(b.select(
+        b.cmp(arith::CmpIPredicate::sge, smallest, size), whole, smallest));
   };
   // Block g's sub-step into section kLevelSteps, and its code in half
   // 1 - parity, the previous big step's, cleared for the next (0 is the
@@ -1030,11 +1052,11 @@ LogicalResult SimulationLowering::emitLocalSteps(ComponentOp component,
       });
   };
   auto limitedLevel = [&](Kernel &kernel, Value levels, Value parity,
-                          Value size, Value g) -> Value {
+                          Value size, Value whole, Value g) -> Value {
     Value one = b.i64(1);
     Value blocks = toI64(blocksOf(kernel));
     auto decode = [&](Value h) {
-      return decodedLevel(kernel, levels, parity, size, h);
+      return decodedLevel(kernel, levels, parity, size, whole, h);
     };
     Value level = decode(g);
     if (hops == 0)
@@ -1055,8 +1077,8 @@ LogicalResult SimulationLowering::emitLocalSteps(ComponentOp component,
   };
   // Block g's limited sub-step, stored (storeLevel) and returned.
   auto limitBlock = [&](Kernel &kernel, Value levels, Value parity, Value size,
-                        Value g) {
-    Value level = limitedLevel(kernel, levels, parity, size, g);
+                        Value whole, Value g) {
+    Value level = limitedLevel(kernel, levels, parity, size, whole, g);
     storeLevel(kernel, levels, parity, size, g, level);
     return level;
   };
@@ -1110,7 +1132,9 @@ LogicalResult SimulationLowering::emitLocalSteps(ComponentOp component,
   // items reach have its own sub-step (section kLevelStepCodes; and, for a
   // flux pair, whether its interfaces' readers do: kLevelFluxCodes), from
   // `levelAt(h)`, the sub-step of block h (i64).
-  auto codesOfBlock = [&](Kernel &kernel, Value levels, Value size, Value g,
+  // (`whole`: the sub-step of the whole big step, that of an interface
+  // nothing reads.)
+  auto codesOfBlock = [&](Kernel &kernel, Value levels, Value whole, Value g,
                           function_ref<Value(Value)> levelAt) {
     Value one = b.i64(1), zero = b.i64(0);
     Value blocks = toI64(blocksOf(kernel));
@@ -1206,7 +1230,7 @@ LogicalResult SimulationLowering::emitLocalSteps(ComponentOp component,
                 arith::DivUIOp::create(b, b.loc, reader, b.index(kLevelBlock)));
             return b.select(exists, b.max(coarsest, levelAt(block)), coarsest);
           });
-      return b.select(b.cmp(arith::CmpIPredicate::eq, coarsest, zero), size,
+      return b.select(b.cmp(arith::CmpIPredicate::eq, coarsest, zero), whole,
                       coarsest);
     };
     auto finestInterface = [&](Value g, Value first, Value last) {
@@ -1216,7 +1240,7 @@ LogicalResult SimulationLowering::emitLocalSteps(ComponentOp component,
       Value innerLow = b.max(first, b.add(first, b.i64(offsets[1])));
       Value innerHigh = b.min(last, b.add(last, b.i64(offsets[0])));
       Value hasInner = b.cmp(arith::CmpIPredicate::sle, innerLow, innerHigh);
-      Value finest = b.select(hasInner, levelAt(g), size);
+      Value finest = b.select(hasInner, levelAt(g), whole);
       Value lowEnd = b.min(innerLow, end);
       finest = minOver(first, lowEnd, finest, interfaceLevel);
       return minOver(b.max(b.add(innerHigh, one), lowEnd), end, finest,
@@ -1285,7 +1309,7 @@ LogicalResult SimulationLowering::emitLocalSteps(ComponentOp component,
   // rule, whatever the order: the window minimum above), the finest, the
   // codes and the ends of their runs.
   auto limitInOnePass = [&](Kernel &kernel, Value levels, Value parity,
-                            Value size) {
+                            Value size, Value whole) {
     Value one = b.i64(1), zero = b.i64(0);
     Value blocks = toI64(blocksOf(kernel));
     Value steps = toI64(stepsOf(kernel));
@@ -1296,7 +1320,8 @@ LogicalResult SimulationLowering::emitLocalSteps(ComponentOp component,
     auto blockAt = [&](Value w) { return windowBlock(window, b.toIndex(w)); };
     auto at = [&](Value block) { return b.toIndex(b.add(steps, block)); };
     auto levelAt = [&](Value block) {
-      return b.select(inWindow(window, block), b.load(levels, at(block)), size);
+      return b.select(inWindow(window, block), b.load(levels, at(block)),
+                      whole);
     };
     // In a big step of one base step every block's sub-step is 1, which
     // needs no limit: every block's level and codes follow at once (the
@@ -1323,7 +1348,7 @@ LogicalResult SimulationLowering::emitLocalSteps(ComponentOp component,
       b.setInsertionPoint(decode.getBody()->getTerminator());
       Value k = blockAt(decode.getInductionVar());
       storeLevel(kernel, levels, parity, size, k,
-                 decodedLevel(kernel, levels, parity, size, k));
+                 decodedLevel(kernel, levels, parity, size, whole, k));
     }
     // Lowers block `g` to twice its finest neighbour; returns whether it
     // changed.
@@ -1377,12 +1402,12 @@ LogicalResult SimulationLowering::emitLocalSteps(ComponentOp component,
       scf::YieldOp::create(b, b.loc, sweep());
     }
     auto finest =
-        scf::ForOp::create(b, b.loc, zero, count, one, ValueRange{size});
+        scf::ForOp::create(b, b.loc, zero, count, one, ValueRange{whole});
     {
       OpBuilder::InsertionGuard guard(b);
       b.setInsertionPointToStart(finest.getBody());
       Value g = blockAt(finest.getInductionVar());
-      codesOfBlock(kernel, levels, size, g, levelAt);
+      codesOfBlock(kernel, levels, whole, g, levelAt);
       scf::YieldOp::create(b, b.loc,
                            b.min(finest.getRegionIterArg(0), levelAt(g)));
     }
@@ -1403,9 +1428,9 @@ LogicalResult SimulationLowering::emitLocalSteps(ComponentOp component,
   // entries there hold the m of the last computation (half 0) and its
   // finest sub-step (half 1); a code left there is above any m.
   auto limitUnlessKept = [&](Kernel &kernel, Value levels, Value parity,
-                             Value size, Value g) {
+                             Value size, Value whole, Value g) {
     if (!keepsCodes) {
-      limitInOnePass(kernel, levels, parity, size);
+      limitInOnePass(kernel, levels, parity, size, whole);
       return;
     }
     Value limitedAt = b.toIndex(g);
@@ -1423,7 +1448,7 @@ LogicalResult SimulationLowering::emitLocalSteps(ComponentOp component,
     b.setInsertionPointToStart(branch.thenBlock());
     b.store(b.load(levels, finestAt), kernel.clock, b.index(sub + kSubSize));
     b.setInsertionPointToStart(branch.elseBlock());
-    limitInOnePass(kernel, levels, parity, size);
+    limitInOnePass(kernel, levels, parity, size, whole);
     b.ifThen(isKept(), [&] {
       b.store(size, levels, limitedAt);
       b.store(b.load(kernel.clock, b.index(sub + kSubSize)), levels, finestAt);
@@ -1445,6 +1470,7 @@ LogicalResult SimulationLowering::emitLocalSteps(ComponentOp component,
     readClock(kernel, begin, size, parity);
     Value levels = kernel.levels.lookup(symbol);
     Value running = b.cmp(arith::CmpIPredicate::sgt, size, b.i64(0));
+    Value whole = wholeStepOf(size);
     if (target.limitsLevelsPerLane()) {
       b.ifThen(running, [&] {
         // A big step of one base step: every sub-step is 1 (as in
@@ -1459,13 +1485,14 @@ LogicalResult SimulationLowering::emitLocalSteps(ComponentOp component,
                 return {};
               },
               [&]() -> SmallVector<Value> {
-                Value level = limitBlock(kernel, levels, parity, size, g);
+                Value level =
+                    limitBlock(kernel, levels, parity, size, whole, g);
                 b.atomic(arith::AtomicRMWKind::mins, level, kernel.clock,
                          b.index(sub + kSubSize));
-                codesOfBlock(kernel, levels, size, g, [&](Value h) {
+                codesOfBlock(kernel, levels, whole, g, [&](Value h) {
                   return b.select(
                       b.cmp(arith::CmpIPredicate::eq, h, g), level,
-                      limitedLevel(kernel, levels, parity, size, h));
+                      limitedLevel(kernel, levels, parity, size, whole, h));
                 });
                 return {};
               });
@@ -1486,8 +1513,9 @@ LogicalResult SimulationLowering::emitLocalSteps(ComponentOp component,
       b.ifThen(running, [&] {
         Value firstBlock = toI64(windowOf(kernel).first[0]);
         forEachBlockOfLanes(kernel, [&](Value g) {
-          b.ifThen(b.cmp(arith::CmpIPredicate::eq, g, firstBlock),
-                   [&] { limitUnlessKept(kernel, levels, parity, size, g); });
+          b.ifThen(b.cmp(arith::CmpIPredicate::eq, g, firstBlock), [&] {
+            limitUnlessKept(kernel, levels, parity, size, whole, g);
+          });
         });
       });
     }
@@ -1519,6 +1547,7 @@ LogicalResult SimulationLowering::emitLocalSteps(ComponentOp component,
           dt = state.dt, now = state.now, slot = state.slot;
     b.ifThen(state.running, [&] {
       Value half = stepsOf(kernel);
+      Value whole = wholeStepOf(size);
       // One evaluation of interface `lane.item` over `level` from T +
       // slot; reads the reader's state from its time levels, or (`uniform`:
       // every block it reaches at `level`, all in step) from the half
@@ -1533,6 +1562,7 @@ LogicalResult SimulationLowering::emitLocalSteps(ComponentOp component,
         } else {
           values.levels = levels;
           values.levelSlot = slot;
+          values.levelEnd = size;
           values.levelBase = half;
           values.levelsAtItem = true;
           values.levelsFromBothHalves = target.readsLevelsFromBothHalves();
@@ -1549,7 +1579,9 @@ LogicalResult SimulationLowering::emitLocalSteps(ComponentOp component,
             b.select(first, values.sourceBase, values.targetBase);
         SmallVector<Value> results = inline_(
             fluxWriter.getEvaluate(),
-            {lane.item, now, b.truncate(level, b.getI32Type()), dt}, values);
+            {lane.item, now,
+             b.truncate(lengthOf(level, slot, size), b.getI32Type()), dt},
+            values);
         storeResults(kernel, lane, fluxWrites, results, values.targetBase,
                      values.targetParity, counted ? &count : nullptr);
       };
@@ -1574,7 +1606,7 @@ LogicalResult SimulationLowering::emitLocalSteps(ComponentOp component,
                 });
             Value level =
                 b.select(b.cmp(arith::CmpIPredicate::eq, coarsest, b.i64(0)),
-                         size, coarsest);
+                         whole, coarsest);
             b.ifThen(startsAt(slot, level),
                      [&] { evaluateLane(lane, level, false, Value()); });
           },
@@ -1607,8 +1639,8 @@ LogicalResult SimulationLowering::emitLocalSteps(ComponentOp component,
     if (!target.splitsGroups())
       count = target.createLaneVar(b, kernel, b.getI32Type(), b.i32(0));
     Slot state = readSlot(kernel);
-    Value parity = state.parity, levels = state.levels, dt = state.dt,
-          now = state.now, slot = state.slot;
+    Value size = state.size, parity = state.parity, levels = state.levels,
+          dt = state.dt, now = state.now, slot = state.slot;
     b.ifThen(state.running, [&] {
       Value half = stepsOf(kernel);
       // One evaluation of a lane's item from T + slot over `level` base
@@ -1626,12 +1658,15 @@ LogicalResult SimulationLowering::emitLocalSteps(ComponentOp component,
         if (!uniform) {
           values.levels = levels;
           values.levelSlot = slot;
+          values.levelEnd = size;
           values.levelBase = half;
           values.levelsFromBothHalves = target.readsLevelsFromBothHalves();
         }
         SmallVector<Value> results = inline_(
             component.getEvaluate(),
-            {lane.item, now, b.truncate(level, b.getI32Type()), dt}, values);
+            {lane.item, now,
+             b.truncate(lengthOf(level, slot, size), b.getI32Type()), dt},
+            values);
         assert((!counted || count) && "a run counts its lanes at once");
         storeResults(kernel, lane, writes, results, writeBase, writeParity,
                      counted ? &*count : nullptr);
@@ -1670,7 +1705,8 @@ LogicalResult SimulationLowering::emitLocalSteps(ComponentOp component,
     b.ifThen(state.running, [&] {
       target.afterLastInvocation(b, kernel, sub + kSubCount, [&] {
         Value finest = b.load(kernel.clock, b.index(sub + kSubSize));
-        b.store(b.add(now, finest), kernel.clock, b.index(sub + kSubBegin));
+        b.store(b.min(b.add(now, finest), b.add(state.begin, size)),
+                kernel.clock, b.index(sub + kSubBegin));
       });
     });
     pendingWrittenHalf = WrittenHalf::LocalStep;
@@ -1688,15 +1724,19 @@ LogicalResult SimulationLowering::emitLocalSteps(ComponentOp component,
   Value levels = kernel.levels.lookup(symbol);
   b.ifThen(b.cmp(arith::CmpIPredicate::sgt, size, b.i64(0)), [&] {
     Value half = stepsOf(kernel);
-    // m / level sub-steps (both powers of two): even unless equal. A part
-    // of one sub-step (its step codes are it or minus it) copies all its
-    // items or none.
+    // ceil(m / level) sub-steps, even when bit `level` (a power of two) of
+    // m - 1 + level is clear: with m a power of two, unless level is m. A
+    // part of one sub-step (its step codes are it or minus it) copies all
+    // its items or none.
+    auto even = [&](Value level) {
+      return b.cmp(arith::CmpIPredicate::eq,
+                   arith::AndIOp::create(
+                       b, b.loc, b.add(b.sub(size, b.i64(1)), level), level),
+                   b.i64(0));
+    };
     forEachCodePart(
         kernel, levels, kLevelStepCodes, kLevelStepRuns,
-        [&](Value code) {
-          return b.cmp(arith::CmpIPredicate::ne, size,
-                       b.max(code, b.sub(b.i64(0), code)));
-        },
+        [&](Value code) { return even(b.max(code, b.sub(b.i64(0), code))); },
         [&](const Part &part, Value same, Value code, Value) {
           auto lanes = [&](function_ref<void(const Lane &)> body) {
             target.forEachLaneOf(b, kernel, part, [&](const Lane &lane) {
@@ -1708,7 +1748,7 @@ LogicalResult SimulationLowering::emitLocalSteps(ComponentOp component,
           OpBuilder::InsertionGuard guard(b);
           b.setInsertionPointToStart(branch.thenBlock());
           Value level = b.max(code, b.sub(b.i64(0), code));
-          b.ifThen(b.cmp(arith::CmpIPredicate::ne, size, level), [&] {
+          b.ifThen(even(level), [&] {
             lanes([&](const Lane &lane) {
               copyToTarget(kernel, writes, lane.item);
             });
@@ -1716,8 +1756,8 @@ LogicalResult SimulationLowering::emitLocalSteps(ComponentOp component,
           b.setInsertionPointToStart(branch.elseBlock());
           lanes([&](const Lane &lane) {
             Value level = b.load(levels, b.add(half, blockOf(lane.item)));
-            Value even = b.cmp(arith::CmpIPredicate::ne, size, level);
-            b.ifThen(even, [&] { copyToTarget(kernel, writes, lane.item); });
+            b.ifThen(even(level),
+                     [&] { copyToTarget(kernel, writes, lane.item); });
           });
         });
   });

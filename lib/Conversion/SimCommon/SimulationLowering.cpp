@@ -93,11 +93,6 @@ LogicalResult SimulationLowering::checkFrontEnd() {
   }
   for (BufferOp buffer : simulation.getBuffers())
     buffers.push_back(buffer);
-  for (ComponentOp component : order) {
-    if (component.getAdvance() != Advance::local_steps)
-      continue;
-    localSteps = true;
-  }
   return checkRecordedDecisions();
 }
 

@@ -77,10 +77,11 @@ struct KernelValues {
   /// `levels` holds every block's sub-step (i64) from element `levelBase`;
   /// the block of sub-step `s` has taken `ceil(levelSlot / s)` sub-steps,
   /// so its latest level is at `ceil(levelSlot / s) * s` base steps after
-  /// `T`, in the half `sourceParity` xor that count's parity, and its
-  /// previous one `s` earlier in the other half. Null outside such a
-  /// sub-step.
-  Value levels, levelSlot, levelBase;
+  /// `T` (or at `levelEnd`, the big step's `m`, where the block's last
+  /// sub-step ends with the big step), in the half `sourceParity` xor that
+  /// count's parity, and its previous one at `ceil(levelSlot / s) * s - s`
+  /// in the other half. Null outside such a sub-step.
+  Value levels, levelSlot, levelEnd, levelBase;
   /// The flux writer of a flux pair reads its reader's state from the time
   /// levels at every item, its own included (it writes none of it).
   bool levelsAtItem = false;

@@ -241,9 +241,6 @@ private:
   /// cap, and the estimate kept (kLargestSlots from the slot recorded).
   llvm::DenseMap<Operation *, int64_t> largestEstimateSlots;
   int64_t histogramSlot = 0, clockSlots = 0;
-  /// Some component advances in `local_steps`: every big step is rounded
-  /// down to a power of two (docs/Model.md, "Local time stepping").
-  bool localSteps = false;
   /// Set when inlining a body failed inside a builder callback.
   bool bodyFailed = false;
 };
