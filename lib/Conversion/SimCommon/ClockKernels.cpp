@@ -144,7 +144,10 @@ LogicalResult SimulationLowering::emitAdvance(OpBuilder &launches,
     setSlot(it->second + kSubBegin, now);
     setSlot(it->second + kSubSize, zero);
     setSlot(it->second + kSubCount, zero);
-    setSlot(it->second + kSubEstimate, b.i64(kNoEstimate64));
+    // A local_steps component keeps there the big step its levels were
+    // last limited for (limit_levels_C on a CPU).
+    if (component.getAdvance() != Advance::local_steps)
+      setSlot(it->second + kSubEstimate, b.i64(kNoEstimate64));
   }
   return endKernel(kernel, simplan::LaunchShape::single, launches);
 }

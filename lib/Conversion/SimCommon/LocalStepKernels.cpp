@@ -1419,6 +1419,71 @@ LogicalResult SimulationLowering::emitLocalSteps(ComponentOp component,
     if (fluxWriter)
       runEnds(kernel, levels, kLevelFluxCodes, kLevelFluxRuns);
   };
+  // Levels that depend on the state often stay as they were from one big
+  // step to the next (a stiff region that moves slowly, or none), and what
+  // limitInOnePass computes depends on the codes in half `parity` and m
+  // alone. So it keeps the codes it limited, plus 1, in section
+  // kLevelCached (which only an invariant_levels component uses otherwise)
+  // and m in the sub-step clock's Estimate slot (which only a grid_sync
+  // component uses otherwise; `advance` leaves it), and where neither
+  // changed, the sub-steps, codes and runs in `levels` still hold: one pass
+  // compares the codes, clears half 1 - parity for the next big step, as
+  // storeLevel does, and takes the finest sub-step again. Zeroed levels (a
+  // run from the initial state, a restart) match no code plus 1, whatever
+  // the clock says.
+  auto limitUnlessUnchanged = [&](Kernel &kernel, Value levels, Value parity,
+                                  Value size, Value whole) {
+    Value zero = b.i64(0), one = b.i64(1);
+    Value blocks = toI64(blocksOf(kernel));
+    Value codes = b.mul(parity, blocks);
+    Value cleared = b.mul(b.xorOne(parity), blocks);
+    Value cached = b.mul(b.i64(kLevelCached), blocks);
+    Value steps = toI64(stepsOf(kernel));
+    BlockWindow window = windowOf(kernel);
+    Value count = toI64(b.add(window.count[0], window.count[1]));
+    Value limitedFor = b.index(sub + kSubEstimate);
+    auto compare =
+        scf::ForOp::create(b, b.loc, zero, count, one,
+                           ValueRange{b.constant(b.getI1Type(), 1), whole});
+    {
+      OpBuilder::InsertionGuard guard(b);
+      b.setInsertionPointToStart(compare.getBody());
+      Value g = windowBlock(window, b.toIndex(compare.getInductionVar()));
+      auto at = [&](Value section) { return b.toIndex(b.add(section, g)); };
+      Value same =
+          b.cmp(arith::CmpIPredicate::eq, b.add(b.load(levels, at(codes)), one),
+                b.load(levels, at(cached)));
+      b.store(zero, levels, at(cleared));
+      scf::YieldOp::create(
+          b, b.loc,
+          ValueRange{
+              arith::AndIOp::create(b, b.loc, compare.getRegionIterArg(0), same)
+                  .getResult(),
+              b.min(compare.getRegionIterArg(1), b.load(levels, at(steps)))});
+    }
+    Value unchanged =
+        arith::AndIOp::create(b, b.loc, compare.getResult(0),
+                              b.cmp(arith::CmpIPredicate::eq,
+                                    b.load(kernel.clock, limitedFor), size));
+    b.ifThenElse(
+        TypeRange{}, unchanged,
+        [&]() -> SmallVector<Value> {
+          b.store(compare.getResult(1), kernel.clock, b.index(sub + kSubSize));
+          return {};
+        },
+        [&]() -> SmallVector<Value> {
+          limitInOnePass(kernel, levels, parity, size, whole);
+          auto keep = scf::ForOp::create(b, b.loc, zero, count, one);
+          OpBuilder::InsertionGuard guard(b);
+          b.setInsertionPoint(keep.getBody()->getTerminator());
+          Value g = windowBlock(window, b.toIndex(keep.getInductionVar()));
+          b.store(b.add(b.load(levels, b.toIndex(b.add(codes, g))), one),
+                  levels, b.toIndex(b.add(cached, g)));
+          b.setInsertionPointAfter(keep);
+          b.store(size, kernel.clock, limitedFor);
+          return {};
+        });
+  };
   // With invariant_levels, what limitInOnePass computes (every block's
   // sub-step, the codes, their runs and the finest) depends on the kept
   // codes and m alone, so once the codes are kept it is computed again only
@@ -1430,7 +1495,7 @@ LogicalResult SimulationLowering::emitLocalSteps(ComponentOp component,
   auto limitUnlessKept = [&](Kernel &kernel, Value levels, Value parity,
                              Value size, Value whole, Value g) {
     if (!keepsCodes) {
-      limitInOnePass(kernel, levels, parity, size, whole);
+      limitUnlessUnchanged(kernel, levels, parity, size, whole);
       return;
     }
     Value limitedAt = b.toIndex(g);
