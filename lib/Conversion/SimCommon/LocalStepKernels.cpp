@@ -160,9 +160,10 @@ LogicalResult SimulationLowering::emitLocalSteps(ComponentOp component,
   // is a power of two (docs/Model.md, "Levels"). With m a power of two it
   // is m.
   auto wholeStepOf = [&](Value size) {
-    return b.floorPowerOfTwo(
-        b.sub(b.add(b.max(size, b.i64(1)), b.max(size, b.i64(1))), b.i64(1)));
+    Value atLeastOne = b.max(size, b.i64(1));
+    return b.floorPowerOfTwo(b.sub(b.add(atLeastOne, atLeastOne), b.i64(1)));
   };
+
   // The length of a sub-step of `level` that starts at `slot`: the last
   // one of a block ends with the big step.
   auto lengthOf = [&](Value level, Value slot, Value size) {
