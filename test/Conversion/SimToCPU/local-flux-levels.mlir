@@ -91,9 +91,16 @@ sim.simulation @rod range(100) dt(1.0e-2 : f32) max_steps(8) {
 // CHECK-NEXT:    arith.minsi %c8_i64, %[[BOUND]]
 // CHECK-NEXT:    memref.store %c0_i64, %arg0[%c14]
 // CHECK-LABEL: func.func @levels_Cells(
-//                The cells' codes, then one atomic per block.
+//                The cells' codes, then one atomic per block: a vector
+//                maximum for each whole block of a group that starts on a
+//                block boundary (an atomic, as the interfaces' codes join
+//                them), the lanes one by one for the rest.
 // CHECK:         } {simplan.lanes}
-// CHECK:         memref.atomic_rmw maxs
+// CHECK:         %[[WHOLE:.*]] = vector.load %alloca[%{{.*}}] : memref<?xi64>, vector<32xi64>
+// CHECK-NEXT:    %[[LARGEST:.*]] = vector.reduction <maxsi>, %[[WHOLE]] : vector<32xi64> into i64
+// CHECK:         memref.atomic_rmw maxs %[[LARGEST]]
+// CHECK:         scf.for
+// CHECK:           memref.atomic_rmw maxs
 //                The interfaces' codes: no atomic among the lanes.
 // CHECK-NOT:     memref.atomic_rmw
 // CHECK:         } {simplan.lanes}
@@ -127,8 +134,10 @@ sim.simulation @rod range(100) dt(1.0e-2 : f32) max_steps(8) {
 // CHECK:             arith.minsi
 // CHECK:       func.func @local_flux_Flux(
 
+// Under zero: the cells' whole blocks and the rest, the interfaces, and no
+// phase for the readers outside the range.
 // ZERO-LABEL:  func.func @levels_Cells(
-// ZERO-COUNT-2: memref.atomic_rmw maxs
+// ZERO-COUNT-3: memref.atomic_rmw maxs
 // ZERO-NOT:     memref.atomic_rmw
 // ZERO:        func.func @limit_levels_Cells(
 

@@ -51,12 +51,21 @@ sim.simulation @rod range(100) dt(1.0e-2 : f32) max_steps(8) {
 // first: every active lane stores one); then per block the maximum of its
 // lanes, a plain one where the block lies wholly in the group (no other
 // group writes it, and no flux writer's codes join it), else an atomic.
+// Where the group starts on a block boundary its whole blocks take a
+// vector maximum each; the lanes of the rest (a block the range cuts
+// short) are folded one by one.
 // CHECK-LABEL: func.func @levels_Diffuse(
 // CHECK:         %[[CODES:.*]] = memref.alloca(%{{.*}}) : memref<?xi64>
 // CHECK-NOT:     memref.store {{.*}}, %[[CODES]]
 // CHECK-NOT:     memref.atomic_rmw
 // CHECK:         memref.store %{{[0-9]+}}, %[[CODES]]
 // CHECK:         } {simplan.lanes}
+// CHECK:         %[[WHOLE:.*]] = vector.load %[[CODES]][%{{.*}}] : memref<?xi64>, vector<32xi64>
+// CHECK-NEXT:    %[[LARGEST:.*]] = vector.reduction <maxsi>, %[[WHOLE]] : vector<32xi64> into i64
+// CHECK:         %[[BEFORE:.*]] = memref.load %arg1
+// CHECK-NEXT:    %[[MAXED:.*]] = arith.maxsi %[[BEFORE]], %[[LARGEST]]
+// CHECK-NEXT:    memref.store %[[MAXED]], %arg1
+// CHECK-NOT:     memref.atomic_rmw
 // CHECK:         scf.for
 // CHECK:           %[[LANES:.*]] = scf.for
 // CHECK:             arith.maxsi
