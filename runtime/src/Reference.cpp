@@ -886,32 +886,40 @@ void ReferenceSession::localSteps(int32_t component, int64_t m) {
 
   // Each block's sub-step (blocks of LocalStepBlock::Items items, whatever
   // the group size), from the minimum of its items' num_steps at T and
-  // those of the interfaces its items read: the whole big step when that
-  // is m or more (counted as the smallest power of two not below m, so
-  // that every sub-step is a power of two), else its largest power of
-  // two. Every sub-step ends at the end of the big step at the latest.
-  int64_t whole = 1;
-  while (whole < m)
-    whole *= 2;
+  // those of the interfaces its items read, in units of u, the smallest
+  // num_steps of any item or interface (at most m): the whole big step when
+  // the minimum is m or more (counted as the smallest power of two of
+  // units not below m, so that every sub-step is u times a power of two),
+  // else u times the largest power of two within minimum / u. Every
+  // sub-step ends at the end of the big step at the latest.
   levels = {};
   levels.level.assign(size_t(groups), 0);
   std::vector<int64_t> smallest(size_t(groups), m);
+  int64_t unit = m;
   // (A pair's reader without num_steps: its writer's alone.)
   if (info.num_steps)
     for (int64_t g = 0; g < groups; ++g)
-      for (int64_t i = firstOf(g); i < lastOf(g); ++i)
-        smallest[size_t(g)] =
-            std::min(smallest[size_t(g)], numSteps(component, i, now));
+      for (int64_t i = firstOf(g); i < lastOf(g); ++i) {
+        int64_t steps = numSteps(component, i, now);
+        smallest[size_t(g)] = std::min(smallest[size_t(g)], steps);
+        unit = std::min(unit, steps);
+      }
   if (fluxWriter >= 0 && model_->components[size_t(fluxWriter)]->num_steps)
     for (int64_t j = 0; j < range; ++j) {
       int64_t steps = numSteps(fluxWriter, j, now);
+      unit = std::min(unit, steps);
       for (int64_t r : readersOf(j))
         smallest[size_t(r / group)] =
             std::min(smallest[size_t(r / group)], steps);
     }
+  int64_t whole = unit;
+  while (whole < m)
+    whole *= 2;
   for (int64_t g = 0; g < groups; ++g)
     levels.level[size_t(g)] =
-        smallest[size_t(g)] >= m ? whole : floorPowerOfTwo(smallest[size_t(g)]);
+        smallest[size_t(g)] >= m
+            ? whole
+            : unit * floorPowerOfTwo(smallest[size_t(g)] / unit);
   // No block more than twice as coarse as a block within reach of its
   // window (ceil(reach / block) blocks, around the range under wrap).
   int64_t reach = std::max(-info.local_window[0], info.local_window[1]);

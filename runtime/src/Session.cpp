@@ -214,6 +214,14 @@ void Session::forgetKeptLevels() {
     backend->zero(levels[c].pointer, levels[c].bytes);
     if (c < levelsKept.size())
       levelsKept[c] = false;
+    // Its unit request came from the same num_steps (local_parity_C never
+    // clears a component's that keeps its levels).
+    int64_t none = 0;
+    backend->write(clockMemory.pointer +
+                       (plan_->components[c]->sub_clock +
+                        int64_t(schema::SubClockSlot::UnitRequest)) *
+                           sizeof(int64_t),
+                   &none, sizeof none);
   }
   // A kept largest estimate (keeps_estimate) came from the same num_steps:
   // 0 in its Kept slot has the next big step take it again.
@@ -1220,7 +1228,29 @@ void Session::reduceLevels(const std::vector<uint32_t> &components,
   for (uint32_t c : gathered)
     if (plan_->components[c]->keeps_levels)
       levelsKept[c] = true;
+  reduceUnitRequests(gathered);
   reduceLevelCodes(gathered, counted, parity);
+}
+
+void Session::reduceUnitRequests(const std::vector<uint32_t> &components) {
+  // The unit of the levels (docs/Model.md, "Levels") is the smallest
+  // num_steps of every item, and each rank's levels_C combined those of its
+  // own items into the UnitRequest slot of the sub-step clock: their
+  // minimum over the ranks, in one all-reduce, is one process's. A
+  // component that keeps its levels keeps its request too (local_parity_C
+  // leaves it), so it travels with the codes, once.
+  auto slotOf = [&](uint32_t component) {
+    return clockMemory.pointer +
+           DevicePtr(plan_->components[component]->sub_clock +
+                     int64_t(schema::SubClockSlot::UnitRequest)) *
+               sizeof(int64_t);
+  };
+  std::vector<int64_t> requests(components.size());
+  for (size_t i = 0; i < components.size(); ++i)
+    backend->read(&requests[i], slotOf(components[i]), sizeof(int64_t));
+  comm->minimum(requests.data(), int32_t(requests.size()));
+  for (size_t i = 0; i < components.size(); ++i)
+    backend->write(slotOf(components[i]), &requests[i], sizeof(int64_t));
 }
 
 void Session::reduceLevelCodes(const std::vector<uint32_t> &components,
@@ -1595,7 +1625,22 @@ bool Session::slotRefreshes(const GhostRefresh &r, int component, int64_t slot,
     }
   }
   // The half each block wrote at the slot, or -1 when it did not start a
-  // sub-step there.
+  // sub-step there. Sub-steps and slots count in the big step's unit
+  // (docs/Model.md, "Levels"), which limit_levels_C left in the sub-step
+  // clock; every slot is a multiple of it.
+  int64_t unit = 0;
+  backend->read(&unit,
+                clockMemory.pointer +
+                    (plan_->components[size_t(component)]->sub_clock +
+                     int64_t(schema::SubClockSlot::Unit)) *
+                        sizeof(int64_t),
+                sizeof unit);
+  if (unit < 1 || slot % unit != 0)
+    fail(SIM_ERROR_CLOCK,
+         "component '" + plan_->components[size_t(component)]->name +
+             "' has the unit " + std::to_string(unit) + " at slot " +
+             std::to_string(slot) + ", which is not a multiple of it");
+  slot /= unit;
   const int64_t blocks = (settings.range + blockItems - 1) / blockItems;
   DevicePtr steps =
       levels[size_t(component)].pointer +

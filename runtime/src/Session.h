@@ -286,6 +286,9 @@ private:
   /// `components` (its sub-step clock's Size) by its minimum over all
   /// ranks, one all-reduce.
   void reduceFinest(const std::vector<uint32_t> &components);
+  /// The minimum over the ranks of the unit requests of `components`
+  /// (local time steps, before limit_levels_C).
+  void reduceUnitRequests(const std::vector<uint32_t> &components);
   /// A launch of a distributed plan: its all-reduces, the kernel, its
   /// exchanges (in the step phase, `step`, none past the run's end).
   void launchDistributed(Prepared &prepared, bool counted, bool step = false);

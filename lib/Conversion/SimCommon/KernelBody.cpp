@@ -252,11 +252,12 @@ private:
   }
 
   /// Local time steps: item `j`'s state at the reader's local time `T +
-  /// slot`, from the two time levels its block keeps. The block of sub-step
-  /// `s` has taken `c = ceil(slot / s)` sub-steps, so its latest level is
-  /// at `b = min(c s, m)` after `T` (in the half `source parity xor (c &
-  /// 1)`; its last sub-step ends with the big step) and its previous one at
-  /// `a = c s - s` (the other half). In step (`b = slot`): the latest
+  /// slot u` (`u` the big step's unit), from the two time levels its block
+  /// keeps. The block of sub-step `s` units has taken `c = ceil(slot / s)`
+  /// sub-steps, so its latest level is at `b = min(c s u, m)` after `T` (in
+  /// the half `source parity xor (c & 1)`; its last sub-step ends with the
+  /// big step) and its previous one at `a = (c s - s) u` (the other
+  /// half). In step (`b = slot`): the latest
   /// level; a coarser block ahead in time: the buffer's interpolation
   /// between the two at `(slot - a) / (b - a)`. Where lanes
   /// run side by side the item is loaded from both halves and the levels
@@ -353,12 +354,19 @@ private:
         previous = memref::LoadOp::create(
             builder, loc, memory,
             elementOf(arith::XOrIOp::create(builder, loc, latestParity, one)));
-      Value previousTime =
-          arith::SubIOp::create(builder, loc, latestTime, level);
-      Value behind = arith::SubIOp::create(builder, loc, slot, previousTime);
+      // In base steps from here: the unit times the units.
+      Value latestSteps =
+          arith::MulIOp::create(builder, loc, latestTime, values.levelUnit);
+      Value previousTime = arith::MulIOp::create(
+          builder, loc, arith::SubIOp::create(builder, loc, latestTime, level),
+          values.levelUnit);
+      Value behind = arith::SubIOp::create(
+          builder, loc,
+          arith::MulIOp::create(builder, loc, slot, values.levelUnit),
+          previousTime);
       Value length = arith::SubIOp::create(
           builder, loc,
-          arith::MinSIOp::create(builder, loc, latestTime, values.levelEnd),
+          arith::MinSIOp::create(builder, loc, latestSteps, values.levelEnd),
           previousTime);
       Value lengthF = arith::SIToFPOp::create(builder, loc, floatType, length);
       Value fraction = arith::DivFOp::create(

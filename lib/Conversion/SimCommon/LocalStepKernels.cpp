@@ -9,13 +9,16 @@
 // order:
 //
 //   snapshot_B       the value at T of buffers later components read
-//   levels_C         each block's sub-step: the whole big step when its
-//                    items' minimum num_steps at T is m or more, else its
-//                    largest power of two (the whole step counts as M, the
-//                    smallest power of two not below m, and every sub-step
-//                    ends with the big step at the latest)
-//   limit_levels_C   each block's sub-step: the largest with none more
-//                    than twice a neighbour's; the finest; each block's
+//   levels_C         each block's minimum num_steps at T, and the unit
+//                    request (the minimum over every item)
+//   limit_levels_C   the unit u (the request, at most m) and each block's
+//                    sub-step in units: the whole big step when its
+//                    minimum is m or more, else the largest power of two
+//                    within minimum / u (the whole step counts as M, the
+//                    smallest power of two not below m / u, and every
+//                    sub-step ends with the big step at the latest); then
+//                    the largest with none more than twice a
+//                    neighbour's; the finest; each block's
 //                    neighbourhood codes. On a GPU one lane per block (a
 //                    minimum over the blocks within ceil(log2 max_steps)
 //                    neighbour steps, the finest by an atomic minimum); on
@@ -55,8 +58,10 @@
 // work is its own, spread over the lanes of an items launch: one thread walking
 // the blocks would cost a dependent load per block and sweep per big step. The
 // sub-step clock of the component holds: Begin, the time T + q of the next slot
-// (advance resets it to T); Size, the finest sub-step; Done, the invocations of
-// local_step_C that finished the slot so far (0 between launches). Which half
+// (advance resets it to T); Size, the finest sub-step in units; Done, the
+// invocations of local_step_C that finished the slot so far (0 between
+// launches); Unit, the big step's unit u (limit_levels_C); UnitRequest,
+// what levels_C combines u from. Which half
 // of a buffer holds a block's latest level follows from its sub-step and the
 // slot alone, so no flag is written during a slot and every reader can
 // tell (KernelBody.cpp, the `local` loads).
@@ -118,8 +123,8 @@ LogicalResult SimulationLowering::emitLocalSteps(ComponentOp component,
   component.emitRemark()
       << "@" << name << " takes local time steps: every block of "
       << kLevelBlock
-      << " items its own sub-step (the whole big step, or a power of two "
-         "below it), at most twice that of the "
+      << " items its own sub-step (the whole big step, or the finest "
+         "num_steps times a power of two below it), at most twice that of the "
       << radius << " block" << (radius == 1 ? "" : "s")
       << " on each side, in up to " << maxSteps
       << " slot launches per big step";
@@ -164,10 +169,25 @@ LogicalResult SimulationLowering::emitLocalSteps(ComponentOp component,
     return b.floorPowerOfTwo(b.sub(b.add(atLeastOne, atLeastOne), b.i64(1)));
   };
 
-  // The length of a sub-step of `level` that starts at `slot`: the last
-  // one of a block ends with the big step.
-  auto lengthOf = [&](Value level, Value slot, Value size) {
-    return b.min(level, b.sub(size, slot));
+  // Sub-steps are counted in the big step's unit `u` of base steps (the
+  // sub-step clock's Unit, which limit_levels_C sets): a block of sub-step
+  // `level` units takes `level * u` base steps, and the slots lie `u`
+  // apart. With every request a power of two or m or more, `u` is 1 or m.
+  auto unitOf = [&](Kernel &kernel) {
+    return b.load(kernel.clock, b.index(sub + kSubUnit));
+  };
+  // `steps` base steps in units, rounded up (the last sub-step may be
+  // shorter than a unit: it ends with the big step).
+  auto unitsOf = [&](Value steps, Value unit) {
+    return arith::DivUIOp::create(b, b.loc, b.add(steps, b.sub(unit, b.i64(1))),
+                                  unit)
+        .getResult();
+  };
+  // The length in base steps of a sub-step of `level` units that starts
+  // `offset` base steps into the big step `size`: the last one of a block
+  // ends with the big step.
+  auto lengthOf = [&](Value level, Value unit, Value offset, Value size) {
+    return b.min(b.mul(level, unit), b.sub(size, offset));
   };
   // The neighbourhood codes of the blocks of a part (limit_levels_C): whether
   // they are all one code, and the first. A part inside the range.
@@ -193,9 +213,11 @@ LogicalResult SimulationLowering::emitLocalSteps(ComponentOp component,
   };
 
   // The prologue of a slot kernel: the big step, `levels @C`, the slot's
-  // time `now = T + slot`, and whether a slot of this big step is due.
+  // time `now = T + offset`, the unit, the slot `offset / unit` and the big
+  // step `units` in units, and whether a slot of this big step is due.
   struct Slot {
-    Value begin, size, parity, levels, dt, now, slot, running;
+    Value begin, size, parity, levels, dt, now, offset, unit, slot, units,
+        running;
   };
   auto readSlot = [&](Kernel &kernel) {
     Slot state;
@@ -203,10 +225,15 @@ LogicalResult SimulationLowering::emitLocalSteps(ComponentOp component,
     state.levels = kernel.levels.lookup(symbol);
     state.dt = kernel.values.params.lookup("dt");
     state.now = b.load(kernel.clock, b.index(sub + kSubBegin));
-    state.slot = b.sub(state.now, state.begin);
+    state.offset = b.sub(state.now, state.begin);
+    // At least 1: a clock past the run (no big step) holds none.
+    state.unit = b.max(unitOf(kernel), b.i64(1));
+    state.slot =
+        arith::DivUIOp::create(b, b.loc, state.offset, state.unit).getResult();
+    state.units = unitsOf(state.size, state.unit);
     state.running = arith::AndIOp::create(
         b, b.loc, b.cmp(arith::CmpIPredicate::sgt, state.size, b.i64(0)),
-        b.cmp(arith::CmpIPredicate::slt, state.slot, state.size));
+        b.cmp(arith::CmpIPredicate::slt, state.offset, state.size));
     return state;
   };
   // The results of a lane's evaluation into the half at `base` and
@@ -711,6 +738,10 @@ LogicalResult SimulationLowering::emitLocalSteps(ComponentOp component,
     // maxPerBlock reads the active lanes' codes, and on a CPU a group's
     // worth of zeros cost a memset in every big step, kept codes or not.
     LaneVar code = target.createLaneVar(b, kernel, b.getI64Type(), Value());
+    // Each lane's smallest num_steps less kUnitBias (the unit request,
+    // limit_levels_C's unit), combined into the sub-step clock by a
+    // minimum; 0, the identity, in lanes that computed none.
+    LaneVar request = target.createLaneVar(b, kernel, b.getI32Type(), b.i32(0));
     Value begin, size, parity;
     readBigStep(kernel, begin, size, parity);
     Value levels = kernel.levels.lookup(symbol);
@@ -719,11 +750,19 @@ LogicalResult SimulationLowering::emitLocalSteps(ComponentOp component,
       // The code of `writer`'s num_steps at T at a lane's item, capped at
       // max_steps rather than at m: limit_levels_C caps what it decodes at
       // m, so the codes hold for any big step (and can be kept, below).
+      // It also joins the lane's unit request: the capped num_steps, at
+      // least 1, less kUnitBias (an i32: num_steps is one).
       auto codeAt = [&](ComponentOp writer, const Lane &lane) {
         KernelValues values = kernel.values;
         values.item = lane.item;
-        Value steps = b.extend(
-            estimate(kernel, writer, lane.item, begin, values), b.getI64Type());
+        Value steps32 = estimate(kernel, writer, lane.item, begin, values);
+        Value steps = b.extend(steps32, b.getI64Type());
+        Value wanted =
+            b.sub(b.max(b.min(steps32, b.i32(std::min(maxSteps, kUnitBias))),
+                        b.i32(1)),
+                  b.i32(kUnitBias));
+        target.laneStore(b, b.min(target.laneLoad(b, request, lane), wanted),
+                         request, lane);
         return b.sub(b.i64(kLevelCode), b.min(steps, b.i64(maxSteps)));
       };
       // Where limit_levels_C takes the finest sub-step by an atomic
@@ -839,6 +878,8 @@ LogicalResult SimulationLowering::emitLocalSteps(ComponentOp component,
                    [&] { target.forEachLane(b, kernel, base, startFinest); });
         b.ifThen(b.xorOne(unitStep), [&] { groupCodes(base); });
       });
+      target.reduceIntoClock(b, kernel, request, arith::AtomicRMWKind::mins,
+                             sub + kSubUnitRequest);
     });
     if (failed(endKernel(kernel, simplan::LaunchShape::items, launches)))
       return failure();
@@ -1023,15 +1064,25 @@ LogicalResult SimulationLowering::emitLocalSteps(ComponentOp component,
     return b.select(b.cmp(arith::CmpIPredicate::ne, kept, b.i64(0)), kept,
                     code);
   };
-  // A block's sub-step is a power of two: the whole big step `m` (counted
-  // as `whole`, the smallest power of two not below it) when its minimum
-  // is `m` or more, else the minimum's largest power of two, below m.
+  // The unit `u` of the big step being limited (limit_levels_C sets it
+  // before any of the functions below runs): the smallest num_steps of the
+  // component's items (and its flux writer's interfaces), capped at m.
+  Value limitUnit;
+  // A block's sub-step is a power of two of units: the whole big step `m`
+  // (counted as `whole`, the smallest power of two not below m / u) when
+  // its minimum is `m` or more, else the largest power of two within its
+  // minimum over the unit, below m / u (the minimum is at least the unit).
   auto decodedLevel = [&](Kernel &kernel, Value levels, Value parity,
                           Value size, Value whole, Value h) {
     Value code = codeOf(kernel, levels, parity, h);
     Value smallest = b.sub(b.i64(kLevelCode), code);
+    // (At least 1: every minimum is at least the unit, which is the
+    // smallest of them, so this only guards a level of 0.)
+    Value units =
+        b.max(arith::DivUIOp::create(b, b.loc, smallest, limitUnit).getResult(),
+              b.i64(1));
     return b.floorPowerOfTwo(b.select(
-        b.cmp(arith::CmpIPredicate::sge, smallest, size), whole, smallest));
+        b.cmp(arith::CmpIPredicate::sge, smallest, size), whole, units));
   };
   // Block g's sub-step into section kLevelSteps, and its code in half
   // 1 - parity, the previous big step's, cleared for the next (0 is the
@@ -1462,10 +1513,13 @@ LogicalResult SimulationLowering::emitLocalSteps(ComponentOp component,
                   .getResult(),
               b.min(compare.getRegionIterArg(1), b.load(levels, at(steps)))});
     }
-    Value unchanged =
-        arith::AndIOp::create(b, b.loc, compare.getResult(0),
-                              b.cmp(arith::CmpIPredicate::eq,
-                                    b.load(kernel.clock, limitedFor), size));
+    // The levels depend on m and the unit (which other blocks' items, or a
+    // flux writer's interfaces that no block reads, may set): both, as
+    // one key (u <= m <= max_steps).
+    Value key = b.add(b.mul(limitUnit, b.i64(maxSteps + 1)), size);
+    Value unchanged = arith::AndIOp::create(
+        b, b.loc, compare.getResult(0),
+        b.cmp(arith::CmpIPredicate::eq, b.load(kernel.clock, limitedFor), key));
     b.ifThenElse(
         TypeRange{}, unchanged,
         [&]() -> SmallVector<Value> {
@@ -1481,7 +1535,7 @@ LogicalResult SimulationLowering::emitLocalSteps(ComponentOp component,
           b.store(b.add(b.load(levels, b.toIndex(b.add(codes, g))), one),
                   levels, b.toIndex(b.add(cached, g)));
           b.setInsertionPointAfter(keep);
-          b.store(size, kernel.clock, limitedFor);
+          b.store(key, kernel.clock, limitedFor);
           return {};
         });
   };
@@ -1536,16 +1590,30 @@ LogicalResult SimulationLowering::emitLocalSteps(ComponentOp component,
     readClock(kernel, begin, size, parity);
     Value levels = kernel.levels.lookup(symbol);
     Value running = b.cmp(arith::CmpIPredicate::sgt, size, b.i64(0));
-    Value whole = wholeStepOf(size);
+    // The unit: the smallest num_steps levels_C found (on every rank: the
+    // runtime's reduction of the levels), capped at m; 0 (none found: every
+    // block's codes are kept, or the big step is 1) stands for m.
+    Value requested = b.add(
+        b.load(kernel.clock, b.index(sub + kSubUnitRequest)), b.i64(kUnitBias));
+    limitUnit = b.max(b.min(requested, size), b.i64(1));
+    Value whole = wholeStepOf(unitsOf(size, limitUnit));
+    // The lane of the window's first block records it for the slots.
+    auto recordUnit = [&](Kernel &kernel, Value g) {
+      Value firstBlock = toI64(windowOf(kernel).first[0]);
+      b.ifThen(b.cmp(arith::CmpIPredicate::eq, g, firstBlock), [&] {
+        b.store(limitUnit, kernel.clock, b.index(sub + kSubUnit));
+      });
+    };
     if (target.limitsLevelsPerLane()) {
       b.ifThen(running, [&] {
         // A big step of one base step: every sub-step is 1 (as in
         // limitInOnePass), and the finest is m, which levels_C set.
         Value one = b.i64(1);
-        Value unit = b.cmp(arith::CmpIPredicate::eq, size, one);
+        Value unitStep = b.cmp(arith::CmpIPredicate::eq, size, one);
         forEachBlockOfLanes(kernel, [&](Value g) {
+          recordUnit(kernel, g);
           b.ifThenElse(
-              TypeRange{}, unit,
+              TypeRange{}, unitStep,
               [&]() -> SmallVector<Value> {
                 unitBlock(kernel, levels, parity, size, g);
                 return {};
@@ -1580,6 +1648,7 @@ LogicalResult SimulationLowering::emitLocalSteps(ComponentOp component,
         Value firstBlock = toI64(windowOf(kernel).first[0]);
         forEachBlockOfLanes(kernel, [&](Value g) {
           b.ifThen(b.cmp(arith::CmpIPredicate::eq, g, firstBlock), [&] {
+            b.store(limitUnit, kernel.clock, b.index(sub + kSubUnit));
             limitUnlessKept(kernel, levels, parity, size, whole, g);
           });
         });
@@ -1588,6 +1657,8 @@ LogicalResult SimulationLowering::emitLocalSteps(ComponentOp component,
     // Distributed plans: every rank limits the levels of the blocks within
     // its level reach, from the codes of the ranks' items there: their
     // maximum, as levels_C's atomics take it on one process.
+    // (The runtime's reduction of the levels also takes the minimum of
+    // the ranks' unit requests: Session::reduceUnitRequests.)
     if (distributed)
       pendingReduceLevels.push_back(FlatSymbolRefAttr::get(symbol));
     if (failed(endKernel(kernel, simplan::LaunchShape::items, launches)))
@@ -1613,7 +1684,7 @@ LogicalResult SimulationLowering::emitLocalSteps(ComponentOp component,
           dt = state.dt, now = state.now, slot = state.slot;
     b.ifThen(state.running, [&] {
       Value half = stepsOf(kernel);
-      Value whole = wholeStepOf(size);
+      Value whole = wholeStepOf(state.units);
       // One evaluation of interface `lane.item` over `level` from T +
       // slot; reads the reader's state from its time levels, or (`uniform`:
       // every block it reaches at `level`, all in step) from the half
@@ -1629,6 +1700,7 @@ LogicalResult SimulationLowering::emitLocalSteps(ComponentOp component,
           values.levels = levels;
           values.levelSlot = slot;
           values.levelEnd = size;
+          values.levelUnit = state.unit;
           values.levelBase = half;
           values.levelsAtItem = true;
           values.levelsFromBothHalves = target.readsLevelsFromBothHalves();
@@ -1643,11 +1715,13 @@ LogicalResult SimulationLowering::emitLocalSteps(ComponentOp component,
             b.select(first, values.sourceParity, values.targetParity);
         values.latestBase =
             b.select(first, values.sourceBase, values.targetBase);
-        SmallVector<Value> results = inline_(
-            fluxWriter.getEvaluate(),
-            {lane.item, now,
-             b.truncate(lengthOf(level, slot, size), b.getI32Type()), dt},
-            values);
+        SmallVector<Value> results =
+            inline_(fluxWriter.getEvaluate(),
+                    {lane.item, now,
+                     b.truncate(lengthOf(level, state.unit, state.offset, size),
+                                b.getI32Type()),
+                     dt},
+                    values);
         storeResults(kernel, lane, fluxWrites, results, values.targetBase,
                      values.targetParity, counted ? &count : nullptr);
       };
@@ -1725,14 +1799,17 @@ LogicalResult SimulationLowering::emitLocalSteps(ComponentOp component,
           values.levels = levels;
           values.levelSlot = slot;
           values.levelEnd = size;
+          values.levelUnit = state.unit;
           values.levelBase = half;
           values.levelsFromBothHalves = target.readsLevelsFromBothHalves();
         }
-        SmallVector<Value> results = inline_(
-            component.getEvaluate(),
-            {lane.item, now,
-             b.truncate(lengthOf(level, slot, size), b.getI32Type()), dt},
-            values);
+        SmallVector<Value> results =
+            inline_(component.getEvaluate(),
+                    {lane.item, now,
+                     b.truncate(lengthOf(level, state.unit, state.offset, size),
+                                b.getI32Type()),
+                     dt},
+                    values);
         assert((!counted || count) && "a run counts its lanes at once");
         storeResults(kernel, lane, writes, results, writeBase, writeParity,
                      counted ? &*count : nullptr);
@@ -1771,7 +1848,8 @@ LogicalResult SimulationLowering::emitLocalSteps(ComponentOp component,
     b.ifThen(state.running, [&] {
       target.afterLastInvocation(b, kernel, sub + kSubCount, [&] {
         Value finest = b.load(kernel.clock, b.index(sub + kSubSize));
-        b.store(b.min(b.add(now, finest), b.add(state.begin, size)),
+        b.store(b.min(b.add(now, b.mul(finest, state.unit)),
+                      b.add(state.begin, size)),
                 kernel.clock, b.index(sub + kSubBegin));
       });
     });
@@ -1790,14 +1868,16 @@ LogicalResult SimulationLowering::emitLocalSteps(ComponentOp component,
   Value levels = kernel.levels.lookup(symbol);
   b.ifThen(b.cmp(arith::CmpIPredicate::sgt, size, b.i64(0)), [&] {
     Value half = stepsOf(kernel);
-    // ceil(m / level) sub-steps, even when bit `level` (a power of two) of
-    // m - 1 + level is clear: with m a power of two, unless level is m. A
+    // The big step in units, M (ceil(m / u)).
+    Value units = unitsOf(size, b.max(unitOf(kernel), b.i64(1)));
+    // ceil(M / level) sub-steps, even when bit `level` (a power of two) of
+    // M - 1 + level is clear: with M a power of two, unless level is M. A
     // part of one sub-step (its step codes are it or minus it) copies all
     // its items or none.
     auto even = [&](Value level) {
       return b.cmp(arith::CmpIPredicate::eq,
                    arith::AndIOp::create(
-                       b, b.loc, b.add(b.sub(size, b.i64(1)), level), level),
+                       b, b.loc, b.add(b.sub(units, b.i64(1)), level), level),
                    b.i64(0));
     };
     forEachCodePart(
@@ -1827,6 +1907,16 @@ LogicalResult SimulationLowering::emitLocalSteps(ComponentOp component,
           });
         });
   });
+  // The next big step's levels_C combines its unit request afresh, unless
+  // the levels are kept (invariant_levels: levels_C stops combining, and
+  // the request stays what it was); the last invocation clears it, when
+  // every invocation has read the unit.
+  if (!keepsCodes)
+    b.ifThen(b.cmp(arith::CmpIPredicate::sgt, size, b.i64(0)), [&] {
+      target.afterLastInvocation(b, kernel, sub + kSubCount, [&] {
+        b.store(b.i64(0), kernel.clock, b.index(sub + kSubUnitRequest));
+      });
+    });
   // It writes the target half only; the source half travelled with the
   // slot that wrote it.
   pendingWrittenHalf = WrittenHalf::Target;

@@ -67,8 +67,8 @@ sim.simulation @rod range(100) dt(1.0e-2 : f32) max_steps(8) {
 // the ranks agree on it by the minimum of its negated value, and no other
 // estimate is all-reduced (the runtime skips the slot once it is kept).
 // CHECK-LABEL: simplan.plan
-// CHECK:         simplan.component @Flux writes [@F] evaluations(8) advance local_flux estimates largest_estimate(14) keeps_estimate
-// CHECK:         simplan.launch @rod_kernels::@advance single [#simplan.arg<clock>] reduce_min [14]{{$}}
+// CHECK:         simplan.component @Flux writes [@F] evaluations(8) advance local_flux estimates largest_estimate(16) keeps_estimate
+// CHECK:         simplan.launch @rod_kernels::@advance single [#simplan.arg<clock>] reduce_min [16]{{$}}
 // CHECK:         simplan.repeat 8 {
 // CHECK-NEXT:      simplan.launch @rod_kernels::@local_flux_Flux items [{{.*}}#simplan.arg<levels @Cells>{{.*}}] for @Flux exchange_local_flux [@F]
 // CHECK-NEXT:      simplan.launch @rod_kernels::@local_step_Cells items [{{.*}}] for @Cells exchange_local_step [@U]

@@ -66,37 +66,37 @@ sim.simulation @rod range(100) dt(1.0e-2 : f32) max_steps(8) {
 
 // The flux writer's estimate bounds the big step by its largest num_steps
 // (docs/Model.md, "The big step"): capped at max_steps, negated, combined
-// into its own slot (14) by minima, groups stopping once the slot holds
-// the cap (their hint in 15); taken only while advance has kept none (16),
+// into its own slot (16) by minima, groups stopping once the slot holds
+// the cap (their hint in 17); taken only while advance has kept none (18),
 // since its reader keeps its levels (keeps_estimate).
 // CHECK-LABEL: func.func @estimate_Flux(
-// CHECK:         %[[KEPT:.*]] = memref.load %arg0[%c16]
+// CHECK:         %[[KEPT:.*]] = memref.load %arg0[%c18]
 // CHECK:         arith.cmpi eq, %[[KEPT]], %c0_i64
-// CHECK:         memref.atomic_rmw addi %c0_i64, %arg0[%c15]
+// CHECK:         memref.atomic_rmw addi %c0_i64, %arg0[%c17]
 // CHECK:         arith.cmpi sgt, %{{.*}}, %c-8_i64
 // CHECK:         %[[CAPPED:.*]] = arith.minsi %{{.*}}, %c8_i32 : i32
 // CHECK-NEXT:    arith.subi %c0_i32, %[[CAPPED]] : i32
-// CHECK:         memref.atomic_rmw mins %{{.*}}, %arg0[%c14]
+// CHECK:         memref.atomic_rmw mins %{{.*}}, %arg0[%c16]
 // advance: the big step at most the largest estimate, the one taken or the
 // one kept (the cap when neither), which it keeps; the slot of the one
 // taken starts the next at 0.
 // CHECK-LABEL: func.func @advance(
-// CHECK:         %[[TAKEN:.*]] = memref.load %arg0[%c14]
-// CHECK-NEXT:    %[[OLD:.*]] = memref.load %arg0[%c16]
+// CHECK:         %[[TAKEN:.*]] = memref.load %arg0[%c16]
+// CHECK-NEXT:    %[[OLD:.*]] = memref.load %arg0[%c18]
 // CHECK-NEXT:    %[[NEGATED:.*]] = arith.minsi %[[TAKEN]], %[[OLD]]
-// CHECK-NEXT:    memref.store %[[NEGATED]], %arg0[%c16]
+// CHECK-NEXT:    memref.store %[[NEGATED]], %arg0[%c18]
 // CHECK-NEXT:    %[[ANY:.*]] = arith.cmpi slt, %[[NEGATED]], %c0_i64
 // CHECK-NEXT:    %[[LARGEST:.*]] = arith.subi %c0_i64, %[[NEGATED]]
 // CHECK-NEXT:    %[[BOUND:.*]] = arith.select %[[ANY]], %[[LARGEST]], %c8_i64
 // CHECK-NEXT:    arith.minsi %c8_i64, %[[BOUND]]
-// CHECK-NEXT:    memref.store %c0_i64, %arg0[%c14]
+// CHECK-NEXT:    memref.store %c0_i64, %arg0[%c16]
 // CHECK-LABEL: func.func @levels_Cells(
 //                The cells' codes, then one atomic per block: a vector
 //                maximum for each whole block of a group that starts on a
 //                block boundary (an atomic, as the interfaces' codes join
 //                them), the lanes one by one for the rest.
 // CHECK:         } {simplan.lanes}
-// CHECK:         %[[WHOLE:.*]] = vector.load %alloca[%{{.*}}] : memref<?xi64>, vector<32xi64>
+// CHECK:         %[[WHOLE:.*]] = vector.load %{{alloca[_0-9]*}}[%{{.*}}] : memref<?xi64>, vector<32xi64>
 // CHECK-NEXT:    %[[LARGEST:.*]] = vector.reduction <maxsi>, %[[WHOLE]] : vector<32xi64> into i64
 // CHECK:         memref.atomic_rmw maxs %[[LARGEST]]
 // CHECK:         scf.for
@@ -135,9 +135,11 @@ sim.simulation @rod range(100) dt(1.0e-2 : f32) max_steps(8) {
 // CHECK:       func.func @local_flux_Flux(
 
 // Under zero: the cells' whole blocks and the rest, the interfaces, and no
-// phase for the readers outside the range.
+// phase for the readers outside the range; then the unit request (the
+// sub-step clock's UnitRequest, 15).
 // ZERO-LABEL:  func.func @levels_Cells(
 // ZERO-COUNT-3: memref.atomic_rmw maxs
+// ZERO:         memref.atomic_rmw mins %{{.*}}, %arg0[%c15]
 // ZERO-NOT:     memref.atomic_rmw
 // ZERO:        func.func @limit_levels_Cells(
 
@@ -147,5 +149,5 @@ sim.simulation @rod range(100) dt(1.0e-2 : f32) max_steps(8) {
 // WIDE-NOT:   lanes stay scalar
 
 // CHECK-LABEL: simplan.plan
-// CHECK:         simplan.component @Flux writes [@F] evaluations(8) advance local_flux estimates largest_estimate(14) keeps_estimate
+// CHECK:         simplan.component @Flux writes [@F] evaluations(8) advance local_flux estimates largest_estimate(16) keeps_estimate
 // CHECK-NEXT:    simplan.component @Cells writes [@U] evaluations(9) advance local_steps sub_clock(10) keeps_levels

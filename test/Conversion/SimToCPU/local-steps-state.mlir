@@ -39,9 +39,10 @@ sim.simulation @front range(100) dt(1.0e-2 : f32) max_steps(6) {
   sim.observe [@U]
 }
 
-// advance restarts the sub-step clock of @React (slots 9 to 12: Begin, Size,
-// Done, Estimate) but leaves its Estimate slot, where limit_levels_C keeps
-// the big step it last limited the levels for.
+// advance restarts the sub-step clock of @React (slots 9 to 14: Begin, Size,
+// Done, Estimate, Unit, UnitRequest) but leaves its Estimate slot, where
+// limit_levels_C keeps the key of the levels it last limited, and the
+// unit slots, which limit_levels_C and local_parity_C keep.
 // CHECK-LABEL: func.func @advance(
 // CHECK:         memref.store %{{.*}}, %arg0[%c9]
 // CHECK-NEXT:    memref.store %c0_i64, %arg0[%c10]
@@ -49,18 +50,41 @@ sim.simulation @front range(100) dt(1.0e-2 : f32) max_steps(6) {
 // CHECK-NOT:     memref.store
 // CHECK:       return
 
-// limit_levels_C: the whole big step counts as the smallest power of two
-// not below m. One pass over the blocks compares each code (half `parity`)
+// levels_C: each item's num_steps, capped at max_steps and at least 1, less
+// 2^31 - 1, joins the unit request, the minimum over the lanes, which goes
+// into the UnitRequest slot (14) by an atomic minimum.
+// CHECK-LABEL: func.func @levels_React(
+// CHECK:         %[[REQUEST:.*]] = memref.alloca(%{{.*}}) : memref<?xi32>
+// CHECK:         arith.minsi %{{.*}}, %c6_i32 : i32
+// CHECK-NEXT:    arith.maxsi %{{.*}}, %c1_i32 : i32
+// CHECK-NEXT:    arith.subi %{{.*}}, %c2147483647_i32 : i32
+// CHECK:         %[[FOLD:.*]] = scf.for {{.*}} iter_args(%{{.*}} = %c2147483647_i32) -> (i32)
+// CHECK:         %[[WIDE:.*]] = arith.extsi %[[FOLD]] : i32 to i64
+// CHECK-NEXT:    memref.atomic_rmw mins %[[WIDE]], %arg0[%c14]
+// CHECK:       return
+
+// limit_levels_C: the unit u is the request plus 2^31 - 1, at most m and at
+// least 1; the whole big step counts as the smallest power of two not below
+// ceil(m / u). One pass over the blocks compares each code (half `parity`)
 // plus 1 with the one kept in section Cached (7), clears the code half of
 // the next big step and takes the finest sub-step kept in section Steps;
-// where every code and m (the Estimate slot) are those of the last limit,
-// that finest goes to the sub-step clock's Size and nothing is limited;
-// else the levels are limited again, and the codes plus 1 and m kept.
+// where every code and the key u * (max_steps + 1) + m (the Estimate slot)
+// are those of the last limit, that finest goes to the sub-step clock's
+// Size and nothing is limited; else the levels are limited again, and the
+// codes plus 1 and the key kept. The unit goes to the Unit slot (13).
 // CHECK-LABEL: func.func @limit_levels_React(
 // CHECK-SAME:      %[[CLOCK:arg0]]: memref<?xi64>, %[[LEVELS:arg1]]: memref<?xi64>
 // CHECK:         %[[M:.*]] = memref.load %[[CLOCK]][%c1]
-// CHECK:         %[[ONE:.*]] = arith.maxsi %[[M]], %c1_i64
+// CHECK:         %[[REQ:.*]] = memref.load %[[CLOCK]][%c14]
+// CHECK-NEXT:    %[[ASKED:.*]] = arith.addi %[[REQ]], %c2147483647_i64
+// CHECK-NEXT:    %[[CAPPED:.*]] = arith.minsi %[[ASKED]], %[[M]]
+// CHECK-NEXT:    %[[UNIT:.*]] = arith.maxsi %[[CAPPED]], %c1_i64
+// CHECK-NEXT:    %[[UM1:.*]] = arith.subi %[[UNIT]], %c1_i64
+// CHECK-NEXT:    %[[UP:.*]] = arith.addi %[[M]], %[[UM1]]
+// CHECK-NEXT:    %[[UNITS:.*]] = arith.divui %[[UP]], %[[UNIT]]
+// CHECK-NEXT:    %[[ONE:.*]] = arith.maxsi %[[UNITS]], %c1_i64
 // CHECK:         %[[TWICE:.*]] = arith.addi %[[ONE]], %[[ONE]]
+// CHECK:         memref.store %[[UNIT]], %[[CLOCK]][%c13]
 // CHECK:         %[[CACHED:.*]] = arith.muli %c7_i64
 // CHECK:         %[[PASS:.*]]:2 = scf.for {{.*}} iter_args(%{{.*}} = %true, %{{.*}} = %{{.*}}) -> (i1, i64)
 // CHECK:           %[[CODE:.*]] = memref.load %[[LEVELS]]
@@ -70,25 +94,45 @@ sim.simulation @front range(100) dt(1.0e-2 : f32) max_steps(6) {
 // CHECK:           arith.cmpi eq, %[[PLUS]], %[[KEPT]]
 // CHECK:           memref.store %c0_i64, %[[LEVELS]]
 // CHECK:           arith.minsi
-// CHECK:         %[[LAST:.*]] = memref.load %[[CLOCK]][%c12]
-// CHECK:         %[[SAMEM:.*]] = arith.cmpi eq, %[[LAST]], %[[M]]
+// CHECK:         %[[SCALED:.*]] = arith.muli %[[UNIT]], %c7_i64
+// CHECK-NEXT:    %[[KEY:.*]] = arith.addi %[[SCALED]], %[[M]]
+// CHECK-NEXT:    %[[LAST:.*]] = memref.load %[[CLOCK]][%c12]
+// CHECK-NEXT:    %[[SAMEM:.*]] = arith.cmpi eq, %[[LAST]], %[[KEY]]
 // CHECK:         %[[REUSE:.*]] = arith.andi %[[PASS]]#0, %[[SAMEM]]
 // CHECK:         scf.if %[[REUSE]] {
 // CHECK-NEXT:      memref.store %[[PASS]]#1, %[[CLOCK]][%c10]
 // CHECK-NEXT:    } else {
+// CHECK:             arith.divui %{{.*}}, %[[UNIT]] : i64
 // CHECK:             %[[KEEPAT:.*]] = arith.addi %[[CACHED]], %{{[0-9]+}} : i64
 // CHECK-NEXT:        %[[KEEPINDEX:.*]] = arith.index_cast %[[KEEPAT]] : i64 to index
 // CHECK-NEXT:        memref.store %{{[0-9]+}}, %[[LEVELS]][%[[KEEPINDEX]]]
 // CHECK-NEXT:      }
-// CHECK-NEXT:      memref.store %[[M]], %[[CLOCK]][%c12]
+// CHECK-NEXT:      memref.store %[[KEY]], %[[CLOCK]][%c12]
 // CHECK:       return
 
-// local_step_C: a sub-step from slot q evaluates over min(s, m - q) base
-// steps, so that a block's last sub-step ends with the big step.
+// local_step_C: the slot is its offset into the big step over the unit (the
+// Unit slot, 13); a sub-step from it evaluates over min(s u, m - offset)
+// base steps, so that a block's last sub-step ends with the big step, and
+// the clock moves on by the finest sub-step times the unit.
 // CHECK-LABEL: func.func @local_step_React(
 // CHECK:         %[[SIZE:.*]] = memref.load %arg0[%c1]
-// CHECK:         %[[SLOT:.*]] = arith.subi %{{.*}}, %{{.*}} : i64
-// CHECK:         %[[LEFT:.*]] = arith.subi %[[SIZE]], %[[SLOT]] : i64
-// CHECK-NEXT:    %[[LENGTH:.*]] = arith.minsi %{{.*}}, %[[LEFT]] : i64
+// CHECK:         %[[OFFSET:.*]] = arith.subi %{{.*}}, %{{.*}} : i64
+// CHECK-NEXT:    %[[STORED:.*]] = memref.load %arg0[%c13]
+// CHECK-NEXT:    %[[UNIT:.*]] = arith.maxsi %[[STORED]], %c1_i64
+// CHECK-NEXT:    %[[SLOT:.*]] = arith.divui %[[OFFSET]], %[[UNIT]]
+// CHECK:         %[[STEPS:.*]] = arith.muli %{{.*}}, %[[UNIT]] : i64
+// CHECK-NEXT:    %[[LEFT:.*]] = arith.subi %[[SIZE]], %[[OFFSET]] : i64
+// CHECK-NEXT:    %[[LENGTH:.*]] = arith.minsi %[[STEPS]], %[[LEFT]] : i64
 // CHECK-NEXT:    arith.trunci %[[LENGTH]] : i64 to i32
+// CHECK:         %[[FINEST:.*]] = memref.load %arg0[%c10]
+// CHECK-NEXT:    %[[STRIDE:.*]] = arith.muli %[[FINEST]], %[[UNIT]]
+// CHECK:       return
+
+// local_parity_C: the parity of ceil(M / s), M the big step in units; the
+// last invocation clears the unit request for the next big step.
+// CHECK-LABEL: func.func @local_parity_React(
+// CHECK:         %[[PSTORED:.*]] = memref.load %arg0[%c13]
+// CHECK-NEXT:    %[[PUNIT:.*]] = arith.maxsi %[[PSTORED]], %c1_i64
+// CHECK:         arith.divui %{{.*}}, %[[PUNIT]]
+// CHECK:         memref.store %c0_i64, %arg0[%c14]
 // CHECK:       return

@@ -8,11 +8,11 @@
 // lowering leaves on them.
 
 // CHECK-LABEL: gpu.module @every_kernels
-// CHECK:         gpu.func @reset_clock(%{{.*}}: memref<?xi64>) kernel attributes {simplan.clock_slots = 20 : i64, simplan.shared = array<i64: 0, 0>}
-// CHECK:         gpu.func @substep_C1(%{{.*}}: memref<?xi64>, %{{.*}}: memref<?xvector<4xf32>>, %{{.*}}: memref<?xvector<4xf32>>, %{{.*}}: i32, %{{.*}}: i64, %{{.*}}: f32) kernel attributes {simplan.clock_slots = 20 : i64, simplan.shared = array<i64: 16, 128>}
-// CHECK:         gpu.func @exact_B1(%{{.*}}: memref<?xvector<4xf32>>, %{{.*}}: f64) kernel attributes {simplan.clock_slots = 20 : i64, simplan.shared = array<i64: 0, 0>}
-// CHECK:         gpu.func @total_E(%{{.*}}: memref<?xf64>, %{{.*}}: memref<?xf64>) kernel attributes {simplan.clock_slots = 20 : i64, simplan.shared = array<i64: 0, 0>}
-// CHECK-LABEL: simplan.plan @every strategy("hip-cache") kernels(@every_kernels) range(65536) dt(1.000000e-03 : f32) max_steps(4) step_cap(4) group_size(256) clock_slots(20) histogram(15) attributes {note = "kept"} {
+// CHECK:         gpu.func @reset_clock(%{{.*}}: memref<?xi64>) kernel attributes {simplan.clock_slots = 22 : i64, simplan.shared = array<i64: 0, 0>}
+// CHECK:         gpu.func @substep_C1(%{{.*}}: memref<?xi64>, %{{.*}}: memref<?xvector<4xf32>>, %{{.*}}: memref<?xvector<4xf32>>, %{{.*}}: i32, %{{.*}}: i64, %{{.*}}: f32) kernel attributes {simplan.clock_slots = 22 : i64, simplan.shared = array<i64: 16, 128>}
+// CHECK:         gpu.func @exact_B1(%{{.*}}: memref<?xvector<4xf32>>, %{{.*}}: f64) kernel attributes {simplan.clock_slots = 22 : i64, simplan.shared = array<i64: 0, 0>}
+// CHECK:         gpu.func @total_E(%{{.*}}: memref<?xf64>, %{{.*}}: memref<?xf64>) kernel attributes {simplan.clock_slots = 22 : i64, simplan.shared = array<i64: 0, 0>}
+// CHECK-LABEL: simplan.plan @every strategy("hip-cache") kernels(@every_kernels) range(65536) dt(1.000000e-03 : f32) max_steps(4) step_cap(4) group_size(256) clock_slots(22) histogram(17) attributes {note = "kept"} {
 // CHECK-NEXT:    simplan.param @L = 256 : i32
 // CHECK-NEXT:    simplan.param @N = 7 : i64
 // CHECK-NEXT:    simplan.param @k = 2.500000e-01 : f64
@@ -47,27 +47,27 @@
 module attributes {gpu.container_module} {
   gpu.module @every_kernels {
     gpu.func @reset_clock(%clock: memref<?xi64>) kernel
-        attributes {simplan.shared = array<i64: 0, 0>, simplan.clock_slots = 20 : i64} {
+        attributes {simplan.shared = array<i64: 0, 0>, simplan.clock_slots = 22 : i64} {
       gpu.return
     }
     gpu.func @substep_C1(%clock: memref<?xi64>, %b0: memref<?xvector<4xf32>>,
                          %s0: memref<?xvector<4xf32>>, %l: i32, %range: i64,
                          %dt: f32) kernel
-        attributes {simplan.shared = array<i64: 16, 128>, simplan.clock_slots = 20 : i64} {
+        attributes {simplan.shared = array<i64: 16, 128>, simplan.clock_slots = 22 : i64} {
       gpu.return
     }
     gpu.func @exact_B1(%out: memref<?xvector<4xf32>>, %time: f64) kernel
-        attributes {simplan.shared = array<i64: 0, 0>, simplan.clock_slots = 20 : i64} {
+        attributes {simplan.shared = array<i64: 0, 0>, simplan.clock_slots = 22 : i64} {
       gpu.return
     }
     gpu.func @total_E(%out: memref<?xf64>, %b0: memref<?xf64>) kernel
-        attributes {simplan.shared = array<i64: 0, 0>, simplan.clock_slots = 20 : i64} {
+        attributes {simplan.shared = array<i64: 0, 0>, simplan.clock_slots = 22 : i64} {
       gpu.return
     }
   }
   simplan.plan @every strategy("hip-cache") kernels(@every_kernels)
       range(65536) dt(1.0e-3 : f32) max_steps(4) step_cap(4) group_size(256)
-      clock_slots(20) histogram(15) attributes {note = "kept"} {
+      clock_slots(22) histogram(17) attributes {note = "kept"} {
     simplan.param @L = 256 : i32
     simplan.param @N = 7 : i64
     simplan.param @k = 0.25 : f64
@@ -167,7 +167,7 @@ module attributes {gpu.container_module} {
 // the communication around launches.
 
 // CHECK-LABEL: simplan.plan @spread
-// CHECK-SAME: histogram(13) distributed halo(2) {
+// CHECK-SAME: histogram(15) distributed halo(2) {
 // CHECK: simplan.buffer @X : f32 stride(4) snapshot halo [1, 2]
 // CHECK: simplan.launch @k::@init_X items [#simplan.arg<buffer @X>, #simplan.arg<range>, #simplan.arg<first>] exchange [@X]
 // CHECK: simplan.launch @k::@advance single [#simplan.arg<clock>] reduce_min [4]
@@ -176,7 +176,7 @@ module attributes {gpu.container_module} {
 // CHECK: simplan.launch @k::@parity_C items [#simplan.arg<clock>, #simplan.arg<buffer @X>, #simplan.arg<range>, #simplan.arg<first>, #simplan.arg<extent>] for @C exchange_targets [@X]
 module attributes {gpu.container_module} {
   gpu.binary @k [#gpu.object<#nvvm.target, "">]
-  simplan.plan @spread strategy("hip") kernels(@k) range(100) dt(1.0e-2 : f32) max_steps(4) step_cap(4) group_size(32) clock_slots(18) histogram(13) distributed halo(2) {
+  simplan.plan @spread strategy("hip") kernels(@k) range(100) dt(1.0e-2 : f32) max_steps(4) step_cap(4) group_size(32) clock_slots(20) histogram(15) distributed halo(2) {
     simplan.buffer @X : f32 stride(4) snapshot halo [1, 2]
     simplan.component @C writes [@X] evaluations(8) advance grid_substeps sub_clock(9)
     simplan.phase init {

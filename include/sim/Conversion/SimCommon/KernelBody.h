@@ -72,16 +72,18 @@ struct KernelValues {
   /// check: `item` is one of the group's items.
   llvm::DenseMap<StringAttr, CacheView> caches;
   /// Local time steps (a component that advances in `local_steps`, in the
-  /// sub-step of slot `levelSlot`, i64): a `local` load of another item
-  /// reads the two stored time levels of that item's block (32 items).
-  /// `levels` holds every block's sub-step (i64) from element `levelBase`;
-  /// the block of sub-step `s` has taken `ceil(levelSlot / s)` sub-steps,
-  /// so its latest level is at `ceil(levelSlot / s) * s` base steps after
-  /// `T` (or at `levelEnd`, the big step's `m`, where the block's last
-  /// sub-step ends with the big step), in the half `sourceParity` xor that
-  /// count's parity, and its previous one at `ceil(levelSlot / s) * s - s`
-  /// in the other half. Null outside such a sub-step.
-  Value levels, levelSlot, levelEnd, levelBase;
+  /// sub-step of slot `levelSlot`, i64, counted in the big step's unit
+  /// `levelUnit` of base steps): a `local` load of another item reads the
+  /// two stored time levels of that item's block (32 items). `levels`
+  /// holds every block's sub-step in units (a power of two, i64) from
+  /// element `levelBase`; the block of sub-step `s` has taken
+  /// `ceil(levelSlot / s)` sub-steps, so its latest level is at
+  /// `ceil(levelSlot / s) * s` units after `T` (or at `levelEnd`, the big
+  /// step's `m` in base steps, where the block's last sub-step ends with
+  /// the big step), in the half `sourceParity` xor that count's parity,
+  /// and its previous one at `ceil(levelSlot / s) * s - s` units in the
+  /// other half. Null outside such a sub-step.
+  Value levels, levelSlot, levelEnd, levelBase, levelUnit;
   /// The flux writer of a flux pair reads its reader's state from the time
   /// levels at every item, its own included (it writes none of it).
   bool levelsAtItem = false;

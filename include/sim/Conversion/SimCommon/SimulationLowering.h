@@ -52,6 +52,12 @@ constexpr int64_t kSubBegin = int64_t(::sim::bundle::SubClockSlot::Begin);
 constexpr int64_t kSubSize = int64_t(::sim::bundle::SubClockSlot::Size);
 constexpr int64_t kSubCount = int64_t(::sim::bundle::SubClockSlot::Done);
 constexpr int64_t kSubEstimate = int64_t(::sim::bundle::SubClockSlot::Estimate);
+constexpr int64_t kSubUnit = int64_t(::sim::bundle::SubClockSlot::Unit);
+constexpr int64_t kSubUnitRequest =
+    int64_t(::sim::bundle::SubClockSlot::UnitRequest);
+/// UnitRequest holds num_steps less this bias: negative for every
+/// num_steps of 1 or more, so that 0 is the identity of its minimum.
+constexpr int64_t kUnitBias = (int64_t(1) << 31) - 1;
 constexpr int64_t kSubClockSlots = int64_t(::sim::bundle::SubClockSlot::Slots);
 constexpr int64_t kLargestHint =
     int64_t(::sim::bundle::LargestEstimateSlot::Hint);
