@@ -35,7 +35,7 @@ both executors) counts as diverged, not failed: the scene is useless, not
 wrong.
 
 usage: utils/random-scenes.py [--seeds A-B|N ...] [--shape stencil|pair|any]
-         [--jobs J] [--keep DIR] [--ranks R ...] [--ptxas PATH]
+         [--jobs J] [--keep DIR] [--ranks R ...] [--ptxas PATH] [--odd-steps]
          [--sim-translate PATH]
          [--sim-run PATH] [-v]
 
@@ -61,6 +61,12 @@ NUM_STEPS_RULES = ["const", "region", "band", "item", "state", "out-of-range"]
 class SceneWriter:
     """What both shapes share: value names, init bodies, index expressions
     and num_steps rules."""
+
+    # --odd-steps: the smallest num_steps a rule yields is 3, 5, 6 or 7
+    # instead of 1, 2, 0 or negative, so that lts takes its sub-steps in
+    # units other than 1 (docs/Model.md, "Levels"). The same draws, other
+    # values: a seed's scene keeps its shape.
+    odd_steps = False
 
     def __init__(self, seed):
         self.rng = random.Random(seed)
@@ -165,10 +171,13 @@ class SceneWriter:
         """A num_steps body's lines; returns the yielded value."""
         rng = self.rng
         rule = rng.choice(NUM_STEPS_RULES)
-        low = rng.choice([1, 1, 2, 0, -3])
+        low = rng.choice([3, 5, 6, 3, 7] if self.odd_steps
+                         else [1, 1, 2, 0, -3])
         high = rng.choice([2, 4, 8, self.max_steps, self.max_steps + 5])
         if rule == "const":
-            return self.int_constant(rng.choice([1, 2, 3, 4, self.max_steps]))
+            return self.int_constant(rng.choice(
+                [3, 5, 6, 7, self.max_steps] if self.odd_steps
+                else [1, 2, 3, 4, self.max_steps]))
         if rule == "out-of-range":
             return self.int_constant(rng.choice([1000, 2147483647, -2147483648]))
         if rule == "state":
@@ -770,9 +779,14 @@ def main():
                         "it must assemble without a spill")
     parser.add_argument("--print", type=int, metavar="SEED",
                         help="write SEED's scene to stdout and stop")
+    parser.add_argument("--odd-steps", action="store_true",
+                        help="num_steps rules whose smallest values are 3, "
+                        "5, 6 or 7, not 1, 2 or below: lts sub-steps in "
+                        "units other than 1 (another scene per seed)")
     parser.add_argument("-v", "--verbose", action="store_true",
                         help="one line per seed, rejections with their error")
     args = parser.parse_args()
+    SceneWriter.odd_steps = args.odd_steps
     if args.print is not None:
         sys.stdout.write(scene_text(args.print, args.shape))
         return 0

@@ -236,6 +236,16 @@ LogicalResult SimulationLowering::emitLocalSteps(ComponentOp component,
         b.cmp(arith::CmpIPredicate::slt, state.offset, state.size));
     return state;
   };
+  // `evaluated`'s evaluate body at a lane's item over its sub-step of
+  // `level` units from the slot: from `now`, over its length in base steps.
+  auto evaluateSubStep = [&](ComponentOp evaluated, const Slot &state,
+                             const Lane &lane, Value level,
+                             KernelValues &values) {
+    Value length = b.truncate(
+        lengthOf(level, state.unit, state.offset, state.size), b.getI32Type());
+    return inline_(evaluated.getEvaluate(),
+                   {lane.item, state.now, length, state.dt}, values);
+  };
   // The results of a lane's evaluation into the half at `base` and
   // `parity` of the buffers `writes`, and one more evaluation in `count`
   // (unless null: a run counts its lanes at once).
@@ -1681,7 +1691,7 @@ LogicalResult SimulationLowering::emitLocalSteps(ComponentOp component,
     LaneVar count = target.createLaneVar(b, kernel, b.getI32Type(), b.i32(0));
     Slot state = readSlot(kernel);
     Value size = state.size, parity = state.parity, levels = state.levels,
-          dt = state.dt, now = state.now, slot = state.slot;
+          slot = state.slot;
     b.ifThen(state.running, [&] {
       Value half = stepsOf(kernel);
       Value whole = wholeStepOf(state.units);
@@ -1716,12 +1726,7 @@ LogicalResult SimulationLowering::emitLocalSteps(ComponentOp component,
         values.latestBase =
             b.select(first, values.sourceBase, values.targetBase);
         SmallVector<Value> results =
-            inline_(fluxWriter.getEvaluate(),
-                    {lane.item, now,
-                     b.truncate(lengthOf(level, state.unit, state.offset, size),
-                                b.getI32Type()),
-                     dt},
-                    values);
+            evaluateSubStep(fluxWriter, state, lane, level, values);
         storeResults(kernel, lane, fluxWrites, results, values.targetBase,
                      values.targetParity, counted ? &count : nullptr);
       };
@@ -1780,7 +1785,7 @@ LogicalResult SimulationLowering::emitLocalSteps(ComponentOp component,
       count = target.createLaneVar(b, kernel, b.getI32Type(), b.i32(0));
     Slot state = readSlot(kernel);
     Value size = state.size, parity = state.parity, levels = state.levels,
-          dt = state.dt, now = state.now, slot = state.slot;
+          now = state.now, slot = state.slot;
     b.ifThen(state.running, [&] {
       Value half = stepsOf(kernel);
       // One evaluation of a lane's item from T + slot over `level` base
@@ -1804,12 +1809,7 @@ LogicalResult SimulationLowering::emitLocalSteps(ComponentOp component,
           values.levelsFromBothHalves = target.readsLevelsFromBothHalves();
         }
         SmallVector<Value> results =
-            inline_(component.getEvaluate(),
-                    {lane.item, now,
-                     b.truncate(lengthOf(level, state.unit, state.offset, size),
-                                b.getI32Type()),
-                     dt},
-                    values);
+            evaluateSubStep(component, state, lane, level, values);
         assert((!counted || count) && "a run counts its lanes at once");
         storeResults(kernel, lane, writes, results, writeBase, writeParity,
                      counted ? &*count : nullptr);
