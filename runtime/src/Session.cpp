@@ -217,11 +217,8 @@ void Session::forgetKeptLevels() {
     // Its unit request came from the same num_steps (local_parity_C never
     // clears a component's that keeps its levels).
     int64_t none = 0;
-    backend->write(clockMemory.pointer +
-                       (plan_->components[c]->sub_clock +
-                        int64_t(schema::SubClockSlot::UnitRequest)) *
-                           sizeof(int64_t),
-                   &none, sizeof none);
+    backend->write(subClockSlot(c, schema::SubClockSlot::UnitRequest), &none,
+                   sizeof none);
   }
   // A kept largest estimate (keeps_estimate) came from the same num_steps:
   // 0 in its Kept slot has the next big step take it again.
@@ -1239,18 +1236,26 @@ void Session::reduceUnitRequests(const std::vector<uint32_t> &components) {
   // minimum over the ranks, in one all-reduce, is one process's. A
   // component that keeps its levels keeps its request too (local_parity_C
   // leaves it), so it travels with the codes, once.
-  auto slotOf = [&](uint32_t component) {
-    return clockMemory.pointer +
-           DevicePtr(plan_->components[component]->sub_clock +
-                     int64_t(schema::SubClockSlot::UnitRequest)) *
-               sizeof(int64_t);
-  };
-  std::vector<int64_t> requests(components.size());
+  minimumOverRanks(components, schema::SubClockSlot::UnitRequest);
+}
+
+DevicePtr Session::subClockSlot(size_t component,
+                                schema::SubClockSlot slot) const {
+  return clockMemory.pointer +
+         DevicePtr(plan_->components[component]->sub_clock + int64_t(slot)) *
+             sizeof(int64_t);
+}
+
+void Session::minimumOverRanks(const std::vector<uint32_t> &components,
+                               schema::SubClockSlot slot) {
+  std::vector<int64_t> values(components.size());
   for (size_t i = 0; i < components.size(); ++i)
-    backend->read(&requests[i], slotOf(components[i]), sizeof(int64_t));
-  comm->minimum(requests.data(), int32_t(requests.size()));
+    backend->read(&values[i], subClockSlot(components[i], slot),
+                  sizeof(int64_t));
+  comm->minimum(values.data(), int32_t(values.size()));
   for (size_t i = 0; i < components.size(); ++i)
-    backend->write(slotOf(components[i]), &requests[i], sizeof(int64_t));
+    backend->write(subClockSlot(components[i], slot), &values[i],
+                   sizeof(int64_t));
 }
 
 void Session::reduceLevelCodes(const std::vector<uint32_t> &components,
@@ -1371,21 +1376,7 @@ void Session::reduceFinest(const std::vector<uint32_t> &components) {
                 sizeof size);
   if (size <= 1)
     return;
-  std::vector<int64_t> finest(components.size());
-  for (size_t c = 0; c < components.size(); ++c)
-    backend->read(&finest[c],
-                  clockMemory.pointer +
-                      (plan_->components[components[c]]->sub_clock +
-                       int64_t(schema::SubClockSlot::Size)) *
-                          sizeof(int64_t),
-                  sizeof(int64_t));
-  comm->minimum(finest.data(), int32_t(finest.size()));
-  for (size_t c = 0; c < components.size(); ++c)
-    backend->write(clockMemory.pointer +
-                       (plan_->components[components[c]]->sub_clock +
-                        int64_t(schema::SubClockSlot::Size)) *
-                           sizeof(int64_t),
-                   &finest[c], sizeof(int64_t));
+  minimumOverRanks(components, schema::SubClockSlot::Size);
 }
 
 Session::SubStepTimes Session::subStepTimes(int component) {
@@ -1530,14 +1521,11 @@ void Session::launchDistributed(Prepared &p, bool counted, bool step) {
                     return r.half == GhostRefresh::Half::SubStep;
                   })) {
     // substep_C reads half parity xor (done mod 2) and writes the other.
-    const schema::ComponentT &component =
-        *plan_->components[size_t(p.launch->component)];
     int64_t done = 0;
-    backend->read(&done,
-                  clockMemory.pointer + (component.sub_clock +
-                                         int64_t(schema::SubClockSlot::Done)) *
-                                            sizeof(int64_t),
-                  sizeof done);
+    backend->read(
+        &done,
+        subClockSlot(size_t(p.launch->component), schema::SubClockSlot::Done),
+        sizeof done);
     written = 1 - (parity ^ (done & 1));
   }
   // The lists of a slot's refreshes are refilled below: the exchange that
@@ -1630,10 +1618,7 @@ bool Session::slotRefreshes(const GhostRefresh &r, int component, int64_t slot,
   // clock; every slot is a multiple of it.
   int64_t unit = 0;
   backend->read(&unit,
-                clockMemory.pointer +
-                    (plan_->components[size_t(component)]->sub_clock +
-                     int64_t(schema::SubClockSlot::Unit)) *
-                        sizeof(int64_t),
+                subClockSlot(size_t(component), schema::SubClockSlot::Unit),
                 sizeof unit);
   if (unit < 1 || slot % unit != 0)
     fail(SIM_ERROR_CLOCK,

@@ -289,6 +289,12 @@ private:
   /// The minimum over the ranks of the unit requests of `components`
   /// (local time steps, before limit_levels_C).
   void reduceUnitRequests(const std::vector<uint32_t> &components);
+  /// Where slot `slot` of `component`'s sub-step clock lies.
+  DevicePtr subClockSlot(size_t component, schema::SubClockSlot slot) const;
+  /// Replaces slot `slot` of the sub-step clocks of `components` by its
+  /// minimum over the ranks, in one all-reduce.
+  void minimumOverRanks(const std::vector<uint32_t> &components,
+                        schema::SubClockSlot slot);
   /// A launch of a distributed plan: its all-reduces, the kernel, its
   /// exchanges (in the step phase, `step`, none past the run's end).
   void launchDistributed(Prepared &prepared, bool counted, bool step = false);
