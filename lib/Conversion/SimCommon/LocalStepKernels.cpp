@@ -173,8 +173,9 @@ LogicalResult SimulationLowering::emitLocalSteps(ComponentOp component,
   // sub-step clock's Unit, which limit_levels_C sets): a block of sub-step
   // `level` units takes `level * u` base steps, and the slots lie `u`
   // apart. With every request a power of two or m or more, `u` is 1 or m.
+  // At least 1: a clock that has not limited levels yet holds none.
   auto unitOf = [&](Kernel &kernel) {
-    return b.load(kernel.clock, b.index(sub + kSubUnit));
+    return b.max(b.load(kernel.clock, b.index(sub + kSubUnit)), b.i64(1));
   };
   // `steps` base steps in units, rounded up (the last sub-step may be
   // shorter than a unit: it ends with the big step).
@@ -226,8 +227,7 @@ LogicalResult SimulationLowering::emitLocalSteps(ComponentOp component,
     state.dt = kernel.values.params.lookup("dt");
     state.now = b.load(kernel.clock, b.index(sub + kSubBegin));
     state.offset = b.sub(state.now, state.begin);
-    // At least 1: a clock past the run (no big step) holds none.
-    state.unit = b.max(unitOf(kernel), b.i64(1));
+    state.unit = unitOf(kernel);
     state.slot =
         arith::DivUIOp::create(b, b.loc, state.offset, state.unit).getResult();
     state.units = unitsOf(state.size, state.unit);
@@ -1869,7 +1869,7 @@ LogicalResult SimulationLowering::emitLocalSteps(ComponentOp component,
   b.ifThen(b.cmp(arith::CmpIPredicate::sgt, size, b.i64(0)), [&] {
     Value half = stepsOf(kernel);
     // The big step in units, M (ceil(m / u)).
-    Value units = unitsOf(size, b.max(unitOf(kernel), b.i64(1)));
+    Value units = unitsOf(size, unitOf(kernel));
     // ceil(M / level) sub-steps, even when bit `level` (a power of two) of
     // M - 1 + level is clear: with M a power of two, unless level is M. A
     // part of one sub-step (its step codes are it or minus it) copies all
