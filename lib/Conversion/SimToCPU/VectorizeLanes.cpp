@@ -60,7 +60,8 @@ struct Wide {
   /// wide load before its de-interleaving shuffles). Elementwise ops on
   /// such values stay in that form, so that a value computed from loads
   /// (an interpolation of two halves) is de-interleaved once, not each
-  /// load. `parts` are made from it on demand, right after `definedBy`.
+  /// load. `parts` are made from it on demand, right after `definedBy`
+  /// (null for a loop-carried value: at the start of its loop's body).
   Value interleaved;
   int64_t stride = 0;
   Operation *definedBy = nullptr;
@@ -594,7 +595,11 @@ Value LaneVectorizer::lanePart(OpBuilder &b, Value value, int64_t k) {
   if (wide.varying && wide.parts.empty() && wide.interleaved) {
     // The de-interleaving shuffles, once, where the value is defined.
     OpBuilder at(b.getContext());
-    at.setInsertionPointAfter(wide.definedBy);
+    if (wide.definedBy)
+      at.setInsertionPointAfter(wide.definedBy);
+    else // a loop-carried value: at the start of its loop's body
+      at.setInsertionPointToStart(
+          cast<BlockArgument>(wide.interleaved).getOwner());
     Wide &held = values[value];
     for (int64_t e = 0, n = elementCount(value.getType()); e < n; ++e) {
       SmallVector<int64_t> positions;
@@ -1390,27 +1395,176 @@ void LaneVectorizer::widenIf(OpBuilder &b, scf::IfOp op, Value mask) {
   assign(op.getResults(), selected);
 }
 
+/// Whether every use of the loop-carried `arg` in its loop's body is an
+/// elementwise op of the shape widenInterleaved takes (a vector of the same
+/// elements, not i1, no integer division, not a select's condition): only
+/// then can the value stay interleaved from one iteration to the next.
+static bool carriesElementwise(BlockArgument arg) {
+  auto type = dyn_cast<VectorType>(arg.getType());
+  if (!type || type.getNumElements() < 2 ||
+      !llvm::isPowerOf2_64(type.getNumElements()) ||
+      type.getElementType().isInteger(1))
+    return false;
+  for (OpOperand &use : arg.getUses()) {
+    Operation *user = use.getOwner();
+    if (isa<scf::YieldOp>(user) &&
+        user->getParentOp() == arg.getOwner()->getParentOp())
+      continue;
+    if (!OpTrait::hasElementwiseMappableTraits(user) ||
+        user->getNumResults() != 1 || isIntegerDivision(user) ||
+        (isa<arith::SelectOp>(user) && use.getOperandNumber() == 0) ||
+        user->getResult(0).getType() != type)
+      return false;
+  }
+  return true;
+}
+
+/// Reorders a loop body made of pure ops only (a scene's load: rounds of a
+/// matrix product on vec4 values) so that the ops of each independent
+/// computation in it run one after another: widened, element k of a vec4
+/// is computed from elements k only, so the body holds one chain of ops per
+/// element, and emitted op by op the chains interleave and keep every
+/// element's operands and results live at once (32 vectors for a 4x4
+/// product, twice what AVX2 has in registers: LLVM spills half of them in
+/// every round). Chain by chain, an element's operands die before the next
+/// chain starts. Only the order changes, not an operation, so the results
+/// are the same bits.
+static void clusterIndependentChains(Block &body) {
+  SmallVector<Operation *> ops;
+  for (Operation &op : body.without_terminator()) {
+    if (op.getNumRegions() != 0 || !isMemoryEffectFree(&op))
+      return;
+    ops.push_back(&op);
+  }
+  if (ops.size() < 4)
+    return;
+  DenseMap<Operation *, unsigned> position;
+  for (auto [index, op] : llvm::enumerate(ops))
+    position[op] = index;
+  // Union-find over the ops, joined along the operands defined in the body.
+  SmallVector<unsigned> leader(ops.size());
+  for (unsigned i = 0; i < ops.size(); ++i)
+    leader[i] = i;
+  auto find = [&](unsigned i) {
+    while (leader[i] != i)
+      i = leader[i] = leader[leader[i]];
+    return i;
+  };
+  for (auto [index, op] : llvm::enumerate(ops))
+    for (Value operand : op->getOperands())
+      if (Operation *def = operand.getDefiningOp();
+          def && def->getBlock() == &body) {
+        unsigned a = find(index), b = find(position.lookup(def));
+        // The chain keeps the position of its first op.
+        if (a != b)
+          leader[std::max(a, b)] = std::min(a, b);
+      }
+  // Chain by chain, each in its order, chains in the order they start.
+  SmallVector<unsigned> order(ops.size());
+  for (unsigned i = 0; i < ops.size(); ++i)
+    order[i] = i;
+  SmallVector<unsigned> chain(ops.size());
+  for (unsigned i = 0; i < ops.size(); ++i)
+    chain[i] = find(i);
+  if (llvm::all_equal(chain))
+    return;
+  llvm::sort(order, [&](unsigned a, unsigned b) {
+    return std::make_pair(chain[a], a) < std::make_pair(chain[b], b);
+  });
+  Operation *terminator = body.getTerminator();
+  for (unsigned index : order)
+    ops[index]->moveBefore(terminator);
+}
+
 void LaneVectorizer::widenFor(OpBuilder &b, scf::ForOp op, Value mask) {
-  SmallVector<Value> inits;
-  for (auto [arg, init] : llvm::zip(op.getRegionIterArgs(), op.getInitArgs()))
-    appendHeld(b, arg, init, inits);
-  auto newFor = scf::ForOp::create(b, loc, lookup(op.getLowerBound()).parts[0],
-                                   lookup(op.getUpperBound()).parts[0],
-                                   lookup(op.getStep()).parts[0], inits);
-  Block *body = newFor.getBody();
-  Wide iv;
-  iv.parts.push_back(newFor.getInductionVar());
-  values[op.getInductionVar()] = iv;
-  assign(op.getRegionIterArgs(), newFor.getRegionIterArgs());
-  OpBuilder inner = emptyBody(body);
-  widenBlock(inner, *op.getBody(), mask);
-  auto yield = cast<scf::YieldOp>(op.getBody()->getTerminator());
-  SmallVector<Value> flat;
-  for (auto [arg, yielded] :
-       llvm::zip(op.getRegionIterArgs(), yield.getOperands()))
-    appendHeld(inner, arg, yielded, flat);
-  scf::YieldOp::create(inner, loc, flat);
-  assign(op.getResults(), newFor.getResults());
+  // A varying vector carried from one iteration to the next (a window's
+  // sum) stays interleaved, as loads give it, where the body computes it
+  // from interleaved values by elementwise ops only: then its loads are
+  // not de-interleaved in every iteration, the sum once after the loop.
+  // Whether the body computes it that way shows only once it is widened,
+  // so a loop whose carried value turns out to need its parts is widened
+  // again without that value interleaved.
+  auto iterArgs = op.getRegionIterArgs();
+  SmallVector<bool> interleave;
+  for (auto [arg, init] : llvm::zip(iterArgs, op.getInitArgs())) {
+    int64_t count = elementCount(arg.getType());
+    Wide start = lookup(init);
+    interleave.push_back(
+        isVarying(arg) && carriesElementwise(arg) &&
+        (start.varying ? start.interleaved && start.stride == count : true));
+  }
+  while (true) {
+    SmallVector<Value> inits;
+    for (auto [index, arg, init] :
+         llvm::enumerate(iterArgs, op.getInitArgs())) {
+      if (interleave[index])
+        inits.push_back(interleavedOf(b, init, elementCount(arg.getType())));
+      else
+        appendHeld(b, arg, init, inits);
+    }
+    auto newFor =
+        scf::ForOp::create(b, loc, lookup(op.getLowerBound()).parts[0],
+                           lookup(op.getUpperBound()).parts[0],
+                           lookup(op.getStep()).parts[0], inits);
+    Block *body = newFor.getBody();
+    Wide iv;
+    iv.parts.push_back(newFor.getInductionVar());
+    values[op.getInductionVar()] = iv;
+    // The block arguments of the new loop, held as `interleave` says.
+    auto hold = [&](ValueRange results, ValueRange flat, Operation *at) {
+      unsigned position = 0;
+      for (auto [index, result] : llvm::enumerate(results)) {
+        Wide wide;
+        wide.varying = isVarying(result);
+        if (interleave[index]) {
+          wide.interleaved = flat[position++];
+          wide.stride = elementCount(result.getType());
+          wide.definedBy = at;
+        } else {
+          unsigned count = wide.varying ? elementCount(result.getType()) : 1;
+          for (unsigned k = 0; k < count; ++k)
+            wide.parts.push_back(flat[position++]);
+        }
+        values[result] = wide;
+      }
+    };
+    hold(iterArgs, newFor.getRegionIterArgs(), nullptr);
+    OpBuilder inner = emptyBody(body);
+    widenBlock(inner, *op.getBody(), mask);
+    auto yield = cast<scf::YieldOp>(op.getBody()->getTerminator());
+    bool retry = false;
+    for (auto [index, arg, yielded] :
+         llvm::enumerate(iterArgs, yield.getOperands())) {
+      if (!interleave[index])
+        continue;
+      Wide next = lookup(yielded);
+      bool stays =
+          values[arg].parts.empty() &&
+          (!next.varying ||
+           (next.interleaved && next.stride == elementCount(arg.getType())));
+      if (!stays) {
+        interleave[index] = false;
+        retry = true;
+      }
+    }
+    if (retry) {
+      newFor.erase();
+      continue;
+    }
+    SmallVector<Value> flat;
+    for (auto [index, arg, yielded] :
+         llvm::enumerate(iterArgs, yield.getOperands())) {
+      if (interleave[index])
+        flat.push_back(
+            interleavedOf(inner, yielded, elementCount(arg.getType())));
+      else
+        appendHeld(inner, arg, yielded, flat);
+    }
+    scf::YieldOp::create(inner, loc, flat);
+    clusterIndependentChains(*body);
+    hold(op.getResults(), newFor.getResults(), newFor);
+    return;
+  }
 }
 
 /// Interleaves `parts` (count a power of two) into one vector whose element

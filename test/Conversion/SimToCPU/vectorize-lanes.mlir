@@ -760,3 +760,108 @@ func.func @integer_power(%x: memref<?xf32>, %n: memref<?xi32>, %out: memref<?xf3
   } {simplan.lanes}
   return
 }
+
+// -----
+
+// A window's sum (a vec4 carried by a loop over the offsets): the sum stays
+// interleaved from one iteration to the next, as the loads give it, and is
+// de-interleaved once after the loop, not each load in every iteration.
+// CHECK-LABEL: func.func @window_sum
+// CHECK:         scf.for
+// CHECK:           %[[ZERO:.*]] = vector.shuffle {{.*}} : vector<4xf32>, vector<4xf32>
+// CHECK:           %[[SUM:.*]] = scf.for %{{.*}} = %{{.*}} to %{{.*}} step %{{.*}} iter_args(%[[ACC:.*]] = %[[ZERO]]) -> (vector<32xf32>) {
+// CHECK:             %[[V:.*]] = scf.if %{{.*}} -> (vector<32xf32>) {
+// CHECK-NOT:         vector.shuffle %[[V]]
+// CHECK:             %[[NEXT:.*]] = arith.addf %[[ACC]], %[[V]] : vector<32xf32>
+// CHECK-NEXT:        scf.yield %[[NEXT]] : vector<32xf32>
+// CHECK:           }
+// CHECK-NEXT:      vector.shuffle %[[SUM]], %[[SUM]] [0, 4, 8, 12, 16, 20, 24, 28]
+// CHECK-NEXT:      vector.shuffle %[[SUM]], %[[SUM]] [1, 5, 9, 13, 17, 21, 25, 29]
+// CHECK-NEXT:      vector.shuffle %[[SUM]], %[[SUM]] [2, 6, 10, 14, 18, 22, 26, 30]
+// CHECK-NEXT:      vector.shuffle %[[SUM]], %[[SUM]] [3, 7, 11, 15, 19, 23, 27, 31]
+func.func @window_sum(%in: memref<?xvector<4xf32>>, %out: memref<?xvector<4xf32>>,
+                      %last: index, %g: index) {
+  %c0 = arith.constant 0 : index
+  %c1 = arith.constant 1 : index
+  %c-2 = arith.constant -2 : index
+  %c3 = arith.constant 3 : index
+  %zero = arith.constant dense<0.0> : vector<4xf32>
+  // expected-remark @below {{lanes run 8 at a time}}
+  scf.for %lane = %c0 to %g step %c1 {
+    %sum = scf.for %k = %c-2 to %c3 step %c1 iter_args(%acc = %zero) -> (vector<4xf32>) {
+      %j = arith.addi %lane, %k : index
+      %low = arith.maxsi %j, %c0 : index
+      %at = arith.minsi %low, %last : index
+      %v = memref.load %in[%at] : memref<?xvector<4xf32>>
+      %next = arith.addf %acc, %v : vector<4xf32>
+      scf.yield %next : vector<4xf32>
+    }
+    %x = vector.extract %sum[0] : f32 from vector<4xf32>
+    %y = vector.broadcast %x : f32 to vector<4xf32>
+    %r = arith.mulf %y, %sum : vector<4xf32>
+    memref.store %r, %out[%lane] : memref<?xvector<4xf32>>
+  } {simplan.lanes}
+  return
+}
+
+// -----
+
+// A carried vec4 that the body combines with a value held per element (a
+// lane's own index) needs its parts in every iteration: it is carried as
+// them, as before, not de-interleaved in every iteration.
+// CHECK-LABEL: func.func @carried_parts
+// CHECK:         scf.for
+// CHECK:           scf.for %{{.*}} = %{{.*}} to %{{.*}} step %{{.*}} iter_args({{.*}}) -> (vector<8xf32>, vector<8xf32>, vector<8xf32>, vector<8xf32>) {
+// CHECK-NOT:         vector<32xf32>
+// CHECK:             scf.yield %{{.*}} : vector<8xf32>, vector<8xf32>, vector<8xf32>, vector<8xf32>
+func.func @carried_parts(%out: memref<?xvector<4xf32>>, %rounds: index, %g: index) {
+  %c0 = arith.constant 0 : index
+  %c1 = arith.constant 1 : index
+  %zero = arith.constant dense<0.0> : vector<4xf32>
+  // expected-remark @below {{lanes run 8 at a time}}
+  scf.for %lane = %c0 to %g step %c1 {
+    %i64 = arith.index_cast %lane : index to i64
+    %f = arith.sitofp %i64 : i64 to f32
+    %w = vector.broadcast %f : f32 to vector<4xf32>
+    %sum = scf.for %k = %c0 to %rounds step %c1 iter_args(%acc = %zero) -> (vector<4xf32>) {
+      %next = arith.addf %acc, %w : vector<4xf32>
+      scf.yield %next : vector<4xf32>
+    }
+    memref.store %sum, %out[%lane] : memref<?xvector<4xf32>>
+  } {simplan.lanes}
+  return
+}
+
+// -----
+
+// A loop body of pure ops whose widened elements are computed apart (a
+// scene's rounds of a matrix product): element by element, so that one
+// element's values die before the next element's are made, instead of
+// every element's at once (twice the registers AVX2 has, for a 4x4
+// product).
+// CHECK-LABEL: func.func @element_chains
+// CHECK:         scf.for
+// CHECK:           scf.for %{{.*}} = %{{.*}} to %{{.*}} step %{{.*}} iter_args(%[[X0:.*]] = %{{.*}}, %[[X1:.*]] = %{{.*}}) -> (vector<8xf32>, vector<8xf32>) {
+// CHECK-NEXT:        %[[P0:.*]] = arith.mulf %[[W:.*]], %[[X0]] : vector<8xf32>
+// CHECK-NEXT:        %[[Q0:.*]] = arith.addf %[[P0]], %[[X0]] : vector<8xf32>
+// CHECK-NEXT:        %[[P1:.*]] = arith.mulf %[[W]], %[[X1]] : vector<8xf32>
+// CHECK-NEXT:        %[[Q1:.*]] = arith.addf %[[P1]], %[[X1]] : vector<8xf32>
+// CHECK-NEXT:        scf.yield %[[Q0]], %[[Q1]] : vector<8xf32>, vector<8xf32>
+func.func @element_chains(%in: memref<?xvector<2xf32>>, %out: memref<?xvector<2xf32>>,
+                          %rounds: index, %g: index) {
+  %c0 = arith.constant 0 : index
+  %c1 = arith.constant 1 : index
+  // expected-remark @below {{lanes run 8 at a time}}
+  scf.for %lane = %c0 to %g step %c1 {
+    %v = memref.load %in[%lane] : memref<?xvector<2xf32>>
+    %s = vector.extract %v[0] : f32 from vector<2xf32>
+    %w = vector.broadcast %s : f32 to vector<2xf32>
+    %r = scf.for %k = %c0 to %rounds step %c1 iter_args(%x = %v) -> (vector<2xf32>) {
+      %p = arith.mulf %w, %x : vector<2xf32>
+      %q = arith.addf %p, %x : vector<2xf32>
+      scf.yield %q : vector<2xf32>
+    }
+    memref.store %r, %out[%lane] : memref<?xvector<2xf32>>
+  } {simplan.lanes}
+  return
+}
