@@ -94,6 +94,16 @@ static int64_t elementStride(Type type) {
   return llvm::PowerOf2Ceil(elementCount(type));
 }
 
+/// Whether a varying value of `type` can be held interleaved (Wide): a
+/// vector of at least two elements, a power of two of them (no padding
+/// between lanes), not of i1 (masks are made per part).
+static bool holdsInterleaved(Type type) {
+  auto vector = dyn_cast<VectorType>(type);
+  return vector && vector.getNumElements() >= 2 &&
+         llvm::isPowerOf2_64(vector.getNumElements()) &&
+         !vector.getElementType().isInteger(1);
+}
+
 /// A memref the widened loop can address element by element through a
 /// pointer: rank 1, identity layout (offset 0, stride 1), and elements that
 /// are whole bytes (no i1, no index).
@@ -256,6 +266,11 @@ private:
   void heldTypes(Value value, SmallVectorImpl<Type> &types) const;
   /// `results` from a flat list of held values.
   void assign(ValueRange results, ValueRange flat);
+  /// `results` from a flat list of held values, those marked in
+  /// `interleaved` as one interleaved value each (defined by `definedBy`,
+  /// or null for a loop's block arguments).
+  void holdResults(ValueRange results, ValueRange flat,
+                   ArrayRef<bool> interleaved, Operation *definedBy);
   /// The held values of `value` (lane vectors where `value` is varying in the
   /// widened loop but `source` may be uniform).
   void appendHeld(OpBuilder &b, Value target, Value source,
@@ -710,6 +725,26 @@ void LaneVectorizer::assign(ValueRange results, ValueRange flat) {
     unsigned count = wide.varying ? elementCount(result.getType()) : 1;
     for (unsigned k = 0; k < count; ++k)
       wide.parts.push_back(flat[position++]);
+    values[result] = wide;
+  }
+}
+
+void LaneVectorizer::holdResults(ValueRange results, ValueRange flat,
+                                 ArrayRef<bool> interleaved,
+                                 Operation *definedBy) {
+  unsigned position = 0;
+  for (auto [index, result] : llvm::enumerate(results)) {
+    Wide wide;
+    wide.varying = isVarying(result);
+    if (interleaved[index]) {
+      wide.interleaved = flat[position++];
+      wide.stride = elementCount(result.getType());
+      wide.definedBy = definedBy;
+    } else {
+      unsigned count = wide.varying ? elementCount(result.getType()) : 1;
+      for (unsigned k = 0; k < count; ++k)
+        wide.parts.push_back(flat[position++]);
+    }
     values[result] = wide;
   }
 }
@@ -1346,19 +1381,64 @@ void LaneVectorizer::widenIf(OpBuilder &b, scf::IfOp op, Value mask) {
   };
 
   if (!isVarying(op.getCondition())) {
+    // One side for every lane. A varying vector that both sides compute
+    // interleaved (a read from one of several halves, chosen by the clock)
+    // is yielded as it is, so that its users (a window's sum) keep it
+    // interleaved too; a result either side has only in parts is held in
+    // parts, and the branch is widened again where that shows only then.
     Value condition = lookup(op.getCondition()).parts[0];
-    bool hasElse = op.elseBlock() != nullptr || !types.empty();
-    auto newIf = scf::IfOp::create(b, loc, types, condition, hasElse);
-    {
-      OpBuilder inner = emptyBody(newIf.thenBlock());
-      emitBranch(inner, op.thenBlock(), mask);
+    SmallVector<bool> interleave;
+    for (Value result : op.getResults())
+      interleave.push_back(isVarying(result) &&
+                           holdsInterleaved(result.getType()));
+    while (true) {
+      SmallVector<Type> held;
+      for (auto [index, result] : llvm::enumerate(op.getResults())) {
+        if (!interleave[index]) {
+          heldTypes(result, held);
+          continue;
+        }
+        auto type = cast<VectorType>(result.getType());
+        held.push_back(VectorType::get({width * type.getNumElements()},
+                                       type.getElementType()));
+      }
+      bool hasElse = op.elseBlock() != nullptr || !held.empty();
+      auto newIf = scf::IfOp::create(b, loc, held, condition, hasElse);
+      bool retry = false;
+      auto emitSide = [&](Block *into, Block *from) {
+        OpBuilder inner = emptyBody(into);
+        SmallVector<Value> flat;
+        if (from) {
+          widenBlock(inner, *from, mask);
+          auto yield = cast<scf::YieldOp>(from->getTerminator());
+          for (auto [index, result, yielded] :
+               llvm::enumerate(op.getResults(), yield.getOperands())) {
+            if (!interleave[index]) {
+              appendHeld(inner, result, yielded, flat);
+              continue;
+            }
+            int64_t count = elementCount(result.getType());
+            Wide wide = lookup(yielded);
+            if (wide.varying && !(wide.interleaved && wide.stride == count)) {
+              interleave[index] = false;
+              retry = true;
+              continue;
+            }
+            flat.push_back(interleavedOf(inner, yielded, count));
+          }
+        }
+        scf::YieldOp::create(inner, loc, flat);
+      };
+      emitSide(newIf.thenBlock(), op.thenBlock());
+      if (hasElse)
+        emitSide(newIf.elseBlock(), op.elseBlock());
+      if (retry) {
+        newIf.erase();
+        continue;
+      }
+      holdResults(op.getResults(), newIf.getResults(), interleave, newIf);
+      return;
     }
-    if (hasElse) {
-      OpBuilder inner = emptyBody(newIf.elseBlock());
-      emitBranch(inner, op.elseBlock(), mask);
-    }
-    assign(op.getResults(), newIf.getResults());
-    return;
   }
 
   // A lane-dependent branch: each side runs under its lanes' mask, only when
@@ -1400,11 +1480,9 @@ void LaneVectorizer::widenIf(OpBuilder &b, scf::IfOp op, Value mask) {
 /// elements, not i1, no integer division, not a select's condition): only
 /// then can the value stay interleaved from one iteration to the next.
 static bool carriesElementwise(BlockArgument arg) {
-  auto type = dyn_cast<VectorType>(arg.getType());
-  if (!type || type.getNumElements() < 2 ||
-      !llvm::isPowerOf2_64(type.getNumElements()) ||
-      type.getElementType().isInteger(1))
+  if (!holdsInterleaved(arg.getType()))
     return false;
+  Type type = arg.getType();
   for (OpOperand &use : arg.getUses()) {
     Operation *user = use.getOwner();
     if (isa<scf::YieldOp>(user) &&
@@ -1510,25 +1588,7 @@ void LaneVectorizer::widenFor(OpBuilder &b, scf::ForOp op, Value mask) {
     Wide iv;
     iv.parts.push_back(newFor.getInductionVar());
     values[op.getInductionVar()] = iv;
-    // The block arguments of the new loop, held as `interleave` says.
-    auto hold = [&](ValueRange results, ValueRange flat, Operation *at) {
-      unsigned position = 0;
-      for (auto [index, result] : llvm::enumerate(results)) {
-        Wide wide;
-        wide.varying = isVarying(result);
-        if (interleave[index]) {
-          wide.interleaved = flat[position++];
-          wide.stride = elementCount(result.getType());
-          wide.definedBy = at;
-        } else {
-          unsigned count = wide.varying ? elementCount(result.getType()) : 1;
-          for (unsigned k = 0; k < count; ++k)
-            wide.parts.push_back(flat[position++]);
-        }
-        values[result] = wide;
-      }
-    };
-    hold(iterArgs, newFor.getRegionIterArgs(), nullptr);
+    holdResults(iterArgs, newFor.getRegionIterArgs(), interleave, nullptr);
     OpBuilder inner = emptyBody(body);
     widenBlock(inner, *op.getBody(), mask);
     auto yield = cast<scf::YieldOp>(op.getBody()->getTerminator());
@@ -1562,7 +1622,7 @@ void LaneVectorizer::widenFor(OpBuilder &b, scf::ForOp op, Value mask) {
     }
     scf::YieldOp::create(inner, loc, flat);
     clusterIndependentChains(*body);
-    hold(op.getResults(), newFor.getResults(), newFor);
+    holdResults(op.getResults(), newFor.getResults(), interleave, newFor);
     return;
   }
 }

@@ -865,3 +865,52 @@ func.func @element_chains(%in: memref<?xvector<2xf32>>, %out: memref<?xvector<2x
   } {simplan.lanes}
   return
 }
+
+// -----
+
+// A read from one of two buffers, chosen by a condition that is the same
+// for every lane (hip's halves, chosen by the clock): both sides load
+// interleaved, so the choice is yielded interleaved and the window's sum
+// stays so; a choice one side of which has its value only in parts (a
+// lane's own index) is yielded in parts.
+// CHECK-LABEL: func.func @uniform_choice
+// CHECK:         scf.for
+// CHECK:           scf.for %{{.*}} = %{{.*}} to %{{.*}} step %{{.*}} iter_args(%[[ACC:.*]] = %{{.*}}) -> (vector<32xf32>) {
+// CHECK:             %[[V:.*]] = scf.if %{{.*}} -> (vector<32xf32>) {
+// CHECK-NOT:         vector.shuffle %[[V]]
+// CHECK:             arith.addf %[[ACC]], %[[V]] : vector<32xf32>
+// CHECK:           scf.if %{{.*}} -> (vector<8xf32>, vector<8xf32>, vector<8xf32>, vector<8xf32>) {
+func.func @uniform_choice(%a: memref<?xvector<4xf32>>, %b: memref<?xvector<4xf32>>,
+                          %out: memref<?xvector<4xf32>>, %late: i1, %g: index) {
+  %c0 = arith.constant 0 : index
+  %c1 = arith.constant 1 : index
+  %c3 = arith.constant 3 : index
+  %zero = arith.constant dense<0.0> : vector<4xf32>
+  // expected-remark @below {{lanes run 8 at a time}}
+  scf.for %lane = %c0 to %g step %c1 {
+    %sum = scf.for %k = %c0 to %c3 step %c1 iter_args(%acc = %zero) -> (vector<4xf32>) {
+      %j = arith.addi %lane, %k : index
+      %v = scf.if %late -> (vector<4xf32>) {
+        %x = memref.load %b[%j] : memref<?xvector<4xf32>>
+        scf.yield %x : vector<4xf32>
+      } else {
+        %x = memref.load %a[%j] : memref<?xvector<4xf32>>
+        scf.yield %x : vector<4xf32>
+      }
+      %next = arith.addf %acc, %v : vector<4xf32>
+      scf.yield %next : vector<4xf32>
+    }
+    %own = scf.if %late -> (vector<4xf32>) {
+      %i64 = arith.index_cast %lane : index to i64
+      %f = arith.sitofp %i64 : i64 to f32
+      %w = vector.broadcast %f : f32 to vector<4xf32>
+      scf.yield %w : vector<4xf32>
+    } else {
+      %x = memref.load %a[%lane] : memref<?xvector<4xf32>>
+      scf.yield %x : vector<4xf32>
+    }
+    %r = arith.addf %sum, %own : vector<4xf32>
+    memref.store %r, %out[%lane] : memref<?xvector<4xf32>>
+  } {simplan.lanes}
+  return
+}
