@@ -171,7 +171,18 @@ def SimVectorizeLanes : Pass<"sim-vectorize-lanes"> {
     uniform operand is spread to match), and is de-interleaved by shuffles
     only where something needs its elements apart: an interpolation of two
     halves costs one de-interleaving, not two, and a value loaded, computed
-    and stored needs none. The lanes left
+    and stored needs none. Such a value also stays interleaved through a
+    branch on a lane-independent condition whose sides both have it so (a
+    read from one of two halves, chosen by the clock) and from one
+    iteration of a loop to the next (a window's sum: de-interleaved once
+    after the loop, not each load in every iteration), where the loop's
+    body computes it by elementwise ops alone; a branch or loop where that
+    holds only for some of its values is widened again with the others in
+    parts. With `chains-apart`, a loop body made of pure operations only (a
+    scene's rounds of a matrix product) is ordered chain by chain: the
+    widened elements of a vec4 are computed apart, and computed one element
+    after another they fit in AVX2's 16 registers where all at once they do
+    not. The lanes left
     over when the group size is not a multiple of `width` run in the
     original loop. Each lane computes exactly the operations of the scalar
     loop in the same order (fused multiply-adds, libm calls per element,
@@ -221,6 +232,10 @@ def SimVectorizeLanes : Pass<"sim-vectorize-lanes"> {
            "The target converts vectors of 64-bit integers to and from f64 "
            "(x86-64-v4, AVX-512DQ): 64-bit divisions in f64 lanes use "
            "them, for lanes within 2^53 of zero">,
+    Option<"chainsApart", "chains-apart", "bool", "false",
+           "Order a loop body of pure ops chain by chain (each widened "
+           "element's ops together), for a target with few vector "
+           "registers (x86-64-v3: 16)">,
   ];
   let statistics = [
     Statistic<"numWidened", "widened-loops", "Lane loops run in SIMD chunks">,

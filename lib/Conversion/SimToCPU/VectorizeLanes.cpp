@@ -187,8 +187,10 @@ static bool isElementwise(Operation *op) {
 
 class LaneVectorizer {
 public:
-  LaneVectorizer(scf::ForOp loop, int64_t width, bool wideConversions)
-      : loop(loop), width(width), wideConversions(wideConversions) {}
+  LaneVectorizer(scf::ForOp loop, int64_t width, bool wideConversions,
+                 bool chainsApart)
+      : loop(loop), width(width), wideConversions(wideConversions),
+        chainsApart(chainsApart) {}
 
   /// Finds the varying values and checks that every op can be widened; on
   /// failure `why` names the first op that cannot.
@@ -301,6 +303,9 @@ private:
   int64_t width;
   /// The target converts vectors of i64 to and from f64 (AVX-512DQ).
   bool wideConversions;
+  /// Loop bodies of pure ops are ordered chain by chain
+  /// (clusterIndependentChains).
+  bool chainsApart;
   Location loc = loop.getLoc();
   DenseSet<Value> varying;
   /// Values proven to be `uniform + lane` (consecutive items of the chunk).
@@ -1621,7 +1626,8 @@ void LaneVectorizer::widenFor(OpBuilder &b, scf::ForOp op, Value mask) {
         appendHeld(inner, arg, yielded, flat);
     }
     scf::YieldOp::create(inner, loc, flat);
-    clusterIndependentChains(*body);
+    if (chainsApart)
+      clusterIndependentChains(*body);
     holdResults(op.getResults(), newFor.getResults(), interleave, newFor);
     return;
   }
@@ -2019,11 +2025,11 @@ struct SimVectorizeLanesPass
     });
     for (scf::ForOp loop : loops) {
       std::optional<LaneVectorizer> vectorizer;
-      vectorizer.emplace(loop, width, wideIntConversions);
+      vectorizer.emplace(loop, width, wideIntConversions, chainsApart);
       std::string why;
       LogicalResult analyzed = vectorizer->analyze(why);
       if (succeeded(analyzed) && vectorizer->branchCostlySelects()) {
-        vectorizer.emplace(loop, width, wideIntConversions);
+        vectorizer.emplace(loop, width, wideIntConversions, chainsApart);
         analyzed = vectorizer->analyze(why);
       }
       if (failed(analyzed)) {

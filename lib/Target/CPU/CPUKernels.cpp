@@ -146,6 +146,12 @@ static FailureOr<SmallVector<SmallVector<std::string>>> compileSharedObjects(
       lanes.width = lanesFor(isa);
       // AVX-512DQ converts vectors of i64 to and from f64 (vcvtqq2pd).
       lanes.wideIntConversions = isa == "x86-64-v4";
+      // A round of a vec4 product keeps 32 vectors live when its four
+      // element chains interleave: AVX2 has 16 registers, and chain by
+      // chain its rounds take 101-109 instructions per 64 FMAs instead of
+      // 151 (docs/benchmarks.md). AVX-512's 32 held them: there the order
+      // stays (96 instructions against 103 chain by chain; not measured).
+      lanes.chainsApart = isa == "x86-64-v3";
       pm.addPass(createSimVectorizeLanes(lanes));
       // A widened fpowi (an exponent per lane) as one fpowi per lane.
       pm.addPass(createSimLowerVectorOps());

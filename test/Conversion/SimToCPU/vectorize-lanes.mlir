@@ -1,6 +1,7 @@
 // RUN: sim-opt %s --sim-vectorize-lanes=width=8 --split-input-file | FileCheck %s
 // RUN: sim-opt %s --sim-vectorize-lanes="width=8 report=true" --split-input-file --verify-diagnostics -o /dev/null
 // RUN: sim-opt %s --sim-vectorize-lanes="width=8 wide-int-conversions=true" --split-input-file | FileCheck %s --check-prefix=WIDE
+// RUN: sim-opt %s --sim-vectorize-lanes="width=8 chains-apart=true" --split-input-file | FileCheck %s --check-prefix=CHAINS
 
 // Consecutive items of vec4 buffers: one wide load of 8 items; elementwise
 // math on the items' elements as loaded (interleaved: no shuffle); one wide
@@ -835,18 +836,26 @@ func.func @carried_parts(%out: memref<?xvector<4xf32>>, %rounds: index, %g: inde
 // -----
 
 // A loop body of pure ops whose widened elements are computed apart (a
-// scene's rounds of a matrix product): element by element, so that one
-// element's values die before the next element's are made, instead of
-// every element's at once (twice the registers AVX2 has, for a 4x4
-// product).
+// scene's rounds of a matrix product): op by op, each op's elements
+// together; with chains-apart element by element, so that one element's
+// values die before the next element's are made, instead of every
+// element's at once (twice the registers AVX2 has, for a 4x4 product).
 // CHECK-LABEL: func.func @element_chains
 // CHECK:         scf.for
 // CHECK:           scf.for %{{.*}} = %{{.*}} to %{{.*}} step %{{.*}} iter_args(%[[X0:.*]] = %{{.*}}, %[[X1:.*]] = %{{.*}}) -> (vector<8xf32>, vector<8xf32>) {
 // CHECK-NEXT:        %[[P0:.*]] = arith.mulf %[[W:.*]], %[[X0]] : vector<8xf32>
-// CHECK-NEXT:        %[[Q0:.*]] = arith.addf %[[P0]], %[[X0]] : vector<8xf32>
 // CHECK-NEXT:        %[[P1:.*]] = arith.mulf %[[W]], %[[X1]] : vector<8xf32>
+// CHECK-NEXT:        %[[Q0:.*]] = arith.addf %[[P0]], %[[X0]] : vector<8xf32>
 // CHECK-NEXT:        %[[Q1:.*]] = arith.addf %[[P1]], %[[X1]] : vector<8xf32>
 // CHECK-NEXT:        scf.yield %[[Q0]], %[[Q1]] : vector<8xf32>, vector<8xf32>
+// CHAINS-LABEL: func.func @element_chains
+// CHAINS:         scf.for
+// CHAINS:           scf.for %{{.*}} = %{{.*}} to %{{.*}} step %{{.*}} iter_args(%[[X0:.*]] = %{{.*}}, %[[X1:.*]] = %{{.*}}) -> (vector<8xf32>, vector<8xf32>) {
+// CHAINS-NEXT:        %[[P0:.*]] = arith.mulf %[[W:.*]], %[[X0]] : vector<8xf32>
+// CHAINS-NEXT:        %[[Q0:.*]] = arith.addf %[[P0]], %[[X0]] : vector<8xf32>
+// CHAINS-NEXT:        %[[P1:.*]] = arith.mulf %[[W]], %[[X1]] : vector<8xf32>
+// CHAINS-NEXT:        %[[Q1:.*]] = arith.addf %[[P1]], %[[X1]] : vector<8xf32>
+// CHAINS-NEXT:        scf.yield %[[Q0]], %[[Q1]] : vector<8xf32>, vector<8xf32>
 func.func @element_chains(%in: memref<?xvector<2xf32>>, %out: memref<?xvector<2xf32>>,
                           %rounds: index, %g: index) {
   %c0 = arith.constant 0 : index
