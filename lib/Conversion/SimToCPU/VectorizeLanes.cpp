@@ -723,15 +723,7 @@ void LaneVectorizer::heldTypes(Value value,
 }
 
 void LaneVectorizer::assign(ValueRange results, ValueRange flat) {
-  unsigned position = 0;
-  for (Value result : results) {
-    Wide wide;
-    wide.varying = isVarying(result);
-    unsigned count = wide.varying ? elementCount(result.getType()) : 1;
-    for (unsigned k = 0; k < count; ++k)
-      wide.parts.push_back(flat[position++]);
-    values[result] = wide;
-  }
+  holdResults(results, flat, SmallVector<bool>(results.size(), false), nullptr);
 }
 
 void LaneVectorizer::holdResults(ValueRange results, ValueRange flat,
