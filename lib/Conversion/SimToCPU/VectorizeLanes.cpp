@@ -32,6 +32,8 @@
 #include "mlir/Interfaces/SideEffectInterfaces.h"
 #include "mlir/Transforms/ControlFlowSinkUtils.h"
 
+#include "llvm/ADT/EquivalenceClasses.h"
+#include "llvm/ADT/Sequence.h"
 #include "llvm/Support/Debug.h"
 
 #define DEBUG_TYPE "sim-vectorize-lanes"
@@ -1414,14 +1416,14 @@ void LaneVectorizer::widenIf(OpBuilder &b, scf::IfOp op, Value mask) {
               appendHeld(inner, result, yielded, flat);
               continue;
             }
-            int64_t count = elementCount(result.getType());
-            Wide wide = lookup(yielded);
-            if (wide.varying && !(wide.interleaved && wide.stride == count)) {
+            Value held =
+                interleavedOf(inner, yielded, elementCount(result.getType()));
+            if (!held) {
               interleave[index] = false;
               retry = true;
               continue;
             }
-            flat.push_back(interleavedOf(inner, yielded, count));
+            flat.push_back(held);
           }
         }
         scf::YieldOp::create(inner, loc, flat);
@@ -1513,36 +1515,24 @@ static void clusterIndependentChains(Block &body) {
   }
   if (ops.size() < 4)
     return;
-  DenseMap<Operation *, unsigned> position;
-  for (auto [index, op] : llvm::enumerate(ops))
-    position[op] = index;
-  // Union-find over the ops, joined along the operands defined in the body.
-  SmallVector<unsigned> leader(ops.size());
-  for (unsigned i = 0; i < ops.size(); ++i)
-    leader[i] = i;
-  auto find = [&](unsigned i) {
-    while (leader[i] != i)
-      i = leader[i] = leader[leader[i]];
-    return i;
-  };
-  for (auto [index, op] : llvm::enumerate(ops))
+  // Ops joined along the operands defined in the body; each chain in its
+  // order, the chains in the order they start.
+  llvm::EquivalenceClasses<Operation *> chains;
+  for (Operation *op : ops) {
+    chains.insert(op);
     for (Value operand : op->getOperands())
       if (Operation *def = operand.getDefiningOp();
-          def && def->getBlock() == &body) {
-        unsigned a = find(index), b = find(position.lookup(def));
-        // The chain keeps the position of its first op.
-        if (a != b)
-          leader[std::max(a, b)] = std::min(a, b);
-      }
-  // Chain by chain, each in its order, chains in the order they start.
-  SmallVector<unsigned> order(ops.size());
-  for (unsigned i = 0; i < ops.size(); ++i)
-    order[i] = i;
-  SmallVector<unsigned> chain(ops.size());
-  for (unsigned i = 0; i < ops.size(); ++i)
-    chain[i] = find(i);
+          def && def->getBlock() == &body)
+        chains.unionSets(op, def);
+  }
+  DenseMap<Operation *, unsigned> start;
+  SmallVector<unsigned> chain;
+  for (auto [index, op] : llvm::enumerate(ops))
+    chain.push_back(
+        start.try_emplace(chains.getLeaderValue(op), index).first->second);
   if (llvm::all_equal(chain))
     return;
+  auto order = llvm::to_vector(llvm::seq<unsigned>(0, ops.size()));
   llvm::sort(order, [&](unsigned a, unsigned b) {
     return std::make_pair(chain[a], a) < std::make_pair(chain[b], b);
   });
@@ -1589,33 +1579,30 @@ void LaneVectorizer::widenFor(OpBuilder &b, scf::ForOp op, Value mask) {
     OpBuilder inner = emptyBody(body);
     widenBlock(inner, *op.getBody(), mask);
     auto yield = cast<scf::YieldOp>(op.getBody()->getTerminator());
+    // A carried value stays interleaved where nothing in the body took its
+    // parts and the body computes the next one interleaved.
     bool retry = false;
+    SmallVector<Value> flat;
     for (auto [index, arg, yielded] :
          llvm::enumerate(iterArgs, yield.getOperands())) {
-      if (!interleave[index])
+      if (!interleave[index]) {
+        appendHeld(inner, arg, yielded, flat);
         continue;
-      Wide next = lookup(yielded);
-      bool stays =
-          values[arg].parts.empty() &&
-          (!next.varying ||
-           (next.interleaved && next.stride == elementCount(arg.getType())));
-      if (!stays) {
+      }
+      Value next =
+          values[arg].parts.empty()
+              ? interleavedOf(inner, yielded, elementCount(arg.getType()))
+              : Value();
+      if (!next) {
         interleave[index] = false;
         retry = true;
+        continue;
       }
+      flat.push_back(next);
     }
     if (retry) {
       newFor.erase();
       continue;
-    }
-    SmallVector<Value> flat;
-    for (auto [index, arg, yielded] :
-         llvm::enumerate(iterArgs, yield.getOperands())) {
-      if (interleave[index])
-        flat.push_back(
-            interleavedOf(inner, yielded, elementCount(arg.getType())));
-      else
-        appendHeld(inner, arg, yielded, flat);
     }
     scf::YieldOp::create(inner, loc, flat);
     if (chainsApart)
