@@ -315,7 +315,10 @@ private:
       claimSlots(component.evaluations, 1, about + "'s evaluation counter");
       if (component.advance == Advance::GridSubSteps ||
           component.advance == Advance::LocalSteps)
-        claimSlots(component.sub_clock, uint64_t(schema::SubClockSlot::Slots),
+        claimSlots(component.sub_clock,
+                   uint64_t(component.advance == Advance::LocalSteps
+                                ? schema::SubClockWidth::LocalSteps
+                                : schema::SubClockWidth::GridSubSteps),
                    about + "'s sub-step clock");
       if (component.level_reach != 0 &&
           (component.advance != Advance::LocalSteps || !plan.distributed))

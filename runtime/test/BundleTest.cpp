@@ -346,6 +346,11 @@ TEST(BundleVerifier, ChecksPlansAndTheirClocks) {
          hipPlan(c).components[1]->advance = Advance::GridSubSteps;
          hipPlan(c).components[1]->sub_clock = 8;
        },
+       "component 'Grow''s sub-step clock uses clock slot 8 to 11"},
+      {[](auto &c) {
+         hipPlan(c).components[1]->advance = Advance::LocalSteps;
+         hipPlan(c).components[1]->sub_clock = 8;
+       },
        "component 'Grow''s sub-step clock uses clock slot 8 to 13"},
       {[](auto &c) { hipPlan(c).components[1]->writes = {0}; },
        "buffer 'X' is written by both 'Decay' and 'Grow'"},

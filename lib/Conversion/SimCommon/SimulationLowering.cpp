@@ -228,7 +228,9 @@ void SimulationLowering::planClock() {
     if (component.getAdvance() == Advance::grid_substeps ||
         component.getAdvance() == Advance::local_steps) {
       subClockSlots[component] = next;
-      next += kSubClockSlots;
+      next += component.getAdvance() == Advance::local_steps
+                  ? kLocalSubClockSlots
+                  : kGridSubClockSlots;
     }
   for (ComponentOp component : order)
     if (component.getAdvance() == Advance::local_flux &&

@@ -53,8 +53,17 @@ simplan.plan @p strategy("simple") kernels(@k) range(4) dt(1.0e-2 : f32) max_ste
 // -----
 
 simplan.plan @p strategy("hip") kernels(@k) range(4) dt(1.0e-2 : f32) max_steps(2) step_cap(2) group_size(32) clock_slots(15) histogram(12) {
-  // expected-error @+1 {{'simplan.component' op has a sub-step clock at slots 9 to 14, which are not between the fixed slots and the histogram [8, 12)}}
+  // expected-error @+1 {{'simplan.component' op has a sub-step clock at slots 9 to 12, which are not between the fixed slots and the histogram [8, 12)}}
   simplan.component @C writes [] evaluations(8) advance grid_substeps sub_clock(9)
+}
+
+// -----
+
+// Local time steps keep two more slots in the sub-step clock than grid-wide
+// sub-steps (Unit and UnitRequest).
+simplan.plan @p strategy("lts") kernels(@k) range(4) dt(1.0e-2 : f32) max_steps(2) step_cap(2) group_size(32) clock_slots(16) histogram(13) {
+  // expected-error @+1 {{'simplan.component' op has a sub-step clock at slots 9 to 14, which are not between the fixed slots and the histogram [8, 13)}}
+  simplan.component @C writes [] evaluations(8) advance local_steps sub_clock(9)
 }
 
 // -----

@@ -85,8 +85,13 @@ static_assert(
         sameArgKind(ArgKind::levels, ::sim::bundle::ArgKind::Levels),
     "simplan's ArgKind and the bundle schema's differ");
 
-/// Slots of a sub-step clock (docs/Plan.md, "The clock").
-constexpr int64_t kSubClockSlots = int64_t(::sim::bundle::SubClockSlot::Slots);
+/// Slots of the sub-step clock of a component that advances in `advance`
+/// (docs/Plan.md, "The clock").
+static int64_t subClockWidth(mlir::sim::Advance advance) {
+  return int64_t(advance == mlir::sim::Advance::local_steps
+                     ? ::sim::bundle::SubClockWidth::LocalSteps
+                     : ::sim::bundle::SubClockWidth::GridSubSteps);
+}
 
 void PlanDialect::registerAttributes() {
   addAttributes<
@@ -253,11 +258,12 @@ LogicalResult PlanOp::verifyRegions() {
              << ", which are not between the fixed slots and the histogram ["
              << firstFree << ", " << getHistogramSlot() << ")";
     std::optional<int64_t> subClock = component.getSubClock();
+    int64_t subClockSlots = subClockWidth(component.getAdvance());
     if (subClock &&
-        (*subClock < firstFree || *subClock + kSubClockSlots > histogram))
+        (*subClock < firstFree || *subClock + subClockSlots > histogram))
       return component.emitOpError()
              << "has a sub-step clock at slots " << *subClock << " to "
-             << *subClock + kSubClockSlots - 1
+             << *subClock + subClockSlots - 1
              << ", which are not between the fixed slots and the histogram ["
              << firstFree << ", " << getHistogramSlot() << ")";
   }
