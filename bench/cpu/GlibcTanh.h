@@ -65,14 +65,16 @@ inline float glibcTanhf(float x) {
   expm1 = k == 0 ? whenZero : expm1;
   expm1 = hu < 0x33000000u ? u : expm1;
   // tanhf.
-  float z = big ? 1.0f - 2.0f / (expm1 + 2.0f) : -expm1 / (expm1 + 2.0f);
+  // Both paths divide by expm1 + 2: one division with the path's numerator.
+  float quotient = (big ? 2.0f : -expm1) / (expm1 + 2.0f);
+  float z = big ? 1.0f - quotient : quotient;
   z = finiteSmall ? z : 1.0f - 1.0e-30f;
   float r = (int32_t)jx >= 0 ? z : -z;
   r = ix < 0x24000000u ? x * (1.0f + x) : r;
   r = ix == 0 ? x : r;
-  float reciprocal = 1.0f / x;
-  float special = (int32_t)jx >= 0 ? reciprocal + 1.0f : reciprocal - 1.0f;
-  return ix >= 0x7f800000u ? special : r;
+  // glibc's 1/x +- 1 for inf and NaN: +-1 for inf, which r already is, and
+  // the NaN itself (quieted) for NaN, which x + x returns too.
+  return ix > 0x7f800000u ? x + x : r;
 }
 
 #endif // SIM_BENCH_CPU_GLIBCTANH_H

@@ -315,7 +315,12 @@ def SimExpandTanh : Pass<"sim-expand-tanh"> {
     bit manipulation. This pass writes that algorithm out in `arith` ops,
     every path computed and the right one selected per element, so that
     the vectorised lanes compute it in SIMD instructions and every element
-    gets the bits glibc's `tanhf` returns; the reference executor and the
+    gets the bits glibc's `tanhf` returns. Where two paths divide by the
+    same value, the numerator is selected before one division, and the
+    `1/x +- 1` glibc returns for infinities and NaN becomes the value those
+    give (+-1 from the path for large |x|; `x + x`, the NaN itself): two
+    divisions per element, the slowest SIMD operation in it. The reference
+    executor and the
     hand-written CPU baseline, which call glibc, still agree bit for bit
     (checked on all 2^32 inputs, `utils/check-tanh.sh`). f64 `tanh` and
     other math ops stay libm calls. The CPU kernels run it

@@ -182,9 +182,11 @@ struct ExpandTanh : OpRewritePattern<math::TanhOp> {
     Value expm1 = b.select(b.cmp(P::ult, hu, b.i(0x33000000)), u, result);
 
     // Back in __tanhf. |x| >= 1: z = one - two/(t+two); else z = -t/(t+two).
-    Value z = b.select(
-        big, b.sub(b.f(1.0f), b.div(b.f(2.0f), b.add(expm1, b.f(2.0f)))),
-        b.div(b.neg(expm1), b.add(expm1, b.f(2.0f))));
+    // Both paths divide by t+two: the numerator is selected first, so each
+    // lane pays one division and gets the quotient its own path computes.
+    Value quotient =
+        b.div(b.select(big, b.f(2.0f), b.neg(expm1)), b.add(expm1, b.f(2.0f)));
+    Value z = b.select(big, b.sub(b.f(1.0f), quotient), quotient);
     // |x| >= 22: z = one - tiny.
     z = b.select(finiteSmall, z, b.sub(b.f(1.0f), b.f(1.0e-30f)));
     // return (jx>=0) ? z : -z.
@@ -193,12 +195,13 @@ struct ExpandTanh : OpRewritePattern<math::TanhOp> {
     r = b.select(b.cmp(P::ult, ix, b.i(0x24000000)),
                  b.mul(x, b.add(b.f(1.0f), x)), r);
     r = b.select(b.cmp(P::eq, ix, b.i(0)), x, r);
-    // inf or NaN: one/x + one (x >= 0), one/x - one (x < 0).
-    Value reciprocal = b.div(b.f(1.0f), x);
-    Value special =
-        b.select(b.cmp(P::sge, jx, b.i(0)), b.add(reciprocal, b.f(1.0f)),
-                 b.sub(reciprocal, b.f(1.0f)));
-    r = b.select(b.cmp(P::uge, ix, b.i(0x7f800000)), special, r);
+    // inf or NaN: one/x + one (x >= 0), one/x - one (x < 0). For +-inf that
+    // is +-1, which the path above already gives (one - tiny rounds to one),
+    // so only NaN is left, and x + x returns it as one/x +- one does (the NaN
+    // operand, quieted): no division for a case that is not a value.
+    Value isNan = b.cmp(P::ugt, ix, b.i(0x7f800000));
+    Value nan = b.add(x, x);
+    r = b.select(isNan, nan, r);
     rewriter.replaceOp(op, r);
     return success();
   }

@@ -20,6 +20,24 @@ func.func @scalar(%x: f32) -> f32 {
 
 // -----
 
+// Two divisions per element, no more: expm1f's, and tanhf's by t + 2 with
+// the numerator of the lane's path selected first (2 for |x| >= 1, -t
+// below). inf needs none (the |x| >= 22 path gives +-1), and a NaN comes
+// back as x + x, the NaN glibc's 1/x +- 1 returns.
+// CHECK-LABEL: func.func @divisions
+// CHECK-SAME:      (%[[X:.*]]: f32) -> f32
+// CHECK-COUNT-2: arith.divf
+// CHECK-NOT:     arith.divf
+// CHECK:         %[[TWICE:.*]] = arith.addf %[[X]], %[[X]] : f32
+// CHECK-NEXT:    %[[NAN:.*]] = arith.select %{{.*}}, %[[TWICE]], %{{.*}} : f32
+// CHECK-NEXT:    return %[[NAN]] : f32
+func.func @divisions(%x: f32) -> f32 {
+  %y = math.tanh %x : f32
+  return %y : f32
+}
+
+// -----
+
 // Vectors of f32 (the lanes of --sim-vectorize-lanes) in the same shape,
 // with i32 vectors for the bits.
 // CHECK-LABEL: func.func @lanes
