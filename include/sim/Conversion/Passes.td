@@ -171,7 +171,12 @@ def SimVectorizeLanes : Pass<"sim-vectorize-lanes"> {
     uniform operand is spread to match), and is de-interleaved by shuffles
     only where something needs its elements apart: an interpolation of two
     halves costs one de-interleaving, not two, and a value loaded, computed
-    and stored needs none. Such a value also stays interleaved through a
+    and stored needs none. Where an elementwise op's elements are needed
+    and its operands' elements are at hand or need one de-interleaving
+    between them, they are computed element by element from those instead
+    (the same operations: rows of a vec4 product built from the same two
+    loads take the loads apart once, not each row). Such a value also
+    stays interleaved through a
     branch on a lane-independent condition whose sides both have it so (a
     read from one of two halves, chosen by the clock) and from one
     iteration of a loop to the next (a window's sum: de-interleaved once

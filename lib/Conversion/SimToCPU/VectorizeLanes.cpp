@@ -67,6 +67,10 @@ struct Wide {
   Value interleaved;
   int64_t stride = 0;
   Operation *definedBy = nullptr;
+  /// For an interleaved result of an elementwise op (widenInterleaved): the
+  /// original op, whose parts can be computed from its operands' parts
+  /// instead of de-interleaving its result (LaneVectorizer::lanePart).
+  Operation *elementwiseOf = nullptr;
 };
 
 /// Whether `type` can be held per lane: an integer, index or float scalar, or
@@ -255,6 +259,11 @@ private:
   Wide lookup(Value value) const;
   /// Element `k` of `value` as a vector of lanes (broadcast if uniform).
   Value lanePart(OpBuilder &b, Value value, int64_t k);
+  /// How many de-interleavings making the parts of `value` costs at least
+  /// (0: it has them or is uniform; 1: its own or one of its operands';
+  /// 2: more, or a loop-carried value, whose parts would undo its
+  /// interleaved loop).
+  unsigned freshDeinterleavings(Value value, unsigned depth) const;
   /// `value` in the interleaved form of a result with `stride` (an
   /// interleaved value as it is, a uniform one spread), or null.
   Value interleavedOf(OpBuilder &b, Value value, int64_t stride);
@@ -612,8 +621,48 @@ Value LaneVectorizer::constantIndex(OpBuilder &b, int64_t value) {
   return arith::ConstantIndexOp::create(b, loc, value);
 }
 
+unsigned LaneVectorizer::freshDeinterleavings(Value value,
+                                              unsigned depth) const {
+  Wide wide = lookup(value);
+  if (!wide.varying || !wide.parts.empty())
+    return 0;
+  if (!wide.definedBy)
+    return 2;
+  if (!wide.elementwiseOf || depth == 0)
+    return 1;
+  unsigned operands = 0;
+  for (auto [index, operand] :
+       llvm::enumerate(wide.elementwiseOf->getOperands()))
+    if (!isUniformCondition(wide.elementwiseOf, index))
+      operands += freshDeinterleavings(operand, depth - 1);
+  return std::min(operands, 1u);
+}
+
 Value LaneVectorizer::lanePart(OpBuilder &b, Value value, int64_t k) {
   Wide wide = lookup(value);
+  if (wide.varying && wide.parts.empty() && wide.interleaved &&
+      wide.elementwiseOf) {
+    // An elementwise op on interleaved values costs as many instructions in
+    // parts as interleaved, and its parts from its operands' parts cost no
+    // de-interleaving where they have them, or one where one operand does
+    // not yet: then the operand's parts, often needed elsewhere too (the
+    // rows of a vec4 product built from the same two loads, and each row
+    // also read as a whole), are made once instead of each result's.
+    unsigned operands = 0;
+    Operation *op = wide.elementwiseOf;
+    for (auto [index, operand] : llvm::enumerate(op->getOperands()))
+      if (!isUniformCondition(op, index))
+        operands += freshDeinterleavings(operand, /*depth=*/4);
+    if (operands <= 1) {
+      OpBuilder at(b.getContext());
+      at.setInsertionPointAfter(wide.definedBy);
+      SmallVector<Value, 4> parts;
+      for (int64_t e = 0, n = elementCount(value.getType()); e < n; ++e)
+        parts.push_back(widenElementPart(at, op, e, /*mask=*/Value()));
+      values[value].parts.assign(parts.begin(), parts.end());
+      wide = values[value];
+    }
+  }
   if (wide.varying && wide.parts.empty() && wide.interleaved) {
     // The de-interleaving shuffles, once, where the value is defined.
     OpBuilder at(b.getContext());
@@ -703,6 +752,7 @@ bool LaneVectorizer::widenInterleaved(OpBuilder &b, Operation *op) {
   wide.interleaved = widened->getResult(0);
   wide.stride = stride;
   wide.definedBy = widened;
+  wide.elementwiseOf = op;
   values[result] = wide;
   return true;
 }

@@ -923,3 +923,101 @@ func.func @uniform_choice(%a: memref<?xvector<4xf32>>, %b: memref<?xvector<4xf32
   } {simplan.lanes}
   return
 }
+
+// -----
+
+// The parts of an elementwise op on interleaved values come from its
+// operands' parts where that takes no more de-interleaving: here the two
+// loads are taken apart once (their elements are read), and the product and
+// the sum, whose elements are read too, are computed element by element from
+// those parts instead of being de-interleaved themselves (the interleaved
+// product and sum are left unused).
+// CHECK-LABEL: func.func @operand_parts
+// CHECK:         scf.for %{{.*}} step %{{.*}} {
+// CHECK:           %[[P:.*]] = llvm.load %{{.*}} -> vector<32xf32>
+// CHECK-NEXT:      %[[P0:.*]] = vector.shuffle %[[P]], %[[P]] [0, 4, 8, 12, 16, 20, 24, 28]
+// CHECK-NEXT:      %[[P1:.*]] = vector.shuffle %[[P]], %[[P]] [1, 5, 9, 13, 17, 21, 25, 29]
+// CHECK-NEXT:      %[[P2:.*]] = vector.shuffle %[[P]], %[[P]] [2, 6, 10, 14, 18, 22, 26, 30]
+// CHECK-NEXT:      %[[P3:.*]] = vector.shuffle %[[P]], %[[P]] [3, 7, 11, 15, 19, 23, 27, 31]
+// CHECK:           %[[S:.*]] = llvm.load %{{.*}} -> vector<32xf32>
+// CHECK-NEXT:      %[[S0:.*]] = vector.shuffle %[[S]], %[[S]] [0, 4, 8, 12, 16, 20, 24, 28]
+// CHECK-NEXT:      %[[S1:.*]] = vector.shuffle %[[S]], %[[S]] [1, 5, 9, 13, 17, 21, 25, 29]
+// CHECK-NEXT:      %[[S2:.*]] = vector.shuffle %[[S]], %[[S]] [2, 6, 10, 14, 18, 22, 26, 30]
+// CHECK-NEXT:      %[[S3:.*]] = vector.shuffle %[[S]], %[[S]] [3, 7, 11, 15, 19, 23, 27, 31]
+// CHECK-NEXT:      arith.mulf %[[P]], %[[S]] : vector<32xf32>
+// CHECK-NEXT:      arith.mulf %[[P0]], %[[S0]] : vector<8xf32>
+// CHECK-NEXT:      arith.mulf %[[P1]], %[[S1]] : vector<8xf32>
+// CHECK-NEXT:      %[[PROD2:.*]] = arith.mulf %[[P2]], %[[S2]] : vector<8xf32>
+// CHECK-NEXT:      arith.mulf %[[P3]], %[[S3]] : vector<8xf32>
+// CHECK-NEXT:      arith.addf %[[P]], %[[S]] : vector<32xf32>
+// CHECK-NEXT:      arith.addf %[[P0]], %[[S0]] : vector<8xf32>
+// CHECK-NEXT:      arith.addf %[[P1]], %[[S1]] : vector<8xf32>
+// CHECK-NEXT:      arith.addf %[[P2]], %[[S2]] : vector<8xf32>
+// CHECK-NEXT:      %[[SUM3:.*]] = arith.addf %[[P3]], %[[S3]] : vector<8xf32>
+// CHECK-NEXT:      %[[XY:.*]] = arith.addf %[[P0]], %[[S1]] : vector<8xf32>
+// CHECK-NEXT:      %[[ZW:.*]] = arith.addf %[[PROD2]], %[[SUM3]] : vector<8xf32>
+// CHECK-NEXT:      arith.addf %[[XY]], %[[ZW]] : vector<8xf32>
+// CHECK-NOT:       vector.shuffle
+// CHECK:         }
+func.func @operand_parts(%a: memref<?xvector<4xf32>>, %b: memref<?xvector<4xf32>>,
+                         %out: memref<?xf32>, %g: index) {
+  %c0 = arith.constant 0 : index
+  %c1 = arith.constant 1 : index
+  // expected-remark @below {{lanes run 8 at a time}}
+  scf.for %lane = %c0 to %g step %c1 {
+    %p = memref.load %a[%lane] : memref<?xvector<4xf32>>
+    %s = memref.load %b[%lane] : memref<?xvector<4xf32>>
+    %prod = arith.mulf %p, %s : vector<4xf32>
+    %sum = arith.addf %p, %s : vector<4xf32>
+    %x = vector.extract %p[0] : f32 from vector<4xf32>
+    %y = vector.extract %s[1] : f32 from vector<4xf32>
+    %z = vector.extract %prod[2] : f32 from vector<4xf32>
+    %w = vector.extract %sum[3] : f32 from vector<4xf32>
+    %xy = arith.addf %x, %y : f32
+    %zw = arith.addf %z, %w : f32
+    %r = arith.addf %xy, %zw : f32
+    memref.store %r, %out[%lane] : memref<?xf32>
+  } {simplan.lanes}
+  return
+}
+
+// -----
+
+// Where the operands' parts would each take a de-interleaving of their own
+// (an interpolation between two loads, whose elements nothing else reads),
+// the result is de-interleaved instead: four shuffles, not eight. A scaling
+// of it by a uniform value takes its parts from the result's (no more
+// shuffles).
+// CHECK-LABEL: func.func @result_parts
+// CHECK:         scf.for %{{.*}} step %{{.*}} {
+// CHECK:           %[[MIX:.*]] = arith.addf %{{.*}}, %{{.*}} : vector<32xf32>
+// CHECK-NEXT:      %[[M0:.*]] = vector.shuffle %[[MIX]], %[[MIX]] [0, 4, 8, 12, 16, 20, 24, 28]
+// CHECK-NEXT:      vector.shuffle %[[MIX]], %[[MIX]] [1, 5, 9, 13, 17, 21, 25, 29]
+// CHECK-NEXT:      vector.shuffle %[[MIX]], %[[MIX]] [2, 6, 10, 14, 18, 22, 26, 30]
+// CHECK-NEXT:      %[[M3:.*]] = vector.shuffle %[[MIX]], %[[MIX]] [3, 7, 11, 15, 19, 23, 27, 31]
+// CHECK:           %[[H:.*]] = vector.broadcast %{{.*}} : f32 to vector<8xf32>
+// CHECK:           %[[HALF3:.*]] = arith.mulf %[[M3]], %{{.*}} : vector<8xf32>
+// CHECK:           arith.addf %[[M0]], %[[HALF3]] : vector<8xf32>
+// CHECK-NOT:       vector.shuffle
+// CHECK:         }
+func.func @result_parts(%a: memref<?xvector<4xf32>>, %b: memref<?xvector<4xf32>>,
+                        %out: memref<?xf32>, %w: f32, %g: index) {
+  %c0 = arith.constant 0 : index
+  %c1 = arith.constant 1 : index
+  %half = arith.constant dense<0.5> : vector<4xf32>
+  // expected-remark @below {{lanes run 8 at a time}}
+  scf.for %lane = %c0 to %g step %c1 {
+    %p = memref.load %a[%lane] : memref<?xvector<4xf32>>
+    %s = memref.load %b[%lane] : memref<?xvector<4xf32>>
+    %ws = vector.broadcast %w : f32 to vector<4xf32>
+    %wp = arith.mulf %ws, %p : vector<4xf32>
+    %ss = arith.mulf %ws, %s : vector<4xf32>
+    %mix = arith.addf %wp, %ss : vector<4xf32>
+    %x = vector.extract %mix[0] : f32 from vector<4xf32>
+    %scaled = arith.mulf %mix, %half : vector<4xf32>
+    %y = vector.extract %scaled[3] : f32 from vector<4xf32>
+    %r = arith.addf %x, %y : f32
+    memref.store %r, %out[%lane] : memref<?xf32>
+  } {simplan.lanes}
+  return
+}
