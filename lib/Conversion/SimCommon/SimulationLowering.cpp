@@ -228,9 +228,7 @@ void SimulationLowering::planClock() {
     if (component.getAdvance() == Advance::grid_substeps ||
         component.getAdvance() == Advance::local_steps) {
       subClockSlots[component] = next;
-      next += component.getAdvance() == Advance::local_steps
-                  ? kLocalSubClockSlots
-                  : kGridSubClockSlots;
+      next += simplan::subClockSlots(*component.getAdvance());
     }
   for (ComponentOp component : order)
     if (component.getAdvance() == Advance::local_flux &&

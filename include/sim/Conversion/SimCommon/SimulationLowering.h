@@ -58,16 +58,6 @@ constexpr int64_t kSubUnitRequest =
 /// UnitRequest holds num_steps less this bias: negative for every
 /// num_steps of 1 or more, so that 0 is the identity of its minimum.
 constexpr int64_t kUnitBias = (int64_t(1) << 31) - 1;
-/// Slots of the sub-step clock of a component that advances in `advance`:
-/// grid-wide sub-steps use it up to kSubEstimate, local time steps up to
-/// kSubUnitRequest (docs/Plan.md, "The clock").
-constexpr int64_t kGridSubClockSlots =
-    int64_t(::sim::bundle::SubClockWidth::GridSubSteps);
-constexpr int64_t kLocalSubClockSlots =
-    int64_t(::sim::bundle::SubClockWidth::LocalSteps);
-static_assert(kGridSubClockSlots == kSubEstimate + 1 &&
-                  kLocalSubClockSlots == kSubUnitRequest + 1,
-              "the schema's SubClockWidth and SubClockSlot disagree");
 constexpr int64_t kLargestHint =
     int64_t(::sim::bundle::LargestEstimateSlot::Hint);
 constexpr int64_t kLargestKept =

@@ -85,9 +85,13 @@ static_assert(
         sameArgKind(ArgKind::levels, ::sim::bundle::ArgKind::Levels),
     "simplan's ArgKind and the bundle schema's differ");
 
-/// Slots of the sub-step clock of a component that advances in `advance`
-/// (docs/Plan.md, "The clock").
-static int64_t subClockWidth(mlir::sim::Advance advance) {
+static_assert(int64_t(::sim::bundle::SubClockWidth::GridSubSteps) ==
+                      int64_t(::sim::bundle::SubClockSlot::Estimate) + 1 &&
+                  int64_t(::sim::bundle::SubClockWidth::LocalSteps) ==
+                      int64_t(::sim::bundle::SubClockSlot::UnitRequest) + 1,
+              "the schema's SubClockWidth and SubClockSlot disagree");
+
+int64_t mlir::simplan::subClockSlots(mlir::sim::Advance advance) {
   return int64_t(advance == mlir::sim::Advance::local_steps
                      ? ::sim::bundle::SubClockWidth::LocalSteps
                      : ::sim::bundle::SubClockWidth::GridSubSteps);
@@ -258,12 +262,12 @@ LogicalResult PlanOp::verifyRegions() {
              << ", which are not between the fixed slots and the histogram ["
              << firstFree << ", " << getHistogramSlot() << ")";
     std::optional<int64_t> subClock = component.getSubClock();
-    int64_t subClockSlots = subClockWidth(component.getAdvance());
+    int64_t subClockWidth = subClockSlots(component.getAdvance());
     if (subClock &&
-        (*subClock < firstFree || *subClock + subClockSlots > histogram))
+        (*subClock < firstFree || *subClock + subClockWidth > histogram))
       return component.emitOpError()
              << "has a sub-step clock at slots " << *subClock << " to "
-             << *subClock + subClockSlots - 1
+             << *subClock + subClockWidth - 1
              << ", which are not between the fixed slots and the histogram ["
              << firstFree << ", " << getHistogramSlot() << ")";
   }

@@ -25,4 +25,11 @@
 #define GET_OP_CLASSES
 #include "sim/Dialect/Plan/IR/PlanOps.h.inc"
 
+namespace mlir::simplan {
+/// The slots of the sub-step clock of a component that advances in
+/// `advance` (the bundle schema's SubClockWidth): grid-wide sub-steps use
+/// four, local time steps six (docs/Plan.md, "The clock").
+int64_t subClockSlots(mlir::sim::Advance advance);
+} // namespace mlir::simplan
+
 #endif // SIM_DIALECT_PLAN_IR_PLANOPS_H
