@@ -264,6 +264,9 @@ private:
   /// 2: more, or a loop-carried value, whose parts would undo its
   /// interleaved loop).
   unsigned freshDeinterleavings(Value value, unsigned depth) const;
+  /// The sum of freshDeinterleavings over the varying operands of the
+  /// elementwise `op` (not a select's lane-independent condition).
+  unsigned operandDeinterleavings(Operation *op, unsigned depth) const;
   /// `value` in the interleaved form of a result with `stride` (an
   /// interleaved value as it is, a uniform one spread), or null.
   Value interleavedOf(OpBuilder &b, Value value, int64_t stride);
@@ -630,12 +633,16 @@ unsigned LaneVectorizer::freshDeinterleavings(Value value,
     return 2;
   if (!wide.elementwiseOf || depth == 0)
     return 1;
+  return std::min(operandDeinterleavings(wide.elementwiseOf, depth - 1), 1u);
+}
+
+unsigned LaneVectorizer::operandDeinterleavings(Operation *op,
+                                                unsigned depth) const {
   unsigned operands = 0;
-  for (auto [index, operand] :
-       llvm::enumerate(wide.elementwiseOf->getOperands()))
-    if (!isUniformCondition(wide.elementwiseOf, index))
-      operands += freshDeinterleavings(operand, depth - 1);
-  return std::min(operands, 1u);
+  for (auto [index, operand] : llvm::enumerate(op->getOperands()))
+    if (!isUniformCondition(op, index))
+      operands += freshDeinterleavings(operand, depth);
+  return operands;
 }
 
 Value LaneVectorizer::lanePart(OpBuilder &b, Value value, int64_t k) {
@@ -648,12 +655,8 @@ Value LaneVectorizer::lanePart(OpBuilder &b, Value value, int64_t k) {
     // not yet: then the operand's parts, often needed elsewhere too (the
     // rows of a vec4 product built from the same two loads, and each row
     // also read as a whole), are made once instead of each result's.
-    unsigned operands = 0;
     Operation *op = wide.elementwiseOf;
-    for (auto [index, operand] : llvm::enumerate(op->getOperands()))
-      if (!isUniformCondition(op, index))
-        operands += freshDeinterleavings(operand, /*depth=*/4);
-    if (operands <= 1) {
+    if (operandDeinterleavings(op, /*depth=*/4) <= 1) {
       OpBuilder at(b.getContext());
       at.setInsertionPointAfter(wide.definedBy);
       SmallVector<Value, 4> parts;
