@@ -471,13 +471,18 @@ struct SubstepLegalityPass
   /// rest of the order is the graph's, or else the current one's.
   /// A schedule that only moves the bound onto another component that
   /// reads its own buffers at other items (another stencil, which would
-  /// gain from local steps as much) helps nothing: following the hint would
-  /// make that one's remark suggest the first order back. Those are
-  /// counted in `movesBound`.
+  /// gain from local steps as much) is not returned: whether it helps
+  /// depends on the two components' num_steps at run time, and that one's
+  /// remark would suggest the first order back. The first such schedule is
+  /// left in `movesBound`, with the stencils it would make bound the step
+  /// in `newBounds`.
   static std::optional<Schedule>
   findScheduleWithoutBound(const DependencyAnalysis &analysis,
-                           ComponentOp component, bool &movesBound) {
-    movesBound = false;
+                           ComponentOp component,
+                           std::optional<Schedule> &movesBound,
+                           SmallVectorImpl<ComponentOp> &newBounds) {
+    movesBound.reset();
+    newBounds.clear();
     auto readsOwnNeighbours = [&](ComponentOp other) {
       return llvm::any_of(analysis.getAccesses(other),
                           [&](const BufferAccess &access) {
@@ -505,7 +510,11 @@ struct SubstepLegalityPass
         if (llvm::is_contained(bounds, component))
           continue;
         if (llvm::any_of(bounds, readsOwnNeighbours)) {
-          movesBound = true;
+          if (!movesBound) {
+            movesBound = *schedule;
+            llvm::append_range(
+                newBounds, llvm::make_filter_range(bounds, readsOwnNeighbours));
+          }
           continue;
         }
         return std::move(*schedule);
@@ -612,20 +621,40 @@ struct SubstepLegalityPass
                 "of the whole scene (per-region big steps are not built, "
                 "docs/Model.md); a component that does not bound it takes "
                 "local time steps";
-      bool movesBound = false;
-      if (std::optional<Schedule> other =
-              findScheduleWithoutBound(analysis, component, movesBound)) {
-        remark << ": 'sim.schedule [";
-        llvm::interleaveComma(other->getOrder(), remark, [&](ComponentOp c) {
+      std::optional<Schedule> movesBound;
+      SmallVector<ComponentOp> newBounds;
+      auto printOrder = [&](const Schedule &schedule) {
+        remark << "'sim.schedule [";
+        llvm::interleaveComma(schedule.getOrder(), remark, [&](ComponentOp c) {
           remark << "@" << c.getSymName();
         });
-        remark << "]' would start a step at @" << other->getEntry().getSymName()
+        remark << "]'";
+      };
+      if (std::optional<Schedule> other = findScheduleWithoutBound(
+              analysis, component, movesBound, newBounds)) {
+        remark << ": ";
+        printOrder(*other);
+        remark << " would start a step at @" << other->getEntry().getSymName()
                << ", which then reads through the back edge, and @"
                << component.getSymName() << " would not bound it";
       } else if (movesBound) {
-        remark << "; no order of sim.schedule helps: every other start "
-                  "leaves another component that reads its own neighbours "
-                  "bounding the big step";
+        // Say what the other order trades rather than that it helps: the
+        // better start depends on num_steps values the compiler cannot see.
+        remark << "; ";
+        printOrder(*movesBound);
+        remark << " would let @" << component.getSymName()
+               << " take local time steps, but ";
+        llvm::interleave(
+            newBounds, remark,
+            [&](ComponentOp c) { remark << "@" << c.getSymName(); }, " and ");
+        remark << (newBounds.size() == 1 ? ", which reads its own neighbours "
+                                           "too, would bound the big step "
+                                           "instead"
+                                         : ", which read their own neighbours "
+                                           "too, would bound the big step "
+                                           "instead")
+               << ": start the step at the component whose num_steps is the "
+                  "larger and varies less across items";
       }
       return;
     }

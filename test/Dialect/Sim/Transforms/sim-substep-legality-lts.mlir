@@ -265,8 +265,9 @@ sim.simulation @hub range(64) dt(1.0e-2 : f32) max_steps(4) {
 
 // Two stencils that read each other: whichever starts the step reads the
 // other's buffer through the back edge and bounds it. Starting at @B would
-// only move the bound onto @B, whose remark would then suggest starting at
-// @A again: the remark names no schedule and says that none helps.
+// only move the bound onto @B: which start is better depends on the two
+// num_steps at run time, so the remark names that order and says what it
+// trades instead of suggesting it.
 
 // CHECK-LABEL: sim.simulation @two_stencils
 sim.simulation @two_stencils range(64) dt(1.0e-2 : f32) max_steps(4) {
@@ -280,7 +281,7 @@ sim.simulation @two_stencils range(64) dt(1.0e-2 : f32) max_steps(4) {
     %c = arith.constant 0.0 : f32
     sim.yield %c : f32
   }
-  // expected-remark-re @+1 {{@A needs a grid-wide barrier between sub-steps: {{.*}}; a component that does not bound it takes local time steps; no order of sim.schedule helps: every other start leaves another component that reads its own neighbours bounding the big step{{$}}}}
+  // expected-remark-re @+1 {{@A needs a grid-wide barrier between sub-steps: {{.*}}; a component that does not bound it takes local time steps; 'sim.schedule [@B, @A]' would let @A take local time steps, but @B, which reads its own neighbours too, would bound the big step instead: start the step at the component whose num_steps is the larger and varies less across items{{$}}}}
   sim.component @A writes(@U) num_steps {
   ^bb0(%i: index, %t: i64):
     %c = arith.constant 2 : i32
