@@ -25,6 +25,7 @@ using namespace mlir::sim;
 void mlir::sim::buildFrontEndPipeline(OpPassManager &pm,
                                       const FrontEndOptions &options) {
   OpPassManager &simulation = pm.nest<SimulationOp>();
+  simulation.addPass(createSimInlineConstants());
   if (options.prune)
     simulation.addPass(createSimPrune());
   simulation.addPass(createSimDefineEdgeCases());
@@ -49,6 +50,7 @@ void mlir::sim::buildFrontEndPipeline(OpPassManager &pm,
 void mlir::sim::buildReferencePipeline(OpPassManager &pm,
                                        const ReferenceOptions &options) {
   OpPassManager &simulation = pm.nest<SimulationOp>();
+  simulation.addPass(createSimInlineConstants());
   if (options.prune)
     simulation.addPass(createSimPrune());
   simulation.addPass(createSimDefineEdgeCases());

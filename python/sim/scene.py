@@ -127,8 +127,9 @@ class Buffer:
     (`sim.read @B[%j]`)."""
 
     def __init__(self, scene: "Scene", name: str, dtype: DType, init: Callable,
-                 interp, boundary: str, loc):
+                 interp, boundary: str, loc, constant: bool = False):
         self.scene = scene
+        self.constant = constant
         self.name = name
         self.dtype = dtype
         self.init = init
@@ -153,6 +154,10 @@ class Buffer:
     def exact(self, fn: Callable) -> "Buffer":
         """Decorator: the exact solution `fn(i, t)` (t: f64 time), which
         runs compare against (`sim-run --reference exact`, errors=True)."""
+        if self.constant:
+            raise trace_error(f"@{self.name} is constant, so it takes no "
+                              "exact solution: its init is its value at "
+                              "every time", user_location(2))
         self.exact_fn = fn
         return self
 
@@ -302,15 +307,24 @@ class Scene:
         return param
 
     def buffer(self, dtype: DType | Callable | None = None, *,
-               interp="linear", boundary: str = "clamp",
+               interp=None, boundary: str = "clamp", constant: bool = False,
                name: str | None = None):
         """Decorator: a buffer whose `init(i)` body is the function; the
         buffer takes the function's name. `dtype`: f32, f64 or a vector of
-        them (default: the scene's precision). `interp`: "linear",
-        "cubic", "none", "flux" (a flux through interfaces, constant over
-        its writer's step; docs/Model.md, "Conservation") or
-        sim.hermite(V). `boundary`: "clamp", "wrap" or "zero"."""
+        them (default: the scene's precision). `interp`: "linear" (the
+        default), "cubic", "none", "flux" (a flux through interfaces,
+        constant over its writer's step; docs/Model.md, "Conservation") or
+        sim.hermite(V). `boundary`: "clamp", "wrap" or "zero".
+        `constant=True`: no component writes it, and `init(i)` is its value
+        at every time (a material field, a mass); the compiler computes it
+        where it is read, so it takes no `interp` and no exact solution, and
+        cannot be observed."""
         loc = user_location(2)
+        if constant and interp is not None:
+            raise trace_error("a constant buffer takes no interpolation: its "
+                              "value is its init at every time", loc)
+        if interp is None:
+            interp = "linear"
         fn = None
         # A Python type (`int`, `float`, numpy's) is callable too, but it is
         # a mistaken element type, not the init body.
@@ -329,7 +343,7 @@ class Scene:
 
         def declare(init: Callable) -> Buffer:
             buffer = Buffer(self, name or init.__name__, dtype, init, interp,
-                            boundary, loc)
+                            boundary, loc, constant=bool(constant))
             self._declare(buffer.name, "buffer", buffer, loc)
             return buffer
 
@@ -349,6 +363,11 @@ class Scene:
                                   f"not {b!r}", loc)
         if not buffers:
             raise trace_error("a component writes at least one buffer", loc)
+        for b in buffers:
+            if b.constant:
+                raise trace_error(f"@{b.name} is constant, so no component "
+                                  "writes it; drop constant=True from it or "
+                                  "it from writes", loc)
 
         def declare(evaluate: Callable) -> Component:
             component = Component(self, name or evaluate.__name__, buffers,
@@ -388,6 +407,12 @@ class Scene:
         """`sim.observe [...]`: the buffers the scene is for."""
         self._observe = [self._lookup(b, Buffer, "observe")
                          for b in buffers]
+        for name in self._observe:
+            if self._names[name].constant:
+                raise trace_error(f"observe: @{name} is constant (no run "
+                                  "changes it, and no backend stores it); "
+                                  "observe the buffers components write, "
+                                  "or a total", user_location(2))
         self._observe_loc = user_location(2)
 
     def _lookup(self, x, cls, what):
@@ -462,6 +487,8 @@ class Scene:
             interp = "interp(none)"
         else:
             interp = f"interp(#sim.{b.interp})"
+        if b.constant:
+            interp = "constant"
         head = (f"  sim.buffer @{b.name} : {b.dtype.mlir} {interp} "
                 f"boundary({b.boundary}) init {{")
         lines = [head]

@@ -37,6 +37,8 @@ int64_t mlir::sim::getElementStride(BufferOp buffer) {
 }
 
 LogicalResult SimulationLowering::checkFrontEnd() {
+  if (failed(simulation.checkConstantsInlined("")))
+    return failure();
   StrategyAttr strategyAttr = simulation.getStrategyAttr();
   if (!strategyAttr || !simulation.getStepCapAttr())
     return simulation.emitOpError()

@@ -77,6 +77,8 @@ LogicalResult ReferenceLowering::check() {
            << "is past --sim-plan-memory; the reference lowering starts from "
               "the scheduled IR (run --sim-prune, --sim-schedule and "
               "--sim-substep-legality, or --sim-reference-pipeline)";
+  if (failed(simulation.checkConstantsInlined("sim-lower-to-reference")))
+    return failure();
   std::optional<SmallVector<ComponentOp>> scheduled =
       simulation.getScheduledOrder();
   if (!scheduled)

@@ -350,7 +350,7 @@ sim.simulation @s range(16) dt(1.0 : f32) max_steps(1) {
 // -----
 
 sim.simulation @s range(16) dt(1.0 : f32) max_steps(1) {
-  // expected-error @+1 {{'sim.buffer' op is not written by any component; every buffer needs exactly one writer}}
+  // expected-error @+1 {{'sim.buffer' op is not written by any component; every buffer needs exactly one writer, or is declared 'constant' when its init gives its value at every time}}
   sim.buffer @B : f32 init {
   ^bb0(%i: index):
     %c = arith.constant 0.0 : f32
@@ -405,4 +405,94 @@ sim.buffer @B : f32 init {
 ^bb0(%i: index):
   %c = arith.constant 0.0 : f32
   sim.yield %c : f32
+}
+
+// -----
+
+// A constant buffer: no writer, no interpolation, no exact body, not
+// observed, and no buffer's Hermite derivative.
+
+sim.simulation @s range(16) dt(1.0 : f32) max_steps(1) {
+  // expected-note @+1 {{@K is declared constant here}}
+  sim.buffer @K : f32 constant init {
+  ^bb0(%i: index):
+    %c = arith.constant 0.0 : f32
+    sim.yield %c : f32
+  }
+  // expected-error @+1 {{'sim.component' op writes buffer @K, which is declared constant; remove 'constant' from @K or this component's writes entry}}
+  sim.component @C writes(@K) evaluate {
+  ^bb0(%i: index, %t: i64, %n: i32, %dt: f32):
+    %k = sim.read @K[%i] : f32
+    sim.yield %k : f32
+  }
+}
+
+// -----
+
+sim.simulation @s range(16) dt(1.0 : f32) max_steps(1) {
+  // expected-error @+1 {{'sim.buffer' op is constant, so it takes no interp(...) clause: its value is its init at every time, with nothing to interpolate}}
+  sim.buffer @K : f32 constant interp(#sim.cubic) init {
+  ^bb0(%i: index):
+    %c = arith.constant 0.0 : f32
+    sim.yield %c : f32
+  }
+}
+
+// -----
+
+sim.simulation @s range(16) dt(1.0 : f32) max_steps(1) {
+  // expected-error @+1 {{'sim.buffer' op is constant, so it takes no exact body: its init is its value at every time}}
+  sim.buffer @K : f32 constant init {
+  ^bb0(%i: index):
+    %c = arith.constant 0.0 : f32
+    sim.yield %c : f32
+  } exact {
+  ^bb0(%i: index, %t: f64):
+    %c = arith.constant 0.0 : f32
+    sim.yield %c : f32
+  }
+}
+
+// -----
+
+sim.simulation @s range(16) dt(1.0 : f32) max_steps(1) {
+  // expected-note @+1 {{@K is declared constant here}}
+  sim.buffer @K : f32 constant init {
+  ^bb0(%i: index):
+    %c = arith.constant 0.0 : f32
+    sim.yield %c : f32
+  }
+  sim.buffer @U : f32 init {
+  ^bb0(%i: index):
+    %c = arith.constant 0.0 : f32
+    sim.yield %c : f32
+  }
+  sim.component @C writes(@U) evaluate {
+  ^bb0(%i: index, %t: i64, %n: i32, %dt: f32):
+    %k = sim.read @K[%i] : f32
+    sim.yield %k : f32
+  }
+  // expected-error @+1 {{'sim.observe' op observes @K, which is constant: no run changes it, and no backend stores it (its init is computed where it is read); observe the buffers components write, or a sim.total}}
+  sim.observe [@U, @K]
+}
+
+// -----
+
+sim.simulation @s range(16) dt(1.0 : f32) max_steps(1) {
+  sim.buffer @K : f32 constant init {
+  ^bb0(%i: index):
+    %c = arith.constant 0.0 : f32
+    sim.yield %c : f32
+  }
+  // expected-error @+1 {{'sim.buffer' op names the constant buffer @K as the derivative buffer of its interpolation; the derivative of a buffer a component writes changes with it: write @K in the same component}}
+  sim.buffer @U : f32 interp(#sim.hermite<@K>) init {
+  ^bb0(%i: index):
+    %c = arith.constant 0.0 : f32
+    sim.yield %c : f32
+  }
+  sim.component @C writes(@U) evaluate {
+  ^bb0(%i: index, %t: i64, %n: i32, %dt: f32):
+    %k = sim.read @K[%i] : f32
+    sim.yield %k : f32
+  }
 }

@@ -287,3 +287,60 @@ sim.simulation @s range(16) dt(1.0 : f32) max_steps(1) attributes {strategy = #s
 // expected-error @+1 {{unexpected 'in_kernel' after the attribute value 'parity none'}}
 sim.simulation @s range(16) dt(1.0 : f32) max_steps(1) attributes {p = #sim<parity none in_kernel>} {
 }
+
+// -----
+
+// A name used before its definition resolves to a definition inside a
+// buffer's init; the exact body then fails to parse. The init is freed with
+// the failed op, and the use outside it must not point into it (the
+// parser's cleanup wrote to freed memory: a heap-use-after-free that
+// utils/sanitize.sh check and valgrind report, and that aborted sim-translate
+// on scenes the mutation fuzzer made).
+
+sim.simulation @s range(16) dt(1.0 : f32) max_steps(1) {
+  %early = arith.addf %late, %late : f32
+  sim.buffer @B : f32 init {
+  ^bb0(%i: index):
+    %late = arith.constant 0.0 : f32
+    sim.yield %late : f32
+  } exact {
+  ^bb0(%i: index, %t: f64):
+    // expected-error @+1 {{custom op 'arith.cmpi' expected string or keyword containing one of the following enum values}}
+    %x = arith.cmpi %t, %t : f64
+    sim.yield %x : f32
+  }
+}
+
+// -----
+
+// The same through a component's num_steps and a failing evaluate body.
+
+sim.simulation @s range(16) dt(1.0 : f32) max_steps(1) {
+  %early = arith.addi %late, %late : i32
+  sim.buffer @B : f32 init {
+  ^bb0(%i: index):
+    %c = arith.constant 0.0 : f32
+    sim.yield %c : f32
+  }
+  sim.component @C writes(@B) num_steps {
+  ^bb0(%i: index, %t: i64):
+    %late = arith.constant 1 : i32
+    sim.yield %late : i32
+  } evaluate {
+  ^bb0(%i: index, %t: i64, %n: i32, %dt: f32):
+    // expected-error @+1 {{custom op 'arith.cmpi' expected string or keyword containing one of the following enum values}}
+    %x = arith.cmpi %dt, %dt : f32
+    sim.yield %x : f32
+  }
+}
+
+// -----
+
+sim.simulation @s range(16) dt(1.0 : f32) max_steps(1) {
+  // expected-error @+1 {{the buffer is declared constant twice}}
+  sim.buffer @K : f32 constant boundary(zero) constant init {
+  ^bb0(%i: index):
+    %c = arith.constant 0.0 : f32
+    sim.yield %c : f32
+  }
+}

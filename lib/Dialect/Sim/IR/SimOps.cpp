@@ -289,15 +289,20 @@ static void printBoundaryClause(OpAsmPrinter &printer, Operation *,
     printer << " boundary(" << stringifyBoundary(boundary.getValue()) << ")";
 }
 
-/// A buffer's optional `interp(...)` and `boundary(...)`, in either order,
-/// each at most once; printed interp first.
+/// A buffer's optional `constant`, `interp(...)` and `boundary(...)`, in
+/// any order, each at most once; printed in that order.
 static ParseResult parseBufferClauses(OpAsmParser &parser,
                                       InterpolationAttrInterface &interp,
-                                      BoundaryAttr &boundary) {
+                                      BoundaryAttr &boundary,
+                                      UnitAttr &constant) {
   bool seenInterp = false, seenBoundary = false;
   while (true) {
     SMLoc loc = parser.getCurrentLocation();
-    if (succeeded(parser.parseOptionalKeyword("interp"))) {
+    if (succeeded(parser.parseOptionalKeyword("constant"))) {
+      if (constant)
+        return parser.emitError(loc) << "the buffer is declared constant twice";
+      constant = UnitAttr::get(parser.getContext());
+    } else if (succeeded(parser.parseOptionalKeyword("interp"))) {
       if (seenInterp)
         return parser.emitError(loc) << "the buffer has two interp clauses";
       seenInterp = true;
@@ -317,9 +322,81 @@ static ParseResult parseBufferClauses(OpAsmParser &parser,
 
 static void printBufferClauses(OpAsmPrinter &printer, Operation *op,
                                InterpolationAttrInterface interp,
-                               BoundaryAttr boundary) {
+                               BoundaryAttr boundary, UnitAttr constant) {
+  if (constant)
+    printer << " constant";
   printInterpClause(printer, op, interp);
   printBoundaryClause(printer, op, boundary);
+}
+
+/// Drops every use of the values `region` defines. The parser resolves a
+/// name that was used before its definition wherever the definition is
+/// found, even inside an isolated region (where the verifier would reject
+/// the use later). When a later part of the op then fails to parse, the
+/// op's regions are freed while such a use outside them still points into
+/// them: the parser's cleanup then wrote to freed memory (a scene with a
+/// deleted line and a typo further down crashed sim-opt). Cut first.
+static void dropUsesOfDefinitions(Region &region) {
+  for (Block &block : region) {
+    for (BlockArgument argument : block.getArguments())
+      argument.dropAllUses();
+    block.walk([](Operation *op) {
+      for (Value result : op->getResults())
+        result.dropAllUses();
+    });
+  }
+}
+
+/// Parses `keyword region` into `region`; on failure drops the uses of
+/// what `parsed` (the op's regions so far, `region` included) define.
+static ParseResult parseBody(OpAsmParser &parser, StringRef keyword,
+                             Region &region, ArrayRef<Region *> parsed) {
+  if ((keyword.empty() || succeeded(parser.parseKeyword(keyword))) &&
+      succeeded(parser.parseRegion(region)))
+    return success();
+  for (Region *earlier : parsed)
+    dropUsesOfDefinitions(*earlier);
+  return failure();
+}
+
+/// A buffer's `init {...}` and optional `exact {...}`.
+static ParseResult parseBufferBodies(OpAsmParser &parser, Region &init,
+                                     Region &exact) {
+  if (parseBody(parser, "init", init, {&init}))
+    return failure();
+  if (failed(parser.parseOptionalKeyword("exact")))
+    return success();
+  return parseBody(parser, "", exact, {&init, &exact});
+}
+
+static void printBufferBodies(OpAsmPrinter &printer, BufferOp, Region &init,
+                              Region &exact) {
+  printer << "init ";
+  printer.printRegion(init);
+  if (!exact.empty()) {
+    printer << " exact ";
+    printer.printRegion(exact);
+  }
+}
+
+/// A component's optional `num_steps {...}` and `evaluate {...}`.
+static ParseResult parseComponentBodies(OpAsmParser &parser, Region &numSteps,
+                                        Region &evaluate) {
+  if (succeeded(parser.parseOptionalKeyword("num_steps")) &&
+      parseBody(parser, "", numSteps, {&numSteps}))
+    return failure();
+  return parseBody(parser, "evaluate", evaluate, {&numSteps, &evaluate});
+}
+
+static void printComponentBodies(OpAsmPrinter &printer, ComponentOp,
+                                 Region &numSteps, Region &evaluate) {
+  if (!numSteps.empty()) {
+    printer << "num_steps ";
+    printer.printRegion(numSteps);
+    printer << " ";
+  }
+  printer << "evaluate ";
+  printer.printRegion(evaluate);
 }
 
 #define GET_OP_CLASSES
@@ -580,6 +657,25 @@ Operation *SimulationOp::findExplicitAccess() {
   return nullptr;
 }
 
+LogicalResult SimulationOp::checkConstantsInlined(StringRef passArgument) {
+  for (BufferOp buffer : getBuffers())
+    if (buffer.getConstant()) {
+      InFlightDiagnostic diag =
+          emitOpError() << "has the constant buffer @" << buffer.getSymName()
+                        << ", which no component writes; ";
+      if (passArgument.empty())
+        diag << "run the front end (--sim-front-end), whose first pass "
+                "--sim-inline-constants replaces its reads, before lowering "
+                "it";
+      else
+        diag << "run --sim-inline-constants before --" << passArgument;
+      diag.attachNote(buffer.getLoc())
+          << "@" << buffer.getSymName() << " is declared constant here";
+      return diag;
+    }
+  return success();
+}
+
 Type SimulationOp::getBuiltinParamType(StringRef name) {
   Builder b(getContext());
   if (name == "range")
@@ -740,6 +836,15 @@ LogicalResult SimulationOp::verifyRegions() {
       BufferOp buffer = lookupBuffer(name);
       if (!buffer)
         continue; // Reported by the component's symbol verification.
+      if (buffer.getConstant())
+        return component.emitOpError()
+                   .append("writes buffer ", name,
+                           ", which is declared constant; remove 'constant' "
+                           "from @",
+                           buffer.getSymName(),
+                           " or this component's writes entry")
+                   .attachNote(buffer.getLoc())
+               << name << " is declared constant here";
       auto [it, inserted] = writerOf.try_emplace(buffer, component);
       if (!inserted)
         return component.emitOpError()
@@ -749,10 +854,11 @@ LogicalResult SimulationOp::verifyRegions() {
     }
   }
   for (BufferOp buffer : getBuffers())
-    if (!writerOf.count(buffer))
+    if (!buffer.getConstant() && !writerOf.count(buffer))
       return buffer.emitOpError()
              << "is not written by any component; every buffer needs exactly "
-                "one writer";
+                "one writer, or is declared 'constant' when its init gives "
+                "its value at every time";
 
   // Initial states may read other initial states, but not in a cycle.
   SmallVector<BufferOp> buffers(getBuffers());
@@ -914,6 +1020,15 @@ LogicalResult BufferOp::verify() {
                          << formatTypes(initYield.getValues().getTypes())
                          << ")";
 
+  // A constant buffer is never interpolated or measured: its init is its
+  // value at every time.
+  if (getConstant() && getInterp())
+    return emitOpError() << "is constant, so it takes no interp(...) clause: "
+                            "its value is its init at every time, with "
+                            "nothing to interpolate";
+  if (getConstant() && !getExact().empty())
+    return emitOpError() << "is constant, so it takes no exact body: its "
+                            "init is its value at every time";
   if (!getExact().empty()) {
     YieldOp exactYield =
         verifyBodySignature(*this, getExact(), "exact",
@@ -971,6 +1086,13 @@ LogicalResult BufferOp::verifySymbolUses(SymbolTableCollection &symbolTable) {
       return emitOpError() << "names " << name << " as the " << role
                            << " buffer of its interpolation, but the "
                               "simulation has no such buffer";
+    if (aux.getConstant())
+      return emitOpError() << "names the constant buffer " << name << " as the "
+                           << role << " buffer of its interpolation; the "
+                           << role
+                           << " of a buffer a component writes changes with "
+                              "it: write "
+                           << name << " in the same component";
     if (aux.getElementType() != getElementType())
       return emitOpError() << "has element type " << getElementType()
                            << ", but its " << role << " buffer " << name
@@ -1199,8 +1321,21 @@ LogicalResult ScheduleOp::verifySymbolUses(SymbolTableCollection &table) {
 LogicalResult ObserveOp::verifySymbolUses(SymbolTableCollection &table) {
   if (getBuffers().empty())
     return emitOpError() << "expects at least one observed buffer";
-  return verifySymbolArray<BufferOp>(*this, table, getBuffers(), "observe",
-                                     "sim.buffer");
+  if (failed(verifySymbolArray<BufferOp>(*this, table, getBuffers(), "observe",
+                                         "sim.buffer")))
+    return failure();
+  for (auto name : getBuffers().getAsRange<FlatSymbolRefAttr>())
+    if (BufferOp buffer = lookupBuffer(table, *this, name);
+        buffer && buffer.getConstant())
+      return emitOpError()
+                 .append("observes ", name,
+                         ", which is constant: no run changes it, and no "
+                         "backend stores it (its init is computed where it "
+                         "is read); observe the buffers components write, or "
+                         "a sim.total")
+                 .attachNote(buffer.getLoc())
+             << name << " is declared constant here";
+  return success();
 }
 
 //===----------------------------------------------------------------------===//

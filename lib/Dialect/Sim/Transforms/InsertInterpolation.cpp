@@ -192,6 +192,8 @@ struct InsertInterpolationPass
     : public sim::impl::SimInsertInterpolationBase<InsertInterpolationPass> {
   void runOnOperation() override {
     SimulationOp simulation = getOperation();
+    if (failed(simulation.checkConstantsInlined(getArgument())))
+      return signalPassFailure();
     StrategyAttr strategy = simulation.getStrategyAttr();
     if (!strategy) {
       simulation.emitOpError()

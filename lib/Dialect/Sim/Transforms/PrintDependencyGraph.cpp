@@ -221,7 +221,12 @@ struct PrintDependencyGraphPass
 
   void runOnOperation() override {
     // Walk in program order so the output is deterministic.
+    bool failedAny = false;
     getOperation()->walk([&](SimulationOp simulation) {
+      if (failed(simulation.checkConstantsInlined(getArgument()))) {
+        failedAny = true;
+        return;
+      }
       DependencyAnalysis analysis(simulation);
       GraphPrinter printer(analysis, llvm::outs());
       if (format == GraphFormat::dot)
@@ -230,6 +235,8 @@ struct PrintDependencyGraphPass
         printer.printText();
     });
     llvm::outs().flush();
+    if (failedAny)
+      return signalPassFailure();
     markAllAnalysesPreserved();
   }
 };

@@ -20,6 +20,8 @@ using namespace mlir::sim;
 LogicalResult mlir::sim::checkBeforeInterpolation(SimulationOp simulation,
                                                   StringRef passArgument,
                                                   StringRef decisions) {
+  if (failed(simulation.checkConstantsInlined(passArgument)))
+    return failure();
   Operation *access = simulation.findExplicitAccess();
   if (!access)
     return success();

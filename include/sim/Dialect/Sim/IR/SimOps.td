@@ -155,6 +155,10 @@ def Sim_SimulationOp : Sim_Op<"simulation", [
     /// A simulation that has one is past `--sim-insert-interpolation`: its
     /// schedule, verdicts and memory plan are fixed.
     ::mlir::Operation *findExplicitAccess();
+    /// Fails with an error naming `passArgument` (empty: a lowering) when a
+    /// buffer is still `constant`: every stage after
+    /// `--sim-inline-constants` relies on every buffer having a writer.
+    ::mlir::LogicalResult checkConstantsInlined(::llvm::StringRef passArgument);
     /// True for `range`, `dt` and `max_steps`: the simulation's own
     /// parameters, which `sim.get_param` reads like a `sim.param` and which
     /// no `sim.param` may be named.
@@ -235,13 +239,19 @@ def Sim_BufferOp : Sim_Op<"buffer", [
     A buffer holds one element per item of the simulation's range: a scalar
     `f32` or `f64`, or a vector of up to 16 of them. It is double-buffered
     (source = value at `T`, target = value at `T + m`) and written by exactly
-    one component.
+    one component, unless it is `constant`.
 
     - `interp(...)`: how a later component reconstructs the buffer at an
       intermediate time (default `#sim.linear`), or `interp(none)` when its
       value means nothing between the ends of a big step (see `#sim.none`).
     - `boundary(...)`: what reads outside `[0, range)` return (default
       `clamp`).
+    - `constant`: no component writes the buffer; its `init` gives its
+      value at every time (a material field, a mass, a rest length). It
+      takes neither `interp(...)` nor `exact`, and `sim.observe` cannot
+      name it. `--sim-inline-constants`, the first pass of the front end,
+      replaces every read of it with its init at the item read (after the
+      boundary rule), so no backend stores, copies or interpolates it.
     - `init`: the initial state of item `%i` at time 0. Reads in it see the
       initial state of other buffers.
     - `exact` (optional): the exact solution at item `%i` and time `%t`
@@ -279,14 +289,14 @@ def Sim_BufferOp : Sim_Op<"buffer", [
                        OptionalAttr<Sim_InterpolationAttrInterface>:$interp,
                        DefaultValuedAttr<Sim_BoundaryAttr,
                                          "::mlir::sim::Boundary::clamp">:$boundary,
-                       UnitAttr:$snapshot,
+                       UnitAttr:$constant, UnitAttr:$snapshot,
                        OptionalAttr<DenseI64ArrayAttr>:$halo,
                        UnitAttr:$replicated, UnitAttr:$snapshot_ghosts);
   let regions = (region SizedRegion<1>:$init, MaxSizedRegion<1>:$exact);
   let assemblyFormat = [{
-    $sym_name `:` $element_type `` custom<BufferClauses>($interp, $boundary)
-    attr-dict-with-keyword
-    `init` $init (`exact` $exact^)?
+    $sym_name `:` $element_type ``
+    custom<BufferClauses>($interp, $boundary, $constant)
+    attr-dict-with-keyword custom<BufferBodies>($init, $exact)
   }];
   let hasVerifier = 1;
 
@@ -441,7 +451,7 @@ def Sim_ComponentOp : Sim_Op<"component", [
   let regions = (region MaxSizedRegion<1>:$num_steps, SizedRegion<1>:$evaluate);
   let assemblyFormat = [{
     $sym_name `writes` `` custom<SymbolList>($writes) attr-dict-with-keyword
-    (`num_steps` $num_steps^)? `evaluate` $evaluate
+    custom<ComponentBodies>($num_steps, $evaluate)
   }];
   let hasVerifier = 1;
 

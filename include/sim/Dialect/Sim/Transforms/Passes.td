@@ -141,6 +141,42 @@ def SimSubstepLegality
   ];
 }
 
+def SimInlineConstants
+    : Pass<"sim-inline-constants", "::mlir::sim::SimulationOp"> {
+  let summary = "Compute constant buffers where they are read";
+  let description = [{
+    A `constant` buffer has no writer: its `init` body gives its value at
+    every time (a conductivity field, a mass per particle, a rest length).
+    This pass replaces every `sim.read` of one, in any body, with a copy of
+    its `init` body at the item read, after the buffer's boundary rule
+    (`clamp` reads the nearest item, `wrap` the item modulo `range`, `zero`
+    gives a zero element outside the range), and removes the buffer. Reads
+    inside the copied body see initial states, as in `init`: a read of any
+    buffer there becomes that buffer's `init` at its item too (init bodies
+    read each other without a cycle, which the verifier checks, so this
+    ends). "Model only what a scene needs": no backend stores, copies,
+    exchanges or interpolates a constant buffer, and every backend and the
+    reference executor compute the same operations from the same IR. It
+    is the front end's first pass; every later stage refuses a simulation
+    that still has a constant buffer.
+
+    A read costs the init body's operations instead of a load: an init
+    that is expensive and read at many items per evaluation (a window of
+    a transcendental field) can be cheaper as a buffer that a component
+    without `num_steps` writes once per big step.
+
+    ```mlir
+    sim.buffer @K : f64 constant boundary(zero) init {
+    ^bb0(%i: index):
+      ...
+    }
+    // In a component: %k = sim.read @K[%j] : f64 becomes the init at
+    // clamp(j), selected against zero where j is outside [0, range).
+    ```
+  }];
+  let dependentDialects = ["::mlir::arith::ArithDialect"];
+}
+
 def SimPrune : Pass<"sim-prune", "::mlir::sim::SimulationOp"> {
   let summary = "Remove what no observed output depends on";
   let description = [{
