@@ -30,7 +30,15 @@ namespace {
 /// Materialises init bodies at arbitrary items.
 class InitMaterializer {
 public:
-  explicit InitMaterializer(SimulationOp simulation) : simulation(simulation) {}
+  explicit InitMaterializer(SimulationOp simulation) : simulation(simulation) {
+    // Every body's `%i` is an item of the range: a read there needs no
+    // boundary rule (the common `@Mass[%i]`).
+    for (Operation &op : simulation.getBody().front())
+      for (Region &body : op.getRegions())
+        if (!body.empty() && body.getNumArguments() > 0 &&
+            body.getArgument(0).getType().isIndex())
+          inRange.insert(body.getArgument(0));
+  }
 
   /// Replaces `read` (of any buffer) with `buffer`'s init at the item it
   /// reads and erases it.
@@ -120,8 +128,8 @@ private:
   }
 
   SimulationOp simulation;
-  /// Index values known to lie in [0, range): the items init bodies were
-  /// copied at.
+  /// Index values known to lie in [0, range): the bodies' items and the
+  /// items init bodies were copied at.
   llvm::DenseSet<Value> inRange;
 };
 

@@ -44,7 +44,9 @@ sim.simulation @clamp range(64) dt(1.0e-2 : f32) max_steps(4) {
 
 // -----
 
-// wrap: the item modulo range, made non-negative.
+// wrap: the item modulo range, made non-negative. @K's init reads @Base at
+// its own item, which the mapping already put inside the range: @Base's
+// copy takes the mapped item as it is.
 
 // CHECK-LABEL: sim.simulation @wrap
 // CHECK: %[[R:.*]] = sim.get_param @range : i64
@@ -53,14 +55,26 @@ sim.simulation @clamp range(64) dt(1.0e-2 : f32) max_steps(4) {
 // CHECK: %[[NEG:.*]] = arith.cmpi slt, %[[REM]], %{{.*}} : i64
 // CHECK: %[[UP:.*]] = arith.addi %[[REM]], %[[R]] : i64
 // CHECK: %[[M:.*]] = arith.select %[[NEG]], %[[UP]], %[[REM]] : i64
-// CHECK: arith.index_cast %[[M]] : i64 to index
-// CHECK: %[[K:.*]] = arith.constant 2.500000e+00 : f32
+// CHECK: %[[MI:.*]] = arith.index_cast %[[M]] : i64 to index
+// CHECK-NOT: arith.remsi
+// CHECK-NOT: arith.minsi
+// CHECK: %[[B64:.*]] = arith.index_cast %[[MI]] : index to i64
+// CHECK: %[[B:.*]] = arith.sitofp %[[B64]] : i64 to f32
+// CHECK: %[[K:.*]] = arith.addf %[[B]], %{{.*}} : f32
 // CHECK: sim.yield %[[K]] : f32
 sim.simulation @wrap range(64) dt(1.0e-2 : f32) max_steps(4) {
+  sim.buffer @Base : f32 constant init {
+  ^bb0(%i: index):
+    %i64 = arith.index_cast %i : index to i64
+    %f = arith.sitofp %i64 : i64 to f32
+    sim.yield %f : f32
+  }
   sim.buffer @K : f32 constant boundary(wrap) init {
   ^bb0(%i: index):
+    %b = sim.read @Base[%i] : f32
     %c = arith.constant 2.5 : f32
-    sim.yield %c : f32
+    %k = arith.addf %b, %c : f32
+    sim.yield %k : f32
   }
   sim.buffer @U : f32 init {
   ^bb0(%i: index):
@@ -116,30 +130,35 @@ sim.simulation @zero_vector range(64) dt(1.0e-2 : f64) max_steps(4) {
 // Reads inside a copied init see initial states: @K's read of @U becomes
 // @U's init, and @W's read of @K at its own item needs no boundary rule
 // again. Reads in num_steps, total, exact and another buffer's init are
-// replaced the same way.
+// replaced the same way; all of them read at the body's own item %i, so no
+// boundary rule is computed at all.
 
 // CHECK-LABEL: sim.simulation @initial_states
 // CHECK-NOT: sim.buffer @K
 // CHECK-NOT: sim.buffer @W
-// CHECK: sim.buffer @U
-// CHECK: sim.buffer @V
-// CHECK-NOT: sim.read
-// CHECK: } exact {
-// CHECK-NOT: sim.read
-// CHECK: sim.component @C
-// CHECK-NOT: sim.read @K
-// CHECK-NOT: sim.read @W
+// CHECK-NOT: sim.get_param @range
+// CHECK: sim.buffer @V : f32 init {
+// CHECK-NEXT: ^bb0(%i: index):
+// CHECK-NEXT: %[[V0:.*]] = arith.constant 3.000000e+00 : f32
+// CHECK-NEXT: sim.yield %[[V0]] : f32
+// CHECK-NEXT: } exact {
+// CHECK-NEXT: ^bb0(%i: index, %t: f64):
+// CHECK-NEXT: %[[E0:.*]] = arith.constant 3.000000e+00 : f32
+// CHECK-NEXT: sim.yield %[[E0]] : f32
+// CHECK: sim.component @C writes(@U, @V) num_steps {
+// CHECK-NEXT: ^bb0(%i: index, %t: i64):
+// CHECK-NEXT: %[[N0:.*]] = arith.constant 3.000000e+00 : f32
+// CHECK-NEXT: arith.fptosi %[[N0]] : f32 to i32
 // CHECK: } evaluate {
-// CHECK: %[[R:.*]] = sim.get_param @range : i64
-// CHECK-NOT: sim.get_param @range
-// CHECK: %[[U0:.*]] = arith.constant 3.000000e+00 : f32
-// CHECK-NOT: sim.get_param @range
-// CHECK: arith.mulf %[[U0]], %[[U0]] : f32
-// CHECK-NOT: sim.read @K
-// CHECK-NOT: sim.read @W
-// CHECK: sim.total @Sum
+// CHECK-NEXT: ^bb0(%i: index, %t: i64, %n: i32, %dt: f32):
+// CHECK-NEXT: %[[U0:.*]] = arith.constant 3.000000e+00 : f32
+// CHECK-NEXT: %[[W:.*]] = arith.mulf %[[U0]], %[[U0]] : f32
+// CHECK-NEXT: %[[U:.*]] = sim.read @U[%i] : f32
+// CHECK-NEXT: sim.yield %[[U]], %[[W]] : f32, f32
+// CHECK: sim.total @Sum : f32 {
 // CHECK-NOT: sim.read @W
 // CHECK: sim.read @U[%i]
+// CHECK-NOT: sim.get_param @range
 sim.simulation @initial_states range(64) dt(1.0e-2 : f32) max_steps(4) {
   sim.buffer @W : f32 constant init {
   ^bb0(%i: index):
