@@ -70,6 +70,11 @@ class SceneWriter:
 
     def __init__(self, seed):
         self.rng = random.Random(seed)
+        # Draws added later take their own generator, so that every seed
+        # keeps the scene it had before them (the tests name seeds by what
+        # their scenes hold).
+        self.extra = random.Random(f"constant field {seed}")
+        self.constant_field = None
         self.count = 0
         self.lines = []
         self.parameters = False
@@ -96,9 +101,9 @@ class SceneWriter:
                       f"{self.buffer_type}")
         return name
 
-    def buffer(self, out, name, attrs):
+    def buffer(self, out, name, attrs, rng=None):
         """A buffer whose init varies smoothly with the item (and the lane)."""
-        rng = self.rng
+        rng = rng or self.rng
         scalar, ty = self.scalar, self.buffer_type
         out.append(f"  sim.buffer {name} : {ty}{attrs} init {{")
         out.append("  ^bb0(%i: index):")
@@ -315,6 +320,12 @@ class StencilScene(SceneWriter):
             boundary = rng.choice(["", " boundary(clamp)", " boundary(zero)",
                                    " boundary(wrap)"])
             self.buffer(out, name, interp + boundary)
+        # Now and then a constant field (docs/Model.md) that components
+        # read at their items, through windows and through gathers.
+        if self.extra.random() < 0.3:
+            self.constant_field = "@K"
+            self.buffer(out, "@K", " constant" + self.extra.choice(
+                ["", " boundary(zero)", " boundary(wrap)"]), rng=self.extra)
         # Now and then an oscillator whose position has a Hermite
         # interpolation from its velocity.
         oscillator = None
@@ -377,6 +388,10 @@ class StencilScene(SceneWriter):
                         width = rng.choice([1, 1, 2, 3, 5, 40])
                         where = rng.randint(-width, width)
                     reads.append(self.read(rng.choice(readable[c]), where))
+                if self.constant_field and self.extra.random() < 0.6:
+                    where = self.extra.choice([0, 0, -1, 1, -3, 4, 40,
+                                               "gather"])
+                    reads.append(self.read(self.constant_field, where))
                 total = reads[0]
                 for value in reads[1:]:
                     name = self.fresh()
