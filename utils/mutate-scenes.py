@@ -55,6 +55,7 @@ EXTREME_FLOATS = ["0.0", "-0.0", "1.0e308", "1.0e-320", "-1.0", "3.0e38",
                   "0.5"]
 CRASH_MARKS = ("PLEASE submit a bug report", "Stack dump", "LLVM ERROR",
                "Assertion", "UNREACHABLE", "AddressSanitizer",
+               "UndefinedBehaviorSanitizer",
                "terminate called", "Segmentation fault")
 STRATEGIES = ["simple", "traditional", "hip", "hip-cache", "lts"]
 

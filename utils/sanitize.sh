@@ -14,6 +14,15 @@
 #                                        seeded with the examples and the
 #                                        kept corpora; crashes land in
 #                                        build-sanitize/fuzz/<target>/
+#   utils/sanitize.sh mutate [SECONDS] [ARGS...]
+#                                        runs utils/mutate-scenes.py with the
+#                                        sanitized sim-translate and sim-run
+#                                        for SECONDS (default 600), so that a
+#                                        mutated scene that makes our code
+#                                        touch memory it must not fails with
+#                                        the report even where the process
+#                                        survives; failures land in
+#                                        build-sanitize/mutate/
 #   utils/sanitize.sh build              only builds
 #
 # It needs Debian's libclang-rt-22-dev (the sanitizer runtimes and
@@ -131,6 +140,19 @@ fuzz)
     fi
   done
   exit $status
+  ;;
+mutate)
+  seconds=${1:-600}
+  shift || true
+  configure
+  cmake --build "$build" --target sim-translate sim-run
+  rm -rf "$build/mutate"
+  # Leaks are not what this looks for, and an error exit of a refused
+  # scene must stay a clean error.
+  ASAN_OPTIONS="allow_user_poisoning=0:detect_leaks=0" \
+    python3 utils/mutate-scenes.py --budget "$seconds" --seeds 1-1000000 \
+    --sim-translate "$build/bin/sim-translate" --sim-run "$build/bin/sim-run" \
+    --timeout 600 --keep "$build/mutate" "$@"
   ;;
 *)
   echo "sanitize.sh: unknown command '$command' (see --help)" >&2
