@@ -1034,26 +1034,48 @@ void ReferenceSession::readLevels(int32_t buffer, int64_t item, uint8_t *out) {
     std::memcpy(out, latest, bytes);
     return;
   }
-  size_t k = 0;
   const auto &writes = model_->components[size_t(levels.component)]->writes;
-  while (writes[k] != uint32_t(buffer))
-    ++k;
+  // The levels a buffer the component writes kept at the start of the
+  // group's sub-step (none for a buffer it does not write).
+  auto previousOf = [&](int32_t kept) -> const uint8_t * {
+    auto found = std::find(writes.begin(), writes.end(), uint32_t(kept));
+    if (found == writes.end())
+      return nullptr;
+    return levels.previousState[size_t(found - writes.begin())].data() + at;
+  };
   if (!(a < t && t < b))
     fail(SIM_ERROR_BACKEND,
          describeRead(buffer, item) + " at local time " + std::to_string(t) +
              ", outside its group's time levels [" + std::to_string(a) + ", " +
              std::to_string(b) + "]");
-  const uint8_t *previous = levels.previousState[k].data() + at;
+  const uint8_t *previous = previousOf(buffer);
+  // A Hermite derivative at the same item and the same two levels, which
+  // only a buffer of the same component has (docs/Model.md, "What a read
+  // returns").
+  const uint8_t *va = nullptr, *vb = nullptr;
+  if (info.interp == Interp::Hermite) {
+    int32_t derivative = buffers_[size_t(buffer)].derivative;
+    va = previousOf(derivative);
+    if (!va)
+      fail(SIM_ERROR_BACKEND,
+           describeRead(buffer, item) + " at local time " + std::to_string(t) +
+               " between its group's time levels, but its hermite "
+               "derivative '" +
+               buffers_[size_t(derivative)].info->name +
+               "' is not written by the same component, so it has no "
+               "value at those levels");
+    vb = states[size_t(derivative)].current.data() + at;
+  }
   if (isF64(element)) {
     double f = double(t - a) / double(b - a);
     double h = double(b - a) * settings.dtValue();
     interpolateLanes<double>(info.interp, element.lanes(), f, h, previous,
-                             latest, nullptr, nullptr, out);
+                             latest, va, vb, out);
   } else {
     float f = float(t - a) / float(b - a);
     float h = float(b - a) * float(settings.dtValue());
     interpolateLanes<float>(info.interp, element.lanes(), f, h, previous,
-                            latest, nullptr, nullptr, out);
+                            latest, va, vb, out);
   }
 }
 

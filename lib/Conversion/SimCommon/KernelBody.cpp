@@ -279,14 +279,20 @@ private:
     // replicated buffer, whose halves are the range apart); in a
     // distributed plan in the rank's block or its ghost items, found from
     // the index before the boundary rule, as for any other read.
-    bool replicated = values.replicated.contains(name);
-    Value stored = item, halfSize = values.extent;
-    if (replicated) {
-      halfSize = values.range;
-    } else if (values.first) {
+    // An auxiliary buffer of the interpolation (a Hermite derivative, which
+    // the same component writes under the same boundary rule:
+    // --sim-substep-legality) is read at the same item and time levels.
+    auto storageOf = [&](StringAttr stored) -> std::pair<Value, Value> {
+      if (values.replicated.contains(stored))
+        return {item, values.range};
+      if (!values.first)
+        return {item, values.extent};
       Value unused;
-      stored = lowerGhostIndex(builder, loc, buffer, load.getIndex(), unused);
-    }
+      return {lowerGhostIndex(builder, loc, buffer, load.getIndex(), unused),
+              values.extent};
+    };
+    Value stored, halfSize;
+    std::tie(stored, halfSize) = storageOf(name);
     Value block = arith::DivUIOp::create(
         builder, loc, item,
         arith::ConstantIndexOp::create(builder, loc, kLevelBlock));
@@ -307,13 +313,16 @@ private:
     Value isOdd = arith::CmpIOp::create(
         builder, loc, arith::CmpIPredicate::ne,
         arith::AndIOp::create(builder, loc, latestTime, level), zero64);
-    auto elementOf = [&](Value parity) {
+    auto elementIn = [&](Value parity, Value storedAt, Value size) {
       Value half = arith::MulIOp::create(
           builder, loc,
           arith::IndexCastOp::create(builder, loc, builder.getIndexType(),
                                      parity),
-          halfSize);
-      return arith::AddIOp::create(builder, loc, half, stored).getResult();
+          size);
+      return arith::AddIOp::create(builder, loc, half, storedAt).getResult();
+    };
+    auto elementOf = [&](Value parity) {
+      return elementIn(parity, stored, halfSize);
     };
     // The latest level, and a way to the previous one. Where lanes run side
     // by side (levelsFromBothHalves), both halves at the item, both at
@@ -374,9 +383,37 @@ private:
           arith::SIToFPOp::create(builder, loc, floatType, behind), lengthF);
       Value dt = castParam(builder, loc, values.params.lookup("dt"), floatType);
       Value span = arith::MulFOp::create(builder, loc, lengthF, dt);
-      Value value = buffer.getInterpolation().buildInterpolation(
-          builder, loc, ValueRange{previous}, ValueRange{latest}, fraction,
-          span);
+      SmallVector<Value> atBegin = {previous}, atEnd = {latest};
+      InterpolationAttrInterface interp = buffer.getInterpolation();
+      for (FlatSymbolRefAttr aux : interp.getAuxiliaryBuffers()) {
+        Value auxMemory = values.buffers.lookup(aux.getAttr());
+        if (!auxMemory)
+          return load.emitOpError()
+                 << "reads @" << buffer.getSymName() << ", whose interpolation "
+                 << "reads " << aux << ", which this kernel does not have";
+        Value auxStored, auxSize;
+        std::tie(auxStored, auxSize) = storageOf(aux.getAttr());
+        auto auxAt = [&](Value parity) {
+          return memref::LoadOp::create(builder, loc, auxMemory,
+                                        elementIn(parity, auxStored, auxSize))
+              .getResult();
+        };
+        if (values.levelsFromBothHalves) {
+          Value sourceHalf = auxAt(values.sourceParity);
+          Value otherHalf = auxAt(
+              arith::XOrIOp::create(builder, loc, values.sourceParity, one));
+          atEnd.push_back(arith::SelectOp::create(builder, loc, isOdd,
+                                                  otherHalf, sourceHalf));
+          atBegin.push_back(arith::SelectOp::create(builder, loc, isOdd,
+                                                    sourceHalf, otherHalf));
+        } else {
+          atEnd.push_back(auxAt(latestParity));
+          atBegin.push_back(
+              auxAt(arith::XOrIOp::create(builder, loc, latestParity, one)));
+        }
+      }
+      Value value = interp.buildInterpolation(builder, loc, atBegin, atEnd,
+                                              fraction, span);
       scf::YieldOp::create(builder, loc, value);
     }
     Value value = select.getResult(0);

@@ -53,7 +53,15 @@ struct PlanHalosPass : public sim::impl::SimPlanHalosBase<PlanHalosPass> {
           SmallVector<BufferOp> reached = {buffer};
           bool interpolates =
               read.getRoleAttr() && read.getRole() == ReadRole::interpolate;
-          if (interpolates)
+          // So does a read of another item's time levels under lts: of a
+          // buffer its local_steps component writes, read by that
+          // component (its derivative has the same writer and boundary
+          // rule: --sim-substep-legality).
+          auto reader = read->getParentOfType<ComponentOp>();
+          bool readsLevels =
+              reader && reader.getAdvance() == Advance::local_steps &&
+              analysis.getWriter(buffer) == reader && !pattern.isOwn();
+          if (interpolates || readsLevels)
             for (FlatSymbolRefAttr aux :
                  buffer.getInterpolation().getAuxiliaryBuffers())
               if (BufferOp auxBuffer = simulation.lookupBuffer(aux))

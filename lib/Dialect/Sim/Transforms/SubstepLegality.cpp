@@ -52,6 +52,45 @@ constexpr int64_t kMaxFluxWindow = 4096;
 /// schema's LocalStepBlock).
 constexpr int64_t kLevelBlockItems = 32;
 
+/// Why a read of `buffer` at another item cannot be answered from the time
+/// levels `writer`'s blocks keep under lts, or an empty string. An
+/// interpolation that reads auxiliary buffers (a Hermite derivative) needs
+/// them at the same two time levels, which only the buffers `writer`
+/// writes have, and at the same item, which one boundary rule gives.
+std::string whyLevelsLackAuxiliaries(BufferOp buffer, ComponentOp writer) {
+  InterpolationAttrInterface interp = buffer.getInterpolation();
+  auto simulation = buffer->getParentOfType<SimulationOp>();
+  ArrayAttr writes = writer.getWrites();
+  std::string why;
+  llvm::raw_string_ostream os(why);
+  for (auto [index, aux] : llvm::enumerate(interp.getAuxiliaryBuffers())) {
+    BufferOp auxBuffer = simulation.lookupBuffer(aux);
+    if (!auxBuffer)
+      continue;
+    StringRef role = interp.getAuxiliaryBufferRole(index);
+    if (!llvm::is_contained(writes, aux)) {
+      os << "@" << buffer.getSymName() << "'s interpolation reads " << aux
+         << " (" << role << "), which @" << writer.getSymName()
+         << " does not write, so it is not kept at every item's two time "
+            "levels; let @"
+         << writer.getSymName() << " write " << aux
+         << ", or use #sim.linear or #sim.cubic for @" << buffer.getSymName();
+      break;
+    }
+    if (auxBuffer.getBoundary() != buffer.getBoundary()) {
+      os << "@" << buffer.getSymName() << "'s interpolation reads " << aux
+         << " (" << role << ") at @" << buffer.getSymName() << "'s items, but "
+         << aux << " has boundary("
+         << stringifyBoundary(auxBuffer.getBoundary()) << ") where @"
+         << buffer.getSymName() << " has boundary("
+         << stringifyBoundary(buffer.getBoundary())
+         << "); give both one boundary rule";
+      break;
+    }
+  }
+  return why;
+}
+
 struct SubstepLegalityPass
     : public sim::impl::SimSubstepLegalityBase<SubstepLegalityPass> {
   using Base::Base;
@@ -602,13 +641,9 @@ struct SubstepLegalityPass
                << name << " an interpolation";
         return;
       }
-      if (!interp.getAuxiliaryBuffers().empty()) {
-        remark << "; under lts it cannot take local time steps: @" << name
-               << "'s interpolation reads other buffers ("
-               << interp.getAuxiliaryBufferRole(0)
-               << "), which are not kept at every item's two time levels; "
-                  "use #sim.linear or #sim.cubic for @"
-               << name;
+      if (std::string why = whyLevelsLackAuxiliaries(buffer, component);
+          !why.empty()) {
+        remark << "; under lts it cannot take local time steps: " << why;
         return;
       }
       window = window.join(access.pattern);

@@ -130,10 +130,11 @@ sim.simulation @none range(64) dt(1.0e-2 : f32) max_steps(4) {
 
 // -----
 
-// A neighbour of a Hermite buffer: its derivative has no two time levels.
+// A neighbour of a Hermite buffer whose derivative the component writes
+// too: each item keeps both at the same two time levels.
 
 // CHECK-LABEL: sim.simulation @hermite
-// CHECK: sim.component @Wave writes(@X, @V) attributes {sub_stepping = #sim<sub_stepping grid_sync>}
+// CHECK: sim.component @Wave writes(@X, @V) attributes {local_window = array<i64: -1, 0>, sub_stepping = #sim<sub_stepping grid_sync>}
 sim.simulation @hermite range(64) dt(1.0e-2 : f32) max_steps(4) {
   sim.buffer @V : f32 init {
   ^bb0(%i: index):
@@ -145,7 +146,82 @@ sim.simulation @hermite range(64) dt(1.0e-2 : f32) max_steps(4) {
     %c = arith.constant 0.0 : f32
     sim.yield %c : f32
   }
-  // expected-remark @+1 {{under lts it cannot take local time steps: @X's interpolation reads other buffers (derivative), which are not kept at every item's two time levels; use #sim.linear or #sim.cubic for @X}}
+  // expected-remark @+1 {{@Wave needs a grid-wide barrier between sub-steps: its evaluate body reads @X, which it writes, at i-1, so a thread could read another item while that item is between sub-steps; under lts its blocks of 32 items take local time steps (window i-1..i)}}
+  sim.component @Wave writes(@X, @V) num_steps {
+  ^bb0(%i: index, %t: i64):
+    %c2 = arith.constant 2 : i32
+    sim.yield %c2 : i32
+  } evaluate {
+  ^bb0(%i: index, %t: i64, %n: i32, %dt: f32):
+    %c1 = arith.constant 1 : index
+    %j = arith.subi %i, %c1 : index
+    // expected-note @+1 {{reads @X at i-1}}
+    %l = sim.read @X[%j] : f32
+    %v = sim.read @V[%i] : f32
+    %x1 = arith.addf %l, %v : f32
+    sim.yield %x1, %v : f32, f32
+  }
+  sim.observe [@X]
+}
+
+// -----
+
+// Its derivative written by another component has no two time levels.
+
+// CHECK-LABEL: sim.simulation @hermite_other_writer
+// CHECK: sim.component @Wave writes(@X) attributes {sub_stepping = #sim<sub_stepping grid_sync>}
+sim.simulation @hermite_other_writer range(64) dt(1.0e-2 : f32) max_steps(4) {
+  sim.buffer @V : f32 init {
+  ^bb0(%i: index):
+    %c = arith.constant 0.0 : f32
+    sim.yield %c : f32
+  }
+  sim.buffer @X : f32 interp(#sim.hermite<@V>) init {
+  ^bb0(%i: index):
+    %c = arith.constant 0.0 : f32
+    sim.yield %c : f32
+  }
+  sim.component @Push writes(@V) evaluate {
+  ^bb0(%i: index, %t: i64, %n: i32, %dt: f32):
+    %x = sim.read @X[%i] : f32
+    sim.yield %x : f32
+  }
+  // expected-remark @+1 {{under lts it cannot take local time steps: @X's interpolation reads @V (derivative), which @Wave does not write, so it is not kept at every item's two time levels; let @Wave write @V, or use #sim.linear or #sim.cubic for @X}}
+  sim.component @Wave writes(@X) num_steps {
+  ^bb0(%i: index, %t: i64):
+    %c2 = arith.constant 2 : i32
+    sim.yield %c2 : i32
+  } evaluate {
+  ^bb0(%i: index, %t: i64, %n: i32, %dt: f32):
+    %c1 = arith.constant 1 : index
+    %j = arith.subi %i, %c1 : index
+    // expected-note @+1 {{reads @X at i-1}}
+    %l = sim.read @X[%j] : f32
+    %v = sim.read @V[%i] : f32
+    %x1 = arith.addf %l, %v : f32
+    sim.yield %x1 : f32
+  }
+  sim.observe [@X]
+}
+
+// -----
+
+// A derivative under another boundary rule would be read at other items.
+
+// CHECK-LABEL: sim.simulation @hermite_boundaries
+// CHECK: sim.component @Wave writes(@X, @V) attributes {sub_stepping = #sim<sub_stepping grid_sync>}
+sim.simulation @hermite_boundaries range(64) dt(1.0e-2 : f32) max_steps(4) {
+  sim.buffer @V : f32 boundary(clamp) init {
+  ^bb0(%i: index):
+    %c = arith.constant 0.0 : f32
+    sim.yield %c : f32
+  }
+  sim.buffer @X : f32 interp(#sim.hermite<@V>) boundary(wrap) init {
+  ^bb0(%i: index):
+    %c = arith.constant 0.0 : f32
+    sim.yield %c : f32
+  }
+  // expected-remark @+1 {{under lts it cannot take local time steps: @X's interpolation reads @V (derivative) at @X's items, but @V has boundary(clamp) where @X has boundary(wrap); give both one boundary rule}}
   sim.component @Wave writes(@X, @V) num_steps {
   ^bb0(%i: index, %t: i64):
     %c2 = arith.constant 2 : i32
