@@ -14,7 +14,8 @@ Two shapes:
            back edge; num_steps constant, by region, by a band that moves
            with the time, by item, from the state, or out of range (0,
            negative, INT32_MAX), or no num_steps at all; sometimes an
-           oscillator whose position has a Hermite interpolation, and
+           oscillator whose position has a Hermite interpolation (now and
+           then pulled by its neighbours too: a chain), and
            parameters (a rate, and a mode that makes every num_steps 1)
   pair     a writer and a reader that may form a flux pair or an item pair
            under lts (docs/Model.md), sometimes breaking one of its rules,
@@ -75,6 +76,7 @@ class SceneWriter:
         # their scenes hold).
         self.extra = random.Random(f"constant field {seed}")
         self.constant_field = None
+        self.chain = False
         self.count = 0
         self.lines = []
         self.parameters = False
@@ -332,10 +334,16 @@ class StencilScene(SceneWriter):
         if rng.random() < 0.25:
             oscillator = components
             components += 1
-            self.buffer(out, "@Hv", rng.choice([" interp(none)", "",
-                                                " boundary(zero)"]))
-            self.buffer(out, "@Hx", " interp(#sim.hermite<@Hv>)" + rng.choice(
-                ["", " boundary(wrap)"]))
+            velocity = rng.choice([" interp(none)", "", " boundary(zero)"])
+            position = rng.choice(["", " boundary(wrap)"])
+            # Now and then a chain (its neighbours pull it too, below), with
+            # one boundary rule for both, as lts needs to read the
+            # neighbours through their time levels.
+            self.chain = self.extra.random() < 0.5
+            if self.chain:
+                velocity = velocity.replace(" boundary(zero)", "") + position
+            self.buffer(out, "@Hv", velocity)
+            self.buffer(out, "@Hx", " interp(#sim.hermite<@Hv>)" + position)
             buffers += ["@Hv", "@Hx"]
             writer += [oscillator, oscillator]
         order = list(range(components))
@@ -366,6 +374,16 @@ class StencilScene(SceneWriter):
                 target = (self.read(rng.choice(others), rng.randint(-2, 2))
                           if others else self.read("@Hx", rng.choice([-1, 1])))
                 ty = self.buffer_type
+                if others and self.chain:
+                    # A chain: also pulled towards a neighbour's position,
+                    # which lts reads through the time levels of @Hx and
+                    # of its derivative @Hv.
+                    neighbour = self.read("@Hx", self.extra.choice([-2, -1, 1, 3]))
+                    both = self.fresh()
+                    self.emit(f"{both} = arith.addf {target}, {neighbour} : {ty}")
+                    target = self.fresh()
+                    self.emit(f"{target} = arith.mulf {both}, "
+                              f"{self.float_constant(0.5)} : {ty}")
                 h = self.step_length()
                 pull = self.fresh()
                 self.emit(f"{pull} = arith.subf {target}, {x} : {ty}")
