@@ -54,13 +54,15 @@ struct PlanHalosPass : public sim::impl::SimPlanHalosBase<PlanHalosPass> {
           bool interpolates =
               read.getRoleAttr() && read.getRole() == ReadRole::interpolate;
           // So does a read of another item's time levels under lts: of a
-          // buffer its local_steps component writes, read by that
-          // component (its derivative has the same writer and boundary
-          // rule: --sim-substep-legality).
+          // buffer a local_steps component writes, read by that component
+          // or by the writer of its pair (the derivative has the same
+          // writer and boundary rule: --sim-substep-legality).
           auto reader = read->getParentOfType<ComponentOp>();
+          ComponentOp writer = analysis.getWriter(buffer);
           bool readsLevels =
-              reader && reader.getAdvance() == Advance::local_steps &&
-              analysis.getWriter(buffer) == reader && !pattern.isOwn();
+              reader && writer && !pattern.isOwn() &&
+              writer.getAdvance() == Advance::local_steps &&
+              (reader == writer || reader.getAdvance() == Advance::local_flux);
           if (interpolates || readsLevels)
             for (FlatSymbolRefAttr aux :
                  buffer.getInterpolation().getAuxiliaryBuffers())

@@ -414,12 +414,9 @@ struct SubstepLegalityPass
                     "interpolation of the two; use #sim.linear or #sim.cubic";
         return;
       }
-      if (!interp.getAuxiliaryBuffers().empty()) {
-        refuse() << "it reads @" << buffer << ", whose interpolation reads "
-                 << "other buffers (" << interp.getAuxiliaryBufferRole(0)
-                 << "), which are not kept at every item's two time levels; "
-                    "use #sim.linear or #sim.cubic for @"
-                 << buffer;
+      if (std::string why = whyLevelsLackAuxiliaries(access.buffer, reader);
+          !why.empty()) {
+        refuse() << "it reads @" << buffer << ": " << why;
         return;
       }
       cellWindow =

@@ -74,8 +74,8 @@ sim.simulation @no_snapshot range(1024) dt(1.0e-2 : f32) max_steps(4) {
 // SIMPLE: sim.buffer @U : f32 interp(#sim.hermite<@dU>) init
 // SIMPLE: sim.buffer @dU : f32 init
 // CHECK: sim.buffer @W : f32 init
-// HIP: sim.component @Diffuse writes(@U, @dU) attributes {advance = #sim<advance grid_substeps>, invariant_estimate, parity = #sim<parity copy_if_even>, sub_stepping = #sim<sub_stepping grid_sync>}
-// SIMPLE: sim.component @Diffuse writes(@U, @dU) attributes {advance = #sim<advance whole_step>, parity = #sim<parity none>, sub_stepping = #sim<sub_stepping grid_sync>}
+// HIP: sim.component @Diffuse writes(@U, @dU) attributes {advance = #sim<advance grid_substeps>, invariant_estimate, local_window = array<i64: -1, 0>, parity = #sim<parity copy_if_even>, sub_stepping = #sim<sub_stepping grid_sync>}
+// SIMPLE: sim.component @Diffuse writes(@U, @dU) attributes {advance = #sim<advance whole_step>, local_window = array<i64: -1, 0>, parity = #sim<parity none>, sub_stepping = #sim<sub_stepping grid_sync>}
 // HIP: sim.component @Sample writes(@W) attributes {advance = #sim<advance whole_step>, parity = #sim<parity none>, sub_stepping = #sim<sub_stepping in_kernel>}
 sim.simulation @needs_snapshot range(1024) dt(1.0e-2 : f32) max_steps(4) {
   sim.buffer @U : f32 interp(#sim.hermite<@dU>) init {

@@ -358,12 +358,13 @@ sim.simulation @none_positions range(64) dt(1.0e-2 : f64) max_steps(4) {
 
 // -----
 
-// The positions interpolate with their derivative (hermite), which is not
-// kept at every item's two time levels.
+// The positions interpolate with their derivative (hermite), which the
+// integrator writes too: @Force reads both at the integrator's two time
+// levels.
 
 // CHECK-LABEL: sim.simulation @hermite_positions
-// CHECK-NOT: flux_window
-// CHECK: sim.observe
+// CHECK: sim.component @Force writes(@F) attributes {flux_window = array<i64: 0, 0>, local_window = array<i64: -1, 1>
+// CHECK: sim.component @Integrate writes(@X, @V) attributes {local_window = array<i64: -1, 1>
 
 sim.simulation @hermite_positions range(64) dt(1.0e-2 : f64) max_steps(4) {
   sim.buffer @X : f64 interp(#sim.hermite<@V>) init {
@@ -381,7 +382,64 @@ sim.simulation @hermite_positions range(64) dt(1.0e-2 : f64) max_steps(4) {
     %c = arith.constant 0.0 : f64
     sim.yield %c : f64
   }
-  // expected-remark @+1 {{under lts @Force and @Integrate form no pair, and @Force's num_steps bounds the big step as under hip: it reads @X, whose interpolation reads other buffers (derivative), which are not kept at every item's two time levels; use #sim.linear or #sim.cubic for @X}}
+  // expected-remark @+1 {{@Force and @Integrate form an item pair: under lts @Force evaluates an item whenever its block starts a sub-step, so its num_steps bounds that block rather than the big step (only its largest value does), and @Integrate's blocks take local time steps (window i-1..i+1)}}
+  sim.component @Force writes(@F) num_steps {
+  ^bb0(%i: index, %t: i64):
+    %c4 = arith.constant 4 : i32
+    sim.yield %c4 : i32
+  } evaluate {
+  ^bb0(%i: index, %t: i64, %n: i32, %dt: f64):
+    %c1 = arith.constant 1 : index
+    %il = arith.subi %i, %c1 : index
+    %ir = arith.addi %i, %c1 : index
+    %xl = sim.read @X[%il] : f64
+    %xr = sim.read @X[%ir] : f64
+    %d = arith.subf %xr, %xl : f64
+    sim.yield %d : f64
+  }
+  sim.component @Integrate writes(@X, @V) num_steps {
+  ^bb0(%i: index, %t: i64):
+    %c2 = arith.constant 2 : i32
+    sim.yield %c2 : i32
+  } evaluate {
+  ^bb0(%i: index, %t: i64, %n: i32, %dt: f64):
+    %f = sim.read @F[%i] : f64
+    %x = sim.read @X[%i] : f64
+    %v = sim.read @V[%i] : f64
+    %v1 = math.fma %dt, %f, %v : f64
+    %x1 = math.fma %dt, %v1, %x : f64
+    sim.yield %x1, %v1 : f64, f64
+  }
+  sim.schedule [@Force, @Integrate] bounded_by [@Force]
+  sim.observe [@X]
+}
+
+// -----
+
+// A derivative under another boundary rule would be read at the
+// positions' items.
+
+// CHECK-LABEL: sim.simulation @hermite_boundaries
+// CHECK-NOT: flux_window
+// CHECK: sim.observe
+
+sim.simulation @hermite_boundaries range(64) dt(1.0e-2 : f64) max_steps(4) {
+  sim.buffer @X : f64 interp(#sim.hermite<@V>) init {
+  ^bb0(%i: index):
+    %c = arith.constant 1.0 : f64
+    sim.yield %c : f64
+  }
+  sim.buffer @V : f64 boundary(wrap) init {
+  ^bb0(%i: index):
+    %c = arith.constant 0.0 : f64
+    sim.yield %c : f64
+  }
+  sim.buffer @F : f64 init {
+  ^bb0(%i: index):
+    %c = arith.constant 0.0 : f64
+    sim.yield %c : f64
+  }
+  // expected-remark @+1 {{under lts @Force and @Integrate form no pair, and @Force's num_steps bounds the big step as under hip: it reads @X: @X's interpolation reads @V (derivative) at @X's items, but @V has boundary(wrap) where @X has boundary(clamp); give both one boundary rule}}
   sim.component @Force writes(@F) num_steps {
   ^bb0(%i: index, %t: i64):
     %c4 = arith.constant 4 : i32
