@@ -264,7 +264,9 @@ def SimPlanHalos : Pass<"sim-plan-halos", "::mlir::sim::SimulationOp"> {
     and total bodies, records on every buffer read at other items
     `halo = array<i64: below, above>` (the largest offsets below and above
     the read item; an interpolated read reaches the buffers its
-    interpolation reads, a Hermite derivative too), and on the simulation
+    interpolation reads, a Hermite derivative too, and so does a read
+    through the time levels of a `local_steps` component under `lts`, by
+    the component or the writer of its pair), and on the simulation
     `distributed_halo`, the largest of them. Reads in `init` and `exact`
     bodies need no ghosts: the kernels recompute initial states.
 
