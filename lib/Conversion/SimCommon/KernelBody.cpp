@@ -251,6 +251,12 @@ private:
     return value;
   }
 
+  /// A buffer's two halves as a read through the time levels finds them:
+  /// its memory, the item's element in a half and the size of a half.
+  struct LevelStorage {
+    Value memory, item, halfSize;
+  };
+
   /// Local time steps: item `j`'s state at the reader's local time `T +
   /// slot u` (`u` the big step's unit), from the two time levels its block
   /// keeps. The block of sub-step `s` units has taken `c = ceil(slot / s)`
@@ -278,21 +284,24 @@ private:
     // Where the item is stored: at the item on one process (and for a
     // replicated buffer, whose halves are the range apart); in a
     // distributed plan in the rank's block or its ghost items, found from
-    // the index before the boundary rule, as for any other read.
-    // An auxiliary buffer of the interpolation (a Hermite derivative, which
+    // the index before the boundary rule, as for any other read. An
+    // auxiliary buffer of the interpolation (a Hermite derivative, which
     // the same component writes under the same boundary rule:
-    // --sim-substep-legality) is read at the same item and time levels.
-    auto storageOf = [&](StringAttr stored) -> std::pair<Value, Value> {
+    // --sim-substep-legality) is stored alike, unless only one of the two
+    // is replicated.
+    Value ghost;
+    auto storageOf = [&](StringAttr stored, Value storage) -> LevelStorage {
       if (values.replicated.contains(stored))
-        return {item, values.range};
+        return {storage, item, values.range};
       if (!values.first)
-        return {item, values.extent};
-      Value unused;
-      return {lowerGhostIndex(builder, loc, buffer, load.getIndex(), unused),
-              values.extent};
+        return {storage, item, values.extent};
+      if (!ghost) {
+        Value unused;
+        ghost = lowerGhostIndex(builder, loc, buffer, load.getIndex(), unused);
+      }
+      return {storage, ghost, values.extent};
     };
-    Value stored, halfSize;
-    std::tie(stored, halfSize) = storageOf(name);
+    LevelStorage own = storageOf(name, memory);
     Value block = arith::DivUIOp::create(
         builder, loc, item,
         arith::ConstantIndexOp::create(builder, loc, kLevelBlock));
@@ -313,41 +322,42 @@ private:
     Value isOdd = arith::CmpIOp::create(
         builder, loc, arith::CmpIPredicate::ne,
         arith::AndIOp::create(builder, loc, latestTime, level), zero64);
-    auto elementIn = [&](Value parity, Value storedAt, Value size) {
+    // One half at the item.
+    auto loadHalf = [&](const LevelStorage &at, Value parity) -> Value {
       Value half = arith::MulIOp::create(
           builder, loc,
           arith::IndexCastOp::create(builder, loc, builder.getIndexType(),
                                      parity),
-          size);
-      return arith::AddIOp::create(builder, loc, half, storedAt).getResult();
+          at.halfSize);
+      return memref::LoadOp::create(
+          builder, loc, at.memory,
+          arith::AddIOp::create(builder, loc, half, at.item).getResult());
     };
-    auto elementOf = [&](Value parity) {
-      return elementIn(parity, stored, halfSize);
+    // Where lanes run side by side (levelsFromBothHalves): both halves at
+    // the item, at halves that every lane shares, so that consecutive items
+    // load as wide loads whatever their blocks' parities, and a select per
+    // lane into the latest and the previous level.
+    auto selectLevels = [&](const LevelStorage &at) {
+      Value sourceHalf = loadHalf(at, values.sourceParity);
+      Value otherHalf = loadHalf(
+          at, arith::XOrIOp::create(builder, loc, values.sourceParity, one));
+      return std::make_pair(
+          arith::SelectOp::create(builder, loc, isOdd, otherHalf, sourceHalf)
+              .getResult(),
+          arith::SelectOp::create(builder, loc, isOdd, sourceHalf, otherHalf)
+              .getResult());
     };
-    // The latest level, and a way to the previous one. Where lanes run side
-    // by side (levelsFromBothHalves), both halves at the item, both at
-    // halves that every lane shares, so that consecutive items load as
-    // wide loads whatever their blocks' parities, and a select per lane;
-    // else one load from the half the block says.
+    // The latest level, and a way to the previous one: selected from both
+    // halves, or one load from the half the block says.
     Value latest, latestParity, previousLevel;
     if (values.levelsFromBothHalves) {
-      Value sourceHalf = memref::LoadOp::create(builder, loc, memory,
-                                                elementOf(values.sourceParity));
-      Value otherHalf =
-          memref::LoadOp::create(builder, loc, memory,
-                                 elementOf(arith::XOrIOp::create(
-                                     builder, loc, values.sourceParity, one)));
-      latest =
-          arith::SelectOp::create(builder, loc, isOdd, otherHalf, sourceHalf);
-      previousLevel =
-          arith::SelectOp::create(builder, loc, isOdd, sourceHalf, otherHalf);
+      std::tie(latest, previousLevel) = selectLevels(own);
     } else {
       Value odd =
           arith::ExtUIOp::create(builder, loc, builder.getI64Type(), isOdd);
       latestParity =
           arith::XOrIOp::create(builder, loc, values.sourceParity, odd);
-      latest =
-          memref::LoadOp::create(builder, loc, memory, elementOf(latestParity));
+      latest = loadHalf(own, latestParity);
     }
     Value inStep = arith::CmpIOp::create(builder, loc, arith::CmpIPredicate::eq,
                                          latestTime, slot);
@@ -358,11 +368,11 @@ private:
       builder.setInsertionPointToStart(select.thenBlock());
       scf::YieldOp::create(builder, loc, latest);
       builder.setInsertionPointToStart(select.elseBlock());
-      Value previous = previousLevel;
-      if (!previous)
-        previous = memref::LoadOp::create(
-            builder, loc, memory,
-            elementOf(arith::XOrIOp::create(builder, loc, latestParity, one)));
+      auto previousHalf = [&](const LevelStorage &at) {
+        return loadHalf(at,
+                        arith::XOrIOp::create(builder, loc, latestParity, one));
+      };
+      Value previous = previousLevel ? previousLevel : previousHalf(own);
       // In base steps from here: the unit times the units.
       Value latestSteps =
           arith::MulIOp::create(builder, loc, latestTime, values.levelUnit);
@@ -391,26 +401,16 @@ private:
           return load.emitOpError()
                  << "reads @" << buffer.getSymName() << ", whose interpolation "
                  << "reads " << aux << ", which this kernel does not have";
-        Value auxStored, auxSize;
-        std::tie(auxStored, auxSize) = storageOf(aux.getAttr());
-        auto auxAt = [&](Value parity) {
-          return memref::LoadOp::create(builder, loc, auxMemory,
-                                        elementIn(parity, auxStored, auxSize))
-              .getResult();
-        };
+        LevelStorage auxAt = storageOf(aux.getAttr(), auxMemory);
+        Value auxLatest, auxPrevious;
         if (values.levelsFromBothHalves) {
-          Value sourceHalf = auxAt(values.sourceParity);
-          Value otherHalf = auxAt(
-              arith::XOrIOp::create(builder, loc, values.sourceParity, one));
-          atEnd.push_back(arith::SelectOp::create(builder, loc, isOdd,
-                                                  otherHalf, sourceHalf));
-          atBegin.push_back(arith::SelectOp::create(builder, loc, isOdd,
-                                                    sourceHalf, otherHalf));
+          std::tie(auxLatest, auxPrevious) = selectLevels(auxAt);
         } else {
-          atEnd.push_back(auxAt(latestParity));
-          atBegin.push_back(
-              auxAt(arith::XOrIOp::create(builder, loc, latestParity, one)));
+          auxLatest = loadHalf(auxAt, latestParity);
+          auxPrevious = previousHalf(auxAt);
         }
+        atEnd.push_back(auxLatest);
+        atBegin.push_back(auxPrevious);
       }
       Value value = interp.buildInterpolation(builder, loc, atBegin, atEnd,
                                               fraction, span);
