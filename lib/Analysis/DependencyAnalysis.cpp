@@ -146,20 +146,29 @@ public:
   IndexClassifier(DataFlowSolver &solver) : solver(solver) {}
 
   AccessPattern classify(Value index, Value item) {
-    std::optional<OffsetRange> range = offsetFromItem(index, item, 0);
+    Reach reach = reachFromItem(index, item, 0);
     // An offset beyond 2^62 is no neighbourhood: `%i + c` may wrap around
     // the 64-bit index, and the halos, caches and level reaches sized from
     // the window (hi - lo and more) would overflow. A gather computes the
     // index as the scalar code does, on every backend. (Ranges stop at
     // 2^40, so every offset that can reach another item stays a window.)
     constexpr int64_t kLargestOffset = int64_t(1) << 62;
-    if (!range || range->first < -kLargestOffset ||
-        range->second > kLargestOffset)
+    if (!reach.lo || !reach.hi || *reach.lo < -kLargestOffset ||
+        *reach.hi > kLargestOffset)
       return AccessPattern::gather();
-    return AccessPattern::window(range->first, range->second);
+    return AccessPattern::window(*reach.lo, *reach.hi);
   }
 
 private:
+  /// The offsets `value - %i` can take, each side bounded or not. A read is
+  /// a window when both are: `%i + c`, but also an index a body clamps
+  /// around its own item, `min(max(%j, %i - w), %i + w)` with any `%j` (a
+  /// neighbour list's entry given a reach), which is how a scene bounds a
+  /// gather so that halos, caches and local time steps can be planned.
+  struct Reach {
+    std::optional<int64_t> lo, hi;
+  };
+
   /// The range of an integer value, when IntegerRangeAnalysis bounds it and
   /// it does not depend on a run-time parameter.
   std::optional<OffsetRange> rangeOf(Value value) {
@@ -179,18 +188,42 @@ private:
     return OffsetRange{lo, hi};
   }
 
-  /// If `value` is `item + c` with a bounded `c`, returns the range of `c`.
-  std::optional<OffsetRange> offsetFromItem(Value value, Value item,
-                                            unsigned depth) {
+  static std::optional<int64_t> shifted(std::optional<int64_t> bound,
+                                        int64_t term) {
+    return bound ? std::optional<int64_t>(*bound + term) : std::nullopt;
+  }
+  /// The tighter of two lower (`lower`) or upper bounds, either optional.
+  static std::optional<int64_t> tighter(std::optional<int64_t> a,
+                                        std::optional<int64_t> b, bool lower) {
+    if (!a || !b)
+      return a ? a : b;
+    return lower ? std::max(*a, *b) : std::min(*a, *b);
+  }
+  /// The looser of two bounds: unbounded when either is.
+  static std::optional<int64_t> looser(std::optional<int64_t> a,
+                                       std::optional<int64_t> b, bool lower) {
+    if (!a || !b)
+      return std::nullopt;
+    return lower ? std::min(*a, *b) : std::max(*a, *b);
+  }
+
+  /// The reach of `value` from `item`.
+  Reach reachFromItem(Value value, Value item, unsigned depth) {
     if (value == item)
-      return OffsetRange{0, 0};
+      return Reach{0, 0};
+    // A value that does not follow the item: the item is in [0, range), so
+    // `value - %i` is at most the value's largest, and unbounded below
+    // (the range is a run-time parameter).
+    Reach unrelated;
+    if (std::optional<OffsetRange> range = rangeOf(value))
+      unrelated.hi = range->second;
     // Index expressions in scenes are short; the bound only protects
     // against pathological inputs.
     if (depth > 32)
-      return std::nullopt;
+      return unrelated;
     Operation *def = value.getDefiningOp();
     if (!def)
-      return std::nullopt;
+      return unrelated;
     if (isa<arith::IndexCastOp, arith::IndexCastUIOp>(def)) {
       // A narrower integer extended to an index is `%i + c` only where the
       // narrow sum did not wrap, which depends on the range: `index_cast
@@ -198,34 +231,55 @@ private:
       // 2^32 - 1 at item 0, neighbours of neither.
       Type source = def->getOperand(0).getType();
       if (!source.isIndex() && source.getIntOrFloatBitWidth() < 64)
-        return std::nullopt;
-      return offsetFromItem(def->getOperand(0), item, depth + 1);
+        return unrelated;
+      return reachFromItem(def->getOperand(0), item, depth + 1);
     }
     if (auto add = dyn_cast<arith::AddIOp>(def)) {
+      // `base + term` with a bounded term, either way round; both bounds
+      // hold, so the tighter of the two is kept.
+      Reach sum;
+      bool any = false;
       for (auto [base, term] : {std::pair(add.getLhs(), add.getRhs()),
                                 std::pair(add.getRhs(), add.getLhs())}) {
-        std::optional<OffsetRange> baseRange =
-            offsetFromItem(base, item, depth + 1);
-        if (!baseRange)
-          continue;
         std::optional<OffsetRange> termRange = rangeOf(term);
         if (!termRange)
-          return std::nullopt;
-        return OffsetRange{baseRange->first + termRange->first,
-                           baseRange->second + termRange->second};
+          continue;
+        Reach baseReach = reachFromItem(base, item, depth + 1);
+        Reach candidate{shifted(baseReach.lo, termRange->first),
+                        shifted(baseReach.hi, termRange->second)};
+        sum = any ? Reach{tighter(sum.lo, candidate.lo, true),
+                          tighter(sum.hi, candidate.hi, false)}
+                  : candidate;
+        any = true;
       }
-      return std::nullopt;
+      return any ? sum : unrelated;
     }
     if (auto sub = dyn_cast<arith::SubIOp>(def)) {
-      std::optional<OffsetRange> baseRange =
-          offsetFromItem(sub.getLhs(), item, depth + 1);
       std::optional<OffsetRange> termRange = rangeOf(sub.getRhs());
-      if (!baseRange || !termRange)
-        return std::nullopt;
-      return OffsetRange{baseRange->first - termRange->second,
-                         baseRange->second - termRange->first};
+      if (!termRange)
+        return unrelated;
+      Reach baseReach = reachFromItem(sub.getLhs(), item, depth + 1);
+      return Reach{shifted(baseReach.lo, -termRange->second),
+                   shifted(baseReach.hi, -termRange->first)};
     }
-    return std::nullopt;
+    // Signed minimum and maximum: a clamp around the item. (The unsigned
+    // ones order a negative offset's index above every item.)
+    if (isa<arith::MinSIOp, arith::MaxSIOp>(def)) {
+      Reach lhs = reachFromItem(def->getOperand(0), item, depth + 1);
+      Reach rhs = reachFromItem(def->getOperand(1), item, depth + 1);
+      if (isa<arith::MinSIOp>(def))
+        return Reach{looser(lhs.lo, rhs.lo, true),
+                     tighter(lhs.hi, rhs.hi, false)};
+      return Reach{tighter(lhs.lo, rhs.lo, true),
+                   looser(lhs.hi, rhs.hi, false)};
+    }
+    // Either of two indices: both reaches.
+    if (auto select = dyn_cast<arith::SelectOp>(def)) {
+      Reach lhs = reachFromItem(select.getTrueValue(), item, depth + 1);
+      Reach rhs = reachFromItem(select.getFalseValue(), item, depth + 1);
+      return Reach{looser(lhs.lo, rhs.lo, true), looser(lhs.hi, rhs.hi, false)};
+    }
+    return unrelated;
   }
 
   DataFlowSolver &solver;

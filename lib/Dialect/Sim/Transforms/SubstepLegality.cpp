@@ -52,6 +52,13 @@ constexpr int64_t kMaxFluxWindow = 4096;
 /// schema's LocalStepBlock).
 constexpr int64_t kLevelBlockItems = 32;
 
+/// How a body turns a gather into a window (the dependency analysis bounds
+/// both forms): a neighbour list's entry clamped around the item has a
+/// known reach.
+constexpr llvm::StringLiteral kWindowHint =
+    "%i plus a bounded offset, or an index clamped to %i - w .. %i + w with "
+    "arith.maxsi and arith.minsi";
+
 /// Why a read of `buffer` at another item cannot be answered from the time
 /// levels `writer`'s blocks keep under lts, or an empty string. An
 /// interpolation that reads auxiliary buffers (a Hermite derivative) needs
@@ -306,7 +313,8 @@ struct SubstepLegalityPass
           refuse() << "@" << component.getSymName() << " reads @"
                    << access.buffer.getSymName()
                    << " through a gather; the items that share an "
-                      "interface must be known: read it through a window";
+                      "interface must be known: read it through a window ("
+                   << kWindowHint << ")";
           return;
         }
         if (!access.pattern.isOwn() && !neighbourRead)
@@ -401,8 +409,8 @@ struct SubstepLegalityPass
         continue;
       if (access.pattern.isGather()) {
         refuse() << "it reads @" << buffer
-                 << " through a gather; read it through a window so that "
-                    "the blocks "
+                 << " through a gather; read it through a window ("
+                 << kWindowHint << ") so that the blocks "
                  << (fluxPair ? "an interface" : "an item of @" + name.str())
                  << " reads are known";
         return;
@@ -622,8 +630,9 @@ struct SubstepLegalityPass
         remark << "; under lts it cannot take local time steps: its "
                << stringifyBodyKind(access.body) << " body reads @" << name
                << " through a gather, so the blocks it reads are not known; "
-                  "a window (%i plus a bounded offset) lets the levels of "
-                  "neighbouring blocks be limited";
+                  "a window ("
+               << kWindowHint
+               << ") lets the levels of neighbouring blocks be limited";
         if (gather != noted)
           remark.attachNote(gather.getLoc()) << "the gather of @" << name;
         return;

@@ -225,3 +225,103 @@ sim.simulation @params range(64) dt(1.0e-2 : f32) max_steps(3) {
   }
   sim.observe [@R]
 }
+
+// An index a body clamps around its own item is a window whatever it
+// clamps (here a neighbour list's entry read from @N): `min(max(%g, %i -
+// 2), %i + 3)` reaches i-2..i+3. A bound on one side only, an unsigned
+// clamp (it orders `%i - 2` at item 0 above every item) or a bound taken
+// from a parameter leave a gather.
+// TEXT-LABEL: dependency graph of @clamped: 2 components, 8 buffers
+// TEXT:        component @Reader writes @R
+// TEXT-NEXT:     evaluate reads: @N[i] interpolate, @A[i-2..i+3] interpolate, @B[i-1..i] interpolate, @C[i..i+1] interpolate, @D[gather] interpolate, @E[gather] interpolate, @F[gather] interpolate
+
+sim.simulation @clamped range(64) dt(1.0e-2 : f32) max_steps(3) {
+  sim.param @w = 2 : i64
+  sim.buffer @N : f32 init {
+  ^bb0(%i: index):
+    %c = arith.constant 0.0 : f32
+    sim.yield %c : f32
+  }
+  sim.buffer @A : f32 init {
+  ^bb0(%i: index):
+    %c = arith.constant 0.0 : f32
+    sim.yield %c : f32
+  }
+  sim.buffer @B : f32 init {
+  ^bb0(%i: index):
+    %c = arith.constant 0.0 : f32
+    sim.yield %c : f32
+  }
+  sim.buffer @C : f32 init {
+  ^bb0(%i: index):
+    %c = arith.constant 0.0 : f32
+    sim.yield %c : f32
+  }
+  sim.buffer @D : f32 init {
+  ^bb0(%i: index):
+    %c = arith.constant 0.0 : f32
+    sim.yield %c : f32
+  }
+  sim.buffer @E : f32 init {
+  ^bb0(%i: index):
+    %c = arith.constant 0.0 : f32
+    sim.yield %c : f32
+  }
+  sim.buffer @F : f32 init {
+  ^bb0(%i: index):
+    %c = arith.constant 0.0 : f32
+    sim.yield %c : f32
+  }
+  sim.buffer @R : f32 init {
+  ^bb0(%i: index):
+    %c = arith.constant 0.0 : f32
+    sim.yield %c : f32
+  }
+  sim.component @Source writes(@N, @A, @B, @C, @D, @E, @F) evaluate {
+  ^bb0(%i: index, %t: i64, %n: i32, %dt: f32):
+    %c = arith.constant 0.0 : f32
+    sim.yield %c, %c, %c, %c, %c, %c, %c : f32, f32, f32, f32, f32, f32, f32
+  }
+  sim.component @Reader writes(@R) evaluate {
+  ^bb0(%i: index, %t: i64, %n: i32, %dt: f32):
+    %nf = sim.read @N[%i] : f32
+    %n64 = arith.fptosi %nf : f32 to i64
+    %g = arith.index_cast %n64 : i64 to index
+    %c0 = arith.constant 0 : index
+    %c1 = arith.constant 1 : index
+    %c2 = arith.constant 2 : index
+    %c3 = arith.constant 3 : index
+    %below = arith.subi %i, %c2 : index
+    %above = arith.addi %i, %c3 : index
+    %atLeast = arith.maxsi %g, %below : index
+    %ja = arith.minsi %atLeast, %above : index
+    %a = sim.read @A[%ja] : f32
+    %left = arith.subi %i, %c1 : index
+    %jb = arith.maxsi %left, %c0 : index
+    %b = sim.read @B[%jb] : f32
+    %last = arith.constant 63 : index
+    %atEnd = arith.cmpi eq, %i, %last : index
+    %right = arith.addi %i, %c1 : index
+    %jc = arith.select %atEnd, %i, %right : index
+    %c = sim.read @C[%jc] : f32
+    %jd = arith.minsi %g, %above : index
+    %d = sim.read @D[%jd] : f32
+    %atLeastU = arith.maxui %g, %below : index
+    %je = arith.minui %atLeastU, %above : index
+    %e = sim.read @E[%je] : f32
+    %w64 = sim.get_param @w : i64
+    %w = arith.index_cast %w64 : i64 to index
+    %belowW = arith.subi %i, %w : index
+    %atLeastW = arith.maxsi %g, %belowW : index
+    %jf = arith.minsi %atLeastW, %above : index
+    %f = sim.read @F[%jf] : f32
+    %ab = arith.addf %a, %b : f32
+    %abc = arith.addf %ab, %c : f32
+    %de = arith.addf %d, %e : f32
+    %def = arith.addf %de, %f : f32
+    %s0 = arith.addf %abc, %def : f32
+    %s = arith.addf %s0, %nf : f32
+    sim.yield %s : f32
+  }
+  sim.observe [@R]
+}

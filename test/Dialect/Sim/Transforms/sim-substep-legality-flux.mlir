@@ -243,7 +243,7 @@ sim.simulation @gather range(64) dt(1.0e-2 : f32) max_steps(4) {
     %c = arith.constant 0.0 : f32
     sim.yield %c : f32
   }
-  // expected-remark @+1 {{under lts @Flux and the readers of its fluxes take the big step as under hip: @Cells reads @F through a gather; the items that share an interface must be known: read it through a window}}
+  // expected-remark @+1 {{under lts @Flux and the readers of its fluxes take the big step as under hip: @Cells reads @F through a gather; the items that share an interface must be known: read it through a window (%i plus a bounded offset, or an index clamped to %i - w .. %i + w with arith.maxsi and arith.minsi)}}
   sim.component @Flux writes(@F) evaluate {
   ^bb0(%j: index, %t: i64, %n: i32, %dt: f32):
     %c1 = arith.constant 1 : index

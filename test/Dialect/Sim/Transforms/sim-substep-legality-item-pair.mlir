@@ -264,7 +264,7 @@ sim.simulation @gathered_positions range(64) dt(1.0e-2 : f64) max_steps(4) {
     %c = arith.constant 0.0 : f64
     sim.yield %c : f64
   }
-  // expected-remark @+1 {{under lts @Force and @Integrate form no pair, and @Force's num_steps bounds the big step as under hip: it reads @X through a gather; read it through a window so that the blocks an item of @Force reads are known}}
+  // expected-remark @+1 {{under lts @Force and @Integrate form no pair, and @Force's num_steps bounds the big step as under hip: it reads @X through a gather; read it through a window (%i plus a bounded offset, or an index clamped to %i - w .. %i + w with arith.maxsi and arith.minsi) so that the blocks an item of @Force reads are known}}
   sim.component @Force writes(@F) num_steps {
   ^bb0(%i: index, %t: i64):
     %c4 = arith.constant 4 : i32

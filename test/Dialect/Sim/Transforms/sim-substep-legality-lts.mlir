@@ -50,7 +50,7 @@ sim.simulation @gather range(64) dt(1.0e-2 : f32) max_steps(4) {
     %c = arith.constant 0.0 : f32
     sim.yield %c : f32
   }
-  // expected-remark @+1 {{under lts it cannot take local time steps: its evaluate body reads @U through a gather, so the blocks it reads are not known; a window (%i plus a bounded offset) lets the levels of neighbouring blocks be limited}}
+  // expected-remark @+1 {{under lts it cannot take local time steps: its evaluate body reads @U through a gather, so the blocks it reads are not known; a window (%i plus a bounded offset, or an index clamped to %i - w .. %i + w with arith.maxsi and arith.minsi) lets the levels of neighbouring blocks be limited}}
   sim.component @Scatter writes(@U) num_steps {
   ^bb0(%i: index, %t: i64):
     %c2 = arith.constant 2 : i32
@@ -61,6 +61,41 @@ sim.simulation @gather range(64) dt(1.0e-2 : f32) max_steps(4) {
     %j = arith.muli %i, %c7 : index
     // expected-note @+1 {{reads @U through a gather}}
     %g = sim.read @U[%j] : f32
+    sim.yield %g : f32
+  }
+  sim.observe [@U]
+}
+
+// -----
+
+// The same gather clamped around the item (a neighbour list given a
+// reach) is a window: local_window [-40, 3], wider than a block.
+
+// CHECK-LABEL: sim.simulation @clamped_gather
+// CHECK: sim.component @Scatter writes(@U) attributes {local_window = array<i64: -40, 3>, sub_stepping = #sim<sub_stepping grid_sync>}
+sim.simulation @clamped_gather range(64) dt(1.0e-2 : f32) max_steps(4) {
+  sim.buffer @U : f32 init {
+  ^bb0(%i: index):
+    %c = arith.constant 0.0 : f32
+    sim.yield %c : f32
+  }
+  // expected-remark @+1 {{@Scatter needs a grid-wide barrier between sub-steps: its evaluate body reads @U, which it writes, at i-40..i+3, so a thread could read another item while that item is between sub-steps; under lts its blocks of 32 items take local time steps (window i-40..i+3)}}
+  sim.component @Scatter writes(@U) num_steps {
+  ^bb0(%i: index, %t: i64):
+    %c2 = arith.constant 2 : i32
+    sim.yield %c2 : i32
+  } evaluate {
+  ^bb0(%i: index, %t: i64, %n: i32, %dt: f32):
+    %c7 = arith.constant 7 : index
+    %c40 = arith.constant 40 : index
+    %c3 = arith.constant 3 : index
+    %j = arith.muli %i, %c7 : index
+    %below = arith.subi %i, %c40 : index
+    %above = arith.addi %i, %c3 : index
+    %atLeast = arith.maxsi %j, %below : index
+    %k = arith.minsi %above, %atLeast : index
+    // expected-note @+1 {{reads @U at i-40..i+3}}
+    %g = sim.read @U[%k] : f32
     sim.yield %g : f32
   }
   sim.observe [@U]

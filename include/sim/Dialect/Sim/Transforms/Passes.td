@@ -270,10 +270,11 @@ def SimPlanHalos : Pass<"sim-plan-halos", "::mlir::sim::SimulationOp"> {
     `distributed_halo`, the largest of them. Reads in `init` and `exact`
     bodies need no ghosts: the kernels recompute initial states.
 
-    A gather (an index that is not the item plus a bounded offset) can reach
-    any item: the buffer it reads (and, for an interpolated read, the
-    buffers of its interpolation) is recorded `replicated` instead, with a
-    remark at the read. Every rank then holds all of it, and the blocks its
+    A gather (an index that is neither the item plus a bounded offset nor
+    one clamped around the item, docs/Model.md) can reach any item: the
+    buffer it reads (and, for an interpolated read, the buffers of its
+    interpolation) is recorded `replicated` instead, with a remark at the
+    read. Every rank then holds all of it, and the blocks its
     writer computes are all-gathered after each write.
   }];
   let dependentDialects = [];
