@@ -696,6 +696,26 @@ struct SubstepLegalityPass
                                            "instead")
                << ": start the step at the component whose num_steps is the "
                   "larger and varies less across items";
+        // Stencils that read each other through the back edge advance
+        // together in one component: its blocks keep all their buffers at
+        // their time levels, and nothing bounds the big step but what it
+        // reads of other components.
+        SmallVector<BufferOp> merged = analysis.getWrittenBuffers(component);
+        for (ComponentOp other : newBounds)
+          llvm::append_range(merged, analysis.getWrittenBuffers(other));
+        remark << "; or write ";
+        for (auto [index, buffer] : llvm::enumerate(merged))
+          remark << (index == 0                   ? ""
+                     : index + 1 == merged.size() ? " and "
+                                                  : ", ")
+                 << "@" << buffer.getSymName();
+        remark << " in one component (writes(";
+        llvm::interleaveComma(merged, remark, [&](BufferOp b) {
+          remark << "@" << b.getSymName();
+        });
+        remark << ")), which reads them at its blocks' time levels and takes "
+                  "local time steps unless it reads another component's "
+                  "buffer through the back edge";
       }
       return;
     }

@@ -392,7 +392,7 @@ sim.simulation @two_stencils range(64) dt(1.0e-2 : f32) max_steps(4) {
     %c = arith.constant 0.0 : f32
     sim.yield %c : f32
   }
-  // expected-remark-re @+1 {{@A needs a grid-wide barrier between sub-steps: {{.*}}; a component that does not bound it takes local time steps; 'sim.schedule [@B, @A]' would let @A take local time steps, but @B, which reads its own neighbours too, would bound the big step instead: start the step at the component whose num_steps is the larger and varies less across items{{$}}}}
+  // expected-remark-re @+1 {{@A needs a grid-wide barrier between sub-steps: {{.*}}; a component that does not bound it takes local time steps; 'sim.schedule [@B, @A]' would let @A take local time steps, but @B, which reads its own neighbours too, would bound the big step instead: start the step at the component whose num_steps is the larger and varies less across items; or write @U and @V in one component (writes(@U, @V)), which reads them at its blocks' time levels and takes local time steps unless it reads another component's buffer through the back edge{{$}}}}
   sim.component @A writes(@U) num_steps {
   ^bb0(%i: index, %t: i64):
     %c = arith.constant 2 : i32
