@@ -75,6 +75,7 @@ class SceneWriter:
         # keeps the scene it had before them (the tests name seeds by what
         # their scenes hold).
         self.extra = random.Random(f"constant field {seed}")
+        self.clamps = random.Random(f"clamped gather {seed}")
         self.constant_field = None
         self.chain = False
         self.count = 0
@@ -133,7 +134,9 @@ class SceneWriter:
         out.append("  }")
 
     def index(self, where):
-        """%i, %i plus a constant offset, or a gather (%i * k mod range)."""
+        """%i, %i plus a constant offset, or a gather (%i * k mod range),
+        now and then clamped to %i - a .. %i + b (a neighbour list given a
+        reach: a window, docs/Model.md)."""
         if where == "gather":
             k = self.int_constant(self.rng.choice([3, 7, 11]), "index")
             product = self.fresh()
@@ -141,6 +144,17 @@ class SceneWriter:
             bound = self.int_constant(self.range, "index")
             j = self.fresh()
             self.emit(f"{j} = arith.remui {product}, {bound} : index")
+            if self.clamps.random() < 0.4:
+                below, above = (self.clamps.choice([0, 1, 2, 5, 40])
+                                for _ in range(2))
+                low, high, at_least, clamped = (self.fresh() for _ in range(4))
+                self.emit(f"{low} = arith.subi %i, "
+                          f"{self.int_constant(below, 'index')} : index")
+                self.emit(f"{high} = arith.addi %i, "
+                          f"{self.int_constant(above, 'index')} : index")
+                self.emit(f"{at_least} = arith.maxsi {j}, {low} : index")
+                self.emit(f"{clamped} = arith.minsi {at_least}, {high} : index")
+                return clamped
             return j
         if where == 0:
             return "%i"
