@@ -19,6 +19,7 @@
 #include "mlir/Analysis/DataFlow/IntegerRangeAnalysis.h"
 #include "mlir/Analysis/DataFlowFramework.h"
 #include "mlir/Dialect/Arith/IR/Arith.h"
+#include "mlir/Dialect/Utils/StaticValueUtils.h"
 #include "mlir/Interfaces/LoopLikeInterface.h"
 #include "llvm/ADT/SetVector.h"
 #include "llvm/Support/Debug.h"
@@ -285,6 +286,80 @@ private:
   DataFlowSolver &solver;
 };
 } // namespace
+
+std::optional<int64_t> mlir::sim::getHandWrappedOffset(Value index,
+                                                       Value item) {
+  Operation *rem = index.getDefiningOp();
+  if (!isa_and_nonnull<arith::RemSIOp, arith::RemUIOp>(rem))
+    return std::nullopt;
+  Value sum = rem->getOperand(0), modulus = rem->getOperand(1);
+  std::optional<int64_t> period = getConstantIntValue(modulus);
+  auto isModulus = [&](Value value) {
+    if (value == modulus)
+      return true;
+    std::optional<int64_t> constant = getConstantIntValue(value);
+    return period && constant && *constant == *period;
+  };
+  // `(%i + c + n) mod n`: the n keeps the sum from going below zero.
+  if (auto add = sum.getDefiningOp<arith::AddIOp>()) {
+    if (isModulus(add.getRhs()))
+      sum = add.getLhs();
+    else if (isModulus(add.getLhs()))
+      sum = add.getRhs();
+  }
+  int64_t offset = 0;
+  if (sum != item) {
+    Operation *def = sum.getDefiningOp();
+    if (!isa_and_nonnull<arith::AddIOp, arith::SubIOp>(def))
+      return std::nullopt;
+    Value lhs = def->getOperand(0), rhs = def->getOperand(1);
+    if (isa<arith::AddIOp>(def) && rhs == item)
+      std::swap(lhs, rhs);
+    std::optional<int64_t> constant = getConstantIntValue(rhs);
+    if (lhs != item || !constant || *constant <= -kMaxOffset ||
+        *constant >= kMaxOffset)
+      return std::nullopt;
+    offset = isa<arith::AddIOp>(def) ? *constant : -*constant;
+  }
+  if (period) {
+    if (*period <= 0)
+      return std::nullopt;
+    offset %= *period;
+    if (offset > *period / 2)
+      offset -= *period;
+    else if (offset < -(*period / 2))
+      offset += *period;
+  }
+  if (offset == 0)
+    return std::nullopt;
+  return offset;
+}
+
+std::string mlir::sim::describeHandWrappedRead(ReadOp read, BufferOp buffer) {
+  // The item is the first argument of the body (every body has one).
+  Region *body = read->getParentRegion();
+  while (body &&
+         !isa_and_nonnull<ComponentOp, BufferOp, TotalOp>(body->getParentOp()))
+    body =
+        body->getParentOp() ? body->getParentOp()->getParentRegion() : nullptr;
+  if (!body || body->empty() || body->front().getNumArguments() == 0)
+    return "";
+  std::optional<int64_t> offset =
+      getHandWrappedOffset(read.getIndex(), body->front().getArgument(0));
+  if (!offset)
+    return "";
+  std::string window = "%i " + std::string(*offset < 0 ? "- " : "+ ") +
+                       std::to_string(*offset < 0 ? -*offset : *offset);
+  std::string name = "@" + buffer.getSymName().str();
+  std::string text =
+      "the index wraps " + window + " around the range by hand: ";
+  if (buffer.getBoundary() == Boundary::wrap)
+    text += name + " is boundary(wrap), so ";
+  else
+    text += "with boundary(wrap) on " + name + ", ";
+  return text + name + "[" + window +
+         "] reads the same item (where the divisor is the range) as a window";
+}
 
 /// The item argument `%i` of the body a read sits in.
 static Value getItemArgument(const ReadInfo &info) {

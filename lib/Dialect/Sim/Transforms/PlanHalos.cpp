@@ -43,85 +43,88 @@ struct PlanHalosPass : public sim::impl::SimPlanHalosBase<PlanHalosPass> {
     // Buffers whose snapshot (their value at T) some interpolating read
     // takes at other items; the snapshots of the others need no ghosts.
     llvm::SetVector<Operation *> snapshotGhosts;
-    auto record =
-        [&](ReadOp read, const AccessPattern &pattern, StringRef body) {
-          BufferOp buffer = simulation.lookupBuffer(read.getBufferAttr());
-          if (!buffer)
-            return;
-          // An interpolated read reads the auxiliary buffers of its
-          // interpolation (a Hermite derivative) at the same items.
-          SmallVector<BufferOp> reached = {buffer};
-          bool interpolates =
-              read.getRoleAttr() && read.getRole() == ReadRole::interpolate;
-          // So does a read of another item's time levels under lts: of a
-          // buffer a local_steps component writes, read by that component
-          // or by the writer of its pair (the derivative has the same
-          // writer and boundary rule: --sim-substep-legality).
-          auto reader = read->getParentOfType<ComponentOp>();
-          ComponentOp writer = analysis.getWriter(buffer);
-          bool readsLevels =
-              reader && writer && !pattern.isOwn() &&
-              writer.getAdvance() == Advance::local_steps &&
-              (reader == writer || reader.getAdvance() == Advance::local_flux);
-          if (interpolates || readsLevels)
-            for (FlatSymbolRefAttr aux :
-                 buffer.getInterpolation().getAuxiliaryBuffers())
-              if (BufferOp auxBuffer = simulation.lookupBuffer(aux))
-                reached.push_back(auxBuffer);
-          // An interpolated read at other items reads their snapshots
-          // there too (those that have one).
-          if (interpolates &&
-              (pattern.isGather() || pattern.getMinOffset() != 0 ||
-               pattern.getMaxOffset() != 0))
-            for (BufferOp target : reached)
-              if (target.getSnapshot())
-                snapshotGhosts.insert(target);
-          if (pattern.isGather()) {
+    auto record = [&](ReadOp read, const AccessPattern &pattern,
+                      StringRef body) {
+      BufferOp buffer = simulation.lookupBuffer(read.getBufferAttr());
+      if (!buffer)
+        return;
+      // An interpolated read reads the auxiliary buffers of its
+      // interpolation (a Hermite derivative) at the same items.
+      SmallVector<BufferOp> reached = {buffer};
+      bool interpolates =
+          read.getRoleAttr() && read.getRole() == ReadRole::interpolate;
+      // So does a read of another item's time levels under lts: of a
+      // buffer a local_steps component writes, read by that component
+      // or by the writer of its pair (the derivative has the same
+      // writer and boundary rule: --sim-substep-legality).
+      auto reader = read->getParentOfType<ComponentOp>();
+      ComponentOp writer = analysis.getWriter(buffer);
+      bool readsLevels =
+          reader && writer && !pattern.isOwn() &&
+          writer.getAdvance() == Advance::local_steps &&
+          (reader == writer || reader.getAdvance() == Advance::local_flux);
+      if (interpolates || readsLevels)
+        for (FlatSymbolRefAttr aux :
+             buffer.getInterpolation().getAuxiliaryBuffers())
+          if (BufferOp auxBuffer = simulation.lookupBuffer(aux))
+            reached.push_back(auxBuffer);
+      // An interpolated read at other items reads their snapshots
+      // there too (those that have one).
+      if (interpolates && (pattern.isGather() || pattern.getMinOffset() != 0 ||
+                           pattern.getMaxOffset() != 0))
+        for (BufferOp target : reached)
+          if (target.getSnapshot())
+            snapshotGhosts.insert(target);
+      if (pattern.isGather()) {
+        InFlightDiagnostic remark = read.emitRemark();
+        remark << "reads " << read.getBufferAttr() << " in " << body
+               << " through a gather: every rank holds all of it, and the "
+                  "blocks its writer computes travel to every rank after "
+                  "each write (an all-gather); a window (the item plus a "
+                  "constant offset) would need only the items next to "
+                  "each block";
+        if (std::string wrapped = describeHandWrappedRead(read, buffer);
+            !wrapped.empty())
+          remark << "; " << wrapped;
+        for (BufferOp target : reached)
+          replicated.insert(target);
+        return;
+      }
+      int64_t below = std::max<int64_t>(0, -pattern.getMinOffset());
+      int64_t above = std::max<int64_t>(0, pattern.getMaxOffset());
+      if (below == 0 && above == 0)
+        return;
+      // Past an end of the range, a derivative with another boundary
+      // rule is read at the interpolated buffer's item under that
+      // buffer's rule (InsertInterpolation.cpp); under wrap that item
+      // lies at the other end of the range, on another rank, and not
+      // among the derivative's ghost items, which follow its own rule.
+      if (interpolates && buffer.getBoundary() == Boundary::wrap)
+        for (BufferOp aux : ArrayRef(reached).drop_front())
+          if (aux.getBoundary() != Boundary::wrap &&
+              !replicated.contains(aux)) {
             read.emitRemark()
                 << "reads " << read.getBufferAttr() << " in " << body
-                << " through a gather: every rank holds all of it, and the "
-                   "blocks its writer computes travel to every rank after each "
-                   "write (an all-gather); a window (the item plus a constant "
-                   "offset) would need only the items next to each block";
-            for (BufferOp target : reached)
-              replicated.insert(target);
-            return;
+                << " at other items; past an end of the range its "
+                   "derivative "
+                << FlatSymbolRefAttr::get(aux.getSymNameAttr()) << " (boundary("
+                << stringifyBoundary(aux.getBoundary())
+                << ")) is read at the item " << read.getBufferAttr()
+                << "'s boundary(wrap) gives, at the other end of the "
+                   "range, so every rank holds all of "
+                << FlatSymbolRefAttr::get(aux.getSymNameAttr())
+                << " (an all-gather after each write); with one boundary "
+                   "rule for both only the items next to each block "
+                   "would travel";
+            replicated.insert(aux);
           }
-          int64_t below = std::max<int64_t>(0, -pattern.getMinOffset());
-          int64_t above = std::max<int64_t>(0, pattern.getMaxOffset());
-          if (below == 0 && above == 0)
-            return;
-          // Past an end of the range, a derivative with another boundary
-          // rule is read at the interpolated buffer's item under that
-          // buffer's rule (InsertInterpolation.cpp); under wrap that item
-          // lies at the other end of the range, on another rank, and not
-          // among the derivative's ghost items, which follow its own rule.
-          if (interpolates && buffer.getBoundary() == Boundary::wrap)
-            for (BufferOp aux : ArrayRef(reached).drop_front())
-              if (aux.getBoundary() != Boundary::wrap &&
-                  !replicated.contains(aux)) {
-                read.emitRemark()
-                    << "reads " << read.getBufferAttr() << " in " << body
-                    << " at other items; past an end of the range its "
-                       "derivative "
-                    << FlatSymbolRefAttr::get(aux.getSymNameAttr())
-                    << " (boundary(" << stringifyBoundary(aux.getBoundary())
-                    << ")) is read at the item " << read.getBufferAttr()
-                    << "'s boundary(wrap) gives, at the other end of the "
-                       "range, so every rank holds all of "
-                    << FlatSymbolRefAttr::get(aux.getSymNameAttr())
-                    << " (an all-gather after each write); with one boundary "
-                       "rule for both only the items next to each block "
-                       "would travel";
-                replicated.insert(aux);
-              }
-          for (BufferOp target : reached) {
-            auto [it, inserted] = halos.try_emplace(target, below, above);
-            if (!inserted)
-              it->second = {std::max(it->second.first, below),
-                            std::max(it->second.second, above)};
-          }
-        };
+      for (BufferOp target : reached) {
+        auto [it, inserted] = halos.try_emplace(target, below, above);
+        if (!inserted)
+          it->second = {std::max(it->second.first, below),
+                        std::max(it->second.second, above)};
+      }
+    };
     for (const ReadInfo &info : analysis.getReads()) {
       // Init and exact bodies are recomputed at the item they read (the
       // kernels never load an initial state), so they need no ghosts.

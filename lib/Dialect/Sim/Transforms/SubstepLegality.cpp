@@ -633,6 +633,9 @@ struct SubstepLegalityPass
                   "a window ("
                << kWindowHint
                << ") lets the levels of neighbouring blocks be limited";
+        if (std::string wrapped = describeHandWrappedRead(gather, buffer);
+            !wrapped.empty())
+          remark << "; " << wrapped;
         if (gather != noted)
           remark.attachNote(gather.getLoc()) << "the gather of @" << name;
         return;

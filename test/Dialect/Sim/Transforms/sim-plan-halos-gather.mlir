@@ -133,3 +133,62 @@ sim.simulation @hermite_wrap range(48) dt(5.0e-2 : f32) max_steps(4) {
   sim.schedule [@Osc, @Probe]
   sim.observe [@P]
 }
+
+// -----
+
+// An index wrapped around by hand is a gather too; the remark names the
+// window that boundary(wrap) gives instead: (%i - 1 + 64) mod 64 is %i - 1,
+// (%i + 63) mod 64 is %i - 1 too, and (%i + 2) mod range is %i + 2.
+
+// CHECK-LABEL: sim.simulation @wrapped_by_hand
+// CHECK: sim.buffer @X : f32 attributes {replicated} init
+// CHECK: sim.buffer @W : f32 boundary(wrap) attributes {replicated} init
+sim.simulation @wrapped_by_hand range(64) dt(1.0e-2 : f32) max_steps(4) {
+  sim.buffer @X : f32 init {
+  ^bb0(%i: index):
+    %c = arith.constant 0.0 : f32
+    sim.yield %c : f32
+  }
+  sim.buffer @W : f32 boundary(wrap) init {
+  ^bb0(%i: index):
+    %c = arith.constant 0.0 : f32
+    sim.yield %c : f32
+  }
+  sim.buffer @Y : f32 init {
+  ^bb0(%i: index):
+    %c = arith.constant 0.0 : f32
+    sim.yield %c : f32
+  }
+  sim.component @Source writes(@X, @W) evaluate {
+  ^bb0(%i: index, %t: i64, %n: i32, %dt: f32):
+    %x = sim.read @X[%i] : f32
+    sim.yield %x, %x : f32, f32
+  }
+  sim.component @Pick writes(@Y) evaluate {
+  ^bb0(%i: index, %t: i64, %n: i32, %dt: f32):
+    %c1 = arith.constant 1 : index
+    %c2 = arith.constant 2 : index
+    %c63 = arith.constant 63 : index
+    %c64 = arith.constant 64 : index
+    %left = arith.subi %i, %c1 : index
+    %lifted = arith.addi %left, %c64 : index
+    %j = arith.remsi %lifted, %c64 : index
+    // expected-remark @+1 {{reads @X in evaluate through a gather: every rank holds all of it, and the blocks its writer computes travel to every rank after each write (an all-gather); a window (the item plus a constant offset) would need only the items next to each block; the index wraps %i - 1 around the range by hand: with boundary(wrap) on @X, @X[%i - 1] reads the same item (where the divisor is the range) as a window}}
+    %a = sim.read @X[%j] : f32
+    %far = arith.addi %c63, %i : index
+    %k = arith.remui %far, %c64 : index
+    // expected-remark @+1 {{the index wraps %i - 1 around the range by hand: with boundary(wrap) on @X, @X[%i - 1] reads}}
+    %b = sim.read @X[%k] : f32
+    %range = sim.get_param @range : i64
+    %r = arith.index_cast %range : i64 to index
+    %right = arith.addi %i, %c2 : index
+    %m = arith.remui %right, %r : index
+    // expected-remark @+1 {{the index wraps %i + 2 around the range by hand: @W is boundary(wrap), so @W[%i + 2] reads the same item (where the divisor is the range) as a window}}
+    %w = sim.read @W[%m] : f32
+    %ab = arith.addf %a, %b : f32
+    %s = arith.addf %ab, %w : f32
+    sim.yield %s : f32
+  }
+  sim.schedule [@Source, @Pick]
+  sim.observe [@Y]
+}

@@ -103,6 +103,37 @@ sim.simulation @clamped_gather range(64) dt(1.0e-2 : f32) max_steps(4) {
 
 // -----
 
+// A neighbour wrapped around by hand, (%i + 1) mod 64: a gather, and the
+// remark names the window that boundary(wrap) gives instead.
+
+// CHECK-LABEL: sim.simulation @wrapped_by_hand
+// CHECK: sim.component @Ring writes(@U) attributes {sub_stepping = #sim<sub_stepping grid_sync>}
+sim.simulation @wrapped_by_hand range(64) dt(1.0e-2 : f32) max_steps(4) {
+  sim.buffer @U : f32 init {
+  ^bb0(%i: index):
+    %c = arith.constant 0.0 : f32
+    sim.yield %c : f32
+  }
+  // expected-remark @+1 {{a window (%i plus a bounded offset, or an index clamped to %i - w .. %i + w with arith.maxsi and arith.minsi) lets the levels of neighbouring blocks be limited; the index wraps %i + 1 around the range by hand: with boundary(wrap) on @U, @U[%i + 1] reads the same item (where the divisor is the range) as a window}}
+  sim.component @Ring writes(@U) num_steps {
+  ^bb0(%i: index, %t: i64):
+    %c2 = arith.constant 2 : i32
+    sim.yield %c2 : i32
+  } evaluate {
+  ^bb0(%i: index, %t: i64, %n: i32, %dt: f32):
+    %c1 = arith.constant 1 : index
+    %c64 = arith.constant 64 : index
+    %right = arith.addi %i, %c1 : index
+    %j = arith.remui %right, %c64 : index
+    // expected-note @+1 {{reads @U through a gather}}
+    %u = sim.read @U[%j] : f32
+    sim.yield %u : f32
+  }
+  sim.observe [@U]
+}
+
+// -----
+
 // A gather of its own buffer in num_steps only: num_steps runs at T under
 // lts, so the blocks still take local time steps (grid_sync under hip).
 

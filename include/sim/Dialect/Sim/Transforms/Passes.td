@@ -274,7 +274,8 @@ def SimPlanHalos : Pass<"sim-plan-halos", "::mlir::sim::SimulationOp"> {
     one clamped around the item, docs/Model.md) can reach any item: the
     buffer it reads (and, for an interpolated read, the buffers of its
     interpolation) is recorded `replicated` instead, with a remark at the
-    read. Every rank then holds all of it, and the blocks its
+    read (which, for an index wrapped around by hand, `(%i + c) mod n`,
+    names the window `boundary(wrap)` gives instead). Every rank then holds all of it, and the blocks its
     writer computes are all-gathered after each write.
   }];
   let dependentDialects = [];
