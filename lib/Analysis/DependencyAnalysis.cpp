@@ -301,11 +301,15 @@ std::optional<int64_t> mlir::sim::getHandWrappedOffset(Value index,
     return period && constant && *constant == *period;
   };
   // `(%i + c + n) mod n`: the n keeps the sum from going below zero.
+  bool lifted = false;
   if (auto add = sum.getDefiningOp<arith::AddIOp>()) {
+    lifted = true;
     if (isModulus(add.getRhs()))
       sum = add.getLhs();
     else if (isModulus(add.getLhs()))
       sum = add.getRhs();
+    else
+      lifted = false;
   }
   int64_t offset = 0;
   if (sum != item) {
@@ -321,6 +325,10 @@ std::optional<int64_t> mlir::sim::getHandWrappedOffset(Value index,
       return std::nullopt;
     offset = isa<arith::AddIOp>(def) ? *constant : -*constant;
   }
+  // A sum below zero is no wrap: remsi keeps its sign (the buffer's
+  // boundary rule reads it), remui reads 2^64 - 1 mod n at item 0.
+  if (offset < 0 && (!lifted || (period && offset + *period < 0)))
+    return std::nullopt;
   if (period) {
     if (*period <= 0)
       return std::nullopt;

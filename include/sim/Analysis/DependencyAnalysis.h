@@ -166,8 +166,8 @@ private:
 
 /// When `index` wraps the item plus a constant around by hand, `(%i + c)
 /// mod n` (`arith.remsi` or `arith.remui`, the sum perhaps with `n` added
-/// first: `(%i - 1 + n) mod n`), returns `c`, taken between `-n/2` and
-/// `n/2` where `n` is a constant. Such a read is a gather to the analysis
+/// first: `(%i - 1 + n) mod n`, so that the sum is never below zero),
+/// returns `c`, taken between `-n/2` and `n/2` where `n` is a constant. Such a read is a gather to the analysis
 /// (`n` need not be the range); the remarks that refuse a gather name the
 /// window the buffer's `boundary(wrap)` gives instead.
 std::optional<int64_t> getHandWrappedOffset(Value index, Value item);

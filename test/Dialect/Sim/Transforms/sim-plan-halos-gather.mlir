@@ -138,7 +138,8 @@ sim.simulation @hermite_wrap range(48) dt(5.0e-2 : f32) max_steps(4) {
 
 // An index wrapped around by hand is a gather too; the remark names the
 // window that boundary(wrap) gives instead: (%i - 1 + 64) mod 64 is %i - 1,
-// (%i + 63) mod 64 is %i - 1 too, and (%i + 2) mod range is %i + 2.
+// (%i + 63) mod 64 is %i - 1 too, and (%i + 2) mod range is %i + 2;
+// (%i - 1) mod 64 is below zero at item 0, so it is no wrap.
 
 // CHECK-LABEL: sim.simulation @wrapped_by_hand
 // CHECK: sim.buffer @X : f32 attributes {replicated} init
@@ -185,8 +186,13 @@ sim.simulation @wrapped_by_hand range(64) dt(1.0e-2 : f32) max_steps(4) {
     %m = arith.remui %right, %r : index
     // expected-remark @+1 {{the index wraps %i + 2 around the range by hand: @W is boundary(wrap), so @W[%i + 2] reads the same item (where the divisor is the range) as a window}}
     %w = sim.read @W[%m] : f32
+    // Not lifted by the divisor, %i - 1 is below zero at item 0: no wrap.
+    %z = arith.remsi %left, %c64 : index
+    // expected-remark-re @+1 {{reads @X in evaluate through a gather: {{.*}} would need only the items next to each block{{$}}}}
+    %y = sim.read @X[%z] : f32
     %ab = arith.addf %a, %b : f32
-    %s = arith.addf %ab, %w : f32
+    %aby = arith.addf %ab, %y : f32
+    %s = arith.addf %aby, %w : f32
     sim.yield %s : f32
   }
   sim.schedule [@Source, @Pick]
