@@ -287,8 +287,9 @@ private:
 };
 } // namespace
 
-std::optional<int64_t> mlir::sim::getHandWrappedOffset(Value index,
-                                                       Value item) {
+/// The `c` of an index `(%i + c) mod n` that describeHandWrappedRead
+/// recognises, taken between `-n/2` and `n/2` where `n` is a constant.
+static std::optional<int64_t> getHandWrappedOffset(Value index, Value item) {
   Operation *rem = index.getDefiningOp();
   if (!isa_and_nonnull<arith::RemSIOp, arith::RemUIOp>(rem))
     return std::nullopt;
@@ -343,17 +344,32 @@ std::optional<int64_t> mlir::sim::getHandWrappedOffset(Value index,
   return offset;
 }
 
+/// The item argument `%i` of a body: of `component` for num_steps and
+/// evaluate, of `buffer` for init and exact, of `total` for a total.
+static Value getBodyItem(BodyKind kind, ComponentOp component, BufferOp buffer,
+                         TotalOp total) {
+  switch (kind) {
+  case BodyKind::NumSteps:
+    return component.getNumStepsItem();
+  case BodyKind::Evaluate:
+    return component.getEvaluateItem();
+  case BodyKind::Init:
+    return buffer.getInitItem();
+  case BodyKind::Exact:
+    return buffer.getExactItem();
+  case BodyKind::Total:
+    return total.getItem();
+  }
+  llvm_unreachable("unknown body kind");
+}
+
 std::string mlir::sim::describeHandWrappedRead(ReadOp read, BufferOp buffer) {
-  // The item is the first argument of the body (every body has one).
-  Region *body = read->getParentRegion();
-  while (body &&
-         !isa_and_nonnull<ComponentOp, BufferOp, TotalOp>(body->getParentOp()))
-    body =
-        body->getParentOp() ? body->getParentOp()->getParentRegion() : nullptr;
-  if (!body || body->empty() || body->front().getNumArguments() == 0)
+  std::optional<BodyLocation> body = getEnclosingBody(read);
+  if (!body)
     return "";
-  std::optional<int64_t> offset =
-      getHandWrappedOffset(read.getIndex(), body->front().getArgument(0));
+  std::optional<int64_t> offset = getHandWrappedOffset(
+      read.getIndex(),
+      getBodyItem(body->kind, body->component, body->buffer, body->total));
   if (!offset)
     return "";
   std::string window = "%i " + std::string(*offset < 0 ? "- " : "+ ") +
@@ -369,21 +385,11 @@ std::string mlir::sim::describeHandWrappedRead(ReadOp read, BufferOp buffer) {
          "] reads the same item (where the divisor is the range) as a window";
 }
 
-/// The item argument `%i` of the body a read sits in.
+/// The item argument `%i` of the body a read sits in. (Total bodies are not
+/// analysed, see analyzeReads.)
 static Value getItemArgument(const ReadInfo &info) {
-  switch (info.body) {
-  case BodyKind::NumSteps:
-    return info.component.getNumStepsItem();
-  case BodyKind::Evaluate:
-    return info.component.getEvaluateItem();
-  case BodyKind::Init:
-    return info.owner.getInitItem();
-  case BodyKind::Exact:
-    return info.owner.getExactItem();
-  case BodyKind::Total:
-    break; // Total bodies are not analysed (see analyzeReads).
-  }
-  llvm_unreachable("unknown body kind");
+  assert(info.body != BodyKind::Total && "total bodies are not analysed");
+  return getBodyItem(info.body, info.component, info.owner, nullptr);
 }
 
 //===----------------------------------------------------------------------===//

@@ -164,17 +164,13 @@ private:
   llvm::DenseMap<Operation *, SmallVector<BufferAccess>> accesses;
 };
 
-/// When `index` wraps the item plus a constant around by hand, `(%i + c)
-/// mod n` (`arith.remsi` or `arith.remui`, the sum perhaps with `n` added
-/// first: `(%i - 1 + n) mod n`, so that the sum is never below zero),
-/// returns `c`, taken between `-n/2` and `n/2` where `n` is a constant. Such a read is a gather to the analysis
-/// (`n` need not be the range); the remarks that refuse a gather name the
-/// window the buffer's `boundary(wrap)` gives instead.
-std::optional<int64_t> getHandWrappedOffset(Value index, Value item);
-
-/// For a gather `read` whose index getHandWrappedOffset recognises (from
-/// the item of its body), what to write instead (for a remark, after
-/// "; "); otherwise an empty string.
+/// For a gather `read` that wraps its body's item plus a constant around
+/// by hand, `(%i + c) mod n` (`arith.remsi` or `arith.remui`, the sum
+/// perhaps with `n` added first, `(%i - 1 + n) mod n`, so that it is never
+/// below zero), what to write instead, for a remark after "; ": the window
+/// `@B[%i + c]` that the buffer's `boundary(wrap)` gives. Otherwise an
+/// empty string. (The analysis keeps such a read a gather: `n` need not be
+/// the range.)
 std::string describeHandWrappedRead(ReadOp read, BufferOp buffer);
 
 } // namespace mlir::sim
