@@ -14,7 +14,6 @@
 #include "mlir/Dialect/Arith/IR/Arith.h"
 #include "mlir/Dialect/MemRef/IR/MemRef.h"
 #include "mlir/Dialect/SCF/IR/SCF.h"
-#include "mlir/Dialect/Utils/StaticValueUtils.h"
 #include "mlir/IR/IRMapping.h"
 #include "mlir/IR/TypeUtilities.h"
 #include "mlir/Transforms/RegionUtils.h"
@@ -76,82 +75,6 @@ static FailureOr<SmallVector<Value>>
 cloneAndLower(OpBuilder &builder, SimulationOp simulation,
               ArrayRef<Operation *> ops, IRMapping &mapping, ValueRange yielded,
               const KernelValues &values);
-
-namespace {
-/// The smallest and largest value of an integer expression.
-using Bounds = std::pair<int64_t, int64_t>;
-} // namespace
-
-/// Window offsets are small; the limit keeps the arithmetic below exact.
-constexpr int64_t kMaxOffset = int64_t(1) << 30;
-
-/// The bounds of `value` when it is built from constants and the induction
-/// variables of scf.for loops with constant bounds by additions and
-/// subtractions (the offset `k` of a window read `i + k` in a body).
-static std::optional<Bounds> getConstantBounds(Value value, unsigned depth) {
-  if (depth > 16)
-    return std::nullopt;
-  auto small = [](int64_t x) { return x >= -kMaxOffset && x <= kMaxOffset; };
-  if (std::optional<int64_t> constant = getConstantIntValue(value)) {
-    if (!small(*constant))
-      return std::nullopt;
-    return Bounds{*constant, *constant};
-  }
-  if (auto loop = scf::getForInductionVarOwner(value)) {
-    std::optional<int64_t> lower = getConstantIntValue(loop.getLowerBound());
-    std::optional<int64_t> upper = getConstantIntValue(loop.getUpperBound());
-    std::optional<int64_t> step = getConstantIntValue(loop.getStep());
-    if (!lower || !upper || !step || *step <= 0 || *upper <= *lower ||
-        !small(*lower) || !small(*upper))
-      return std::nullopt;
-    return Bounds{*lower, *lower + (*upper - 1 - *lower) / *step * *step};
-  }
-  Operation *def = value.getDefiningOp();
-  if (!isa_and_nonnull<arith::AddIOp, arith::SubIOp>(def))
-    return std::nullopt;
-  std::optional<Bounds> lhs = getConstantBounds(def->getOperand(0), depth + 1);
-  std::optional<Bounds> rhs = getConstantBounds(def->getOperand(1), depth + 1);
-  if (!lhs || !rhs)
-    return std::nullopt;
-  if (isa<arith::AddIOp>(def))
-    return Bounds{lhs->first + rhs->first, lhs->second + rhs->second};
-  return Bounds{lhs->first - rhs->second, lhs->second - rhs->first};
-}
-
-/// The offsets `c` for which `index` is `item + c`, when the bodies built it
-/// from the item by adding or subtracting bounded constants.
-static std::optional<Bounds> getOffsetFromItem(Value index, Value item,
-                                               unsigned depth = 0) {
-  if (index == item)
-    return Bounds{0, 0};
-  if (depth > 16)
-    return std::nullopt;
-  Operation *def = index.getDefiningOp();
-  if (auto add = dyn_cast_or_null<arith::AddIOp>(def)) {
-    for (auto [base, term] : {std::pair(add.getLhs(), add.getRhs()),
-                              std::pair(add.getRhs(), add.getLhs())}) {
-      std::optional<Bounds> offset = getOffsetFromItem(base, item, depth + 1);
-      if (!offset)
-        continue;
-      std::optional<Bounds> bounds = getConstantBounds(term, 0);
-      if (!bounds)
-        return std::nullopt;
-      return Bounds{offset->first + bounds->first,
-                    offset->second + bounds->second};
-    }
-    return std::nullopt;
-  }
-  if (auto sub = dyn_cast_or_null<arith::SubIOp>(def)) {
-    std::optional<Bounds> offset =
-        getOffsetFromItem(sub.getLhs(), item, depth + 1);
-    std::optional<Bounds> bounds = getConstantBounds(sub.getRhs(), 0);
-    if (!offset || !bounds)
-      return std::nullopt;
-    return Bounds{offset->first - bounds->second,
-                  offset->second - bounds->first};
-  }
-  return std::nullopt;
-}
 
 namespace {
 
@@ -472,17 +395,15 @@ private:
     Value offset =
         arith::SubIOp::create(builder, loc, load.getIndex(), view.first);
     // A read of the body's own item plus an offset inside the fill's window
-    // is always cached: the cache holds the group's items from its first
-    // plus the window's minimum to its last plus the window's maximum, and
-    // the item is one of the group's. It needs no check and no fallback,
-    // whose addresses and registers the kernel would otherwise carry.
-    if (values.item)
-      if (std::optional<Bounds> window =
-              getOffsetFromItem(load.getIndex(), values.item);
-          window && window->first >= fill.getMinOffsetAttr().getInt() &&
-          window->second <= fill.getMaxOffsetAttr().getInt())
-        return memref::LoadOp::create(builder, loc, view.memory, offset)
-            .getResult();
+    // (in_window, which the analysis proved and checkRecordedDecisions
+    // checked) is always cached: the cache holds the group's items from its
+    // first plus the window's minimum to its last plus the window's maximum,
+    // and the item is one of the group's. It needs no check and no
+    // fallback, whose addresses and registers the kernel would otherwise
+    // carry.
+    if (values.item && load.getInWindow())
+      return memref::LoadOp::create(builder, loc, view.memory, offset)
+          .getResult();
     Value inside = arith::CmpIOp::create(
         builder, loc, arith::CmpIPredicate::ult, offset, view.size);
     auto branch = scf::IfOp::create(builder, loc, load.getType(), inside,

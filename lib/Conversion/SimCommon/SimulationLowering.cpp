@@ -143,6 +143,21 @@ LogicalResult SimulationLowering::checkRecordedDecisions() {
           std::string where = pattern.isGather()
                                   ? std::string("through a gather")
                                   : "at " + pattern.str();
+          // An in_window cache load is lowered without a check: its index
+          // must be inside the fill's window, which the cache always holds.
+          if (load.getInWindow()) {
+            FillCacheOp fill = findFillCache(load, load.getBufferAttr());
+            int64_t min = fill.getMinOffsetAttr().getInt();
+            int64_t max = fill.getMaxOffsetAttr().getInt();
+            if (pattern.isGather() || pattern.getMinOffset() < min ||
+                pattern.getMaxOffset() > max) {
+              load.emitOpError()
+                  << "is marked in_window, but reads @" << buffer.getSymName()
+                  << " " << where << ", outside the window [" << min << ", "
+                  << max << "] of its fill" << kStaleRecords;
+              return WalkResult::interrupt();
+            }
+          }
           if (writer == component) {
             // in_kernel sub-steps let each thread own its item's state: a read
             // of another item could see it between sub-steps.

@@ -590,3 +590,90 @@ sim.simulation @rec range(64) dt(0.00999999977 : f32) max_steps(8) attributes {s
   sim.schedule [@Drive, @Smooth] bounded_by [@Drive]
   sim.observe [@B]
 }
+
+// -----
+
+// hip-cache: @Pull reads @U at a parameter's distance (a gather), but its
+// cache load is marked in_window: lowered without a check, it would read
+// shared memory outside the cache.
+sim.simulation @clamped range(16) dt(1.000000e-01 : f32) max_steps(4) attributes {step_cap = 4 : i32, strategy = #sim<strategy "hip-cache">} {
+  sim.param @lead = 3 : i64
+  sim.buffer @U : f32 init {
+  ^bb0(%i: index):
+    %0 = arith.index_cast %i : index to i32
+    %1 = arith.sitofp %0 : i32 to f32
+    sim.yield %1 : f32
+  }
+  sim.buffer @S : f32 init {
+  ^bb0(%i: index):
+    %cst = arith.constant 0.000000e+00 : f32
+    sim.yield %cst : f32
+  }
+  sim.component @Drive writes(@U) attributes {advance = #sim<advance group_substeps>, parity = #sim<parity none>, sub_stepping = #sim<sub_stepping in_kernel>} num_steps {
+  ^bb0(%i: index, %t: i64):
+    %c4_i32 = arith.constant 4 : i32
+    sim.yield %c4_i32 : i32
+  } evaluate {
+  ^bb0(%i: index, %t: i64, %n: i32, %dt: f32):
+    %0 = sim.load local @U[%i] : f32
+    %1 = arith.addf %0, %dt : f32
+    sim.yield %1 : f32
+  }
+  sim.component @Pull writes(@S) attributes {advance = #sim<advance group_substeps>, caches = [#sim.cache<@U, -1, 1>], parity = #sim<parity none>, sub_stepping = #sim<sub_stepping in_kernel>} num_steps {
+  ^bb0(%i: index, %t: i64):
+    %c1_i32 = arith.constant 1 : i32
+    sim.yield %c1_i32 : i32
+  } evaluate {
+  ^bb0(%i: index, %t: i64, %n: i32, %dt: f32):
+    %begin, %size = sim.big_step : i64, i64
+    %0 = arith.extsi %n : i32 to i64
+    %1 = arith.addi %t, %0 : i64
+    %2 = arith.subi %1, %begin : i64
+    %3 = arith.sitofp %2 : i64 to f32
+    %4 = arith.sitofp %size : i64 to f32
+    %5 = arith.divf %3, %4 : f32
+    %c0_i64 = arith.constant 0 : i64
+    %6 = arith.cmpi eq, %2, %c0_i64 : i64
+    %7 = arith.cmpi eq, %2, %size : i64
+    sim.fill_cache @U window(-1, 1) {
+    ^bb0(%arg0: index):
+      %20 = scf.if %7 -> (f32) {
+        %21 = sim.load target @U[%arg0] : f32
+        scf.yield %21 : f32
+      } else {
+        %21 = scf.if %6 -> (f32) {
+          %22 = sim.load source @U[%arg0] : f32
+          scf.yield %22 : f32
+        } else {
+          %22 = sim.load source @U[%arg0] : f32
+          %23 = sim.load target @U[%arg0] : f32
+          %cst = arith.constant 1.000000e+00 : f32
+          %24 = arith.subf %cst, %5 : f32
+          %25 = arith.mulf %24, %22 : f32
+          %26 = arith.mulf %5, %23 : f32
+          %27 = arith.addf %25, %26 : f32
+          scf.yield %27 : f32
+        }
+        scf.yield %21 : f32
+      }
+      sim.yield %20 : f32
+    }
+    %c1 = arith.constant 1 : index
+    %8 = sim.get_param @lead : i64
+    %9 = arith.index_cast %8 : i64 to index
+    %10 = arith.addi %i, %9 : index
+    %11 = arith.subi %i, %c1 : index
+    %12 = arith.addi %i, %c1 : index
+    %13 = arith.maxsi %10, %11 : index
+    %14 = arith.minsi %13, %12 : index
+    %15 = sim.load cache @U[%14] in_window : f32
+    %16 = sim.load cache @U[%11] in_window : f32
+    // expected-error @+1 {{is marked in_window, but reads @U through a gather, outside the window [-1, 1] of its fill; the records are stale or were edited by hand: run the front end (--sim-front-end) again}}
+    %17 = sim.load cache @U[%10]  in_window : f32
+    %18 = arith.addf %15, %16 : f32
+    %19 = arith.addf %18, %17 : f32
+    sim.yield %19 : f32
+  }
+  sim.schedule [@Drive, @Pull]
+  sim.observe [@S]
+}

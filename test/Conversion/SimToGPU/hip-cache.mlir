@@ -1,9 +1,12 @@
 // hip-cache on the GPU: the group fills a shared-memory cache of the window
 // once per sub-step (every lane takes slots, the block size apart), waits,
-// and reads the window from it. A read whose index the lowering cannot
-// place inside the window (here a gather) checks, with a fallback to the
-// interpolation from global memory outside it. The launch asks for the
-// dynamic shared memory: 4 bytes per thread plus the halo of 2 items.
+// and reads the window from it. Which reads are inside the window the
+// front end records (in_window on the cache load, from the dependency
+// analysis): the window loop's, and a read clamped around the item,
+// whatever it clamps. Any other read (here a gather) checks, with a
+// fallback to the interpolation from global memory outside the cache. The
+// launch asks for the dynamic shared memory: 4 bytes per thread plus the
+// halo of 2 items.
 //
 // RUN: sim-opt %s --sim-front-end=strategy=hip-cache --sim-lower-to-gpu | FileCheck %s
 // RUN: sim-opt %s --sim-front-end=strategy=hip-cache --sim-lower-to-cpu | FileCheck %s --check-prefix=CPU
@@ -55,8 +58,14 @@ sim.simulation @smooth range(10) dt(1.0e-1 : f32) max_steps(4) {
     %lead = sim.get_param @lead : i32
     %lead_index = arith.index_cast %lead : i32 to index
     %far = arith.addi %i, %lead_index : index
+    %below = arith.subi %i, %one : index
+    %above = arith.addi %i, %one : index
+    %low = arith.maxsi %far, %below : index
+    %partner = arith.minsi %low, %above : index
+    %u_partner = sim.read @U[%partner] : f32
     %u_far = sim.read @U[%far] : f32
-    %sum_far = arith.addf %sum, %u_far : f32
+    %sum_partner = arith.addf %sum, %u_partner : f32
+    %sum_far = arith.addf %sum_partner, %u_far : f32
     %avg = arith.addf %sum_far, %s : f32
     sim.yield %avg : f32
   }
@@ -93,6 +102,10 @@ sim.simulation @smooth range(10) dt(1.0e-1 : f32) max_steps(4) {
 // CHECK-NEXT:        memref.load %[[CACHE]][%[[OFFSET]]]
 // CHECK-NOT:         scf.if
 // CHECK:           }
+//                  So does a read clamped around the item (in_window).
+// CHECK:           %[[PARTNER:.*]] = arith.minsi %{{.*}}, %{{.*}} : index
+// CHECK-NEXT:      %[[PARTNER_OFFSET:.*]] = arith.subi %[[PARTNER]], %{{.*}} : index
+// CHECK-NEXT:      memref.load %[[CACHE]][%[[PARTNER_OFFSET]]]
 //                  The gather checks.
 // CHECK:           %[[FAR_OFFSET:.*]] = arith.subi
 // CHECK-NEXT:      %[[INSIDE:.*]] = arith.cmpi ult, %[[FAR_OFFSET]]

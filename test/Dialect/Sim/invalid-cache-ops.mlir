@@ -146,3 +146,20 @@ sim.simulation @unfilled range(8) dt(1.0e-2 : f32) max_steps(2) {
   }
   sim.observe [@V]
 }
+
+// -----
+
+sim.simulation @window_without_cache range(8) dt(1.0e-2 : f32) max_steps(2) {
+  sim.buffer @U : f32 init {
+  ^bb0(%i: index):
+    %c = arith.constant 1.0 : f32
+    sim.yield %c : f32
+  }
+  sim.component @C writes(@U) evaluate {
+  ^bb0(%i: index, %t: i64, %n: i32, %dt: f32):
+    // expected-error @+1 {{'sim.load' op is marked in_window, but loads the local copy; only a cache load has a fill window}}
+    %u = sim.load local @U[%i] in_window : f32
+    sim.yield %u : f32
+  }
+  sim.observe [@U]
+}

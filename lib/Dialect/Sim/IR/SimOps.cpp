@@ -1386,6 +1386,10 @@ LogicalResult ReadOp::verifySymbolUses(SymbolTableCollection &symbolTable) {
 }
 
 LogicalResult LoadOp::verify() {
+  if (getInWindow() && getVersion() != Version::cache)
+    return emitOpError() << "is marked in_window, but loads the "
+                         << stringifyVersion(getVersion())
+                         << " copy; only a cache load has a fill window";
   std::optional<BodyLocation> body = getEnclosingBody(*this);
   if (body && body->total) {
     if (getVersion() != Version::source)

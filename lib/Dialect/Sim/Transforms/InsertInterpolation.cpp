@@ -210,11 +210,18 @@ struct InsertInterpolationPass
     // item as the own item (a local load at another index reads another
     // item's time levels, which an `interp(none)` or `#sim.hermite` buffer
     // cannot give under lts). Taken before any read is replaced.
+    // Reads the analysis bounds to the item plus an offset: a cache load of
+    // one inside the fill's window is marked in_window (the cache always
+    // holds it).
     ownItemReads.clear();
+    readOffsets.clear();
     auto &analysis = getAnalysis<DependencyAnalysis>();
     simulation.walk([&](ReadOp read) {
-      if (analysis.getPattern(read).isOwn())
+      AccessPattern pattern = analysis.getPattern(read);
+      if (pattern.isOwn())
         ownItemReads.insert(read);
+      if (!pattern.isGather())
+        readOffsets[read] = {pattern.getMinOffset(), pattern.getMaxOffset()};
     });
 
     bool subSteps = isSubSteppingStrategy(strategy.getValue());
@@ -453,7 +460,13 @@ struct InsertInterpolationPass
         Value value = interpolateAt(builder, block->getArgument(0));
         YieldOp::create(builder, loc, value);
       }
-      return load(buffer, Version::cache);
+      Value cached = load(buffer, Version::cache);
+      auto offsets = readOffsets.find(read);
+      if (offsets != readOffsets.end() &&
+          offsets->second.first >= cache.getMinOffset() &&
+          offsets->second.second <= cache.getMaxOffset())
+        cached.getDefiningOp<LoadOp>().setInWindow(true);
+      return cached;
     }
     return interpolateAt(rewriter, index);
   }
@@ -470,6 +483,8 @@ struct InsertInterpolationPass
   llvm::DenseMap<StringAttr, FillCacheOp> fills;
   /// The reads at the body's own item (runOnOperation).
   llvm::DenseSet<Operation *> ownItemReads;
+  /// The offsets from the body's item of every read that is no gather.
+  llvm::DenseMap<Operation *, std::pair<int64_t, int64_t>> readOffsets;
 };
 
 } // namespace

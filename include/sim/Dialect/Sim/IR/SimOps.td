@@ -600,14 +600,24 @@ def Sim_LoadOp : Sim_Op<"load", [
     ```mlir
     %a = sim.load snapshot @B0[%j] : vector<4xf32>
     %b = sim.load target @B0[%j] : vector<4xf32>
+    %c = sim.load cache @B0[%k] in_window : vector<4xf32>
     ```
+
+    `in_window` (cache loads only) records that the dependency analysis
+    proved the index to be the body's item plus an offset inside the fill's
+    window (`%i - 1`, a loop over the window, an index clamped around the
+    item): the group's cache always holds it, so a lowering loads the cache
+    without a check or a fallback. Without it the lowering checks the index
+    against the cache at run time. `--sim-insert-interpolation` sets it, and
+    the lowerings reject a load whose index the analysis does not place in
+    the window.
   }];
   let arguments = (ins FlatSymbolRefAttr:$buffer, Index:$index,
-                       Sim_VersionAttr:$version);
+                       Sim_VersionAttr:$version, UnitAttr:$in_window);
   let results = (outs AnyType:$result);
   let assemblyFormat = [{
-    custom<LoadVersion>($version) $buffer `[` $index `]` attr-dict
-    `:` type($result)
+    custom<LoadVersion>($version) $buffer `[` $index `]`
+    (`in_window` $in_window^)? attr-dict `:` type($result)
   }];
   let hasVerifier = 1;
 }
