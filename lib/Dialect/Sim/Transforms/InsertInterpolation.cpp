@@ -204,24 +204,18 @@ struct InsertInterpolationPass
     if (failed(checkSchedule(simulation)))
       return signalPassFailure();
 
-    // Reads whose index the analysis proves to be the body's own item
-    // although it is another value (`%i + 0`, a round trip through i64):
-    // their loads take `%i` itself, so that every lowering sees the own
-    // item as the own item (a local load at another index reads another
-    // item's time levels, which an `interp(none)` or `#sim.hermite` buffer
-    // cannot give under lts). Taken before any read is replaced.
-    // Reads the analysis bounds to the item plus an offset: a cache load of
-    // one inside the fill's window is marked in_window (the cache always
-    // holds it).
-    ownItemReads.clear();
-    readOffsets.clear();
+    // What the analysis found about each read, taken before any read is
+    // replaced. A read whose index it proves to be the body's own item
+    // although it is another value (`%i + 0`, a round trip through i64)
+    // loads at `%i` itself, so that every lowering sees the own item as the
+    // own item (a local load at another index reads another item's time
+    // levels, which an `interp(none)` or `#sim.hermite` buffer cannot give
+    // under lts). A cache load of a read it bounds inside the fill's window
+    // is marked in_window (the cache always holds it).
+    readPatterns.clear();
     auto &analysis = getAnalysis<DependencyAnalysis>();
     simulation.walk([&](ReadOp read) {
-      AccessPattern pattern = analysis.getPattern(read);
-      if (pattern.isOwn())
-        ownItemReads.insert(read);
-      if (!pattern.isGather())
-        readOffsets[read] = {pattern.getMinOffset(), pattern.getMaxOffset()};
+      readPatterns.try_emplace(read, analysis.getPattern(read));
     });
 
     bool subSteps = isSubSteppingStrategy(strategy.getValue());
@@ -303,7 +297,10 @@ struct InsertInterpolationPass
     };
     Value item = kind == BodyKind::Evaluate ? component.getEvaluateItem()
                                             : component.getNumStepsItem();
-    Value index = ownItemReads.contains(read) ? item : read.getIndex();
+    auto found = readPatterns.find(read);
+    AccessPattern pattern =
+        found != readPatterns.end() ? found->second : AccessPattern::gather();
+    Value index = pattern.isOwn() ? item : read.getIndex();
     auto load = [&](BufferOp buffer, Version version) -> Value {
       return loadAt(rewriter, buffer, version, index);
     };
@@ -461,10 +458,9 @@ struct InsertInterpolationPass
         YieldOp::create(builder, loc, value);
       }
       Value cached = load(buffer, Version::cache);
-      auto offsets = readOffsets.find(read);
-      if (offsets != readOffsets.end() &&
-          offsets->second.first >= cache.getMinOffset() &&
-          offsets->second.second <= cache.getMaxOffset())
+      if (!pattern.isGather() &&
+          pattern.getMinOffset() >= cache.getMinOffset() &&
+          pattern.getMaxOffset() <= cache.getMaxOffset())
         cached.getDefiningOp<LoadOp>().setInWindow(true);
       return cached;
     }
@@ -481,10 +477,8 @@ struct InsertInterpolationPass
 
   /// The cache fills of the body being rewritten, by buffer.
   llvm::DenseMap<StringAttr, FillCacheOp> fills;
-  /// The reads at the body's own item (runOnOperation).
-  llvm::DenseSet<Operation *> ownItemReads;
-  /// The offsets from the body's item of every read that is no gather.
-  llvm::DenseMap<Operation *, std::pair<int64_t, int64_t>> readOffsets;
+  /// The analysis' pattern of every read (runOnOperation).
+  llvm::DenseMap<Operation *, AccessPattern> readPatterns;
 };
 
 } // namespace
