@@ -81,6 +81,11 @@ class _Metrics(ctypes.Structure):
 _DISTRIBUTED_METRICS = ("halo_exchanges", "exchanged_bytes", "allreduces")
 
 
+class _KernelProfile(ctypes.Structure):
+    _fields_ = [("name", ctypes.c_char_p), ("launches", ctypes.c_int64),
+                ("seconds", ctypes.c_double)]
+
+
 class _BufferInfo(ctypes.Structure):
     _fields_ = [("name", ctypes.c_char_p), ("element_type", ctypes.c_char_p),
                 ("scalar_type", ctypes.c_char_p),
@@ -189,6 +194,9 @@ def _declare(lib):
         "sim_session_component": (c.c_char_p, [p, c.c_int32]),
         "sim_session_evaluations": (c.c_int64, [p, c.c_int32]),
         "sim_session_histogram": (c.c_int64, [p, c.c_int64]),
+        "sim_session_num_kernels": (c.c_int32, [p]),
+        "sim_session_kernel_profile": (c.c_int, [p, c.c_int32,
+                                                 c.POINTER(_KernelProfile)]),
         "sim_session_num_totals": (c.c_int32, [p]),
         "sim_session_total_name": (c.c_char_p, [p, c.c_int32]),
         "sim_session_total": (c.c_int, [p, c.c_char_p,
@@ -448,6 +456,21 @@ class Session:
         return {lib.sim_session_component(self._handle, index).decode():
                 lib.sim_session_evaluations(self._handle, index)
                 for index in range(lib.sim_session_num_components(self._handle))}
+
+    def kernels(self):
+        """The plan's kernels in the last run, by name: launches, and their
+        kernel time in seconds where the backend times every launch (the
+        CPU), else None. Empty for the reference executor."""
+        lib = load_library()
+        result = {}
+        for index in range(lib.sim_session_num_kernels(self._handle)):
+            profile = _KernelProfile()
+            _check(lib.sim_session_kernel_profile(self._handle, index,
+                                                  ctypes.byref(profile)))
+            result[profile.name.decode()] = {
+                "launches": profile.launches,
+                "seconds": profile.seconds if profile.seconds >= 0 else None}
+        return result
 
     def totals(self):
         """The scene's totals at the current time, by name (declaration

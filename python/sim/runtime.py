@@ -676,6 +676,7 @@ class Session:
         m = self._rt.metrics()
         m["evaluations"] = self._rt.evaluations()
         m["histogram"] = self._rt.histogram(self._max_steps)
+        m["kernels"] = self._rt.kernels()
         if self._metrics is None:
             self._metrics = m
             return
@@ -687,6 +688,13 @@ class Session:
         for key in ("evaluations", "histogram"):
             for name, count in m[key].items():
                 total[key][name] = total[key].get(name, 0) + count
+        for name, kernel in m["kernels"].items():
+            kept = total["kernels"].setdefault(
+                name, {"launches": 0, "seconds": 0.0})
+            kept["launches"] += kernel["launches"]
+            kept["seconds"] = (None if kernel["seconds"] is None
+                               or kept["seconds"] is None
+                               else kept["seconds"] + kernel["seconds"])
 
     def _check_nonfinite(self, frame: dict | None = None):
         """Warns (sim.NonFiniteWarning) when the state or the totals hold
@@ -731,8 +739,10 @@ class Session:
         """What the last run measured (all chunks of an output run
         together): steps, begin, end, wall_seconds, kernel_seconds,
         launches, graph_launches, host_syncs, big_steps, evaluations (per
-        component), histogram (big steps per size), and the strategy,
-        backend, device and group size."""
+        component), histogram (big steps per size), kernels (per kernel of
+        the plan: launches, and seconds where the backend times every
+        launch, the CPU, else None; empty on the reference executor), and
+        the strategy, backend, device and group size."""
         base = dict(self._metrics or {})
         base.update(strategy=self.strategy, backend=self.backend,
                     device=self.device, group_size=self.group_size)

@@ -110,6 +110,12 @@ public:
   /// Kernel time between the two calls; stopTimer waits for the device.
   virtual void startTimer() = 0;
   virtual double stopTimer() = 0;
+  /// The kernel time between the two calls per kernel (indexed as the
+  /// plan's kernels), for a backend that times every launch by itself (the
+  /// CPU, whose launches are synchronous); empty where only the whole run
+  /// is timed (CUDA: its events bracket the run, and an event pair per
+  /// launch would change what it measures).
+  virtual std::vector<double> kernelSeconds() const { return {}; }
 
   /// Recording a sequence of launches once and replaying it (CUDA graphs).
   virtual bool supportsGraphs() const { return false; }

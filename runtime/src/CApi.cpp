@@ -624,6 +624,27 @@ sim_status sim_session_metrics(const sim_session *session, sim_metrics *out) {
   return SIM_OK;
 }
 
+int32_t sim_session_num_kernels(const sim_session *session) {
+  return session ? int32_t(session->session->kernelFigures.size()) : 0;
+}
+
+sim_status sim_session_kernel_profile(const sim_session *session, int32_t index,
+                                      sim_kernel_profile *out) {
+  SIM_REQUIRE(session);
+  SIM_REQUIRE(out);
+  const auto &kernels = session->session->kernelFigures;
+  if (index < 0 || size_t(index) >= kernels.size())
+    return failWith(SIM_ERROR_INVALID_ARGUMENT,
+                    "sim_session_kernel_profile: kernel " +
+                        std::to_string(index) +
+                        " does not exist: the session's plan has " +
+                        std::to_string(kernels.size()) + " kernels");
+  const auto &kernel = kernels[size_t(index)];
+  *out = {kernel.name.c_str(), kernel.launches, kernel.seconds};
+  lastError.clear();
+  return SIM_OK;
+}
+
 int32_t sim_session_num_components(const sim_session *session) {
   return session ? int32_t(session->session->numComponents()) : 0;
 }

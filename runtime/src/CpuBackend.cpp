@@ -64,15 +64,15 @@ public:
                         .count());
   }
 
-  /// `elapsed` ticks in seconds.
-  double seconds(uint64_t elapsed) const {
+  /// Seconds per tick, as measured now.
+  double secondsPerTick() const {
     if (!counter)
-      return double(elapsed) * 1e-9;
+      return 1e-9;
     uint64_t sinceFirst = ticks() - firstTicks;
     double time = std::chrono::duration<double>(
                       std::chrono::steady_clock::now() - firstTime)
                       .count();
-    return sinceFirst == 0 ? 0.0 : double(elapsed) * time / double(sinceFirst);
+    return sinceFirst == 0 ? 0.0 : time / double(sinceFirst);
   }
 
 private:
@@ -348,8 +348,22 @@ public:
     run(kernel, params, firstGroup, groups, groupSize);
   }
 
-  void startTimer() override { kernelTicks = 0; }
-  double stopTimer() override { return clock.seconds(kernelTicks); }
+  void startTimer() override {
+    kernelTicks = 0;
+    ticksPerKernel.assign(kernels.size(), 0);
+  }
+  double stopTimer() override {
+    // One rate for the run and its kernels, so that theirs add up to it.
+    timerSecondsPerTick = clock.secondsPerTick();
+    return double(kernelTicks) * timerSecondsPerTick;
+  }
+  std::vector<double> kernelSeconds() const override {
+    std::vector<double> seconds;
+    seconds.reserve(ticksPerKernel.size());
+    for (uint64_t ticks : ticksPerKernel)
+      seconds.push_back(double(ticks) * timerSecondsPerTick);
+    return seconds;
+  }
 
 private:
   /// Groups `first` to `first + groups` of a launch: on the calling
@@ -373,6 +387,8 @@ private:
     if (groups > 1 && pool.size() > 1)
       split.record(size_t(kernel), mode, ticks, groups);
     kernelTicks += ticks;
+    if (size_t(kernel) < ticksPerKernel.size())
+      ticksPerKernel[size_t(kernel)] += ticks;
   }
 
   ThreadPool pool;
@@ -385,6 +401,10 @@ private:
   std::vector<KernelFn> kernels;
   LaunchClock clock;
   uint64_t kernelTicks = 0;
+  /// kernelTicks by kernel (launches outside a timed run are not counted).
+  std::vector<uint64_t> ticksPerKernel;
+  /// The clock's rate when stopTimer converted kernelTicks.
+  double timerSecondsPerTick = 0;
 };
 
 } // namespace

@@ -183,6 +183,16 @@ public:
   std::vector<int64_t> evaluations; // per component
   std::vector<int64_t> histogram;   // index m in 0 .. max_steps
 
+  /// The last run's launches of each kernel of the plan, and their time
+  /// where the backend times every launch (the CPU), else -1. Empty for
+  /// the reference executor, which launches no kernels.
+  struct KernelFigures {
+    std::string name;
+    int64_t launches = 0;
+    double seconds = -1;
+  };
+  std::vector<KernelFigures> kernelFigures;
+
   /// Where the last run found a non-finite value.
   struct NonFinite {
     bool found = false;

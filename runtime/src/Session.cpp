@@ -162,6 +162,8 @@ Session::Session(std::shared_ptr<const Bundle> bundleIn,
 
   evaluations.assign(plan_->components.size(), 0);
   histogram.assign(size_t(scene().max_steps) + 1, 0);
+  for (const auto &kernel : plan_->kernels)
+    kernelFigures.push_back({kernel->name, 0, -1});
   if (distributed())
     ensureAgreed();
 }
@@ -482,6 +484,7 @@ void Session::launch(Prepared &p) {
   backend->launch(p.kernel, p.params.data(), p.groups, p.groupSize,
                   p.sharedBytes);
   ++metrics.launches;
+  ++kernelFigures[size_t(p.kernel)].launches;
 }
 
 void Session::runPhase(PhaseKind phase) {
@@ -553,6 +556,8 @@ void Session::runStepPhase() {
     }
     backend->replay();
     metrics.launches += int64_t(step.size());
+    for (uint32_t index : step)
+      ++kernelFigures[size_t(launches[index].kernel)].launches;
     ++metrics.graph_launches;
     return;
   }
@@ -761,6 +766,8 @@ void Session::run(int64_t steps, int64_t pause) {
     agreeOn("base step the run starts from",
             clock[kSlotBegin] + clock[kSlotSize]);
   metrics = {};
+  for (KernelFigures &kernel : kernelFigures)
+    kernel.launches = 0, kernel.seconds = -1;
   cutBigSteps = 0;
   nonFinite = {};
   std::vector<int64_t> before = clock;
@@ -859,6 +866,10 @@ void Session::run(int64_t steps, int64_t pause) {
   }
   runPhase(PhaseKind::Finish);
   metrics.kernel_seconds = backend->stopTimer();
+  std::vector<double> seconds = backend->kernelSeconds();
+  if (seconds.size() == kernelFigures.size())
+    for (size_t k = 0; k < seconds.size(); ++k)
+      kernelFigures[k].seconds = seconds[k];
   readClock(clock.size());
   ++metrics.host_syncs;
   metrics.wall_seconds = std::chrono::duration<double>(
@@ -1480,8 +1491,10 @@ void Session::launchDistributed(Prepared &p, bool counted, bool step) {
   else
     backend->launch(p.kernel, p.params.data(), p.groups, p.groupSize,
                     p.sharedBytes);
-  if (counted)
+  if (counted) {
     ++metrics.launches;
+    ++kernelFigures[size_t(p.kernel)].launches;
+  }
   if (!p.launch->reduce_max_levels.empty())
     reduceFinest(p.launch->reduce_max_levels);
   if (p.exchanges.empty())

@@ -206,3 +206,78 @@ TEST(CApi, ReadsButDoesNotChangeARunningSession) {
   std::remove(path.c_str());
   rmdir(dir.c_str());
 }
+
+TEST(CApi, ProfilesTheKernelsOfTheLastRun) {
+  // Per kernel of the plan: its launches in the last run and, on the CPU
+  // (which times every launch), their kernel time. The launches add up to
+  // the run's, the times to its kernel time; the reference executor has no
+  // kernels.
+  std::string dir = makeTempDir();
+  std::string path = dir + "/decay.simb";
+  writeFile(path, decayBundle());
+  sim_bundle *bundle = nullptr;
+  ASSERT_EQ(sim_bundle_open(path.c_str(), &bundle), SIM_OK) << sim_last_error();
+  for (sim_strategy strategy : {SIM_STRATEGY_SIMPLE, SIM_STRATEGY_HIP}) {
+    sim_session_options options;
+    sim_session_options_init(&options);
+    options.strategy = strategy;
+    options.backend = SIM_BACKEND_CPU;
+    sim_session *session = nullptr;
+    ASSERT_EQ(sim_session_create(bundle, &options, &session), SIM_OK)
+        << sim_last_error();
+    int32_t kernels = sim_session_num_kernels(session);
+    ASSERT_GT(kernels, 0);
+    for (int64_t steps : {int64_t(25), int64_t(7), int64_t(0)}) {
+      ASSERT_EQ(sim_session_run(session, steps), SIM_OK) << sim_last_error();
+      sim_metrics metrics;
+      ASSERT_EQ(sim_session_metrics(session, &metrics), SIM_OK);
+      int64_t launches = 0;
+      double seconds = 0;
+      for (int32_t k = 0; k < kernels; ++k) {
+        sim_kernel_profile profile;
+        ASSERT_EQ(sim_session_kernel_profile(session, k, &profile), SIM_OK)
+            << sim_last_error();
+        ASSERT_NE(profile.name, nullptr);
+        EXPECT_GT(std::string(profile.name).size(), 0u);
+        EXPECT_GE(profile.launches, 0);
+        EXPECT_GE(profile.seconds, 0) << profile.name;
+        launches += profile.launches;
+        seconds += profile.seconds;
+      }
+      EXPECT_EQ(launches, metrics.launches) << steps;
+      EXPECT_NEAR(seconds, metrics.kernel_seconds,
+                  1e-9 + 1e-9 * metrics.kernel_seconds)
+          << steps;
+      if (steps > 0)
+        EXPECT_GT(launches, 0);
+    }
+    sim_kernel_profile profile;
+    EXPECT_EQ(sim_session_kernel_profile(session, kernels, &profile),
+              SIM_ERROR_INVALID_ARGUMENT);
+    EXPECT_NE(std::string(sim_last_error()).find("the session's plan has"),
+              std::string::npos)
+        << sim_last_error();
+    EXPECT_EQ(sim_session_kernel_profile(session, -1, &profile),
+              SIM_ERROR_INVALID_ARGUMENT);
+    EXPECT_EQ(sim_session_kernel_profile(session, 0, nullptr),
+              SIM_ERROR_INVALID_ARGUMENT);
+    sim_session_destroy(session);
+  }
+  sim_session_options options;
+  sim_session_options_init(&options);
+  options.strategy = SIM_STRATEGY_SIMPLE;
+  options.backend = SIM_BACKEND_REFERENCE;
+  sim_session *reference = nullptr;
+  ASSERT_EQ(sim_session_create(bundle, &options, &reference), SIM_OK)
+      << sim_last_error();
+  ASSERT_EQ(sim_session_run(reference, 5), SIM_OK) << sim_last_error();
+  EXPECT_EQ(sim_session_num_kernels(reference), 0);
+  sim_kernel_profile profile;
+  EXPECT_EQ(sim_session_kernel_profile(reference, 0, &profile),
+            SIM_ERROR_INVALID_ARGUMENT);
+  EXPECT_EQ(sim_session_num_kernels(nullptr), 0);
+  sim_session_destroy(reference);
+  sim_bundle_close(bundle);
+  std::remove(path.c_str());
+  rmdir(dir.c_str());
+}

@@ -167,7 +167,8 @@ TEST(SimRunOptions, TakesEveryOption) {
                            "--cuda-graph",
                            "--max-memory",
                            "2G",
-                           "--progress"});
+                           "--progress",
+                           "--profile"});
   EXPECT_EQ(options.input, "scene.simb");
   EXPECT_EQ(options.backend, SIM_BACKEND_CUDA);
   EXPECT_EQ(options.strategy, SIM_STRATEGY_SIMPLE);
@@ -194,6 +195,8 @@ TEST(SimRunOptions, TakesEveryOption) {
   EXPECT_EQ(options.maxMemory, int64_t(2) << 30);
   EXPECT_TRUE(options.progress);
   EXPECT_FALSE(parse({"a.simb"}).progress);
+  EXPECT_TRUE(options.profile);
+  EXPECT_FALSE(parse({"a.simb"}).profile);
   // The last of a repeated option counts.
   EXPECT_EQ(parse({"a.simb", "--steps", "1", "--steps", "2"}).steps, 2);
   // --report-every is the old name of --output-every.
@@ -249,6 +252,10 @@ TEST(SimRunOptions, RejectsValuesOutsideTheirDomain) {
        "--set: max_steps '0' is not an integer from 1 to 1048576"},
       {{"a", "--set", "max_steps=4x"}, "--set: max_steps '4x' is not"},
       {{"a", "--progress=1"}, "--progress takes no value"},
+      {{"a", "--profile=yes"}, "--profile takes no value"},
+      {{"a", "--backend", "reference", "--profile"},
+       "--profile lists the kernels of a plan; the reference executor runs "
+       "none"},
       {{"a", "--json", ""}, "--json: expects a path"},
       {{"a", "--steps"}, "--steps expects a value"},
       {{"a", "--cuda-graph=yes"}, "--cuda-graph takes no value"},
@@ -289,6 +296,7 @@ TEST(SimRunOptions, PrintsTheHelpOfEveryOption) {
                              "--max-memory SIZE ",
                              "--no-init-check ",
                              "--progress ",
+                             "--profile ",
                              "-h, --help "})
     EXPECT_TRUE(contains(help, "\n  " + std::string(option))) << option;
   EXPECT_TRUE(contains(help, "130 or 143")) << help;
@@ -937,4 +945,56 @@ TEST(SimRunSeries, RefusesOutputTimesThatDoNotFitInMemory) {
   EXPECT_FALSE(seriesMemoryError("--output and --json", 1000000000001,
                                  int64_t(1) << 40, 1e12)
                    .empty());
+}
+
+TEST(SimRunReport, ProfilesKernelsWhereTheBackendTimesThem) {
+  // The CPU times every launch: the table sorts by time. A backend that
+  // times only the whole run (CUDA, seconds -1) gets launches, dashes and
+  // where to get the times; --json has null there.
+  Results results;
+  results.profile = true;
+  results.main.backend = "cuda";
+  results.main.counts.kernels = {
+      {"advance", 9, -1}, {"substep_C1", 8, -1}, {"init_X", 0, -1}};
+  testing::internal::CaptureStdout();
+  printTable(results);
+  std::string table = testing::internal::GetCapturedStdout();
+  EXPECT_TRUE(contains(table, "  advance             9            -       -  "
+                              "          -\n"))
+      << table;
+  EXPECT_TRUE(contains(table, "the cuda backend times the run, not each "
+                              "launch: time its kernels with Nsight Systems"))
+      << table;
+  EXPECT_TRUE(contains(table, "not launched in the run: init_X")) << table;
+  nlohmann::json json = nlohmann::json::parse(toJson(results));
+  EXPECT_EQ(json["kernels"][1], nlohmann::json({{"name", "substep_C1"},
+                                                {"launches", 8},
+                                                {"seconds", nullptr}}));
+
+  results.main.backend = "cpu";
+  results.main.counts.kernels = {
+      {"advance", 9, 2e-6}, {"substep_C1", 8, 6e-3}, {"init_X", 0, 0}};
+  testing::internal::CaptureStdout();
+  printTable(results);
+  table = testing::internal::GetCapturedStdout();
+  size_t substep = table.find("  substep_C1 "),
+         advance = table.find("  advance ");
+  ASSERT_NE(substep, std::string::npos) << table;
+  ASSERT_NE(advance, std::string::npos) << table;
+  EXPECT_LT(substep, advance) << table;
+  EXPECT_TRUE(contains(
+      table, "substep_C1          8     6.000 ms  100.0%     750.0 us"))
+      << table;
+  EXPECT_TRUE(contains(
+      table, "advance             9       2.0 us    0.0%       222 ns"))
+      << table;
+  EXPECT_FALSE(contains(table, "Nsight")) << table;
+  json = nlohmann::json::parse(toJson(results));
+  EXPECT_EQ(json["kernels"][1]["seconds"], 6e-3);
+
+  // Without --profile: no table, the JSON as before.
+  results.profile = false;
+  testing::internal::CaptureStdout();
+  printTable(results);
+  EXPECT_FALSE(contains(testing::internal::GetCapturedStdout(), "kernels of"));
 }

@@ -1211,6 +1211,7 @@ void runAll(Results &results, Sessions &sessions, const sim_bundle *bundle,
   results.referenceKind = options.reference;
   results.referenceValues.assign(observed.size(), std::nullopt);
   results.outputEvery = options.outputEvery;
+  results.profile = options.profile;
   results.outputFile = options.output;
   runMain(results, sessions, bundle, options, observed, progress);
   results.nonFinite =

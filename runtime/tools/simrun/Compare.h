@@ -50,6 +50,14 @@ ErrorNorms compare(const Buffer &value, const Buffer &reference);
 /// What one session counted in its last run.
 struct RunCounts {
   std::vector<std::pair<std::string, int64_t>> evaluations;
+  /// The plan's kernels (none on the reference executor): launches, and
+  /// their kernel time where the backend times each launch (else -1).
+  struct Kernel {
+    std::string name;
+    int64_t launches = 0;
+    double seconds = 0;
+  };
+  std::vector<Kernel> kernels;
   int64_t bigSteps = 0;
   /// Index m in 0 .. max_steps: big steps of m base steps.
   std::vector<int64_t> histogram;

@@ -360,6 +360,13 @@ void declareOptions(CLI::App &app, Options &options, std::string &backend,
                "its writer computes with n = 0 at t = 0 (for scenes\n"
                "whose inits are inconsistent on purpose)")
       ->disable_flag_override();
+  app.add_flag("--profile", options.profile,
+               "also print the plan's kernels in the last measured\n"
+               "run: launches, kernel time, share and time per\n"
+               "launch (timed launch by launch on the CPU; CUDA\n"
+               "counts launches only: time its kernels with\n"
+               "Nsight Systems); --json always has them")
+      ->disable_flag_override();
   app.add_flag("--progress", options.progress,
                "show the progress line also when stderr is not a\n"
                "terminal (one line per 10 s; on a terminal it is\n"
@@ -460,6 +467,9 @@ Options parseOptions(int argc, const char *const *argv) {
     usageError(std::string(options.cudaGraph ? "--cuda-graph" : "--device") +
                " applies to the CUDA backend; --backend " + backend +
                " runs on this machine's CPU");
+  if (options.profile && options.backend == SIM_BACKEND_REFERENCE)
+    usageError("--profile lists the kernels of a plan; the reference "
+               "executor runs none (--backend cpu or cuda)");
   if (options.distributed) {
     if (options.backend == SIM_BACKEND_REFERENCE)
       usageError("--distributed runs the plan executor, not the reference "

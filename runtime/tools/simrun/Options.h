@@ -103,6 +103,8 @@ struct Options {
   bool progress = false;
   /// --no-init-check: skip the check of inits against their writers.
   bool noInitCheck = false;
+  /// --profile: the table of the plan's kernels after the report.
+  bool profile = false;
   /// 0: one per hardware thread.
   int32_t threads = 0;
   int32_t device = 0;

@@ -169,6 +169,68 @@ void printMetrics(const MainRun &main) {
   row("evaluations", evaluations.empty() ? "-" : evaluations);
 }
 
+/// --profile: the kernels of the last run, the most time first (on CUDA,
+/// which does not time launches one by one, the most launches first).
+void printProfile(const MainRun &main) {
+  const std::vector<RunCounts::Kernel> &kernels = main.counts.kernels;
+  std::vector<const RunCounts::Kernel *> launched;
+  std::vector<std::string> idle;
+  bool timed = true;
+  double total = 0;
+  for (const RunCounts::Kernel &kernel : kernels) {
+    if (kernel.launches == 0) {
+      idle.push_back(kernel.name);
+      continue;
+    }
+    launched.push_back(&kernel);
+    timed = timed && kernel.seconds >= 0;
+    total += std::max(kernel.seconds, 0.0);
+  }
+  std::stable_sort(launched.begin(), launched.end(),
+                   [&](const RunCounts::Kernel *a, const RunCounts::Kernel *b) {
+                     return timed ? a->seconds > b->seconds
+                                  : a->launches > b->launches;
+                   });
+  size_t width = 6;
+  for (const RunCounts::Kernel *kernel : launched)
+    width = std::max(width, kernel->name.size());
+  std::printf("\nkernels of the %s:\n", main.repeat > 1 ? "last run" : "run");
+  std::printf("  %-*s %10s %12s %7s %12s\n", int(width), "kernel", "launches",
+              "time", "share", "per launch");
+  for (const RunCounts::Kernel *kernel : launched) {
+    std::string time = "-", share = "-", each = "-";
+    if (timed) {
+      time = formatTime(kernel->seconds);
+      char text[32];
+      std::snprintf(text, sizeof text, "%.1f%%",
+                    total > 0 ? 100 * kernel->seconds / total : 0.0);
+      share = text;
+      double perLaunch = kernel->seconds / double(kernel->launches);
+      if (perLaunch < 1e-6) {
+        std::snprintf(text, sizeof text, "%.0f ns", perLaunch * 1e9);
+        each = text;
+      } else {
+        each = formatTime(perLaunch);
+      }
+    }
+    std::printf("  %-*s %10lld %12s %7s %12s\n", int(width),
+                kernel->name.c_str(), (long long)kernel->launches, time.c_str(),
+                share.c_str(), each.c_str());
+  }
+  if (launched.empty())
+    std::printf("  (no kernel launched: the run took no base step)\n");
+  if (!timed && !launched.empty())
+    std::printf("  (the %s backend times the run, not each launch: time its "
+                "kernels with Nsight Systems, nsys profile --stats=true)\n",
+                main.backend.c_str());
+  if (!idle.empty()) {
+    std::string names;
+    for (const std::string &name : idle)
+      names += (names.empty() ? "" : ", ") + name;
+    std::printf("  not launched in the run: %s\n", names.c_str());
+  }
+}
+
 /// The cost of the output times, the checkpoints.
 void printTimeline(const Results &results) {
   const MainRun &main = results.main;
@@ -340,6 +402,8 @@ void printTable(const Results &results) {
   printHeader(results.main);
   printMetrics(results.main);
   printTimeline(results);
+  if (results.profile)
+    printProfile(results.main);
   printReferenceErrors(results);
   printTotals(results);
   printCheck(results);
@@ -369,6 +433,18 @@ Json evaluations(const RunCounts &counts) {
   for (const auto &[component, count] : counts.evaluations)
     components[component] = count;
   return components;
+}
+
+/// Launches and kernel time (null where the backend does not time each
+/// launch) of every kernel of the plan, in the plan's order.
+Json kernelProfile(const RunCounts &counts) {
+  Json kernels = Json::array();
+  for (const RunCounts::Kernel &kernel : counts.kernels)
+    kernels.push_back({{"name", kernel.name},
+                       {"launches", kernel.launches},
+                       {"seconds", kernel.seconds >= 0 ? number(kernel.seconds)
+                                                       : Json(nullptr)}});
+  return kernels;
 }
 
 Json totals(const std::vector<std::string> &names,
@@ -576,6 +652,7 @@ std::string toJson(const Results &results) {
   }
   json["big_step_histogram"] = histogram(main.counts.histogram);
   json["evaluations"] = evaluations(main.counts);
+  json["kernels"] = kernelProfile(main.counts);
   json["totals"] = totals(main.totalNames, main.totals);
   json["cut_big_steps"] = main.cuts;
   if (results.outputEvery > 0) {

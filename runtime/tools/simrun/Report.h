@@ -154,6 +154,9 @@ struct Results {
   std::string outputFile;
   Series series;
 
+  /// --profile.
+  bool profile = false;
+
   /// --dump: the folder and its files.
   std::string dumpDir;
   std::vector<DumpFiles> dumpFiles;

@@ -57,6 +57,25 @@ void RunTotals::add(sim_session *session, int64_t maxSteps, bool atOutput) {
       counts.evaluations.emplace_back(sim_session_component(session, c), 0);
   for (int32_t c = 0; c < components; ++c)
     counts.evaluations[size_t(c)].second += sim_session_evaluations(session, c);
+  int32_t kernels = sim_session_num_kernels(session);
+  if (counts.kernels.empty())
+    for (int32_t k = 0; k < kernels; ++k) {
+      sim_kernel_profile profile;
+      if (sim_session_kernel_profile(session, k, &profile) != SIM_OK)
+        runError(sim_last_error());
+      counts.kernels.push_back({profile.name, 0, 0});
+    }
+  for (int32_t k = 0; k < kernels && size_t(k) < counts.kernels.size(); ++k) {
+    sim_kernel_profile profile;
+    if (sim_session_kernel_profile(session, k, &profile) != SIM_OK)
+      runError(sim_last_error());
+    RunCounts::Kernel &kernel = counts.kernels[size_t(k)];
+    kernel.launches += profile.launches;
+    // Untimed in one session run: untimed in all of them.
+    kernel.seconds = profile.seconds < 0 || kernel.seconds < 0
+                         ? -1
+                         : kernel.seconds + profile.seconds;
+  }
   counts.histogram.resize(size_t(maxSteps) + 1, 0);
   for (int64_t m = 1; m <= maxSteps; ++m)
     counts.histogram[size_t(m)] += sim_session_histogram(session, m);

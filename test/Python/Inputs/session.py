@@ -59,6 +59,7 @@ print("range from np.int64(6):", session.range)
 
 # The bundle closed first: the sessions made before run on.
 blowing = bundle.session("simple", "cpu")
+reference = bundle.session("hip", "reference")
 bundle.close()
 session.run(3)
 print("after close: T", session.time, "histogram",
@@ -66,6 +67,21 @@ print("after close: T", session.time, "histogram",
 out = session.run(2, output_every=1)
 print("output:", out.meta["scene"], out.t.tolist(), "dt", session.dt)
 print(repr(session))
+
+# The kernels of the plan: their launches add up to the run's (over the
+# chunks of an output run too), and the CPU times each launch.
+m = session.metrics()
+kernels = m["kernels"]
+print("kernels: launches add up:",
+      sum(k["launches"] for k in kernels.values()) == m["launches"],
+      "timed:", all(k["seconds"] is not None and k["seconds"] >= 0
+                    for k in kernels.values()),
+      "seconds add up:",
+      abs(sum(k["seconds"] for k in kernels.values()) - m["kernel_seconds"])
+      <= 1e-9 * max(1.0, m["kernel_seconds"]),
+      "launched:", sorted(k for k in kernels if kernels[k]["launches"]))
+reference.run(2)
+print("reference kernels:", reference.metrics()["kernels"])
 
 # NaN and infinity at the end of a run warn, at the line of run().
 with warnings.catch_warnings(record=True) as caught:

@@ -474,6 +474,29 @@ SIM_API void sim_session_resume(sim_session *session);
 SIM_API sim_status sim_session_metrics(const sim_session *session,
                                        sim_metrics *out);
 
+/// One kernel of the plan during the last run (sim-run --profile).
+typedef struct sim_kernel_profile {
+  /// The plan's name of the kernel ("substep_C1", "local_step_Heat").
+  const char *name;
+  /// Launches of it in the run (a graph replay counts each of its kernels).
+  int64_t launches;
+  /// Their kernel time where the backend times every launch (the CPU
+  /// backend; the sum over kernels is the metrics' kernel_seconds), or -1
+  /// where it times only the whole run (CUDA: use Nsight Systems or
+  /// Nsight Compute for the kernels' times there).
+  double seconds;
+} sim_kernel_profile;
+
+/// The kernels of the session's plan: 0 for SIM_BACKEND_REFERENCE, which
+/// runs no kernels.
+SIM_API int32_t sim_session_num_kernels(const sim_session *session);
+/// Kernel `index`'s launches and time in the last run; the name stays valid
+/// while the session lives. SIM_ERROR_INVALID_ARGUMENT for an index out of
+/// range.
+SIM_API sim_status sim_session_kernel_profile(const sim_session *session,
+                                              int32_t index,
+                                              sim_kernel_profile *out);
+
 /// The components of the plan (of the reference model for
 /// SIM_BACKEND_REFERENCE: the same names), for the counters below.
 SIM_API int32_t sim_session_num_components(const sim_session *session);
