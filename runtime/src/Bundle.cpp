@@ -11,6 +11,7 @@
 
 #include "Bundle.h"
 #include "Error.h"
+#include "VectorAlignment.h"
 
 #include "sim/Runtime/BundleFormat.h"
 #include "sim/Runtime/CpuLevels.h"
@@ -490,7 +491,25 @@ std::shared_ptr<const Bundle> Bundle::parse(const uint8_t *data, size_t size,
   if (!schema::VerifyBundleBuffer(verifier))
     error("the contents do not verify as a bundle FlatBuffer (an offset, "
           "length or nesting outside the buffer)");
-  schema::GetBundle(aligned.data())->UnPackTo(&result->contents);
+  const schema::Bundle *root = schema::GetBundle(aligned.data());
+  if (const schema::Reference *reference = root->reference();
+      reference && reference->components()) {
+    auto components = reference->components();
+    for (flatbuffers::uoffset_t c = 0; c < components->size(); ++c) {
+      const schema::RefComponent *component = components->Get(c);
+      for (auto [field, vector] :
+           {std::pair{"local_window", component->local_window()},
+            std::pair{"flux_window", component->flux_window()}})
+        if (!elementsAligned(vector))
+          error("the contents do not verify as a bundle FlatBuffer: the "
+                "int64 vector " +
+                std::string(field) + " of reference component " +
+                std::to_string(c) +
+                " is not aligned to 8 bytes (damaged? FlatBuffers aligns "
+                "what it writes)");
+    }
+  }
+  root->UnPackTo(&result->contents);
   try {
     verifyBundle(result->contents);
   } catch (const Error &e) {

@@ -28,6 +28,7 @@
 #include "Distribution.h"
 #include "Error.h"
 #include "Executor.h"
+#include "VectorAlignment.h"
 
 #include <algorithm>
 #include <cerrno>
@@ -443,10 +444,15 @@ CheckpointFile parseCheckpoint(std::vector<uint8_t> bytes,
   if (!ckpt::VerifySizePrefixedCheckpointBuffer(verifier))
     error("the manifest does not verify as a checkpoint FlatBuffer (an "
           "offset, length or nesting outside it)");
+  const ckpt::Checkpoint *manifest =
+      ckpt::GetSizePrefixedCheckpoint(aligned.data());
+  if (!elementsAligned(manifest->clock()))
+    error("the manifest does not verify as a checkpoint FlatBuffer: its "
+          "int64 vector clock is not aligned to 8 bytes (damaged?)");
   CheckpointFile result;
   result.checksum = header.checksum;
   result.name = name;
-  ckpt::GetSizePrefixedCheckpoint(aligned.data())->UnPackTo(&result.manifest);
+  manifest->UnPackTo(&result.manifest);
   result.dataStart = alignUp(schema::kHeaderSize + manifestBytes);
   if (result.dataStart > size)
     error("the file ends before its data");

@@ -13,6 +13,7 @@
 #include "TestBundle.h"
 #include "TestUtil.h"
 
+#include "sim/Runtime/checkpoint_generated.h"
 #include "sim/Runtime/sim_runtime.h"
 
 #include <gtest/gtest.h>
@@ -24,6 +25,8 @@
 #include <fcntl.h>
 #include <sys/stat.h>
 #include <unistd.h>
+#include <vector>
+#include <zlib.h>
 
 using namespace sim::test;
 
@@ -389,6 +392,51 @@ TEST_F(Checkpoints, RefuseDamagedFiles) {
   // The good one still restarts.
   ASSERT_EQ(sim_session_restart(target, file.c_str()), SIM_OK);
   EXPECT_EQ(sim_session_time(target), 12);
+}
+
+TEST_F(Checkpoints, RefuseAClockOffItsAlignment) {
+  // FlatBuffers 2.0's verifier checks a vector's length prefix, not that
+  // its 8-byte elements are aligned (VectorAlignment.h): the manifest's
+  // clock moved 4 bytes on, its length prefix written over its first
+  // value, with a valid CRC, is refused before anything reads it.
+  std::string file = dir + "/good.simc", bad = dir + "/bad.simc";
+  sim_session *writer = session(SIM_STRATEGY_HIP, SIM_BACKEND_CPU);
+  ASSERT_EQ(sim_session_run(writer, 12), SIM_OK);
+  ASSERT_EQ(sim_session_checkpoint(writer, file.c_str()), SIM_OK);
+  std::string bytes = readFile(file);
+  constexpr size_t kHeader = 32;
+  uint32_t manifestSize;
+  std::memcpy(&manifestSize, &bytes[kHeader], sizeof manifestSize);
+  std::vector<uint8_t> manifest(bytes.begin() + kHeader,
+                                bytes.begin() + kHeader + 4 + manifestSize);
+  const auto *root =
+      sim::checkpoint::GetSizePrefixedCheckpoint(manifest.data());
+  ASSERT_NE(root->clock(), nullptr);
+  ASSERT_GE(root->clock()->size(), 2u);
+  const uint8_t *field =
+      reinterpret_cast<const flatbuffers::Table *>(root)->GetAddressOf(
+          sim::checkpoint::Checkpoint::VT_CLOCK);
+  size_t fieldAt = kHeader + size_t(field - manifest.data());
+  size_t elementsAt = kHeader + size_t(root->clock()->Data() - manifest.data());
+  uint32_t offset;
+  std::memcpy(&offset, &bytes[fieldAt], sizeof offset);
+  offset += 4;
+  std::memcpy(&bytes[fieldAt], &offset, sizeof offset);
+  uint32_t length = 1;
+  std::memcpy(&bytes[elementsAt], &length, sizeof length);
+  uint32_t crc =
+      uint32_t(crc32(crc32(0L, Z_NULL, 0),
+                     reinterpret_cast<const Bytef *>(bytes.data() + kHeader),
+                     uInt(bytes.size() - kHeader)));
+  std::memcpy(&bytes[12], &crc, sizeof crc);
+  writeFile(bad, bytes);
+  sim_session *target = session(SIM_STRATEGY_HIP, SIM_BACKEND_CPU);
+  EXPECT_EQ(sim_session_restart(target, bad.c_str()), SIM_ERROR_CHECKPOINT);
+  EXPECT_TRUE(contains(sim_last_error(),
+                       "its int64 vector clock is not aligned to 8 bytes"))
+      << sim_last_error();
+  ASSERT_EQ(sim_session_restart(target, file.c_str()), SIM_OK)
+      << sim_last_error();
 }
 
 TEST_F(Checkpoints, NeedABigStepBoundary) {
