@@ -132,24 +132,23 @@ public:
   int size() const { return int(workers.size()) + 1; }
 
   /// Calls `fn(params, first, end, groupSize)` on disjoint ranges covering
-  /// groups `offset .. offset + groups` and returns when all are done: one
-  /// to kPartsPerThread ranges per thread, dealt to the threads that take
-  /// part (the caller is thread 0) in turn. Groups are independent and the
+  /// groups `offset .. offset + groups` and returns when all are done: the
+  /// ranges of LaunchSplit::partsFor (finer where the kernel's work is
+  /// `uneven`), dealt to the threads that take part (the caller is thread
+  /// 0) in turn. Groups are independent and the
   /// clock's counters are integer atomics, so which thread runs which range
   /// changes no result.
   /// With `flushSubnormals`, every part runs with subnormals flushed to
   /// zero (SubnormalScope).
   void run(KernelFn fn, void **params, int64_t groups, int64_t groupSize,
-           bool flushSubnormals, int64_t offset = 0) {
+           bool flushSubnormals, int64_t offset = 0, bool uneven = false) {
     int64_t threads = std::min<int64_t>(size(), groups);
     if (threads <= 1) {
       SubnormalScope mode(flushSubnormals);
       fn(params, offset, offset + groups, groupSize);
       return;
     }
-    int64_t perThread = std::clamp<int64_t>(
-        groups / (threads * kMinGroupsPerPart), 1, kPartsPerThread);
-    int64_t parts = threads * perThread;
+    int64_t parts = LaunchSplit::partsFor(groups, threads, uneven);
     {
       std::lock_guard<std::mutex> lock(mutex);
       job = {fn,    params,          groups, groupSize,
@@ -249,11 +248,6 @@ private:
   Job job{};
   /// About 20 microseconds of spinning (a pause is some tens of cycles).
   static constexpr int kSpins = 1 << 11;
-  /// Ranges per thread: enough that uneven work spreads over the threads,
-  /// few enough that a launch stays a few calls; and groups per range at
-  /// least (a call has fixed costs: its lane variables, its atomics on the
-  /// clock), so that a small launch stays one range per thread.
-  static constexpr int64_t kPartsPerThread = 4, kMinGroupsPerPart = 16;
   std::atomic<int> pending{0};
   std::atomic<uint64_t> generation{0};
   std::atomic<bool> stopping{false};
@@ -304,6 +298,7 @@ public:
                                     " (kernel '" + kernel->name +
                                     "' of the plan)");
       kernels.push_back(reinterpret_cast<KernelFn>(address));
+      unevenGroups.push_back(kernel->uneven_groups);
     }
   }
 
@@ -381,7 +376,7 @@ private:
       kernels[kernel](params, first, first + groups, groupSize);
     } else {
       pool.run(kernels[kernel], params, groups, groupSize, flushSubnormals,
-               first);
+               first, unevenGroups[size_t(kernel)]);
     }
     uint64_t ticks = clock.ticks() - start;
     if (groups > 1 && pool.size() > 1)
@@ -399,6 +394,8 @@ private:
   /// The bundle's floating-point mode (sim-translate --sim-ftz).
   bool flushSubnormals = false;
   std::vector<KernelFn> kernels;
+  /// Per kernel: the bundle's Kernel.uneven_groups (LaunchSplit::partsFor).
+  std::vector<bool> unevenGroups;
   LaunchClock clock;
   uint64_t kernelTicks = 0;
   /// kernelTicks by kernel (launches outside a timed run are not counted).

@@ -94,6 +94,25 @@ public:
   /// The way kernel `kernel` runs now, for tests and reports.
   Mode chosen(size_t kernel) { return at(kernel).chosen; }
 
+  /// The parts a shared launch of `groups` groups is cut into, dealt to
+  /// `threads` threads in turn (part p to thread p mod threads): one to
+  /// kPartsPerThread per thread, of at least kMinGroupsPerPart groups, so
+  /// that uneven work spreads over the threads while a launch stays a few
+  /// calls (a call has fixed costs: its lane variables, its atomics on the
+  /// clock). A kernel whose groups' work differs widely within a launch
+  /// (`uneven`: the bundle's Kernel.uneven_groups, a slot kernel of local
+  /// time steps, where only the blocks due at the slot evaluate) gets
+  /// parts of kMinGroupsPerUnevenPart groups: with one contiguous range
+  /// per thread, the heat rod's 16 groups gave one thread the stiff half
+  /// and the other only quick returns.
+  static int64_t partsFor(int64_t groups, int64_t threads, bool uneven) {
+    int64_t least = uneven ? kMinGroupsPerUnevenPart : kMinGroupsPerPart;
+    return threads *
+           std::clamp<int64_t>(groups / (threads * least), 1, kPartsPerThread);
+  }
+  static constexpr int64_t kPartsPerThread = 4, kMinGroupsPerPart = 16,
+                           kMinGroupsPerUnevenPart = 4;
+
   /// Counted launches of each mode at first (after one not counted).
   static constexpr uint64_t kTrials = 4;
   /// Shared launches this long (in ticks: about 50-200 microseconds at the

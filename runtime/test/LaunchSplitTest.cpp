@@ -139,3 +139,27 @@ TEST(LaunchSplit, KernelsAreTheirOwn) {
 }
 
 } // namespace
+
+TEST(LaunchSplit, DealsUnevenKernelsInFinerParts) {
+  // One range per thread for a small launch, up to four per thread of at
+  // least 16 groups for a large one; a kernel marked uneven_groups (a slot
+  // of local time steps) gets ranges of 4 groups, so that the heat rod's
+  // 16 groups (a stiff half) go to two threads as four ranges dealt in
+  // turn, each thread a quarter of each half, not one half each.
+  EXPECT_EQ(LaunchSplit::partsFor(16, 2, false), 2);
+  EXPECT_EQ(LaunchSplit::partsFor(16, 2, true), 4);
+  EXPECT_EQ(LaunchSplit::partsFor(256, 2, false), 8);
+  EXPECT_EQ(LaunchSplit::partsFor(256, 2, true), 8);
+  EXPECT_EQ(LaunchSplit::partsFor(64, 2, false), 4);
+  EXPECT_EQ(LaunchSplit::partsFor(64, 2, true), 8);
+  // Never fewer parts than threads, never more than four per thread.
+  for (int64_t threads : {1, 2, 3, 16})
+    for (int64_t groups : {int64_t(1), int64_t(5), int64_t(17), int64_t(1000),
+                           int64_t(1) << 30})
+      for (bool uneven : {false, true}) {
+        int64_t parts = LaunchSplit::partsFor(groups, threads, uneven);
+        EXPECT_GE(parts, threads);
+        EXPECT_LE(parts, 4 * threads);
+        EXPECT_EQ(parts % threads, 0);
+      }
+}

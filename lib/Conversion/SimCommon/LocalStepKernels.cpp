@@ -1688,6 +1688,8 @@ LogicalResult SimulationLowering::emitLocalSteps(ComponentOp component,
     auto fluxWrites =
         llvm::to_vector(fluxWriter.getWrites().getAsRange<FlatSymbolRefAttr>());
     Kernel kernel = beginKernel(getKernelName(kernels, "local_flux", fluxName));
+    // Only the interfaces due at the slot are evaluated.
+    kernel.unevenGroups = true;
     LaneVar count = target.createLaneVar(b, kernel, b.getI32Type(), b.i32(0));
     Slot state = readSlot(kernel);
     Value size = state.size, parity = state.parity, levels = state.levels,
@@ -1778,6 +1780,8 @@ LogicalResult SimulationLowering::emitLocalSteps(ComponentOp component,
   // local_step_C: the items whose block's sub-step starts at slot q.
   {
     Kernel kernel = beginKernel(getKernelName(kernels, "local_step", name));
+    // Only the blocks whose sub-step starts at the slot are evaluated.
+    kernel.unevenGroups = true;
     // Evaluations counted per lane where a part is the whole group; a run
     // (splitsGroups) counts its lanes at once.
     std::optional<LaneVar> count;

@@ -396,6 +396,9 @@ LogicalResult SimulationLowering::endKernel(Kernel &kernel,
       b.getDenseI64ArrayAttr({kernel.sharedPerThread, kernel.sharedFixed}));
   kernel.func->setAttr(simplan::PlanDialect::getClockSlotsAttrName(),
                        b.getI64IntegerAttr(clockSlots));
+  if (kernel.unevenGroups)
+    kernel.func->setAttr(simplan::PlanDialect::getUnevenGroupsAttrName(),
+                         b.getUnitAttr());
 
   auto kernelRef = SymbolRefAttr::get(
       SymbolTable::getSymbolName(kernels),

@@ -595,6 +595,8 @@ FailureOr<uint32_t> PlanReader::getKernel(simplan::LaunchOp launch) {
   kernel->shared_per_thread = shared[0];
   kernel->shared_fixed = shared[1];
   kernel->clock_slots = clockSlots.getInt();
+  kernel->uneven_groups =
+      function->hasAttr(simplan::PlanDialect::getUnevenGroupsAttrName());
   ArrayRef<Type> inputs = function.getArgumentTypes();
   if (auto extra = function->getAttrOfType<IntegerAttr>(
           simplan::PlanDialect::getGroupArgumentsAttrName()))

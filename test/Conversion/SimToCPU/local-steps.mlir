@@ -115,7 +115,10 @@ sim.simulation @rod range(100) dt(1.0e-2 : f32) max_steps(8) {
 // local_step_C: runs across groups, each run's lanes as one loop (those of
 // a run next to another sub-step through the time levels), counted at once:
 // no evaluation count per lane.
+// Its groups' work differs within a launch (only the blocks due at the
+// slot evaluate), recorded for the runtime's split over threads.
 // CHECK-LABEL: func.func @local_step_Diffuse(
+// CHECK-SAME:    simplan.uneven_groups
 // CHECK-NOT:     memref.alloca
 // CHECK:         scf.while
 // CHECK:             } {simplan.lanes}
@@ -124,6 +127,7 @@ sim.simulation @rod range(100) dt(1.0e-2 : f32) max_steps(8) {
 // CHECK:       return
 
 // CHECK-LABEL: func.func @local_parity_Diffuse(
+// CHECK-NOT:     simplan.uneven_groups
 // CHECK:         scf.while
 // CHECK:       return
 

@@ -65,6 +65,18 @@ func.func @k() attributes {simplan.group_arguments = -1 : i64} {
 
 // -----
 
+// expected-error @+1 {{'simplan.uneven_groups' must be a unit attribute}}
+func.func @k() attributes {simplan.uneven_groups = true} {
+  return
+}
+
+// -----
+
+// expected-error @+1 {{'simplan.uneven_groups' is a record of a kernel function, but 'test.op' is not a function}}
+"test.op"() {simplan.uneven_groups} : () -> ()
+
+// -----
+
 // expected-error @+1 {{'simplan.stride' is not an attribute of the simplan dialect}}
 func.func @k() attributes {simplan.stride = 4 : i64} {
   return

@@ -127,6 +127,9 @@ struct Kernel {
   /// sharedFixed` bytes, and the byte offset of the next cache in it.
   int64_t sharedPerThread = 0, sharedFixed = 0;
   Value sharedOffset;
+  /// Whether the work of its groups differs widely within a launch (a slot
+  /// kernel of local time steps), recorded as `simplan.uneven_groups`.
+  bool unevenGroups = false;
 };
 
 /// What a backend provides to the kernels.

@@ -134,6 +134,9 @@ LogicalResult PlanDialect::verifyOperationAttribute(Operation *op,
       return op->emitError()
              << "'" << name << "' must be a positive i64 slot count, not "
              << value;
+  } else if (name == getUnevenGroupsAttrName()) {
+    if (!isa<UnitAttr>(value))
+      return op->emitError() << "'" << name << "' must be a unit attribute";
   } else if (name == getGroupArgumentsAttrName()) {
     auto count = dyn_cast<IntegerAttr>(value);
     if (!count || !count.getType().isInteger(64) || count.getInt() < 0)

@@ -286,9 +286,10 @@ def dump_plan(index, plan, scene):
         names["totals"].append(name(scene_totals[t]["name"]))
         print("total %d %s" % (i, names["totals"][-1]))
     for i, k in enumerate(plan.get("kernels", [])):
-        print("kernel %d %s(%s) shared %d %d clock_slots %d" % (
+        print("kernel %d %s(%s) shared %d %d clock_slots %d%s" % (
             i, name(k["name"]), ", ".join(param(p) for p in k["params"]),
-            k["shared_per_thread"], k["shared_fixed"], k["clock_slots"]))
+            k["shared_per_thread"], k["shared_fixed"], k["clock_slots"],
+            " uneven_groups" if k.get("uneven_groups") else ""))
     launches = []
     for phase in plan.get("phases", []):
         print("phase %s" % phase["kind"])

@@ -68,6 +68,14 @@ def Plan_Dialect : Dialect {
     static ::llvm::StringRef getClockSlotsAttrName() {
       return "simplan.clock_slots";
     }
+    /// On a kernel function: a unit attribute where the work of its groups
+    /// differs widely within a launch and between launches (a slot kernel
+    /// of local time steps: only the blocks whose sub-step starts at the
+    /// slot evaluate), so that a runtime splitting a launch over threads
+    /// deals it in finer parts (docs/Runtime.md, "Backends").
+    static ::llvm::StringRef getUnevenGroupsAttrName() {
+      return "simplan.uneven_groups";
+    }
     /// On an `scf.for` of a CPU kernel: the loop over the lanes of a group
     /// in one phase, whose iterations are independent (the threads of a GPU
     /// block between two barriers), so --sim-vectorize-lanes may run them
