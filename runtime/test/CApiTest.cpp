@@ -16,6 +16,41 @@ extern "C" int sim_c_api_test(const char *path, char *message, size_t capacity);
 
 using namespace sim::test;
 
+namespace {
+
+/// The decay bundle written to a fresh folder and opened; closed and
+/// removed again at the end of the test.
+struct OpenDecayBundle {
+  OpenDecayBundle() : dir(makeTempDir()), path(dir + "/decay.simb") {
+    writeFile(path, decayBundle());
+    if (sim_bundle_open(path.c_str(), &bundle) != SIM_OK)
+      ADD_FAILURE() << sim_last_error();
+  }
+  ~OpenDecayBundle() {
+    sim_bundle_close(bundle);
+    std::remove(path.c_str());
+    rmdir(dir.c_str());
+  }
+  std::string dir, path;
+  sim_bundle *bundle = nullptr;
+};
+
+/// A session of `bundle` with the default options but these (null, and a
+/// failure of the test, if it cannot be made).
+sim_session *createSession(sim_bundle *bundle, sim_strategy strategy,
+                           sim_backend backend) {
+  sim_session_options options;
+  sim_session_options_init(&options);
+  options.strategy = strategy;
+  options.backend = backend;
+  sim_session *session = nullptr;
+  if (sim_session_create(bundle, &options, &session) != SIM_OK)
+    ADD_FAILURE() << sim_last_error();
+  return session;
+}
+
+} // namespace
+
 TEST(CApi, WorksFromC) {
   std::string dir = makeTempDir();
   std::string path = dir + "/decay.simb";
@@ -38,11 +73,9 @@ TEST(CApi, RefusesUnknownEnumerationValues) {
   }
   EXPECT_STREQ(sim_strategy_name(sim_strategy(5)), "unknown");
   EXPECT_STREQ(sim_backend_name(sim_backend(-1)), "unknown");
-  std::string dir = makeTempDir();
-  std::string path = dir + "/decay.simb";
-  writeFile(path, decayBundle());
-  sim_bundle *bundle = nullptr;
-  ASSERT_EQ(sim_bundle_open(path.c_str(), &bundle), SIM_OK) << sim_last_error();
+  OpenDecayBundle decay;
+  sim_bundle *bundle = decay.bundle;
+  ASSERT_NE(bundle, nullptr);
   EXPECT_EQ(sim_bundle_has_strategy(bundle, sim_strategy(-1)), 0);
   sim_session_options options;
   sim_session_options_init(&options);
@@ -55,9 +88,6 @@ TEST(CApi, RefusesUnknownEnumerationValues) {
   EXPECT_EQ(sim_session_create(bundle, &options, &session),
             SIM_ERROR_INVALID_ARGUMENT);
   EXPECT_EQ(session, nullptr);
-  sim_bundle_close(bundle);
-  std::remove(path.c_str());
-  rmdir(dir.c_str());
 }
 
 TEST(CApi, RefusesCpuThreadCountsOutsideTheBackendsRange) {
@@ -65,11 +95,9 @@ TEST(CApi, RefusesCpuThreadCountsOutsideTheBackendsRange) {
   // taken as that too, silently, and a huge one started that many threads
   // (or failed on the CPU only). Every backend refuses both, naming the
   // value and the range, before it starts anything.
-  std::string dir = makeTempDir();
-  std::string path = dir + "/decay.simb";
-  writeFile(path, decayBundle());
-  sim_bundle *bundle = nullptr;
-  ASSERT_EQ(sim_bundle_open(path.c_str(), &bundle), SIM_OK) << sim_last_error();
+  OpenDecayBundle decay;
+  sim_bundle *bundle = decay.bundle;
+  ASSERT_NE(bundle, nullptr);
   for (sim_backend backend :
        {SIM_BACKEND_CPU, SIM_BACKEND_AUTO, SIM_BACKEND_REFERENCE})
     for (int32_t threads : {-1, INT32_MIN, 1025, INT32_MAX}) {
@@ -102,9 +130,6 @@ TEST(CApi, RefusesCpuThreadCountsOutsideTheBackendsRange) {
         << threads << ": " << sim_last_error();
     sim_session_destroy(session);
   }
-  sim_bundle_close(bundle);
-  std::remove(path.c_str());
-  rmdir(dir.c_str());
 }
 
 namespace {
@@ -156,11 +181,9 @@ void changeFromCallback(void *user, int64_t, int64_t) {
 } // namespace
 
 TEST(CApi, ReadsButDoesNotChangeARunningSession) {
-  std::string dir = makeTempDir();
-  std::string path = dir + "/decay.simb";
-  writeFile(path, decayBundle());
-  sim_bundle *bundle = nullptr;
-  ASSERT_EQ(sim_bundle_open(path.c_str(), &bundle), SIM_OK) << sim_last_error();
+  OpenDecayBundle decay;
+  sim_bundle *bundle = decay.bundle;
+  ASSERT_NE(bundle, nullptr);
   for (sim_backend backend : {SIM_BACKEND_CPU, SIM_BACKEND_REFERENCE}) {
     SCOPED_TRACE(sim_backend_name(backend));
     sim_session_options options;
@@ -202,9 +225,6 @@ TEST(CApi, ReadsButDoesNotChangeARunningSession) {
       sim_session_destroy(session);
     }
   }
-  sim_bundle_close(bundle);
-  std::remove(path.c_str());
-  rmdir(dir.c_str());
 }
 
 TEST(CApi, ProfilesTheKernelsOfTheLastRun) {
@@ -212,19 +232,12 @@ TEST(CApi, ProfilesTheKernelsOfTheLastRun) {
   // (which times every launch), their kernel time. The launches add up to
   // the run's, the times to its kernel time; the reference executor has no
   // kernels.
-  std::string dir = makeTempDir();
-  std::string path = dir + "/decay.simb";
-  writeFile(path, decayBundle());
-  sim_bundle *bundle = nullptr;
-  ASSERT_EQ(sim_bundle_open(path.c_str(), &bundle), SIM_OK) << sim_last_error();
+  OpenDecayBundle decay;
+  sim_bundle *bundle = decay.bundle;
+  ASSERT_NE(bundle, nullptr);
   for (sim_strategy strategy : {SIM_STRATEGY_SIMPLE, SIM_STRATEGY_HIP}) {
-    sim_session_options options;
-    sim_session_options_init(&options);
-    options.strategy = strategy;
-    options.backend = SIM_BACKEND_CPU;
-    sim_session *session = nullptr;
-    ASSERT_EQ(sim_session_create(bundle, &options, &session), SIM_OK)
-        << sim_last_error();
+    sim_session *session = createSession(bundle, strategy, SIM_BACKEND_CPU);
+    ASSERT_NE(session, nullptr);
     int32_t kernels = sim_session_num_kernels(session);
     ASSERT_GT(kernels, 0);
     for (int64_t steps : {int64_t(25), int64_t(7), int64_t(0)}) {
@@ -263,13 +276,9 @@ TEST(CApi, ProfilesTheKernelsOfTheLastRun) {
               SIM_ERROR_INVALID_ARGUMENT);
     sim_session_destroy(session);
   }
-  sim_session_options options;
-  sim_session_options_init(&options);
-  options.strategy = SIM_STRATEGY_SIMPLE;
-  options.backend = SIM_BACKEND_REFERENCE;
-  sim_session *reference = nullptr;
-  ASSERT_EQ(sim_session_create(bundle, &options, &reference), SIM_OK)
-      << sim_last_error();
+  sim_session *reference =
+      createSession(bundle, SIM_STRATEGY_SIMPLE, SIM_BACKEND_REFERENCE);
+  ASSERT_NE(reference, nullptr);
   ASSERT_EQ(sim_session_run(reference, 5), SIM_OK) << sim_last_error();
   EXPECT_EQ(sim_session_num_kernels(reference), 0);
   sim_kernel_profile profile;
@@ -277,7 +286,4 @@ TEST(CApi, ProfilesTheKernelsOfTheLastRun) {
             SIM_ERROR_INVALID_ARGUMENT);
   EXPECT_EQ(sim_session_num_kernels(nullptr), 0);
   sim_session_destroy(reference);
-  sim_bundle_close(bundle);
-  std::remove(path.c_str());
-  rmdir(dir.c_str());
 }

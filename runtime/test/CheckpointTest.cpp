@@ -66,6 +66,16 @@ protected:
     return result;
   }
 
+  /// A checkpoint of a CPU hip session after 12 base steps, written to
+  /// `file`: its bytes.
+  std::string goodCheckpoint(const std::string &file) {
+    sim_session *writer = session(SIM_STRATEGY_HIP, SIM_BACKEND_CPU);
+    EXPECT_EQ(sim_session_run(writer, 12), SIM_OK) << sim_last_error();
+    EXPECT_EQ(sim_session_checkpoint(writer, file.c_str()), SIM_OK)
+        << sim_last_error();
+    return readFile(file);
+  }
+
   std::string dir, path;
   sim_bundle *bundle = nullptr;
   std::vector<sim_session *> sessions;
@@ -343,10 +353,7 @@ TEST_F(Checkpoints, RefuseWhatDoesNotBelongToTheSession) {
 
 TEST_F(Checkpoints, RefuseDamagedFiles) {
   std::string file = dir + "/good.simc", bad = dir + "/bad.simc";
-  sim_session *writer = session(SIM_STRATEGY_HIP, SIM_BACKEND_CPU);
-  ASSERT_EQ(sim_session_run(writer, 12), SIM_OK);
-  ASSERT_EQ(sim_session_checkpoint(writer, file.c_str()), SIM_OK);
-  std::string good = readFile(file);
+  std::string good = goodCheckpoint(file);
   ASSERT_GT(good.size(), 2000u);
   sim_session *target = session(SIM_STRATEGY_HIP, SIM_BACKEND_CPU);
   ASSERT_EQ(sim_session_run(target, 5), SIM_OK);
@@ -400,10 +407,8 @@ TEST_F(Checkpoints, RefuseAClockOffItsAlignment) {
   // clock moved 4 bytes on, its length prefix written over its first
   // value, with a valid CRC, is refused before anything reads it.
   std::string file = dir + "/good.simc", bad = dir + "/bad.simc";
-  sim_session *writer = session(SIM_STRATEGY_HIP, SIM_BACKEND_CPU);
-  ASSERT_EQ(sim_session_run(writer, 12), SIM_OK);
-  ASSERT_EQ(sim_session_checkpoint(writer, file.c_str()), SIM_OK);
-  std::string bytes = readFile(file);
+  std::string bytes = goodCheckpoint(file);
+  ASSERT_GT(bytes.size(), 2000u);
   constexpr size_t kHeader = 32;
   uint32_t manifestSize;
   std::memcpy(&manifestSize, &bytes[kHeader], sizeof manifestSize);
