@@ -154,8 +154,8 @@ TEST(LaunchSplit, DealsUnevenKernelsInFinerParts) {
   EXPECT_EQ(LaunchSplit::partsFor(64, 2, true), 8);
   // Never fewer parts than threads, never more than four per thread.
   for (int64_t threads : {1, 2, 3, 16})
-    for (int64_t groups : {int64_t(1), int64_t(5), int64_t(17), int64_t(1000),
-                           int64_t(1) << 30})
+    for (int64_t groups :
+         {int64_t(1), int64_t(5), int64_t(17), int64_t(1000), int64_t(1) << 30})
       for (bool uneven : {false, true}) {
         int64_t parts = LaunchSplit::partsFor(groups, threads, uneven);
         EXPECT_GE(parts, threads);
