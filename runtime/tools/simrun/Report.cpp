@@ -38,7 +38,9 @@ TotalError compareTotal(const std::string &name, double value,
 
 std::string formatTime(double seconds) {
   char text[32];
-  if (seconds < 1e-3)
+  if (seconds < 1e-6)
+    std::snprintf(text, sizeof text, "%.0f ns", seconds * 1e9);
+  else if (seconds < 1e-3)
     std::snprintf(text, sizeof text, "%.1f us", seconds * 1e6);
   else if (seconds < 1)
     std::snprintf(text, sizeof text, "%.3f ms", seconds * 1e3);
@@ -205,13 +207,7 @@ void printProfile(const MainRun &main) {
       std::snprintf(text, sizeof text, "%.1f%%",
                     total > 0 ? 100 * kernel->seconds / total : 0.0);
       share = text;
-      double perLaunch = kernel->seconds / double(kernel->launches);
-      if (perLaunch < 1e-6) {
-        std::snprintf(text, sizeof text, "%.0f ns", perLaunch * 1e9);
-        each = text;
-      } else {
-        each = formatTime(perLaunch);
-      }
+      each = formatTime(kernel->seconds / double(kernel->launches));
     }
     std::printf("  %-*s %10lld %12s %7s %12s\n", int(width),
                 kernel->name.c_str(), (long long)kernel->launches, time.c_str(),

@@ -58,17 +58,12 @@ void RunTotals::add(sim_session *session, int64_t maxSteps, bool atOutput) {
   for (int32_t c = 0; c < components; ++c)
     counts.evaluations[size_t(c)].second += sim_session_evaluations(session, c);
   int32_t kernels = sim_session_num_kernels(session);
-  if (counts.kernels.empty())
-    for (int32_t k = 0; k < kernels; ++k) {
-      sim_kernel_profile profile;
-      if (sim_session_kernel_profile(session, k, &profile) != SIM_OK)
-        runError(sim_last_error());
-      counts.kernels.push_back({profile.name, 0, 0});
-    }
-  for (int32_t k = 0; k < kernels && size_t(k) < counts.kernels.size(); ++k) {
+  for (int32_t k = 0; k < kernels; ++k) {
     sim_kernel_profile profile;
     if (sim_session_kernel_profile(session, k, &profile) != SIM_OK)
       runError(sim_last_error());
+    if (size_t(k) == counts.kernels.size())
+      counts.kernels.push_back({profile.name, 0, 0});
     RunCounts::Kernel &kernel = counts.kernels[size_t(k)];
     kernel.launches += profile.launches;
     // Untimed in one session run: untimed in all of them.
