@@ -30,6 +30,7 @@ tools = [
     "sim-reduce",
     "sim-run",
     "sim-bundle-fuzz-replay",
+    "sim-checkpoint-fuzz-replay",
     "sim-compile-fuzz-replay",
     # Upstream's tools, for tests that run transformed IR on the CPU.
     "mlir-opt",

@@ -8,8 +8,10 @@
 #                                        fails the test it happens in
 #   utils/sanitize.sh fuzz [SECONDS] [TARGET...]
 #                                        runs each fuzzer (bundle: the bundle
-#                                        reader; compile: the compiler's front
-#                                        end and lowering; default both) for
+#                                        reader; checkpoint: the checkpoint
+#                                        reader and restarts; compile: the
+#                                        compiler's front end and lowering;
+#                                        default all three) for
 #                                        SECONDS (default 600),
 #                                        seeded with the examples and the
 #                                        kept corpora; crashes land in
@@ -92,10 +94,10 @@ fuzz)
   seconds=${1:-600}
   shift || true
   targets=("$@")
-  ((${#targets[@]})) || targets=(bundle compile)
+  ((${#targets[@]})) || targets=(bundle checkpoint compile)
   configure
-  cmake --build "$build" --target sim-bundle-fuzzer sim-compile-fuzzer \
-    sim-translate
+  cmake --build "$build" --target sim-bundle-fuzzer sim-checkpoint-fuzzer \
+    sim-checkpoint-fuzz-replay sim-compile-fuzzer sim-translate
   out="$build/fuzz"
   for target in "${targets[@]}"; do
     rm -rf "${out:?}/$target"
@@ -104,8 +106,13 @@ fuzz)
   # Seeds: the kept corpora, and every example scene as a compiler input
   # under each strategy and path, and as bundles (the payload mode: the
   # fuzzer writes the header and CRC itself).
-  mkdir -p "$out/bundle/seeds" "$out/compile/seeds"
+  mkdir -p "$out/bundle/seeds" "$out/checkpoint/seeds" "$out/compile/seeds"
   cp runtime/fuzz/corpus/bundle/* "$out/bundle/seeds/" 2>/dev/null || true
+  cp runtime/fuzz/corpus/checkpoint/* "$out/checkpoint/seeds/" 2>/dev/null ||
+    true
+  # A good checkpoint of each of the target's sessions, in this build.
+  SIM_CHECKPOINT_FUZZ_SEEDS="$out/checkpoint/seeds" \
+    "$build/bin/sim-checkpoint-fuzz-replay" /dev/null >/dev/null
   cp test/Fuzz/corpus-compile/* "$out/compile/seeds/" 2>/dev/null || true
   for scene in examples/paper/*.mlir examples/physics/*.mlir \
     test/Integration/Inputs/*.mlir; do

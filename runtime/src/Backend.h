@@ -44,8 +44,9 @@ public:
   /// (`perThread` bytes per thread plus `fixed`) than the device gives a
   /// group. Only a GPU has such a limit: the CPU kernels keep their
   /// caches on the stack.
-  virtual void checkSharedMemory(int kernel, int64_t perThread, int64_t fixed,
-                                 int64_t groupSize) const {}
+  virtual void checkSharedMemory(int /*kernel*/, int64_t /*perThread*/,
+                                 int64_t /*fixed*/,
+                                 int64_t /*groupSize*/) const {}
 
   /// Loads the code of `plan` of `bundle` and resolves its kernels; a
   /// launch names a kernel by its index in `plan.kernels`.
