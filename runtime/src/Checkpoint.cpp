@@ -432,6 +432,12 @@ CheckpointFile parseCheckpoint(std::vector<uint8_t> bytes,
   if (manifestBytes > left)
     error("the manifest's size (" + std::to_string(manifestBytes) +
           " bytes) runs past the end of the file");
+  // A root offset and the file identifier, at least, before the identifier
+  // is looked at (the check reads them without a bound).
+  if (manifestBytes <
+      4 + sizeof(flatbuffers::uoffset_t) + flatbuffers::kFileIdentifierLength)
+    error("the manifest has " + std::to_string(manifestBytes - 4) +
+          " bytes, too few for a checkpoint FlatBuffer (damaged?)");
   // FlatBuffers reads scalars in place: an aligned copy.
   std::vector<uint8_t> aligned(file + schema::kHeaderSize,
                                file + schema::kHeaderSize + manifestBytes);

@@ -392,6 +392,22 @@ TEST_F(Checkpoints, RefuseDamagedFiles) {
   }
   EXPECT_TRUE(refused(good + "x",
                       "but the file has " + std::to_string(good.size() + 1)));
+  // A manifest too short to hold a root offset and the identifier, with a
+  // valid CRC: refused before the identifier is read (the checkpoint
+  // fuzzer found that read past the copy of the manifest).
+  for (uint32_t manifestSize = 0; manifestSize < 8; ++manifestSize) {
+    std::string bytes = good.substr(0, 32) + std::string(64, '\0');
+    std::memcpy(&bytes[32], &manifestSize, sizeof manifestSize);
+    uint32_t crc =
+        uint32_t(crc32(crc32(0L, Z_NULL, 0),
+                       reinterpret_cast<const Bytef *>(bytes.data() + 32), 64));
+    std::memcpy(&bytes[12], &crc, sizeof crc);
+    uint64_t size = bytes.size();
+    std::memcpy(&bytes[16], &size, sizeof size);
+    EXPECT_TRUE(refused(bytes, "the manifest has " +
+                                   std::to_string(manifestSize) +
+                                   " bytes, too few for a checkpoint"));
+  }
   EXPECT_TRUE(refused(readFile(path), "it is a bundle, not a checkpoint"));
   EXPECT_EQ(sim_session_restart(target, (dir + "/missing.simc").c_str()),
             SIM_ERROR_IO);
