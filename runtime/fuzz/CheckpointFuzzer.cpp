@@ -10,8 +10,9 @@
 //
 //  - a refused restart leaves the session as it was: its clock and every
 //    buffer's bytes (docs/Runtime.md, "Checkpoints");
-//  - a session that accepted a checkpoint runs on from it: two base steps,
-//    which end in a run or a clean error, never in a crash.
+//  - a session that accepted a checkpoint holds its time and every one of
+//    its buffers, and runs on from it: two base steps, which end in a run
+//    or a clean error, never in a crash.
 //
 // As in BundleFuzzer.cpp, the first byte picks the mode: even, the rest is
 // a whole file as it is; odd, the rest is what follows the header and the
@@ -137,6 +138,27 @@ Sessions &sessions() {
   return instance;
 }
 
+/// Whether `executor` now holds the time and every buffer of `file`.
+bool restoredAll(Executor &executor, const CheckpointFile &file) {
+  if (executor.time() != file.manifest.time)
+    return false;
+  // The session's buffers: a plan's checkpoint may hold more than the
+  // reference executor keeps.
+  for (const std::string &name : executor.stateBuffers()) {
+    auto state =
+        std::find_if(file.manifest.buffers.begin(), file.manifest.buffers.end(),
+                     [&](const auto &state) { return state->name == name; });
+    if (state == file.manifest.buffers.end())
+      return false;
+    std::vector<uint8_t> held(executor.hostBytes(name));
+    executor.getBuffer(name, held.data(), held.size());
+    if (held.size() != (*state)->bytes ||
+        !std::equal(held.begin(), held.end(), file.data(**state)))
+      return false;
+  }
+  return true;
+}
+
 std::vector<uint8_t> fileOf(const uint8_t *data, size_t size) {
   if (!(data[0] & 1))
     return std::vector<uint8_t>(data + 1, data + size);
@@ -177,6 +199,11 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
         std::abort();
       }
       continue;
+    }
+    if (!restoredAll(*session, *file)) {
+      std::fprintf(stderr, "an accepted restart did not restore the "
+                           "checkpoint's time and buffers\n");
+      std::abort();
     }
     try {
       session->run(2);
