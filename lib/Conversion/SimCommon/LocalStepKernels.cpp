@@ -1031,21 +1031,23 @@ LogicalResult SimulationLowering::emitLocalSteps(ComponentOp component,
     return {b.min(b.max(h, zero), b.sub(blocks, one)), valid};
   };
   // The minimum of `initial` and `valueOf(h)` over the blocks h
-  // `distance` blocks below and above block g, for distance in [first,
-  // end) (an scf.for; blocks past a range end that does not wrap count not).
+  // `distance` blocks below and above block g (on the `sides` given: true
+  // for below), for distance in [first, end) (an scf.for; blocks past a
+  // range end that does not wrap count not).
   // Distances of `blocks` or more reach no block (or, around the range, one
   // already reached at a shorter distance, which bounds more): the loop
   // stops there, so a window far wider than the range costs the range.
   auto minOverNeighbours = [&](Value g, Value first, Value end, Value initial,
                                Value blocks,
-                               function_ref<Value(Value h)> valueOf) -> Value {
+                               function_ref<Value(Value h)> valueOf,
+                               ArrayRef<bool> sides = {true, false}) -> Value {
     auto loop = scf::ForOp::create(b, b.loc, first, b.min(end, blocks),
                                    b.i64(1), ValueRange{initial});
     OpBuilder::InsertionGuard guard(b);
     b.setInsertionPointToStart(loop.getBody());
     Value distance = loop.getInductionVar();
     Value bound = loop.getRegionIterArg(0);
-    for (bool below : {true, false}) {
+    for (bool below : sides) {
       auto [h, valid] = neighbourOf(g, distance, below, blocks);
       bound = b.select(valid, b.min(bound, valueOf(h)), bound);
     }
@@ -1412,17 +1414,22 @@ LogicalResult SimulationLowering::emitLocalSteps(ComponentOp component,
       storeLevel(kernel, levels, parity, size, k,
                  decodedLevel(kernel, levels, parity, size, whole, k));
     }
-    // Lowers block `g` to twice its finest neighbour; returns whether it
-    // changed.
-    auto relax = [&](Value g) -> Value {
+    // Lowers block `g` to twice its finest neighbour on the side the
+    // sweep comes from (`below` for a forward sweep); returns whether it
+    // changed. The side ahead is the other sweep's: a forward sweep that
+    // also looked ahead would read blocks not yet lowered, which bound
+    // nothing the backward sweep does not, at twice the loads.
+    auto relax = [&](Value g, bool below) -> Value {
       Value own = levelAt(g);
       Value bound = own;
       if (radius > 0)
-        bound = minOverNeighbours(
-            g, one, b.i64(radius + 1), own, blocks, [&](Value h) {
-              return arith::ShLIOp::create(b, b.loc, levelAt(h), one)
-                  .getResult();
-            });
+        bound = minOverNeighbours(g, one, b.i64(radius + 1), own, blocks,
+                                  [&](Value h) {
+                                    return arith::ShLIOp::create(
+                                               b, b.loc, levelAt(h), one)
+                                        .getResult();
+                                  },
+                                  {below});
       b.store(bound, levels, at(g));
       return b.cmp(arith::CmpIPredicate::slt, bound, own);
     };
@@ -1436,8 +1443,8 @@ LogicalResult SimulationLowering::emitLocalSteps(ComponentOp component,
         b.setInsertionPointToStart(pass.getBody());
         Value k = pass.getInductionVar();
         Value g = blockAt(forward ? k : b.sub(b.sub(count, one), k));
-        Value any =
-            arith::OrIOp::create(b, b.loc, pass.getRegionIterArg(0), relax(g));
+        Value any = arith::OrIOp::create(b, b.loc, pass.getRegionIterArg(0),
+                                         relax(g, forward));
         scf::YieldOp::create(b, b.loc, any);
         b.setInsertionPointAfter(pass);
         changed = pass.getResult(0);

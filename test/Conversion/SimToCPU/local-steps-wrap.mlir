@@ -1,7 +1,8 @@
 // lts on the CPU around a wrapping range (boundary(wrap)): limit_levels_C
 // sweeps until no block changes (the shortest way to a block may wrap past
-// the sweeps' start), and finds a neighbour block around the range with
-// one conditional addition or subtraction of the blocks, no remainder.
+// the sweeps' start), each sweep looking only at the side it comes from,
+// and finds a neighbour block around the range with one conditional
+// addition or subtraction of the blocks, no remainder.
 //
 // RUN: sim-opt %s --sim-front-end=strategy=lts --sim-lower-to-cpu | FileCheck %s
 
@@ -38,18 +39,25 @@ sim.simulation @ring range(100) dt(1.0e-2 : f32) max_steps(8) {
 // CHECK-LABEL: func.func @limit_levels_Diffuse(
 // CHECK-NOT:     arith.remsi
 // CHECK:         scf.while
+// The forward sweep lowers block g to twice its neighbours below it alone:
+// at distance d, g - d, plus the blocks when that is below 0.
 // CHECK:           scf.for {{.*}} iter_args(%{{.*}} = %false) -> (i1)
-// The neighbour below block g at distance d: g - d, plus the blocks when
-// that is below 0.
 // CHECK:             scf.for %[[D:arg[0-9]+]] = %c1_i64 to
 // CHECK-NEXT:          %[[BELOW:.*]] = arith.subi %[[G:.*]], %[[D]] : i64
-// CHECK:             %[[NEGATIVE:.*]] = arith.cmpi slt, %[[BELOW]], %c0_i64 : i64
-// CHECK:             %[[AROUND:.*]] = arith.addi %[[BELOW]], %[[BLOCKS:.*]] : i64
-// CHECK:             arith.select %[[NEGATIVE]], %[[AROUND]], %[[BELOW]] : i64
-// The one above: g + d, less the blocks when that is past the last.
-// CHECK:             %[[ABOVE:.*]] = arith.addi %[[G]], %[[D]] : i64
-// CHECK:             %[[PAST:.*]] = arith.cmpi sge, %[[ABOVE]], %[[BLOCKS]] : i64
-// CHECK:             %[[BACK:.*]] = arith.subi %[[ABOVE]], %[[BLOCKS]] : i64
-// CHECK:             arith.select %[[PAST]], %[[BACK]], %[[ABOVE]] : i64
+// CHECK-NEXT:          %[[NEGATIVE:.*]] = arith.cmpi slt, %[[BELOW]], %c0_i64 : i64
+// CHECK-NEXT:          %[[AROUND:.*]] = arith.addi %[[BELOW]], %[[BLOCKS:.*]] : i64
+// CHECK-NEXT:          arith.select %[[NEGATIVE]], %[[AROUND]], %[[BELOW]] : i64
+// CHECK-NOT:           arith.addi %[[G]], %[[D]] : i64
+// CHECK:               scf.yield
+// The backward sweep, to those above it alone: g + d, less the blocks when
+// that is past the last.
+// CHECK:           scf.for {{.*}} iter_args(%{{.*}} = %{{.*}}) -> (i1)
+// CHECK:             scf.for %[[D2:arg[0-9]+]] = %c1_i64 to
+// CHECK-NEXT:          %[[ABOVE:.*]] = arith.addi %[[G2:.*]], %[[D2]] : i64
+// CHECK-NEXT:          %[[PAST:.*]] = arith.cmpi sge, %[[ABOVE]], %[[BLOCKS]] : i64
+// CHECK-NEXT:          %[[BACK:.*]] = arith.subi %[[ABOVE]], %[[BLOCKS]] : i64
+// CHECK-NEXT:          arith.select %[[PAST]], %[[BACK]], %[[ABOVE]] : i64
+// CHECK-NOT:           arith.subi %[[G2]], %[[D2]] : i64
+// CHECK:               scf.yield
 // CHECK-NOT:     arith.remsi
 // CHECK:       return
