@@ -455,6 +455,17 @@ CheckpointFile parseCheckpoint(std::vector<uint8_t> bytes,
   if (!elementsAligned(manifest->clock()))
     error("the manifest does not verify as a checkpoint FlatBuffer: its "
           "int64 vector clock is not aligned to 8 bytes (damaged?)");
+  // The verifier checks no enum's range: a value past the last would pass
+  // every check below that compares with a known one (an executor that is
+  // neither skips the clock's checks).
+  if (manifest->executor() > ckpt::Executor::MAX)
+    error("the manifest names executor " +
+          std::to_string(int(manifest->executor())) +
+          ", which this runtime does not know (damaged?)");
+  if (manifest->strategy() > schema::Strategy::MAX)
+    error("the manifest names strategy " +
+          std::to_string(int(manifest->strategy())) +
+          ", which this runtime does not know (damaged?)");
   CheckpointFile result;
   result.checksum = header.checksum;
   result.name = name;

@@ -24,6 +24,7 @@
 #include <cstring>
 #include <fcntl.h>
 #include <sys/stat.h>
+#include <tuple>
 #include <unistd.h>
 #include <vector>
 #include <zlib.h>
@@ -458,6 +459,60 @@ TEST_F(Checkpoints, RefuseAClockOffItsAlignment) {
       << sim_last_error();
   ASSERT_EQ(sim_session_restart(target, file.c_str()), SIM_OK)
       << sim_last_error();
+}
+
+TEST_F(Checkpoints, RefuseAnEnumValueTheRuntimeDoesNotKnow) {
+  // The FlatBuffers verifier checks no enum's range. An executor past the
+  // last passed every check that compares it with a known one, and so
+  // skipped the clock's (the checkpoint fuzzer found a plan session that
+  // accepted a clock at another base step than the file's).
+  sim_session *reference = session(SIM_STRATEGY_HIP, SIM_BACKEND_REFERENCE);
+  ASSERT_EQ(sim_session_run(reference, 12), SIM_OK) << sim_last_error();
+  std::string file = dir + "/reference.simc", bad = dir + "/bad.simc";
+  ASSERT_EQ(sim_session_checkpoint(reference, file.c_str()), SIM_OK)
+      << sim_last_error();
+  std::string good = readFile(file);
+  // The byte of a scalar field the file holds (not a default), set to
+  // `value`, with the CRC made for it.
+  auto withField = [&](flatbuffers::voffset_t field, uint8_t value) {
+    std::string bytes = good;
+    constexpr size_t kHeader = 32;
+    uint32_t manifestSize;
+    std::memcpy(&manifestSize, &bytes[kHeader], sizeof manifestSize);
+    std::vector<uint8_t> manifest(bytes.begin() + kHeader,
+                                  bytes.begin() + kHeader + 4 + manifestSize);
+    const auto *root =
+        sim::checkpoint::GetSizePrefixedCheckpoint(manifest.data());
+    const uint8_t *at =
+        reinterpret_cast<const flatbuffers::Table *>(root)->GetAddressOf(field);
+    EXPECT_NE(at, nullptr);
+    if (!at)
+      return bytes;
+    bytes[kHeader + size_t(at - manifest.data())] = char(value);
+    uint32_t crc =
+        uint32_t(crc32(crc32(0L, Z_NULL, 0),
+                       reinterpret_cast<const Bytef *>(bytes.data() + kHeader),
+                       uInt(bytes.size() - kHeader)));
+    std::memcpy(&bytes[12], &crc, sizeof crc);
+    return bytes;
+  };
+  sim_session *target = session(SIM_STRATEGY_HIP, SIM_BACKEND_REFERENCE);
+  ASSERT_EQ(sim_session_run(target, 5), SIM_OK);
+  for (auto [field, value, message] :
+       {std::tuple(sim::checkpoint::Checkpoint::VT_EXECUTOR, 2,
+                   "the manifest names executor 2, which this runtime does "
+                   "not know (damaged?)"),
+        std::tuple(sim::checkpoint::Checkpoint::VT_STRATEGY, 9,
+                   "the manifest names strategy 9, which this runtime does "
+                   "not know (damaged?)")}) {
+    writeFile(bad, withField(field, uint8_t(value)));
+    EXPECT_EQ(sim_session_restart(target, bad.c_str()), SIM_ERROR_CHECKPOINT);
+    EXPECT_TRUE(contains(sim_last_error(), message)) << sim_last_error();
+    EXPECT_EQ(sim_session_time(target), 5);
+  }
+  ASSERT_EQ(sim_session_restart(target, file.c_str()), SIM_OK)
+      << sim_last_error();
+  EXPECT_EQ(sim_session_time(target), 12);
 }
 
 TEST_F(Checkpoints, NeedABigStepBoundary) {
