@@ -57,26 +57,6 @@ using namespace sim::rt;
 /// The CRC-32 the sessions' bundle claims: any fixed value will do.
 constexpr uint32_t kBundleCrc = 0x5eed5eed;
 
-/// What a session holds, to tell whether a refused restart changed it.
-struct Snapshot {
-  std::vector<int64_t> clock;
-  std::vector<std::vector<uint8_t>> buffers;
-
-  static Snapshot of(Executor &executor) {
-    Snapshot result;
-    result.clock = executor.checkpointClock();
-    for (const std::string &name : executor.stateBuffers()) {
-      result.buffers.emplace_back(executor.hostBytes(name));
-      executor.getBuffer(name, result.buffers.back().data(),
-                         result.buffers.back().size());
-    }
-    return result;
-  }
-  bool operator==(const Snapshot &other) const {
-    return clock == other.clock && buffers == other.buffers;
-  }
-};
-
 /// The bytes of a checkpoint of `executor`, through a temporary file (the
 /// writer needs a seekable descriptor).
 std::vector<uint8_t> checkpointBytes(Executor &executor) {
@@ -190,11 +170,11 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
     return 0; // A clean rejection.
   }
   for (const auto &session : all.all) {
-    Snapshot before = Snapshot::of(*session);
+    SessionState before = stateOf(*session);
     try {
       restartFromCheckpoint(*session, *file);
     } catch (const Error &) {
-      if (!(Snapshot::of(*session) == before)) {
+      if (!(stateOf(*session) == before)) {
         std::fprintf(stderr, "a refused restart changed the session\n");
         std::abort();
       }

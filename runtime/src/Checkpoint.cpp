@@ -130,27 +130,10 @@ void agreeOn(Communicator *comm, const std::string &what, Body &&body) {
              " (its message says why)");
 }
 
-/// A distributed session's checkpoint, gathered on every rank.
-struct Gathered {
-  std::vector<int64_t> clock;
-  std::vector<std::vector<uint8_t>> buffers;
-};
-
-Gathered gather(Executor &executor) {
-  Gathered gathered;
-  gathered.clock = executor.checkpointClock();
-  for (const std::string &buffer : executor.stateBuffers()) {
-    gathered.buffers.emplace_back(executor.hostBytes(buffer));
-    executor.getBuffer(buffer, gathered.buffers.back().data(),
-                       gathered.buffers.back().size());
-  }
-  return gathered;
-}
-
 /// Writes the checkpoint; a distributed session's state is `gathered`
 /// already, a single process's is read as it is written.
 void writeImage(Executor &executor, int fd, const std::string &name,
-                const Gathered *gathered) {
+                const SessionState *gathered) {
   off_t start = lseek(fd, 0, SEEK_CUR);
   if (start < 0)
     fail(SIM_ERROR_IO, "cannot write checkpoint '" + name +
@@ -292,7 +275,7 @@ void checkReplaceable(const std::string &path) {
 }
 
 void writeFile(Executor &executor, const std::string &path,
-               const Gathered *gathered) {
+               const SessionState *gathered) {
   checkReplaceable(path);
   size_t slash = path.rfind('/');
   std::string dir = slash == std::string::npos ? "."
@@ -354,13 +337,24 @@ void writeFile(Executor &executor, const std::string &path,
 // Writing
 //===----------------------------------------------------------------------===//
 
+SessionState stateOf(Executor &executor) {
+  SessionState state;
+  state.clock = executor.checkpointClock();
+  for (const std::string &buffer : executor.stateBuffers()) {
+    state.buffers.emplace_back(executor.hostBytes(buffer));
+    executor.getBuffer(buffer, state.buffers.back().data(),
+                       state.buffers.back().size());
+  }
+  return state;
+}
+
 void writeCheckpoint(Executor &executor, int fd, const std::string &name) {
   Communicator *comm = ranksOf(executor);
   if (!comm) {
     writeImage(executor, fd, name, nullptr);
     return;
   }
-  Gathered gathered = gather(executor);
+  SessionState gathered = stateOf(executor);
   agreeOn(comm, "could not write checkpoint '" + name + "'", [&] {
     if (comm->rank() == 0)
       writeImage(executor, fd, name, &gathered);
@@ -373,7 +367,7 @@ void writeCheckpointFile(Executor &executor, const std::string &path) {
     writeFile(executor, path, nullptr);
     return;
   }
-  Gathered gathered = gather(executor);
+  SessionState gathered = stateOf(executor);
   agreeOn(comm, "could not write checkpoint '" + path + "'", [&] {
     if (comm->rank() == 0)
       writeFile(executor, path, &gathered);

@@ -36,6 +36,19 @@ constexpr uint32_t kCheckpointVersion = 1;
 /// The data area and every buffer in it start on a multiple of this.
 constexpr uint64_t kCheckpointAlignment = 64;
 
+/// What a checkpoint holds of a session: its clock (checkpointClock) and
+/// the bytes of every state buffer, in stateBuffers' order. In a
+/// distributed session every rank calls it and gets the whole state.
+struct SessionState {
+  std::vector<int64_t> clock;
+  std::vector<std::vector<uint8_t>> buffers;
+
+  bool operator==(const SessionState &other) const {
+    return clock == other.clock && buffers == other.buffers;
+  }
+};
+SessionState stateOf(Executor &executor);
+
 /// Writes a checkpoint of `executor` to `fd`, from its current offset
 /// (which must be seekable: the header is written last); `name` names the
 /// file in messages. Initialises the session first if it has no state.

@@ -114,6 +114,48 @@ struct Counts {
   }
 };
 
+/// A checkpoint file's header (BundleFormat.h): magic, version, CRC-32,
+/// size, reserved.
+constexpr size_t kHeader = 32;
+
+/// Writes the CRC-32 of everything after the header, and the file's size,
+/// into its header: a file edited past the header as a hostile writer
+/// would make it, which only the checks after the CRC's can refuse.
+void reseal(std::string &bytes) {
+  uint32_t crc =
+      uint32_t(crc32(crc32(0L, Z_NULL, 0),
+                     reinterpret_cast<const Bytef *>(bytes.data() + kHeader),
+                     uInt(bytes.size() - kHeader)));
+  std::memcpy(&bytes[12], &crc, sizeof crc);
+  uint64_t size = bytes.size();
+  std::memcpy(&bytes[16], &size, sizeof size);
+}
+
+/// The manifest of a checkpoint file (its size prefix and FlatBuffer),
+/// copied to aligned memory, and where in the file its parts lie.
+struct Manifest {
+  explicit Manifest(const std::string &file) {
+    uint32_t size;
+    std::memcpy(&size, &file[kHeader], sizeof size);
+    bytes.assign(file.begin() + kHeader, file.begin() + kHeader + 4 + size);
+  }
+  const sim::checkpoint::Checkpoint *root() const {
+    return sim::checkpoint::GetSizePrefixedCheckpoint(bytes.data());
+  }
+  /// Where field `field` of the root lies in the copy; null where the
+  /// file holds its default.
+  const uint8_t *field(flatbuffers::voffset_t field) const {
+    return reinterpret_cast<const flatbuffers::Table *>(root())->GetAddressOf(
+        field);
+  }
+  /// The offset in the file of `at`, a pointer into the copy.
+  size_t inFile(const void *at) const {
+    return kHeader + size_t(static_cast<const uint8_t *>(at) - bytes.data());
+  }
+
+  std::vector<uint8_t> bytes;
+};
+
 const sim_backend kBackends[] = {SIM_BACKEND_CPU, SIM_BACKEND_REFERENCE};
 const sim_strategy kStrategies[] = {SIM_STRATEGY_SIMPLE, SIM_STRATEGY_HIP};
 
@@ -397,14 +439,9 @@ TEST_F(Checkpoints, RefuseDamagedFiles) {
   // valid CRC: refused before the identifier is read (the checkpoint
   // fuzzer found that read past the copy of the manifest).
   for (uint32_t manifestSize = 0; manifestSize < 8; ++manifestSize) {
-    std::string bytes = good.substr(0, 32) + std::string(64, '\0');
-    std::memcpy(&bytes[32], &manifestSize, sizeof manifestSize);
-    uint32_t crc =
-        uint32_t(crc32(crc32(0L, Z_NULL, 0),
-                       reinterpret_cast<const Bytef *>(bytes.data() + 32), 64));
-    std::memcpy(&bytes[12], &crc, sizeof crc);
-    uint64_t size = bytes.size();
-    std::memcpy(&bytes[16], &size, sizeof size);
+    std::string bytes = good.substr(0, kHeader) + std::string(64, '\0');
+    std::memcpy(&bytes[kHeader], &manifestSize, sizeof manifestSize);
+    reseal(bytes);
     EXPECT_TRUE(refused(bytes, "the manifest has " +
                                    std::to_string(manifestSize) +
                                    " bytes, too few for a checkpoint"));
@@ -426,31 +463,20 @@ TEST_F(Checkpoints, RefuseAClockOffItsAlignment) {
   std::string file = dir + "/good.simc", bad = dir + "/bad.simc";
   std::string bytes = goodCheckpoint(file);
   ASSERT_GT(bytes.size(), 2000u);
-  constexpr size_t kHeader = 32;
-  uint32_t manifestSize;
-  std::memcpy(&manifestSize, &bytes[kHeader], sizeof manifestSize);
-  std::vector<uint8_t> manifest(bytes.begin() + kHeader,
-                                bytes.begin() + kHeader + 4 + manifestSize);
-  const auto *root =
-      sim::checkpoint::GetSizePrefixedCheckpoint(manifest.data());
-  ASSERT_NE(root->clock(), nullptr);
-  ASSERT_GE(root->clock()->size(), 2u);
-  const uint8_t *field =
-      reinterpret_cast<const flatbuffers::Table *>(root)->GetAddressOf(
-          sim::checkpoint::Checkpoint::VT_CLOCK);
-  size_t fieldAt = kHeader + size_t(field - manifest.data());
-  size_t elementsAt = kHeader + size_t(root->clock()->Data() - manifest.data());
+  Manifest manifest(bytes);
+  const auto *clock = manifest.root()->clock();
+  ASSERT_NE(clock, nullptr);
+  ASSERT_GE(clock->size(), 2u);
+  size_t fieldAt =
+      manifest.inFile(manifest.field(sim::checkpoint::Checkpoint::VT_CLOCK));
+  size_t elementsAt = manifest.inFile(clock->Data());
   uint32_t offset;
   std::memcpy(&offset, &bytes[fieldAt], sizeof offset);
   offset += 4;
   std::memcpy(&bytes[fieldAt], &offset, sizeof offset);
   uint32_t length = 1;
   std::memcpy(&bytes[elementsAt], &length, sizeof length);
-  uint32_t crc =
-      uint32_t(crc32(crc32(0L, Z_NULL, 0),
-                     reinterpret_cast<const Bytef *>(bytes.data() + kHeader),
-                     uInt(bytes.size() - kHeader)));
-  std::memcpy(&bytes[12], &crc, sizeof crc);
+  reseal(bytes);
   writeFile(bad, bytes);
   sim_session *target = session(SIM_STRATEGY_HIP, SIM_BACKEND_CPU);
   EXPECT_EQ(sim_session_restart(target, bad.c_str()), SIM_ERROR_CHECKPOINT);
@@ -476,24 +502,13 @@ TEST_F(Checkpoints, RefuseAnEnumValueTheRuntimeDoesNotKnow) {
   // `value`, with the CRC made for it.
   auto withField = [&](flatbuffers::voffset_t field, uint8_t value) {
     std::string bytes = good;
-    constexpr size_t kHeader = 32;
-    uint32_t manifestSize;
-    std::memcpy(&manifestSize, &bytes[kHeader], sizeof manifestSize);
-    std::vector<uint8_t> manifest(bytes.begin() + kHeader,
-                                  bytes.begin() + kHeader + 4 + manifestSize);
-    const auto *root =
-        sim::checkpoint::GetSizePrefixedCheckpoint(manifest.data());
-    const uint8_t *at =
-        reinterpret_cast<const flatbuffers::Table *>(root)->GetAddressOf(field);
+    Manifest manifest(bytes);
+    const uint8_t *at = manifest.field(field);
     EXPECT_NE(at, nullptr);
-    if (!at)
-      return bytes;
-    bytes[kHeader + size_t(at - manifest.data())] = char(value);
-    uint32_t crc =
-        uint32_t(crc32(crc32(0L, Z_NULL, 0),
-                       reinterpret_cast<const Bytef *>(bytes.data() + kHeader),
-                       uInt(bytes.size() - kHeader)));
-    std::memcpy(&bytes[12], &crc, sizeof crc);
+    if (at) {
+      bytes[manifest.inFile(at)] = char(value);
+      reseal(bytes);
+    }
     return bytes;
   };
   sim_session *target = session(SIM_STRATEGY_HIP, SIM_BACKEND_REFERENCE);
