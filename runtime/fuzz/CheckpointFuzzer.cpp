@@ -160,6 +160,8 @@ std::vector<uint8_t> fileOf(const uint8_t *data, size_t size) {
 } // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
+  // The sessions first, even for an empty input: `replay /dev/null` with
+  // SIM_CHECKPOINT_FUZZ_SEEDS set is how the seeds get written.
   Sessions &all = sessions();
   if (size == 0)
     return 0;
